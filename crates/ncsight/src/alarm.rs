@@ -1,0 +1,134 @@
+//! Diagnostics: alarms (execution stops, as on the controller) and warnings (execution goes on).
+//!
+//! Every rule has a stable code. Where the controller's own alarm number is known from a manual
+//! (../shared/reference/params_alarms.md) the FANUC-family profile uses it (`PS0007`); everything
+//! else carries a project code `NCS-Enn` (alarm) or `NCS-Wnn` (warning), listed in docs/alarms.md.
+
+use crate::source::Span;
+
+/// Alarm or warning.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Severity {
+    Alarm,
+    Warning,
+}
+
+/// Which numbering the profile's alarms follow.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum AlarmStyle {
+    /// FANUC PS numbers where known (params_alarms.md section 4).
+    Fanuc,
+    /// No public numbered list was found (GSK 980TDi, GSK 988T, YASNAC LX3): project codes only.
+    Project,
+}
+
+macro_rules! rules {
+    ($( $name:ident => $sev:ident, $proj:literal, $fanuc:expr, $title:literal; )*) => {
+        /// A rule that a block can break. The code is stable; the title is the controller-style
+        /// short text.
+        #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+        pub enum Rule { $( $name, )* }
+
+        impl Rule {
+            /// All rules, for the documentation table and its test.
+            pub const ALL: &'static [Rule] = &[ $( Rule::$name, )* ];
+
+            pub fn severity(self) -> Severity {
+                match self { $( Rule::$name => Severity::$sev, )* }
+            }
+
+            /// The project code, the same on every profile.
+            pub fn project_code(self) -> &'static str {
+                match self { $( Rule::$name => $proj, )* }
+            }
+
+            /// The FANUC alarm number where one is known.
+            pub fn fanuc_code(self) -> Option<&'static str> {
+                match self { $( Rule::$name => $fanuc, )* }
+            }
+
+            /// Short controller-style title (FANUC's wording where it has one).
+            pub fn title(self) -> &'static str {
+                match self { $( Rule::$name => $title, )* }
+            }
+        }
+    };
+}
+
+rules! {
+    // --- reading words (params_alarms.md section 4, "Fanuc alarms") ---
+    TooManyDigits => Alarm, "NCS-E03", Some("PS0003"), "TOO MANY DIGIT";
+    NoDataAfterAddress => Alarm, "NCS-E05", Some("PS0005"), "NO DATA AFTER ADDRESS";
+    IllegalMinus => Alarm, "NCS-E06", Some("PS0006"), "ILLEGAL USE OF MINUS SIGN";
+    IllegalDecimalPoint => Alarm, "NCS-E07", Some("PS0007"), "ILLEGAL USE OF DECIMAL POINT";
+    ImproperAddress => Alarm, "NCS-E09", Some("PS0009"), "IMPROPER NC-ADDRESS";
+    ImproperGCode => Alarm, "NCS-E10", Some("PS0010"), "IMPROPER G-CODE";
+    FeedZero => Alarm, "NCS-E11", Some("PS0011"), "FEED ZERO (COMMAND)";
+    RadiusTolerance => Alarm, "NCS-E20", Some("PS0020"), "OVER TOLERANCE OF RADIUS";
+    ArcDataMissing => Alarm, "NCS-E22", Some("PS0022"), "R OR I,J,K COMMAND NOT FOUND";
+    // --- project rules (no controller number known) ---
+    BadCharacter => Alarm, "NCS-E30", None, "CHARACTER NOT ALLOWED";
+    LineTooLong => Alarm, "NCS-E31", None, "BLOCK TOO LONG";
+    Expression => Alarm, "NCS-E32", None, "BAD EXPRESSION";
+    ValueOutOfRange => Alarm, "NCS-E33", None, "VALUE OUT OF RANGE";
+    DuplicateWord => Alarm, "NCS-E34", None, "ADDRESS USED TWICE IN A BLOCK";
+    WordNotTaken => Alarm, "NCS-E35", None, "WORD NOT USED BY THIS COMMAND";
+    MissingWord => Alarm, "NCS-E36", None, "REQUIRED WORD MISSING";
+    GroupConflict => Alarm, "NCS-E37", None, "G CODES THAT MAY NOT SHARE A BLOCK";
+    NotSupported => Alarm, "NCS-E38", None, "NOT AVAILABLE IN NCSIGHT YET";
+    SpindleStopped => Alarm, "NCS-E39", None, "FEED PER REVOLUTION WITH THE SPINDLE STOPPED";
+    MotionLimit => Alarm, "NCS-E40", None, "TOO MUCH MOTION GENERATED";
+    // --- warnings ---
+    SameGroupTwice => Warning, "NCS-W01", None, "TWO G CODES OF ONE GROUP: THE LAST ONE COUNTS";
+    IntegerLength => Warning, "NCS-W02", None, "LENGTH WITHOUT DECIMAL POINT";
+    CommentNotClosed => Warning, "NCS-W03", None, "COMMENT NOT CLOSED";
+    TextIgnored => Warning, "NCS-W04", None, "TEXT IGNORED";
+    MachineSpecificM => Warning, "NCS-W05", None, "MACHINE-SPECIFIC M CODE";
+    EndOfFileMark => Warning, "NCS-W06", None, "END-OF-FILE MARK";
+    DecimalIgnored => Warning, "NCS-W07", None, "DECIMAL PART IGNORED";
+    ProgramLoops => Warning, "NCS-W08", None, "M99 IN THE MAIN PROGRAMME";
+    AfterEnd => Warning, "NCS-W09", None, "BLOCKS AFTER THE PROGRAMME END";
+    ZeroArc => Warning, "NCS-W10", None, "ARC OF ZERO DEGREES";
+}
+
+impl Rule {
+    /// The code as this profile reports it.
+    pub fn code(self, style: AlarmStyle) -> &'static str {
+        match (style, self.fanuc_code()) {
+            (AlarmStyle::Fanuc, Some(c)) => c,
+            _ => self.project_code(),
+        }
+    }
+}
+
+/// One alarm or warning, tied to the text that caused it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Diagnostic {
+    pub rule: Rule,
+    /// Stable code as the profile reports it (`PS0007`, `NCS-E35`, ...).
+    pub code: &'static str,
+    pub span: Span,
+    /// Names the word and the rule broken.
+    pub message: String,
+    /// A likely cause, for typing mistakes (`GO` with a letter O).
+    pub hint: Option<String>,
+}
+
+impl Diagnostic {
+    pub fn new(rule: Rule, style: AlarmStyle, span: Span, message: impl Into<String>) -> Diagnostic {
+        Diagnostic { rule, code: rule.code(style), span, message: message.into(), hint: None }
+    }
+
+    pub fn with_hint(mut self, hint: impl Into<String>) -> Diagnostic {
+        self.hint = Some(hint.into());
+        self
+    }
+
+    pub fn severity(&self) -> Severity {
+        self.rule.severity()
+    }
+
+    pub fn is_alarm(&self) -> bool {
+        self.severity() == Severity::Alarm
+    }
+}

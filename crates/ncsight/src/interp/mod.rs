@@ -1,0 +1,673 @@
+//! The interpreter: one block at a time, checked first and committed only if valid (atomic per
+//! block), against a profile and its parameters. It turns a block into records of the canonical
+//! stream and warnings, or into one alarm that leaves the modal state untouched.
+
+mod words;
+
+use crate::alarm::{Diagnostic, Rule};
+use crate::geom::{self, ArcError};
+use crate::modal::{Modal, Motion, SpindleDir};
+use crate::motion::{ArcDir, Op, Plane, Record, StopReason, Vec3};
+use crate::profile::{GDef, GFn, Group, IntegerLengths, MDef, MFn, Params, Profile, MAX_RPM};
+use crate::read::{Block, Word};
+use crate::source::Span;
+use crate::time;
+use words::Words;
+
+/// Largest |coordinate| accepted, mm: 99999.999 mm is the widest value an 8-digit word with
+/// 0.001 mm resolution can hold.
+pub const MAX_COORD_MM: f64 = 99_999.999 * 25.4;
+
+/// Arc end-point radius tolerance, mm (assumed; FANUC's is a parameter): start and end radii
+/// may differ by this much before OVER TOLERANCE OF RADIUS.
+pub const ARC_TOLERANCE_MM: f64 = 0.01;
+
+/// What a valid block produced.
+#[derive(Debug, Default)]
+pub struct Outcome {
+    pub records: Vec<Record>,
+    pub warnings: Vec<Diagnostic>,
+}
+
+/// Switches on the operator's panel that change what a programme does.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct Switches {
+    /// Block delete: blocks that start with `/` are skipped.
+    pub block_delete: bool,
+    /// Optional stop: M01 stops.
+    pub optional_stop: bool,
+}
+
+/// The interpreter of one programme run.
+pub struct Interpreter {
+    profile: &'static Profile,
+    params: Params,
+    state: Modal,
+    t_s: f64,
+    switches: Switches,
+}
+
+/// The working copy of one block's effects.
+struct Step<'a> {
+    profile: &'static Profile,
+    params: &'a Params,
+    span: Span,
+    st: Modal,
+    t_s: f64,
+    out: Outcome,
+}
+
+impl Step<'_> {
+    fn alarm(&self, rule: Rule, span: Span, msg: impl Into<String>) -> Diagnostic {
+        Diagnostic::new(rule, self.profile.alarm_style, span, msg)
+    }
+
+    fn warn(&mut self, rule: Rule, span: Span, msg: impl Into<String>) {
+        let d = Diagnostic::new(rule, self.profile.alarm_style, span, msg);
+        self.out.warnings.push(d);
+    }
+
+    fn emit(&mut self, op: Op) {
+        self.t_s += time::duration_s(&op, self.params);
+        if let Some(p) = op.end_point() {
+            self.st.pos = p;
+        }
+        self.out.records.push(Record { span: self.span, t_s: self.t_s, op });
+    }
+
+    /// A length word in mm, read by the profile's decimal-point rule and the units in force.
+    fn length(&mut self, w: &Word) -> Result<f64, Diagnostic> {
+        let mut v = w.value;
+        if !w.decimal && self.profile.integer_lengths == IntegerLengths::LeastIncrement {
+            v *= if self.st.inch { 0.0001 } else { 0.001 };
+            if w.value != 0.0 {
+                let unit = if self.st.inch { "inch" } else { "mm" };
+                let shown = if self.st.inch { format!("{v:.4}") } else { format!("{v:.3}") };
+                self.warn(
+                    Rule::IntegerLength,
+                    w.span,
+                    format!("{} is {shown} {unit} on this control (no decimal point: least input increments)", w.text()),
+                );
+            }
+        }
+        if self.st.inch {
+            v *= 25.4;
+        }
+        if v.abs() > MAX_COORD_MM {
+            return Err(self.alarm(
+                Rule::ValueOutOfRange,
+                w.span,
+                format!("{}: {v} mm is beyond the controller's range (at most {MAX_COORD_MM:.3} mm)", w.text()),
+            ));
+        }
+        Ok(v)
+    }
+
+    /// Spindle speed for feed per revolution at the current position.
+    fn rpm_here(&self) -> f64 {
+        let dia = if self.profile.diameter_x { 2.0 * self.st.pos.x } else { 0.0 };
+        self.st.rpm_at(dia, MAX_RPM)
+    }
+
+    /// Cutting feed in mm/min for the block, or the alarm that it has none.
+    fn cutting_feed(&mut self, what: &str) -> Result<f64, Diagnostic> {
+        let f = match self.st.feed {
+            Some(f) if f > 0.0 => f,
+            _ => {
+                return Err(self.alarm(
+                    Rule::FeedZero,
+                    self.span,
+                    format!("{what} needs a feed: no F word greater than zero is in force"),
+                ))
+            }
+        };
+        let mut feed = f;
+        if self.st.per_rev {
+            let rpm = self.rpm_here().abs();
+            if rpm <= 0.0 {
+                return Err(self.alarm(
+                    Rule::SpindleStopped,
+                    self.span,
+                    format!("{what}: feed per revolution (F{f} mm/rev) with the spindle stopped or at S0"),
+                ));
+            }
+            feed = f * rpm;
+        }
+        let max = self.params.feed_max_mm_min();
+        if feed > max {
+            self.warn(
+                Rule::TextIgnored,
+                self.span,
+                format!("cutting feed {feed:.1} mm/min is above the limit {max} mm/min: clamped"),
+            );
+            feed = max;
+        }
+        Ok(feed)
+    }
+}
+
+impl Interpreter {
+    pub fn new(params: Params, switches: Switches) -> Interpreter {
+        let profile = params.profile();
+        Interpreter { profile, state: Modal::power_on(profile), params, t_s: 0.0, switches }
+    }
+
+    pub fn profile(&self) -> &'static Profile {
+        self.profile
+    }
+
+    pub fn params(&self) -> &Params {
+        &self.params
+    }
+
+    pub fn state(&self) -> &Modal {
+        &self.state
+    }
+
+    /// Seconds from programme start, per the time model.
+    pub fn time_s(&self) -> f64 {
+        self.t_s
+    }
+
+    /// Execute one block. On an alarm nothing changes.
+    pub fn execute(&mut self, block: &Block) -> Result<Outcome, Diagnostic> {
+        if block.block_delete && self.switches.block_delete {
+            return Ok(Outcome::default());
+        }
+        let mut step = Step {
+            profile: self.profile,
+            params: &self.params,
+            span: block.span,
+            st: self.state.clone(),
+            t_s: self.t_s,
+            out: Outcome::default(),
+        };
+        run_block(&mut step, block, self.switches)?;
+        self.state = step.st;
+        self.t_s = step.t_s;
+        Ok(step.out)
+    }
+}
+
+/// Collect words, G and M codes, checking addresses and duplicates.
+fn collect<'w>(
+    step: &mut Step,
+    block: &'w Block,
+) -> Result<(Words, Vec<(&'w Word, &'static GDef)>, Vec<(&'w Word, Option<&'static MDef>)>), Diagnostic> {
+    let profile = step.profile;
+    let mut words = Words::default();
+    let mut gs = Vec::new();
+    let mut ms = Vec::new();
+    for w in &block.words {
+        let letter = w.letter;
+        if !profile.takes_address(letter) {
+            return Err(step.alarm(
+                Rule::ImproperAddress,
+                w.span,
+                format!("address {} is not used on {} ({})", letter as char, profile.name, w.text()),
+            ));
+        }
+        match letter {
+            b'G' => {
+                if w.value < 0.0 || w.expr {
+                    return Err(step.alarm(Rule::ImproperGCode, w.span, format!("{}: not a G code", w.text())));
+                }
+                let (major, minor) = w.code();
+                match profile.g_code(major, minor) {
+                    Some(g) => gs.push((w, g)),
+                    None => {
+                        // GSK: a G code written with a point is an alarm unless the code has one
+                        // (988T p43); FANUC likewise.
+                        let msg = if minor.is_some() && profile.g_code(major, None).is_some() {
+                            format!("G{major:02}.{}: a G code may not be written with a decimal point", minor.unwrap())
+                        } else {
+                            format!("{}: no such G code on {}", w.text(), profile.name)
+                        };
+                        return Err(step.alarm(Rule::ImproperGCode, w.span, msg));
+                    }
+                }
+            }
+            b'M' => {
+                if w.decimal || w.value < 0.0 {
+                    return Err(step.alarm(
+                        Rule::IllegalDecimalPoint,
+                        w.span,
+                        format!("{}: an M code is a whole number", w.text()),
+                    ));
+                }
+                ms.push((w, profile.m_code(w.value as u32)));
+            }
+            _ => {
+                if let Some(old) = words.insert(*w) {
+                    return Err(step.alarm(
+                        Rule::DuplicateWord,
+                        w.span,
+                        format!("address {} appears twice in the block ({} and {})", letter as char, old.text(), w.text()),
+                    ));
+                }
+            }
+        }
+    }
+    Ok((words, gs, ms))
+}
+
+/// What one block asks for after its G codes are sorted.
+#[derive(Default)]
+struct Codes {
+    non_modal: Option<(Span, GFn)>,
+    motion: Option<(Span, Motion)>,
+}
+
+fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), Diagnostic> {
+    let (mut words, gs, ms) = collect(step, block)?;
+    let profile = step.profile;
+
+    // --- G codes: the last of a group counts (GSK: TAC p65; FANUC the same); a warning says so.
+    let mut last_of: Vec<(Group, &Word, &GDef)> = Vec::new();
+    for (w, g) in &gs {
+        if let Some(slot) = last_of.iter_mut().find(|(grp, _, _)| *grp == g.group && g.group != Group::NonModal) {
+            let msg = format!("{} and {} are in one modal group: {} counts", slot.1.text(), w.text(), w.text());
+            step.warn(Rule::SameGroupTwice, w.span, msg);
+            *slot = (g.group, w, g);
+        } else {
+            last_of.push((g.group, w, g));
+        }
+        if let GFn::NotYet(why) = g.function {
+            return Err(step.alarm(Rule::NotSupported, w.span, format!("{} ({}): {why}", w.text(), g.meaning)));
+        }
+    }
+    let non_modal: Vec<_> = last_of.iter().filter(|(g, _, _)| *g == Group::NonModal).collect();
+    if non_modal.len() > 1 {
+        let (_, w, _) = non_modal[1];
+        return Err(step.alarm(
+            Rule::GroupConflict,
+            w.span,
+            format!("{} and {}: two one-shot (group 00) G codes in one block", non_modal[0].1.text(), w.text()),
+        ));
+    }
+    if profile.group00_with_01_alarm {
+        if let (Some((_, w0, _)), Some((_, w1, _))) =
+            (non_modal.first(), last_of.iter().find(|(g, _, _)| *g == Group::Motion))
+        {
+            // GSK: group 00 and group 01 may not share a block (TAC p65).
+            return Err(step.alarm(
+                Rule::GroupConflict,
+                w1.span,
+                format!("{} and {}: a group 00 and a group 01 G code may not share a block on {}", w0.text(), w1.text(), profile.name),
+            ));
+        }
+    }
+
+    let mut codes = Codes::default();
+    for (_, w, g) in &last_of {
+        let st = &mut step.st;
+        match g.function {
+            GFn::Rapid => codes.motion = Some((w.span, Motion::Rapid)),
+            GFn::Linear => codes.motion = Some((w.span, Motion::Linear)),
+            GFn::ArcCw => codes.motion = Some((w.span, Motion::ArcCw)),
+            GFn::ArcCcw => codes.motion = Some((w.span, Motion::ArcCcw)),
+            GFn::PlaneXY => st.plane = Plane::XY,
+            GFn::PlaneZX => st.plane = Plane::ZX,
+            GFn::PlaneYZ => st.plane = Plane::YZ,
+            GFn::Inch => st.inch = true,
+            GFn::Metric => st.inch = false,
+            GFn::Absolute => st.incremental = false,
+            GFn::Incremental => st.incremental = true,
+            GFn::FeedPerMinute => st.per_rev = false,
+            GFn::FeedPerRevolution => st.per_rev = true,
+            GFn::ConstantSurfaceSpeed => st.css = true,
+            GFn::ConstantRpm => st.css = false,
+            GFn::RadiusComp(on) => {
+                st.radius_comp = on;
+                if on {
+                    let msg = format!("{}: radius compensation is not simulated; the programmed path is shown", w.text());
+                    step.warn(Rule::TextIgnored, w.span, msg);
+                }
+            }
+            GFn::LengthComp | GFn::WorkOffset | GFn::PathControl => {}
+            GFn::ReturnInitial => st.return_initial = true,
+            GFn::ReturnR => st.return_initial = false,
+            // G80 with no drilling cycle in force (the cycles come with their issue): nothing to cancel.
+            GFn::CycleCancel => {}
+            GFn::Dwell | GFn::ReferenceReturn | GFn::LatheCoordinateSet | GFn::MillCoordinateSet => {
+                codes.non_modal = Some((w.span, g.function))
+            }
+            GFn::NotYet(_) => unreachable!("rejected above"),
+        }
+    }
+    // Tool length compensation takes H (the offset number); D belongs to cutter compensation.
+    if last_of.iter().any(|(_, _, g)| g.function == GFn::LengthComp) {
+        words.take(b'H');
+    }
+    if last_of.iter().any(|(_, _, g)| matches!(g.function, GFn::RadiusComp(_))) {
+        words.take(b'D');
+    }
+
+    // --- F, S, T ---
+    if let Some(w) = words.take(b'F') {
+        if w.value < 0.0 {
+            return Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("{}: a feed cannot be negative", w.text())));
+        }
+        let unit = if step.st.inch { 25.4 } else { 1.0 };
+        step.st.feed = Some(w.value * unit);
+    }
+    let g50_clamp = matches!(codes.non_modal, Some((_, GFn::LatheCoordinateSet)));
+    let spindle_before = (step.st.spindle, step.st.s_word, step.st.css, step.st.spindle_position_mode);
+    if let Some(w) = words.take(b'S') {
+        if w.value < 0.0 {
+            return Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("{}: a spindle speed cannot be negative here", w.text())));
+        }
+        if g50_clamp {
+            step.st.rpm_clamp = Some(w.value); // G50 S: maximum spindle speed (TDi help G96/97)
+        } else {
+            step.st.s_word = w.value;
+        }
+    }
+    let tool = match words.take(b'T') {
+        Some(w) => {
+            if w.decimal || w.value < 0.0 {
+                return Err(step.alarm(Rule::IllegalDecimalPoint, w.span, format!("{}: a tool number is a whole number", w.text())));
+            }
+            let v = w.value as u32;
+            Some(if profile.is_lathe() && v >= 100 { (v / 100, Some(v % 100)) } else { (v, None) })
+        }
+        None => None,
+    };
+    if let Some((number, offset)) = tool {
+        step.st.tool = number;
+        if profile.is_lathe() {
+            step.emit(Op::Tool { number, offset });
+        }
+    }
+
+    // --- M codes that act before motion: spindle and its mode ---
+    let mut after: Vec<(&Word, MFn)> = Vec::new();
+    for (w, m) in &ms {
+        match m {
+            None => step.warn(
+                Rule::MachineSpecificM,
+                w.span,
+                format!("{} is not a standard M code of {}: passed to the machine, no effect simulated", w.text(), profile.name),
+            ),
+            Some(m) => match m.function {
+                MFn::SpindleCw => {
+                    step.st.spindle = SpindleDir::Positive;
+                }
+                MFn::SpindleCcw => {
+                    step.st.spindle = SpindleDir::Negative;
+                }
+                MFn::SpindlePositionMode => {
+                    step.st.spindle_position_mode = true;
+                }
+                MFn::SpindleSpeedMode => {
+                    step.st.spindle_position_mode = false;
+                }
+                MFn::Auxiliary => {}
+                MFn::SubprogramCall => {
+                    return Err(step.alarm(Rule::NotSupported, w.span, format!("{}: subprogramme calls are not simulated by ncsight yet", w.text())));
+                }
+                f => after.push((w, f)),
+            },
+        }
+    }
+    // A spindle record when the spindle's state changes in a way the machine shows: a new
+    // direction or mode, or a new speed while it turns.
+    let spindle_after = (step.st.spindle, step.st.s_word, step.st.css, step.st.spindle_position_mode);
+    let turning = step.st.spindle != SpindleDir::Stopped;
+    if spindle_before != spindle_after
+        && (turning || spindle_before.0 != spindle_after.0 || spindle_before.3 != spindle_after.3)
+    {
+        emit_spindle(step);
+    }
+
+    // --- one-shot codes ---
+    let axis_letters: &[u8] = if profile.incremental_addresses { b"XYZUVW" } else { b"XYZ" };
+    match codes.non_modal {
+        Some((_, GFn::Dwell)) => dwell(step, &mut words)?,
+        Some((_, GFn::ReferenceReturn)) => {
+            let (target, given) = axis_target(step, &mut words)?;
+            let mid = target;
+            if given.iter().any(|g| *g) {
+                step.emit(Op::Rapid { from: step.st.pos, to: mid });
+                let mut home = mid;
+                for a in 0..3 {
+                    if given[a] {
+                        home.set_axis(a, profile.reference_point_mm.axis(a));
+                    }
+                }
+                step.emit(Op::Rapid { from: step.st.pos, to: home });
+            }
+        }
+        Some((_, GFn::LatheCoordinateSet | GFn::MillCoordinateSet)) => {
+            let (target, _) = axis_target(step, &mut words)?;
+            step.st.pos = target;
+        }
+        Some(_) => unreachable!("only one-shot functions are stored"),
+        None => {
+            let has_axis = axis_letters.iter().any(|l| words.has(*l));
+            if let Some((_, m)) = codes.motion {
+                step.st.motion = m;
+            }
+            let arc_words = matches!(step.st.motion, Motion::ArcCw | Motion::ArcCcw) && b"RIJK".iter().any(|l| words.has(*l));
+            let motion_words = has_axis || arc_words;
+            if motion_words {
+                motion(step, &mut words)?;
+            }
+        }
+    }
+
+    // --- M codes that act after motion ---
+    for (w, f) in after {
+        match f {
+            MFn::SpindleStop => {
+                step.st.spindle = SpindleDir::Stopped;
+                emit_spindle(step);
+            }
+            MFn::ProgramStop => step.emit(Op::Stop { reason: StopReason::ProgramStop }),
+            MFn::OptionalStop => {
+                if switches.optional_stop {
+                    step.emit(Op::Stop { reason: StopReason::OptionalStop });
+                }
+            }
+            MFn::ToolChange => {
+                let number = step.st.tool;
+                step.emit(Op::Tool { number, offset: None });
+            }
+            MFn::ProgramEnd | MFn::SubprogramReturn => {
+                if f == MFn::SubprogramReturn {
+                    step.warn(
+                        Rule::ProgramLoops,
+                        w.span,
+                        "M99 in the main programme: the controller starts it again from the top; the simulation ends here",
+                    );
+                }
+                step.st.ended = true;
+                step.emit(Op::End { code: w.value as u32 });
+            }
+            _ => unreachable!("handled before motion"),
+        }
+    }
+
+    if let Some(w) = words.first_unused() {
+        let cmd = describe_command(step, &codes);
+        return Err(step.alarm(Rule::WordNotTaken, w.span, format!("{}: {cmd} does not take address {}", w.text(), w.letter as char)));
+    }
+    Ok(())
+}
+
+fn describe_command(step: &Step, codes: &Codes) -> String {
+    let (_, m) = match codes.non_modal {
+        Some((_, GFn::Dwell)) => return "G04 (dwell)".into(),
+        Some((_, GFn::ReferenceReturn)) => return "G28 (reference return)".into(),
+        Some((_, GFn::LatheCoordinateSet)) => return "G50 (coordinate setting)".into(),
+        Some((_, GFn::MillCoordinateSet)) => return "G92 (coordinate setting)".into(),
+        _ => ((), step.st.motion),
+    };
+    let plane = match step.st.plane {
+        Plane::XY => "G17",
+        Plane::ZX => "G18",
+        Plane::YZ => "G19",
+    };
+    match m {
+        Motion::Rapid => "G00 (rapid positioning)".into(),
+        Motion::Linear => "G01 (linear interpolation)".into(),
+        Motion::ArcCw => format!("G02 in the {plane} plane"),
+        Motion::ArcCcw => format!("G03 in the {plane} plane"),
+    }
+}
+
+fn emit_spindle(step: &mut Step) {
+    let rpm = step.rpm_here();
+    let surface = if step.st.css { Some(step.st.s_word) } else { None };
+    let position_mode = step.st.spindle_position_mode;
+    step.emit(Op::Spindle { rpm, surface_m_min: surface, position_mode });
+}
+
+/// G04: P in ms (whole number), X or U in seconds; P wins over X, X over U; negative = 0
+/// (TDi help G04, notes 2 and 3).
+fn dwell(step: &mut Step, words: &mut Words) -> Result<(), Diagnostic> {
+    let p = words.take(b'P');
+    let x = words.take(b'X');
+    let u = if step.profile.incremental_addresses { words.take(b'U') } else { None };
+    let seconds = if let Some(w) = p {
+        if w.decimal {
+            return Err(step.alarm(Rule::IllegalDecimalPoint, w.span, format!("{}: P of G04 is a whole number of ms", w.text())));
+        }
+        w.value / 1000.0
+    } else if let Some(w) = x.or(u) {
+        if w.decimal || step.profile.integer_lengths == IntegerLengths::Millimetres {
+            w.value
+        } else {
+            w.value / 1000.0
+        }
+    } else {
+        0.0 // exact stop between blocks
+    };
+    let seconds = seconds.max(0.0);
+    if seconds > 0.0 {
+        step.emit(Op::Dwell { seconds });
+    }
+    Ok(())
+}
+
+/// The end point a block's axis words name, and which axes were given.
+fn axis_target(step: &mut Step, words: &mut Words) -> Result<(Vec3, [bool; 3]), Diagnostic> {
+    let profile = step.profile;
+    let mut target = step.st.pos;
+    let mut given = [false; 3];
+    let pairs: [(u8, u8, usize); 3] = [(b'X', b'U', 0), (b'Y', b'V', 1), (b'Z', b'W', 2)];
+    for (abs_l, inc_l, axis) in pairs {
+        let abs_w = words.take(abs_l);
+        let inc_w = if profile.incremental_addresses { words.take(inc_l) } else { None };
+        let scale = if axis == 0 && profile.diameter_x { 0.5 } else { 1.0 };
+        if let (Some(a), Some(i)) = (abs_w, inc_w) {
+            return Err(step.alarm(
+                Rule::DuplicateWord,
+                i.span,
+                format!("{} and {} both give the {} axis", a.text(), i.text(), abs_l as char),
+            ));
+        }
+        if let Some(w) = abs_w {
+            let v = step.length(&w)? * scale;
+            target.set_axis(axis, if step.st.incremental { step.st.pos.axis(axis) + v } else { v });
+            given[axis] = true;
+        } else if let Some(w) = inc_w {
+            let v = step.length(&w)? * scale;
+            target.set_axis(axis, step.st.pos.axis(axis) + v);
+            given[axis] = true;
+        }
+    }
+    Ok((target, given))
+}
+
+fn motion(step: &mut Step, words: &mut Words) -> Result<(), Diagnostic> {
+    let (target, _) = axis_target(step, words)?;
+    let from = step.st.pos;
+    match step.st.motion {
+        Motion::Rapid => {
+            if target != from {
+                step.emit(Op::Rapid { from, to: target });
+            }
+        }
+        Motion::Linear => {
+            let feed = step.cutting_feed("G01")?;
+            if target != from {
+                step.emit(Op::Feed { from, to: target, feed_mm_min: feed });
+            }
+        }
+        Motion::ArcCw | Motion::ArcCcw => {
+            let dir = if step.st.motion == Motion::ArcCw { ArcDir::Cw } else { ArcDir::Ccw };
+            arc(step, words, from, target, dir)?;
+        }
+    }
+    Ok(())
+}
+
+fn arc(step: &mut Step, words: &mut Words, from: Vec3, to: Vec3, dir: ArcDir) -> Result<(), Diagnostic> {
+    let plane = step.st.plane;
+    let (a, b, _) = plane.axes();
+    let letter_of = |axis: usize| [b'I', b'J', b'K'][axis];
+    let gname = if dir == ArcDir::Cw { "G02" } else { "G03" };
+    let r_word = words.take(b'R');
+    let (la, lb) = (letter_of(a), letter_of(b));
+    let ca = words.take(la);
+    let cb = words.take(lb);
+    let feed = step.cutting_feed(gname)?;
+    let geom = if let Some(rw) = r_word {
+        // R wins over I/J/K (TDi help G02/03 note 1; seed 002 for arc threads).
+        if let Some(w) = ca.or(cb) {
+            let msg = format!("{}: ignored, R takes precedence over the centre words", w.text());
+            step.warn(Rule::TextIgnored, w.span, msg);
+        }
+        let r = step.length(&rw)?;
+        match geom::arc_from_radius(from, to, plane, dir, r, ARC_TOLERANCE_MM) {
+            Ok(g) => g,
+            Err(ArcError::ZeroArcWithR) => {
+                // TDi help G02/03 note 3: with R, start = end is a 0-degree arc.
+                step.warn(Rule::ZeroArc, rw.span, format!("{gname} with {}: start and end coincide, a 0-degree arc (no motion)", rw.text()));
+                if to != from {
+                    // Only the axis normal to the plane moves.
+                    step.emit(Op::Feed { from, to, feed_mm_min: feed });
+                }
+                return Ok(());
+            }
+            Err(ArcError::RadiusTooSmall(r, half)) => {
+                return Err(step.alarm(
+                    Rule::RadiusTolerance,
+                    rw.span,
+                    format!("{gname} {}: radius {r:.4} mm is less than half the distance to the end point ({half:.4} mm)", rw.text()),
+                ))
+            }
+            Err(e) => unreachable!("{e:?}"),
+        }
+    } else {
+        if ca.is_none() && cb.is_none() {
+            return Err(step.alarm(
+                Rule::ArcDataMissing,
+                step.span,
+                format!("{gname} needs R or the centre words {} and {} in this plane", la as char, lb as char),
+            ));
+        }
+        let mut center = from;
+        for (w, axis) in [(ca, a), (cb, b)] {
+            if let Some(w) = w {
+                // I, J, K: from the start point to the centre, radius values (TDi help G02/03).
+                let v = step.length(&w)?;
+                center.set_axis(axis, from.axis(axis) + v);
+            }
+        }
+        match geom::arc_from_center(from, to, plane, dir, center, ARC_TOLERANCE_MM) {
+            Ok(g) => g,
+            Err(ArcError::RadiusMismatch(rs, re)) => {
+                return Err(step.alarm(
+                    Rule::RadiusTolerance,
+                    step.span,
+                    format!("{gname}: the end point is {re:.4} mm from the centre, the start point {rs:.4} mm (tolerance {ARC_TOLERANCE_MM} mm)"),
+                ))
+            }
+            Err(e) => unreachable!("{e:?}"),
+        }
+    };
+    step.emit(Op::Arc { from, to, center: geom.center, plane, dir, feed_mm_min: feed });
+    Ok(())
+}

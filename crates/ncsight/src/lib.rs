@@ -1,0 +1,22 @@
+//! ncsight core: reads a CNC programme and executes it as a named controller would, producing
+//! the canonical motion stream. No I/O: callers feed text and consume events.
+//!
+//! text -> [`read`] (blocks with spans) -> [`interp`] (profile + modal state, atomic per block)
+//! -> [`motion`] records with time from [`time`] -> consumers (formatters in the CLI crate).
+
+pub mod alarm;
+pub mod geom;
+pub mod interp;
+pub mod modal;
+pub mod motion;
+pub mod profile;
+pub mod program;
+pub mod read;
+pub mod source;
+pub mod time;
+
+pub use alarm::{Diagnostic, Rule, Severity};
+pub use interp::{Interpreter, Switches};
+pub use motion::{Op, Record, Vec3};
+pub use profile::{Params, Profile};
+pub use program::{run_text, Event, Mode, Program, Status};

@@ -1,0 +1,139 @@
+//! The canonical motion stream: a small closed set of operations, each tagged with the block
+//! that produced it. Positions are real geometry in millimetres with X as a radius; a lathe's
+//! diameter display is applied only at the edges (formatters).
+
+use crate::source::Span;
+
+/// A point or a vector in programme coordinates, millimetres.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Vec3 {
+    pub x: f64,
+    pub y: f64,
+    pub z: f64,
+}
+
+impl Vec3 {
+    pub const fn new(x: f64, y: f64, z: f64) -> Vec3 {
+        Vec3 { x, y, z }
+    }
+
+    pub fn axis(&self, i: usize) -> f64 {
+        match i {
+            0 => self.x,
+            1 => self.y,
+            _ => self.z,
+        }
+    }
+
+    pub fn set_axis(&mut self, i: usize, v: f64) {
+        match i {
+            0 => self.x = v,
+            1 => self.y = v,
+            _ => self.z = v,
+        }
+    }
+
+    pub fn dist(&self, o: &Vec3) -> f64 {
+        ((self.x - o.x).powi(2) + (self.y - o.y).powi(2) + (self.z - o.z).powi(2)).sqrt()
+    }
+}
+
+/// The plane of circular interpolation. Its axes (first, second, normal) form a right-handed
+/// set, as LinuxCNC's canonical interface orders them: XY = (X, Y, Z), ZX = (Z, X, Y),
+/// YZ = (Y, Z, X).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Plane {
+    XY,
+    ZX,
+    YZ,
+}
+
+impl Plane {
+    /// Indices of (first, second, normal) axes in X=0, Y=1, Z=2.
+    pub fn axes(self) -> (usize, usize, usize) {
+        match self {
+            Plane::XY => (0, 1, 2),
+            Plane::ZX => (2, 0, 1),
+            Plane::YZ => (1, 2, 0),
+        }
+    }
+}
+
+/// Direction of an arc as G02/G03 name it (seen from the positive end of the plane's normal).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ArcDir {
+    Cw,
+    Ccw,
+}
+
+/// Why the machine stopped.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum StopReason {
+    /// M00.
+    ProgramStop,
+    /// M01 with the optional-stop switch on.
+    OptionalStop,
+}
+
+impl StopReason {
+    pub fn as_str(self) -> &'static str {
+        match self {
+            StopReason::ProgramStop => "program_stop",
+            StopReason::OptionalStop => "optional_stop",
+        }
+    }
+}
+
+/// One operation of the stream.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Op {
+    /// Positioning. `rates_mm_min` are the per-axis rates used (each axis at its own rate).
+    Rapid { from: Vec3, to: Vec3 },
+    /// Straight cutting feed at `feed_mm_min` (per-revolution feeds already multiplied out).
+    Feed { from: Vec3, to: Vec3, feed_mm_min: f64 },
+    /// Circular (helical along the plane's normal) cutting feed.
+    Arc { from: Vec3, to: Vec3, center: Vec3, plane: Plane, dir: ArcDir, feed_mm_min: f64 },
+    Dwell { seconds: f64 },
+    /// Spindle state changed. `rpm` is signed: negative = the spindle's negative direction;
+    /// 0 = stopped. `surface_m_min` is the G96 surface speed when constant surface speed is on.
+    Spindle { rpm: f64, surface_m_min: Option<f64>, position_mode: bool },
+    /// Tool selected (lathe T word) or changed (M06). `offset` is the lathe offset number.
+    Tool { number: u32, offset: Option<u32> },
+    Stop { reason: StopReason },
+    /// M02 / M30 (and M99 in a main programme).
+    End { code: u32 },
+}
+
+impl Op {
+    /// The record kind, as the JSONL interface names it.
+    pub fn kind(&self) -> &'static str {
+        match self {
+            Op::Rapid { .. } => "rapid",
+            Op::Feed { .. } => "feed",
+            Op::Arc { .. } => "arc",
+            Op::Dwell { .. } => "dwell",
+            Op::Spindle { .. } => "spindle",
+            Op::Tool { .. } => "tool",
+            Op::Stop { .. } => "stop",
+            Op::End { .. } => "end",
+        }
+    }
+
+    /// End point of a motion.
+    pub fn end_point(&self) -> Option<Vec3> {
+        match self {
+            Op::Rapid { to, .. } | Op::Feed { to, .. } | Op::Arc { to, .. } => Some(*to),
+            _ => None,
+        }
+    }
+}
+
+/// One record of the stream.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Record {
+    /// The block that produced it.
+    pub span: Span,
+    /// Seconds from programme start at the end of this record (time model).
+    pub t_s: f64,
+    pub op: Op,
+}

@@ -1,0 +1,87 @@
+//! GSK980TDi lathe, G-code system A. Seed 000 (G92) and the on-line help text.
+
+use super::lathe_a::{gp, GSK_M_CODES, G_CODES, LATER_THREAD};
+use super::{GDef, Group, IntegerLengths, MachineKind, ParamDef, ParamKey, Profile, TimeKeys};
+use crate::alarm::AlarmStyle;
+
+const EXTRA: &[GDef] = &[
+    gp(32, 1, Group::Motion, LATER_THREAD, "rigid thread cutting"),
+    gp(32, 2, Group::Motion, LATER_THREAD, "arc thread, clockwise"),
+    gp(32, 3, Group::Motion, LATER_THREAD, "arc thread, counter-clockwise"),
+    gp(92, 1, Group::Motion, LATER_THREAD, "rigid thread cutting cycle"),
+    GDef { major: 33, minor: None, group: Group::Motion, function: LATER_THREAD, meaning: "tapping cycle" },
+    GDef { major: 34, minor: None, group: Group::Motion, function: LATER_THREAD, meaning: "variable-lead thread cutting" },
+    GDef { major: 78, minor: None, group: Group::Motion, function: LATER_THREAD, meaning: "thread cutting cycle with infeed modes" },
+];
+
+const PARAMS: &[ParamDef] = &[
+    ParamDef {
+        key: ParamKey::Number(18, Some(6)),
+        meaning: "feed hold during a G92 thread: 0 = pull out at once and return to the start, 1 = finish the thread with its pull-out, then stop",
+        unit: "bit",
+        min: 0.0,
+        max: 1.0,
+        default: 0.0,
+        source: "seed 000, note 1",
+    },
+    ParamDef {
+        key: ParamKey::Number(19, None),
+        meaning: "thread pull-out (run-out) width used by G92 and G76 when J and K are omitted",
+        unit: "0.1 x lead",
+        min: 0.0,
+        max: 99.0,
+        default: 10.0,
+        source: "seed 000, notes 2-3; range TAC p135; default assumed (not found): 1 lead",
+    },
+    ParamDef {
+        key: ParamKey::Number(22, None),
+        meaning: "rapid traverse rate (each axis)",
+        unit: "mm/min",
+        min: 1.0,
+        max: 60000.0,
+        default: 8000.0,
+        source: "TDi help G00 names No.022; default assumed (not found)",
+    },
+    ParamDef {
+        key: ParamKey::Number(27, None),
+        meaning: "upper limit of the cutting feed",
+        unit: "mm/min",
+        min: 1.0,
+        max: 60000.0,
+        default: 8000.0,
+        source: "TDi help G01 names No.027; default assumed (not found)",
+    },
+    ParamDef {
+        key: ParamKey::Number(107, None),
+        meaning: "short-axis speed of the thread pull-out; 0 = the pull-out angle follows J:K",
+        unit: "mm/min",
+        min: 0.0,
+        max: 60000.0,
+        default: 0.0,
+        source: "seed 000, note 8; TDi p151",
+    },
+];
+
+pub static PROFILE: Profile = Profile {
+    name: "gsk980tdi",
+    title: "GSK980TDi lathe (G-code system A)",
+    kind: MachineKind::Lathe,
+    diameter_x: true,
+    integer_lengths: IntegerLengths::Millimetres,
+    alarm_style: AlarmStyle::Project,
+    incremental_addresses: true,
+    power_on_per_rev: false,
+    group00_with_01_alarm: true,
+    axes: "XZ",
+    reference_point_mm: crate::motion::Vec3::new(100.0, 0.0, 200.0),
+    addresses: "GMSTFXZUWRIJKPQLN",
+    g_codes: &[G_CODES, EXTRA],
+    m_codes: GSK_M_CODES,
+    params: PARAMS,
+    time: TimeKeys {
+        rapid: [ParamKey::Number(22, None), ParamKey::Number(22, None), ParamKey::Number(22, None)],
+        feed_max: ParamKey::Number(27, None),
+    },
+    summary: "GSK980TDi turning centre. X is a diameter, U/W incremental. Lengths without a decimal \
+point are millimetres (seed 000's O0012: Z-28, F3, J3 K1). Feed per minute (G98) at power on.",
+};

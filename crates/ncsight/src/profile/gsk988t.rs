@@ -1,0 +1,113 @@
+//! GSK lathe with a servo spindle (CS axis), A set of G codes: seed 001 (G32.1, G92.1, thread
+//! repair) and seed 002 (G32.2/G32.3). Parameter numbers follow FANUC's numbering, as the 988T
+//! manual does (params_alarms.md section 3).
+
+use super::lathe_a::{gp, GSK_M_CODES, G_CODES, LATER_THREAD};
+use super::{GDef, Group, IntegerLengths, MachineKind, ParamDef, ParamKey, Profile, TimeKeys};
+use crate::alarm::AlarmStyle;
+
+const EXTRA: &[GDef] = &[
+    gp(32, 1, Group::Motion, LATER_THREAD, "rigid thread cutting"),
+    gp(32, 2, Group::Motion, LATER_THREAD, "arc thread, clockwise"),
+    gp(32, 3, Group::Motion, LATER_THREAD, "arc thread, counter-clockwise"),
+    gp(92, 1, Group::Motion, LATER_THREAD, "rigid thread cutting cycle"),
+];
+
+const PARAMS: &[ParamDef] = &[
+    ParamDef {
+        key: ParamKey::Number(1410, None),
+        meaning: "dry-run rate; threads run at this rate in dry run whatever the override",
+        unit: "mm/min",
+        min: 0.0,
+        max: 60000.0,
+        default: 5000.0,
+        source: "seed 001, G32.1 note 13; default assumed (not found)",
+    },
+    ParamDef {
+        key: ParamKey::Number(1420, None),
+        meaning: "rapid traverse rate (each axis)",
+        unit: "mm/min",
+        min: 1.0,
+        max: 60000.0,
+        default: 8000.0,
+        source: "FANUC numbering (inferred); default assumed",
+    },
+    ParamDef {
+        key: ParamKey::Number(1422, None),
+        meaning: "upper limit of the cutting feed",
+        unit: "mm/min",
+        min: 1.0,
+        max: 60000.0,
+        default: 8000.0,
+        source: "FANUC numbering (inferred); default assumed",
+    },
+    ParamDef {
+        key: ParamKey::Number(1466, None),
+        meaning: "pull-out speed of the short axis when G32.1 has J without K (perpendicular pull-out after the end point)",
+        unit: "mm/min",
+        min: 0.0,
+        max: 60000.0,
+        default: 3000.0,
+        source: "seed 001, G32.1 note 5; default assumed (not found)",
+    },
+    ParamDef {
+        key: ParamKey::Number(1628, None),
+        meaning: "acceleration/deceleration time constant of the pull-out",
+        unit: "ms",
+        min: 0.0,
+        max: 4000.0,
+        default: 50.0,
+        source: "seed 001, G32.1 note 5; default assumed (not found)",
+    },
+    ParamDef {
+        key: ParamKey::Number(5130, None),
+        meaning: "G92.1 pull-out (chamfer) length along the long axis when J and K are omitted",
+        unit: "0.1 x lead",
+        min: 0.0,
+        max: 127.0,
+        default: 10.0,
+        source: "seed 001, G92.1 note 1; range FANUC 0i-T (inferred); default assumed",
+    },
+    ParamDef {
+        key: ParamKey::Number(5131, None),
+        meaning: "G92.1 pull-out angle; 0 = 45 degrees",
+        unit: "deg",
+        min: 0.0,
+        max: 89.0,
+        default: 0.0,
+        source: "seed 001, G92.1 note 1",
+    },
+    ParamDef {
+        key: ParamKey::Number(8135, Some(7)),
+        meaning: "RPTH: thread repair function enabled",
+        unit: "bit",
+        min: 0.0,
+        max: 1.0,
+        default: 0.0,
+        source: "seed 001, section 1.4",
+    },
+];
+
+pub static PROFILE: Profile = Profile {
+    name: "gsk988t",
+    title: "GSK988T lathe with servo spindle (A set of G codes)",
+    kind: MachineKind::Lathe,
+    diameter_x: true,
+    integer_lengths: IntegerLengths::Millimetres,
+    alarm_style: AlarmStyle::Project,
+    incremental_addresses: true,
+    power_on_per_rev: false,
+    group00_with_01_alarm: true,
+    axes: "XYZ",
+    reference_point_mm: crate::motion::Vec3::new(100.0, 0.0, 200.0),
+    addresses: "GMSTFXYZUVWRIJKPQLN",
+    g_codes: &[G_CODES, EXTRA],
+    m_codes: GSK_M_CODES,
+    params: PARAMS,
+    time: TimeKeys {
+        rapid: [ParamKey::Number(1420, None), ParamKey::Number(1420, None), ParamKey::Number(1420, None)],
+        feed_max: ParamKey::Number(1422, None),
+    },
+    summary: "GSK988T turning centre with a servo (CS) spindle: M14 position mode, M15 speed mode. \
+X is a diameter, U/W incremental; lengths without a decimal point are millimetres.",
+};

@@ -1,0 +1,392 @@
+//! Controller profiles. A profile answers the interpreter's questions: which G and M codes exist
+//! and what they mean, how a number without a decimal point is read, which parameters exist with
+//! their manual numbers, units, ranges and defaults, and which alarm numbering is used.
+//! The interpreter never tests a profile's name.
+//!
+//! Profiles are data (`gsk980tdi.rs`, `gsk988t.rs`, `fanuc0m.rs`, `yasnac_lx3.rs`); the G-code
+//! tables that several lathes share live in `lathe_a.rs`.
+
+mod fanuc0m;
+mod gsk980tdi;
+mod gsk988t;
+mod lathe_a;
+mod yasnac_lx3;
+
+use crate::alarm::AlarmStyle;
+
+/// Highest spindle speed any profile turns (G96 at the centre without a G50 clamp), rpm. Assumed.
+pub const MAX_RPM: f64 = 10000.0;
+
+/// Lathe (X diameter, Z spindle axis, XZ plane) or machining centre.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum MachineKind {
+    Lathe,
+    Mill,
+}
+
+/// How a length written without a decimal point is read (../shared/spec/BEHAVIOUR.md,
+/// "Numbers and words").
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum IntegerLengths {
+    /// GSK: `Z-28` is 28 mm (seed 000's example O0012 only makes sense that way).
+    Millimetres,
+    /// FANUC and YASNAC: `X100` is 100 least input increments = 0.100 mm (0.0100 inch).
+    LeastIncrement,
+}
+
+/// The modal group a G code belongs to, by meaning (the numbers differ between lathe and mill
+/// manuals; the rules "last of a group counts" and "00 with 01 is an alarm" need only identity).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Group {
+    /// Group 00: one-shot codes (G04, G28, G50, ...).
+    NonModal,
+    /// Group 01: interpolation and cycles of the lathe's group 01.
+    Motion,
+    Plane,
+    Distance,
+    Units,
+    FeedMode,
+    SpindleSpeedMode,
+    CutterComp,
+    LengthComp,
+    /// FANUC 0-M group 09: drilling canned cycles and G80.
+    CannedCycle,
+    /// FANUC 0-M group 10: G98/G99 return level.
+    ReturnLevel,
+    WorkOffset,
+    PathMode,
+}
+
+/// What a G code does, as far as the interpreter is concerned.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum GFn {
+    Rapid,
+    Linear,
+    ArcCw,
+    ArcCcw,
+    Dwell,
+    PlaneXY,
+    PlaneZX,
+    PlaneYZ,
+    Inch,
+    Metric,
+    Absolute,
+    Incremental,
+    FeedPerMinute,
+    FeedPerRevolution,
+    /// G96: S is a surface speed in m/min.
+    ConstantSurfaceSpeed,
+    /// G97: S is in rpm.
+    ConstantRpm,
+    /// G28: via an intermediate point to the reference point.
+    ReferenceReturn,
+    /// G50 (lathe, system A): set the current position's coordinates; with S, the spindle clamp.
+    LatheCoordinateSet,
+    /// G92 (mill): set the current position's coordinates.
+    MillCoordinateSet,
+    /// G40/G41/G42: tool (nose) radius compensation; the programmed path is shown.
+    RadiusComp(bool),
+    /// G43/G44/G49: tool length compensation; positions stay in programme coordinates.
+    LengthComp,
+    /// G54..G59: work offsets; all are zero in the simulation unless set up.
+    WorkOffset,
+    /// G61/G64 and friends: path control, no effect on the programmed path.
+    PathControl,
+    /// G98/G99 on a mill: return to the initial level / to the R point.
+    ReturnInitial,
+    ReturnR,
+    /// G80 on a mill: cancel the canned cycle.
+    CycleCancel,
+    /// Known to the controller, not yet simulated: an alarm that says so.
+    NotYet(&'static str),
+}
+
+/// One G code of a profile.
+#[derive(Debug, Clone, Copy)]
+pub struct GDef {
+    pub major: u32,
+    /// The digit after the point for codes that have one (G32.1); `None` for plain codes.
+    pub minor: Option<u32>,
+    pub group: Group,
+    pub function: GFn,
+    pub meaning: &'static str,
+}
+
+/// What an M code does.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum MFn {
+    ProgramStop,
+    OptionalStop,
+    ProgramEnd,
+    /// M99 in a main programme.
+    SubprogramReturn,
+    SubprogramCall,
+    SpindleCw,
+    SpindleCcw,
+    SpindleStop,
+    /// M06 on a machining centre.
+    ToolChange,
+    /// M14: servo spindle in position (CS) mode; M15: back to speed mode (seed 001).
+    SpindlePositionMode,
+    SpindleSpeedMode,
+    /// Coolant, chuck, tailstock...: no motion, accepted.
+    Auxiliary,
+}
+
+#[derive(Debug, Clone, Copy)]
+pub struct MDef {
+    pub code: u32,
+    pub function: MFn,
+    pub meaning: &'static str,
+}
+
+/// A parameter's identity: the manual's own number (with a bit for bit parameters), or, where
+/// no manual number is known, an ncsight setting name.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ParamKey {
+    Number(u32, Option<u8>),
+    Setting(&'static str),
+}
+
+impl std::fmt::Display for ParamKey {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            ParamKey::Number(n, None) => write!(f, "{n}"),
+            ParamKey::Number(n, Some(b)) => write!(f, "{n}.{b}"),
+            ParamKey::Setting(s) => write!(f, "{s}"),
+        }
+    }
+}
+
+impl ParamKey {
+    /// Parse `19`, `18.6`, `0018.6`, `8135.7` or a setting name.
+    pub fn parse(text: &str) -> Option<ParamKey> {
+        let t = text.trim();
+        if t.is_empty() {
+            return None;
+        }
+        if t.bytes().all(|c| c.is_ascii_digit() || c == b'.') {
+            let mut it = t.splitn(2, '.');
+            let n: u32 = it.next()?.parse().ok()?;
+            let bit = match it.next() {
+                Some(b) => Some(b.parse::<u8>().ok().filter(|b| *b < 8)?),
+                None => None,
+            };
+            return Some(ParamKey::Number(n, bit));
+        }
+        None
+    }
+}
+
+/// One parameter with the facts the manuals give. `source` says where the fact comes from and
+/// whether it was read or inferred (../shared/reference/params_alarms.md).
+#[derive(Debug, Clone, Copy)]
+pub struct ParamDef {
+    pub key: ParamKey,
+    pub meaning: &'static str,
+    /// The unit the controller's parameter screen uses.
+    pub unit: &'static str,
+    pub min: f64,
+    pub max: f64,
+    pub default: f64,
+    /// Manual reference, or "assumed" with the reason.
+    pub source: &'static str,
+}
+
+/// Which parameters the first time model reads. Rates are in mm/min.
+#[derive(Debug, Clone, Copy)]
+pub struct TimeKeys {
+    /// Rapid traverse rate of X, Y, Z (the same key may serve several axes).
+    pub rapid: [ParamKey; 3],
+    /// Upper limit of the cutting feed.
+    pub feed_max: ParamKey,
+}
+
+/// A controller profile.
+#[derive(Debug)]
+pub struct Profile {
+    pub name: &'static str,
+    pub title: &'static str,
+    pub kind: MachineKind,
+    /// X words are diameters (lathes).
+    pub diameter_x: bool,
+    pub integer_lengths: IntegerLengths,
+    pub alarm_style: AlarmStyle,
+    /// `U`/`W` (and `V`) are incremental X/Z (Y) words: lathes with G-code system A.
+    pub incremental_addresses: bool,
+    /// Feed per revolution at power on (lathes: G98 on GSK per the TDi manual p179).
+    pub power_on_per_rev: bool,
+    /// Two G codes from group 00 and group 01 in one block is an alarm (GSK, TAC p65).
+    pub group00_with_01_alarm: bool,
+    /// Axes the machine has, of "XYZ" (formatters omit the others).
+    pub axes: &'static str,
+    /// The reference point G28 returns to, in programme coordinates (mm, X as a radius). The
+    /// simulation has no machine coordinates, so this is a documented assumption per profile.
+    pub reference_point_mm: crate::motion::Vec3,
+    /// Addresses the controller reads at all (anything else is IMPROPER NC-ADDRESS).
+    pub addresses: &'static str,
+    pub g_codes: &'static [&'static [GDef]],
+    pub m_codes: &'static [MDef],
+    pub params: &'static [ParamDef],
+    pub time: TimeKeys,
+    /// One paragraph for `ncsight machines`.
+    pub summary: &'static str,
+}
+
+/// All profiles, in the order `ncsight machines` lists them.
+pub fn all() -> [&'static Profile; 4] {
+    [&gsk980tdi::PROFILE, &gsk988t::PROFILE, &fanuc0m::PROFILE, &yasnac_lx3::PROFILE]
+}
+
+/// The profile of that name.
+pub fn by_name(name: &str) -> Option<&'static Profile> {
+    all().into_iter().find(|p| p.name.eq_ignore_ascii_case(name))
+}
+
+impl Profile {
+    pub fn g_code(&self, major: u32, minor: Option<u32>) -> Option<&'static GDef> {
+        self.g_codes.iter().flat_map(|t| t.iter()).find(|g| g.major == major && g.minor == minor)
+    }
+
+    pub fn m_code(&self, code: u32) -> Option<&'static MDef> {
+        self.m_codes.iter().find(|m| m.code == code)
+    }
+
+    pub fn param(&self, key: ParamKey) -> Option<(usize, &'static ParamDef)> {
+        self.params.iter().enumerate().find(|(_, p)| p.key == key)
+    }
+
+    pub fn takes_address(&self, letter: u8) -> bool {
+        self.addresses.as_bytes().contains(&letter)
+    }
+
+    pub fn is_lathe(&self) -> bool {
+        self.kind == MachineKind::Lathe
+    }
+}
+
+/// Parameter values in force for one run: the profile's defaults, overridden by `--param`.
+#[derive(Debug, Clone)]
+pub struct Params {
+    profile: &'static Profile,
+    values: Vec<f64>,
+}
+
+/// Why a `--param` could not be taken.
+#[derive(Debug, Clone, PartialEq)]
+pub enum ParamError {
+    Syntax(String),
+    Unknown(String),
+    OutOfRange { key: String, value: f64, min: f64, max: f64, unit: &'static str },
+}
+
+impl std::fmt::Display for ParamError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            ParamError::Syntax(s) => write!(f, "--param {s}: expected N=V, N.B=V or NAME=V"),
+            ParamError::Unknown(s) => write!(f, "parameter {s} does not exist on this profile (see `ncsight machines`)"),
+            ParamError::OutOfRange { key, value, min, max, unit } => {
+                write!(f, "parameter {key} = {value} is out of range {min}..{max} {unit}")
+            }
+        }
+    }
+}
+
+impl std::error::Error for ParamError {}
+
+impl Params {
+    pub fn defaults(profile: &'static Profile) -> Params {
+        Params { profile, values: profile.params.iter().map(|p| p.default).collect() }
+    }
+
+    pub fn profile(&self) -> &'static Profile {
+        self.profile
+    }
+
+    /// Apply `N=V` (`19=10`, `18.6=1`, `rapid_mm_min=12000`).
+    pub fn set_text(&mut self, assignment: &str) -> Result<(), ParamError> {
+        let (k, v) = assignment.split_once('=').ok_or_else(|| ParamError::Syntax(assignment.into()))?;
+        let value: f64 = v.trim().parse().map_err(|_| ParamError::Syntax(assignment.into()))?;
+        if !value.is_finite() {
+            return Err(ParamError::Syntax(assignment.into()));
+        }
+        let key = match ParamKey::parse(k) {
+            Some(key) => key,
+            None => match self.profile.params.iter().find(|p| matches!(p.key, ParamKey::Setting(s) if s == k.trim())) {
+                Some(p) => p.key,
+                None => return Err(ParamError::Unknown(k.trim().into())),
+            },
+        };
+        self.set(key, value)
+    }
+
+    pub fn set(&mut self, key: ParamKey, value: f64) -> Result<(), ParamError> {
+        let (i, def) = self.profile.param(key).ok_or_else(|| ParamError::Unknown(key.to_string()))?;
+        if value < def.min || value > def.max {
+            return Err(ParamError::OutOfRange { key: key.to_string(), value, min: def.min, max: def.max, unit: def.unit });
+        }
+        self.values[i] = value;
+        Ok(())
+    }
+
+    /// The value of a parameter the profile defines. Asking for one it lacks is a programming
+    /// error in a profile table, caught by the profile tests.
+    pub fn get(&self, key: ParamKey) -> f64 {
+        match self.profile.param(key) {
+            Some((i, _)) => self.values[i],
+            None => panic!("profile {} has no parameter {key}", self.profile.name),
+        }
+    }
+
+    /// Rapid traverse rate of axis 0..3 (X, Y, Z), mm/min.
+    pub fn rapid_mm_min(&self, axis: usize) -> f64 {
+        self.get(self.profile.time.rapid[axis])
+    }
+
+    pub fn feed_max_mm_min(&self) -> f64 {
+        self.get(self.profile.time.feed_max)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_profile_is_consistent() {
+        for p in all() {
+            for d in p.params {
+                assert!(d.min <= d.default && d.default <= d.max, "{} {}", p.name, d.key);
+                assert!(!d.source.is_empty() && !d.meaning.is_empty());
+            }
+            let params = Params::defaults(p);
+            for a in 0..3 {
+                assert!(params.rapid_mm_min(a) > 0.0);
+            }
+            assert!(params.feed_max_mm_min() > 0.0);
+            // No G code twice.
+            let all: Vec<_> = p.g_codes.iter().flat_map(|t| t.iter()).collect();
+            for (i, g) in all.iter().enumerate() {
+                assert!(
+                    !all[i + 1..].iter().any(|h| h.major == g.major && h.minor == g.minor),
+                    "{}: G{}.{:?} twice",
+                    p.name,
+                    g.major,
+                    g.minor
+                );
+            }
+            assert!(by_name(p.name).is_some());
+        }
+    }
+
+    #[test]
+    fn param_syntax() {
+        let mut ps = Params::defaults(by_name("gsk980tdi").unwrap());
+        ps.set_text("19=10").unwrap();
+        assert_eq!(ps.get(ParamKey::Number(19, None)), 10.0);
+        ps.set_text("18.6=1").unwrap();
+        assert!(matches!(ps.set_text("18.6=2"), Err(ParamError::OutOfRange { .. })));
+        assert!(matches!(ps.set_text("9999=1"), Err(ParamError::Unknown(_))));
+        assert!(matches!(ps.set_text("19"), Err(ParamError::Syntax(_))));
+    }
+}

@@ -1,0 +1,61 @@
+//! YASKAWA YASNAC LX3 lathe: seed 004 (G92 with I, K, E). No LX3 parameter manual was found
+//! (params_alarms.md section 5): the time-model rates are ncsight settings, named, not numbered.
+
+use super::lathe_a::{M_CODES, G_CODES};
+use super::{IntegerLengths, MachineKind, ParamDef, ParamKey, Profile, TimeKeys};
+use crate::alarm::AlarmStyle;
+
+const PARAMS: &[ParamDef] = &[
+    ParamDef {
+        key: ParamKey::Number(6019, Some(7)),
+        meaning: "thread cutting hold: 0 = thread up and return to the start point A, 1 = stop where the threading-up ended (B)",
+        unit: "bit",
+        min: 0.0,
+        max: 1.0,
+        default: 0.0,
+        source: "seed 004, thread cutting hold",
+    },
+    ParamDef {
+        key: ParamKey::Setting("rapid_mm_min"),
+        meaning: "rapid traverse rate (each axis); the LX3 parameter number was not found",
+        unit: "mm/min",
+        min: 1.0,
+        max: 60000.0,
+        default: 8000.0,
+        source: "ncsight setting; assumed",
+    },
+    ParamDef {
+        key: ParamKey::Setting("feed_max_mm_min"),
+        meaning: "upper limit of the cutting feed; the LX3 parameter number was not found",
+        unit: "mm/min",
+        min: 1.0,
+        max: 60000.0,
+        default: 8000.0,
+        source: "ncsight setting; assumed",
+    },
+];
+
+pub static PROFILE: Profile = Profile {
+    name: "yasnac-lx3",
+    title: "YASKAWA YASNAC LX3 lathe",
+    kind: MachineKind::Lathe,
+    diameter_x: true,
+    integer_lengths: IntegerLengths::LeastIncrement,
+    alarm_style: AlarmStyle::Project,
+    incremental_addresses: true,
+    power_on_per_rev: true,
+    group00_with_01_alarm: false,
+    axes: "XZ",
+    reference_point_mm: crate::motion::Vec3::new(100.0, 0.0, 200.0),
+    addresses: "GMSTFEXZUWRIKPQLN",
+    g_codes: &[G_CODES],
+    m_codes: M_CODES,
+    params: PARAMS,
+    time: TimeKeys {
+        rapid: [ParamKey::Setting("rapid_mm_min"), ParamKey::Setting("rapid_mm_min"), ParamKey::Setting("rapid_mm_min")],
+        feed_max: ParamKey::Setting("feed_max_mm_min"),
+    },
+    summary: "YASNAC LX3 turning centre. X is a diameter, U/W incremental. Lengths without a decimal \
+point are least input increments (X100 = 0.1 mm); seed 004 writes every length with a point. \
+Feed per revolution at power on (assumed).",
+};

@@ -1,0 +1,522 @@
+//! The reader: one line of programme text -> blocks of words, each with its span.
+//!
+//! What it understands (issue 2, item 1): `%` tape marks, `O` programme numbers, `N` sequence
+//! numbers, `/` block delete, `( )` comments, `;` as the manuals' end-of-block mark, lower case,
+//! words without spaces (`G92X20Z-30F1.5`), CRLF, a UTF-8 BOM, any bytes inside comments, and
+//! `[expr]` values. It knows nothing of a controller's G codes: that is the interpreter's job.
+
+pub mod expr;
+
+use crate::alarm::{AlarmStyle, Diagnostic, Rule};
+use crate::source::Span;
+
+/// Longest block text accepted. FANUC and GSK tapes hold far shorter blocks; the limit keeps a
+/// broken file (a binary, a 100 kB line) to one clear alarm.
+pub const MAX_LINE_BYTES: usize = 4096;
+
+/// Most significant digits a numeric value may have (FANUC PS0003 "TOO MANY DIGIT": the
+/// controls take 8 digits; one more is accepted for CAM output that pads a trailing digit).
+pub const MAX_DIGITS: usize = 9;
+
+/// One address with its value, e.g. `X-12.5` or `F[25.4/10]`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Word {
+    /// Upper-case ASCII letter.
+    pub letter: u8,
+    /// The value as written (sign applied; no unit conversion).
+    pub value: f64,
+    /// A decimal point was written (an `[expr]` counts as having one).
+    pub decimal: bool,
+    /// The value came from an `[expr]`.
+    pub expr: bool,
+    pub span: Span,
+}
+
+impl Word {
+    /// `G32.1` -> (32, Some(1)); `G01` -> (1, None). Only meaningful for G/M words.
+    pub fn code(&self) -> (u32, Option<u32>) {
+        let v = self.value.abs();
+        let major = v.trunc() as u32;
+        if self.decimal {
+            let minor = ((v - v.trunc()) * 10.0).round() as u32;
+            (major, Some(minor))
+        } else {
+            (major, None)
+        }
+    }
+
+    /// The word as a person would write it, for messages.
+    pub fn text(&self) -> String {
+        let letter = self.letter as char;
+        if self.expr {
+            return format!("{letter}[...]");
+        }
+        if self.decimal {
+            let s = format!("{}", self.value);
+            if s.contains('.') { format!("{letter}{s}") } else { format!("{letter}{s}.") }
+        } else {
+            format!("{letter}{}", self.value)
+        }
+    }
+}
+
+/// One block: the words between two end-of-block marks.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Block {
+    /// Span of the whole block text on its line.
+    pub span: Span,
+    /// `/` at the start: skipped when the block-delete switch is on.
+    pub block_delete: bool,
+    /// Sequence number `N`, if any.
+    pub sequence: Option<u32>,
+    /// Programme number `O`, if any.
+    pub program: Option<u32>,
+    /// Every other word, in the order written.
+    pub words: Vec<Word>,
+    /// Comment texts (without the parentheses), lossily decoded.
+    pub comments: Vec<String>,
+}
+
+impl Block {
+    pub fn is_empty(&self) -> bool {
+        self.words.is_empty() && self.sequence.is_none() && self.program.is_none()
+    }
+}
+
+/// What one line gave.
+#[derive(Debug, Default)]
+pub struct Line {
+    /// Blocks in order; a block that could not be read is its alarm. Reading a line stops at its
+    /// first alarm.
+    pub blocks: Vec<Result<Block, Diagnostic>>,
+    /// Warnings that belong to the line as a whole (unclosed comment, text after `%`, ...).
+    pub warnings: Vec<Diagnostic>,
+    /// The line is a `%` tape mark.
+    pub tape_mark: bool,
+    /// A DOS end-of-file byte (0x1A) ended the text.
+    pub end_of_file: bool,
+}
+
+/// Reads lines. Holds only what a line needs.
+pub struct Reader {
+    style: AlarmStyle,
+}
+
+fn is_blank(c: u8) -> bool {
+    c == b' ' || c == b'\t' || c == b'\r' || c == b'\n' || c == 0x0c || c == 0x0b
+}
+
+impl Reader {
+    pub fn new(style: AlarmStyle) -> Reader {
+        Reader { style }
+    }
+
+    fn diag(&self, rule: Rule, line: u32, col: usize, len: usize, msg: impl Into<String>) -> Diagnostic {
+        Diagnostic::new(rule, self.style, Span::new(line, col as u32 + 1, len.max(1) as u32), msg)
+    }
+
+    /// Read one line (its line break may be included). `line_no` is 1-based.
+    pub fn read_line(&self, line_no: u32, raw: &[u8]) -> Line {
+        let mut out = Line::default();
+        let mut s = raw;
+        if line_no == 1 && s.starts_with(&[0xEF, 0xBB, 0xBF]) {
+            s = &s[3..];
+        }
+        while let Some((&last, rest)) = s.split_last() {
+            if last == b'\n' || last == b'\r' {
+                s = rest;
+            } else {
+                break;
+            }
+        }
+        if s.len() > MAX_LINE_BYTES {
+            out.blocks.push(Err(self.diag(
+                Rule::LineTooLong,
+                line_no,
+                0,
+                1,
+                format!("line of {} bytes: a block may be at most {MAX_LINE_BYTES} bytes long", s.len()),
+            )));
+            return out;
+        }
+        let mut i = 0;
+        while i < s.len() && is_blank(s[i]) {
+            i += 1;
+        }
+        if i < s.len() && s[i] == b'%' {
+            out.tape_mark = true;
+            let rest = &s[i + 1..];
+            if rest.iter().any(|c| !is_blank(*c)) {
+                out.warnings.push(self.diag(
+                    Rule::TextIgnored,
+                    line_no,
+                    i + 1,
+                    rest.len(),
+                    "text after the '%' tape mark is ignored",
+                ));
+            }
+            return out;
+        }
+        let mut block = Block::default();
+        let mut block_start: Option<usize> = None;
+        let mut block_end = 0usize;
+        let finish = |block: &mut Block, start: Option<usize>, end: usize, out: &mut Line| {
+            let b = std::mem::take(block);
+            if let Some(st) = start {
+                let mut b = b;
+                b.span = Span::new(line_no, st as u32 + 1, (end - st).max(1) as u32);
+                out.blocks.push(Ok(b));
+            } else if !b.comments.is_empty() {
+                out.blocks.push(Ok(Block { span: Span::new(line_no, 1, 1), ..b }));
+            }
+        };
+        while i < s.len() {
+            let c = s[i];
+            match c {
+                _ if is_blank(c) => i += 1,
+                b'(' => {
+                    let close = s[i + 1..].iter().position(|&b| b == b')');
+                    let end = match close {
+                        Some(k) => i + 1 + k,
+                        None => {
+                            out.warnings.push(self.diag(
+                                Rule::CommentNotClosed,
+                                line_no,
+                                i,
+                                s.len() - i,
+                                "comment '(' is not closed: the rest of the line is read as a comment",
+                            ));
+                            s.len()
+                        }
+                    };
+                    block.comments.push(String::from_utf8_lossy(&s[i + 1..end]).into_owned());
+                    i = (end + 1).min(s.len()).max(end);
+                }
+                b';' => {
+                    finish(&mut block, block_start, block_end, &mut out);
+                    block_start = None;
+                    i += 1;
+                }
+                0x1A => {
+                    // DOS end-of-file mark (corpus: icnc__Delorensi_FASE2.txt).
+                    out.end_of_file = true;
+                    out.warnings.push(self.diag(
+                        Rule::EndOfFileMark,
+                        line_no,
+                        i,
+                        1,
+                        "byte 0x1A (DOS end-of-file mark): the text ends here",
+                    ));
+                    break;
+                }
+                b'/' if block_start.is_none() && block.words.is_empty() && !block.block_delete => {
+                    block.block_delete = true;
+                    block_start = Some(i);
+                    i += 1;
+                    // `/1`..`/9` select a block-delete switch; one switch is modelled.
+                    if i < s.len() && (b'1'..=b'9').contains(&s[i]) {
+                        i += 1;
+                    }
+                    block_end = i;
+                }
+                _ if c.is_ascii_alphabetic() => {
+                    block_start.get_or_insert(i);
+                    match self.word(line_no, s, i) {
+                        Ok((w, next)) => {
+                            i = next;
+                            block_end = next;
+                            match w.letter {
+                                b'N' if block.sequence.is_none() && block.words.is_empty() => {
+                                    block.sequence = Some(w.value as u32)
+                                }
+                                b'O' if block.program.is_none() && block.words.is_empty() => {
+                                    block.program = Some(w.value as u32)
+                                }
+                                _ => block.words.push(w),
+                            }
+                        }
+                        Err(d) => {
+                            out.blocks.push(Err(d));
+                            return out;
+                        }
+                    }
+                }
+                _ => {
+                    let d = if c.is_ascii_digit() || c == b'.' || c == b'-' || c == b'+' {
+                        let mut j = i;
+                        while j < s.len() && (s[j].is_ascii_digit() || b".+-".contains(&s[j])) {
+                            j += 1;
+                        }
+                        self.diag(
+                            Rule::ImproperAddress,
+                            line_no,
+                            i,
+                            j - i,
+                            format!(
+                                "number '{}' has no address letter before it",
+                                String::from_utf8_lossy(&s[i..j])
+                            ),
+                        )
+                        .with_hint("a letter such as G was probably left out")
+                    } else if c == b'#' {
+                        self.diag(Rule::NotSupported, line_no, i, 1, "macro variables (#) are not supported by ncsight")
+                    } else if c.is_ascii() {
+                        self.diag(
+                            Rule::BadCharacter,
+                            line_no,
+                            i,
+                            1,
+                            format!("character '{}' is not allowed outside a comment", c as char),
+                        )
+                    } else {
+                        self.diag(
+                            Rule::BadCharacter,
+                            line_no,
+                            i,
+                            1,
+                            format!("byte 0x{c:02X} is not allowed outside a comment"),
+                        )
+                        .with_hint("text other than ASCII belongs inside ( ) comments")
+                    };
+                    out.blocks.push(Err(d));
+                    return out;
+                }
+            }
+        }
+        finish(&mut block, block_start, block_end.max(block_start.unwrap_or(0)), &mut out);
+        out
+    }
+
+    /// One word starting at the letter `s[at]`. Returns the word and the index after it.
+    fn word(&self, line: u32, s: &[u8], at: usize) -> Result<(Word, usize), Diagnostic> {
+        let letter = s[at].to_ascii_uppercase();
+        let mut i = at + 1;
+        while i < s.len() && (s[i] == b' ' || s[i] == b'\t') {
+            i += 1;
+        }
+        let span_to = |end: usize| Span::new(line, at as u32 + 1, (end - at).max(1) as u32);
+        if i < s.len() && s[i] == b'[' {
+            // Find the matching bracket.
+            let mut depth = 0usize;
+            let mut j = i;
+            while j < s.len() {
+                match s[j] {
+                    b'[' => depth += 1,
+                    b']' => {
+                        depth -= 1;
+                        if depth == 0 {
+                            break;
+                        }
+                    }
+                    _ => {}
+                }
+                j += 1;
+            }
+            if j >= s.len() {
+                return Err(Diagnostic::new(
+                    Rule::Expression,
+                    self.style,
+                    span_to(s.len()),
+                    format!("{}[: the expression has no closing ']'", letter as char),
+                ));
+            }
+            return match expr::evaluate(&s[i + 1..j]) {
+                Ok(v) => Ok((Word { letter, value: v, decimal: true, expr: true, span: span_to(j + 1) }, j + 1)),
+                Err(e) => Err(Diagnostic::new(
+                    Rule::Expression,
+                    self.style,
+                    span_to(j + 1),
+                    format!(
+                        "{}[{}]: {}",
+                        letter as char,
+                        String::from_utf8_lossy(&s[i + 1..j]),
+                        e.message
+                    ),
+                )),
+            };
+        }
+        if i < s.len() && s[i] == b'#' {
+            return Err(Diagnostic::new(
+                Rule::NotSupported,
+                self.style,
+                span_to(i + 1),
+                format!("{}#: macro variables are not supported by ncsight", letter as char),
+            ));
+        }
+        let num_start = i;
+        let mut negative = false;
+        if i < s.len() && (s[i] == b'-' || s[i] == b'+') {
+            negative = s[i] == b'-';
+            i += 1;
+            while i < s.len() && (s[i] == b' ' || s[i] == b'\t') {
+                i += 1;
+            }
+        }
+        let digits_start = i;
+        let mut decimal = false;
+        let mut digits = 0usize;
+        let mut significant = 0usize;
+        let mut text = String::new();
+        while i < s.len() {
+            let c = s[i];
+            if c.is_ascii_digit() {
+                digits += 1;
+                if significant > 0 || c != b'0' {
+                    significant += 1;
+                }
+                text.push(c as char);
+            } else if c == b'.' {
+                if decimal {
+                    let mut end = i + 1;
+                    while end < s.len() && (s[end].is_ascii_digit() || s[end] == b'.') {
+                        end += 1;
+                    }
+                    return Err(Diagnostic::new(
+                        Rule::IllegalDecimalPoint,
+                        self.style,
+                        span_to(end),
+                        format!(
+                            "{}{}: two decimal points in one value",
+                            letter as char,
+                            String::from_utf8_lossy(&s[num_start..end])
+                        ),
+                    )
+                    .with_hint("delete one of the decimal points"));
+                }
+                decimal = true;
+                text.push('.');
+            } else {
+                break;
+            }
+            i += 1;
+        }
+        if digits == 0 {
+            let next = s.get(digits_start).copied();
+            let mut d = Diagnostic::new(
+                Rule::NoDataAfterAddress,
+                self.style,
+                span_to(digits_start.max(at + 1)),
+                format!("address {} has no value after it", letter as char),
+            );
+            if matches!(next, Some(b'O' | b'o')) {
+                d.span = span_to(digits_start + 1);
+                d.message = format!(
+                    "{}{}: address {} is followed by the letter O, not a number",
+                    letter as char,
+                    next.unwrap() as char,
+                    letter as char
+                );
+                d = d.with_hint("letter O where a zero was probably meant");
+            } else if negative {
+                d.rule = Rule::IllegalMinus;
+                d.code = Rule::IllegalMinus.code(self.style);
+                d.message = format!("{}-: a minus sign without a number", letter as char);
+            }
+            return Err(d);
+        }
+        if significant > MAX_DIGITS {
+            return Err(Diagnostic::new(
+                Rule::TooManyDigits,
+                self.style,
+                span_to(i),
+                format!(
+                    "{}{}: {significant} digits, at most {MAX_DIGITS} are allowed",
+                    letter as char,
+                    String::from_utf8_lossy(&s[num_start..i])
+                ),
+            ));
+        }
+        let mut value: f64 = text.parse().unwrap_or(0.0);
+        if negative {
+            value = -value;
+        }
+        Ok((Word { letter, value, decimal, expr: false, span: span_to(i) }, i))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn read(s: &str) -> Line {
+        Reader::new(AlarmStyle::Project).read_line(1, s.as_bytes())
+    }
+
+    fn words(s: &str) -> Vec<(char, f64, bool)> {
+        let l = read(s);
+        let b = l.blocks[0].as_ref().unwrap();
+        b.words.iter().map(|w| (w.letter as char, w.value, w.decimal)).collect()
+    }
+
+    #[test]
+    fn words_without_spaces() {
+        assert_eq!(
+            words("G92X20Z-30F1.5"),
+            vec![('G', 92.0, false), ('X', 20.0, false), ('Z', -30.0, false), ('F', 1.5, true)]
+        );
+        assert_eq!(words("g01 x-.5 z+3."), vec![('G', 1.0, false), ('X', -0.5, true), ('Z', 3.0, true)]);
+    }
+
+    #[test]
+    fn sequence_program_comments_and_eob() {
+        let l = read("N10 G0 X1 (to X1) ; (tool) ");
+        assert_eq!(l.blocks.len(), 2);
+        let b = l.blocks[0].as_ref().unwrap();
+        assert_eq!(b.sequence, Some(10));
+        assert_eq!(b.comments, vec!["to X1".to_string()]);
+        let l = read("O0012;");
+        assert_eq!(l.blocks[0].as_ref().unwrap().program, Some(12));
+        assert!(read("%").tape_mark);
+    }
+
+    #[test]
+    fn expression_value() {
+        let w = words("F[25.4/10]");
+        assert_eq!(w[0].0, 'F');
+        assert!((w[0].1 - 2.54).abs() < 1e-12);
+        assert!(w[0].2);
+    }
+
+    #[test]
+    fn typos_get_hints() {
+        let l = read("GO X0.");
+        let d = l.blocks[0].as_ref().unwrap_err();
+        assert_eq!(d.rule, Rule::NoDataAfterAddress);
+        assert!(d.hint.as_deref().unwrap().contains("letter O"));
+        let l = read("G0X-4.5.Z0.");
+        let d = l.blocks[0].as_ref().unwrap_err();
+        assert_eq!(d.rule, Rule::IllegalDecimalPoint);
+        assert_eq!(d.span.col, 3);
+        let l = read("N10 21 G40");
+        assert_eq!(l.blocks[0].as_ref().unwrap_err().rule, Rule::ImproperAddress);
+    }
+
+    #[test]
+    fn bytes_that_are_not_utf8() {
+        let l = Reader::new(AlarmStyle::Project).read_line(1, b"G0 X1 (FURA\x80AO)\r\n");
+        assert!(l.blocks[0].is_ok());
+        let l = Reader::new(AlarmStyle::Project).read_line(1, b"G0 X1 \xC3\xA9");
+        assert_eq!(l.blocks[0].as_ref().unwrap_err().rule, Rule::BadCharacter);
+        let l = Reader::new(AlarmStyle::Project).read_line(1, b"\xEF\xBB\xBF%");
+        assert!(l.tape_mark);
+        let l = Reader::new(AlarmStyle::Project).read_line(3, b"\x1A");
+        assert!(l.end_of_file);
+    }
+
+    #[test]
+    fn long_line_is_one_alarm() {
+        let s = "G1".to_string() + &" X1".repeat(40_000);
+        let l = read(&s);
+        assert_eq!(l.blocks.len(), 1);
+        assert_eq!(l.blocks[0].as_ref().unwrap_err().rule, Rule::LineTooLong);
+    }
+
+    #[test]
+    fn g_code_with_point() {
+        let l = read("G32.1 X1");
+        let b = l.blocks[0].as_ref().unwrap();
+        assert_eq!(b.words[0].code(), (32, Some(1)));
+        let l = read("G00.0");
+        assert_eq!(l.blocks[0].as_ref().unwrap().words[0].code(), (0, Some(0)));
+    }
+}

@@ -1,0 +1,30 @@
+//! Source positions. A span names one line and a run of bytes on it; columns are 1-based
+//! byte columns counted after a leading UTF-8 byte-order mark, so they match what an editor shows
+//! for ASCII text (every G-code word is ASCII).
+
+/// Where a block, a word or a diagnostic sits in the programme text.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct Span {
+    /// 1-based line number in the input file.
+    pub line: u32,
+    /// 1-based byte column of the first byte.
+    pub col: u32,
+    /// Length in bytes (at least 1 for anything a person must see underlined).
+    pub len: u32,
+}
+
+impl Span {
+    pub fn new(line: u32, col: u32, len: u32) -> Span {
+        Span { line, col, len }
+    }
+
+    /// The smallest span covering both (same line assumed; otherwise `self`).
+    pub fn to(self, other: Span) -> Span {
+        if other.line != self.line {
+            return self;
+        }
+        let start = self.col.min(other.col);
+        let end = (self.col + self.len).max(other.col + other.len);
+        Span { line: self.line, col: start, len: end - start }
+    }
+}
