@@ -89,6 +89,9 @@ rules! {
     ProgramLoops => Warning, "NCS-W08", None, "M99 IN THE MAIN PROGRAMME";
     AfterEnd => Warning, "NCS-W09", None, "BLOCKS AFTER THE PROGRAMME END";
     ZeroArc => Warning, "NCS-W10", None, "ARC OF ZERO DEGREES";
+    FeedClamped => Warning, "NCS-W11", None, "FEED ABOVE THE LIMIT: CLAMPED";
+    NotSimulated => Warning, "NCS-W12", None, "NOT SIMULATED: PROGRAMMED PATH SHOWN";
+    NoProgramEnd => Warning, "NCS-W13", None, "NO PROGRAMME END";
 }
 
 impl Rule {

@@ -163,7 +163,7 @@ impl Program {
     pub fn finish(&mut self, sink: &mut dyn FnMut(Event)) {
         if self.status == Status::Running {
             let d = Diagnostic::new(
-                Rule::TextIgnored,
+                Rule::NoProgramEnd,
                 self.interp.profile().alarm_style,
                 self.last_span,
                 "the programme has no end (M02 or M30): the controller stops after the last block",

@@ -103,14 +103,22 @@ impl Step<'_> {
         Ok(v)
     }
 
-    /// Spindle speed for feed per revolution at the current position.
-    fn rpm_here(&self) -> f64 {
-        let dia = if self.profile.diameter_x { 2.0 * self.st.pos.x } else { 0.0 };
+    /// Spindle speed at a point (G96 makes it depend on the diameter), signed.
+    fn rpm_at(&self, p: &Vec3) -> f64 {
+        let dia = if self.profile.diameter_x { 2.0 * p.x } else { 0.0 };
         self.st.rpm_at(dia, MAX_RPM)
     }
 
-    /// Cutting feed in mm/min for the block, or the alarm that it has none.
-    fn cutting_feed(&mut self, what: &str) -> Result<f64, Diagnostic> {
+    /// Spindle speed at the current position.
+    fn rpm_here(&self) -> f64 {
+        self.rpm_at(&self.st.pos)
+    }
+
+    /// The cutting feed of a move in mm/min, or the alarm that it has none. `point(u)` gives
+    /// the tool position at fraction `u` of the path length. With feed per revolution under G96
+    /// the spindle speed changes along the move; the feed returned is then the mean one
+    /// (length / time), the time integrated over the path (Simpson's rule, 64 intervals).
+    fn cutting_feed(&mut self, what: &str, point: &dyn Fn(f64) -> Vec3) -> Result<f64, Diagnostic> {
         let f = match self.st.feed {
             Some(f) if f > 0.0 => f,
             _ => {
@@ -121,6 +129,8 @@ impl Step<'_> {
                 ))
             }
         };
+        let max = self.params.feed_max_mm_min();
+        let feed_at = |rpm: f64| (f * rpm.abs()).min(max);
         let mut feed = f;
         if self.st.per_rev {
             let rpm = self.rpm_here().abs();
@@ -132,11 +142,20 @@ impl Step<'_> {
                 ));
             }
             feed = f * rpm;
+            if self.st.css {
+                const N: usize = 64;
+                let mut sum = 0.0;
+                for i in 0..=N {
+                    let w = if i == 0 || i == N { 1.0 } else if i % 2 == 1 { 4.0 } else { 2.0 };
+                    sum += w / feed_at(self.rpm_at(&point(i as f64 / N as f64)));
+                }
+                let mean_inverse = sum / (3.0 * N as f64);
+                return Ok(1.0 / mean_inverse);
+            }
         }
-        let max = self.params.feed_max_mm_min();
         if feed > max {
             self.warn(
-                Rule::TextIgnored,
+                Rule::FeedClamped,
                 self.span,
                 format!("cutting feed {feed:.1} mm/min is above the limit {max} mm/min: clamped"),
             );
@@ -321,7 +340,7 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
                 st.radius_comp = on;
                 if on {
                     let msg = format!("{}: radius compensation is not simulated; the programmed path is shown", w.text());
-                    step.warn(Rule::TextIgnored, w.span, msg);
+                    step.warn(Rule::NotSimulated, w.span, msg);
                 }
             }
             GFn::LengthComp | GFn::WorkOffset | GFn::PathControl => {}
@@ -590,7 +609,7 @@ fn motion(step: &mut Step, words: &mut Words) -> Result<(), Diagnostic> {
             }
         }
         Motion::Linear => {
-            let feed = step.cutting_feed("G01")?;
+            let feed = step.cutting_feed("G01", &|u| lerp(&from, &target, u))?;
             if target != from {
                 step.emit(Op::Feed { from, to: target, feed_mm_min: feed });
             }
@@ -603,6 +622,10 @@ fn motion(step: &mut Step, words: &mut Words) -> Result<(), Diagnostic> {
     Ok(())
 }
 
+fn lerp(a: &Vec3, b: &Vec3, u: f64) -> Vec3 {
+    Vec3::new(a.x + (b.x - a.x) * u, a.y + (b.y - a.y) * u, a.z + (b.z - a.z) * u)
+}
+
 fn arc(step: &mut Step, words: &mut Words, from: Vec3, to: Vec3, dir: ArcDir) -> Result<(), Diagnostic> {
     let plane = step.st.plane;
     let (a, b, _) = plane.axes();
@@ -612,7 +635,6 @@ fn arc(step: &mut Step, words: &mut Words, from: Vec3, to: Vec3, dir: ArcDir) ->
     let (la, lb) = (letter_of(a), letter_of(b));
     let ca = words.take(la);
     let cb = words.take(lb);
-    let feed = step.cutting_feed(gname)?;
     let geom = if let Some(rw) = r_word {
         // R wins over I/J/K (TDi help G02/03 note 1; seed 002 for arc threads).
         if let Some(w) = ca.or(cb) {
@@ -626,6 +648,7 @@ fn arc(step: &mut Step, words: &mut Words, from: Vec3, to: Vec3, dir: ArcDir) ->
                 // TDi help G02/03 note 3: with R, start = end is a 0-degree arc.
                 step.warn(Rule::ZeroArc, rw.span, format!("{gname} with {}: start and end coincide, a 0-degree arc (no motion)", rw.text()));
                 if to != from {
+                    let feed = step.cutting_feed(gname, &|u| lerp(&from, &to, u))?;
                     // Only the axis normal to the plane moves.
                     step.emit(Op::Feed { from, to, feed_mm_min: feed });
                 }
@@ -668,6 +691,7 @@ fn arc(step: &mut Step, words: &mut Words, from: Vec3, to: Vec3, dir: ArcDir) ->
             Err(e) => unreachable!("{e:?}"),
         }
     };
+    let feed = step.cutting_feed(gname, &|u| geom::arc_point(&from, &to, plane, dir, &geom, u))?;
     step.emit(Op::Arc { from, to, center: geom.center, plane, dir, feed_mm_min: feed });
     Ok(())
 }

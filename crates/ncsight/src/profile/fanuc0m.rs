@@ -27,6 +27,7 @@ const G_CODES: &[GDef] = &[
     g(43, Group::LengthComp, GFn::LengthComp, "tool length compensation +"),
     g(44, Group::LengthComp, GFn::LengthComp, "tool length compensation -"),
     g(49, Group::LengthComp, GFn::LengthComp, "cancel tool length compensation"),
+    g(53, Group::NonModal, GFn::NotYet("positioning in machine coordinates is not simulated: ncsight has programme coordinates only"), "positioning in the machine coordinate system"),
     g(54, Group::WorkOffset, GFn::WorkOffset, "work coordinate system 1"),
     g(55, Group::WorkOffset, GFn::WorkOffset, "work coordinate system 2"),
     g(56, Group::WorkOffset, GFn::WorkOffset, "work coordinate system 3"),

@@ -1,8 +1,10 @@
 //! GSK980TDi lathe, G-code system A. Seed 000 (G92) and the on-line help text.
 
 use super::lathe_a::{gp, GSK_M_CODES, G_CODES, LATER_THREAD};
-use super::{GDef, Group, IntegerLengths, MachineKind, ParamDef, ParamKey, Profile, TimeKeys};
+use super::{GDef, GFn, Group, IntegerLengths, MachineKind, ParamDef, ParamKey, Profile, TimeKeys};
 use crate::alarm::AlarmStyle;
+
+const LATER_DRILL: GFn = GFn::NotYet("the lathe drilling cycles (G83-G89) are not simulated by ncsight yet");
 
 const EXTRA: &[GDef] = &[
     gp(32, 1, Group::Motion, LATER_THREAD, "rigid thread cutting"),
@@ -11,6 +13,13 @@ const EXTRA: &[GDef] = &[
     gp(92, 1, Group::Motion, LATER_THREAD, "rigid thread cutting cycle"),
     GDef { major: 33, minor: None, group: Group::Motion, function: LATER_THREAD, meaning: "tapping cycle" },
     GDef { major: 34, minor: None, group: Group::Motion, function: LATER_THREAD, meaning: "variable-lead thread cutting" },
+    GDef { major: 80, minor: None, group: Group::Motion, function: GFn::CycleCancel, meaning: "cancel a drilling cycle" },
+    GDef { major: 83, minor: None, group: Group::Motion, function: LATER_DRILL, meaning: "end face peck drilling cycle" },
+    GDef { major: 84, minor: None, group: Group::Motion, function: LATER_DRILL, meaning: "end face tapping cycle" },
+    GDef { major: 85, minor: None, group: Group::Motion, function: LATER_DRILL, meaning: "end face boring cycle" },
+    GDef { major: 87, minor: None, group: Group::Motion, function: LATER_DRILL, meaning: "side peck drilling cycle" },
+    GDef { major: 88, minor: None, group: Group::Motion, function: LATER_DRILL, meaning: "side tapping cycle" },
+    GDef { major: 89, minor: None, group: Group::Motion, function: LATER_DRILL, meaning: "side boring cycle" },
     GDef { major: 78, minor: None, group: Group::Motion, function: LATER_THREAD, meaning: "thread cutting cycle with infeed modes" },
 ];
 

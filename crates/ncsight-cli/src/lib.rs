@@ -1,0 +1,311 @@
+//! The `ncsight` command line over the core library: argument parsing, file I/O, output
+//! formats and diagnostics. `main.rs` only calls [`main_with`].
+
+pub mod diag;
+pub mod format;
+
+use clap::{Parser, Subcommand};
+use ncsight::profile::{self, Params, Profile};
+use ncsight::{Event, Mode, Program, Severity, Status, Switches};
+use std::io::{self, BufRead, BufReader, Read, Write};
+
+/// Exit status: ran to the end / clean.
+pub const EXIT_OK: i32 = 0;
+/// Exit status: stopped on an alarm (run) or an alarm was found (check).
+pub const EXIT_ALARM: i32 = 1;
+/// Exit status: usage or I/O error.
+pub const EXIT_USAGE: i32 = 2;
+
+#[derive(Parser, Debug)]
+#[command(name = "ncsight", version, about = "See what a CNC programme will do on a GSK, FANUC or YASNAC controller before the machine does it")]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(clap::Args, Debug)]
+struct MachineArgs {
+    /// Controller profile: gsk980tdi, gsk988t, fanuc0m, yasnac-lx3 (default gsk980tdi).
+    #[arg(long, short = 'm')]
+    machine: Option<String>,
+    /// Override a parameter by the manual's number: N=V or N.B=V for a bit (e.g. 19=10, 18.6=1).
+    #[arg(long = "param", value_name = "N=V")]
+    params: Vec<String>,
+    /// Block delete switch on: blocks starting with '/' are skipped.
+    #[arg(long)]
+    block_delete: bool,
+    /// Optional stop switch on: M01 stops.
+    #[arg(long)]
+    optional_stop: bool,
+}
+
+#[derive(Subcommand, Debug)]
+enum Command {
+    /// Interpret the programme as the controller would and print every motion.
+    Run {
+        /// Programme file, or - for standard input.
+        file: String,
+        #[command(flatten)]
+        machine: MachineArgs,
+        /// Output format: text, jsonl or canon.
+        #[arg(long, default_value = "text")]
+        format: String,
+        /// Write the output to this file instead of standard output.
+        #[arg(short = 'o', long = "output")]
+        output: Option<String>,
+    },
+    /// Report every alarm and warning with file:line:column; run nothing.
+    Check {
+        /// Programme files, or - for standard input.
+        #[arg(required = true)]
+        files: Vec<String>,
+        #[command(flatten)]
+        machine: MachineArgs,
+    },
+    /// Write one self-contained HTML report (not built yet).
+    Report {
+        file: String,
+        #[command(flatten)]
+        machine: MachineArgs,
+        #[arg(short = 'o', long = "output")]
+        output: Option<String>,
+    },
+    /// The thread-repair calculation (not built yet).
+    #[command(disable_help_flag = false)]
+    Repair {
+        #[arg(trailing_var_arg = true, allow_hyphen_values = true)]
+        args: Vec<String>,
+    },
+    /// List the controller profiles; with a name, its parameters.
+    Machines {
+        machine: Option<String>,
+    },
+}
+
+/// Run the command line. Returns the exit status.
+pub fn main_with(args: impl IntoIterator<Item = std::ffi::OsString>, out: &mut dyn Write, err: &mut dyn Write) -> i32 {
+    let cli = match Cli::try_parse_from(args) {
+        Ok(c) => c,
+        Err(e) => {
+            let code = if e.use_stderr() { EXIT_USAGE } else { EXIT_OK };
+            let text = e.render().to_string();
+            if e.use_stderr() {
+                let _ = err.write_all(text.as_bytes());
+            } else {
+                let _ = out.write_all(text.as_bytes());
+            }
+            return code;
+        }
+    };
+    let result = match cli.command {
+        Command::Run { file, machine, format, output } => run(&file, &machine, &format, output.as_deref(), out, err),
+        Command::Check { files, machine } => check(&files, &machine, out, err),
+        Command::Machines { machine } => machines(machine.as_deref(), out),
+        Command::Report { .. } => Err(usage("`ncsight report` is not built yet: the HTML report comes with its own issue")),
+        Command::Repair { .. } => Err(usage("`ncsight repair` is not built yet: thread repair comes with its own issue")),
+    };
+    match result {
+        Ok(code) => code,
+        Err(Failure::Usage(msg)) => {
+            let _ = writeln!(err, "ncsight: {msg}");
+            EXIT_USAGE
+        }
+        Err(Failure::Io(e)) if e.kind() == io::ErrorKind::BrokenPipe => EXIT_OK,
+        Err(Failure::Io(e)) => {
+            let _ = writeln!(err, "ncsight: {e}");
+            EXIT_USAGE
+        }
+    }
+}
+
+enum Failure {
+    Usage(String),
+    Io(io::Error),
+}
+
+impl From<io::Error> for Failure {
+    fn from(e: io::Error) -> Failure {
+        Failure::Io(e)
+    }
+}
+
+fn usage(msg: impl Into<String>) -> Failure {
+    Failure::Usage(msg.into())
+}
+
+fn names() -> String {
+    profile::all().iter().map(|p| p.name).collect::<Vec<_>>().join(", ")
+}
+
+/// The profile and parameters the arguments name.
+fn setup(m: &MachineArgs, err: &mut dyn Write) -> Result<(Params, Switches), Failure> {
+    let name = match &m.machine {
+        Some(n) => n.clone(),
+        None => {
+            let _ = writeln!(err, "ncsight: no --machine given, using gsk980tdi (profiles: {})", names());
+            "gsk980tdi".to_string()
+        }
+    };
+    let profile: &'static Profile =
+        profile::by_name(&name).ok_or_else(|| usage(format!("unknown machine '{name}': choose one of {}", names())))?;
+    let mut params = Params::defaults(profile);
+    for p in &m.params {
+        params.set_text(p).map_err(|e| usage(format!("{} ({})", e, profile.name)))?;
+    }
+    Ok((params, Switches { block_delete: m.block_delete, optional_stop: m.optional_stop }))
+}
+
+fn open(file: &str) -> Result<Box<dyn BufRead>, Failure> {
+    if file == "-" {
+        return Ok(Box::new(BufReader::new(io::stdin())));
+    }
+    let f = std::fs::File::open(file).map_err(|e| usage(format!("cannot read {file}: {e}")))?;
+    Ok(Box::new(BufReader::with_capacity(1 << 16, f)))
+}
+
+/// Feed a reader line by line into a programme; `on_event` gets each event with its line text.
+fn drive(
+    input: &mut dyn BufRead,
+    program: &mut Program,
+    on_event: &mut dyn FnMut(&Event, &[u8]) -> io::Result<()>,
+) -> Result<(), Failure> {
+    let mut line = Vec::with_capacity(256);
+    let mut pending: io::Result<()> = Ok(());
+    loop {
+        line.clear();
+        // A line longer than the reader's limit is cut here, so memory stays bounded; the reader
+        // still sees it as too long.
+        let n = Read::take(&mut *input, 64 * 1024).read_until(b'\n', &mut line)?;
+        if n == 0 {
+            break;
+        }
+        if !line.ends_with(b"\n") && n == 64 * 1024 {
+            // Skip the rest of a huge line.
+            let mut sink = Vec::new();
+            loop {
+                sink.clear();
+                let m = Read::take(&mut *input, 64 * 1024).read_until(b'\n', &mut sink)?;
+                if m == 0 || sink.ends_with(b"\n") {
+                    break;
+                }
+            }
+        }
+        let text = &line;
+        program.feed_line(text, &mut |e| {
+            if pending.is_ok() {
+                pending = on_event(&e, text);
+            }
+        });
+        pending.as_ref().map_err(|e| io::Error::new(e.kind(), e.to_string()))?;
+        if !program.wants_more() {
+            break;
+        }
+    }
+    program.finish(&mut |e| {
+        if pending.is_ok() {
+            pending = on_event(&e, b"");
+        }
+    });
+    pending?;
+    Ok(())
+}
+
+fn run(file: &str, m: &MachineArgs, format: &str, output: Option<&str>, out: &mut dyn Write, err: &mut dyn Write) -> Result<i32, Failure> {
+    let (params, switches) = setup(m, err)?;
+    let profile = params.profile();
+    let mut fmt = format::by_name(format, profile).ok_or_else(|| usage(format!("unknown format '{format}': choose text, jsonl or canon")))?;
+    let mut input = open(file)?;
+    let mut file_out;
+    let mut stdout_buf;
+    let writer: &mut dyn Write = match output {
+        Some(path) => {
+            file_out = io::BufWriter::new(std::fs::File::create(path).map_err(|e| usage(format!("cannot write {path}: {e}")))?);
+            &mut file_out
+        }
+        None => {
+            stdout_buf = io::BufWriter::new(out);
+            &mut stdout_buf
+        }
+    };
+    let mut program = Program::new(params, switches, Mode::Run);
+    let carries = fmt.carries_diagnostics();
+    let shown = if file == "-" { "<stdin>" } else { file };
+    drive(&mut *input, &mut program, &mut |e, text| {
+        if let Event::Diagnostic(d) = e {
+            if !carries || d.severity() == Severity::Alarm {
+                err.write_all(diag::render(shown, text, d).as_bytes())?;
+            }
+            if !carries {
+                return Ok(());
+            }
+        }
+        fmt.event(e, writer)
+    })?;
+    writer.flush()?;
+    Ok(if program.status() == Status::Alarm { EXIT_ALARM } else { EXIT_OK })
+}
+
+fn check(files: &[String], m: &MachineArgs, out: &mut dyn Write, err: &mut dyn Write) -> Result<i32, Failure> {
+    let (params, switches) = setup(m, err)?;
+    let mut any_alarm = false;
+    let mut w = io::BufWriter::new(out);
+    for file in files {
+        let mut input = open(file)?;
+        let mut program = Program::new(params.clone(), switches, Mode::Check);
+        let (mut alarms, mut warnings) = (0usize, 0usize);
+        let shown = if file == "-" { "<stdin>" } else { file.as_str() };
+        drive(&mut *input, &mut program, &mut |e, text| {
+            if let Event::Diagnostic(d) = e {
+                if d.is_alarm() { alarms += 1 } else { warnings += 1 }
+                w.write_all(diag::render(shown, text, d).as_bytes())?;
+            }
+            Ok(())
+        })?;
+        writeln!(w, "{shown}: {alarms} alarm(s), {warnings} warning(s) on {}", params.profile().name)?;
+        any_alarm |= alarms > 0;
+    }
+    w.flush()?;
+    Ok(if any_alarm { EXIT_ALARM } else { EXIT_OK })
+}
+
+fn machines(name: Option<&str>, out: &mut dyn Write) -> Result<i32, Failure> {
+    match name {
+        None => {
+            for p in profile::all() {
+                writeln!(out, "{:<12} {}", p.name, p.title)?;
+            }
+        }
+        Some(n) => {
+            let p = profile::by_name(n).ok_or_else(|| usage(format!("unknown machine '{n}': choose one of {}", names())))?;
+            writeln!(out, "{} - {}\n", p.name, p.title)?;
+            writeln!(out, "{}\n", p.summary)?;
+            writeln!(out, "{:<14} {:>10} {:<11} {:<16} meaning [source]", "parameter", "default", "unit", "range")?;
+            for d in p.params {
+                writeln!(
+                    out,
+                    "{:<14} {:>10} {:<11} {:<16} {} [{}]",
+                    d.key.to_string(),
+                    format::num(d.default, 4),
+                    d.unit,
+                    format!("{}..{}", format::num(d.min, 4), format::num(d.max, 4)),
+                    d.meaning,
+                    d.source
+                )?;
+            }
+            writeln!(out, "\nG codes:")?;
+            for g in p.g_codes.iter().flat_map(|t| t.iter()) {
+                let code = match g.minor {
+                    Some(m) => format!("G{:02}.{m}", g.major),
+                    None => format!("G{:02}", g.major),
+                };
+                let state = if let ncsight::profile::GFn::NotYet(_) = g.function { " (not simulated yet)" } else { "" };
+                writeln!(out, "  {code:<7} {}{state}", g.meaning)?;
+            }
+            writeln!(out, "\nM codes:")?;
+            for mc in p.m_codes {
+                writeln!(out, "  M{:02}     {}", mc.code, mc.meaning)?;
+            }
+        }
+    }
+    Ok(EXIT_OK)
+}

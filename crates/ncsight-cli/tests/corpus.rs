@@ -1,0 +1,47 @@
+//! Every programme of ../shared/corpus goes through `ncsight check` on the profile closest to
+//! its dialect, never panics, and gives the diagnostics committed in tests/corpus/<file>.check
+//! (NCSIGHT_BLESS=1 rewrites them).
+
+mod common;
+
+/// Milling programmes go to fanuc0m, everything else to the GSK lathe.
+fn machine_for(name: &str) -> &'static str {
+    const MILL: &[&str] = &[
+        "printhor-asyncgcode__example3_nist_cycle_test.gcode",
+        "enier-cnc__1006.nc",
+        "enier-cnc__slot_assembly_11.nc",
+        "cadekiely-haas__4x3_block_o78244.nc",
+        "z64-cncbook__stdbc.nc",
+        "cnclearn__O0001.txt",
+        "gcodeworkshop__SINUMERIK850.nc",
+        "linuxcnc__mmount.ngc",
+        "linuxcnc__tests-interp-g81__g17-g98-g81.ngc",
+    ];
+    if MILL.contains(&name) { "fanuc0m" } else { "gsk980tdi" }
+}
+
+#[test]
+fn corpus_checks_give_clear_answers() {
+    let corpus = common::shared().join("corpus");
+    let mut files: Vec<_> = std::fs::read_dir(&corpus).unwrap().map(|e| e.unwrap().path()).collect();
+    files.retain(|p| {
+        let n = p.file_name().unwrap().to_str().unwrap();
+        n != "INDEX.md" && !n.ends_with("expected.txt")
+    });
+    files.sort();
+    assert!(files.len() >= 25, "corpus looks incomplete: {} files", files.len());
+    let out_dir = common::root().join("tests/corpus");
+    for f in files {
+        let name = f.file_name().unwrap().to_str().unwrap().to_string();
+        let machine = machine_for(&name);
+        // Run from the corpus folder so the file names in the output do not depend on paths.
+        let shown = format!("corpus/{name}");
+        let (code, out, err) = common::ncsight(&["check", f.to_str().unwrap(), "--machine", machine]);
+        assert!(code == 0 || code == 1, "{name}: exit {code}: {err}");
+        let out = out.replace(f.to_str().unwrap(), &shown);
+        assert!(out.contains(&format!("{shown}: ")), "{name}: no summary line");
+        common::expect_file(&out_dir.join(format!("{name}.check")), &format!("$ ncsight check {shown} --machine {machine}\n{out}"));
+        let (code, _, err) = common::ncsight(&["run", f.to_str().unwrap(), "--machine", machine, "--format", "jsonl"]);
+        assert!(code == 0 || code == 1, "{name}: run exit {code}: {err}");
+    }
+}

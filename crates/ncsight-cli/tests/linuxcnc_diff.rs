@@ -1,0 +1,45 @@
+//! Differential test against LinuxCNC's interpreter: every programme in tests/linuxcnc/cases is
+//! in the G-code subset both read alike (G00-G03 in G17/G18/G19, G90/G91, decimal points
+//! everywhere). Its `.expected` trace is what `rs274 -g` printed (tests/linuxcnc/refresh
+//! regenerates and, in CI, re-verifies them); ncsight's `--format canon` must give the same
+//! motion calls with the same numbers (4 decimals, so within 0.0002).
+
+mod common;
+
+fn motion_calls(text: &str) -> Vec<(String, Vec<f64>)> {
+    text.lines()
+        .filter(|l| ["STRAIGHT_TRAVERSE(", "STRAIGHT_FEED(", "ARC_FEED(", "DWELL("].iter().any(|p| l.starts_with(p)))
+        .map(|l| {
+            let (name, rest) = l.split_once('(').unwrap();
+            let nums = rest.trim_end_matches(')').split(',').map(|n| n.trim().parse::<f64>().unwrap()).collect();
+            (name.to_string(), nums)
+        })
+        .collect()
+}
+
+#[test]
+fn canon_matches_rs274_traces() {
+    let dir = common::root().join("tests/linuxcnc/cases");
+    let mut cases: Vec<_> = std::fs::read_dir(&dir).unwrap().map(|e| e.unwrap().path()).collect();
+    cases.retain(|p| p.extension().is_some_and(|e| e == "ngc"));
+    cases.sort();
+    assert!(cases.len() >= 50, "expected the committed LinuxCNC cases in {}", dir.display());
+    let mut compared = 0;
+    for ngc in &cases {
+        let expected = std::fs::read_to_string(ngc.with_extension("expected")).unwrap();
+        let (code, out, err) = common::ncsight(&["run", ngc.to_str().unwrap(), "--machine", "fanuc0m", "--format", "canon"]);
+        assert_eq!(code, 0, "{}: {err}", ngc.display());
+        let ours = motion_calls(&out);
+        let theirs = motion_calls(&expected);
+        assert_eq!(ours.len(), theirs.len(), "{}: {} calls vs rs274's {}\n{out}", ngc.display(), ours.len(), theirs.len());
+        for (i, ((n1, v1), (n2, v2))) in ours.iter().zip(&theirs).enumerate() {
+            assert_eq!(n1, n2, "{} call {}", ngc.display(), i + 1);
+            assert_eq!(v1.len(), v2.len(), "{} call {}", ngc.display(), i + 1);
+            for (a, b) in v1.iter().zip(v2) {
+                assert!((a - b).abs() <= 2e-4, "{} call {}: {n1} {v1:?} vs rs274 {v2:?}", ngc.display(), i + 1);
+            }
+            compared += 1;
+        }
+    }
+    assert!(compared > 500, "only {compared} calls compared");
+}

@@ -1,0 +1,101 @@
+//! Bad input never panics, every diagnostic points inside the input, and a block that alarms
+//! leaves the modal state as it was.
+
+use ncsight::interp::{Interpreter, Switches};
+use ncsight::profile::{self, Params};
+use ncsight::read::Reader;
+use ncsight::{run_text, Event, Mode};
+use proptest::prelude::*;
+
+fn every_profile() -> impl Strategy<Value = &'static ncsight::Profile> {
+    prop::sample::select(profile::all().to_vec())
+}
+
+/// Lines made of G-code-ish pieces, so the interpreter is reached, not only the reader.
+fn gcode_line() -> impl Strategy<Value = String> {
+    let word = (
+        prop::sample::select(b"GXYZUWIJKRFSTMPQLNO".to_vec()),
+        prop::sample::select(vec!["0", "1", "2", "3", "4", "-1.5", "10.", "92", "32.1", "99", "0.0", "1e3", "[1/0]", "[2*3]", ".", "-"]),
+    )
+        .prop_map(|(l, v)| format!("{}{}", l as char, v));
+    prop::collection::vec(word, 0..8).prop_map(|ws| ws.join(" "))
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 400, .. ProptestConfig::default() })]
+
+    #[test]
+    fn random_bytes_never_panic(p in every_profile(), lines in prop::collection::vec(prop::collection::vec(any::<u8>(), 0..80), 0..20)) {
+        let text: Vec<u8> = lines.join(&b'\n');
+        for mode in [Mode::Run, Mode::Check] {
+            let events = run_text(Params::defaults(p), Switches::default(), mode, &text);
+            let n_lines = text.split(|&b| b == b'\n').count() as u32;
+            for e in events {
+                if let Event::Diagnostic(d) = &e {
+                    prop_assert!(d.span.line >= 1 && d.span.line <= n_lines.max(1), "{:?}", d);
+                    prop_assert!(d.span.col >= 1);
+                    prop_assert!(!d.message.is_empty());
+                }
+                if let Event::Record(r) = &e {
+                    prop_assert!(r.t_s.is_finite());
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn gcode_like_lines_never_panic_and_stay_finite(p in every_profile(), lines in prop::collection::vec(gcode_line(), 1..30)) {
+        let text = lines.join("\n");
+        let events = run_text(Params::defaults(p), Switches::default(), Mode::Check, text.as_bytes());
+        for e in events {
+            match e {
+                Event::Record(r) => {
+                    prop_assert!(r.t_s.is_finite() && r.t_s >= 0.0);
+                    if let Some(q) = r.op.end_point() {
+                        prop_assert!(q.x.is_finite() && q.y.is_finite() && q.z.is_finite());
+                    }
+                }
+                Event::Diagnostic(d) => {
+                    let line = lines[(d.span.line - 1) as usize].as_bytes();
+                    prop_assert!((d.span.col as usize) <= line.len() + 1, "{:?} on {:?}", d, lines[(d.span.line - 1) as usize]);
+                }
+            }
+        }
+    }
+
+    /// Block atomicity: executing a block that alarms changes nothing.
+    #[test]
+    fn a_block_that_alarms_changes_no_state(p in every_profile(), prefix in prop::collection::vec(gcode_line(), 0..10), bad in gcode_line()) {
+        let reader = Reader::new(p.alarm_style);
+        let mut interp = Interpreter::new(Params::defaults(p), Switches::default());
+        for (i, l) in prefix.iter().enumerate() {
+            for b in reader.read_line(i as u32 + 1, l.as_bytes()).blocks.into_iter().flatten() {
+                let _ = interp.execute(&b);
+            }
+        }
+        let before = interp.state().clone();
+        let t = interp.time_s();
+        for b in reader.read_line(999, bad.as_bytes()).blocks.into_iter().flatten() {
+            if interp.execute(&b).is_err() {
+                prop_assert_eq!(interp.state(), &before);
+                prop_assert_eq!(interp.time_s(), t);
+            }
+            break;
+        }
+    }
+}
+
+#[test]
+fn a_100_kb_line_is_one_alarm() {
+    let mut text = b"G0 X1\n".to_vec();
+    text.extend(std::iter::repeat(b'X').take(100_000));
+    text.extend(b"\nM30\n");
+    let events = run_text(Params::defaults(profile::by_name("fanuc0m").unwrap()), Switches::default(), Mode::Check, &text);
+    let alarms: Vec<_> = events
+        .iter()
+        .filter_map(|e| if let Event::Diagnostic(d) = e { d.is_alarm().then_some(d) } else { None })
+        .collect();
+    assert_eq!(alarms.len(), 1, "{alarms:?}");
+    assert_eq!(alarms[0].span.line, 2);
+    assert!(alarms[0].message.contains("100000 bytes"));
+}
