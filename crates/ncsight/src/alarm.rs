@@ -78,6 +78,11 @@ rules! {
     NotSupported => Alarm, "NCS-E38", None, "NOT AVAILABLE IN NCSIGHT YET";
     SpindleStopped => Alarm, "NCS-E39", None, "FEED PER REVOLUTION WITH THE SPINDLE STOPPED";
     MotionLimit => Alarm, "NCS-E40", None, "TOO MUCH MOTION GENERATED";
+    SpindleMode => Alarm, "NCS-E41", None, "SPINDLE NOT IN POSITION MODE";
+    PullOutTooLong => Alarm, "NCS-E42", None, "PULL-OUT LONGER THAN THE THREAD";
+    ArcThreadSector => Alarm, "NCS-E43", None, "ARC THREAD LEAVES ITS SECTOR";
+    FaceThread => Alarm, "NCS-E44", None, "FACE THREAD NOT ALLOWED IN THIS CYCLE";
+    TaperTooLarge => Alarm, "NCS-E45", None, "TAPER R LARGER THAN U/2";
     // --- warnings ---
     SameGroupTwice => Warning, "NCS-W01", None, "TWO G CODES OF ONE GROUP: THE LAST ONE COUNTS";
     IntegerLength => Warning, "NCS-W02", None, "LENGTH WITHOUT DECIMAL POINT";
@@ -92,6 +97,10 @@ rules! {
     FeedClamped => Warning, "NCS-W11", None, "FEED ABOVE THE LIMIT: CLAMPED";
     NotSimulated => Warning, "NCS-W12", None, "NOT SIMULATED: PROGRAMMED PATH SHOWN";
     NoProgramEnd => Warning, "NCS-W13", None, "NO PROGRAMME END";
+    ThreadWithCss => Warning, "NCS-W14", None, "THREADING UNDER G96";
+    ThreadFeedHigh => Warning, "NCS-W15", None, "THREAD FEED ABOVE THE LIMIT";
+    PassMismatch => Warning, "NCS-W16", None, "PASSES DO NOT LINE UP";
+    InfeedGrows => Warning, "NCS-W17", None, "INFEED LARGER THAN THE PREVIOUS ONE";
 }
 
 impl Rule {

@@ -5,6 +5,7 @@
 //! -> [`motion`] records with time from [`time`] -> consumers (formatters in the CLI crate).
 
 pub mod alarm;
+pub mod cycles;
 pub mod geom;
 pub mod interp;
 pub mod modal;

@@ -1,8 +1,10 @@
 //! The modal state a controller carries from block to block. It is a plain value: the
 //! interpreter works on a copy and commits it only when the whole block is valid.
 
-use crate::motion::{Plane, Vec3};
-use crate::profile::{MachineKind, Profile};
+use crate::cycles::thread::Pass;
+use crate::motion::{Op, Plane, Vec3};
+use crate::profile::{MachineKind, Profile, ThreadCmd};
+use crate::source::Span;
 
 /// Group 01 motion in force.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -11,6 +13,64 @@ pub enum Motion {
     Linear,
     ArcCw,
     ArcCcw,
+    /// A thread command (G32, G32.1, G92, G92.1, G32.2/G32.3) is the group 01 mode.
+    Thread(ThreadCmd),
+}
+
+/// The last block of a run of continuous thread blocks, held back until the next block shows
+/// whether the run goes on (then no pull-out and no wait for the one-revolution signal) or
+/// ends (then the pull-out in force is made). Seed 001 G32.1 note 1; TDi help G32 notes 1-2.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PendingThread {
+    pub span: Span,
+    pub body: PendingBody,
+    /// A block that gave J/K itself ends the run (seed 001 G32.1 note 1).
+    pub ends_run: bool,
+    /// Rigid (G32.1) runs and encoder-following (G32, G32.2/G32.3) runs do not mix.
+    pub rigid: bool,
+    /// Spindle angle at the end of the block when it continues without a pull-out.
+    pub end_deg: f64,
+}
+
+#[derive(Debug, Clone, PartialEq)]
+pub enum PendingBody {
+    /// A straight pass; its pull-out is made only if the run ends here.
+    Straight(Pass),
+    /// An arc thread (no pull-out).
+    Arc(Op),
+}
+
+/// What the warnings about repeated passes compare (issue 3, "passes will not line up").
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PassMemory {
+    pub lead_mm: f64,
+    /// Long-axis coordinate where the passes start.
+    pub long_start: f64,
+    pub rpm: f64,
+    pub start_deg: f64,
+    /// Short-axis coordinate of the last cut.
+    pub depth: f64,
+    /// Infeed from the pass before the last to the last.
+    pub last_infeed: Option<f64>,
+}
+
+/// Thread words and memories that last from block to block.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ThreadState {
+    /// Lead in force (F, I or E of a thread block), mm.
+    pub lead_mm: Option<f64>,
+    /// J and K in force, as written (mm): modal, cancelled by a non-thread group 01 code.
+    pub j: Option<f64>,
+    pub k: Option<f64>,
+    /// Number of starts L in force (seed 000: modal, 1 when omitted).
+    pub starts: u32,
+    /// The cycle's end point C and taper, kept for continuation blocks that give only X (U).
+    pub cycle_end: Option<Vec3>,
+    pub taper_mm: f64,
+    /// S of a rigid thread command, signed (seed 001: the sign selects the direction).
+    pub rigid_rpm: Option<f64>,
+    pub pending: Option<PendingThread>,
+    pub memory: Option<PassMemory>,
 }
 
 /// Spindle rotation commanded by M03/M04/M05.
@@ -52,6 +112,7 @@ pub struct Modal {
     pub return_initial: bool,
     /// Tool radius compensation requested (not simulated: the programmed path is shown).
     pub radius_comp: bool,
+    pub thread: ThreadState,
     /// M02/M30 reached.
     pub ended: bool,
 }
@@ -75,6 +136,17 @@ impl Modal {
             tool: 0,
             return_initial: true,
             radius_comp: false,
+            thread: ThreadState {
+                lead_mm: None,
+                j: None,
+                k: None,
+                starts: 1,
+                cycle_end: None,
+                taper_mm: 0.0,
+                rigid_rpm: None,
+                pending: None,
+                memory: None,
+            },
             ended: false,
         }
     }

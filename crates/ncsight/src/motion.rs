@@ -66,6 +66,60 @@ pub enum ArcDir {
     Ccw,
 }
 
+/// The long axis of a thread: the one with the larger travel (X counted as a radius); on
+/// equality Z (../shared/spec/BEHAVIOUR.md, "Thread pull-out"). Y only for arc threads in G17/G19.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum LongAxis {
+    X,
+    Y,
+    Z,
+}
+
+impl LongAxis {
+    /// Index in X=0, Y=1, Z=2 of the long axis and of the short axis of a lathe thread
+    /// (the ZX plane).
+    pub fn indices(self) -> (usize, usize) {
+        match self {
+            LongAxis::X => (0, 2),
+            LongAxis::Y => (1, 0),
+            LongAxis::Z => (2, 0),
+        }
+    }
+
+    pub fn index(self) -> usize {
+        match self {
+            LongAxis::X => 0,
+            LongAxis::Y => 1,
+            LongAxis::Z => 2,
+        }
+    }
+
+    pub fn from_index(i: usize) -> LongAxis {
+        match i {
+            0 => LongAxis::X,
+            1 => LongAxis::Y,
+            _ => LongAxis::Z,
+        }
+    }
+
+    /// The long axis of a straight thread from `from` to `to` (ZX plane).
+    pub fn of(from: &Vec3, to: &Vec3) -> LongAxis {
+        if (to.x - from.x).abs() > (to.z - from.z).abs() {
+            LongAxis::X
+        } else {
+            LongAxis::Z
+        }
+    }
+
+    pub fn as_str(self) -> &'static str {
+        match self {
+            LongAxis::X => "x",
+            LongAxis::Y => "y",
+            LongAxis::Z => "z",
+        }
+    }
+}
+
 /// Why the machine stopped.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum StopReason {
@@ -93,6 +147,22 @@ pub enum Op {
     Feed { from: Vec3, to: Vec3, feed_mm_min: f64 },
     /// Circular (helical along the plane's normal) cutting feed.
     Arc { from: Vec3, to: Vec3, center: Vec3, plane: Plane, dir: ArcDir, feed_mm_min: f64 },
+    /// Spindle-synchronised straight motion: the long axis moves `lead_mm` per spindle
+    /// revolution. `spindle_deg` is the spindle angle at the start, from the one-revolution
+    /// signal in the direction of turning; `rpm` is signed.
+    Thread { from: Vec3, to: Vec3, lead_mm: f64, long_axis: LongAxis, spindle_deg: f64, rpm: f64 },
+    /// Spindle-synchronised circular motion (G32.2/G32.3).
+    ThreadArc {
+        from: Vec3,
+        to: Vec3,
+        center: Vec3,
+        plane: Plane,
+        dir: ArcDir,
+        lead_mm: f64,
+        long_axis: LongAxis,
+        spindle_deg: f64,
+        rpm: f64,
+    },
     Dwell { seconds: f64 },
     /// Spindle state changed. `rpm` is signed: negative = the spindle's negative direction;
     /// 0 = stopped. `surface_m_min` is the G96 surface speed when constant surface speed is on.
@@ -111,6 +181,8 @@ impl Op {
             Op::Rapid { .. } => "rapid",
             Op::Feed { .. } => "feed",
             Op::Arc { .. } => "arc",
+            Op::Thread { .. } => "thread",
+            Op::ThreadArc { .. } => "thread_arc",
             Op::Dwell { .. } => "dwell",
             Op::Spindle { .. } => "spindle",
             Op::Tool { .. } => "tool",
@@ -119,10 +191,31 @@ impl Op {
         }
     }
 
+    /// Start point of a motion.
+    pub fn start_point(&self) -> Option<Vec3> {
+        match self {
+            Op::Rapid { from, .. }
+            | Op::Feed { from, .. }
+            | Op::Arc { from, .. }
+            | Op::Thread { from, .. }
+            | Op::ThreadArc { from, .. } => Some(*from),
+            _ => None,
+        }
+    }
+
+    /// Spindle-synchronised (thread) motion.
+    pub fn is_thread(&self) -> bool {
+        matches!(self, Op::Thread { .. } | Op::ThreadArc { .. })
+    }
+
     /// End point of a motion.
     pub fn end_point(&self) -> Option<Vec3> {
         match self {
-            Op::Rapid { to, .. } | Op::Feed { to, .. } | Op::Arc { to, .. } => Some(*to),
+            Op::Rapid { to, .. }
+            | Op::Feed { to, .. }
+            | Op::Arc { to, .. }
+            | Op::Thread { to, .. }
+            | Op::ThreadArc { to, .. } => Some(*to),
             _ => None,
         }
     }

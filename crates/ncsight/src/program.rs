@@ -102,6 +102,7 @@ impl Program {
             let block = match item {
                 Ok(b) => b,
                 Err(d) => {
+                    self.flush_pending(sink);
                     self.alarm(d, sink);
                     if self.mode == Mode::Run {
                         return;
@@ -142,12 +143,20 @@ impl Program {
                     }
                 }
                 Err(d) => {
+                    // The thread being cut when the next block alarms is finished first.
+                    self.flush_pending(sink);
                     self.alarm(d, sink);
                     if self.mode == Mode::Run {
                         return;
                     }
                 }
             }
+        }
+    }
+
+    fn flush_pending(&mut self, sink: &mut dyn FnMut(Event)) {
+        for r in self.interp.flush_pending().records {
+            sink(Event::Record(r));
         }
     }
 
@@ -161,6 +170,9 @@ impl Program {
 
     /// The input has ended. Without M02/M30 the controller would wait at the last block; say so.
     pub fn finish(&mut self, sink: &mut dyn FnMut(Event)) {
+        if self.status != Status::Alarm {
+            self.flush_pending(sink);
+        }
         if self.status == Status::Running {
             let d = Diagnostic::new(
                 Rule::NoProgramEnd,

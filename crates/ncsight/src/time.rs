@@ -23,6 +23,11 @@ pub fn duration_s(op: &Op, params: &Params) -> f64 {
             let g = arc_geom_of(op).unwrap_or(geom::ArcGeom { center: *center, radius: 0.0, sweep_rad: 0.0 });
             geom::arc_length(from, to, *plane, &g) / feed_mm_min * 60.0
         }
+        // Spindle-synchronised: the long axis at lead x rpm.
+        Op::Thread { from, to, lead_mm, long_axis, rpm, .. } | Op::ThreadArc { from, to, lead_mm, long_axis, rpm, .. } => {
+            let i = long_axis.index();
+            (to.axis(i) - from.axis(i)).abs() / (lead_mm * rpm.abs()) * 60.0
+        }
         Op::Dwell { seconds } => *seconds,
         Op::Spindle { .. } | Op::Tool { .. } | Op::Stop { .. } | Op::End { .. } => 0.0,
     }

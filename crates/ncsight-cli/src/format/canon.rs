@@ -1,10 +1,11 @@
 //! `--format canon`: the canonical-call text LinuxCNC's `rs274` prints, so that a programme in
 //! the G-code both understand can be diffed against `rs274 -g`. Positions in mm with X as a
-//! radius, four decimals.
+//! radius, four decimals. A thread record is wrapped as rs274 wraps a G33 move:
+//! `START_SPEED_FEED_SYNC(lead,0)`, the move, `STOP_SPEED_FEED_SYNCH()`.
 
 use super::{fixed, Format};
 use ncsight::motion::{ArcDir, Op, Plane};
-use ncsight::{Event, Profile};
+use ncsight::{Event, Profile, Vec3};
 use std::io::{self, Write};
 
 pub struct Canon {
@@ -25,9 +26,32 @@ impl Canon {
         }
         Ok(())
     }
+
+    fn arc(&mut self, to: &Vec3, center: &Vec3, plane: Plane, dir: ArcDir, w: &mut dyn Write) -> io::Result<()> {
+        if self.plane != Some(plane) {
+            self.plane = Some(plane);
+            let name = match plane {
+                Plane::XY => "CANON_PLANE_XY",
+                Plane::ZX => "CANON_PLANE_XZ",
+                Plane::YZ => "CANON_PLANE_YZ",
+            };
+            writeln!(w, "SELECT_PLANE({name})")?;
+        }
+        let (a, b, n) = plane.axes();
+        let rot = if dir == ArcDir::Cw { -1 } else { 1 };
+        writeln!(
+            w,
+            "ARC_FEED({}, {}, {}, {}, {rot}, {}, 0.0000, 0.0000, 0.0000)",
+            fixed(to.axis(a), 4),
+            fixed(to.axis(b), 4),
+            fixed(center.axis(a), 4),
+            fixed(center.axis(b), 4),
+            fixed(to.axis(n), 4)
+        )
+    }
 }
 
-fn xyz(p: &ncsight::Vec3) -> String {
+fn xyz(p: &Vec3) -> String {
     format!("{}, {}, {}, 0.0000, 0.0000, 0.0000", fixed(p.x, 4), fixed(p.y, 4), fixed(p.z, 4))
 }
 
@@ -46,26 +70,17 @@ impl Format for Canon {
             }
             Op::Arc { to, center, plane, dir, feed_mm_min, .. } => {
                 self.set_feed(*feed_mm_min, w)?;
-                if self.plane != Some(*plane) {
-                    self.plane = Some(*plane);
-                    let name = match plane {
-                        Plane::XY => "CANON_PLANE_XY",
-                        Plane::ZX => "CANON_PLANE_XZ",
-                        Plane::YZ => "CANON_PLANE_YZ",
-                    };
-                    writeln!(w, "SELECT_PLANE({name})")?;
-                }
-                let (a, b, n) = plane.axes();
-                let rot = if *dir == ArcDir::Cw { -1 } else { 1 };
-                writeln!(
-                    w,
-                    "ARC_FEED({}, {}, {}, {}, {rot}, {}, 0.0000, 0.0000, 0.0000)",
-                    fixed(to.axis(a), 4),
-                    fixed(to.axis(b), 4),
-                    fixed(center.axis(a), 4),
-                    fixed(center.axis(b), 4),
-                    fixed(to.axis(n), 4)
-                )
+                self.arc(to, center, *plane, *dir, w)
+            }
+            Op::Thread { to, lead_mm, .. } => {
+                writeln!(w, "START_SPEED_FEED_SYNC({lead_mm:.6},0)")?;
+                writeln!(w, "STRAIGHT_FEED({})", xyz(to))?;
+                writeln!(w, "STOP_SPEED_FEED_SYNCH()")
+            }
+            Op::ThreadArc { to, center, plane, dir, lead_mm, .. } => {
+                writeln!(w, "START_SPEED_FEED_SYNC({lead_mm:.6},0)")?;
+                self.arc(to, center, *plane, *dir, w)?;
+                writeln!(w, "STOP_SPEED_FEED_SYNCH()")
             }
             Op::Dwell { seconds } => writeln!(w, "DWELL({})", fixed(*seconds, 4)),
             Op::Spindle { rpm, .. } => {

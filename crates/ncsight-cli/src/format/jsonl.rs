@@ -46,6 +46,17 @@ pub fn json_str(s: &str) -> String {
     out
 }
 
+fn thread_fields(s: &mut String, lead: f64, long_axis: &str, spindle_deg: f64, rpm: f64) {
+    // 360 - 1e-7 would print as 360: keep the interface's [0, 360).
+    let deg = if num(spindle_deg, 6) == "360" { 0.0 } else { spindle_deg };
+    s.push_str(&format!(
+        ",\"lead\":{},\"long_axis\":\"{long_axis}\",\"spindle_deg\":{},\"rpm\":{}",
+        num(lead, 6),
+        num(deg, 6),
+        num(rpm, 3)
+    ));
+}
+
 impl Format for Jsonl {
     fn carries_diagnostics(&self) -> bool {
         true
@@ -81,6 +92,17 @@ impl Format for Jsonl {
                         self.point(&mut s, center, "c");
                         let d = if *dir == ArcDir::Cw { "cw" } else { "ccw" };
                         s.push_str(&format!(",\"dir\":\"{d}\",\"f\":{}", num(*feed_mm_min, 4)));
+                    }
+                    Op::Thread { to, lead_mm, long_axis, spindle_deg, rpm, .. } => {
+                        self.point(&mut s, to, "");
+                        thread_fields(&mut s, *lead_mm, long_axis.as_str(), *spindle_deg, *rpm);
+                    }
+                    Op::ThreadArc { to, center, dir, lead_mm, long_axis, spindle_deg, rpm, .. } => {
+                        self.point(&mut s, to, "");
+                        self.point(&mut s, center, "c");
+                        let d = if *dir == ArcDir::Cw { "cw" } else { "ccw" };
+                        s.push_str(&format!(",\"dir\":\"{d}\""));
+                        thread_fields(&mut s, *lead_mm, long_axis.as_str(), *spindle_deg, *rpm);
                     }
                     Op::Dwell { seconds } => s.push_str(&format!(",\"seconds\":{}", num(*seconds, 6))),
                     Op::Spindle { rpm, surface_m_min, position_mode } => {

@@ -44,6 +44,24 @@ impl Format for Text {
                 self.point(center, ""),
                 num(*feed_mm_min, 3)
             ),
+            Op::Thread { to, lead_mm, long_axis, spindle_deg, rpm, .. } => format!(
+                "{}  lead {} along {}  from {} deg  {} rpm",
+                self.point(to, ""),
+                num(*lead_mm, 4),
+                long_axis.as_str(),
+                num(*spindle_deg, 3),
+                num(*rpm, 1)
+            ),
+            Op::ThreadArc { to, center, dir, lead_mm, long_axis, spindle_deg, rpm, .. } => format!(
+                "{}  {} centre {}  lead {} along {}  from {} deg  {} rpm",
+                self.point(to, ""),
+                if *dir == ArcDir::Cw { "cw" } else { "ccw" },
+                self.point(center, ""),
+                num(*lead_mm, 4),
+                long_axis.as_str(),
+                num(*spindle_deg, 3),
+                num(*rpm, 1)
+            ),
             Op::Dwell { seconds } => format!("{} s", num(*seconds, 3)),
             Op::Spindle { rpm, surface_m_min, position_mode } => {
                 let mut s = format!("{} rpm", num(*rpm, 1));

@@ -2,6 +2,7 @@
 //! block), against a profile and its parameters. It turns a block into records of the canonical
 //! stream and warnings, or into one alarm that leaves the modal state untouched.
 
+mod thread;
 mod words;
 
 use crate::alarm::{Diagnostic, Rule};
@@ -68,11 +69,16 @@ impl Step<'_> {
     }
 
     fn emit(&mut self, op: Op) {
+        self.emit_at(self.span, op);
+    }
+
+    /// Emit an operation of an earlier block (a held-back thread run end).
+    fn emit_at(&mut self, span: Span, op: Op) {
         self.t_s += time::duration_s(&op, self.params);
         if let Some(p) = op.end_point() {
             self.st.pos = p;
         }
-        self.out.records.push(Record { span: self.span, t_s: self.t_s, op });
+        self.out.records.push(Record { span, t_s: self.t_s, op });
     }
 
     /// A length word in mm, read by the profile's decimal-point rule and the units in force.
@@ -186,6 +192,25 @@ impl Interpreter {
     /// Seconds from programme start, per the time model.
     pub fn time_s(&self) -> f64 {
         self.t_s
+    }
+
+    /// A held-back thread run end is made now, with its pull-out: the input ended, or the next
+    /// block alarmed (the controller finishes the thread it is cutting).
+    pub fn flush_pending(&mut self) -> Outcome {
+        let mut step = Step {
+            profile: self.profile,
+            params: &self.params,
+            span: Span::default(),
+            st: self.state.clone(),
+            t_s: self.t_s,
+            out: Outcome::default(),
+        };
+        if let Some(p) = step.st.thread.pending.take() {
+            thread::flush(&mut step, p, true);
+        }
+        self.state = step.st;
+        self.t_s = step.t_s;
+        step.out
     }
 
     /// Execute one block. On an alarm nothing changes.
@@ -325,6 +350,7 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
             GFn::Linear => codes.motion = Some((w.span, Motion::Linear)),
             GFn::ArcCw => codes.motion = Some((w.span, Motion::ArcCw)),
             GFn::ArcCcw => codes.motion = Some((w.span, Motion::ArcCcw)),
+            GFn::Thread(cmd) => codes.motion = Some((w.span, Motion::Thread(cmd))),
             GFn::PlaneXY => st.plane = Plane::XY,
             GFn::PlaneZX => st.plane = Plane::ZX,
             GFn::PlaneYZ => st.plane = Plane::YZ,
@@ -354,6 +380,34 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
             GFn::NotYet(_) => unreachable!("rejected above"),
         }
     }
+    // A non-thread group 01 code cancels the thread J/K and the cycle memory (seed 001 G32.1
+    // note 1).
+    if let Some((_, m)) = codes.motion {
+        if !matches!(m, Motion::Thread(_)) {
+            step.st.thread.j = None;
+            step.st.thread.k = None;
+            step.st.thread.cycle_end = None;
+        }
+    }
+    let motion_now = codes.motion.map(|(_, m)| m).unwrap_or(step.st.motion);
+    let axis_letters: &[u8] = if profile.incremental_addresses { b"XYZUVW" } else { b"XYZ" };
+    let has_axis = axis_letters.iter().any(|l| words.has(*l));
+    // A held-back thread run end: does this block continue the run?
+    let mut run_deg = None;
+    if let Some(p) = step.st.thread.pending.take() {
+        let goes_on = match motion_now {
+            Motion::Thread(cmd) => {
+                has_axis && codes.non_modal.is_none() && ms.is_empty() && !words.has(b'T') && thread::continues(cmd, &p)
+            }
+            _ => false,
+        };
+        if goes_on {
+            run_deg = Some(p.end_deg);
+        }
+        thread::flush(step, p, !goes_on);
+    }
+    let rigid_thread = matches!(motion_now, Motion::Thread(cmd) if thread::is_rigid(cmd));
+
     // Tool length compensation takes H (the offset number); D belongs to cutter compensation.
     if last_of.iter().any(|(_, _, g)| g.function == GFn::LengthComp) {
         words.take(b'H');
@@ -372,7 +426,8 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
     }
     let g50_clamp = matches!(codes.non_modal, Some((_, GFn::LatheCoordinateSet)));
     let spindle_before = (step.st.spindle, step.st.s_word, step.st.css, step.st.spindle_position_mode);
-    if let Some(w) = words.take(b'S') {
+    let s_word = if rigid_thread { None } else { words.take(b'S') };
+    if let Some(w) = s_word {
         if w.value < 0.0 {
             return Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("{}: a spindle speed cannot be negative here", w.text())));
         }
@@ -440,7 +495,6 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
     }
 
     // --- one-shot codes ---
-    let axis_letters: &[u8] = if profile.incremental_addresses { b"XYZUVW" } else { b"XYZ" };
     match codes.non_modal {
         Some((_, GFn::Dwell)) => dwell(step, &mut words)?,
         Some((_, GFn::ReferenceReturn)) => {
@@ -463,9 +517,14 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
         }
         Some(_) => unreachable!("only one-shot functions are stored"),
         None => {
-            let has_axis = axis_letters.iter().any(|l| words.has(*l));
             if let Some((_, m)) = codes.motion {
                 step.st.motion = m;
+            }
+            if let Motion::Thread(cmd) = step.st.motion {
+                if has_axis {
+                    thread::block(step, &mut words, cmd, codes.motion.is_some(), run_deg)?;
+                }
+                return finish_block(step, words, &codes, after, switches);
             }
             let arc_words = matches!(step.st.motion, Motion::ArcCw | Motion::ArcCcw) && b"RIJK".iter().any(|l| words.has(*l));
             let motion_words = has_axis || arc_words;
@@ -475,7 +534,17 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
         }
     }
 
-    // --- M codes that act after motion ---
+    finish_block(step, words, &codes, after, switches)
+}
+
+/// M codes that act after the motion, then the check that every word was used.
+fn finish_block(step: &mut Step, words: Words, codes: &Codes, after: Vec<(&Word, MFn)>, switches: Switches) -> Result<(), Diagnostic> {
+    // A stop or an end after a held-back thread run end: the run ends first.
+    if !after.is_empty() {
+        if let Some(p) = step.st.thread.pending.take() {
+            thread::flush(step, p, true);
+        }
+    }
     for (w, f) in after {
         match f {
             MFn::SpindleStop => {
@@ -508,7 +577,7 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
     }
 
     if let Some(w) = words.first_unused() {
-        let cmd = describe_command(step, &codes);
+        let cmd = describe_command(step, codes);
         return Err(step.alarm(Rule::WordNotTaken, w.span, format!("{}: {cmd} does not take address {}", w.text(), w.letter as char)));
     }
     Ok(())
@@ -532,6 +601,7 @@ fn describe_command(step: &Step, codes: &Codes) -> String {
         Motion::Linear => "G01 (linear interpolation)".into(),
         Motion::ArcCw => format!("G02 in the {plane} plane"),
         Motion::ArcCcw => format!("G03 in the {plane} plane"),
+        Motion::Thread(cmd) => format!("{} (thread cutting)", thread::name(cmd)),
     }
 }
 
@@ -618,6 +688,7 @@ fn motion(step: &mut Step, words: &mut Words) -> Result<(), Diagnostic> {
             let dir = if step.st.motion == Motion::ArcCw { ArcDir::Cw } else { ArcDir::Ccw };
             arc(step, words, from, target, dir)?;
         }
+        Motion::Thread(_) => unreachable!("thread blocks go to thread::block"),
     }
     Ok(())
 }
@@ -626,72 +697,84 @@ fn lerp(a: &Vec3, b: &Vec3, u: f64) -> Vec3 {
     Vec3::new(a.x + (b.x - a.x) * u, a.y + (b.y - a.y) * u, a.z + (b.z - a.z) * u)
 }
 
-fn arc(step: &mut Step, words: &mut Words, from: Vec3, to: Vec3, dir: ArcDir) -> Result<(), Diagnostic> {
+/// What the arc words of a block describe.
+enum ArcOutcome {
+    Arc(geom::ArcGeom),
+    /// R with start = end in the plane: a 0-degree arc (TDi help G02/03 note 3).
+    Zero,
+}
+
+/// The arc a block's R or centre words describe, from `from` to `to` in the plane in force.
+/// R wins over I/J/K (TDi help G02/03 note 1; seed 002 note 4).
+fn resolve_arc(step: &mut Step, words: &mut Words, from: Vec3, to: Vec3, dir: ArcDir, gname: &str) -> Result<ArcOutcome, Diagnostic> {
     let plane = step.st.plane;
     let (a, b, _) = plane.axes();
     let letter_of = |axis: usize| [b'I', b'J', b'K'][axis];
-    let gname = if dir == ArcDir::Cw { "G02" } else { "G03" };
     let r_word = words.take(b'R');
     let (la, lb) = (letter_of(a), letter_of(b));
     let ca = words.take(la);
     let cb = words.take(lb);
-    let geom = if let Some(rw) = r_word {
-        // R wins over I/J/K (TDi help G02/03 note 1; seed 002 for arc threads).
+    if let Some(rw) = r_word {
         if let Some(w) = ca.or(cb) {
             let msg = format!("{}: ignored, R takes precedence over the centre words", w.text());
             step.warn(Rule::TextIgnored, w.span, msg);
         }
         let r = step.length(&rw)?;
-        match geom::arc_from_radius(from, to, plane, dir, r, ARC_TOLERANCE_MM) {
-            Ok(g) => g,
+        return match geom::arc_from_radius(from, to, plane, dir, r, ARC_TOLERANCE_MM) {
+            Ok(g) => Ok(ArcOutcome::Arc(g)),
             Err(ArcError::ZeroArcWithR) => {
-                // TDi help G02/03 note 3: with R, start = end is a 0-degree arc.
                 step.warn(Rule::ZeroArc, rw.span, format!("{gname} with {}: start and end coincide, a 0-degree arc (no motion)", rw.text()));
-                if to != from {
-                    let feed = step.cutting_feed(gname, &|u| lerp(&from, &to, u))?;
-                    // Only the axis normal to the plane moves.
-                    step.emit(Op::Feed { from, to, feed_mm_min: feed });
-                }
-                return Ok(());
+                Ok(ArcOutcome::Zero)
             }
-            Err(ArcError::RadiusTooSmall(r, half)) => {
-                return Err(step.alarm(
-                    Rule::RadiusTolerance,
-                    rw.span,
-                    format!("{gname} {}: radius {r:.4} mm is less than half the distance to the end point ({half:.4} mm)", rw.text()),
-                ))
-            }
+            Err(ArcError::RadiusTooSmall(r, half)) => Err(step.alarm(
+                Rule::RadiusTolerance,
+                rw.span,
+                format!("{gname} {}: radius {r:.4} mm is less than half the distance to the end point ({half:.4} mm)", rw.text()),
+            )),
             Err(e) => unreachable!("{e:?}"),
+        };
+    }
+    if ca.is_none() && cb.is_none() {
+        return Err(step.alarm(
+            Rule::ArcDataMissing,
+            step.span,
+            format!("{gname} needs R or the centre words {} and {} in this plane", la as char, lb as char),
+        ));
+    }
+    let mut center = from;
+    for (w, axis) in [(ca, a), (cb, b)] {
+        if let Some(w) = w {
+            // I, J, K: from the start point to the centre, radius values (TDi help G02/03).
+            let v = step.length(&w)?;
+            center.set_axis(axis, from.axis(axis) + v);
         }
-    } else {
-        if ca.is_none() && cb.is_none() {
-            return Err(step.alarm(
-                Rule::ArcDataMissing,
-                step.span,
-                format!("{gname} needs R or the centre words {} and {} in this plane", la as char, lb as char),
-            ));
+    }
+    match geom::arc_from_center(from, to, plane, dir, center, ARC_TOLERANCE_MM) {
+        Ok(g) => Ok(ArcOutcome::Arc(g)),
+        Err(ArcError::RadiusMismatch(rs, re)) => Err(step.alarm(
+            Rule::RadiusTolerance,
+            step.span,
+            format!("{gname}: the end point is {re:.4} mm from the centre, the start point {rs:.4} mm (tolerance {ARC_TOLERANCE_MM} mm)"),
+        )),
+        Err(e) => unreachable!("{e:?}"),
+    }
+}
+
+fn arc(step: &mut Step, words: &mut Words, from: Vec3, to: Vec3, dir: ArcDir) -> Result<(), Diagnostic> {
+    let plane = step.st.plane;
+    let gname = if dir == ArcDir::Cw { "G02" } else { "G03" };
+    match resolve_arc(step, words, from, to, dir, gname)? {
+        ArcOutcome::Arc(g) => {
+            let feed = step.cutting_feed(gname, &|u| geom::arc_point(&from, &to, plane, dir, &g, u))?;
+            step.emit(Op::Arc { from, to, center: g.center, plane, dir, feed_mm_min: feed });
         }
-        let mut center = from;
-        for (w, axis) in [(ca, a), (cb, b)] {
-            if let Some(w) = w {
-                // I, J, K: from the start point to the centre, radius values (TDi help G02/03).
-                let v = step.length(&w)?;
-                center.set_axis(axis, from.axis(axis) + v);
+        ArcOutcome::Zero => {
+            if to != from {
+                // Only the axis normal to the plane moves.
+                let feed = step.cutting_feed(gname, &|u| lerp(&from, &to, u))?;
+                step.emit(Op::Feed { from, to, feed_mm_min: feed });
             }
         }
-        match geom::arc_from_center(from, to, plane, dir, center, ARC_TOLERANCE_MM) {
-            Ok(g) => g,
-            Err(ArcError::RadiusMismatch(rs, re)) => {
-                return Err(step.alarm(
-                    Rule::RadiusTolerance,
-                    step.span,
-                    format!("{gname}: the end point is {re:.4} mm from the centre, the start point {rs:.4} mm (tolerance {ARC_TOLERANCE_MM} mm)"),
-                ))
-            }
-            Err(e) => unreachable!("{e:?}"),
-        }
-    };
-    let feed = step.cutting_feed(gname, &|u| geom::arc_point(&from, &to, plane, dir, &geom, u))?;
-    step.emit(Op::Arc { from, to, center: geom.center, plane, dir, feed_mm_min: feed });
+    }
     Ok(())
 }

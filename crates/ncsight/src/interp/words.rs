@@ -26,6 +26,11 @@ impl Words {
         self.slots[idx(letter)].is_some()
     }
 
+    /// Look at a word without taking it.
+    pub fn peek(&self, letter: u8) -> Option<Word> {
+        self.slots[idx(letter)]
+    }
+
     /// Take a word: it is now used by a command.
     pub fn take(&mut self, letter: u8) -> Option<Word> {
         let i = idx(letter);

@@ -1,6 +1,6 @@
 //! FANUC 0-M machining centre: seed 003 (drilling canned cycles G73-G89).
 
-use super::{GDef, GFn, Group, IntegerLengths, MDef, MFn, MachineKind, ParamDef, ParamKey, Profile, TimeKeys};
+use super::{QPoint, ThreadRules, GDef, GFn, Group, IntegerLengths, MDef, MFn, MachineKind, ParamDef, ParamKey, Profile, TimeKeys};
 use crate::alarm::AlarmStyle;
 
 const fn g(major: u32, group: Group, function: GFn, meaning: &'static str) -> GDef {
@@ -169,6 +169,7 @@ pub static PROFILE: Profile = Profile {
         rapid: [ParamKey::Number(518, None), ParamKey::Number(519, None), ParamKey::Number(520, None)],
         feed_max: ParamKey::Number(527, None),
     },
+    thread: ThreadRules { q_point: QPoint::Alarm, arc_q_unit_deg: 0.001, pull_out_speed: None, after_end_feed: None },
     summary: "FANUC 0-M machining centre. G90/G91, G17 at power on. Lengths without a decimal point \
 are least input increments (X100 = 0.1 mm), F without a point is mm/min.",
 };

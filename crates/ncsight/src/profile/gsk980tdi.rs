@@ -1,16 +1,19 @@
 //! GSK980TDi lathe, G-code system A. Seed 000 (G92) and the on-line help text.
 
-use super::lathe_a::{gp, GSK_M_CODES, G_CODES, LATER_THREAD};
-use super::{GDef, GFn, Group, IntegerLengths, MachineKind, ParamDef, ParamKey, Profile, TimeKeys};
+use super::lathe_a::{g, gp, GSK_M_CODES, G_CODES, LATER_THREAD};
+use super::{CycleKind, QPoint, ThreadCmd, ThreadRules, GDef, GFn, Group, IntegerLengths, MachineKind, ParamDef, ParamKey, Profile, TimeKeys};
 use crate::alarm::AlarmStyle;
+use crate::motion::ArcDir;
 
 const LATER_DRILL: GFn = GFn::NotYet("the lathe drilling cycles (G83-G89) are not simulated by ncsight yet");
 
 const EXTRA: &[GDef] = &[
-    gp(32, 1, Group::Motion, LATER_THREAD, "rigid thread cutting"),
-    gp(32, 2, Group::Motion, LATER_THREAD, "arc thread, clockwise"),
-    gp(32, 3, Group::Motion, LATER_THREAD, "arc thread, counter-clockwise"),
-    gp(92, 1, Group::Motion, LATER_THREAD, "rigid thread cutting cycle"),
+    g(32, Group::Motion, GFn::Thread(ThreadCmd::Lead), "thread cutting: F lead or I threads per inch, J/K pull-out, Q start angle"),
+    g(92, Group::Motion, GFn::Thread(ThreadCmd::Cycle(CycleKind::Gsk)), "thread cutting cycle (seed 000)"),
+    gp(32, 1, Group::Motion, LATER_THREAD, "rigid thread cutting (GSK980TDi form with C)"),
+    gp(32, 2, Group::Motion, GFn::Thread(ThreadCmd::Arc(ArcDir::Cw)), "arc thread, clockwise"),
+    gp(32, 3, Group::Motion, GFn::Thread(ThreadCmd::Arc(ArcDir::Ccw)), "arc thread, counter-clockwise"),
+    gp(92, 1, Group::Motion, LATER_THREAD, "rigid thread cutting cycle (GSK980TDi form)"),
     GDef { major: 33, minor: None, group: Group::Motion, function: LATER_THREAD, meaning: "tapping cycle" },
     GDef { major: 34, minor: None, group: Group::Motion, function: LATER_THREAD, meaning: "variable-lead thread cutting" },
     GDef { major: 80, minor: None, group: Group::Motion, function: GFn::CycleCancel, meaning: "cancel a drilling cycle" },
@@ -91,6 +94,7 @@ pub static PROFILE: Profile = Profile {
         rapid: [ParamKey::Number(22, None), ParamKey::Number(22, None), ParamKey::Number(22, None)],
         feed_max: ParamKey::Number(27, None),
     },
+    thread: ThreadRules { q_point: QPoint::Ignored, arc_q_unit_deg: 0.001, pull_out_speed: Some(ParamKey::Number(107, None)), after_end_feed: None },
     summary: "GSK980TDi turning centre. X is a diameter, U/W incremental. Lengths without a decimal \
 point are millimetres (seed 000's O0012: Z-28, F3, J3 K1). Feed per minute (G98) at power on.",
 };

@@ -2,15 +2,18 @@
 //! repair) and seed 002 (G32.2/G32.3). Parameter numbers follow FANUC's numbering, as the 988T
 //! manual does (params_alarms.md section 3).
 
-use super::lathe_a::{gp, GSK_M_CODES, G_CODES, LATER_THREAD};
-use super::{GDef, Group, IntegerLengths, MachineKind, ParamDef, ParamKey, Profile, TimeKeys};
+use super::lathe_a::{g, gp, GSK_M_CODES, G_CODES, LATER_THREAD};
+use super::{CycleKind, GFn, QPoint, ThreadCmd, ThreadRules, GDef, Group, IntegerLengths, MachineKind, ParamDef, ParamKey, Profile, TimeKeys};
 use crate::alarm::AlarmStyle;
+use crate::motion::ArcDir;
 
 const EXTRA: &[GDef] = &[
-    gp(32, 1, Group::Motion, LATER_THREAD, "rigid thread cutting"),
-    gp(32, 2, Group::Motion, LATER_THREAD, "arc thread, clockwise"),
-    gp(32, 3, Group::Motion, LATER_THREAD, "arc thread, counter-clockwise"),
-    gp(92, 1, Group::Motion, LATER_THREAD, "rigid thread cutting cycle"),
+    g(32, Group::Motion, GFn::Thread(ThreadCmd::Lead), "thread cutting: F lead or I threads per inch, J/K pull-out, Q start angle"),
+    g(92, Group::Motion, LATER_THREAD, "thread cutting cycle (the GSK988T manual's G92 page was not available)"),
+    gp(32, 1, Group::Motion, GFn::Thread(ThreadCmd::Rigid), "rigid thread cutting (seed 001)"),
+    gp(32, 2, Group::Motion, GFn::Thread(ThreadCmd::Arc(ArcDir::Cw)), "arc thread, clockwise (seed 002)"),
+    gp(32, 3, Group::Motion, GFn::Thread(ThreadCmd::Arc(ArcDir::Ccw)), "arc thread, counter-clockwise (seed 002)"),
+    gp(92, 1, Group::Motion, GFn::Thread(ThreadCmd::Cycle(CycleKind::GskRigid)), "rigid thread cutting cycle (seed 001)"),
 ];
 
 const PARAMS: &[ParamDef] = &[
@@ -108,6 +111,7 @@ pub static PROFILE: Profile = Profile {
         rapid: [ParamKey::Number(1420, None), ParamKey::Number(1420, None), ParamKey::Number(1420, None)],
         feed_max: ParamKey::Number(1422, None),
     },
+    thread: ThreadRules { q_point: QPoint::Alarm, arc_q_unit_deg: 1.0, pull_out_speed: None, after_end_feed: Some(ParamKey::Number(1466, None)) },
     summary: "GSK988T turning centre with a servo (CS) spindle: M14 position mode, M15 speed mode. \
 X is a diameter, U/W incremental; lengths without a decimal point are millimetres.",
 };

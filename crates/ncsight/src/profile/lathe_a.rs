@@ -4,7 +4,7 @@
 
 use super::{GDef, GFn, Group, MDef, MFn};
 
-const fn g(major: u32, group: Group, function: GFn, meaning: &'static str) -> GDef {
+pub(super) const fn g(major: u32, group: Group, function: GFn, meaning: &'static str) -> GDef {
     GDef { major, minor: None, group, function, meaning }
 }
 
@@ -14,7 +14,7 @@ pub(super) const fn gp(major: u32, minor: u32, group: Group, function: GFn, mean
 
 const LATER_MRC: GFn = GFn::NotYet("multiple repetitive cycles (G70-G75) are not simulated by ncsight yet");
 const LATER_BOX: GFn = GFn::NotYet("single turning/facing cycles (G90/G94) are not simulated by ncsight yet");
-pub(super) const LATER_THREAD: GFn = GFn::NotYet("thread cutting is not simulated by ncsight yet");
+pub(super) const LATER_THREAD: GFn = GFn::NotYet("this thread command is not simulated by ncsight yet");
 pub(super) const LATER_G76: GFn = GFn::NotYet("the G76 compound threading cycle is not simulated by ncsight yet");
 
 /// Shared by all three lathe profiles.
@@ -49,8 +49,6 @@ pub(super) const G_CODES: &[GDef] = &[
     g(76, Group::NonModal, LATER_G76, "compound thread cutting cycle"),
     g(90, Group::Motion, LATER_BOX, "outer/inner diameter cutting cycle"),
     g(94, Group::Motion, LATER_BOX, "end face cutting cycle"),
-    g(32, Group::Motion, LATER_THREAD, "thread cutting"),
-    g(92, Group::Motion, LATER_THREAD, "thread cutting cycle"),
     g(96, Group::SpindleSpeedMode, GFn::ConstantSurfaceSpeed, "constant surface speed: S in m/min"),
     g(97, Group::SpindleSpeedMode, GFn::ConstantRpm, "constant spindle speed: S in rpm"),
     g(98, Group::FeedMode, GFn::FeedPerMinute, "feed per minute: F in mm/min"),

@@ -97,8 +97,57 @@ pub enum GFn {
     ReturnR,
     /// G80 on a mill: cancel the canned cycle.
     CycleCancel,
+    /// A thread-cutting command (group 01).
+    Thread(ThreadCmd),
     /// Known to the controller, not yet simulated: an alarm that says so.
     NotYet(&'static str),
+}
+
+/// The thread-cutting commands. What differs between them is data here and in
+/// `interp/thread.rs`, not copies of the geometry.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ThreadCmd {
+    /// G32 on the GSK lathes: F lead or I threads per inch, J (signed) / K pull-out, Q.
+    Lead,
+    /// G32.1 rigid thread cutting on the GSK988T (seed 001 section 2).
+    Rigid,
+    /// A four-step thread-cutting cycle.
+    Cycle(CycleKind),
+    /// G32.2 (clockwise) and G32.3 (counter-clockwise) arc threads (seed 002).
+    Arc(crate::motion::ArcDir),
+}
+
+/// Which manual's four-step cycle.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum CycleKind {
+    /// G92 on the GSK980TDi (seed 000): R taper, J/K pull-out with No.19 / No.107, L starts.
+    Gsk,
+    /// G92.1 on the GSK988T (seed 001 section 3): S, Q, L, pull-out by 5130/5131.
+    GskRigid,
+    /// G92 on the YASNAC LX3 (seed 004): I taper, K flank infeed, E lead.
+    Yasnac,
+}
+
+/// How a decimal point in the thread start angle Q is treated (BEHAVIOUR.md).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum QPoint {
+    /// GSK988T: "Q cannot have a decimal point" (seed 001).
+    Alarm,
+    /// GSK980TDi: the point is ignored, `Q180.0` is 0.18 degrees (TDi p150); a warning says so.
+    Ignored,
+}
+
+/// Thread facts of a profile.
+#[derive(Debug, Clone, Copy)]
+pub struct ThreadRules {
+    pub q_point: QPoint,
+    /// Unit of Q in G32.2/G32.3, degrees per count: 1.0 on the GSK988T (seed 002's table),
+    /// 0.001 on the GSK980TDi (help text).
+    pub arc_q_unit_deg: f64,
+    /// Parameter giving the pull-out's short-axis speed (GSK No.107), if the profile has one.
+    pub pull_out_speed: Option<ParamKey>,
+    /// Parameter giving the perpendicular pull-out speed after the end point (GSK988T 1466).
+    pub after_end_feed: Option<ParamKey>,
 }
 
 /// One G code of a profile.
@@ -229,6 +278,7 @@ pub struct Profile {
     pub m_codes: &'static [MDef],
     pub params: &'static [ParamDef],
     pub time: TimeKeys,
+    pub thread: ThreadRules,
     /// One paragraph for `ncsight machines`.
     pub summary: &'static str,
 }

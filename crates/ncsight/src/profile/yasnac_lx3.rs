@@ -1,9 +1,14 @@
 //! YASKAWA YASNAC LX3 lathe: seed 004 (G92 with I, K, E). No LX3 parameter manual was found
 //! (params_alarms.md section 5): the time-model rates are ncsight settings, named, not numbered.
 
-use super::lathe_a::{M_CODES, G_CODES};
-use super::{IntegerLengths, MachineKind, ParamDef, ParamKey, Profile, TimeKeys};
+use super::lathe_a::{g, G_CODES, LATER_THREAD, M_CODES};
+use super::{CycleKind, GDef, GFn, Group, QPoint, ThreadCmd, ThreadRules, IntegerLengths, MachineKind, ParamDef, ParamKey, Profile, TimeKeys};
 use crate::alarm::AlarmStyle;
+
+const EXTRA: &[GDef] = &[
+    g(32, Group::Motion, LATER_THREAD, "thread cutting (not in the LX3 excerpt)"),
+    g(92, Group::Motion, GFn::Thread(ThreadCmd::Cycle(CycleKind::Yasnac)), "threading cycle: I taper, K flank infeed, F or E lead (seed 004)"),
+];
 
 const PARAMS: &[ParamDef] = &[
     ParamDef {
@@ -48,13 +53,14 @@ pub static PROFILE: Profile = Profile {
     axes: "XZ",
     reference_point_mm: crate::motion::Vec3::new(100.0, 0.0, 200.0),
     addresses: "GMSTFEXZUWRIKPQLN",
-    g_codes: &[G_CODES],
+    g_codes: &[G_CODES, EXTRA],
     m_codes: M_CODES,
     params: PARAMS,
     time: TimeKeys {
         rapid: [ParamKey::Setting("rapid_mm_min"), ParamKey::Setting("rapid_mm_min"), ParamKey::Setting("rapid_mm_min")],
         feed_max: ParamKey::Setting("feed_max_mm_min"),
     },
+    thread: ThreadRules { q_point: QPoint::Ignored, arc_q_unit_deg: 0.001, pull_out_speed: None, after_end_feed: None },
     summary: "YASNAC LX3 turning centre. X is a diameter, U/W incremental. Lengths without a decimal \
 point are least input increments (X100 = 0.1 mm); seed 004 writes every length with a point. \
 Feed per revolution at power on (assumed).",

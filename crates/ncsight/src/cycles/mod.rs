@@ -1,0 +1,4 @@
+//! Cycle expansions: pure functions from a cycle's resolved data to canonical operations. No
+//! modal state and no words here; the interpreter reads the words and calls these.
+
+pub mod thread;

@@ -1,0 +1,594 @@
+//! Thread commands: reading their words by each manual's rules, then calling the shared
+//! expansions of `cycles::thread`. The pull-out rules of each command are written here as data
+//! for the one pull-out function; nothing of the geometry is copied.
+
+use super::words::Words;
+use super::{axis_target, resolve_arc, ArcOutcome, Step};
+use crate::alarm::{Diagnostic, Rule};
+use crate::cycles::thread::arc::{self as arc_thread, ArcThreadError};
+use crate::cycles::thread::cycle::{expand_cycle, Cycle};
+use crate::cycles::thread::{expand, phase_after, wrap_deg, Pass, PassError, PullOut, PullOutMode};
+use crate::modal::{PassMemory, PendingBody, PendingThread, SpindleDir};
+use crate::motion::{ArcDir, LongAxis, Op, Vec3};
+use crate::profile::{CycleKind, IntegerLengths, ParamKey, QPoint, ThreadCmd, MAX_RPM};
+use crate::read::Word;
+
+/// Largest lead of a straight thread (seed 001 F table: 0.001-500 mm; TDc p143: 0 < F <= 500).
+pub const MAX_LEAD_MM: f64 = 500.0;
+/// Largest lead of an arc thread (seed 002 F table: 0.001-9999 mm).
+pub const MAX_ARC_LEAD_MM: f64 = 9999.0;
+
+pub(super) fn name(cmd: ThreadCmd) -> &'static str {
+    match cmd {
+        ThreadCmd::Lead => "G32",
+        ThreadCmd::Rigid => "G32.1",
+        ThreadCmd::Cycle(CycleKind::Gsk | CycleKind::Yasnac) => "G92",
+        ThreadCmd::Cycle(CycleKind::GskRigid) => "G92.1",
+        ThreadCmd::Arc(ArcDir::Cw) => "G32.2",
+        ThreadCmd::Arc(ArcDir::Ccw) => "G32.3",
+    }
+}
+
+/// Whether the command is a rigid (servo spindle, S-signed) one.
+pub(super) fn is_rigid(cmd: ThreadCmd) -> bool {
+    matches!(cmd, ThreadCmd::Rigid | ThreadCmd::Cycle(CycleKind::GskRigid))
+}
+
+/// Whether a block of `cmd` may continue a run held in `pending` (same family, seed 001 G32.1
+/// note 1; TDi help G32 note 2). Cycles never continue a run.
+pub(super) fn continues(cmd: ThreadCmd, pending: &PendingThread) -> bool {
+    !pending.ends_run
+        && match cmd {
+            ThreadCmd::Lead | ThreadCmd::Arc(_) => !pending.rigid,
+            ThreadCmd::Rigid => pending.rigid,
+            ThreadCmd::Cycle(_) => false,
+        }
+}
+
+impl Step<'_> {
+    /// A lead word (F, E) in mm: GSK reads it in mm without a point; FANUC/YASNAC in least
+    /// input increments (BEHAVIOUR.md "Numbers and words").
+    fn lead_word(&mut self, w: &Word) -> f64 {
+        let mut v = w.value;
+        if !w.decimal && self.profile.integer_lengths == IntegerLengths::LeastIncrement {
+            v *= if self.st.inch { 0.0001 } else { 0.001 };
+        }
+        if self.st.inch { v * 25.4 } else { v }
+    }
+
+    /// Read F (and I threads per inch, E) into the lead in force; return the lead to use.
+    fn read_lead(&mut self, words: &mut Words, gname: &str, inch_i: bool, e_word: bool, max_mm: f64) -> Result<f64, Diagnostic> {
+        let f = words.take(b'F');
+        let i = if inch_i { words.take(b'I') } else { None };
+        let e = if e_word { words.take(b'E') } else { None };
+        let given: Vec<Word> = [f, i, e].into_iter().flatten().collect();
+        if given.len() > 1 {
+            return Err(self.alarm(
+                Rule::DuplicateWord,
+                given[1].span,
+                format!("{} and {}: both give the lead of {gname}", given[0].text(), given[1].text()),
+            ));
+        }
+        if let Some(w) = f.or(e) {
+            let lead = self.lead_word(&w);
+            if !(lead > 0.0 && lead <= max_mm + 1e-9) {
+                return Err(self.alarm(
+                    Rule::ValueOutOfRange,
+                    w.span,
+                    format!("{}: the lead of {gname} must be more than 0 and at most {max_mm} mm", w.text()),
+                ));
+            }
+            self.st.thread.lead_mm = Some(lead);
+        }
+        if let Some(w) = i {
+            // Threads per inch, 0.06-25400 (TDi p150).
+            if !(0.06..=25400.0).contains(&w.value) {
+                return Err(self.alarm(
+                    Rule::ValueOutOfRange,
+                    w.span,
+                    format!("{}: threads per inch must be 0.06 to 25400", w.text()),
+                ));
+            }
+            self.st.thread.lead_mm = Some(25.4 / w.value);
+        }
+        match self.st.thread.lead_mm {
+            Some(l) => Ok(l),
+            None => Err(self.alarm(
+                Rule::MissingWord,
+                self.span,
+                format!("{gname} needs the lead: F{} was never given", if inch_i { " (or I threads per inch)" } else { "" }),
+            )),
+        }
+    }
+
+    /// Q, the start angle in 0.001 degree (seed 001 G32.1 Q rules; BEHAVIOUR.md).
+    fn read_q(&mut self, words: &mut Words, unit_deg: f64, point_ok: bool) -> Result<Option<(f64, Word)>, Diagnostic> {
+        let Some(w) = words.take(b'Q') else { return Ok(None) };
+        if w.value < 0.0 {
+            return Err(self.alarm(Rule::ValueOutOfRange, w.span, format!("{}: the start angle cannot be negative", w.text())));
+        }
+        if w.decimal && !w.expr && !point_ok {
+            match self.profile.thread.q_point {
+                QPoint::Alarm => {
+                    // Seed 001 G32.1: Q "cannot have a decimal point".
+                    return Err(self.alarm(
+                        Rule::IllegalDecimalPoint,
+                        w.span,
+                        format!("{}: Q is a whole number of 0.001 degree on {} (Q180000 is 180 degrees)", w.text(), self.profile.name),
+                    ));
+                }
+                QPoint::Ignored => {
+                    let msg = format!(
+                        "{}: the decimal point of Q is ignored, Q stays in 0.001 degree ({} degrees)",
+                        w.text(),
+                        w.value * unit_deg
+                    );
+                    self.warn(Rule::DecimalIgnored, w.span, msg);
+                }
+            }
+        }
+        // Above 360 degrees counts as 360 (= 0): seed 001 Q rule 2, seed 002.
+        let deg = (w.value * unit_deg).min(360.0);
+        Ok(Some((wrap_deg(deg), w)))
+    }
+
+    /// J and K into the values in force. Returns whether J or K was written in this block.
+    fn read_jk(&mut self, words: &mut Words, gname: &str, j_may_be_negative: bool, k_may_be_negative: bool) -> Result<(bool, bool), Diagnostic> {
+        let j = words.take(b'J');
+        let k = words.take(b'K');
+        if let Some(w) = j {
+            let v = self.length(&w)?;
+            if v < 0.0 && !j_may_be_negative {
+                return Err(self.alarm(Rule::ValueOutOfRange, w.span, format!("{}: J of {gname} cannot be negative", w.text())));
+            }
+            self.st.thread.j = Some(v);
+        }
+        if let Some(w) = k {
+            let v = self.length(&w)?;
+            if v < 0.0 && !k_may_be_negative {
+                return Err(self.alarm(Rule::ValueOutOfRange, w.span, format!("{}: K of {gname} has no sign (0 or more)", w.text())));
+            }
+            self.st.thread.k = Some(v);
+        }
+        Ok((j.is_some(), k.is_some()))
+    }
+
+    /// Spindle speed of an encoder-following thread: the spindle must turn.
+    fn follow_rpm(&mut self, gname: &str) -> Result<f64, Diagnostic> {
+        if self.st.css {
+            // Issue 3: warn about G96 during threading.
+            let msg = format!(
+                "{gname} under G96: the speed is taken at the thread's start diameter; the controller changes it along the cut and the lead suffers (program G97)"
+            );
+            self.warn(Rule::ThreadWithCss, self.span, msg);
+        }
+        let rpm = self.rpm_here();
+        if rpm == 0.0 {
+            return Err(self.alarm(
+                Rule::SpindleStopped,
+                self.span,
+                format!("{gname} with the spindle stopped or at S0: the thread waits for ever for the one-revolution signal"),
+            ));
+        }
+        Ok(rpm)
+    }
+
+    /// Spindle speed of a rigid thread: S in the block or the last rigid S, signed; position
+    /// mode required (seed 001 G32.1 notes 12 and 14, G92.1 note 12).
+    fn rigid_rpm(&mut self, words: &mut Words, gname: &str) -> Result<f64, Diagnostic> {
+        if !self.st.spindle_position_mode {
+            return Err(self.alarm(
+                Rule::SpindleMode,
+                self.span,
+                format!("{gname} needs the spindle in position mode: program M14 first (seed 001)"),
+            ));
+        }
+        if let Some(w) = words.take(b'S') {
+            if w.value == 0.0 {
+                return Err(self.alarm(Rule::ValueOutOfRange, w.span, format!("{}: {gname} needs a spindle speed other than 0", w.text())));
+            }
+            if w.value.abs() > MAX_RPM {
+                return Err(self.alarm(Rule::ValueOutOfRange, w.span, format!("{}: above {MAX_RPM} rpm", w.text())));
+            }
+            self.st.thread.rigid_rpm = Some(w.value);
+        }
+        if let Some(r) = self.st.thread.rigid_rpm {
+            return Ok(r);
+        }
+        if self.st.s_word > 0.0 {
+            let sign = if self.st.spindle == SpindleDir::Negative { -1.0 } else { 1.0 };
+            return Ok(sign * self.st.s_word.min(MAX_RPM));
+        }
+        Err(self.alarm(
+            Rule::MissingWord,
+            self.span,
+            format!("{gname} needs a spindle speed S (seed 001 G32.1 note 12: no speed commanded is an alarm)"),
+        ))
+    }
+
+    fn feed_warning(&mut self, gname: &str, lead: f64, rpm: f64) {
+        let feed = lead * rpm.abs();
+        let max = self.params.feed_max_mm_min();
+        if feed > max {
+            let msg = format!(
+                "{gname}: lead {lead} mm x {} rpm = {feed:.0} mm/min is above the cutting feed limit {max} mm/min: the axis cannot follow the spindle",
+                rpm.abs()
+            );
+            self.warn(Rule::ThreadFeedHigh, self.span, msg);
+        }
+    }
+
+    /// Compare a pass with the earlier passes of the same thread (same lead and start).
+    fn remember_pass(&mut self, gname: &str, lead: f64, long_start: f64, depth: f64, rpm: f64, start_deg: f64) {
+        let same = self
+            .st
+            .thread
+            .memory
+            .filter(|m| (m.lead_mm - lead).abs() < 1e-9 && (m.long_start - long_start).abs() < 1e-6);
+        let Some(m) = same else {
+            self.st.thread.memory = Some(PassMemory { lead_mm: lead, long_start, rpm, start_deg, depth, last_infeed: None });
+            return;
+        };
+        if (m.rpm - rpm).abs() > 1e-9 {
+            let msg = format!("{gname}: this pass turns at {rpm} rpm, the first at {} rpm: the passes may not line up", m.rpm);
+            self.warn(Rule::PassMismatch, self.span, msg);
+        }
+        if (m.start_deg - start_deg).abs() > 1e-9 {
+            let msg = format!(
+                "{gname}: this pass starts at {start_deg} degrees, the first at {} degrees: it cuts a different groove",
+                m.start_deg
+            );
+            self.warn(Rule::PassMismatch, self.span, msg);
+        }
+        let infeed = (depth - m.depth).abs();
+        if let Some(prev) = m.last_infeed {
+            if infeed > prev + 1e-9 {
+                let msg = format!(
+                    "{gname}: infeed {:.3} mm (diameter {:.3}) is larger than the previous one, {:.3} mm",
+                    infeed,
+                    2.0 * infeed,
+                    prev
+                );
+                self.warn(Rule::InfeedGrows, self.span, msg);
+            }
+        }
+        self.st.thread.memory = Some(PassMemory { depth, last_infeed: if infeed > 1e-12 { Some(infeed) } else { m.last_infeed }, ..m });
+    }
+
+    /// The pull-out speed mode of the profile (GSK No.107: 0 = ratio, else a speed).
+    fn pull_out_mode(&self) -> PullOutMode {
+        match self.profile.thread.pull_out_speed {
+            Some(key) if self.params.get(key) > 0.0 => PullOutMode::ShortAxisSpeed(self.params.get(key)),
+            _ => PullOutMode::Ratio,
+        }
+    }
+
+    fn after_end_feed(&self) -> f64 {
+        self.profile.thread.after_end_feed.map(|k| self.params.get(k)).filter(|v| *v > 0.0).unwrap_or(self.params.feed_max_mm_min())
+    }
+
+    fn pass_error(&self, gname: &str, e: PassError) -> Diagnostic {
+        match e {
+            PassError::PullOutTooLong(k, len) => self.alarm(
+                Rule::PullOutTooLong,
+                self.span,
+                format!("{gname}: the pull-out ({k:.3} mm along the long axis) is longer than the thread ({len:.3} mm)"),
+            ),
+        }
+    }
+}
+
+/// Execute one block of a thread command. `run_deg` is the spindle angle where a continuous
+/// run goes on (None: a new run, which waits for the one-revolution signal plus Q).
+pub(super) fn block(step: &mut Step, words: &mut Words, cmd: ThreadCmd, explicit: bool, run_deg: Option<f64>) -> Result<(), Diagnostic> {
+    match cmd {
+        ThreadCmd::Lead | ThreadCmd::Rigid => straight(step, words, cmd, run_deg),
+        ThreadCmd::Cycle(kind) => cycle(step, words, kind, explicit),
+        ThreadCmd::Arc(dir) => arc(step, words, dir, run_deg),
+    }
+}
+
+/// G32 (TDi help) and G32.1 (seed 001 section 2).
+fn straight(step: &mut Step, words: &mut Words, cmd: ThreadCmd, run_deg: Option<f64>) -> Result<(), Diagnostic> {
+    let rigid = cmd == ThreadCmd::Rigid;
+    let gname = name(cmd);
+    let lead = step.read_lead(words, gname, !rigid, false, MAX_LEAD_MM)?;
+    // G32.1: J signed, K unsigned (seed 001 notes); G32: J signed, K as written taken positive.
+    let (j_given, k_given) = step.read_jk(words, gname, true, !rigid)?;
+    let q = step.read_q(words, 0.001, false)?;
+    let rpm = if rigid { step.rigid_rpm(words, gname)? } else { step.follow_rpm(gname)? };
+    let (target, _) = axis_target(step, words)?;
+    let from = step.st.pos;
+    if target == from {
+        return Ok(());
+    }
+    let long_axis = LongAxis::of(&from, &target);
+    let (l, _) = long_axis.indices();
+    let length = (target.axis(l) - from.axis(l)).abs();
+    step.feed_warning(gname, lead, rpm);
+    let start_deg = match (run_deg, q) {
+        (Some(d), Some((_, w))) => {
+            // Only the first block's Q counts in a continuous run (TDi help G32 note 5; seed 002).
+            step.warn(Rule::TextIgnored, w.span, format!("{}: ignored, the block continues a thread run", w.text()));
+            d
+        }
+        (Some(d), None) => d,
+        (None, q) => q.map(|(d, _)| d).unwrap_or(0.0),
+    };
+    let (j, k) = (step.st.thread.j, step.st.thread.k);
+    let short_sign = |j: f64| if j < 0.0 { -1.0 } else { 1.0 };
+    let pull_out = match j {
+        // No J in force, or J0: no pull-out (TDi p151; seed 001 notes 2 and 4).
+        None => None,
+        Some(j) if j == 0.0 => None,
+        Some(j) => {
+            let k = k.map(f64::abs).unwrap_or(0.0);
+            if rigid {
+                if k == 0.0 {
+                    // Seed 001 G32.1 notes 3 and 5: no long-axis pull-out; out along the short
+                    // axis after the end point at parameter 1466's speed.
+                    Some(PullOut { long_mm: 0.0, short_mm: j.abs(), short_sign: short_sign(j), mode: PullOutMode::Ratio, after_end_feed: Some(step.after_end_feed()) })
+                } else {
+                    Some(PullOut { long_mm: k, short_mm: j.abs(), short_sign: short_sign(j), mode: PullOutMode::Ratio, after_end_feed: None })
+                }
+            } else {
+                // TDi p151: K omitted or 0 with J: K = J.
+                let long = if k == 0.0 { j.abs() } else { k };
+                Some(PullOut { long_mm: long, short_mm: j.abs(), short_sign: short_sign(j), mode: step.pull_out_mode(), after_end_feed: None })
+            }
+        }
+    };
+    if let Some(po) = pull_out {
+        if po.long_mm > length + 1e-9 {
+            // Seed 001 G32.1 note 9.
+            return Err(step.pass_error(gname, PassError::PullOutTooLong(po.long_mm, length)));
+        }
+    }
+    if run_deg.is_none() {
+        let (_, s) = long_axis.indices();
+        step.remember_pass(gname, lead, from.axis(l), target.axis(s), rpm, start_deg);
+    }
+    let pass = Pass { from, to: target, lead_mm: lead, rpm, start_deg, pull_out };
+    // A block that writes J or K (other than J0 K0) ends the run (seed 001 G32.1 note 1).
+    let ends_run = (j_given || k_given) && (j.unwrap_or(0.0) != 0.0 || k.unwrap_or(0.0) != 0.0);
+    let end_deg = phase_after(start_deg, length, lead);
+    step.st.pos = target;
+    step.st.thread.pending = Some(PendingThread { span: step.span, body: PendingBody::Straight(pass), ends_run, rigid, end_deg });
+    Ok(())
+}
+
+/// G32.2 / G32.3 (seed 002).
+fn arc(step: &mut Step, words: &mut Words, dir: ArcDir, run_deg: Option<f64>) -> Result<(), Diagnostic> {
+    let gname = name(ThreadCmd::Arc(dir));
+    // I is taken by the centre, so F is the only lead word: F[25.4/n] for inch (seed 002).
+    let lead = step.read_lead(words, gname, false, false, MAX_ARC_LEAD_MM)?;
+    let unit = step.profile.thread.arc_q_unit_deg;
+    let q = step.read_q(words, unit, unit >= 1.0)?;
+    let rpm = step.follow_rpm(gname)?;
+    if let Some(r) = words.peek(b'R') {
+        if r.value < 0.0 {
+            return Err(step.alarm(
+                Rule::ValueOutOfRange,
+                r.span,
+                format!("{}: the radius of an arc thread cannot be negative (seed 002: no arcs over 180 degrees)", r.text()),
+            ));
+        }
+    }
+    let (to, _) = axis_target(step, words)?;
+    let from = step.st.pos;
+    let plane = step.st.plane;
+    let g = match resolve_arc(step, words, from, to, dir, gname)? {
+        ArcOutcome::Arc(g) => g,
+        ArcOutcome::Zero => return Ok(()),
+    };
+    let long_axis = match arc_thread::long_axis(&from, plane, dir, &g) {
+        Ok(a) => a,
+        Err(ArcThreadError::CrossesSector(deg)) => {
+            return Err(step.alarm(
+                Rule::ArcThreadSector,
+                step.span,
+                format!(
+                    "{gname}: the arc crosses the {deg:.0}-degree diagonal through its centre, so its long axis would change (seed 002 note 1: the arc must stay in one sector)"
+                ),
+            ))
+        }
+    };
+    step.feed_warning(gname, lead, rpm);
+    let start_deg = run_deg.unwrap_or_else(|| q.map(|(d, _)| d).unwrap_or(0.0));
+    if let (Some(_), Some((_, w))) = (run_deg, q) {
+        step.warn(Rule::TextIgnored, w.span, format!("{}: ignored, the block continues a thread run", w.text()));
+    }
+    let i = long_axis.index();
+    let long_travel = (to.axis(i) - from.axis(i)).abs();
+    let op = Op::ThreadArc { from, to, center: g.center, plane, dir, lead_mm: lead, long_axis, spindle_deg: wrap_deg(start_deg), rpm };
+    step.st.pos = to;
+    step.st.thread.pending = Some(PendingThread {
+        span: step.span,
+        body: PendingBody::Arc(op),
+        ends_run: false,
+        rigid: false,
+        end_deg: phase_after(start_deg, long_travel, lead),
+    });
+    Ok(())
+}
+
+/// G92 (seed 000; seed 004 for the YASNAC) and G92.1 (seed 001 section 3).
+fn cycle(step: &mut Step, words: &mut Words, kind: CycleKind, explicit: bool) -> Result<(), Diagnostic> {
+    let cmd = ThreadCmd::Cycle(kind);
+    let gname = name(cmd);
+    let lead = match kind {
+        CycleKind::Gsk => step.read_lead(words, gname, true, false, MAX_LEAD_MM)?,
+        CycleKind::GskRigid => step.read_lead(words, gname, false, false, MAX_LEAD_MM)?,
+        CycleKind::Yasnac => step.read_lead(words, gname, false, true, MAX_LEAD_MM)?,
+    };
+    // L: number of starts, 1-99, modal (seed 000; seed 001 G92.1).
+    if kind != CycleKind::Yasnac {
+        if let Some(w) = words.take(b'L') {
+            if w.decimal || !(1.0..=99.0).contains(&w.value) {
+                return Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("{}: the number of starts L is a whole number 1 to 99", w.text())));
+            }
+            step.st.thread.starts = w.value as u32;
+        }
+    }
+    let mut flank_mm = 0.0;
+    match kind {
+        CycleKind::Gsk => {
+            // Seed 000 note 10: negative J, K count as positive.
+            step.read_jk(words, gname, true, true)?;
+        }
+        CycleKind::GskRigid => {
+            // Seed 001 G92.1: J "cannot be less than zero"; K in G32.1's range (0 or more).
+            step.read_jk(words, gname, false, false)?;
+        }
+        CycleKind::Yasnac => {
+            // Seed 004 (4): K, with its sign, shifts this pass's start along Z (flank infeed).
+            if let Some(w) = words.take(b'K') {
+                flank_mm = step.length(&w)?;
+            }
+        }
+    }
+    let q = if kind == CycleKind::GskRigid { step.read_q(words, 0.001, false)? } else { None };
+    let rpm = if kind == CycleKind::GskRigid { step.rigid_rpm(words, gname)? } else { step.follow_rpm(gname)? };
+    // Taper: R on GSK, I on the YASNAC; radius, cut start minus cut end.
+    let taper_letter = if kind == CycleKind::Yasnac { b'I' } else { b'R' };
+    let taper_word = words.take(taper_letter);
+    let a = step.st.pos;
+    let given_z = words.has(b'Z') || words.has(b'W');
+    let given_x = words.has(b'X') || words.has(b'U');
+    let (mut c, _) = axis_target(step, words)?;
+    let remembered = if explicit { None } else { step.st.thread.cycle_end };
+    if !given_z {
+        match remembered {
+            Some(m) => c.z = m.z,
+            None => {
+                return Err(step.alarm(
+                    Rule::MissingWord,
+                    step.span,
+                    format!("{gname} needs the end point's Z (or W)"),
+                ))
+            }
+        }
+    }
+    if !given_x {
+        c.x = remembered.map(|m| m.x).unwrap_or(a.x);
+    }
+    match taper_word {
+        Some(w) => step.st.thread.taper_mm = step.length(&w)?,
+        None if explicit => step.st.thread.taper_mm = 0.0,
+        None => {} // continuation blocks keep the taper (assumption, docs/threads.md)
+    }
+    let taper = step.st.thread.taper_mm;
+    if (c.z - a.z).abs() < 1e-9 {
+        // Seed 000: G92 cannot cut a face thread.
+        return Err(step.alarm(
+            Rule::FaceThread,
+            step.span,
+            format!("{gname}: the end point has the start point's Z, a face thread, which {gname} cannot cut (seed 000)"),
+        ));
+    }
+    if kind != CycleKind::Yasnac {
+        // Seed 000 / seed 001: when R and U differ in sign, |R| <= |U/2|.
+        let u_radius = c.x - a.x;
+        if taper != 0.0 && u_radius != 0.0 && taper.signum() != u_radius.signum() && taper.abs() > u_radius.abs() + 1e-9 {
+            let span = taper_word.map(|w| w.span).unwrap_or(step.span);
+            return Err(step.alarm(
+                Rule::TaperTooLarge,
+                span,
+                format!(
+                    "{gname}: R{taper} and U{} differ in sign, so |R| may be at most |U/2| = {:.3} mm",
+                    2.0 * u_radius,
+                    u_radius.abs()
+                ),
+            ));
+        }
+    }
+    let cut_start = Vec3::new(c.x + taper, a.y, a.z + flank_mm);
+    let long_axis = LongAxis::of(&cut_start, &c);
+    let (l, s) = long_axis.indices();
+    let retract = (a.axis(s) - c.axis(s)).abs();
+    let toward_start = {
+        let d = a.axis(s) - c.axis(s);
+        if d != 0.0 { d.signum() } else if c.axis(s) < 0.0 { -1.0 } else { 1.0 }
+    };
+    let pull_out = match kind {
+        CycleKind::Gsk => gsk_pull_out(step, lead, toward_start),
+        CycleKind::GskRigid => gsk_rigid_pull_out(step, lead, toward_start),
+        // Seed 004 describes no thread chamfer for the LX3 G92: none (docs/threads.md).
+        CycleKind::Yasnac => None,
+    };
+    // Seed 001 G92.1 note 11, applied to G92 too (BEHAVIOUR.md): J at most the retract distance.
+    let pull_out = pull_out.map(|mut p| {
+        if p.short_mm > retract {
+            p.short_mm = retract;
+        }
+        p
+    });
+    step.feed_warning(gname, lead, rpm);
+    let first_deg = q.map(|(d, _)| d).unwrap_or(0.0);
+    step.remember_pass(gname, lead, cut_start.axis(l), c.axis(s), rpm, first_deg);
+    let spec = Cycle { start: a, cut_start, cut_end: c, lead_mm: lead, rpm, starts: step.st.thread.starts, first_deg, pull_out };
+    let ops = expand_cycle(&spec).map_err(|e| step.pass_error(gname, e))?;
+    for (_, op) in ops {
+        step.emit(op);
+    }
+    step.st.thread.cycle_end = Some(c);
+    Ok(())
+}
+
+/// Seed 000 notes 2-7 and 10 (G92 on the GSK980TDi).
+fn gsk_pull_out(step: &Step, lead: f64, sign: f64) -> Option<PullOut> {
+    let (j, k) = (step.st.thread.j.map(f64::abs), step.st.thread.k.map(f64::abs));
+    // No.19: pull-out width in 0.1 x lead.
+    let no19 = step.params.get(ParamKey::Number(19, None)) * 0.1 * lead;
+    let (long, short) = match (j, k) {
+        (None, None) => (no19, no19),      // note 2
+        (None, Some(k)) => (k, no19),      // note 3
+        (Some(j), _) if j == 0.0 => return None, // notes 5 and 7
+        (Some(j), None) => (j, j),         // note 4
+        (Some(j), Some(k)) if k == 0.0 => (j, j), // note 6
+        (Some(j), Some(k)) => (k, j),
+    };
+    if short <= 0.0 {
+        return None;
+    }
+    Some(PullOut { long_mm: long, short_mm: short, short_sign: sign, mode: step.pull_out_mode(), after_end_feed: None })
+}
+
+/// Seed 001 G92.1 notes 1-6 (GSK988T).
+fn gsk_rigid_pull_out(step: &Step, lead: f64, sign: f64) -> Option<PullOut> {
+    let (j, k) = (step.st.thread.j, step.st.thread.k);
+    let chamfer = step.params.get(ParamKey::Number(5130, None)) * 0.1 * lead;
+    let angle = step.params.get(ParamKey::Number(5131, None));
+    let ratio = |long: f64| if angle == 0.0 { long } else { long * angle.to_radians().tan() };
+    let after_end = |j: f64| PullOut { long_mm: 0.0, short_mm: j, short_sign: sign, mode: PullOutMode::Ratio, after_end_feed: Some(step.after_end_feed()) };
+    let (long, short) = match (j, k) {
+        (None, None) => (chamfer, ratio(chamfer)), // note 1
+        (None, Some(k)) => (k, chamfer),           // note 2
+        (Some(j), _) if j == 0.0 => return None,   // notes 5 and 6
+        (Some(j), None) => return Some(after_end(j)), // note 3
+        (Some(j), Some(k)) if k == 0.0 => return Some(after_end(j)), // note 4
+        (Some(j), Some(k)) => (k, j),
+    };
+    if short <= 0.0 {
+        return None;
+    }
+    Some(PullOut { long_mm: long, short_mm: short, short_sign: sign, mode: PullOutMode::Ratio, after_end_feed: None })
+}
+
+/// Emit a held-back run end: with its pull-out if the run ends here.
+pub(super) fn flush(step: &mut Step, p: PendingThread, run_ends: bool) {
+    match p.body {
+        PendingBody::Straight(mut pass) => {
+            if !run_ends {
+                pass.pull_out = None;
+            }
+            // The pull-out length was checked when the block was read.
+            if let Ok((ops, _)) = expand(&pass) {
+                for op in ops {
+                    step.emit_at(p.span, op);
+                }
+            }
+        }
+        PendingBody::Arc(op) => step.emit_at(p.span, op),
+    }
+}

@@ -1,0 +1,15 @@
+(Seed 000 example O0012 on gsk980tdi, No.107 = 0, hand check against the manual text -)
+(G92 X58.7 Z-28 F3 J3 K1 from A = X65 Z5 - step 1 rapid X to the cut start X58.7 Z5.)
+(Step 2 thread, lead 3, spindle at 0 deg, to Z-27 = K1 before the end, then the pull-out)
+(to X64.7 Z-28 - J3 is a radius, +6 on the diameter, toward A's X65 - at 240 deg because)
+(32 mm is 10 2/3 revolutions. Step 3 rapid X65 Z-28, step 4 rapid X65 Z5.)
+(X57.7, X57, X56.9 repeat it - J3 K1, F3 are modal. Time - 32 mm at 3 x 300 = 900 mm/min is)
+(2.133 s, the pull-out 1 mm 0.067 s, rapids at No.022 = 8000 mm/min each axis.)
+O0012;
+M3 S300 G0 X150 Z50 T0101; (螺纹刀)
+G0 X65 Z5; (快速定位)
+G92 X58.7 Z-28 F3 J3 K1; (加工螺纹, 分4刀切削, 第一次进刀1.3mm)
+X57.7; (第二次进刀1mm)
+X57; (第三次进刀0.7mm)
+X56.9; (第四次进刀0.1mm)
+M30;

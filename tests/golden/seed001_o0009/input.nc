@@ -1,0 +1,17 @@
+(Seed 001 example O0009 on gsk988t - G32.1 rigid taper thread, lead 2, S500 in position mode.)
+(Hand check - from X30.14 Z3 to X51.57 Z-72 - W-75 - Z is the long axis - 75 mm against 10.715 mm)
+(of radius - so each pass is 75 / [2 x 500] min = 4.5 s, as issue 5 states. No J and K - no)
+(pull-out - seed 001 note 2. G00 X55 and W75 return, X29.14 infeeds 0.5 mm, the second pass)
+(starts at the same spindle angle 0 - Q omitted is 0 degrees - rule 1.)
+O0009;
+M14;	(主轴切换到位置方式)
+G00 X30.14 Z3;	(第一次切入 1mm)
+G32.1 X51.57 W-75 F2.0 S500;	(锥螺纹第一次切削)
+G00 X55;	(刀具退出)
+W75;	(Z 轴回起点)
+X29.14;	(第二次再进刀 0.5mm)
+G32.1 X50.57 W-75 F2.0 S500;	(锥螺纹第二次切削)
+G00 X55;	(刀具退出)
+W75 ;	(Z 轴回起点)
+M15;	(主轴切换到速度方式)
+M30;
