@@ -1,0 +1,5 @@
+(expect NCS-E33 line 4 col 19 on gsk980tdi)
+M3 S300
+G0 X65 Z5
+G92 X58.7 Z-28 F3 L100
+M30

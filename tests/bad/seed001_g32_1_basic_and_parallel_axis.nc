@@ -1,0 +1,5 @@
+(expect NCS-E34 line 4 col 11 on gsk988t)
+M14
+G00 X30 Z3
+G32.1 X40 U2 W-10 F2.0 S500
+M30

@@ -1,0 +1,5 @@
+(expect NCS-E43 line 4 col 1 on gsk988t)
+G98 F100 G1 X10 Z-15
+M03 S200
+G32.2 X30 Z-25 F2 R10
+M30

@@ -1,0 +1,5 @@
+(expect NCS-E33 line 4 col 15 on gsk988t)
+G98 F100 G1 X10 Z-15
+M03 S200
+G32.3 W-10 F2 R-10
+M30
