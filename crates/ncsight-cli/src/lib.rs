@@ -302,7 +302,7 @@ fn machines(name: Option<&str>, out: &mut dyn Write) -> Result<i32, Failure> {
                 writeln!(out, "  {code:<7} {}{state}", g.meaning)?;
             }
             writeln!(out, "\nM codes:")?;
-            for mc in p.m_codes {
+            for mc in p.m_codes.iter().flat_map(|t| t.iter()) {
                 writeln!(out, "  M{:02}     {}", mc.code, mc.meaning)?;
             }
         }

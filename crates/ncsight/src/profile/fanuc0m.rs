@@ -1,39 +1,16 @@
 //! FANUC 0-M machining centre: seed 003 (drilling canned cycles G73-G89).
 
+use super::common::{self, g, m};
 use super::{QPoint, ThreadRules, GDef, GFn, Group, IntegerLengths, MDef, MFn, MachineKind, ParamDef, ParamKey, Profile, TimeKeys};
 use crate::alarm::AlarmStyle;
-
-const fn g(major: u32, group: Group, function: GFn, meaning: &'static str) -> GDef {
-    GDef { major, minor: None, group, function, meaning }
-}
 
 const LATER_DRILL: GFn = GFn::NotYet("drilling canned cycles are not simulated by ncsight yet");
 
 const G_CODES: &[GDef] = &[
-    g(0, Group::Motion, GFn::Rapid, "rapid positioning"),
-    g(1, Group::Motion, GFn::Linear, "linear interpolation at feed F"),
-    g(2, Group::Motion, GFn::ArcCw, "circular interpolation clockwise"),
-    g(3, Group::Motion, GFn::ArcCcw, "circular interpolation counter-clockwise"),
-    g(4, Group::NonModal, GFn::Dwell, "dwell: P in ms, X in s"),
-    g(17, Group::Plane, GFn::PlaneXY, "XY plane"),
-    g(18, Group::Plane, GFn::PlaneZX, "ZX plane"),
-    g(19, Group::Plane, GFn::PlaneYZ, "YZ plane"),
-    g(20, Group::Units, GFn::Inch, "inch input"),
-    g(21, Group::Units, GFn::Metric, "metric input"),
-    g(28, Group::NonModal, GFn::ReferenceReturn, "return to the reference point via an intermediate point"),
-    g(40, Group::CutterComp, GFn::RadiusComp(false), "cancel cutter compensation"),
-    g(41, Group::CutterComp, GFn::RadiusComp(true), "cutter compensation left"),
-    g(42, Group::CutterComp, GFn::RadiusComp(true), "cutter compensation right"),
     g(43, Group::LengthComp, GFn::LengthComp, "tool length compensation +"),
     g(44, Group::LengthComp, GFn::LengthComp, "tool length compensation -"),
     g(49, Group::LengthComp, GFn::LengthComp, "cancel tool length compensation"),
     g(53, Group::NonModal, GFn::NotYet("positioning in machine coordinates is not simulated: ncsight has programme coordinates only"), "positioning in the machine coordinate system"),
-    g(54, Group::WorkOffset, GFn::WorkOffset, "work coordinate system 1"),
-    g(55, Group::WorkOffset, GFn::WorkOffset, "work coordinate system 2"),
-    g(56, Group::WorkOffset, GFn::WorkOffset, "work coordinate system 3"),
-    g(57, Group::WorkOffset, GFn::WorkOffset, "work coordinate system 4"),
-    g(58, Group::WorkOffset, GFn::WorkOffset, "work coordinate system 5"),
-    g(59, Group::WorkOffset, GFn::WorkOffset, "work coordinate system 6"),
     g(61, Group::PathMode, GFn::PathControl, "exact stop mode"),
     g(64, Group::PathMode, GFn::PathControl, "cutting mode"),
     g(73, Group::CannedCycle, LATER_DRILL, "high-speed peck drilling"),
@@ -59,19 +36,8 @@ const G_CODES: &[GDef] = &[
 ];
 
 const M_CODES: &[MDef] = &[
-    MDef { code: 0, function: MFn::ProgramStop, meaning: "programme stop" },
-    MDef { code: 1, function: MFn::OptionalStop, meaning: "optional stop" },
-    MDef { code: 2, function: MFn::ProgramEnd, meaning: "programme end" },
-    MDef { code: 3, function: MFn::SpindleCw, meaning: "spindle clockwise" },
-    MDef { code: 4, function: MFn::SpindleCcw, meaning: "spindle counter-clockwise" },
-    MDef { code: 5, function: MFn::SpindleStop, meaning: "spindle stop" },
-    MDef { code: 6, function: MFn::ToolChange, meaning: "tool change" },
-    MDef { code: 8, function: MFn::Auxiliary, meaning: "coolant on" },
-    MDef { code: 9, function: MFn::Auxiliary, meaning: "coolant off" },
-    MDef { code: 19, function: MFn::Auxiliary, meaning: "spindle orientation" },
-    MDef { code: 30, function: MFn::ProgramEnd, meaning: "programme end and rewind" },
-    MDef { code: 98, function: MFn::SubprogramCall, meaning: "subprogramme call" },
-    MDef { code: 99, function: MFn::SubprogramReturn, meaning: "subprogramme return" },
+    m(6, MFn::ToolChange, "tool change"),
+    m(19, MFn::Auxiliary, "spindle orientation"),
 ];
 
 const PARAMS: &[ParamDef] = &[
@@ -162,8 +128,8 @@ pub static PROFILE: Profile = Profile {
     axes: "XYZ",
     reference_point_mm: crate::motion::Vec3::new(0.0, 0.0, 0.0),
     addresses: "GMSTFXYZIJKRPQLHDN",
-    g_codes: &[G_CODES],
-    m_codes: M_CODES,
+    g_codes: &[common::G_CODES, G_CODES],
+    m_codes: &[common::M_CODES, M_CODES],
     params: PARAMS,
     time: TimeKeys {
         rapid: [ParamKey::Number(518, None), ParamKey::Number(519, None), ParamKey::Number(520, None)],

@@ -1,6 +1,7 @@
 //! GSK980TDi lathe, G-code system A. Seed 000 (G92) and the on-line help text.
 
-use super::lathe_a::{g, gp, GSK_M_CODES, G_CODES, LATER_THREAD};
+use super::common::{self, g, gp};
+use super::lathe_a::{self, LATER_THREAD};
 use super::{CycleKind, QPoint, ThreadCmd, ThreadRules, GDef, GFn, Group, IntegerLengths, MachineKind, ParamDef, ParamKey, Profile, TimeKeys};
 use crate::alarm::AlarmStyle;
 use crate::motion::ArcDir;
@@ -87,8 +88,8 @@ pub static PROFILE: Profile = Profile {
     axes: "XZ",
     reference_point_mm: crate::motion::Vec3::new(100.0, 0.0, 200.0),
     addresses: "GMSTFXZUWRIJKPQLN",
-    g_codes: &[G_CODES, EXTRA],
-    m_codes: GSK_M_CODES,
+    g_codes: &[common::G_CODES, lathe_a::G_CODES, EXTRA],
+    m_codes: &[common::M_CODES, lathe_a::M_CODES, lathe_a::GSK_M_CODES],
     params: PARAMS,
     time: TimeKeys {
         rapid: [ParamKey::Number(22, None), ParamKey::Number(22, None), ParamKey::Number(22, None)],

@@ -2,7 +2,8 @@
 //! repair) and seed 002 (G32.2/G32.3). Parameter numbers follow FANUC's numbering, as the 988T
 //! manual does (params_alarms.md section 3).
 
-use super::lathe_a::{g, gp, GSK_M_CODES, G_CODES, LATER_THREAD};
+use super::common::{self, g, gp};
+use super::lathe_a::{self, LATER_THREAD};
 use super::{CycleKind, GFn, QPoint, ThreadCmd, ThreadRules, GDef, Group, IntegerLengths, MachineKind, ParamDef, ParamKey, Profile, TimeKeys};
 use crate::alarm::AlarmStyle;
 use crate::motion::ArcDir;
@@ -104,8 +105,8 @@ pub static PROFILE: Profile = Profile {
     axes: "XYZ",
     reference_point_mm: crate::motion::Vec3::new(100.0, 0.0, 200.0),
     addresses: "GMSTFXYZUVWRIJKPQLN",
-    g_codes: &[G_CODES, EXTRA],
-    m_codes: GSK_M_CODES,
+    g_codes: &[common::G_CODES, lathe_a::G_CODES, EXTRA],
+    m_codes: &[common::M_CODES, lathe_a::M_CODES, lathe_a::GSK_M_CODES],
     params: PARAMS,
     time: TimeKeys {
         rapid: [ParamKey::Number(1420, None), ParamKey::Number(1420, None), ParamKey::Number(1420, None)],

@@ -6,6 +6,7 @@
 //! Profiles are data (`gsk980tdi.rs`, `gsk988t.rs`, `fanuc0m.rs`, `yasnac_lx3.rs`); the G-code
 //! tables that several lathes share live in `lathe_a.rs`.
 
+mod common;
 mod fanuc0m;
 mod gsk980tdi;
 mod gsk988t;
@@ -275,7 +276,7 @@ pub struct Profile {
     /// Addresses the controller reads at all (anything else is IMPROPER NC-ADDRESS).
     pub addresses: &'static str,
     pub g_codes: &'static [&'static [GDef]],
-    pub m_codes: &'static [MDef],
+    pub m_codes: &'static [&'static [MDef]],
     pub params: &'static [ParamDef],
     pub time: TimeKeys,
     pub thread: ThreadRules,
@@ -299,7 +300,7 @@ impl Profile {
     }
 
     pub fn m_code(&self, code: u32) -> Option<&'static MDef> {
-        self.m_codes.iter().find(|m| m.code == code)
+        self.m_codes.iter().flat_map(|t| t.iter()).find(|m| m.code == code)
     }
 
     pub fn param(&self, key: ParamKey) -> Option<(usize, &'static ParamDef)> {
@@ -424,6 +425,10 @@ mod tests {
                     g.major,
                     g.minor
                 );
+            }
+            let ms: Vec<_> = p.m_codes.iter().flat_map(|t| t.iter()).collect();
+            for (i, m) in ms.iter().enumerate() {
+                assert!(!ms[i + 1..].iter().any(|n| n.code == m.code), "{}: M{} twice", p.name, m.code);
             }
             assert!(by_name(p.name).is_some());
         }

@@ -1,7 +1,8 @@
 //! YASKAWA YASNAC LX3 lathe: seed 004 (G92 with I, K, E). No LX3 parameter manual was found
 //! (params_alarms.md section 5): the time-model rates are ncsight settings, named, not numbered.
 
-use super::lathe_a::{g, G_CODES, LATER_THREAD, M_CODES};
+use super::common::{self, g};
+use super::lathe_a::{self, LATER_THREAD};
 use super::{CycleKind, GDef, GFn, Group, QPoint, ThreadCmd, ThreadRules, IntegerLengths, MachineKind, ParamDef, ParamKey, Profile, TimeKeys};
 use crate::alarm::AlarmStyle;
 
@@ -53,8 +54,8 @@ pub static PROFILE: Profile = Profile {
     axes: "XZ",
     reference_point_mm: crate::motion::Vec3::new(100.0, 0.0, 200.0),
     addresses: "GMSTFEXZUWRIKPQLN",
-    g_codes: &[G_CODES, EXTRA],
-    m_codes: M_CODES,
+    g_codes: &[common::G_CODES, lathe_a::G_CODES, EXTRA],
+    m_codes: &[common::M_CODES, lathe_a::M_CODES],
     params: PARAMS,
     time: TimeKeys {
         rapid: [ParamKey::Setting("rapid_mm_min"), ParamKey::Setting("rapid_mm_min"), ParamKey::Setting("rapid_mm_min")],
