@@ -66,6 +66,7 @@ rules! {
     FeedZero => Alarm, "NCS-E11", Some("PS0011"), "FEED ZERO (COMMAND)";
     RadiusTolerance => Alarm, "NCS-E20", Some("PS0020"), "OVER TOLERANCE OF RADIUS";
     ArcDataMissing => Alarm, "NCS-E22", Some("PS0022"), "R OR I,J,K COMMAND NOT FOUND";
+    PeckMissing => Alarm, "NCS-E47", Some("PS0045"), "ADDRESS Q NOT FOUND (G73/G83)";
     // --- project rules (no controller number known) ---
     BadCharacter => Alarm, "NCS-E30", None, "CHARACTER NOT ALLOWED";
     LineTooLong => Alarm, "NCS-E31", None, "BLOCK TOO LONG";
@@ -83,6 +84,7 @@ rules! {
     ArcThreadSector => Alarm, "NCS-E43", None, "ARC THREAD LEAVES ITS SECTOR";
     FaceThread => Alarm, "NCS-E44", None, "FACE THREAD NOT ALLOWED IN THIS CYCLE";
     TaperTooLarge => Alarm, "NCS-E45", None, "TAPER R LARGER THAN U/2";
+    DrillLevels => Alarm, "NCS-E46", None, "R POINT AND HOLE BOTTOM IN THE WRONG ORDER";
     // --- warnings ---
     SameGroupTwice => Warning, "NCS-W01", None, "TWO G CODES OF ONE GROUP: THE LAST ONE COUNTS";
     IntegerLength => Warning, "NCS-W02", None, "LENGTH WITHOUT DECIMAL POINT";
@@ -101,6 +103,8 @@ rules! {
     ThreadFeedHigh => Warning, "NCS-W15", None, "THREAD FEED ABOVE THE LIMIT";
     PassMismatch => Warning, "NCS-W16", None, "PASSES DO NOT LINE UP";
     InfeedGrows => Warning, "NCS-W17", None, "INFEED LARGER THAN THE PREVIOUS ONE";
+    TapDirection => Warning, "NCS-W18", None, "TAPPING WITH THE SPINDLE TURNING THE WRONG WAY";
+    ReturnLevel => Warning, "NCS-W19", None, "RETURN LEVEL DIFFERS FROM G98/G99";
 }
 
 impl Rule {

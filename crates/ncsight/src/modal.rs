@@ -73,6 +73,21 @@ pub struct ThreadState {
     pub memory: Option<PassMemory>,
 }
 
+/// Hole data that stays from block to block while a drilling cycle is in force (seed 003): the
+/// values as written, with the distance mode they were written in. G80 and every group 01 code
+/// clear it (F is kept elsewhere).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct DrillData {
+    pub kind: Option<crate::cycles::drill::DrillKind>,
+    /// Drilling-axis level of the tool when the cycle mode was entered.
+    pub initial: f64,
+    /// The drilling-axis word (Z in G17) and R as written, mm, and whether under G91.
+    pub bottom: Option<(f64, bool)>,
+    pub r: Option<(f64, bool)>,
+    pub q: Option<f64>,
+    pub dwell_s: Option<f64>,
+}
+
 /// Spindle rotation commanded by M03/M04/M05.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum SpindleDir {
@@ -113,6 +128,7 @@ pub struct Modal {
     /// Tool radius compensation requested (not simulated: the programmed path is shown).
     pub radius_comp: bool,
     pub thread: ThreadState,
+    pub drill: DrillData,
     /// M02/M30 reached.
     pub ended: bool,
 }
@@ -147,6 +163,7 @@ impl Modal {
                 pending: None,
                 memory: None,
             },
+            drill: DrillData::default(),
             ended: false,
         }
     }

@@ -127,6 +127,8 @@ pub enum StopReason {
     ProgramStop,
     /// M01 with the optional-stop switch on.
     OptionalStop,
+    /// G88: the operator retracts the tool by hand, then presses cycle start.
+    ManualRetract,
 }
 
 impl StopReason {
@@ -134,6 +136,7 @@ impl StopReason {
         match self {
             StopReason::ProgramStop => "program_stop",
             StopReason::OptionalStop => "optional_stop",
+            StopReason::ManualRetract => "manual_retract",
         }
     }
 }
@@ -166,7 +169,8 @@ pub enum Op {
     Dwell { seconds: f64 },
     /// Spindle state changed. `rpm` is signed: negative = the spindle's negative direction;
     /// 0 = stopped. `surface_m_min` is the G96 surface speed when constant surface speed is on.
-    Spindle { rpm: f64, surface_m_min: Option<f64>, position_mode: bool },
+    /// `oriented`: an oriented spindle stop (G76, G87).
+    Spindle { rpm: f64, surface_m_min: Option<f64>, position_mode: bool, oriented: bool },
     /// Tool selected (lathe T word) or changed (M06). `offset` is the lathe offset number.
     Tool { number: u32, offset: Option<u32> },
     Stop { reason: StopReason },

@@ -83,6 +83,10 @@ impl Format for Canon {
                 writeln!(w, "STOP_SPEED_FEED_SYNCH()")
             }
             Op::Dwell { seconds } => writeln!(w, "DWELL({})", fixed(*seconds, 4)),
+            Op::Spindle { oriented: true, .. } => {
+                self.rpm = None;
+                writeln!(w, "ORIENT_SPINDLE(0, 0.0000, 0)")
+            }
             Op::Spindle { rpm, .. } => {
                 if *rpm == 0.0 {
                     self.rpm = None;

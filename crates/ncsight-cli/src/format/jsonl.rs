@@ -105,8 +105,11 @@ impl Format for Jsonl {
                         thread_fields(&mut s, *lead_mm, long_axis.as_str(), *spindle_deg, *rpm);
                     }
                     Op::Dwell { seconds } => s.push_str(&format!(",\"seconds\":{}", num(*seconds, 6))),
-                    Op::Spindle { rpm, surface_m_min, position_mode } => {
+                    Op::Spindle { rpm, surface_m_min, position_mode, oriented } => {
                         s.push_str(&format!(",\"rpm\":{}", num(*rpm, 3)));
+                        if *oriented {
+                            s.push_str(",\"oriented\":true");
+                        }
                         if let Some(v) = surface_m_min {
                             s.push_str(&format!(",\"surface_m_min\":{}", num(*v, 3)));
                         }

@@ -63,8 +63,11 @@ impl Format for Text {
                 num(*rpm, 1)
             ),
             Op::Dwell { seconds } => format!("{} s", num(*seconds, 3)),
-            Op::Spindle { rpm, surface_m_min, position_mode } => {
+            Op::Spindle { rpm, surface_m_min, position_mode, oriented } => {
                 let mut s = format!("{} rpm", num(*rpm, 1));
+                if *oriented {
+                    s.push_str(" oriented stop");
+                }
                 if let Some(v) = surface_m_min {
                     s.push_str(&format!(" (G96 {} m/min)", num(*v, 1)));
                 }

@@ -1,4 +1,5 @@
 //! Cycle expansions: pure functions from a cycle's resolved data to canonical operations. No
 //! modal state and no words here; the interpreter reads the words and calls these.
 
+pub mod drill;
 pub mod thread;

@@ -2,6 +2,7 @@
 //! block), against a profile and its parameters. It turns a block into records of the canonical
 //! stream and warnings, or into one alarm that leaves the modal state untouched.
 
+mod drill;
 mod thread;
 mod words;
 
@@ -300,6 +301,8 @@ fn collect<'w>(
 struct Codes {
     non_modal: Option<(Span, GFn)>,
     motion: Option<(Span, Motion)>,
+    /// A drilling cycle code in this block.
+    drill: Option<crate::cycles::drill::DrillKind>,
 }
 
 fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), Diagnostic> {
@@ -372,8 +375,9 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
             GFn::LengthComp | GFn::WorkOffset | GFn::PathControl => {}
             GFn::ReturnInitial => st.return_initial = true,
             GFn::ReturnR => st.return_initial = false,
-            // G80 with no drilling cycle in force (the cycles come with their issue): nothing to cancel.
-            GFn::CycleCancel => {}
+            // G80: the cycle and its hole data end; F stays (seed 003 8.1.4).
+            GFn::CycleCancel => step.st.drill = Default::default(),
+            GFn::Drill(kind) => codes.drill = Some(kind),
             GFn::Dwell | GFn::ReferenceReturn | GFn::LatheCoordinateSet | GFn::MillCoordinateSet => {
                 codes.non_modal = Some((w.span, g.function))
             }
@@ -388,6 +392,8 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
             step.st.thread.k = None;
             step.st.thread.cycle_end = None;
         }
+        // A group 01 code cancels a drilling cycle as G80 does (seed 003 8.1.4).
+        step.st.drill = Default::default();
     }
     let motion_now = codes.motion.map(|(_, m)| m).unwrap_or(step.st.motion);
     let axis_letters: &[u8] = if profile.incremental_addresses { b"XYZUVW" } else { b"XYZ" };
@@ -520,6 +526,11 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
             if let Some((_, m)) = codes.motion {
                 step.st.motion = m;
             }
+            let drill_kind = codes.drill.or(step.st.drill.kind);
+            if let Some(kind) = drill_kind {
+                drill::block(step, &mut words, kind, codes.drill.is_some())?;
+                return finish_block(step, words, &codes, after, switches);
+            }
             if let Motion::Thread(cmd) = step.st.motion {
                 if has_axis {
                     thread::block(step, &mut words, cmd, codes.motion.is_some(), run_deg)?;
@@ -591,6 +602,9 @@ fn describe_command(step: &Step, codes: &Codes) -> String {
         Some((_, GFn::MillCoordinateSet)) => return "G92 (coordinate setting)".into(),
         _ => ((), step.st.motion),
     };
+    if let Some(kind) = step.st.drill.kind {
+        return format!("{} (drilling cycle; the repeat count is K)", kind.code());
+    }
     let plane = match step.st.plane {
         Plane::XY => "G17",
         Plane::ZX => "G18",
@@ -609,7 +623,7 @@ fn emit_spindle(step: &mut Step) {
     let rpm = step.rpm_here();
     let surface = if step.st.css { Some(step.st.s_word) } else { None };
     let position_mode = step.st.spindle_position_mode;
-    step.emit(Op::Spindle { rpm, surface_m_min: surface, position_mode });
+    step.emit(Op::Spindle { rpm, surface_m_min: surface, position_mode, oriented: false });
 }
 
 /// G04: P in ms (whole number), X or U in seconds; P wins over X, X over U; negative = 0

@@ -3,8 +3,8 @@
 use super::common::{self, g, m};
 use super::{QPoint, ThreadRules, GDef, GFn, Group, IntegerLengths, MDef, MFn, MachineKind, ParamDef, ParamKey, Profile, TimeKeys};
 use crate::alarm::AlarmStyle;
+use crate::cycles::drill::DrillKind;
 
-const LATER_DRILL: GFn = GFn::NotYet("drilling canned cycles are not simulated by ncsight yet");
 
 const G_CODES: &[GDef] = &[
     g(43, Group::LengthComp, GFn::LengthComp, "tool length compensation +"),
@@ -13,19 +13,19 @@ const G_CODES: &[GDef] = &[
     g(53, Group::NonModal, GFn::NotYet("positioning in machine coordinates is not simulated: ncsight has programme coordinates only"), "positioning in the machine coordinate system"),
     g(61, Group::PathMode, GFn::PathControl, "exact stop mode"),
     g(64, Group::PathMode, GFn::PathControl, "cutting mode"),
-    g(73, Group::CannedCycle, LATER_DRILL, "high-speed peck drilling"),
-    g(74, Group::CannedCycle, LATER_DRILL, "left-hand tapping"),
-    g(76, Group::CannedCycle, LATER_DRILL, "fine boring"),
+    g(73, Group::CannedCycle, GFn::Drill(DrillKind::G73), "high-speed peck drilling"),
+    g(74, Group::CannedCycle, GFn::Drill(DrillKind::G74), "left-hand tapping"),
+    g(76, Group::CannedCycle, GFn::Drill(DrillKind::G76), "fine boring"),
     g(80, Group::CannedCycle, GFn::CycleCancel, "cancel canned cycle"),
-    g(81, Group::CannedCycle, LATER_DRILL, "drilling, spot drilling"),
-    g(82, Group::CannedCycle, LATER_DRILL, "drilling with dwell"),
-    g(83, Group::CannedCycle, LATER_DRILL, "peck drilling"),
-    g(84, Group::CannedCycle, LATER_DRILL, "tapping"),
-    g(85, Group::CannedCycle, LATER_DRILL, "boring, feed out"),
-    g(86, Group::CannedCycle, LATER_DRILL, "boring, spindle stop, rapid out"),
-    g(87, Group::CannedCycle, LATER_DRILL, "back boring"),
-    g(88, Group::CannedCycle, LATER_DRILL, "boring, dwell, manual retract"),
-    g(89, Group::CannedCycle, LATER_DRILL, "boring with dwell, feed out"),
+    g(81, Group::CannedCycle, GFn::Drill(DrillKind::G81), "drilling, spot drilling"),
+    g(82, Group::CannedCycle, GFn::Drill(DrillKind::G82), "drilling with dwell"),
+    g(83, Group::CannedCycle, GFn::Drill(DrillKind::G83), "peck drilling"),
+    g(84, Group::CannedCycle, GFn::Drill(DrillKind::G84), "tapping"),
+    g(85, Group::CannedCycle, GFn::Drill(DrillKind::G85), "boring, feed out"),
+    g(86, Group::CannedCycle, GFn::Drill(DrillKind::G86), "boring, spindle stop, rapid out"),
+    g(87, Group::CannedCycle, GFn::Drill(DrillKind::G87), "back boring"),
+    g(88, Group::CannedCycle, GFn::Drill(DrillKind::G88), "boring, dwell, manual retract"),
+    g(89, Group::CannedCycle, GFn::Drill(DrillKind::G89), "boring with dwell, feed out"),
     g(90, Group::Distance, GFn::Absolute, "absolute programming"),
     g(91, Group::Distance, GFn::Incremental, "incremental programming"),
     g(92, Group::NonModal, GFn::MillCoordinateSet, "set the coordinates of the current position"),

@@ -98,6 +98,8 @@ pub enum GFn {
     ReturnR,
     /// G80 on a mill: cancel the canned cycle.
     CycleCancel,
+    /// A drilling canned cycle (FANUC 0-M group 09).
+    Drill(crate::cycles::drill::DrillKind),
     /// A thread-cutting command (group 01).
     Thread(ThreadCmd),
     /// Known to the controller, not yet simulated: an alarm that says so.

@@ -1,0 +1,300 @@
+//! Drilling canned cycles G73, G74, G76, G81-G89 (seed 003, FANUC 0-M), written once in
+//! plane-local coordinates: `a` and `b` are the plane's first and second axes (where the hole
+//! is), `h` the drilling axis normal to the plane (Z in G17, Y in G18, X in G19). The tool drills
+//! from the R level toward the bottom.
+//!
+//! Each hole: positioning in the plane at the current level, rapid to the R level, the cycle's
+//! own motion, and the return to the initial level (G98) or the R level (G99).
+
+/// The cycle of a hole.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum DrillKind {
+    /// High-speed peck: feed Q, back d (parameter 531), again (seed 003 8.1.1).
+    G73,
+    /// Left-hand tapping: the spindle reverses at the bottom (8.1.2).
+    G74,
+    /// Fine boring: oriented stop and shift Q at the bottom, rapid out (8.1.3).
+    G76,
+    /// Drilling (8.1.5).
+    G81,
+    /// Drilling with a dwell at the bottom (8.1.6).
+    G82,
+    /// Peck drilling: back to R after each peck, down again to d above the last depth (8.1.7).
+    G83,
+    /// Right-hand tapping (8.1.8).
+    G84,
+    /// Boring, feed out to R (8.1.9).
+    G85,
+    /// Boring, spindle stop at the bottom, rapid out.
+    G86,
+    /// Back boring: from the R level below the hole up to Z.
+    G87,
+    /// Boring, dwell, spindle stop, manual retract.
+    G88,
+    /// Boring with a dwell, feed out to R.
+    G89,
+}
+
+impl DrillKind {
+    pub fn code(self) -> &'static str {
+        match self {
+            DrillKind::G73 => "G73",
+            DrillKind::G74 => "G74",
+            DrillKind::G76 => "G76",
+            DrillKind::G81 => "G81",
+            DrillKind::G82 => "G82",
+            DrillKind::G83 => "G83",
+            DrillKind::G84 => "G84",
+            DrillKind::G85 => "G85",
+            DrillKind::G86 => "G86",
+            DrillKind::G87 => "G87",
+            DrillKind::G88 => "G88",
+            DrillKind::G89 => "G89",
+        }
+    }
+
+    /// The cycle needs a peck depth Q (FANUC PS0045 otherwise).
+    pub fn needs_q(self) -> bool {
+        matches!(self, DrillKind::G73 | DrillKind::G83)
+    }
+
+    /// Q is the shift at the bottom.
+    pub fn shifts(self) -> bool {
+        matches!(self, DrillKind::G76 | DrillKind::G87)
+    }
+}
+
+/// A point in plane-local coordinates: (a, b, h).
+pub type Local = [f64; 3];
+
+/// One hole, resolved.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Hole {
+    pub kind: DrillKind,
+    /// Where the tool stands before the hole.
+    pub from: Local,
+    /// The hole's position in the plane.
+    pub at: [f64; 2],
+    /// Initial level, R level and bottom along the drilling axis.
+    pub initial: f64,
+    pub r: f64,
+    pub bottom: f64,
+    /// G98: return to the initial level; G99: to the R level. G87 always returns to the initial
+    /// level.
+    pub return_initial: bool,
+    /// Peck depth (G73/G83) or shift (G76/G87), positive.
+    pub q: f64,
+    /// Dwell at the bottom, seconds (P).
+    pub dwell_s: f64,
+    /// G73 retract / G83 clearance d (parameters 531/532), mm.
+    pub d: f64,
+    /// Unit direction of the G76/G87 shift in the plane (parameter 2 bits 4 and 5).
+    pub shift_dir: [f64; 2],
+    /// Cutting feed, mm/min.
+    pub feed: f64,
+    /// Spindle speed in force, signed (positive: M03).
+    pub rpm: f64,
+}
+
+/// One step of a hole, in plane-local coordinates.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Step {
+    Rapid(Local),
+    Feed(Local, f64),
+    Dwell(f64),
+    /// The spindle turns at this signed speed (0: stopped).
+    Spindle(f64),
+    /// Oriented spindle stop (G76, G87).
+    Orient,
+    /// G88: the machine stops for the operator to retract by hand; cycle start goes on.
+    ManualRetract,
+}
+
+/// The steps of one hole.
+pub fn expand(h: &Hole) -> Vec<Step> {
+    let mut s = Vec::with_capacity(12);
+    let [a, b] = h.at;
+    let p = |lvl: f64| [a, b, lvl];
+    let ret = if h.return_initial || h.kind == DrillKind::G87 { h.initial } else { h.r };
+    // Positioning in the plane at the current level.
+    if h.from[0] != a || h.from[1] != b {
+        s.push(Step::Rapid([a, b, h.from[2]]));
+    }
+    let level = h.from[2];
+    let shifted = |lvl: f64| [a + h.q * h.shift_dir[0], b + h.q * h.shift_dir[1], lvl];
+    if h.kind == DrillKind::G87 {
+        // Back boring: orient and shift, rapid down to R (below the hole), shift back, start the
+        // spindle, feed up to Z, orient, shift, rapid up to the initial level, shift back, start.
+        s.push(Step::Orient);
+        s.push(Step::Rapid(shifted(level)));
+        s.push(Step::Rapid(shifted(h.r)));
+        s.push(Step::Rapid(p(h.r)));
+        s.push(Step::Spindle(h.rpm));
+        s.push(Step::Feed(p(h.bottom), h.feed));
+        if h.dwell_s > 0.0 {
+            s.push(Step::Dwell(h.dwell_s));
+        }
+        s.push(Step::Orient);
+        s.push(Step::Rapid(shifted(h.bottom)));
+        s.push(Step::Rapid(shifted(h.initial)));
+        s.push(Step::Rapid(p(h.initial)));
+        s.push(Step::Spindle(h.rpm));
+        return s;
+    }
+    if level != h.r {
+        s.push(Step::Rapid(p(h.r)));
+    }
+    let down = if h.bottom < h.r { -1.0 } else { 1.0 };
+    match h.kind {
+        DrillKind::G73 | DrillKind::G83 => {
+            let mut depth = h.r;
+            loop {
+                let next = if (h.bottom - depth).abs() <= h.q { h.bottom } else { depth + down * h.q };
+                s.push(Step::Feed(p(next), h.feed));
+                if next == h.bottom {
+                    break;
+                }
+                if h.kind == DrillKind::G73 {
+                    s.push(Step::Rapid(p(next - down * h.d)));
+                } else {
+                    s.push(Step::Rapid(p(h.r)));
+                    s.push(Step::Rapid(p(next - down * h.d)));
+                }
+                depth = next;
+            }
+        }
+        _ => s.push(Step::Feed(p(h.bottom), h.feed)),
+    }
+    let dwell = |s: &mut Vec<Step>| {
+        if h.dwell_s > 0.0 {
+            s.push(Step::Dwell(h.dwell_s));
+        }
+    };
+    match h.kind {
+        DrillKind::G73 | DrillKind::G81 | DrillKind::G83 => s.push(Step::Rapid(p(ret))),
+        DrillKind::G82 => {
+            dwell(&mut s);
+            s.push(Step::Rapid(p(ret)));
+        }
+        DrillKind::G85 | DrillKind::G89 => {
+            if h.kind == DrillKind::G89 {
+                dwell(&mut s);
+            }
+            s.push(Step::Feed(p(h.r), h.feed));
+            if ret != h.r {
+                s.push(Step::Rapid(p(ret)));
+            }
+        }
+        DrillKind::G74 | DrillKind::G84 => {
+            // Tapping: reverse at the bottom, feed out to R, turn forward again.
+            dwell(&mut s);
+            s.push(Step::Spindle(-h.rpm));
+            s.push(Step::Feed(p(h.r), h.feed));
+            s.push(Step::Spindle(h.rpm));
+            if ret != h.r {
+                s.push(Step::Rapid(p(ret)));
+            }
+        }
+        DrillKind::G86 => {
+            s.push(Step::Spindle(0.0));
+            s.push(Step::Rapid(p(ret)));
+            s.push(Step::Spindle(h.rpm));
+        }
+        DrillKind::G76 => {
+            dwell(&mut s);
+            s.push(Step::Orient);
+            s.push(Step::Rapid(shifted(h.bottom)));
+            s.push(Step::Rapid(shifted(ret)));
+            s.push(Step::Rapid(p(ret)));
+            s.push(Step::Spindle(h.rpm));
+        }
+        DrillKind::G88 => {
+            dwell(&mut s);
+            s.push(Step::Spindle(0.0));
+            s.push(Step::ManualRetract);
+            s.push(Step::Rapid(p(ret)));
+            s.push(Step::Spindle(h.rpm));
+        }
+        DrillKind::G87 => unreachable!("handled above"),
+    }
+    s
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn hole(kind: DrillKind) -> Hole {
+        Hole {
+            kind,
+            from: [0.0, 0.0, 10.0],
+            at: [1.0, 1.0],
+            initial: 10.0,
+            r: 2.0,
+            bottom: -3.0,
+            return_initial: true,
+            q: 1.0,
+            dwell_s: 0.5,
+            d: 0.254,
+            shift_dir: [1.0, 0.0],
+            feed: 100.0,
+            rpm: 1000.0,
+        }
+    }
+
+    fn levels(s: &[Step]) -> Vec<f64> {
+        s.iter()
+            .filter_map(|x| match x {
+                Step::Rapid(p) | Step::Feed(p, _) => Some((p[2] * 1000.0).round() / 1000.0),
+                _ => None,
+            })
+            .collect()
+    }
+
+    #[test]
+    fn g73_pecks_back_by_d() {
+        // Same steps as LinuxCNC's rs274 prints for G73 with Q1 from R2 to Z-3.
+        let s = expand(&hole(DrillKind::G73));
+        assert_eq!(levels(&s), vec![10.0, 2.0, 1.0, 1.254, 0.0, 0.254, -1.0, -0.746, -2.0, -1.746, -3.0, 10.0]);
+    }
+
+    #[test]
+    fn g83_returns_to_r_after_each_peck() {
+        let s = expand(&hole(DrillKind::G83));
+        assert_eq!(
+            levels(&s),
+            vec![10.0, 2.0, 1.0, 2.0, 1.254, 0.0, 2.0, 0.254, -1.0, 2.0, -0.746, -2.0, 2.0, -1.746, -3.0, 10.0]
+        );
+    }
+
+    #[test]
+    fn g99_returns_to_r_and_g87_to_the_initial_level() {
+        let mut h = hole(DrillKind::G81);
+        h.return_initial = false;
+        assert_eq!(levels(&expand(&h)).last(), Some(&2.0));
+        let mut h = hole(DrillKind::G87);
+        h.return_initial = false;
+        h.r = -3.0;
+        h.bottom = 2.0;
+        let s = expand(&h);
+        assert_eq!(levels(&s).last(), Some(&10.0));
+        assert_eq!(s.iter().filter(|x| matches!(x, Step::Orient)).count(), 2);
+    }
+
+    #[test]
+    fn tapping_reverses_at_the_bottom() {
+        let s = expand(&hole(DrillKind::G84));
+        let spindle: Vec<f64> = s.iter().filter_map(|x| if let Step::Spindle(r) = x { Some(*r) } else { None }).collect();
+        assert_eq!(spindle, vec![-1000.0, 1000.0]);
+        let s = expand(&hole(DrillKind::G74));
+        assert!(s.iter().any(|x| matches!(x, Step::Feed(p, _) if p[2] == 2.0)));
+    }
+
+    #[test]
+    fn g76_shifts_away_from_the_wall() {
+        let s = expand(&hole(DrillKind::G76));
+        assert!(s.contains(&Step::Rapid([2.0, 1.0, -3.0])));
+        assert!(s.contains(&Step::Rapid([2.0, 1.0, 10.0])));
+        assert!(s.contains(&Step::Rapid([1.0, 1.0, 10.0])));
+    }
+}

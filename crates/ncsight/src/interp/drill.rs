@@ -1,0 +1,195 @@
+//! Drilling canned cycles on the FANUC 0-M (seed 003): the hole data that stays modal, K
+//! repeats, G98/G99, and the mapping of the plane-local steps of `cycles::drill` onto X, Y, Z.
+
+use super::words::Words;
+use super::Step;
+use crate::alarm::{Diagnostic, Rule};
+use crate::cycles::drill::{self, DrillKind, Hole};
+use crate::modal::SpindleDir;
+use crate::motion::{Op, StopReason, Vec3};
+use crate::profile::ParamKey;
+
+/// Most repeats K (seed 003: "K 的最大取值为9999").
+pub const MAX_REPEATS: f64 = 9999.0;
+
+fn letter(axis: usize) -> u8 {
+    [b'X', b'Y', b'Z'][axis]
+}
+
+fn to_global(plane: crate::motion::Plane, l: drill::Local, y_keep: &Vec3) -> Vec3 {
+    let (a, b, n) = plane.axes();
+    let mut p = *y_keep;
+    p.set_axis(a, l[0]);
+    p.set_axis(b, l[1]);
+    p.set_axis(n, l[2]);
+    p
+}
+
+/// Take the hole words (R, Q, P, the drilling-axis word) into the modal data.
+fn take_hole_words(step: &mut Step, words: &mut Words) -> Result<(), Diagnostic> {
+    let (_, _, n) = step.st.plane.axes();
+    let inc = step.st.incremental;
+    if let Some(w) = words.take(letter(n)) {
+        let v = step.length(&w)?;
+        step.st.drill.bottom = Some((v, inc));
+    }
+    if let Some(w) = words.take(b'R') {
+        let v = step.length(&w)?;
+        step.st.drill.r = Some((v, inc));
+    }
+    if let Some(w) = words.take(b'Q') {
+        // Peck depth or shift; "Q is always positive" (seed 003 8.1.3, 8.1.7).
+        let v = step.length(&w)?.abs();
+        step.st.drill.q = Some(v);
+    }
+    if let Some(w) = words.take(b'P') {
+        if w.decimal {
+            return Err(step.alarm(Rule::IllegalDecimalPoint, w.span, format!("{}: the dwell P is a whole number of ms", w.text())));
+        }
+        step.st.drill.dwell_s = Some(w.value.max(0.0) / 1000.0);
+    }
+    Ok(())
+}
+
+/// A block while a drilling cycle is in force. `entering`: the block names a cycle code.
+pub(super) fn block(step: &mut Step, words: &mut Words, kind: DrillKind, entering: bool) -> Result<(), Diagnostic> {
+    let plane = step.st.plane;
+    let (a, b, n) = plane.axes();
+    if entering && step.st.drill.kind.is_none() {
+        // The initial level is where the tool stands when the cycle mode is entered (BEHAVIOUR.md).
+        step.st.drill.initial = step.st.pos.axis(n);
+    }
+    step.st.drill.kind = Some(kind);
+    let drills = words.has(letter(a)) || words.has(letter(b)) || words.has(letter(n)) || words.has(b'R');
+    take_hole_words(step, words)?;
+    let repeats = match words.take(b'K') {
+        Some(w) => {
+            if w.decimal || w.value < 0.0 || w.value > MAX_REPEATS {
+                return Err(step.alarm(
+                    Rule::ValueOutOfRange,
+                    w.span,
+                    format!("{}: the repeat count K is a whole number 0 to 9999 (seed 003)", w.text()),
+                ));
+            }
+            w.value as u32
+        }
+        None => 1,
+    };
+    // Positioning words in the plane.
+    let mut delta = [0.0; 2];
+    let mut target = [step.st.pos.axis(a), step.st.pos.axis(b)];
+    for (i, axis) in [a, b].into_iter().enumerate() {
+        if let Some(w) = words.take(letter(axis)) {
+            let v = step.length(&w)?;
+            if step.st.incremental {
+                delta[i] = v;
+                target[i] += v;
+            } else {
+                target[i] = v;
+            }
+        }
+    }
+    if !drills || repeats == 0 {
+        // K0: the data is stored, nothing moves (seed 003; params_alarms.md: no positioning).
+        return Ok(());
+    }
+    let code = kind.code();
+    let d = step.st.drill;
+    let (Some((r_word, r_inc)), Some((z_word, z_inc))) = (d.r, d.bottom) else {
+        let missing = if d.r.is_none() { "R" } else { "the hole bottom" };
+        return Err(step.alarm(
+            Rule::MissingWord,
+            step.span,
+            format!("{code} needs {missing}: Z and R must be given when a cycle starts, also after G80 or a group 01 code (seed 003)"),
+        ));
+    };
+    if kind.needs_q() && d.q.unwrap_or(0.0) <= 0.0 {
+        return Err(step.alarm(Rule::PeckMissing, step.span, format!("{code} needs the peck depth Q greater than 0")));
+    }
+    let initial = d.initial;
+    let r = if r_inc { initial + r_word } else { r_word };
+    let bottom = if z_inc { r + z_word } else { z_word };
+    let wrong = if kind == DrillKind::G87 { bottom <= r } else { bottom >= r };
+    if wrong {
+        let what = if kind == DrillKind::G87 {
+            "G87 backs up from the R level below the hole: R must be below Z"
+        } else {
+            "the R level must be above the hole bottom Z"
+        };
+        return Err(step.alarm(
+            Rule::DrillLevels,
+            step.span,
+            format!("{code}: R {r:.3} and bottom {bottom:.3}: {what}"),
+        ));
+    }
+    if kind == DrillKind::G87 && !step.st.return_initial {
+        step.warn(Rule::ReturnLevel, step.span, "G87 returns to the initial level even under G99 (the R level is below the part)");
+    }
+    let rpm = step.rpm_here();
+    if matches!(kind, DrillKind::G74 | DrillKind::G84) {
+        let (want, name) = if kind == DrillKind::G84 { (SpindleDir::Positive, "M03") } else { (SpindleDir::Negative, "M04") };
+        if step.st.spindle != want {
+            let msg = format!("{code} taps with the spindle turning {name}-wise; it is not (seed 003: program {name} before the cycle)");
+            step.warn(Rule::TapDirection, step.span, msg);
+        }
+    }
+    let d_mm = match kind {
+        DrillKind::G73 => step.params.get(ParamKey::Number(531, None)) * 0.001,
+        DrillKind::G83 => step.params.get(ParamKey::Number(532, None)) * 0.001,
+        _ => 0.0,
+    };
+    // Parameter 2 bits 5 and 4: 00 +X, 01 -X, 10 +Y, 11 -Y (BEHAVIOUR.md); X is the plane's
+    // first axis and Y its second (exact in G17).
+    let b4 = step.params.get(ParamKey::Number(2, Some(4))) != 0.0;
+    let b5 = step.params.get(ParamKey::Number(2, Some(5))) != 0.0;
+    let sign = if b4 { -1.0 } else { 1.0 };
+    let shift_dir = if b5 { [0.0, sign] } else { [sign, 0.0] };
+    for k in 0..repeats {
+        if k > 0 && step.st.incremental {
+            // Under G91 each repeat moves by the increment again: equally spaced holes.
+            target[0] += delta[0];
+            target[1] += delta[1];
+        }
+        let from_g = step.st.pos;
+        let from = [from_g.axis(a), from_g.axis(b), from_g.axis(n)];
+        let at = target;
+        let feed = step.cutting_feed(code, &|u| {
+            let lvl = r + (bottom - r) * u;
+            to_global(plane, [at[0], at[1], lvl], &from_g)
+        })?;
+        let hole = Hole {
+            kind,
+            from,
+            at,
+            initial,
+            r,
+            bottom,
+            return_initial: step.st.return_initial,
+            q: d.q.unwrap_or(0.0),
+            dwell_s: d.dwell_s.unwrap_or(0.0),
+            d: d_mm,
+            shift_dir,
+            feed,
+            rpm,
+        };
+        let position_mode = step.st.spindle_position_mode;
+        for s in drill::expand(&hole) {
+            let here = step.st.pos;
+            let op = match s {
+                drill::Step::Rapid(l) => Op::Rapid { from: here, to: to_global(plane, l, &here) },
+                drill::Step::Feed(l, f) => Op::Feed { from: here, to: to_global(plane, l, &here), feed_mm_min: f },
+                drill::Step::Dwell(s) => Op::Dwell { seconds: s },
+                drill::Step::Spindle(rpm) => Op::Spindle { rpm, surface_m_min: None, position_mode, oriented: false },
+                drill::Step::Orient => Op::Spindle { rpm: 0.0, surface_m_min: None, position_mode, oriented: true },
+                drill::Step::ManualRetract => Op::Stop { reason: StopReason::ManualRetract },
+            };
+            if let Op::Rapid { from, to } | Op::Feed { from, to, .. } = op {
+                if from == to {
+                    continue;
+                }
+            }
+            step.emit(op);
+        }
+    }
+    Ok(())
+}

@@ -1,0 +1,117 @@
+//! Drilling canned cycles (seed 003, FANUC 0-M), rule by rule.
+
+use ncsight::motion::{Op, StopReason};
+use ncsight::profile::{self, Params};
+use ncsight::{run_text, Diagnostic, Event, Mode, Record, Switches};
+
+fn run(params: &[&str], text: &str) -> (Vec<Record>, Vec<Diagnostic>) {
+    let mut p = Params::defaults(profile::by_name("fanuc0m").unwrap());
+    for a in params {
+        p.set_text(a).unwrap();
+    }
+    let mut records = Vec::new();
+    let mut diags = Vec::new();
+    for e in run_text(p, Switches::default(), Mode::Run, text.as_bytes()) {
+        match e {
+            Event::Record(r) => records.push(r),
+            Event::Diagnostic(d) => diags.push(d),
+        }
+    }
+    assert!(diags.iter().all(|d| !d.is_alarm()), "{diags:?}");
+    (records, diags)
+}
+
+/// Bottoms reached: (x, y) of each feed that ends at the given level.
+fn holes(records: &[Record], bottom: f64) -> Vec<(f64, f64)> {
+    records
+        .iter()
+        .filter_map(|r| match r.op {
+            Op::Feed { to, .. } if (to.z - bottom).abs() < 1e-9 => Some((to.x, to.y)),
+            _ => None,
+        })
+        .collect()
+}
+
+const START: &str = "G21 G17 G90 G0 X0. Y0. Z50.\nS1000 M3\n";
+
+#[test]
+fn k_repeats_under_g91_are_equally_spaced_and_k0_stores_only() {
+    // Seed 003: "G91 G81 X Y Z R F K5": the first hole at X Y from the tool, then equally spaced.
+    let (r, _) = run(&[], &format!("{START}G91 G99 G81 X10. Y5. Z-10. R-48. F100. K5\nM30\n"));
+    assert_eq!(holes(&r, -8.0), vec![(10.0, 5.0), (20.0, 10.0), (30.0, 15.0), (40.0, 20.0), (50.0, 25.0)]);
+    // K0: the data is stored, nothing moves, not even the positioning (params_alarms.md); the
+    // next block drills with the data.
+    let (r, _) = run(&[], &format!("{START}G81 X10. Y10. Z-5. R2. F100. K0\nX20.\nM30\n"));
+    assert_eq!(holes(&r, -5.0), vec![(20.0, 0.0)]);
+    assert!(!r.iter().any(|r| matches!(r.op, Op::Rapid { to, .. } if to.x == 10.0)));
+}
+
+#[test]
+fn g98_returns_to_the_initial_level_g99_to_r() {
+    let (r, _) = run(&[], &format!("{START}G99 G81 X10. Y10. Z-5. R2. F100.\nX20.\nG98 X30.\nM30\n"));
+    let tops: Vec<f64> = r
+        .iter()
+        .filter_map(|r| match r.op {
+            Op::Rapid { from, to } if to.z > from.z => Some(to.z),
+            _ => None,
+        })
+        .collect();
+    // The first is the approach G0 Z50.
+    assert_eq!(tops, vec![50.0, 2.0, 2.0, 50.0]);
+}
+
+#[test]
+fn incremental_r_is_from_the_initial_level_and_z_from_r() {
+    // BEHAVIOUR.md: under G91, R from the initial level, Z from the R point.
+    let (r, _) = run(&[], &format!("{START}G91 G81 X0. Y0. R-40. Z-15. F100.\nM30\n"));
+    assert_eq!(holes(&r, -5.0).len(), 1);
+}
+
+#[test]
+fn g80_and_group_01_clear_the_hole_data_but_not_f() {
+    let (r, _) = run(&[], &format!("{START}G81 X10. Y10. Z-5. R2. F100.\nG80\nG85 X20. Y20. Z-6. R1.\nG01 X30.\nM30\n"));
+    // The G85 hole feeds at the F kept through G80; G01 cancels G85 and feeds at F100 too.
+    let feeds: Vec<f64> = r.iter().filter_map(|r| if let Op::Feed { feed_mm_min, .. } = r.op { Some(feed_mm_min) } else { None }).collect();
+    assert!(feeds.iter().all(|f| *f == 100.0));
+    let last = r.iter().rev().find(|r| matches!(r.op, Op::Feed { .. })).unwrap();
+    assert!(matches!(last.op, Op::Feed { to, .. } if to.x == 30.0 && to.z == 50.0));
+}
+
+#[test]
+fn tapping_with_the_wrong_spindle_direction_is_a_warning() {
+    let (_, d) = run(&[], &format!("{START}G84 X10. Y10. Z-5. R2. F1000.\nG80\nG74 X20. Z-5. R2.\nM30\n"));
+    let w: Vec<_> = d.iter().filter(|d| d.code == "NCS-W18").collect();
+    assert_eq!(w.len(), 1, "G74 under M03 warns, G84 under M03 does not: {d:?}");
+}
+
+#[test]
+fn g87_under_g99_returns_to_the_initial_level_with_a_warning() {
+    let (r, d) = run(&[], &format!("{START}G99 G87 X10. Y10. R-20. Z-5. Q2. F100.\nM30\n"));
+    assert!(d.iter().any(|d| d.code == "NCS-W19"));
+    let last_rapid = r.iter().rev().find_map(|r| if let Op::Rapid { to, .. } = r.op { Some(to) } else { None }).unwrap();
+    assert_eq!(last_rapid.z, 50.0);
+}
+
+#[test]
+fn g88_stops_for_the_manual_retract() {
+    let (r, _) = run(&[], &format!("{START}G88 X10. Y10. Z-5. R2. P500 F100.\nM30\n"));
+    assert!(r.iter().any(|r| matches!(r.op, Op::Stop { reason: StopReason::ManualRetract })));
+}
+
+#[test]
+fn g76_shift_follows_parameter_2_bits_4_and_5() {
+    // (bit 5, bit 4) = 10: +Y.
+    let (r, _) = run(&["2.5=1"], &format!("{START}G76 X10. Y10. Z-5. R2. Q1.5 F100.\nM30\n"));
+    assert!(r.iter().any(|r| matches!(r.op, Op::Rapid { to, .. } if to.x == 10.0 && to.y == 11.5 && to.z == -5.0)));
+    // 11: -Y.
+    let (r, _) = run(&["2.5=1", "2.4=1"], &format!("{START}G76 X10. Y10. Z-5. R2. Q1.5 F100.\nM30\n"));
+    assert!(r.iter().any(|r| matches!(r.op, Op::Rapid { to, .. } if to.y == 8.5 && to.z == -5.0)));
+}
+
+#[test]
+fn hole_data_in_least_increments_without_a_point() {
+    // FANUC: Z-5000 R2000 Q1000 are 5 mm, 2 mm, 1 mm (warned).
+    let (r, d) = run(&["531=100"], &format!("{START}G73 X10. Y10. Z-5000 R2000 Q1000 F100.\nM30\n"));
+    assert_eq!(holes(&r, -5.0).len(), 1);
+    assert!(d.iter().filter(|d| d.code == "NCS-W02").count() >= 3);
+}
