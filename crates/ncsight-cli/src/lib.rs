@@ -39,6 +39,52 @@ struct MachineArgs {
     optional_stop: bool,
 }
 
+/// The operator's buttons and switches during `run`.
+#[derive(clap::Args, Debug)]
+struct OperatorArgs {
+    /// Single-block mode: a `stop` record after each block (whole cycles, holes, thread runs).
+    #[arg(long)]
+    single_block: bool,
+    /// Press FEED HOLD at this time (seconds from programme start); CYCLE START follows when the
+    /// machine has stopped. May be given several times.
+    #[arg(long, value_name = "SECONDS")]
+    feed_hold_at: Vec<f64>,
+    /// Press RESET at this time (seconds from programme start).
+    #[arg(long, value_name = "SECONDS")]
+    reset_at: Option<f64>,
+    /// Dry run: feeds and threads at the dry-run rate.
+    #[arg(long)]
+    dry_run: bool,
+    /// Feed override, percent (1-200); threads and tapping ignore it.
+    #[arg(long, value_name = "PCT", default_value_t = 100.0)]
+    feed_override: f64,
+    /// Rapid override, percent (1-100).
+    #[arg(long, value_name = "PCT", default_value_t = 100.0)]
+    rapid_override: f64,
+}
+
+impl OperatorArgs {
+    fn options(&self) -> Result<ncsight::Options, Failure> {
+        if !(self.feed_override > 0.0 && self.feed_override <= 200.0) {
+            return Err(usage(format!("--feed-override {}: give 1 to 200 percent", self.feed_override)));
+        }
+        if !(self.rapid_override > 0.0 && self.rapid_override <= 100.0) {
+            return Err(usage(format!("--rapid-override {}: give 1 to 100 percent", self.rapid_override)));
+        }
+        for t in self.feed_hold_at.iter().chain(self.reset_at.iter()) {
+            if !(t.is_finite() && *t >= 0.0) {
+                return Err(usage(format!("{t}: a button time is a number of seconds, 0 or more")));
+            }
+        }
+        Ok(ncsight::Options {
+            single_block: self.single_block,
+            feed_hold_at: self.feed_hold_at.clone(),
+            reset_at: self.reset_at,
+            overrides: ncsight::time::Overrides { feed_pct: self.feed_override, rapid_pct: self.rapid_override, dry_run: self.dry_run },
+        })
+    }
+}
+
 #[derive(Subcommand, Debug)]
 enum Command {
     /// Interpret the programme as the controller would and print every motion.
@@ -53,6 +99,8 @@ enum Command {
         /// Write the output to this file instead of standard output.
         #[arg(short = 'o', long = "output")]
         output: Option<String>,
+        #[command(flatten)]
+        operator: OperatorArgs,
     },
     /// Report every alarm and warning with file:line:column; run nothing.
     Check {
@@ -98,7 +146,7 @@ pub fn main_with(args: impl IntoIterator<Item = std::ffi::OsString>, out: &mut d
         }
     };
     let result = match cli.command {
-        Command::Run { file, machine, format, output } => run(&file, &machine, &format, output.as_deref(), out, err),
+        Command::Run { file, machine, format, output, operator } => run(&file, &machine, &operator, &format, output.as_deref(), out, err),
         Command::Check { files, machine } => check(&files, &machine, out, err),
         Command::Machines { machine } => machines(machine.as_deref(), out),
         Command::Report { .. } => Err(usage("`ncsight report` is not built yet: the HTML report comes with its own issue")),
@@ -210,8 +258,17 @@ fn drive(
     Ok(())
 }
 
-fn run(file: &str, m: &MachineArgs, format: &str, output: Option<&str>, out: &mut dyn Write, err: &mut dyn Write) -> Result<i32, Failure> {
+fn run(
+    file: &str,
+    m: &MachineArgs,
+    operator: &OperatorArgs,
+    format: &str,
+    output: Option<&str>,
+    out: &mut dyn Write,
+    err: &mut dyn Write,
+) -> Result<i32, Failure> {
     let (params, switches) = setup(m, err)?;
+    let operator = operator.options()?;
     let profile = params.profile();
     let mut fmt = format::by_name(format, profile).ok_or_else(|| usage(format!("unknown format '{format}': choose text, jsonl or canon")))?;
     let mut input = open(file)?;
@@ -227,7 +284,7 @@ fn run(file: &str, m: &MachineArgs, format: &str, output: Option<&str>, out: &mu
             &mut stdout_buf
         }
     };
-    let mut program = Program::new(params, switches, Mode::Run);
+    let mut program = Program::with_operator(params, switches, Mode::Run, operator);
     let carries = fmt.carries_diagnostics();
     let shown = if file == "-" { "<stdin>" } else { file };
     drive(&mut *input, &mut program, &mut |e, text| {
@@ -280,7 +337,7 @@ fn machines(name: Option<&str>, out: &mut dyn Write) -> Result<i32, Failure> {
             writeln!(out, "{} - {}\n", p.name, p.title)?;
             writeln!(out, "{}\n", p.summary)?;
             writeln!(out, "{:<14} {:>10} {:<11} {:<16} meaning [source]", "parameter", "default", "unit", "range")?;
-            for d in p.params {
+            for d in p.all_params() {
                 writeln!(
                     out,
                     "{:<14} {:>10} {:<11} {:<16} {} [{}]",

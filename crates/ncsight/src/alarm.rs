@@ -105,6 +105,7 @@ rules! {
     InfeedGrows => Warning, "NCS-W17", None, "INFEED LARGER THAN THE PREVIOUS ONE";
     TapDirection => Warning, "NCS-W18", None, "TAPPING WITH THE SPINDLE TURNING THE WRONG WAY";
     ReturnLevel => Warning, "NCS-W19", None, "RETURN LEVEL DIFFERS FROM G98/G99";
+    NotReached => Warning, "NCS-W20", None, "OPERATOR ACTION AFTER THE PROGRAMME END";
 }
 
 impl Rule {

@@ -8,6 +8,7 @@ pub mod alarm;
 pub mod cycles;
 pub mod geom;
 pub mod interp;
+pub mod machine;
 pub mod modal;
 pub mod motion;
 pub mod profile;
@@ -18,6 +19,7 @@ pub mod time;
 
 pub use alarm::{Diagnostic, Rule, Severity};
 pub use interp::{Interpreter, Switches};
+pub use machine::{Machine, Options};
 pub use motion::{Op, Record, Vec3};
 pub use profile::{Params, Profile};
-pub use program::{run_text, Event, Mode, Program, Status};
+pub use program::{run_text, run_text_with, Event, Mode, Program, Status};

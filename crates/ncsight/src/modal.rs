@@ -71,6 +71,8 @@ pub struct ThreadState {
     pub rigid_rpm: Option<f64>,
     pub pending: Option<PendingThread>,
     pub memory: Option<PassMemory>,
+    /// Four-step cycles started so far (each start of each block), to tell them apart.
+    pub cycles: u32,
 }
 
 /// Hole data that stays from block to block while a drilling cycle is in force (seed 003): the
@@ -162,6 +164,7 @@ impl Modal {
                 rigid_rpm: None,
                 pending: None,
                 memory: None,
+                cycles: 0,
             },
             drill: DrillData::default(),
             ended: false,

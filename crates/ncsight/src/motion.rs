@@ -129,6 +129,12 @@ pub enum StopReason {
     OptionalStop,
     /// G88: the operator retracts the tool by hand, then presses cycle start.
     ManualRetract,
+    /// The operator pressed FEED HOLD; CYCLE START follows once the machine has stopped.
+    FeedHold,
+    /// Single-block mode: the machine stops at the end of a block (or a cycle, or a hole).
+    SingleBlock,
+    /// The operator pressed RESET: the axes decelerate to a stop and the programme ends.
+    Reset,
 }
 
 impl StopReason {
@@ -137,6 +143,9 @@ impl StopReason {
             StopReason::ProgramStop => "program_stop",
             StopReason::OptionalStop => "optional_stop",
             StopReason::ManualRetract => "manual_retract",
+            StopReason::FeedHold => "feed_hold",
+            StopReason::SingleBlock => "single_block",
+            StopReason::Reset => "reset",
         }
     }
 }
@@ -225,12 +234,72 @@ impl Op {
     }
 }
 
+/// What FEED HOLD does while a record runs, decided by the interpreter from the manuals and
+/// carried out by the operator machine (`machine.rs`).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Hold {
+    /// The axes decelerate to a stop where they are.
+    Stop,
+    /// The record runs to its end first (G04: TDi help G04 note 5).
+    AfterRecord,
+    /// Ignored until the synchronised run or the tapping cycle this record belongs to is done
+    /// (seed 001 G32.1 note 6, G92.1 note 7; seed 003 8.1.2; TDi help G32 note 3).
+    AfterRun,
+    /// A thread of a G92 cycle: the controller's own thread hold.
+    ThreadCycle(ThreadHold),
+}
+
+/// The G92 thread hold of a profile (seed 000 note 1, seed 004 "thread cutting hold").
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ThreadHold {
+    pub style: ThreadHoldStyle,
+    /// The cycle's start point A.
+    pub start: Vec3,
+    /// Pull-out used when the hold pulls out at once: along the long axis (mm), along the short
+    /// axis (mm, toward A).
+    pub pull_long_mm: f64,
+    pub pull_short_mm: f64,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ThreadHoldStyle {
+    /// GSK980TDi NO.0018 bit 6 = 0: pull out at once, short axis back to A, then the long axis.
+    PullOutAndReturn,
+    /// GSK980TDi NO.0018 bit 6 = 1: finish the thread with its pull-out, then stop.
+    FinishThenStop,
+    /// YASNAC #6019 D7 = 0: thread up at once, return to A.
+    ThreadUpAndReturn,
+    /// YASNAC #6019 D7 = 1: thread up at once and stop there (B).
+    ThreadUpAndStop,
+}
+
 /// One record of the stream.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Record {
     /// The block that produced it.
     pub span: Span,
-    /// Seconds from programme start at the end of this record (time model).
+    /// Seconds from programme start at the end of this record (the operator machine's time
+    /// model; 0 until it has run).
     pub t_s: f64,
     pub op: Op,
+    /// Single block may stop after this record (end of a block, of a whole cycle, of a hole).
+    pub block_end: bool,
+    pub hold: Hold,
+    /// The four-step thread cycle instance the record belongs to (for the thread hold's restart).
+    pub cycle: Option<u32>,
+    /// The feed override does not apply (threads always; tapping: seed 003 8.1.2).
+    pub override_free: bool,
+}
+
+impl Record {
+    /// A record with the default operator rules of its kind.
+    pub fn new(span: Span, op: Op) -> Record {
+        let hold = match op {
+            Op::Dwell { .. } => Hold::AfterRecord,
+            Op::Thread { .. } | Op::ThreadArc { .. } => Hold::AfterRun,
+            _ => Hold::Stop,
+        };
+        let override_free = op.is_thread();
+        Record { span, t_s: 0.0, op, block_end: false, hold, cycle: None, override_free }
+    }
 }

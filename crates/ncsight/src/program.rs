@@ -9,6 +9,7 @@
 
 use crate::alarm::{Diagnostic, Rule};
 use crate::interp::{Interpreter, Switches};
+use crate::machine::{Machine, Options};
 use crate::motion::Record;
 use crate::profile::Params;
 use crate::read::Reader;
@@ -41,6 +42,7 @@ pub enum Status {
 pub struct Program {
     reader: Reader,
     interp: Interpreter,
+    machine: Machine,
     mode: Mode,
     line_no: u32,
     status: Status,
@@ -49,13 +51,21 @@ pub struct Program {
     alarms: usize,
     /// Span of the last block read (for the end-of-input warning).
     last_span: Span,
+    /// Events of the line being read, reused.
+    buffer: Vec<Event>,
 }
 
 impl Program {
     pub fn new(params: Params, switches: Switches, mode: Mode) -> Program {
+        Program::with_operator(params, switches, mode, Options::default())
+    }
+
+    /// A run with the operator's actions (single block, feed hold, reset, dry run, overrides).
+    pub fn with_operator(params: Params, switches: Switches, mode: Mode, operator: Options) -> Program {
         let style = params.profile().alarm_style;
         Program {
             reader: Reader::new(style),
+            machine: Machine::new(&params, operator),
             interp: Interpreter::new(params, switches),
             mode,
             line_no: 0,
@@ -64,6 +74,7 @@ impl Program {
             warned_after_end: false,
             alarms: 0,
             last_span: Span::new(1, 1, 1),
+            buffer: Vec::new(),
         }
     }
 
@@ -82,7 +93,12 @@ impl Program {
 
     /// Whether more lines can change anything.
     pub fn wants_more(&self) -> bool {
-        !self.eof && (self.mode == Mode::Check || self.status == Status::Running)
+        !self.eof && !self.machine.is_reset() && (self.mode == Mode::Check || self.status == Status::Running)
+    }
+
+    /// Seconds from programme start so far (the cycle time once the input has ended).
+    pub fn time_s(&self) -> f64 {
+        self.machine.time_s()
     }
 
     /// Feed the next line (with or without its line break).
@@ -91,6 +107,16 @@ impl Program {
         if !self.wants_more() {
             return;
         }
+        let mut events = std::mem::take(&mut self.buffer);
+        self.interpret_line(raw, &mut |e| events.push(e));
+        for e in events.drain(..) {
+            self.machine.push(e, sink);
+        }
+        self.buffer = events;
+    }
+
+    /// Read and interpret one line; the events are untimed.
+    fn interpret_line(&mut self, raw: &[u8], sink: &mut dyn FnMut(Event)) {
         let line = self.reader.read_line(self.line_no, raw);
         for w in line.warnings {
             sink(Event::Diagnostic(w));
@@ -170,24 +196,34 @@ impl Program {
 
     /// The input has ended. Without M02/M30 the controller would wait at the last block; say so.
     pub fn finish(&mut self, sink: &mut dyn FnMut(Event)) {
-        if self.status != Status::Alarm {
-            self.flush_pending(sink);
+        let mut events = Vec::new();
+        if self.status != Status::Alarm && !self.machine.is_reset() {
+            self.flush_pending(&mut |e| events.push(e));
         }
-        if self.status == Status::Running {
+        if self.status == Status::Running && !self.machine.is_reset() {
             let d = Diagnostic::new(
                 Rule::NoProgramEnd,
                 self.interp.profile().alarm_style,
                 self.last_span,
                 "the programme has no end (M02 or M30): the controller stops after the last block",
             );
-            sink(Event::Diagnostic(d));
+            events.push(Event::Diagnostic(d));
         }
+        for e in events {
+            self.machine.push(e, sink);
+        }
+        self.machine.finish(sink);
     }
 }
 
 /// Run a whole text (tests and small inputs): every event in order.
 pub fn run_text(params: Params, switches: Switches, mode: Mode, text: &[u8]) -> Vec<Event> {
-    let mut program = Program::new(params, switches, mode);
+    run_text_with(params, switches, mode, Options::default(), text)
+}
+
+/// [`run_text`] with the operator's actions.
+pub fn run_text_with(params: Params, switches: Switches, mode: Mode, operator: Options, text: &[u8]) -> Vec<Event> {
+    let mut program = Program::with_operator(params, switches, mode, operator);
     let mut events = Vec::new();
     for line in text.split_inclusive(|&b| b == b'\n') {
         program.feed_line(line, &mut |e| events.push(e));

@@ -10,6 +10,7 @@ O0100 (GSK980TDi: positioning, U/W, arcs, dwell, feed per revolution, G96 with a
 (N10/N11 - G96 S120 at X80 is 120000/[pi x 80] = 477.5 rpm; facing to X20 the speed rises as 38197/D)
 (  up to the G50 clamp 1500 rpm at D 25.46. Time = integral of dr / [0.2 x rpm] = [40^2 - 12.73^2]/2/3819.7 min)
 (  + 2.73 mm / 300 mm/min = 11.29 s + 0.55 s = 11.85 s [x 30.017/30 for the W-1 slope])
+(Times - the hand figures above are at constant speed - each move adds its time constant, 100 ms for a rapid, 50 ms for a feed or a thread run - docs/guide.md.)
 N1 G0 X40 Z2 T0101
 N2 M03 S300
 N3 G99 F0.2

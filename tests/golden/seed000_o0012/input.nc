@@ -6,6 +6,7 @@
 (X57.7, X57, X56.9 repeat it - J3 K1, F3 are modal. Time - 32 mm at 3 x 300 = 900 mm/min is)
 (2.133 s, the pull-out 1 mm 0.067 s, rapids at No.022 = 8000 mm/min each axis.)
 O0012;
+(Times - the hand figures above are at constant speed - each move adds its time constant, 100 ms for a rapid, 50 ms for a feed or a thread run - docs/guide.md.)
 M3 S300 G0 X150 Z50 T0101; (螺纹刀)
 G0 X65 Z5; (快速定位)
 G92 X58.7 Z-28 F3 J3 K1; (加工螺纹, 分4刀切削, 第一次进刀1.3mm)

@@ -4,6 +4,7 @@
 (pull-out - seed 001 note 2. G00 X55 and W75 return, X29.14 infeeds 0.5 mm, the second pass)
 (starts at the same spindle angle 0 - Q omitted is 0 degrees - rule 1.)
 O0009;
+(Times - the hand figures above are at constant speed - each move adds its time constant, 100 ms for a rapid, 50 ms for a feed or a thread run - docs/guide.md.)
 M14;	(主轴切换到位置方式)
 G00 X30.14 Z3;	(第一次切入 1mm)
 G32.1 X51.57 W-75 F2.0 S500;	(锥螺纹第一次切削)

@@ -5,6 +5,7 @@
 (2 x 200 = 400 mm/min is 1.5 s.)
 (Seed 002 code example. The manual shows it without a feed for the G1 block, as an excerpt of)
 (a longer programme: F100 on the first line is ncsight's addition so that G1 can move.)
+(Times - the hand figures above are at constant speed - each move adds its time constant, 100 ms for a rapid, 50 ms for a feed or a thread run - docs/guide.md.)
 G98 F100
 G1 X10 Z-15
 M15

@@ -8,6 +8,7 @@
 (7 - X Z - a hole at X50 with the new Z-10.)
 (8 - G89 - R and P from 6, Z from 7 - dwell, feed out to R, rapid up.)
 (9 - G01 - group 01 ends the cycle - the move is a G01 feed at the F kept since 2.)
+(Times - the hand figures above are at constant speed - each move adds its time constant, 100 ms for a rapid, 50 ms for a feed or a thread run - docs/guide.md.)
 G21 G17 G90 G00 X0. Y0. Z50.
 S1000 M03
 G81 X10. Y10. Z-5. R2. F100. K2

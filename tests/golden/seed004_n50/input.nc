@@ -5,6 +5,7 @@
 (2 x 300 = 600 mm/min is 5.08 s per pass.)
 (Seed 004 example N50-N54. The manual says T, S and M for G92 come in earlier blocks: the first)
 (block here is ncsight's addition. MOO in the OCR text is M00, MAA an unreadable M code: M30 here.)
+(Times - the hand figures above are at constant speed - each move adds its time constant, 100 ms for a rapid, 50 ms for a feed or a thread run - docs/guide.md.)
 G97 S300 M03
 N50 G00 X80. Z80.8 M00 ;
 N51 G92 X70. W-50.8 I-1.5 F2. ;

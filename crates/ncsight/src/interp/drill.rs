@@ -6,7 +6,7 @@ use super::Step;
 use crate::alarm::{Diagnostic, Rule};
 use crate::cycles::drill::{self, DrillKind, Hole};
 use crate::modal::SpindleDir;
-use crate::motion::{Op, StopReason, Vec3};
+use crate::motion::{Hold, Op, StopReason, Vec3};
 use crate::profile::ParamKey;
 
 /// Most repeats K (seed 003: "K 的最大取值为9999").
@@ -173,6 +173,7 @@ pub(super) fn block(step: &mut Step, words: &mut Words, kind: DrillKind, enterin
             rpm,
         };
         let position_mode = step.st.spindle_position_mode;
+        let first = step.out.records.len();
         for s in drill::expand(&hole) {
             let here = step.st.pos;
             let op = match s {
@@ -189,6 +190,20 @@ pub(super) fn block(step: &mut Step, words: &mut Words, kind: DrillKind, enterin
                 }
             }
             step.emit(op);
+        }
+        // Tapping: feed hold and feed override are ignored until the cycle ends (seed 003 8.1.2);
+        // positioning to the hole still stops. Single block stops after each hole (BEHAVIOUR.md).
+        let tapping = matches!(kind, DrillKind::G74 | DrillKind::G84);
+        let recs = step.records_since(first);
+        let positioning = usize::from(matches!(recs.first().map(|r| &r.op), Some(Op::Rapid { from, to }) if from.axis(n) == to.axis(n)));
+        if tapping {
+            for r in recs.iter_mut().skip(positioning) {
+                r.hold = Hold::AfterRun;
+                r.override_free = true;
+            }
+        }
+        if let Some(last) = recs.last_mut() {
+            last.block_end = true;
         }
     }
     Ok(())

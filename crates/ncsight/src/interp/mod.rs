@@ -13,7 +13,6 @@ use crate::motion::{ArcDir, Op, Plane, Record, StopReason, Vec3};
 use crate::profile::{GDef, GFn, Group, IntegerLengths, MDef, MFn, Params, Profile, MAX_RPM};
 use crate::read::{Block, Word};
 use crate::source::Span;
-use crate::time;
 use words::Words;
 
 /// Largest |coordinate| accepted, mm: 99999.999 mm is the widest value an 8-digit word with
@@ -45,7 +44,6 @@ pub struct Interpreter {
     profile: &'static Profile,
     params: Params,
     state: Modal,
-    t_s: f64,
     switches: Switches,
 }
 
@@ -55,7 +53,6 @@ struct Step<'a> {
     params: &'a Params,
     span: Span,
     st: Modal,
-    t_s: f64,
     out: Outcome,
 }
 
@@ -75,11 +72,15 @@ impl Step<'_> {
 
     /// Emit an operation of an earlier block (a held-back thread run end).
     fn emit_at(&mut self, span: Span, op: Op) {
-        self.t_s += time::duration_s(&op, self.params);
         if let Some(p) = op.end_point() {
             self.st.pos = p;
         }
-        self.out.records.push(Record { span, t_s: self.t_s, op });
+        self.out.records.push(Record::new(span, op));
+    }
+
+    /// The records emitted since `from` (an index into this block's records).
+    fn records_since(&mut self, from: usize) -> &mut [Record] {
+        &mut self.out.records[from..]
     }
 
     /// A length word in mm, read by the profile's decimal-point rule and the units in force.
@@ -175,7 +176,7 @@ impl Step<'_> {
 impl Interpreter {
     pub fn new(params: Params, switches: Switches) -> Interpreter {
         let profile = params.profile();
-        Interpreter { profile, state: Modal::power_on(profile), params, t_s: 0.0, switches }
+        Interpreter { profile, state: Modal::power_on(profile), params, switches }
     }
 
     pub fn profile(&self) -> &'static Profile {
@@ -190,27 +191,14 @@ impl Interpreter {
         &self.state
     }
 
-    /// Seconds from programme start, per the time model.
-    pub fn time_s(&self) -> f64 {
-        self.t_s
-    }
-
     /// A held-back thread run end is made now, with its pull-out: the input ended, or the next
     /// block alarmed (the controller finishes the thread it is cutting).
     pub fn flush_pending(&mut self) -> Outcome {
-        let mut step = Step {
-            profile: self.profile,
-            params: &self.params,
-            span: Span::default(),
-            st: self.state.clone(),
-            t_s: self.t_s,
-            out: Outcome::default(),
-        };
+        let mut step = Step { profile: self.profile, params: &self.params, span: Span::default(), st: self.state.clone(), out: Outcome::default() };
         if let Some(p) = step.st.thread.pending.take() {
             thread::flush(&mut step, p, true);
         }
         self.state = step.st;
-        self.t_s = step.t_s;
         step.out
     }
 
@@ -219,17 +207,14 @@ impl Interpreter {
         if block.block_delete && self.switches.block_delete {
             return Ok(Outcome::default());
         }
-        let mut step = Step {
-            profile: self.profile,
-            params: &self.params,
-            span: block.span,
-            st: self.state.clone(),
-            t_s: self.t_s,
-            out: Outcome::default(),
-        };
+        let mut step = Step { profile: self.profile, params: &self.params, span: block.span, st: self.state.clone(), out: Outcome::default() };
         run_block(&mut step, block, self.switches)?;
+        // Single block stops after the block's last record (a held-back thread run end carries
+        // its own mark).
+        if let Some(last) = step.out.records.iter_mut().rev().find(|r| r.span == block.span) {
+            last.block_end = true;
+        }
         self.state = step.st;
-        self.t_s = step.t_s;
         Ok(step.out)
     }
 }

@@ -9,7 +9,7 @@ use crate::cycles::thread::arc::{self as arc_thread, ArcThreadError};
 use crate::cycles::thread::cycle::{expand_cycle, Cycle};
 use crate::cycles::thread::{expand, phase_after, wrap_deg, Pass, PassError, PullOut, PullOutMode};
 use crate::modal::{PassMemory, PendingBody, PendingThread, SpindleDir};
-use crate::motion::{ArcDir, LongAxis, Op, Vec3};
+use crate::motion::{ArcDir, Hold, LongAxis, Op, ThreadHold, ThreadHoldStyle, Vec3};
 use crate::profile::{CycleKind, IntegerLengths, ParamKey, QPoint, ThreadCmd, MAX_RPM};
 use crate::read::Word;
 
@@ -528,8 +528,39 @@ fn cycle(step: &mut Step, words: &mut Words, kind: CycleKind, explicit: bool) ->
     step.remember_pass(gname, lead, cut_start.axis(l), c.axis(s), rpm, first_deg);
     let spec = Cycle { start: a, cut_start, cut_end: c, lead_mm: lead, rpm, starts: step.st.thread.starts, first_deg, pull_out };
     let ops = expand_cycle(&spec).map_err(|e| step.pass_error(gname, e))?;
-    for (_, op) in ops {
+    // The thread hold of the cycle (seed 000 note 1; seed 004; seed 001 G92.1 note 7).
+    let hold = match kind {
+        CycleKind::Gsk => {
+            let finish = step.params.get(ParamKey::Number(18, Some(6))) != 0.0;
+            let (long, short) = pull_out.map(|p| (p.long_mm, p.short_mm)).unwrap_or((0.0, 0.0));
+            let style = if finish { ThreadHoldStyle::FinishThenStop } else { ThreadHoldStyle::PullOutAndReturn };
+            Hold::ThreadCycle(ThreadHold { style, start: a, pull_long_mm: long, pull_short_mm: short })
+        }
+        CycleKind::Yasnac => {
+            // "Threading up": the LX3 excerpt gives no amount; one lead at 45 degrees, within the
+            // retract distance (docs/commands/operator.md).
+            let stop_at_b = step.params.get(ParamKey::Number(6019, Some(7))) != 0.0;
+            let style = if stop_at_b { ThreadHoldStyle::ThreadUpAndStop } else { ThreadHoldStyle::ThreadUpAndReturn };
+            let up = lead.min(retract);
+            Hold::ThreadCycle(ThreadHold { style, start: a, pull_long_mm: up, pull_short_mm: up })
+        }
+        CycleKind::GskRigid => Hold::AfterRun,
+    };
+    let mut last_start = None;
+    for (k, op) in ops {
+        if last_start != Some(k) {
+            last_start = Some(k);
+            step.st.thread.cycles += 1;
+        }
+        let is_thread = op.is_thread();
+        let first = step.out.records.len();
         step.emit(op);
+        let id = step.st.thread.cycles;
+        let r = &mut step.records_since(first)[0];
+        r.cycle = Some(id);
+        if is_thread {
+            r.hold = hold;
+        }
     }
     step.st.thread.cycle_end = Some(c);
     Ok(())
@@ -577,6 +608,7 @@ fn gsk_rigid_pull_out(step: &Step, lead: f64, sign: f64) -> Option<PullOut> {
 
 /// Emit a held-back run end: with its pull-out if the run ends here.
 pub(super) fn flush(step: &mut Step, p: PendingThread, run_ends: bool) {
+    let first = step.out.records.len();
     match p.body {
         PendingBody::Straight(mut pass) => {
             if !run_ends {
@@ -590,5 +622,14 @@ pub(super) fn flush(step: &mut Step, p: PendingThread, run_ends: bool) {
             }
         }
         PendingBody::Arc(op) => step.emit_at(p.span, op),
+    }
+    // Single block stops after the last block of a run only (seed 001 G32.1 note 7; TDi help G32
+    // note 4). The perpendicular pull-out after a G32.1 end is part of the thread for the hold.
+    let recs = step.records_since(first);
+    for r in recs.iter_mut() {
+        r.hold = Hold::AfterRun;
+    }
+    if let Some(last) = recs.last_mut() {
+        last.block_end = run_ends;
     }
 }

@@ -1,7 +1,7 @@
 //! FANUC 0-M machining centre: seed 003 (drilling canned cycles G73-G89).
 
 use super::common::{self, g, m};
-use super::{QPoint, ThreadRules, GDef, GFn, Group, IntegerLengths, MDef, MFn, MachineKind, ParamDef, ParamKey, Profile, TimeKeys};
+use super::{SETTINGS, DRY_RUN, QPoint, ThreadRules, GDef, GFn, Group, IntegerLengths, MDef, MFn, MachineKind, ParamDef, ParamKey, Profile, TimeKeys};
 use crate::alarm::AlarmStyle;
 use crate::cycles::drill::DrillKind;
 
@@ -130,9 +130,10 @@ pub static PROFILE: Profile = Profile {
     addresses: "GMSTFXYZIJKRPQLHDN",
     g_codes: &[common::G_CODES, G_CODES],
     m_codes: &[common::M_CODES, M_CODES],
-    params: PARAMS,
+    params: &[PARAMS, DRY_RUN, SETTINGS],
     time: TimeKeys {
         rapid: [ParamKey::Number(518, None), ParamKey::Number(519, None), ParamKey::Number(520, None)],
+        dry_run: ParamKey::Setting("dry_run_mm_min"),
         feed_max: ParamKey::Number(527, None),
     },
     thread: ThreadRules { q_point: QPoint::Alarm, arc_q_unit_deg: 0.001, pull_out_speed: None, after_end_feed: None },

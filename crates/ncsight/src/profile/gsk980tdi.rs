@@ -2,7 +2,7 @@
 
 use super::common::{self, g, gp};
 use super::lathe_a::{self, LATER_THREAD};
-use super::{CycleKind, QPoint, ThreadCmd, ThreadRules, GDef, GFn, Group, IntegerLengths, MachineKind, ParamDef, ParamKey, Profile, TimeKeys};
+use super::{SETTINGS, DRY_RUN, CycleKind, QPoint, ThreadCmd, ThreadRules, GDef, GFn, Group, IntegerLengths, MachineKind, ParamDef, ParamKey, Profile, TimeKeys};
 use crate::alarm::AlarmStyle;
 use crate::motion::ArcDir;
 
@@ -90,9 +90,10 @@ pub static PROFILE: Profile = Profile {
     addresses: "GMSTFXZUWRIJKPQLN",
     g_codes: &[common::G_CODES, lathe_a::G_CODES, EXTRA],
     m_codes: &[common::M_CODES, lathe_a::M_CODES, lathe_a::GSK_M_CODES],
-    params: PARAMS,
+    params: &[PARAMS, DRY_RUN, SETTINGS],
     time: TimeKeys {
         rapid: [ParamKey::Number(22, None), ParamKey::Number(22, None), ParamKey::Number(22, None)],
+        dry_run: ParamKey::Setting("dry_run_mm_min"),
         feed_max: ParamKey::Number(27, None),
     },
     thread: ThreadRules { q_point: QPoint::Ignored, arc_q_unit_deg: 0.001, pull_out_speed: Some(ParamKey::Number(107, None)), after_end_feed: None },

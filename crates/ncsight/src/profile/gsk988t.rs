@@ -4,7 +4,7 @@
 
 use super::common::{self, g, gp};
 use super::lathe_a::{self, LATER_THREAD};
-use super::{CycleKind, GFn, QPoint, ThreadCmd, ThreadRules, GDef, Group, IntegerLengths, MachineKind, ParamDef, ParamKey, Profile, TimeKeys};
+use super::{SETTINGS, CycleKind, GFn, QPoint, ThreadCmd, ThreadRules, GDef, Group, IntegerLengths, MachineKind, ParamDef, ParamKey, Profile, TimeKeys};
 use crate::alarm::AlarmStyle;
 use crate::motion::ArcDir;
 
@@ -107,9 +107,10 @@ pub static PROFILE: Profile = Profile {
     addresses: "GMSTFXYZUVWRIJKPQLN",
     g_codes: &[common::G_CODES, lathe_a::G_CODES, EXTRA],
     m_codes: &[common::M_CODES, lathe_a::M_CODES, lathe_a::GSK_M_CODES],
-    params: PARAMS,
+    params: &[PARAMS, SETTINGS],
     time: TimeKeys {
         rapid: [ParamKey::Number(1420, None), ParamKey::Number(1420, None), ParamKey::Number(1420, None)],
+        dry_run: ParamKey::Number(1410, None),
         feed_max: ParamKey::Number(1422, None),
     },
     thread: ThreadRules { q_point: QPoint::Alarm, arc_q_unit_deg: 1.0, pull_out_speed: None, after_end_feed: Some(ParamKey::Number(1466, None)) },

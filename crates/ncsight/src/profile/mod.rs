@@ -245,14 +245,53 @@ pub struct ParamDef {
     pub source: &'static str,
 }
 
-/// Which parameters the first time model reads. Rates are in mm/min.
+/// Which parameters the time model reads. Rates are in mm/min.
 #[derive(Debug, Clone, Copy)]
 pub struct TimeKeys {
     /// Rapid traverse rate of X, Y, Z (the same key may serve several axes).
     pub rapid: [ParamKey; 3],
     /// Upper limit of the cutting feed.
     pub feed_max: ParamKey,
+    /// Dry-run rate (GSK988T 1410, seed 001 G32.1 note 13).
+    pub dry_run: ParamKey,
 }
+
+/// ncsight's own settings, on every profile: what the time model needs where no manual gave a
+/// parameter number (params_alarms.md: acc/dec time constants were not found).
+pub const SETTINGS: &[ParamDef] = &[
+    ParamDef {
+        key: ParamKey::Setting("rapid_accel_ms"),
+        meaning: "time to reach the rapid rate from a stop (linear acceleration), each axis",
+        unit: "ms",
+        min: 0.0,
+        max: 5000.0,
+        default: 100.0,
+        source: "ncsight setting; assumed (the manuals' time constants were not found)",
+    },
+    ParamDef {
+        key: ParamKey::Setting("feed_accel_ms"),
+        meaning: "time to reach a cutting feed or a thread's speed from a stop (linear acceleration)",
+        unit: "ms",
+        min: 0.0,
+        max: 5000.0,
+        default: 50.0,
+        source: "ncsight setting; assumed (the manuals' time constants were not found)",
+    },
+];
+
+/// The dry-run rate where the profile's manual gives none.
+pub const DRY_RUN_SETTING: ParamDef = ParamDef {
+    key: ParamKey::Setting("dry_run_mm_min"),
+    meaning: "dry-run rate: feeds and threads run at it in dry run",
+    unit: "mm/min",
+    min: 1.0,
+    max: 60000.0,
+    default: 5000.0,
+    source: "ncsight setting; assumed (the parameter number was not found)",
+};
+
+/// [`DRY_RUN_SETTING`] as a table.
+pub const DRY_RUN: &[ParamDef] = &[DRY_RUN_SETTING];
 
 /// A controller profile.
 #[derive(Debug)]
@@ -279,7 +318,8 @@ pub struct Profile {
     pub addresses: &'static str,
     pub g_codes: &'static [&'static [GDef]],
     pub m_codes: &'static [&'static [MDef]],
-    pub params: &'static [ParamDef],
+    /// The manual's parameters, then ncsight's own settings ([`SETTINGS`]).
+    pub params: &'static [&'static [ParamDef]],
     pub time: TimeKeys,
     pub thread: ThreadRules,
     /// One paragraph for `ncsight machines`.
@@ -306,7 +346,12 @@ impl Profile {
     }
 
     pub fn param(&self, key: ParamKey) -> Option<(usize, &'static ParamDef)> {
-        self.params.iter().enumerate().find(|(_, p)| p.key == key)
+        self.all_params().enumerate().find(|(_, p)| p.key == key)
+    }
+
+    /// Every parameter and setting, in order.
+    pub fn all_params(&self) -> impl Iterator<Item = &'static ParamDef> + '_ {
+        self.params.iter().flat_map(|t| t.iter())
     }
 
     pub fn takes_address(&self, letter: u8) -> bool {
@@ -349,7 +394,7 @@ impl std::error::Error for ParamError {}
 
 impl Params {
     pub fn defaults(profile: &'static Profile) -> Params {
-        Params { profile, values: profile.params.iter().map(|p| p.default).collect() }
+        Params { profile, values: profile.all_params().map(|p| p.default).collect() }
     }
 
     pub fn profile(&self) -> &'static Profile {
@@ -365,7 +410,7 @@ impl Params {
         }
         let key = match ParamKey::parse(k) {
             Some(key) => key,
-            None => match self.profile.params.iter().find(|p| matches!(p.key, ParamKey::Setting(s) if s == k.trim())) {
+            None => match self.profile.all_params().find(|p| matches!(p.key, ParamKey::Setting(s) if s == k.trim())) {
                 Some(p) => p.key,
                 None => return Err(ParamError::Unknown(k.trim().into())),
             },
@@ -408,7 +453,7 @@ mod tests {
     #[test]
     fn every_profile_is_consistent() {
         for p in all() {
-            for d in p.params {
+            for d in p.all_params() {
                 assert!(d.min <= d.default && d.default <= d.max, "{} {}", p.name, d.key);
                 assert!(!d.source.is_empty() && !d.meaning.is_empty());
             }
@@ -434,6 +479,16 @@ mod tests {
             }
             assert!(by_name(p.name).is_some());
         }
+    }
+
+    #[test]
+    fn settings_by_name() {
+        let mut ps = Params::defaults(by_name("fanuc0m").unwrap());
+        ps.set_text("rapid_accel_ms=250").unwrap();
+        assert_eq!(ps.get(ParamKey::Setting("rapid_accel_ms")), 250.0);
+        ps.set_text("dry_run_mm_min=1000").unwrap();
+        let mut ps = Params::defaults(by_name("gsk988t").unwrap());
+        assert!(ps.set_text("dry_run_mm_min=1000").is_err()); // the GSK988T has No.1410
     }
 
     #[test]

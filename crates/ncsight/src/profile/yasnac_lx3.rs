@@ -3,7 +3,7 @@
 
 use super::common::{self, g};
 use super::lathe_a::{self, LATER_THREAD};
-use super::{CycleKind, GDef, GFn, Group, QPoint, ThreadCmd, ThreadRules, IntegerLengths, MachineKind, ParamDef, ParamKey, Profile, TimeKeys};
+use super::{SETTINGS, DRY_RUN, CycleKind, GDef, GFn, Group, QPoint, ThreadCmd, ThreadRules, IntegerLengths, MachineKind, ParamDef, ParamKey, Profile, TimeKeys};
 use crate::alarm::AlarmStyle;
 
 const EXTRA: &[GDef] = &[
@@ -56,9 +56,10 @@ pub static PROFILE: Profile = Profile {
     addresses: "GMSTFEXZUWRIKPQLN",
     g_codes: &[common::G_CODES, lathe_a::G_CODES, EXTRA],
     m_codes: &[common::M_CODES, lathe_a::M_CODES],
-    params: PARAMS,
+    params: &[PARAMS, DRY_RUN, SETTINGS],
     time: TimeKeys {
         rapid: [ParamKey::Setting("rapid_mm_min"), ParamKey::Setting("rapid_mm_min"), ParamKey::Setting("rapid_mm_min")],
+        dry_run: ParamKey::Setting("dry_run_mm_min"),
         feed_max: ParamKey::Setting("feed_max_mm_min"),
     },
     thread: ThreadRules { q_point: QPoint::Ignored, arc_q_unit_deg: 0.001, pull_out_speed: None, after_end_feed: None },
