@@ -34,3 +34,24 @@ fn readme_quick_start_runs() {
     assert!(out.lines().count() > 5);
     assert!(readme.contains("cargo test --workspace"));
 }
+
+/// docs/commands/operator.md states the cycle time of each seed example: it must be true.
+#[test]
+fn stated_cycle_times_are_true() {
+    let doc = std::fs::read_to_string(common::root().join("docs/commands/operator.md")).unwrap();
+    let mut checked = 0;
+    for line in doc.lines().filter(|l| l.starts_with("| seed ")) {
+        let cells: Vec<&str> = line.split('|').map(str::trim).collect();
+        let path = cells[1].split('`').nth(1).unwrap();
+        let machine = cells[2];
+        let stated: f64 = cells[3].trim_end_matches(" s").parse().unwrap();
+        let file = common::root().join(path);
+        let (code, out, err) = common::ncsight(&["run", file.to_str().unwrap(), "--machine", machine, "--format", "jsonl"]);
+        assert_eq!(code, 0, "{path}: {err}");
+        let last: serde_json::Value = serde_json::from_str(out.lines().last().unwrap()).unwrap();
+        let t = last["t"].as_f64().unwrap();
+        assert!((t - stated).abs() < 0.0005, "{path}: the docs say {stated} s, the run gives {t} s");
+        checked += 1;
+    }
+    assert_eq!(checked, 6);
+}

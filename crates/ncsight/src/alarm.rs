@@ -106,6 +106,7 @@ rules! {
     TapDirection => Warning, "NCS-W18", None, "TAPPING WITH THE SPINDLE TURNING THE WRONG WAY";
     ReturnLevel => Warning, "NCS-W19", None, "RETURN LEVEL DIFFERS FROM G98/G99";
     NotReached => Warning, "NCS-W20", None, "OPERATOR ACTION AFTER THE PROGRAMME END";
+    CycleWords => Warning, "NCS-W21", None, "T, S, M BELONG BEFORE THE CYCLE";
 }
 
 impl Rule {

@@ -551,3 +551,47 @@ mod properties {
         }
     }
 }
+
+#[test]
+fn g32_j_k_in_a_first_block_stay_modal_for_the_run_end() {
+    // TDi help G32 notes 1, 2: J/K may be left out of continuous blocks; the run's pull-out uses
+    // the values in force. Writing them in the first block does not end the run (unlike G32.1).
+    let r = run("gsk980tdi", &[], "M3 S300\nG0 X40 Z2\nG32 Z-10 F2 J2 K1\nZ-20\nG0 X60\nM30\n").ok();
+    let t = r.threads();
+    assert_eq!(t.len(), 3, "{:?}", r.ends());
+    assert!((t[1].3 - 0.0).abs() < 1e-9); // 12 mm = 6 revolutions: no new wait
+    assert_eq!((round(2.0 * t[2].1.x), round(t[2].1.z)), (44.0, -20.0));
+}
+
+#[test]
+fn g92_j_k_stay_modal_across_other_codes() {
+    // Seed 000 calls J/K modal; only seed 001 note 1 (G32.1) cancels them with other codes.
+    let r = g92("G92 X58.7 Z-28 F3 J2 K1\nG0 X70\nG0 X65 Z5\nG92 X58.7 Z-28", &[]).ok();
+    let threads: Vec<_> = r.threads().iter().map(|t| (round(2.0 * t.1.x), round(t.1.z))).collect();
+    assert_eq!(threads[3], (62.7, -28.0));
+}
+
+#[test]
+fn one_f_register_for_leads_and_feeds() {
+    // The lead of a thread block stays as the F of a later G01, and the other way round.
+    let r = run("gsk980tdi", &[], "M3 S300\nG99 G0 X40 Z2\nG32 Z-10 F1.5\nG0 X50\nG1 Z-12\nM30\n").ok();
+    let feed = r.records.iter().find_map(|r| if let Op::Feed { feed_mm_min, .. } = r.op { Some(feed_mm_min) } else { None });
+    assert_eq!(feed, Some(450.0)); // 1.5 mm/rev x 300 rpm
+    let r = run("gsk980tdi", &[], "M3 S300\nG99 G1 X40 Z2 F2.5\nG32 Z-10\nM30\n").ok();
+    assert_eq!(r.threads()[0].2, 2.5);
+}
+
+#[test]
+fn seed_000_note_3_with_k0_pulls_out_at_rapid() {
+    // J omitted, K0: no length along the long axis; No.19 along the short axis, at rapid.
+    let r = g92("G92 X58.7 Z-28 F3 K0", &[]).ok();
+    let e = r.ends();
+    assert_eq!(e[2], ("thread", 58.7, -28.0));
+    assert_eq!(e[3], ("rapid", 64.7, -28.0));
+}
+
+#[test]
+fn seed_004_t_s_m_in_the_cycle_block_warn() {
+    let r = run("yasnac-lx3", &[], "G97 S300 M03\nG00 X80. Z80.8\nG92 X70. W-50.8 F2. S600\nM30\n").ok();
+    assert!(r.warned("NCS-W21"));
+}

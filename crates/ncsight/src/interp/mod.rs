@@ -373,8 +373,12 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
     // note 1).
     if let Some((_, m)) = codes.motion {
         if !matches!(m, Motion::Thread(_)) {
-            step.st.thread.j = None;
-            step.st.thread.k = None;
+            // Seed 001 G32.1 note 1: a non-thread code cancels the rigid commands' J/K. Seed 000
+            // and the G32 help only call J/K modal: they stay for G32 and G92 (docs).
+            if matches!(step.st.motion, Motion::Thread(cmd) if thread::is_rigid(cmd)) {
+                step.st.thread.j = None;
+                step.st.thread.k = None;
+            }
             step.st.thread.cycle_end = None;
         }
         // A group 01 code cancels a drilling cycle as G80 does (seed 003 8.1.4).
@@ -408,7 +412,9 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
     }
 
     // --- F, S, T ---
-    if let Some(w) = words.take(b'F') {
+    let thread_block = matches!(motion_now, Motion::Thread(_)) && has_axis && codes.non_modal.is_none();
+    let f_word = if thread_block { None } else { words.take(b'F') };
+    if let Some(w) = f_word {
         if w.value < 0.0 {
             return Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("{}: a feed cannot be negative", w.text())));
         }
@@ -714,7 +720,7 @@ fn resolve_arc(step: &mut Step, words: &mut Words, from: Vec3, to: Vec3, dir: Ar
     let ca = words.take(la);
     let cb = words.take(lb);
     if let Some(rw) = r_word {
-        if let Some(w) = ca.or(cb) {
+        for w in [ca, cb].into_iter().flatten() {
             let msg = format!("{}: ignored, R takes precedence over the centre words", w.text());
             step.warn(Rule::TextIgnored, w.span, msg);
         }

@@ -78,7 +78,9 @@ impl Step<'_> {
                     format!("{}: the lead of {gname} must be more than 0 and at most {max_mm} mm", w.text()),
                 ));
             }
-            self.st.thread.lead_mm = Some(lead);
+            // One F register, as on the controller: the lead stays as the F of later blocks.
+            self.st.feed = Some(lead);
+            self.st.thread.lead_mm = None;
         }
         if let Some(w) = i {
             // Threads per inch, 0.06-25400 (TDi p150).
@@ -91,8 +93,14 @@ impl Step<'_> {
             }
             self.st.thread.lead_mm = Some(25.4 / w.value);
         }
-        match self.st.thread.lead_mm {
-            Some(l) => Ok(l),
+        // The lead in force: I threads per inch if the last lead word was I, else the F register.
+        match self.st.thread.lead_mm.or(self.st.feed).filter(|l| *l > 0.0) {
+            Some(l) if l <= max_mm + 1e-9 => Ok(l),
+            Some(l) => Err(self.alarm(
+                Rule::ValueOutOfRange,
+                self.span,
+                format!("{gname}: the F in force ({l} mm) is not a lead of at most {max_mm} mm"),
+            )),
             None => Err(self.alarm(
                 Rule::MissingWord,
                 self.span,
@@ -349,8 +357,10 @@ fn straight(step: &mut Step, words: &mut Words, cmd: ThreadCmd, run_deg: Option<
         step.remember_pass(gname, lead, from.axis(l), target.axis(s), rpm, start_deg);
     }
     let pass = Pass { from, to: target, lead_mm: lead, rpm, start_deg, pull_out };
-    // A block that writes J or K (other than J0 K0) ends the run (seed 001 G32.1 note 1).
-    let ends_run = (j_given || k_given) && (j.unwrap_or(0.0) != 0.0 || k.unwrap_or(0.0) != 0.0);
+    // G32.1: a block that writes J or K (other than J0 K0) ends the run (seed 001 G32.1 note 1).
+    // G32: J/K are modal and the run's pull-out uses the values in force at its end (TDi help
+    // G32 note 1), so writing them does not end a run.
+    let ends_run = rigid && (j_given || k_given) && (j.unwrap_or(0.0) != 0.0 || k.unwrap_or(0.0) != 0.0);
     let end_deg = phase_after(start_deg, length, lead);
     step.st.pos = target;
     step.st.thread.pending = Some(PendingThread { span: step.span, body: PendingBody::Straight(pass), ends_run, rigid, end_deg });
@@ -445,6 +455,13 @@ fn cycle(step: &mut Step, words: &mut Words, kind: CycleKind, explicit: bool) ->
             if let Some(w) = words.take(b'K') {
                 flank_mm = step.length(&w)?;
             }
+        }
+    }
+    if kind == CycleKind::Yasnac {
+        if let Some(w) = [b'T', b'S'].iter().find_map(|l| words.peek(*l)) {
+            // Seed 004 (5) a: T, S and M for G92 come in the blocks before the cycle.
+            let msg = format!("{}: the LX3 manual asks for T, S and M of a G92 cycle in the blocks before it", w.text());
+            step.warn(Rule::CycleWords, w.span, msg);
         }
     }
     let q = if kind == CycleKind::GskRigid { step.read_q(words, 0.001, false)? } else { None };

@@ -93,6 +93,15 @@ pub fn expand(pass: &Pass) -> Result<(Vec<Op>, f64), PassError> {
     if po.long_mm > length + 1e-9 {
         return Err(PassError::PullOutTooLong(po.long_mm, length));
     }
+    if po.long_mm <= 0.0 && po.after_end_feed.is_none() {
+        // No length along the long axis (GSK G92 note 3 with K0): nothing is synchronised; the
+        // short axis goes out at rapid at the end point (assumption, docs).
+        ops.push(thread_op(pass.from, pass.to, lead, long_axis, pass.start_deg, pass.rpm));
+        let mut out = pass.to;
+        out.set_axis(s, out.axis(s) + po.short_sign * po.short_mm);
+        ops.push(Op::Rapid { from: pass.to, to: out });
+        return Ok((ops, phase_after(pass.start_deg, length, lead)));
+    }
     if let Some(feed) = po.after_end_feed {
         // Thread to the end point, then straight out along the short axis at the 1466 speed.
         ops.push(thread_op(pass.from, pass.to, lead, long_axis, pass.start_deg, pass.rpm));
