@@ -37,6 +37,25 @@ struct MachineArgs {
     /// Optional stop switch on: M01 stops.
     #[arg(long)]
     optional_stop: bool,
+    /// The thread repair position recorded on the machine: X (diameter), Z and the spindle's C
+    /// angle in degrees, for G92 P1 / G92.1 P1 (GSK980TDi).
+    #[arg(long, value_name = "X,Z,C", allow_hyphen_values = true)]
+    repair_position: Option<String>,
+}
+
+/// Numbers separated by commas, as many as expected.
+fn numbers(text: &str, what: &str, n: usize) -> Result<Vec<f64>, Failure> {
+    let v: Result<Vec<f64>, _> = text.split(',').map(|p| p.trim().parse::<f64>()).collect();
+    match v {
+        Ok(v) if v.len() == n && v.iter().all(|x| x.is_finite()) => Ok(v),
+        _ => Err(usage(format!("{what} {text}: expected {n} numbers separated by commas"))),
+    }
+}
+
+/// A recorded point given as X (diameter), Z, C.
+fn recorded(text: &str, what: &str) -> Result<ncsight::repair::Recorded, Failure> {
+    let v = numbers(text, what, 3)?;
+    Ok(ncsight::repair::Recorded { point: ncsight::Vec3::new(v[0] / 2.0, 0.0, v[1]), c_deg: v[2].rem_euclid(360.0) })
 }
 
 /// The operator's buttons and switches during `run`.
@@ -118,11 +137,35 @@ enum Command {
         #[arg(short = 'o', long = "output")]
         output: Option<String>,
     },
-    /// The thread-repair calculation (not built yet).
-    #[command(disable_help_flag = false)]
+    /// Thread repair (GSK988T MDI screen, seed 001): the two blocks that re-cut a thread in the
+    /// groove of a recorded point.
     Repair {
-        #[arg(trailing_var_arg = true, allow_hyphen_values = true)]
-        args: Vec<String>,
+        #[command(flatten)]
+        machine: MachineArgs,
+        /// Start point of the thread: X (diameter),Z.
+        #[arg(long, value_name = "X,Z", allow_hyphen_values = true)]
+        start: String,
+        /// End point of the thread: X (diameter),Z.
+        #[arg(long, value_name = "X,Z", allow_hyphen_values = true)]
+        end: String,
+        /// Lead in mm (or give --tpi).
+        #[arg(long, value_name = "F")]
+        lead: Option<f64>,
+        /// Threads per inch instead of --lead.
+        #[arg(long, value_name = "N")]
+        tpi: Option<f64>,
+        /// Spindle speed; negative turns the spindle in its negative direction.
+        #[arg(long, value_name = "S", allow_hyphen_values = true)]
+        rpm: f64,
+        /// The recorded point: X (diameter),Z,C (degrees).
+        #[arg(long, value_name = "X,Z,C", allow_hyphen_values = true)]
+        measured: String,
+        /// Pull-out along the short axis (radius, signed).
+        #[arg(long, allow_hyphen_values = true)]
+        j: Option<f64>,
+        /// Pull-out length along the long axis.
+        #[arg(long)]
+        k: Option<f64>,
     },
     /// List the controller profiles; with a name, its parameters.
     Machines {
@@ -150,7 +193,9 @@ pub fn main_with(args: impl IntoIterator<Item = std::ffi::OsString>, out: &mut d
         Command::Check { files, machine } => check(&files, &machine, out, err),
         Command::Machines { machine } => machines(machine.as_deref(), out),
         Command::Report { .. } => Err(usage("`ncsight report` is not built yet: the HTML report comes with its own issue")),
-        Command::Repair { .. } => Err(usage("`ncsight repair` is not built yet: thread repair comes with its own issue")),
+        Command::Repair { machine, start, end, lead, tpi, rpm, measured, j, k } => {
+            repair(&machine, &start, &end, lead, tpi, rpm, &measured, j, k, out, err)
+        }
     };
     match result {
         Ok(code) => code,
@@ -200,7 +245,8 @@ fn setup(m: &MachineArgs, err: &mut dyn Write) -> Result<(Params, Switches), Fai
     for p in &m.params {
         params.set_text(p).map_err(|e| usage(format!("{} ({})", e, profile.name)))?;
     }
-    Ok((params, Switches { block_delete: m.block_delete, optional_stop: m.optional_stop }))
+    let repair_position = m.repair_position.as_deref().map(|t| recorded(t, "--repair-position")).transpose()?;
+    Ok((params, Switches { block_delete: m.block_delete, optional_stop: m.optional_stop, repair_position }))
 }
 
 fn open(file: &str) -> Result<Box<dyn BufRead>, Failure> {
@@ -323,6 +369,70 @@ fn check(files: &[String], m: &MachineArgs, out: &mut dyn Write, err: &mut dyn W
     }
     w.flush()?;
     Ok(if any_alarm { EXIT_ALARM } else { EXIT_OK })
+}
+
+#[allow(clippy::too_many_arguments)]
+fn repair(
+    m: &MachineArgs,
+    start: &str,
+    end: &str,
+    lead: Option<f64>,
+    tpi: Option<f64>,
+    rpm: f64,
+    measured: &str,
+    j: Option<f64>,
+    k: Option<f64>,
+    out: &mut dyn Write,
+    err: &mut dyn Write,
+) -> Result<i32, Failure> {
+    let (params, _) = setup(m, err)?;
+    let profile = params.profile();
+    let Some(enable) = profile.thread.repair_enable.filter(|_| profile.g_code(32, Some(1)).is_some_and(|g| matches!(g.function, ncsight::profile::GFn::Thread(_)))) else {
+        let how = if profile.thread.repair_enable.is_some() {
+            "repairs with G92 P1 / G92.1 P1 and `run --repair-position`"
+        } else {
+            "has no thread repair"
+        };
+        return Err(usage(format!("the thread-repair screen that writes G32.1 is a GSK988T function (seed 001); {} {how}", profile.name)));
+    };
+    let s = numbers(start, "--start", 2)?;
+    let e = numbers(end, "--end", 2)?;
+    let lead_mm = match (lead, tpi) {
+        (Some(f), None) if f > 0.0 && f <= 500.0 => f,
+        (None, Some(n)) if (0.06..=25400.0).contains(&n) => 25.4 / n,
+        _ => return Err(usage("give the lead as --lead F (0-500 mm) or --tpi N (0.06-25400)")),
+    };
+    if rpm == 0.0 || !rpm.is_finite() {
+        return Err(usage("--rpm: a spindle speed other than 0 (negative: the negative direction)"));
+    }
+    let alarm = |err: &mut dyn Write, rule: ncsight::Rule, msg: String| -> Result<i32, Failure> {
+        writeln!(err, "ncsight: alarm[{}]: {msg}", rule.code(profile.alarm_style))?;
+        Ok(EXIT_ALARM)
+    };
+    let recorded = recorded(measured, "--measured")?;
+    if params.get(enable) == 0.0 {
+        return alarm(
+            err,
+            ncsight::Rule::RepairDisabled,
+            format!("thread repair is not enabled: parameter {enable} (RPTH) is 0 (seed 001 1.4); give --param {enable}=1"),
+        );
+    }
+    let job = ncsight::repair::RepairJob {
+        start: ncsight::Vec3::new(s[0] / 2.0, 0.0, s[1]),
+        end: ncsight::Vec3::new(e[0] / 2.0, 0.0, e[1]),
+        lead_mm,
+        rpm,
+        j_mm: j,
+        k_mm: k,
+        recorded,
+    };
+    match job.programme() {
+        Ok(text) => {
+            out.write_all(text.as_bytes())?;
+            Ok(EXIT_OK)
+        }
+        Err(e) => alarm(err, ncsight::Rule::RepairOutside, format!("{e}; no programme is written")),
+    }
 }
 
 fn machines(name: Option<&str>, out: &mut dyn Write) -> Result<i32, Failure> {

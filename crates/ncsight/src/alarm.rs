@@ -85,6 +85,9 @@ rules! {
     FaceThread => Alarm, "NCS-E44", None, "FACE THREAD NOT ALLOWED IN THIS CYCLE";
     TaperTooLarge => Alarm, "NCS-E45", None, "TAPER R LARGER THAN U/2";
     DrillLevels => Alarm, "NCS-E46", None, "R POINT AND HOLE BOTTOM IN THE WRONG ORDER";
+    RepairOutside => Alarm, "NCS-E48", None, "REPAIR POSITION OUTSIDE THE THREAD";
+    RepairDisabled => Alarm, "NCS-E49", None, "THREAD REPAIR NOT ENABLED";
+    RepairNoPosition => Alarm, "NCS-E50", None, "NO REPAIR POSITION RECORDED";
     // --- warnings ---
     SameGroupTwice => Warning, "NCS-W01", None, "TWO G CODES OF ONE GROUP: THE LAST ONE COUNTS";
     IntegerLength => Warning, "NCS-W02", None, "LENGTH WITHOUT DECIMAL POINT";

@@ -14,6 +14,7 @@ pub mod motion;
 pub mod profile;
 pub mod program;
 pub mod read;
+pub mod repair;
 pub mod source;
 pub mod time;
 

@@ -73,6 +73,8 @@ pub struct ThreadState {
     pub memory: Option<PassMemory>,
     /// Four-step cycles started so far (each start of each block), to tell them apart.
     pub cycles: u32,
+    /// G92 P1 / G92.1 P1 repair in force (P1 in the first block is enough: help note 4).
+    pub repair: bool,
 }
 
 /// Hole data that stays from block to block while a drilling cycle is in force (seed 003): the
@@ -165,6 +167,7 @@ impl Modal {
                 pending: None,
                 memory: None,
                 cycles: 0,
+                repair: false,
             },
             drill: DrillData::default(),
             ended: false,

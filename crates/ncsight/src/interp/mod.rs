@@ -30,9 +30,12 @@ pub struct Outcome {
     pub warnings: Vec<Diagnostic>,
 }
 
-/// Switches on the operator's panel that change what a programme does.
+/// Switches on the operator's panel, and what the operator recorded, that change what a
+/// programme does.
 #[derive(Debug, Clone, Copy, Default)]
 pub struct Switches {
+    /// The thread repair position recorded on the machine (GSK980TDi help, thread repair 3).
+    pub repair_position: Option<crate::repair::Recorded>,
     /// Block delete: blocks that start with `/` are skipped.
     pub block_delete: bool,
     /// Optional stop: M01 stops.
@@ -51,6 +54,8 @@ pub struct Interpreter {
 struct Step<'a> {
     profile: &'static Profile,
     params: &'a Params,
+    /// The recorded thread repair position, if any.
+    repair: Option<crate::repair::Recorded>,
     span: Span,
     st: Modal,
     out: Outcome,
@@ -194,7 +199,14 @@ impl Interpreter {
     /// A held-back thread run end is made now, with its pull-out: the input ended, or the next
     /// block alarmed (the controller finishes the thread it is cutting).
     pub fn flush_pending(&mut self) -> Outcome {
-        let mut step = Step { profile: self.profile, params: &self.params, span: Span::default(), st: self.state.clone(), out: Outcome::default() };
+        let mut step = Step {
+            profile: self.profile,
+            params: &self.params,
+            repair: self.switches.repair_position,
+            span: Span::default(),
+            st: self.state.clone(),
+            out: Outcome::default(),
+        };
         if let Some(p) = step.st.thread.pending.take() {
             thread::flush(&mut step, p, true);
         }
@@ -207,7 +219,14 @@ impl Interpreter {
         if block.block_delete && self.switches.block_delete {
             return Ok(Outcome::default());
         }
-        let mut step = Step { profile: self.profile, params: &self.params, span: block.span, st: self.state.clone(), out: Outcome::default() };
+        let mut step = Step {
+            profile: self.profile,
+            params: &self.params,
+            repair: self.switches.repair_position,
+            span: block.span,
+            st: self.state.clone(),
+            out: Outcome::default(),
+        };
         run_block(&mut step, block, self.switches)?;
         // Single block stops after the block's last record (a held-back thread run end carries
         // its own mark).
@@ -380,6 +399,7 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
                 step.st.thread.k = None;
             }
             step.st.thread.cycle_end = None;
+            step.st.thread.repair = false;
         }
         // A group 01 code cancels a drilling cycle as G80 does (seed 003 8.1.4).
         step.st.drill = Default::default();

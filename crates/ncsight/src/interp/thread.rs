@@ -23,7 +23,7 @@ pub(super) fn name(cmd: ThreadCmd) -> &'static str {
         ThreadCmd::Lead => "G32",
         ThreadCmd::Rigid => "G32.1",
         ThreadCmd::Cycle(CycleKind::Gsk | CycleKind::Yasnac) => "G92",
-        ThreadCmd::Cycle(CycleKind::GskRigid) => "G92.1",
+        ThreadCmd::Cycle(CycleKind::GskRigid | CycleKind::TdiRigid) => "G92.1",
         ThreadCmd::Arc(ArcDir::Cw) => "G32.2",
         ThreadCmd::Arc(ArcDir::Ccw) => "G32.3",
     }
@@ -31,7 +31,7 @@ pub(super) fn name(cmd: ThreadCmd) -> &'static str {
 
 /// Whether the command is a rigid (servo spindle, S-signed) one.
 pub(super) fn is_rigid(cmd: ThreadCmd) -> bool {
-    matches!(cmd, ThreadCmd::Rigid | ThreadCmd::Cycle(CycleKind::GskRigid))
+    matches!(cmd, ThreadCmd::Rigid | ThreadCmd::Cycle(CycleKind::GskRigid | CycleKind::TdiRigid))
 }
 
 /// Whether a block of `cmd` may continue a run held in `pending` (same family, seed 001 G32.1
@@ -426,11 +426,32 @@ fn arc(step: &mut Step, words: &mut Words, dir: ArcDir, run_deg: Option<f64>) ->
 fn cycle(step: &mut Step, words: &mut Words, kind: CycleKind, explicit: bool) -> Result<(), Diagnostic> {
     let cmd = ThreadCmd::Cycle(kind);
     let gname = name(cmd);
+    // GSK980TDi G92.1: "F > 0 right hand, F < 0 left hand": the spindle turns the other way.
+    let mut hand = 1.0;
+    if kind == CycleKind::TdiRigid {
+        if let Some(mut w) = words.peek(b'F').filter(|w| w.value < 0.0) {
+            hand = -1.0;
+            w.value = -w.value;
+            words.insert(w);
+        }
+    }
     let lead = match kind {
-        CycleKind::Gsk => step.read_lead(words, gname, true, false, MAX_LEAD_MM)?,
+        CycleKind::Gsk | CycleKind::TdiRigid => step.read_lead(words, gname, true, false, MAX_LEAD_MM)?,
         CycleKind::GskRigid => step.read_lead(words, gname, false, false, MAX_LEAD_MM)?,
         CycleKind::Yasnac => step.read_lead(words, gname, false, true, MAX_LEAD_MM)?,
     };
+    let repair_word = if matches!(kind, CycleKind::Gsk | CycleKind::TdiRigid) { words.take(b'P') } else { None };
+    if let Some(w) = repair_word {
+        let enabled = step.profile.thread.repair_enable.is_some_and(|k| step.params.get(k) != 0.0);
+        let wants = !w.decimal && w.value == 1.0;
+        if wants && !enabled {
+            // Help note 1: with repair disabled, P1 is ignored.
+            let msg = format!("{}: ignored, thread repair is off (parameter No.174 bit 4 = 0)", w.text());
+            step.warn(Rule::TextIgnored, w.span, msg);
+        }
+        // Help note 2: P other than 1 does no repair.
+        step.st.thread.repair = wants && enabled;
+    }
     // L: number of starts, 1-99, modal (seed 000; seed 001 G92.1).
     if kind != CycleKind::Yasnac {
         if let Some(w) = words.take(b'L') {
@@ -450,6 +471,7 @@ fn cycle(step: &mut Step, words: &mut Words, kind: CycleKind, explicit: bool) ->
             // Seed 001 G92.1: J "cannot be less than zero"; K in G32.1's range (0 or more).
             step.read_jk(words, gname, false, false)?;
         }
+        CycleKind::TdiRigid => {}
         CycleKind::Yasnac => {
             // Seed 004 (4): K, with its sign, shifts this pass's start along Z (flank infeed).
             if let Some(w) = words.take(b'K') {
@@ -465,7 +487,12 @@ fn cycle(step: &mut Step, words: &mut Words, kind: CycleKind, explicit: bool) ->
         }
     }
     let q = if kind == CycleKind::GskRigid { step.read_q(words, 0.001, false)? } else { None };
-    let rpm = if kind == CycleKind::GskRigid { step.rigid_rpm(words, gname)? } else { step.follow_rpm(gname)? };
+    let rpm = match kind {
+        CycleKind::GskRigid => step.rigid_rpm(words, gname)?,
+        // Help note 6: the interpolation type needs the servo spindle in position mode.
+        CycleKind::TdiRigid => hand * step.rigid_rpm(words, gname)?,
+        _ => step.follow_rpm(gname)?,
+    };
     // Taper: R on GSK, I on the YASNAC; radius, cut start minus cut end.
     let taper_letter = if kind == CycleKind::Yasnac { b'I' } else { b'R' };
     let taper_word = words.take(taper_letter);
@@ -530,8 +557,9 @@ fn cycle(step: &mut Step, words: &mut Words, kind: CycleKind, explicit: bool) ->
     let pull_out = match kind {
         CycleKind::Gsk => gsk_pull_out(step, lead, toward_start),
         CycleKind::GskRigid => gsk_rigid_pull_out(step, lead, toward_start),
-        // Seed 004 describes no thread chamfer for the LX3 G92: none (docs/threads.md).
-        CycleKind::Yasnac => None,
+        // Seed 004 describes no thread chamfer for the LX3 G92; the GSK980TDi G92.1 stops feed
+        // axes and spindle together at the end point (help text, step 2): none.
+        CycleKind::Yasnac | CycleKind::TdiRigid => None,
     };
     // Seed 001 G92.1 note 11, applied to G92 too (BEHAVIOUR.md): J at most the retract distance.
     let pull_out = pull_out.map(|mut p| {
@@ -541,7 +569,21 @@ fn cycle(step: &mut Step, words: &mut Words, kind: CycleKind, explicit: bool) ->
         p
     });
     step.feed_warning(gname, lead, rpm);
-    let first_deg = q.map(|(d, _)| d).unwrap_or(0.0);
+    let mut first_deg = q.map(|(d, _)| d).unwrap_or(0.0);
+    if step.st.thread.repair {
+        // Thread repair: the start angle that puts the pass through the recorded groove.
+        let Some(rec) = step.repair else {
+            return Err(step.alarm(
+                Rule::RepairNoPosition,
+                step.span,
+                format!("{gname} P1: no thread repair position was recorded (help note 3; give --repair-position X,Z,C)"),
+            ));
+        };
+        first_deg = match crate::repair::start_angle_deg(cut_start, c, lead, rpm, &rec) {
+            Ok(d) => d,
+            Err(e) => return Err(step.alarm(Rule::RepairOutside, step.span, format!("{gname} P1: {e} (help note 5)"))),
+        };
+    }
     step.remember_pass(gname, lead, cut_start.axis(l), c.axis(s), rpm, first_deg);
     let spec = Cycle { start: a, cut_start, cut_end: c, lead_mm: lead, rpm, starts: step.st.thread.starts, first_deg, pull_out };
     let ops = expand_cycle(&spec).map_err(|e| step.pass_error(gname, e))?;
@@ -561,7 +603,7 @@ fn cycle(step: &mut Step, words: &mut Words, kind: CycleKind, explicit: bool) ->
             let up = lead.min(retract);
             Hold::ThreadCycle(ThreadHold { style, start: a, pull_long_mm: up, pull_short_mm: up })
         }
-        CycleKind::GskRigid => Hold::AfterRun,
+        CycleKind::GskRigid | CycleKind::TdiRigid => Hold::AfterRun,
     };
     let mut last_start = None;
     for (k, op) in ops {

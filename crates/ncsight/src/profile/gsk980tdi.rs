@@ -14,7 +14,7 @@ const EXTRA: &[GDef] = &[
     gp(32, 1, Group::Motion, LATER_THREAD, "rigid thread cutting (GSK980TDi form with C)"),
     gp(32, 2, Group::Motion, GFn::Thread(ThreadCmd::Arc(ArcDir::Cw)), "arc thread, clockwise"),
     gp(32, 3, Group::Motion, GFn::Thread(ThreadCmd::Arc(ArcDir::Ccw)), "arc thread, counter-clockwise"),
-    gp(92, 1, Group::Motion, LATER_THREAD, "rigid thread cutting cycle (GSK980TDi form)"),
+    gp(92, 1, Group::Motion, GFn::Thread(ThreadCmd::Cycle(CycleKind::TdiRigid)), "rigid thread cutting cycle (help text: R F L P S)"),
     GDef { major: 33, minor: None, group: Group::Motion, function: LATER_THREAD, meaning: "tapping cycle" },
     GDef { major: 34, minor: None, group: Group::Motion, function: LATER_THREAD, meaning: "variable-lead thread cutting" },
     GDef { major: 80, minor: None, group: Group::Motion, function: GFn::CycleCancel, meaning: "cancel a drilling cycle" },
@@ -65,6 +65,24 @@ const PARAMS: &[ParamDef] = &[
         source: "TDi help G01 names No.027; default assumed (not found)",
     },
     ParamDef {
+        key: ParamKey::Number(174, Some(4)),
+        meaning: "thread repair: 1 = G92 P1 / G92.1 P1 repair the thread at the recorded position",
+        unit: "bit",
+        min: 0.0,
+        max: 1.0,
+        default: 0.0,
+        source: "TDi help, thread repair, operation 1",
+    },
+    ParamDef {
+        key: ParamKey::Number(174, Some(5)),
+        meaning: "thread repair mode: 0 = follow type (G92 P1), 1 = interpolation type (G92.1 P1) (meaning of the values assumed)",
+        unit: "bit",
+        min: 0.0,
+        max: 1.0,
+        default: 0.0,
+        source: "TDi help, thread repair, operation 2",
+    },
+    ParamDef {
         key: ParamKey::Number(107, None),
         meaning: "short-axis speed of the thread pull-out; 0 = the pull-out angle follows J:K",
         unit: "mm/min",
@@ -96,7 +114,7 @@ pub static PROFILE: Profile = Profile {
         dry_run: ParamKey::Setting("dry_run_mm_min"),
         feed_max: ParamKey::Number(27, None),
     },
-    thread: ThreadRules { q_point: QPoint::Ignored, arc_q_unit_deg: 0.001, pull_out_speed: Some(ParamKey::Number(107, None)), after_end_feed: None },
+    thread: ThreadRules { q_point: QPoint::Ignored, arc_q_unit_deg: 0.001, pull_out_speed: Some(ParamKey::Number(107, None)), after_end_feed: None, repair_enable: Some(ParamKey::Number(174, Some(4))) },
     summary: "GSK980TDi turning centre. X is a diameter, U/W incremental. Lengths without a decimal \
 point are millimetres (seed 000's O0012: Z-28, F3, J3 K1). Feed per minute (G98) at power on.",
 };

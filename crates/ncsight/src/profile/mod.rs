@@ -129,6 +129,9 @@ pub enum CycleKind {
     GskRigid,
     /// G92 on the YASNAC LX3 (seed 004): I taper, K flank infeed, E lead.
     Yasnac,
+    /// G92.1 on the GSK980TDi (help text): R, F (negative: left hand), L, P, S; no J, K, Q, and
+    /// the feed axes and the spindle stop together at the end point (no pull-out).
+    TdiRigid,
 }
 
 /// How a decimal point in the thread start angle Q is treated (BEHAVIOUR.md).
@@ -151,6 +154,8 @@ pub struct ThreadRules {
     pub pull_out_speed: Option<ParamKey>,
     /// Parameter giving the perpendicular pull-out speed after the end point (GSK988T 1466).
     pub after_end_feed: Option<ParamKey>,
+    /// Bit parameter that enables thread repair (GSK988T 8135.7 RPTH, GSK980TDi No.174 bit 4).
+    pub repair_enable: Option<ParamKey>,
 }
 
 /// One G code of a profile.
