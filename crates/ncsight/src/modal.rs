@@ -54,6 +54,19 @@ pub struct PassMemory {
     pub last_infeed: Option<f64>,
 }
 
+/// G76's data from its first block (or the parameters): finishing passes m, pull-out r in
+/// 0.1 x lead, tool angle a, minimum cut, finishing allowance, and the GSK's J/K.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct G76Data {
+    pub finishing: u32,
+    pub pull_out_tenths: f64,
+    pub angle_deg: f64,
+    pub dmin_mm: f64,
+    pub allowance_mm: f64,
+    pub j: Option<f64>,
+    pub k: Option<f64>,
+}
+
 /// Thread words and memories that last from block to block.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ThreadState {
@@ -75,6 +88,8 @@ pub struct ThreadState {
     pub cycles: u32,
     /// G92 P1 / G92.1 P1 repair in force (P1 in the first block is enough: help note 4).
     pub repair: bool,
+    /// G76 data set by its first block for the rest of the run (it rewrites the parameters).
+    pub g76: Option<G76Data>,
 }
 
 /// Hole data that stays from block to block while a drilling cycle is in force (seed 003): the
@@ -168,6 +183,7 @@ impl Modal {
                 memory: None,
                 cycles: 0,
                 repair: false,
+                g76: None,
             },
             drill: DrillData::default(),
             ended: false,

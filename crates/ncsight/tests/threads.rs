@@ -595,3 +595,62 @@ fn seed_004_t_s_m_in_the_cycle_block_warn() {
     let r = run("yasnac-lx3", &[], "G97 S300 M03\nG00 X80. Z80.8\nG92 X70. W-50.8 F2. S600\nM30\n").ok();
     assert!(r.warned("NCS-W21"));
 }
+
+mod g76 {
+    use super::*;
+    use proptest::prelude::*;
+
+    proptest! {
+        #![proptest_config(ProptestConfig { cases: 150, .. ProptestConfig::default() })]
+
+        /// Issue 11: depths strictly increase until the finishing depth, the last roughing pass is
+        /// at k - d, exactly m finishing passes at k, every pass starts at the same spindle angle.
+        #[test]
+        fn g76_depth_schedule(
+            k_um in 300u32..4000, first_frac in 0.05f64..0.9, dmin_um in 0u32..200,
+            d_frac in 0.0f64..0.3, m in 1u32..5, lead in 0.5f64..4.0,
+        ) {
+            let first_um = ((k_um as f64 * first_frac) as u32).max(1);
+            let d_mm = ((k_um as f64 * d_frac) as u32) as f64 / 1000.0;
+            let prog = format!(
+                "G97 S300 M03\nG0 X70 Z5\nG76 P{m:02}0060 Q{dmin_um} R{d_mm:.3}\nG76 X60 Z-40 P{k_um} Q{first_um} F{lead:.3}\nM30\n"
+            );
+            let r = run("gsk980tdi", &[], &prog);
+            prop_assert!(r.alarm().is_none(), "{:?}\n{}", r.alarm(), prog);
+            let k = k_um as f64 / 1000.0;
+            // The cut of each pass: the first thread record after a rapid to the pass start.
+            let passes: Vec<(f64, f64)> = r.records.windows(2)
+                .filter(|w| matches!(w[0].op, Op::Rapid { .. }) && matches!(w[1].op, Op::Thread { .. }))
+                .map(|w| match w[1].op { Op::Thread { from, spindle_deg, .. } => (k - (from.x - 30.0), spindle_deg), _ => unreachable!() })
+                .collect();
+            let finishing = passes.iter().filter(|p| (p.0 - k).abs() < 1e-9).count();
+            prop_assert_eq!(finishing as u32, m);
+            let rough: Vec<f64> = passes[..passes.len() - m as usize].iter().map(|p| p.0).collect();
+            prop_assert!((rough.last().unwrap() - (k - d_mm)).abs() < 1e-9, "{:?} k {} d {}", rough, k, d_mm);
+            for w in rough.windows(2) {
+                prop_assert!(w[1] > w[0]);
+            }
+            prop_assert!(passes.iter().all(|p| p.1 == passes[0].1));
+        }
+    }
+}
+
+#[test]
+fn g76_reads_p_q_in_increments_and_alarms_on_bad_data() {
+    // P(k) and Q(dd) with a decimal point: alarm (least input increments only).
+    let r = run("gsk980tdi", &[], "G97 S300 M03\nG0 X70 Z5\nG76 X60 Z-40 P3.68 Q1800 F6\nM30\n");
+    assert_eq!(r.alarm().unwrap().code, "NCS-E07");
+    let r = run("gsk980tdi", &[], "G97 S300 M03\nG0 X70 Z5\nG76 X60 Z-40 Q1800 F6\nM30\n");
+    assert_eq!(r.alarm().unwrap().code, "NCS-E51");
+    // J/K in the first block: the pull-out of G32/G92 (help note 2).
+    let r = run("gsk980tdi", &[], "G97 S300 M03\nG0 X70 Z5\nG76 P010060 Q100 R0.1 J1 K2\nG76 X60 Z-40 P1000 Q500 F2\nM30\n").ok();
+    let t = r.threads();
+    let pull = t.iter().find(|t| (t.1.z + 40.0).abs() < 1e-9).unwrap();
+    assert!((pull.0.z + 38.0).abs() < 1e-9, "{pull:?}");
+}
+
+#[test]
+fn g34_lead_must_stay_positive() {
+    let r = run("gsk980tdi", &[], "G97 S200 M03\nG0 X40 Z5\nG34 Z-40 F2 R-0.5\nM30\n");
+    assert_eq!(r.alarm().unwrap().code, "NCS-E51");
+}

@@ -2,6 +2,7 @@
 //! block), against a profile and its parameters. It turns a block into records of the canonical
 //! stream and warnings, or into one alarm that leaves the modal state untouched.
 
+mod compound;
 mod drill;
 mod thread;
 mod words;
@@ -382,7 +383,7 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
             // G80: the cycle and its hole data end; F stays (seed 003 8.1.4).
             GFn::CycleCancel => step.st.drill = Default::default(),
             GFn::Drill(kind) => codes.drill = Some(kind),
-            GFn::Dwell | GFn::ReferenceReturn | GFn::LatheCoordinateSet | GFn::MillCoordinateSet => {
+            GFn::Dwell | GFn::ReferenceReturn | GFn::LatheCoordinateSet | GFn::MillCoordinateSet | GFn::CompoundThread => {
                 codes.non_modal = Some((w.span, g.function))
             }
             GFn::NotYet(_) => unreachable!("rejected above"),
@@ -514,6 +515,7 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
     // --- one-shot codes ---
     match codes.non_modal {
         Some((_, GFn::Dwell)) => dwell(step, &mut words)?,
+        Some((_, GFn::CompoundThread)) => compound::g76(step, &mut words)?,
         Some((_, GFn::ReferenceReturn)) => {
             let (target, given) = axis_target(step, &mut words)?;
             let mid = target;
@@ -611,6 +613,7 @@ fn describe_command(step: &Step, codes: &Codes) -> String {
         Some((_, GFn::ReferenceReturn)) => return "G28 (reference return)".into(),
         Some((_, GFn::LatheCoordinateSet)) => return "G50 (coordinate setting)".into(),
         Some((_, GFn::MillCoordinateSet)) => return "G92 (coordinate setting)".into(),
+        Some((_, GFn::CompoundThread)) => return "G76 (compound threading)".into(),
         _ => ((), step.st.motion),
     };
     if let Some(kind) = step.st.drill.kind {

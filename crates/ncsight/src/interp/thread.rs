@@ -22,7 +22,9 @@ pub(super) fn name(cmd: ThreadCmd) -> &'static str {
     match cmd {
         ThreadCmd::Lead => "G32",
         ThreadCmd::Rigid => "G32.1",
-        ThreadCmd::Cycle(CycleKind::Gsk | CycleKind::Yasnac) => "G92",
+        ThreadCmd::Cycle(CycleKind::Gsk | CycleKind::Yasnac | CycleKind::Fanuc) => "G92",
+        ThreadCmd::Tap => "G33",
+        ThreadCmd::VariableLead => "G34",
         ThreadCmd::Cycle(CycleKind::GskRigid | CycleKind::TdiRigid) => "G92.1",
         ThreadCmd::Arc(ArcDir::Cw) => "G32.2",
         ThreadCmd::Arc(ArcDir::Ccw) => "G32.3",
@@ -39,9 +41,9 @@ pub(super) fn is_rigid(cmd: ThreadCmd) -> bool {
 pub(super) fn continues(cmd: ThreadCmd, pending: &PendingThread) -> bool {
     !pending.ends_run
         && match cmd {
-            ThreadCmd::Lead | ThreadCmd::Arc(_) => !pending.rigid,
+            ThreadCmd::Lead | ThreadCmd::Arc(_) | ThreadCmd::VariableLead => !pending.rigid,
             ThreadCmd::Rigid => pending.rigid,
-            ThreadCmd::Cycle(_) => false,
+            ThreadCmd::Cycle(_) | ThreadCmd::Tap => false,
         }
 }
 
@@ -57,7 +59,7 @@ impl Step<'_> {
     }
 
     /// Read F (and I threads per inch, E) into the lead in force; return the lead to use.
-    fn read_lead(&mut self, words: &mut Words, gname: &str, inch_i: bool, e_word: bool, max_mm: f64) -> Result<f64, Diagnostic> {
+    pub(super) fn read_lead(&mut self, words: &mut Words, gname: &str, inch_i: bool, e_word: bool, max_mm: f64) -> Result<f64, Diagnostic> {
         let f = words.take(b'F');
         let i = if inch_i { words.take(b'I') } else { None };
         let e = if e_word { words.take(b'E') } else { None };
@@ -110,7 +112,7 @@ impl Step<'_> {
     }
 
     /// Q, the start angle in 0.001 degree (seed 001 G32.1 Q rules; BEHAVIOUR.md).
-    fn read_q(&mut self, words: &mut Words, unit_deg: f64, point_ok: bool) -> Result<Option<(f64, Word)>, Diagnostic> {
+    pub(super) fn read_q(&mut self, words: &mut Words, unit_deg: f64, point_ok: bool) -> Result<Option<(f64, Word)>, Diagnostic> {
         let Some(w) = words.take(b'Q') else { return Ok(None) };
         if w.value < 0.0 {
             return Err(self.alarm(Rule::ValueOutOfRange, w.span, format!("{}: the start angle cannot be negative", w.text())));
@@ -162,7 +164,7 @@ impl Step<'_> {
     }
 
     /// Spindle speed of an encoder-following thread: the spindle must turn.
-    fn follow_rpm(&mut self, gname: &str) -> Result<f64, Diagnostic> {
+    pub(super) fn follow_rpm(&mut self, gname: &str) -> Result<f64, Diagnostic> {
         if self.st.css {
             // Issue 3: warn about G96 during threading.
             let msg = format!(
@@ -214,7 +216,7 @@ impl Step<'_> {
         ))
     }
 
-    fn feed_warning(&mut self, gname: &str, lead: f64, rpm: f64) {
+    pub(super) fn feed_warning(&mut self, gname: &str, lead: f64, rpm: f64) {
         let feed = lead * rpm.abs();
         let max = self.params.feed_max_mm_min();
         if feed > max {
@@ -275,7 +277,7 @@ impl Step<'_> {
         self.profile.thread.after_end_feed.map(|k| self.params.get(k)).filter(|v| *v > 0.0).unwrap_or(self.params.feed_max_mm_min())
     }
 
-    fn pass_error(&self, gname: &str, e: PassError) -> Diagnostic {
+    pub(super) fn pass_error(&self, gname: &str, e: PassError) -> Diagnostic {
         match e {
             PassError::PullOutTooLong(k, len) => self.alarm(
                 Rule::PullOutTooLong,
@@ -293,6 +295,8 @@ pub(super) fn block(step: &mut Step, words: &mut Words, cmd: ThreadCmd, explicit
         ThreadCmd::Lead | ThreadCmd::Rigid => straight(step, words, cmd, run_deg),
         ThreadCmd::Cycle(kind) => cycle(step, words, kind, explicit),
         ThreadCmd::Arc(dir) => arc(step, words, dir, run_deg),
+        ThreadCmd::Tap => super::compound::tap(step, words),
+        ThreadCmd::VariableLead => super::compound::variable_lead(step, words, run_deg),
     }
 }
 
@@ -300,9 +304,10 @@ pub(super) fn block(step: &mut Step, words: &mut Words, cmd: ThreadCmd, explicit
 fn straight(step: &mut Step, words: &mut Words, cmd: ThreadCmd, run_deg: Option<f64>) -> Result<(), Diagnostic> {
     let rigid = cmd == ThreadCmd::Rigid;
     let gname = name(cmd);
-    let lead = step.read_lead(words, gname, !rigid, false, MAX_LEAD_MM)?;
+    let lead = step.read_lead(words, gname, !rigid && step.profile.thread.g32_pull_out, false, MAX_LEAD_MM)?;
     // G32.1: J signed, K unsigned (seed 001 notes); G32: J signed, K as written taken positive.
-    let (j_given, k_given) = step.read_jk(words, gname, true, !rigid)?;
+    // FANUC's G32 has no J/K.
+    let (j_given, k_given) = if rigid || step.profile.thread.g32_pull_out { step.read_jk(words, gname, true, !rigid)? } else { (false, false) };
     let q = step.read_q(words, 0.001, false)?;
     let rpm = if rigid { step.rigid_rpm(words, gname)? } else { step.follow_rpm(gname)? };
     let (target, _) = axis_target(step, words)?;
@@ -437,7 +442,7 @@ fn cycle(step: &mut Step, words: &mut Words, kind: CycleKind, explicit: bool) ->
     }
     let lead = match kind {
         CycleKind::Gsk | CycleKind::TdiRigid => step.read_lead(words, gname, true, false, MAX_LEAD_MM)?,
-        CycleKind::GskRigid => step.read_lead(words, gname, false, false, MAX_LEAD_MM)?,
+        CycleKind::GskRigid | CycleKind::Fanuc => step.read_lead(words, gname, false, false, MAX_LEAD_MM)?,
         CycleKind::Yasnac => step.read_lead(words, gname, false, true, MAX_LEAD_MM)?,
     };
     let repair_word = if matches!(kind, CycleKind::Gsk | CycleKind::TdiRigid) { words.take(b'P') } else { None };
@@ -453,7 +458,7 @@ fn cycle(step: &mut Step, words: &mut Words, kind: CycleKind, explicit: bool) ->
         step.st.thread.repair = wants && enabled;
     }
     // L: number of starts, 1-99, modal (seed 000; seed 001 G92.1).
-    if kind != CycleKind::Yasnac {
+    if !matches!(kind, CycleKind::Yasnac | CycleKind::Fanuc) {
         if let Some(w) = words.take(b'L') {
             if w.decimal || !(1.0..=99.0).contains(&w.value) {
                 return Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("{}: the number of starts L is a whole number 1 to 99", w.text())));
@@ -471,7 +476,7 @@ fn cycle(step: &mut Step, words: &mut Words, kind: CycleKind, explicit: bool) ->
             // Seed 001 G92.1: J "cannot be less than zero"; K in G32.1's range (0 or more).
             step.read_jk(words, gname, false, false)?;
         }
-        CycleKind::TdiRigid => {}
+        CycleKind::TdiRigid | CycleKind::Fanuc => {}
         CycleKind::Yasnac => {
             // Seed 004 (4): K, with its sign, shifts this pass's start along Z (flank infeed).
             if let Some(w) = words.take(b'K') {
@@ -486,7 +491,7 @@ fn cycle(step: &mut Step, words: &mut Words, kind: CycleKind, explicit: bool) ->
             step.warn(Rule::CycleWords, w.span, msg);
         }
     }
-    let q = if kind == CycleKind::GskRigid { step.read_q(words, 0.001, false)? } else { None };
+    let q = if matches!(kind, CycleKind::GskRigid | CycleKind::Fanuc) { step.read_q(words, 0.001, false)? } else { None };
     let rpm = match kind {
         CycleKind::GskRigid => step.rigid_rpm(words, gname)?,
         // Help note 6: the interpolation type needs the servo spindle in position mode.
@@ -557,6 +562,8 @@ fn cycle(step: &mut Step, words: &mut Words, kind: CycleKind, explicit: bool) ->
     let pull_out = match kind {
         CycleKind::Gsk => gsk_pull_out(step, lead, toward_start),
         CycleKind::GskRigid => gsk_rigid_pull_out(step, lead, toward_start),
+        // FANUC 0-T: the chamfer of parameters 5130/5131 (no J/K words).
+        CycleKind::Fanuc => chamfer_pull_out(step, lead, toward_start, ParamKey::Number(5130, None), Some(ParamKey::Number(5131, None))),
         // Seed 004 describes no thread chamfer for the LX3 G92; the GSK980TDi G92.1 stops feed
         // axes and spindle together at the end point (help text, step 2): none.
         CycleKind::Yasnac | CycleKind::TdiRigid => None,
@@ -603,7 +610,9 @@ fn cycle(step: &mut Step, words: &mut Words, kind: CycleKind, explicit: bool) ->
             let up = lead.min(retract);
             Hold::ThreadCycle(ThreadHold { style, start: a, pull_long_mm: up, pull_short_mm: up })
         }
-        CycleKind::GskRigid | CycleKind::TdiRigid => Hold::AfterRun,
+        // FANUC 0-T without the thread-cutting retract option: the thread finishes first
+        // (assumption, docs/commands/operator.md).
+        CycleKind::GskRigid | CycleKind::TdiRigid | CycleKind::Fanuc => Hold::AfterRun,
     };
     let mut last_start = None;
     for (k, op) in ops {
@@ -627,9 +636,15 @@ fn cycle(step: &mut Step, words: &mut Words, kind: CycleKind, explicit: bool) ->
 
 /// Seed 000 notes 2-7 and 10 (G92 on the GSK980TDi).
 fn gsk_pull_out(step: &Step, lead: f64, sign: f64) -> Option<PullOut> {
-    let (j, k) = (step.st.thread.j.map(f64::abs), step.st.thread.k.map(f64::abs));
     // No.19: pull-out width in 0.1 x lead.
-    let no19 = step.params.get(ParamKey::Number(19, None)) * 0.1 * lead;
+    let no19 = step.params.get(ParamKey::Number(19, None));
+    gsk_jk_pull_out(step, step.st.thread.j, step.st.thread.k, no19, lead, sign)
+}
+
+/// Seed 000's J/K rules with `tenths` (No.19, or G76's r) for what is omitted.
+pub(super) fn gsk_jk_pull_out(step: &Step, j: Option<f64>, k: Option<f64>, tenths: f64, lead: f64, sign: f64) -> Option<PullOut> {
+    let (j, k) = (j.map(f64::abs), k.map(f64::abs));
+    let no19 = tenths * 0.1 * lead;
     let (long, short) = match (j, k) {
         (None, None) => (no19, no19),      // note 2
         (None, Some(k)) => (k, no19),      // note 3
@@ -644,16 +659,27 @@ fn gsk_pull_out(step: &Step, lead: f64, sign: f64) -> Option<PullOut> {
     Some(PullOut { long_mm: long, short_mm: short, short_sign: sign, mode: step.pull_out_mode(), after_end_feed: None })
 }
 
+/// A chamfer of `amount` x 0.1 x lead along the long axis at the angle parameter (0 or none:
+/// 45 degrees): G92.1 note 1 (5130/5131), FANUC G92 and G76, GSK G76 by P(r).
+pub(super) fn chamfer_pull_out(step: &Step, lead: f64, sign: f64, amount: ParamKey, angle: Option<ParamKey>) -> Option<PullOut> {
+    chamfer_of(step.params.get(amount), angle.map(|a| step.params.get(a)).unwrap_or(0.0), lead, sign)
+}
+
+/// See [`chamfer_pull_out`]; the values given.
+pub(super) fn chamfer_of(tenths: f64, angle_deg: f64, lead: f64, sign: f64) -> Option<PullOut> {
+    let long = tenths * 0.1 * lead;
+    let short = if angle_deg == 0.0 { long } else { long * angle_deg.to_radians().tan() };
+    (short > 0.0).then_some(PullOut { long_mm: long, short_mm: short, short_sign: sign, mode: PullOutMode::Ratio, after_end_feed: None })
+}
+
 /// Seed 001 G92.1 notes 1-6 (GSK988T).
 fn gsk_rigid_pull_out(step: &Step, lead: f64, sign: f64) -> Option<PullOut> {
     let (j, k) = (step.st.thread.j, step.st.thread.k);
     let chamfer = step.params.get(ParamKey::Number(5130, None)) * 0.1 * lead;
-    let angle = step.params.get(ParamKey::Number(5131, None));
-    let ratio = |long: f64| if angle == 0.0 { long } else { long * angle.to_radians().tan() };
     let after_end = |j: f64| PullOut { long_mm: 0.0, short_mm: j, short_sign: sign, mode: PullOutMode::Ratio, after_end_feed: Some(step.after_end_feed()) };
     let (long, short) = match (j, k) {
-        (None, None) => (chamfer, ratio(chamfer)), // note 1
-        (None, Some(k)) => (k, chamfer),           // note 2
+        (None, None) => return chamfer_pull_out(step, lead, sign, ParamKey::Number(5130, None), Some(ParamKey::Number(5131, None))), // note 1
+        (None, Some(k)) => (k, chamfer), // note 2
         (Some(j), _) if j == 0.0 => return None,   // notes 5 and 6
         (Some(j), None) => return Some(after_end(j)), // note 3
         (Some(j), Some(k)) if k == 0.0 => return Some(after_end(j)), // note 4

@@ -2,7 +2,7 @@
 
 use super::common::{self, g, gp};
 use super::lathe_a::{self, LATER_THREAD};
-use super::{SETTINGS, DRY_RUN, CycleKind, QPoint, ThreadCmd, ThreadRules, GDef, GFn, Group, IntegerLengths, MachineKind, ParamDef, ParamKey, Profile, TimeKeys};
+use super::{G76Keys, SETTINGS, DRY_RUN, CycleKind, QPoint, ThreadCmd, ThreadRules, GDef, GFn, Group, IntegerLengths, MachineKind, ParamDef, ParamKey, Profile, TimeKeys};
 use crate::alarm::AlarmStyle;
 use crate::motion::ArcDir;
 
@@ -14,9 +14,10 @@ const EXTRA: &[GDef] = &[
     gp(32, 1, Group::Motion, LATER_THREAD, "rigid thread cutting (GSK980TDi form with C)"),
     gp(32, 2, Group::Motion, GFn::Thread(ThreadCmd::Arc(ArcDir::Cw)), "arc thread, clockwise"),
     gp(32, 3, Group::Motion, GFn::Thread(ThreadCmd::Arc(ArcDir::Ccw)), "arc thread, counter-clockwise"),
+    g(76, Group::NonModal, GFn::CompoundThread, "compound thread cutting cycle, two blocks"),
+    g(33, Group::Motion, GFn::Thread(ThreadCmd::Tap), "tapping: in, spindle reversed, out (help text)"),
+    g(34, Group::Motion, GFn::Thread(ThreadCmd::VariableLead), "variable-lead thread cutting"),
     gp(92, 1, Group::Motion, GFn::Thread(ThreadCmd::Cycle(CycleKind::TdiRigid)), "rigid thread cutting cycle (help text: R F L P S)"),
-    GDef { major: 33, minor: None, group: Group::Motion, function: LATER_THREAD, meaning: "tapping cycle" },
-    GDef { major: 34, minor: None, group: Group::Motion, function: LATER_THREAD, meaning: "variable-lead thread cutting" },
     GDef { major: 80, minor: None, group: Group::Motion, function: GFn::CycleCancel, meaning: "cancel a drilling cycle" },
     GDef { major: 83, minor: None, group: Group::Motion, function: LATER_DRILL, meaning: "end face peck drilling cycle" },
     GDef { major: 84, minor: None, group: Group::Motion, function: LATER_DRILL, meaning: "end face tapping cycle" },
@@ -83,6 +84,42 @@ const PARAMS: &[ParamDef] = &[
         source: "TDi help, thread repair, operation 2",
     },
     ParamDef {
+        key: ParamKey::Number(57, None),
+        meaning: "G76 number of finishing passes m; G76 P rewrites it",
+        unit: "passes",
+        min: 0.0,
+        max: 99.0,
+        default: 1.0,
+        source: "TAC p135 (GSK980TDb/TDc numbering); default assumed",
+    },
+    ParamDef {
+        key: ParamKey::Number(58, None),
+        meaning: "G76 tool angle a; G76 P rewrites it",
+        unit: "deg",
+        min: 0.0,
+        max: 99.0,
+        default: 60.0,
+        source: "TAC p135; default assumed",
+    },
+    ParamDef {
+        key: ParamKey::Number(59, None),
+        meaning: "G76 minimum cut dmin, the power-on value of Q",
+        unit: "0.001 mm",
+        min: 0.0,
+        max: 999999.0,
+        default: 100.0,
+        source: "TAC p135 (the ordering, inferred); default assumed",
+    },
+    ParamDef {
+        key: ParamKey::Number(60, None),
+        meaning: "G76 finishing allowance d, the power-on value of R",
+        unit: "mm",
+        min: 0.0,
+        max: 99.0,
+        default: 0.05,
+        source: "TDi p70, Table 3-2; default assumed",
+    },
+    ParamDef {
         key: ParamKey::Number(107, None),
         meaning: "short-axis speed of the thread pull-out; 0 = the pull-out angle follows J:K",
         unit: "mm/min",
@@ -114,7 +151,7 @@ pub static PROFILE: Profile = Profile {
         dry_run: ParamKey::Setting("dry_run_mm_min"),
         feed_max: ParamKey::Number(27, None),
     },
-    thread: ThreadRules { q_point: QPoint::Ignored, arc_q_unit_deg: 0.001, pull_out_speed: Some(ParamKey::Number(107, None)), after_end_feed: None, repair_enable: Some(ParamKey::Number(174, Some(4))) },
+    thread: ThreadRules { q_point: QPoint::Ignored, arc_q_unit_deg: 0.001, pull_out_speed: Some(ParamKey::Number(107, None)), after_end_feed: None, repair_enable: Some(ParamKey::Number(174, Some(4))), g32_pull_out: true, g76: Some(G76Keys { finishing: ParamKey::Number(57, None), pull_out: ParamKey::Number(19, None), angle: ParamKey::Number(58, None), dmin_um: ParamKey::Number(59, None), allowance: ParamKey::Number(60, None), allowance_to_mm: 1.0, pull_out_angle: None }) },
     summary: "GSK980TDi turning centre. X is a diameter, U/W incremental. Lengths without a decimal \
 point are millimetres (seed 000's O0012: Z-28, F3, J3 K1). Feed per minute (G98) at power on.",
 };

@@ -3,12 +3,13 @@
 //! manual does (params_alarms.md section 3).
 
 use super::common::{self, g, gp};
-use super::lathe_a::{self, LATER_THREAD};
+use super::lathe_a::{self, LATER_G76, LATER_THREAD};
 use super::{SETTINGS, CycleKind, GFn, QPoint, ThreadCmd, ThreadRules, GDef, Group, IntegerLengths, MachineKind, ParamDef, ParamKey, Profile, TimeKeys};
 use crate::alarm::AlarmStyle;
 use crate::motion::ArcDir;
 
 const EXTRA: &[GDef] = &[
+    g(76, Group::NonModal, LATER_G76, "compound thread cutting cycle"),
     g(32, Group::Motion, GFn::Thread(ThreadCmd::Lead), "thread cutting: F lead or I threads per inch, J/K pull-out, Q start angle"),
     g(92, Group::Motion, LATER_THREAD, "thread cutting cycle (the GSK988T manual's G92 page was not available)"),
     gp(32, 1, Group::Motion, GFn::Thread(ThreadCmd::Rigid), "rigid thread cutting (seed 001)"),
@@ -113,7 +114,7 @@ pub static PROFILE: Profile = Profile {
         dry_run: ParamKey::Number(1410, None),
         feed_max: ParamKey::Number(1422, None),
     },
-    thread: ThreadRules { q_point: QPoint::Alarm, arc_q_unit_deg: 1.0, pull_out_speed: None, after_end_feed: Some(ParamKey::Number(1466, None)), repair_enable: Some(ParamKey::Number(8135, Some(7))) },
+    thread: ThreadRules { q_point: QPoint::Alarm, arc_q_unit_deg: 1.0, pull_out_speed: None, after_end_feed: Some(ParamKey::Number(1466, None)), repair_enable: Some(ParamKey::Number(8135, Some(7))), g32_pull_out: true, g76: None },
     summary: "GSK988T turning centre with a servo (CS) spindle: M14 position mode, M15 speed mode. \
 X is a diameter, U/W incremental; lengths without a decimal point are millimetres.",
 };

@@ -19,7 +19,6 @@ pub(super) const G_CODES: &[GDef] = &[
     g(73, Group::NonModal, LATER_MRC, "pattern repeating"),
     g(74, Group::NonModal, LATER_MRC, "end face peck drilling"),
     g(75, Group::NonModal, LATER_MRC, "outer/inner diameter grooving"),
-    g(76, Group::NonModal, LATER_G76, "compound thread cutting cycle"),
     g(90, Group::Motion, LATER_BOX, "outer/inner diameter cutting cycle"),
     g(94, Group::Motion, LATER_BOX, "end face cutting cycle"),
     g(96, Group::SpindleSpeedMode, GFn::ConstantSurfaceSpeed, "constant surface speed: S in m/min"),

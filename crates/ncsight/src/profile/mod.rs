@@ -8,6 +8,7 @@
 
 mod common;
 mod fanuc0m;
+mod fanuc0t;
 mod gsk980tdi;
 mod gsk988t;
 mod lathe_a;
@@ -102,6 +103,8 @@ pub enum GFn {
     Drill(crate::cycles::drill::DrillKind),
     /// A thread-cutting command (group 01).
     Thread(ThreadCmd),
+    /// G76 compound thread cutting, the two-block form (group 00).
+    CompoundThread,
     /// Known to the controller, not yet simulated: an alarm that says so.
     NotYet(&'static str),
 }
@@ -118,6 +121,10 @@ pub enum ThreadCmd {
     Cycle(CycleKind),
     /// G32.2 (clockwise) and G32.3 (counter-clockwise) arc threads (seed 002).
     Arc(crate::motion::ArcDir),
+    /// G33 on the GSK980TDi: tapping, in and out with the spindle reversed (help text).
+    Tap,
+    /// G34 on the GSK980TDi: variable lead, R more (or less) per revolution (help text).
+    VariableLead,
 }
 
 /// Which manual's four-step cycle.
@@ -129,6 +136,8 @@ pub enum CycleKind {
     GskRigid,
     /// G92 on the YASNAC LX3 (seed 004): I taper, K flank infeed, E lead.
     Yasnac,
+    /// G92 on the FANUC 0-T: R taper, F lead, Q start angle, chamfer by 5130/5131.
+    Fanuc,
     /// G92.1 on the GSK980TDi (help text): R, F (negative: left hand), L, P, S; no J, K, Q, and
     /// the feed axes and the spindle stop together at the end point (no pull-out).
     TdiRigid,
@@ -156,6 +165,28 @@ pub struct ThreadRules {
     pub after_end_feed: Option<ParamKey>,
     /// Bit parameter that enables thread repair (GSK988T 8135.7 RPTH, GSK980TDi No.174 bit 4).
     pub repair_enable: Option<ParamKey>,
+    /// G32 takes J and K (GSK) or not (FANUC).
+    pub g32_pull_out: bool,
+    /// G76: the parameters its first block rewrites, with their units.
+    pub g76: Option<G76Keys>,
+}
+
+/// The parameters of G76 (GSK No.57/19/58/59/60; FANUC 5142/5130/5143/5140/5141).
+#[derive(Debug, Clone, Copy)]
+pub struct G76Keys {
+    /// Number of finishing passes m.
+    pub finishing: ParamKey,
+    /// Pull-out r, 0.1 x lead.
+    pub pull_out: ParamKey,
+    /// Tool angle a, degrees.
+    pub angle: ParamKey,
+    /// Minimum cut, 0.001 mm.
+    pub dmin_um: ParamKey,
+    /// Finishing allowance, and the factor from its unit to mm.
+    pub allowance: ParamKey,
+    pub allowance_to_mm: f64,
+    /// The pull-out angle (FANUC 5131; 0 = 45 degrees), if the profile has one.
+    pub pull_out_angle: Option<ParamKey>,
 }
 
 /// One G code of a profile.
@@ -332,8 +363,8 @@ pub struct Profile {
 }
 
 /// All profiles, in the order `ncsight machines` lists them.
-pub fn all() -> [&'static Profile; 4] {
-    [&gsk980tdi::PROFILE, &gsk988t::PROFILE, &fanuc0m::PROFILE, &yasnac_lx3::PROFILE]
+pub fn all() -> [&'static Profile; 5] {
+    [&gsk980tdi::PROFILE, &gsk988t::PROFILE, &fanuc0m::PROFILE, &yasnac_lx3::PROFILE, &fanuc0t::PROFILE]
 }
 
 /// The profile of that name.

@@ -2,12 +2,13 @@
 //! (params_alarms.md section 5): the time-model rates are ncsight settings, named, not numbered.
 
 use super::common::{self, g};
-use super::lathe_a::{self, LATER_THREAD};
+use super::lathe_a::{self, LATER_G76, LATER_THREAD};
 use super::{SETTINGS, DRY_RUN, CycleKind, GDef, GFn, Group, QPoint, ThreadCmd, ThreadRules, IntegerLengths, MachineKind, ParamDef, ParamKey, Profile, TimeKeys};
 use crate::alarm::AlarmStyle;
 
 const EXTRA: &[GDef] = &[
     g(32, Group::Motion, LATER_THREAD, "thread cutting (not in the LX3 excerpt)"),
+    g(76, Group::NonModal, LATER_G76, "compound thread cutting cycle"),
     g(92, Group::Motion, GFn::Thread(ThreadCmd::Cycle(CycleKind::Yasnac)), "threading cycle: I taper, K flank infeed, F or E lead (seed 004)"),
 ];
 
@@ -62,7 +63,7 @@ pub static PROFILE: Profile = Profile {
         dry_run: ParamKey::Setting("dry_run_mm_min"),
         feed_max: ParamKey::Setting("feed_max_mm_min"),
     },
-    thread: ThreadRules { q_point: QPoint::Ignored, arc_q_unit_deg: 0.001, pull_out_speed: None, after_end_feed: None, repair_enable: None },
+    thread: ThreadRules { q_point: QPoint::Ignored, arc_q_unit_deg: 0.001, pull_out_speed: None, after_end_feed: None, repair_enable: None, g32_pull_out: false, g76: None },
     summary: "YASNAC LX3 turning centre. X is a diameter, U/W incremental. Lengths without a decimal \
 point are least input increments (X100 = 0.1 mm); seed 004 writes every length with a point. \
 Feed per revolution at power on (assumed).",

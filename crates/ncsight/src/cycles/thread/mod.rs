@@ -10,6 +10,7 @@
 //! J and K are taken from where, signs, clamps) is decided by the caller and passed in as data.
 
 pub mod arc;
+pub mod compound;
 pub mod cycle;
 
 use crate::motion::{Op, Vec3};

@@ -1,0 +1,81 @@
+//! G76 compound thread cutting (GSK980TDi help text G76; FANUC 0-T): the depth schedule and the
+//! passes. Each pass is the four-step cycle of `cycle.rs`, its cut start moved along the flank.
+//!
+//! Depth schedule (help text steps 1-10): roughing pass n cuts to `dd x sqrt(n)`, but at least
+//! `dmin` deeper than the pass before, until the depth reaches `k - d` (the last roughing pass is
+//! at exactly `k - d`); then `m` finishing passes at the full depth k, the first removing the
+//! finishing allowance d.
+
+/// The depth (radius, mm) of every pass, roughing then finishing.
+///
+/// Errors when the data cannot make a thread (the text says which word).
+pub fn depths(k: f64, first: f64, dmin: f64, allowance: f64, finishing: u32) -> Result<Vec<f64>, &'static str> {
+    if !(k > 0.0) {
+        return Err("the thread height P(k) must be more than 0");
+    }
+    if !(first > 0.0) {
+        return Err("the first depth Q(dd) must be more than 0");
+    }
+    if allowance < 0.0 || allowance >= k {
+        return Err("the finishing allowance R(d) must be 0 or more and less than the thread height");
+    }
+    let rough_to = k - allowance;
+    let mut out = Vec::new();
+    let mut prev = 0.0f64;
+    let mut n = 1u32;
+    loop {
+        let mut d = first * (n as f64).sqrt();
+        if d - prev < dmin {
+            d = prev + dmin;
+        }
+        if d >= rough_to - 1e-9 {
+            out.push(rough_to);
+            break;
+        }
+        out.push(d);
+        prev = d;
+        n += 1;
+        if n > 10_000 {
+            return Err("the depth schedule needs more than 10000 passes (Q too small)");
+        }
+    }
+    out.extend(std::iter::repeat(k).take(finishing as usize));
+    Ok(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn tac_example() {
+        // TAC p139: G76 P020560 Q150 R0.1 / G76 X60.64 Z-62 P3680 Q1800 F6: k 3.68, dd 1.8,
+        // dmin 0.15, d 0.1, m 2. Passes: 1.8, 1.8 sqrt 2 = 2.546, 1.8 sqrt 3 = 3.118, then 3.58
+        // (k - d; 1.8 sqrt 4 = 3.6 is past it), and 2 finishing passes at 3.68.
+        let d = depths(3.68, 1.8, 0.15, 0.1, 2).unwrap();
+        let expect = [1.8, 1.8 * 2f64.sqrt(), 1.8 * 3f64.sqrt(), 3.58, 3.68, 3.68];
+        assert_eq!(d.len(), expect.len());
+        for (a, b) in d.iter().zip(expect) {
+            assert!((a - b).abs() < 1e-9, "{d:?}");
+        }
+    }
+
+    #[test]
+    fn dmin_keeps_the_passes_apart() {
+        // dd = 0.2, k = 1.0, dmin = 0.15: 0.2, 0.283 -> 0.35, 0.346 -> 0.5, ... never closer than 0.15.
+        let d = depths(1.0, 0.2, 0.15, 0.0, 1).unwrap();
+        for w in d.windows(2).take(d.len() - 3) {
+            assert!(w[1] - w[0] >= 0.15 - 1e-12, "{d:?}");
+        }
+        assert_eq!(*d.last().unwrap(), 1.0);
+    }
+
+    #[test]
+    fn bad_data() {
+        assert!(depths(0.0, 0.1, 0.0, 0.0, 1).is_err());
+        assert!(depths(1.0, 0.0, 0.0, 0.0, 1).is_err());
+        assert!(depths(1.0, 0.1, 0.0, 1.0, 1).is_err());
+        // dd larger than the height: one roughing pass at k - d.
+        assert_eq!(depths(1.0, 2.0, 0.0, 0.1, 1).unwrap(), vec![0.9, 1.0]);
+    }
+}

@@ -1,0 +1,138 @@
+//! FANUC 0-T lathe, G-code system A (issue 11): G32, G92 with a start angle Q, the two-block G76,
+//! thread chamfering by parameters 5130/5131 (FANUC 0i-T numbering, params_alarms.md section 3:
+//! inferred). It is here so that the FANUC lathe programmes of the corpus (Doosan, ICNC) run on
+//! the profile they were written for.
+
+use super::common::{self, g};
+use super::lathe_a::{self, LATER_THREAD};
+use super::{
+    CycleKind, G76Keys, GDef, GFn, Group, IntegerLengths, MachineKind, ParamDef, ParamKey, Profile, QPoint, ThreadCmd,
+    ThreadRules, TimeKeys, DRY_RUN, SETTINGS,
+};
+use crate::alarm::AlarmStyle;
+
+const EXTRA: &[GDef] = &[
+    g(32, Group::Motion, GFn::Thread(ThreadCmd::Lead), "thread cutting: F lead, Q start angle"),
+    g(92, Group::Motion, GFn::Thread(ThreadCmd::Cycle(CycleKind::Fanuc)), "thread cutting cycle: R taper, F lead, Q start angle"),
+    g(76, Group::NonModal, GFn::CompoundThread, "compound thread cutting cycle, two blocks"),
+    g(34, Group::Motion, LATER_THREAD, "variable-lead thread cutting"),
+    g(80, Group::Motion, GFn::CycleCancel, "cancel a drilling cycle (the 0-T drilling cycles themselves are not simulated)"),
+];
+
+const PARAMS: &[ParamDef] = &[
+    ParamDef {
+        key: ParamKey::Number(1420, None),
+        meaning: "rapid traverse rate (each axis)",
+        unit: "mm/min",
+        min: 1.0,
+        max: 60000.0,
+        default: 8000.0,
+        source: "FANUC 0i numbering (inferred); default assumed",
+    },
+    ParamDef {
+        key: ParamKey::Number(1422, None),
+        meaning: "upper limit of the cutting feed",
+        unit: "mm/min",
+        min: 1.0,
+        max: 60000.0,
+        default: 8000.0,
+        source: "FANUC 0i numbering (inferred); default assumed",
+    },
+    ParamDef {
+        key: ParamKey::Number(5130, None),
+        meaning: "thread chamfering (pull-out) amount of G92 and G76",
+        unit: "0.1 x lead",
+        min: 0.0,
+        max: 127.0,
+        default: 10.0,
+        source: "params_alarms.md section 3 (inferred); default assumed",
+    },
+    ParamDef {
+        key: ParamKey::Number(5131, None),
+        meaning: "thread chamfering angle; 0 = 45 degrees",
+        unit: "deg",
+        min: 0.0,
+        max: 89.0,
+        default: 0.0,
+        source: "params_alarms.md section 3 (inferred)",
+    },
+    ParamDef {
+        key: ParamKey::Number(5140, None),
+        meaning: "G76 minimum cut dmin",
+        unit: "0.001 mm",
+        min: 0.0,
+        max: 999999.0,
+        default: 100.0,
+        source: "params_alarms.md section 3 (inferred); default assumed",
+    },
+    ParamDef {
+        key: ParamKey::Number(5141, None),
+        meaning: "G76 finishing allowance d",
+        unit: "0.001 mm",
+        min: 0.0,
+        max: 999999.0,
+        default: 50.0,
+        source: "params_alarms.md section 3 (inferred); default assumed",
+    },
+    ParamDef {
+        key: ParamKey::Number(5142, None),
+        meaning: "G76 number of finishing passes m",
+        unit: "passes",
+        min: 1.0,
+        max: 99.0,
+        default: 1.0,
+        source: "params_alarms.md section 3 (inferred); default assumed",
+    },
+    ParamDef {
+        key: ParamKey::Number(5143, None),
+        meaning: "G76 tool angle a",
+        unit: "deg",
+        min: 0.0,
+        max: 99.0,
+        default: 60.0,
+        source: "params_alarms.md section 3 (inferred); default assumed",
+    },
+];
+
+pub static PROFILE: Profile = Profile {
+    name: "fanuc0t",
+    title: "FANUC 0-T lathe (G-code system A)",
+    kind: MachineKind::Lathe,
+    diameter_x: true,
+    integer_lengths: IntegerLengths::LeastIncrement,
+    alarm_style: AlarmStyle::Fanuc,
+    incremental_addresses: true,
+    power_on_per_rev: true,
+    group00_with_01_alarm: false,
+    axes: "XZ",
+    reference_point_mm: crate::motion::Vec3::new(100.0, 0.0, 200.0),
+    addresses: "GMSTFXZUWRIKPQLN",
+    g_codes: &[common::G_CODES, lathe_a::G_CODES, EXTRA],
+    m_codes: &[common::M_CODES, lathe_a::M_CODES],
+    params: &[PARAMS, DRY_RUN, SETTINGS],
+    time: TimeKeys {
+        rapid: [ParamKey::Number(1420, None), ParamKey::Number(1420, None), ParamKey::Number(1420, None)],
+        dry_run: ParamKey::Setting("dry_run_mm_min"),
+        feed_max: ParamKey::Number(1422, None),
+    },
+    thread: ThreadRules {
+        q_point: QPoint::Alarm,
+        arc_q_unit_deg: 0.001,
+        pull_out_speed: None,
+        after_end_feed: None,
+        repair_enable: None,
+        g32_pull_out: false,
+        g76: Some(G76Keys {
+            finishing: ParamKey::Number(5142, None),
+            pull_out: ParamKey::Number(5130, None),
+            angle: ParamKey::Number(5143, None),
+            dmin_um: ParamKey::Number(5140, None),
+            allowance: ParamKey::Number(5141, None),
+            allowance_to_mm: 0.001,
+            pull_out_angle: Some(ParamKey::Number(5131, None)),
+        }),
+    },
+    summary: "FANUC 0-T turning centre, G-code system A. X is a diameter, U/W incremental; lengths without \
+a decimal point are least input increments (X100 = 0.1 mm, X1 = 0.0001 inch under G20). Feed per \
+revolution (G99) at power on.",
+};

@@ -1,0 +1,5 @@
+(expect NCS-E07 line 4 col 14 on gsk980tdi)
+G97 S300 M03
+G0 X70 Z5
+G76 X60 Z-40 P3.68 Q1800 F6
+M30
