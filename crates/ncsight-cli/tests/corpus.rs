@@ -4,8 +4,13 @@
 
 mod common;
 
-/// Milling programmes go to fanuc0m, everything else to the GSK lathe.
+/// Milling programmes go to fanuc0m, FANUC-style lathe programmes to fanuc0t, the rest (GSK
+/// shop notes, LinuxCNC and other dialects) to the GSK lathe.
 fn machine_for(name: &str) -> &'static str {
+    const FANUC_LATHE: &[&str] = &["doosan-lynx300__", "icnc__", "cnclearn__2", "cnclearn__1002", "enier-cnc__weld", "cadekiely-haas__Caliper"];
+    if FANUC_LATHE.iter().any(|p| name.starts_with(p)) {
+        return "fanuc0t";
+    }
     const MILL: &[&str] = &[
         "printhor-asyncgcode__example3_nist_cycle_test.gcode",
         "enier-cnc__1006.nc",
