@@ -3,6 +3,7 @@
 
 pub mod diag;
 pub mod format;
+pub mod simulate;
 
 use clap::{Parser, Subcommand};
 use ncsight::profile::{self, Params, Profile};
@@ -129,6 +130,30 @@ enum Command {
         #[command(flatten)]
         machine: MachineArgs,
     },
+    /// Cut the stock with the programme and measure the thread it makes.
+    Simulate {
+        file: String,
+        #[command(flatten)]
+        machine: MachineArgs,
+        /// Job setup (TOML): stock and tools.
+        #[arg(long)]
+        setup: Option<String>,
+        /// Stock as DIAxLEN in mm (a bar, its face at Z0), e.g. 60x80.
+        #[arg(long)]
+        stock: Option<String>,
+        /// The thread it should be: M30x3.5, M30, 1/2-13UNC, or major=..,minor=..,pitch=..
+        #[arg(long)]
+        expect: Option<String>,
+        /// Output: text or json.
+        #[arg(long, default_value = "text")]
+        format: String,
+        /// Write the unrolled surface (z across, angle down) as a PNG.
+        #[arg(long)]
+        image: Option<String>,
+        /// Grid spacing DZ,DTHETA (mm, degrees).
+        #[arg(long)]
+        resolution: Option<String>,
+    },
     /// Write one self-contained HTML report (not built yet).
     Report {
         file: String,
@@ -192,6 +217,9 @@ pub fn main_with(args: impl IntoIterator<Item = std::ffi::OsString>, out: &mut d
         Command::Run { file, machine, format, output, operator } => run(&file, &machine, &operator, &format, output.as_deref(), out, err),
         Command::Check { files, machine } => check(&files, &machine, out, err),
         Command::Machines { machine } => machines(machine.as_deref(), out),
+        Command::Simulate { file, machine, setup: setup_file, stock, expect, format, image, resolution } => {
+            simulate(&file, &machine, setup_file.as_deref(), stock.as_deref(), expect.as_deref(), &format, image.as_deref(), resolution.as_deref(), out, err)
+        }
         Command::Report { .. } => Err(usage("`ncsight report` is not built yet: the HTML report comes with its own issue")),
         Command::Repair { machine, start, end, lead, tpi, rpm, measured, j, k } => {
             repair(&machine, &start, &end, lead, tpi, rpm, &measured, j, k, out, err)
@@ -369,6 +397,58 @@ fn check(files: &[String], m: &MachineArgs, out: &mut dyn Write, err: &mut dyn W
     }
     w.flush()?;
     Ok(if any_alarm { EXIT_ALARM } else { EXIT_OK })
+}
+
+#[allow(clippy::too_many_arguments)]
+fn simulate(
+    file: &str,
+    m: &MachineArgs,
+    setup_file: Option<&str>,
+    stock: Option<&str>,
+    expect: Option<&str>,
+    format: &str,
+    image: Option<&str>,
+    resolution: Option<&str>,
+    out: &mut dyn Write,
+    err: &mut dyn Write,
+) -> Result<i32, Failure> {
+    if format != "text" && format != "json" {
+        return Err(usage(format!("unknown format '{format}': choose text or json")));
+    }
+    let (params, switches) = setup(m, err)?;
+    let mut job = match setup_file {
+        Some(path) => {
+            let text = std::fs::read_to_string(path).map_err(|e| usage(format!("cannot read {path}: {e}")))?;
+            ncsight::stock::Setup::from_toml(&text).map_err(|e| usage(format!("{path}: {e}")))?
+        }
+        None => ncsight::stock::Setup::default(),
+    };
+    if let Some(s) = stock {
+        job.stock = Some(ncsight::stock::Setup::parse_stock(s).map_err(|e| usage(e.to_string()))?);
+    }
+    let opts = simulate::options(resolution, expect).map_err(usage)?;
+    let mut input = open(file)?;
+    let mut program = Program::new(params, switches, Mode::Run);
+    let shown = if file == "-" { "<stdin>" } else { file };
+    let mut records = Vec::new();
+    drive(&mut *input, &mut program, &mut |e, text| {
+        match e {
+            Event::Record(r) => records.push(r.clone()),
+            Event::Diagnostic(d) if d.is_alarm() => err.write_all(diag::render(shown, text, d).as_bytes())?,
+            Event::Diagnostic(_) => {}
+        }
+        Ok(())
+    })?;
+    let sim = ncsight::stock::measure::simulate(&records, &job, &opts).map_err(usage)?;
+    let body = if format == "json" { simulate::json(&sim.measurement) } else { simulate::text(&sim.measurement) };
+    out.write_all(body.as_bytes())?;
+    if let Some(path) = image {
+        let f = std::fs::File::create(path).map_err(|e| usage(format!("cannot write {path}: {e}")))?;
+        let mut w = io::BufWriter::new(f);
+        simulate::image(&sim, &mut w)?;
+        w.flush()?;
+    }
+    Ok(if program.status() == Status::Alarm { EXIT_ALARM } else { EXIT_OK })
 }
 
 #[allow(clippy::too_many_arguments)]

@@ -16,6 +16,7 @@ pub mod program;
 pub mod read;
 pub mod repair;
 pub mod source;
+pub mod stock;
 pub mod time;
 
 pub use alarm::{Diagnostic, Rule, Severity};

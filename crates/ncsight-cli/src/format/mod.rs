@@ -1,7 +1,7 @@
 //! Output formats: consumers of the event stream. Each writes as events arrive.
 
 mod canon;
-mod jsonl;
+pub mod jsonl;
 mod text;
 
 pub use canon::Canon;

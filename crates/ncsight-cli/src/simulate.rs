@@ -1,0 +1,108 @@
+//! `ncsight simulate`: run the programme, cut the stock, print the measurement and findings,
+//! and draw the unrolled surface as a PNG.
+
+use crate::format::{jsonl::json_str, num};
+use ncsight::stock::measure::{Measurement, SimOptions, Simulation};
+use std::io::{self, Write};
+
+fn opt(v: Option<f64>, decimals: usize) -> String {
+    v.map(|v| num(v, decimals)).unwrap_or_else(|| "null".into())
+}
+
+/// The measurement as one JSON object.
+pub fn json(m: &Measurement) -> String {
+    let findings: Vec<String> = m
+        .findings
+        .iter()
+        .map(|f| format!("{{\"kind\":\"{}\",\"line\":{},\"message\":{}}}", f.kind, f.line, json_str(&f.message)))
+        .collect();
+    let flanks = m.flank_angles_deg.map(|(a, b)| format!("[{},{}]", num(a, 2), num(b, 2))).unwrap_or_else(|| "null".into());
+    format!(
+        "{{\"stock_diameter_mm\":{},\"major_diameter_mm\":{},\"minor_diameter_mm\":{},\"depth_mm\":{},\"pitch_mm\":{},\"lead_mm\":{},\"hand\":{},\"starts\":{},\"start_spacing_deg\":{},\"flank_angles_deg\":{flanks},\"full_depth_length_mm\":{},\"runout_length_mm\":{},\"grid\":{{\"dz_mm\":{},\"dtheta_deg\":{},\"cell_updates\":{}}},\"findings\":[{}]}}\n",
+        num(m.stock_diameter_mm, 4),
+        opt(m.major_diameter_mm, 4),
+        opt(m.minor_diameter_mm, 4),
+        opt(m.depth_mm, 4),
+        opt(m.pitch_mm, 4),
+        opt(m.lead_mm, 4),
+        m.hand.map(|h| format!("\"{h}\"")).unwrap_or_else(|| "null".into()),
+        m.starts.map(|s| s.to_string()).unwrap_or_else(|| "null".into()),
+        opt(m.start_spacing_deg, 3),
+        opt(m.full_depth_length_mm, 3),
+        opt(m.runout_length_mm, 3),
+        num(m.dz_mm, 6),
+        num(m.dtheta_deg, 6),
+        m.cell_updates,
+        findings.join(",")
+    )
+}
+
+/// The measurement for a person.
+pub fn text(m: &Measurement) -> String {
+    let mut s = String::new();
+    let line = |s: &mut String, what: &str, v: Option<f64>, unit: &str| {
+        s.push_str(&format!("{what:<22} {}\n", v.map(|v| format!("{} {unit}", num(v, 4))).unwrap_or_else(|| "-".into())));
+    };
+    line(&mut s, "stock diameter", Some(m.stock_diameter_mm), "mm");
+    line(&mut s, "major diameter", m.major_diameter_mm, "mm");
+    line(&mut s, "minor diameter", m.minor_diameter_mm, "mm");
+    line(&mut s, "thread depth", m.depth_mm, "mm");
+    line(&mut s, "pitch", m.pitch_mm, "mm");
+    line(&mut s, "lead", m.lead_mm, "mm");
+    s.push_str(&format!("{:<22} {}\n", "hand", m.hand.unwrap_or("-")));
+    s.push_str(&format!("{:<22} {}\n", "starts", m.starts.map(|v| format!("{v}, {} deg apart", num(m.start_spacing_deg.unwrap_or(0.0), 2))).unwrap_or_else(|| "-".into())));
+    s.push_str(&format!(
+        "{:<22} {}\n",
+        "flank angles",
+        m.flank_angles_deg.map(|(a, b)| format!("{} + {} deg", num(a, 2), num(b, 2))).unwrap_or_else(|| "-".into())
+    ));
+    line(&mut s, "full-depth length", m.full_depth_length_mm, "mm");
+    line(&mut s, "run-out length", m.runout_length_mm, "mm");
+    s.push_str(&format!("{:<22} {} mm x {} deg, {} cell updates\n", "grid", num(m.dz_mm, 5), num(m.dtheta_deg, 4), m.cell_updates));
+    if m.findings.is_empty() {
+        s.push_str("findings               none\n");
+    }
+    for f in &m.findings {
+        s.push_str(&format!("finding {:<14} line {}: {}\n", f.kind, f.line, f.message));
+    }
+    s
+}
+
+/// The unrolled surface: z across, theta down, darker is deeper.
+pub fn image(sim: &Simulation, w: &mut dyn Write) -> io::Result<()> {
+    let g = sim.stock.grid;
+    let step = g.nz.div_ceil(2000).max(1);
+    let width = g.nz.div_ceil(step);
+    let (lo, hi) = sim.stock.r.iter().fold((f32::MAX, f32::MIN), |(a, b), v| (a.min(*v), b.max(*v)));
+    let span = (hi - lo).max(1e-6);
+    let mut data = Vec::with_capacity(width * g.ntheta);
+    for j in 0..g.ntheta {
+        let row = sim.stock.row(j);
+        for i in (0..g.nz).step_by(step) {
+            data.push((((row[i] - lo) / span) * 255.0) as u8);
+        }
+    }
+    let mut enc = png::Encoder::new(w, width as u32, g.ntheta as u32);
+    enc.set_color(png::ColorType::Grayscale);
+    enc.set_depth(png::BitDepth::Eight);
+    let mut writer = enc.write_header().map_err(io::Error::other)?;
+    writer.write_image_data(&data).map_err(io::Error::other)?;
+    Ok(())
+}
+
+/// Resolution `DZ,DTHETA` (mm, degrees).
+pub fn resolution(text: &str) -> Option<(f64, f64)> {
+    let (a, b) = text.split_once(',')?;
+    let (a, b): (f64, f64) = (a.trim().parse().ok()?, b.trim().parse().ok()?);
+    (a > 0.0 && b > 0.0 && a.is_finite() && b.is_finite()).then_some((a, b))
+}
+
+/// Options from the command line.
+pub fn options(res: Option<&str>, expect: Option<&str>) -> Result<SimOptions, String> {
+    let (dz, dt) = match res {
+        Some(r) => resolution(r).map(|(a, b)| (Some(a), Some(b))).ok_or_else(|| format!("--resolution {r}: write DZ,DTHETA in mm and degrees, e.g. 0.01,0.5"))?,
+        None => (None, None),
+    };
+    let expect = expect.map(ncsight::stock::standard::parse).transpose()?;
+    Ok(SimOptions { dz_mm: dz, dtheta_deg: dt, expect })
+}

@@ -1,0 +1,356 @@
+//! Running a programme's records through the stock, and measuring the thread that results from
+//! the cut surface, not from the programme: diameters, depth, pitch, lead, starts, flank angles,
+//! full-depth and run-out lengths, deviation from a named thread, and the findings (phase error
+//! between passes, a rapid into the stock, the tool past the stock's end).
+
+use super::lathe::{Finding, LatheStock};
+use super::standard::Expected;
+use super::{Bar, Setup, Tool};
+use crate::motion::{Op, Record};
+
+/// How the simulation is set up.
+#[derive(Debug, Clone, Default)]
+pub struct SimOptions {
+    /// Grid spacing along z, mm (default: from the thread: lead / 300, at most 0.01 mm).
+    pub dz_mm: Option<f64>,
+    /// Grid spacing around, degrees (default 0.5).
+    pub dtheta_deg: Option<f64>,
+    pub expect: Option<Expected>,
+}
+
+/// What was measured.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Measurement {
+    pub stock_diameter_mm: f64,
+    pub major_diameter_mm: Option<f64>,
+    pub minor_diameter_mm: Option<f64>,
+    pub depth_mm: Option<f64>,
+    pub pitch_mm: Option<f64>,
+    pub lead_mm: Option<f64>,
+    /// `right` when the groove moves toward -Z as the part turns in its positive (M03) direction,
+    /// `left` otherwise (docs/commands/simulate.md).
+    pub hand: Option<&'static str>,
+    pub starts: Option<u32>,
+    pub start_spacing_deg: Option<f64>,
+    /// Flank angles on the two sides of a groove (from the radial direction), degrees.
+    pub flank_angles_deg: Option<(f64, f64)>,
+    pub full_depth_length_mm: Option<f64>,
+    pub runout_length_mm: Option<f64>,
+    pub findings: Vec<Finding>,
+    pub dz_mm: f64,
+    pub dtheta_deg: f64,
+    pub cell_updates: u64,
+}
+
+/// A simulation: the stock after the programme and its measurement.
+pub struct Simulation {
+    pub stock: LatheStock,
+    pub measurement: Measurement,
+}
+
+/// The stock a thread programme implies when none is given: the deepest external cut plus twice
+/// the ISO external thread height 0.61343 x lead (docs: an assumption; give `--stock` to be sure).
+fn infer_bar(records: &[Record], internal: bool) -> Option<Bar> {
+    let mut lead = 0.0f64;
+    let (mut deepest, mut zmin, mut zmax) = (if internal { f64::MIN } else { f64::MAX }, f64::MAX, f64::MIN);
+    for r in records {
+        if let Op::Thread { from, to, lead_mm, .. } = r.op {
+            lead = lead.max(lead_mm);
+            for p in [from, to] {
+                deepest = if internal { deepest.max(p.x) } else { deepest.min(p.x) };
+                zmin = zmin.min(p.z);
+                zmax = zmax.max(p.z);
+            }
+        }
+    }
+    if lead == 0.0 {
+        return None;
+    }
+    let height = 0.61343 * lead;
+    let front = zmax.min(0.0).max(zmin);
+    let length = (front - zmin) + 2.0 * lead;
+    Some(if internal {
+        Bar { diameter_mm: 2.0 * (deepest + 10.0 * lead), length_mm: length, bore_mm: 2.0 * (deepest - height), front_z_mm: front }
+    } else {
+        Bar { diameter_mm: 2.0 * (deepest + height), length_mm: length, bore_mm: 0.0, front_z_mm: front }
+    })
+}
+
+/// Run the records through the stock and measure.
+pub fn simulate(records: &[Record], setup: &Setup, opts: &SimOptions) -> Result<Simulation, String> {
+    // The tool of each record follows the T words.
+    let mut tool_of = Vec::with_capacity(records.len());
+    let mut tool = setup.tool(0);
+    let mut turning = false;
+    for r in records {
+        match r.op {
+            Op::Tool { number, .. } => tool = setup.tool(number),
+            Op::Spindle { rpm, .. } => turning = rpm != 0.0,
+            _ => {}
+        }
+        tool_of.push((tool, turning));
+    }
+    let internal = records.iter().zip(&tool_of).any(|(r, (t, _))| r.op.is_thread() && t.internal);
+    let bar = match setup.stock.or_else(|| infer_bar(records, internal)) {
+        Some(b) => b,
+        None => return Err("no stock: give --stock DIAxLEN or a setup (the programme cuts no thread to infer it from)".into()),
+    };
+    let max_lead = records.iter().filter_map(|r| if let Op::Thread { lead_mm, .. } = r.op { Some(lead_mm) } else { None }).fold(0.0, f64::max);
+    let dz = opts.dz_mm.unwrap_or(if max_lead > 0.0 { (max_lead / 300.0).min(0.01) } else { 0.01 });
+    let dtheta = opts.dtheta_deg.unwrap_or(0.5);
+    if !(dz > 0.0 && dtheta > 0.0 && dtheta <= 90.0) {
+        return Err("the grid spacing must be more than 0 (and at most 90 degrees around)".into());
+    }
+    let ntheta = (360.0 / dtheta).round() as usize;
+    let cells = (bar.length_mm / dz) * ntheta as f64;
+    if cells > 400e6 {
+        return Err(format!("a grid of {cells:.0} cells is too large: coarsen --resolution"));
+    }
+    let mut stock = LatheStock::new(bar, internal, dz, ntheta);
+    // Where the tool is before the first rapid is the machine's business, not the programme's
+    // (the power-on position): motion up to the end of the first rapid is not cut.
+    let first_rapid = records.iter().position(|r| matches!(r.op, Op::Rapid { .. })).unwrap_or(0);
+    for (r, (t, turning)) in records.iter().zip(&tool_of).skip(first_rapid + 1) {
+        stock.apply(r, t, *turning);
+    }
+    let mut m = measure(&stock, records, &tool_of.iter().map(|(t, _)| *t).collect::<Vec<_>>());
+    if let Some(e) = &opts.expect {
+        deviation(&mut m, e, dz);
+    }
+    m.findings.splice(0..0, stock.findings.iter().cloned());
+    Ok(Simulation { stock, measurement: m })
+}
+
+fn deviation(m: &mut Measurement, e: &Expected, dz: f64) {
+    let checks = [("major diameter", m.major_diameter_mm, e.major_mm, 2.0 * dz + 0.02), ("minor diameter", m.minor_diameter_mm, e.minor_mm, 2.0 * dz + 0.02), ("pitch", m.pitch_mm, e.pitch_mm, dz + 0.005)];
+    for (what, got, want, tol) in checks {
+        match got {
+            Some(g) if (g - want).abs() > tol => m.findings.push(Finding {
+                kind: "deviation",
+                line: 0,
+                message: format!("{what} {g:.3} mm, {} has {want:.3} mm ({:+.3} mm)", e.name, g - want),
+            }),
+            None => m.findings.push(Finding { kind: "deviation", line: 0, message: format!("no {what} could be measured to compare with {}", e.name) }),
+            _ => {}
+        }
+    }
+}
+
+/// Groove bottoms along one row: the centres of the runs below `level`.
+fn grooves(row: &[f32], z: impl Fn(usize) -> f64, level: f32, internal: bool) -> Vec<f64> {
+    let mut out = Vec::new();
+    let mut start = None;
+    for (i, &v) in row.iter().enumerate() {
+        let inside = if internal { v > level } else { v < level };
+        match (inside, start) {
+            (true, None) => start = Some(i),
+            (false, Some(s)) => {
+                out.push((z(s) + z(i - 1)) / 2.0);
+                start = None;
+            }
+            _ => {}
+        }
+    }
+    out
+}
+
+fn median(mut v: Vec<f64>) -> Option<f64> {
+    if v.is_empty() {
+        return None;
+    }
+    v.sort_by(f64::total_cmp);
+    Some(v[v.len() / 2])
+}
+
+fn measure(stock: &LatheStock, records: &[Record], tools: &[Tool]) -> Measurement {
+    let g = stock.grid;
+    let internal = stock.internal;
+    let mut m = Measurement {
+        stock_diameter_mm: stock.bar.diameter_mm,
+        dz_mm: g.dz_mm,
+        dtheta_deg: g.dtheta_deg(),
+        cell_updates: stock.updates,
+        ..Measurement::default()
+    };
+    m.findings = phase_findings(records, tools);
+    // The threaded region: where thread records ran.
+    let (mut z_lo, mut z_hi) = (f64::MAX, f64::MIN);
+    for r in records {
+        if let Op::Thread { from, to, .. } = r.op {
+            z_lo = z_lo.min(from.z.min(to.z));
+            z_hi = z_hi.max(from.z.max(to.z));
+        }
+    }
+    if z_lo > z_hi {
+        return m;
+    }
+    let i_lo = ((z_lo - g.z0_mm) / g.dz_mm).floor().max(0.0) as usize;
+    let i_hi = (((z_hi - g.z0_mm) / g.dz_mm).ceil().max(0.0) as usize).min(g.nz - 1);
+    if i_lo >= i_hi {
+        return m;
+    }
+    // One pass in memory order: the extremes, and the envelope (the deepest point around each z).
+    let (mut lo, mut hi) = (f32::MAX, f32::MIN);
+    let mut envelope = vec![if internal { f32::MIN } else { f32::MAX }; i_hi - i_lo + 1];
+    for j in 0..g.ntheta {
+        for (e, &v) in envelope.iter_mut().zip(&stock.row(j)[i_lo..=i_hi]) {
+            lo = lo.min(v);
+            hi = hi.max(v);
+            *e = if internal { e.max(v) } else { e.min(v) };
+        }
+    }
+    // External: the crest is the largest radius, the root the smallest; a bore the other way
+    // round, and its major diameter is still the largest.
+    let (major_r, minor_r) = (hi, lo);
+    let depth = (major_r - minor_r) as f64;
+    m.major_diameter_mm = Some(2.0 * major_r as f64);
+    m.minor_diameter_mm = Some(2.0 * minor_r as f64);
+    m.depth_mm = Some(depth);
+    if depth <= 2.0 * g.dz_mm {
+        return m;
+    }
+    // Groove bottoms: within 10 % of the depth from the root.
+    let root = if internal { major_r } else { minor_r };
+    let level = if internal { root - 0.1 * depth as f32 } else { root + 0.1 * depth as f32 };
+    let zf = |i: usize| g.z(i_lo + i);
+    let row0: Vec<f64> = grooves(&stock.row(0)[i_lo..=i_hi], zf, level, internal);
+    let pitch = median(row0.windows(2).map(|w| w[1] - w[0]).collect());
+    m.pitch_mm = pitch;
+    // Lead: follow one groove once around.
+    if let (Some(p), Some(&c0)) = (pitch, row0.get(row0.len() / 2)) {
+        let mut c = c0;
+        let mut ok = true;
+        // Look only a little around the groove being followed.
+        let span = ((2.0 * p / g.dz_mm).ceil() as usize).max(4);
+        for j in 1..=g.ntheta {
+            let ci = ((c - g.z0_mm) / g.dz_mm).round().max(0.0) as usize;
+            let (a, b) = (ci.saturating_sub(span).max(i_lo), (ci + span).min(i_hi));
+            if a >= b {
+                ok = false;
+                break;
+            }
+            let row = grooves(&stock.row(j % g.ntheta)[a..=b], |i| g.z(a + i), level, internal);
+            let next = row.iter().copied().min_by(|a, b| (a - c).abs().total_cmp(&(b - c).abs()));
+            match next {
+                Some(n) if (n - c).abs() < p / 2.0 => c = n,
+                _ => {
+                    ok = false;
+                    break;
+                }
+            }
+        }
+        if ok {
+            let shift = c - c0;
+            let lead = shift.abs();
+            if lead > g.dz_mm {
+                m.lead_mm = Some(lead);
+                m.hand = Some(if shift < 0.0 { "right" } else { "left" });
+                let starts = (lead / p).round().max(1.0) as u32;
+                m.starts = Some(starts);
+                m.start_spacing_deg = Some(360.0 / starts as f64);
+            }
+        }
+    }
+    // Flank angles: a middle groove of row 0, the points between 20 % and 80 % of the depth.
+    if let Some(&c) = row0.get(row0.len() / 2) {
+        let row = stock.row(0);
+        let ci = ((c - g.z0_mm) / g.dz_mm).round() as isize;
+        let fit = |dir: isize| -> Option<f64> {
+            let (mut pts, mut i) = (Vec::new(), ci);
+            while i >= 0 && (i as usize) < g.nz {
+                let d = (row[i as usize] - minor_r).abs() as f64 / depth;
+                let d = if internal { 1.0 - d } else { d };
+                if d > 0.8 {
+                    break;
+                }
+                if d >= 0.2 {
+                    pts.push((g.z(i as usize), row[i as usize] as f64));
+                }
+                i += dir;
+            }
+            if pts.len() < 3 {
+                return None;
+            }
+            let n = pts.len() as f64;
+            let (mz, mr) = (pts.iter().map(|p| p.0).sum::<f64>() / n, pts.iter().map(|p| p.1).sum::<f64>() / n);
+            let (sxy, sxx) = pts.iter().fold((0.0, 0.0), |(a, b), p| (a + (p.0 - mz) * (p.1 - mr), b + (p.0 - mz).powi(2)));
+            let slope = (sxy / sxx).abs(); // radial per axial
+            Some((1.0 / slope).atan().to_degrees())
+        };
+        if let (Some(a), Some(b)) = (fit(-1), fit(1)) {
+            m.flank_angles_deg = Some((a, b));
+        }
+    }
+    // Full depth and run-out along z, from the deepest point around each z.
+    let mut full = 0usize;
+    let mut partial = 0usize;
+    for &env in &envelope {
+        let reached = ((env - if internal { minor_r } else { major_r }).abs() as f64) / depth;
+        if reached >= 0.95 {
+            full += 1;
+        } else if reached > 0.05 {
+            partial += 1;
+        }
+    }
+    m.full_depth_length_mm = Some(full as f64 * g.dz_mm);
+    m.runout_length_mm = Some(partial as f64 * g.dz_mm);
+    m
+}
+
+/// Phase: a later pass of a thread that does not fall in the groove its first passes cut. The
+/// groove of a pass is where it would cross z = 0 in angle: `start angle - 360 z / lead`. A pass
+/// may sit off by as much as its flank infeed allows (G76, YASNAC K): the difference in depth
+/// times tan(half the tool angle).
+fn phase_findings(records: &[Record], tools: &[Tool]) -> Vec<Finding> {
+    struct Ref {
+        lead: f64,
+        line: u32,
+        grooves: Vec<f64>,
+        x: f64,
+    }
+    let mut refs: Vec<Ref> = Vec::new();
+    let mut out = Vec::new();
+    let mut prev_end = None;
+    for (r, tool) in records.iter().zip(tools) {
+        let Op::Thread { from, to, lead_mm, spindle_deg, rpm, .. } = r.op else {
+            prev_end = None;
+            continue;
+        };
+        let first_of_pass = prev_end != Some(from);
+        prev_end = Some(to);
+        if !first_of_pass {
+            continue;
+        }
+        let angle = if rpm >= 0.0 { spindle_deg } else { (360.0 - spindle_deg).rem_euclid(360.0) };
+        let dir = if rpm >= 0.0 { 1.0 } else { -1.0 };
+        let groove = (angle - dir * 360.0 * from.z / lead_mm).rem_euclid(360.0);
+        match refs.iter_mut().find(|f| (f.lead - lead_mm).abs() < 1e-9) {
+            None => refs.push(Ref { lead: lead_mm, line: r.span.line, grooves: vec![groove], x: from.x }),
+            Some(f) if f.line == r.span.line => f.grooves.push(groove),
+            Some(f) => {
+                let off = f
+                    .grooves
+                    .iter()
+                    .map(|g| {
+                        let d = (groove - g).rem_euclid(360.0);
+                        d.min(360.0 - d)
+                    })
+                    .fold(f64::MAX, f64::min);
+                let axial = off / 360.0 * lead_mm;
+                let half = (tool.included_angle_deg / 2.0).to_radians().tan();
+                let allowed = (from.x - f.x).abs() * half + 1e-3 * lead_mm + 1e-6;
+                if axial > allowed {
+                    out.push(Finding {
+                        kind: "phase",
+                        line: r.span.line,
+                        message: format!(
+                            "this pass is {off:.3} degrees ({axial:.4} mm along the thread) off the groove cut at line {}: it cuts a new groove",
+                            f.line
+                        ),
+                    });
+                }
+            }
+        }
+    }
+    out
+}
