@@ -3,6 +3,7 @@
 
 pub mod diag;
 pub mod format;
+pub mod report;
 pub mod simulate;
 
 use clap::{Parser, Subcommand};
@@ -154,11 +155,20 @@ enum Command {
         #[arg(long)]
         resolution: Option<String>,
     },
-    /// Write one self-contained HTML report (not built yet).
+    /// Write one self-contained HTML page that shows what the programme does.
     Report {
         file: String,
         #[command(flatten)]
         machine: MachineArgs,
+        #[command(flatten)]
+        operator: OperatorArgs,
+        /// Job setup (TOML) for the thread-form view.
+        #[arg(long)]
+        setup: Option<String>,
+        /// Stock as DIAxLEN for the thread-form view.
+        #[arg(long)]
+        stock: Option<String>,
+        /// The HTML file to write (standard output if omitted).
         #[arg(short = 'o', long = "output")]
         output: Option<String>,
     },
@@ -220,7 +230,9 @@ pub fn main_with(args: impl IntoIterator<Item = std::ffi::OsString>, out: &mut d
         Command::Simulate { file, machine, setup: setup_file, stock, expect, format, image, resolution } => {
             simulate(&file, &machine, setup_file.as_deref(), stock.as_deref(), expect.as_deref(), &format, image.as_deref(), resolution.as_deref(), out, err)
         }
-        Command::Report { .. } => Err(usage("`ncsight report` is not built yet: the HTML report comes with its own issue")),
+        Command::Report { file, machine, operator, setup: setup_file, stock, output } => {
+            report(&file, &machine, &operator, setup_file.as_deref(), stock.as_deref(), output.as_deref(), out, err)
+        }
         Command::Repair { machine, start, end, lead, tpi, rpm, measured, j, k } => {
             repair(&machine, &start, &end, lead, tpi, rpm, &measured, j, k, out, err)
         }
@@ -399,6 +411,90 @@ fn check(files: &[String], m: &MachineArgs, out: &mut dyn Write, err: &mut dyn W
     Ok(if any_alarm { EXIT_ALARM } else { EXIT_OK })
 }
 
+/// The job setup from `--setup` and `--stock`.
+fn job_setup(setup_file: Option<&str>, stock: Option<&str>) -> Result<ncsight::stock::Setup, Failure> {
+    let mut job = match setup_file {
+        Some(path) => {
+            let text = std::fs::read_to_string(path).map_err(|e| usage(format!("cannot read {path}: {e}")))?;
+            ncsight::stock::Setup::from_toml(&text).map_err(|e| usage(format!("{path}: {e}")))?
+        }
+        None => ncsight::stock::Setup::default(),
+    };
+    if let Some(s) = stock {
+        job.stock = Some(ncsight::stock::Setup::parse_stock(s).map_err(|e| usage(e.to_string()))?);
+    }
+    Ok(job)
+}
+
+#[allow(clippy::too_many_arguments)]
+fn report(
+    file: &str,
+    m: &MachineArgs,
+    operator: &OperatorArgs,
+    setup_file: Option<&str>,
+    stock: Option<&str>,
+    output: Option<&str>,
+    out: &mut dyn Write,
+    err: &mut dyn Write,
+) -> Result<i32, Failure> {
+    let (params, switches) = setup(m, err)?;
+    let opts = operator.options()?;
+    let job = job_setup(setup_file, stock)?;
+    // The page shows the source, so the report reads the whole file (the run still streams).
+    let source = if file == "-" {
+        let mut v = Vec::new();
+        io::stdin().read_to_end(&mut v)?;
+        v
+    } else {
+        std::fs::read(file).map_err(|e| usage(format!("cannot read {file}: {e}")))?
+    };
+    let mut settings = vec![format!("profile {} ({})", params.profile().name, params.profile().title)];
+    settings.extend(m.params.iter().map(|p| format!("--param {p}")));
+    if m.block_delete {
+        settings.push("block delete switch on".into());
+    }
+    if m.optional_stop {
+        settings.push("optional stop switch on".into());
+    }
+    if opts.single_block {
+        settings.push("single block".into());
+    }
+    settings.extend(opts.feed_hold_at.iter().map(|t| format!("FEED HOLD at {t} s")));
+    if let Some(t) = opts.reset_at {
+        settings.push(format!("RESET at {t} s"));
+    }
+    if opts.overrides.dry_run {
+        settings.push("dry run".into());
+    }
+    settings.push(format!("feed override {} %, rapid override {} %", opts.overrides.feed_pct, opts.overrides.rapid_pct));
+    settings.push("assumptions: docs/guide.md and docs/commands/*.md".into());
+    let mut program = Program::with_operator(params.clone(), switches, Mode::Run, opts);
+    let (mut records, mut diags) = (Vec::new(), Vec::new());
+    drive(&mut &source[..], &mut program, &mut |e, _| {
+        match e {
+            Event::Record(r) => records.push(r.clone()),
+            Event::Diagnostic(d) => diags.push(d.clone()),
+        }
+        Ok(())
+    })?;
+    let sim = if params.profile().is_lathe() && records.iter().any(|r| r.op.is_thread()) {
+        ncsight::stock::measure::simulate(&records, &job, &ncsight::stock::measure::SimOptions::default()).ok()
+    } else {
+        None
+    };
+    let shown = if file == "-" { "<stdin>" } else { file };
+    let page = report::Report { file_name: shown, source: &source, params: &params, records: &records, diagnostics: &diags, sim: sim.as_ref(), settings };
+    match output {
+        Some(path) => {
+            let mut w = io::BufWriter::new(std::fs::File::create(path).map_err(|e| usage(format!("cannot write {path}: {e}")))?);
+            page.write(&mut w)?;
+            w.flush()?;
+        }
+        None => page.write(out)?,
+    }
+    Ok(if program.status() == Status::Alarm { EXIT_ALARM } else { EXIT_OK })
+}
+
 #[allow(clippy::too_many_arguments)]
 fn simulate(
     file: &str,
@@ -416,16 +512,7 @@ fn simulate(
         return Err(usage(format!("unknown format '{format}': choose text or json")));
     }
     let (params, switches) = setup(m, err)?;
-    let mut job = match setup_file {
-        Some(path) => {
-            let text = std::fs::read_to_string(path).map_err(|e| usage(format!("cannot read {path}: {e}")))?;
-            ncsight::stock::Setup::from_toml(&text).map_err(|e| usage(format!("{path}: {e}")))?
-        }
-        None => ncsight::stock::Setup::default(),
-    };
-    if let Some(s) = stock {
-        job.stock = Some(ncsight::stock::Setup::parse_stock(s).map_err(|e| usage(e.to_string()))?);
-    }
+    let job = job_setup(setup_file, stock)?;
     let opts = simulate::options(resolution, expect).map_err(usage)?;
     let mut input = open(file)?;
     let mut program = Program::new(params, switches, Mode::Run);

@@ -1,0 +1,27 @@
+//! `ncsight report`: one self-contained page; programme text never becomes markup.
+
+mod common;
+
+#[test]
+fn report_is_self_contained_and_escapes_programme_text() {
+    let dir = std::env::temp_dir().join(format!("ncsight-report-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let prog = dir.join("evil.nc");
+    std::fs::write(&prog, "(<script>alert(1)</script>)\n(<img src=x onerror=alert(2)>)\nG0 X10 Z5\nM30\n").unwrap();
+    let out = dir.join("r.html");
+    let (code, _, err) = common::ncsight(&["report", prog.to_str().unwrap(), "--machine", "gsk980tdi", "-o", out.to_str().unwrap()]);
+    // The second comment closes at `alert(2)`: what follows is an alarm on the controller too; the
+    // page is written all the same.
+    assert!(code == 0 || code == 1, "{err}");
+    let html = std::fs::read_to_string(&out).unwrap();
+    assert!(html.starts_with("<!DOCTYPE html>"));
+    // Exactly the page's own two script elements, and no markup from the programme.
+    assert_eq!(html.matches("<script").count(), 2, "only the page's own scripts");
+    assert!(!html.contains("<img"));
+    assert!(html.contains("\\u003cscript\\u003ealert(1)"));
+    // Nothing fetched from anywhere (the only URL is the SVG namespace name, which is no request).
+    for bad in ["src=\"http", "href=\"http", "url(http", "import(", "fetch("] {
+        assert!(!html.contains(bad), "{bad}");
+    }
+    let _ = std::fs::remove_dir_all(dir);
+}
