@@ -623,8 +623,9 @@ mod g76 {
                 .filter(|w| matches!(w[0].op, Op::Rapid { .. }) && matches!(w[1].op, Op::Thread { .. }))
                 .map(|w| match w[1].op { Op::Thread { from, spindle_deg, .. } => (k - (from.x - 30.0), spindle_deg), _ => unreachable!() })
                 .collect();
-            let finishing = passes.iter().filter(|p| (p.0 - k).abs() < 1e-9).count();
-            prop_assert_eq!(finishing as u32, m);
+            // With no finishing allowance the last roughing pass is at k too.
+            let at_k = passes.iter().filter(|p| (p.0 - k).abs() < 1e-9).count() as u32;
+            prop_assert_eq!(at_k, m + u32::from(d_mm == 0.0));
             let rough: Vec<f64> = passes[..passes.len() - m as usize].iter().map(|p| p.0).collect();
             prop_assert!((rough.last().unwrap() - (k - d_mm)).abs() < 1e-9, "{:?} k {} d {}", rough, k, d_mm);
             for w in rough.windows(2) {
