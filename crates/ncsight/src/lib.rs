@@ -6,6 +6,7 @@
 
 pub mod alarm;
 pub mod cycles;
+pub mod dialect;
 pub mod geom;
 pub mod interp;
 pub mod machine;
