@@ -30,6 +30,13 @@ pub struct Outcome {
     pub warnings: Vec<Diagnostic>,
 }
 
+impl Outcome {
+    fn clear(&mut self) {
+        self.records.clear();
+        self.warnings.clear();
+    }
+}
+
 /// Switches on the operator's panel that change what a programme does.
 #[derive(Debug, Clone, Copy, Default)]
 pub struct Switches {
@@ -53,7 +60,7 @@ struct Step<'a> {
     params: &'a Params,
     span: Span,
     st: Modal,
-    out: Outcome,
+    out: &'a mut Outcome,
 }
 
 impl Step<'_> {
@@ -194,28 +201,50 @@ impl Interpreter {
     /// A held-back thread run end is made now, with its pull-out: the input ended, or the next
     /// block alarmed (the controller finishes the thread it is cutting).
     pub fn flush_pending(&mut self) -> Outcome {
-        let mut step = Step { profile: self.profile, params: &self.params, span: Span::default(), st: self.state.clone(), out: Outcome::default() };
+        let mut out = Outcome::default();
+        self.flush_pending_into(&mut out);
+        out
+    }
+
+    /// [`Interpreter::flush_pending`] into `out` (emptied first), reusing its allocations.
+    pub fn flush_pending_into(&mut self, out: &mut Outcome) {
+        out.clear();
+        if self.state.thread.pending.is_none() {
+            return;
+        }
+        let mut step = Step { profile: self.profile, params: &self.params, span: Span::default(), st: self.state.clone(), out };
         if let Some(p) = step.st.thread.pending.take() {
             thread::flush(&mut step, p, true);
         }
         self.state = step.st;
-        step.out
     }
 
     /// Execute one block. On an alarm nothing changes.
     pub fn execute(&mut self, block: &Block) -> Result<Outcome, Diagnostic> {
+        let mut out = Outcome::default();
+        self.execute_into(block, &mut out)?;
+        Ok(out)
+    }
+
+    /// [`Interpreter::execute`] into `out` (emptied first), reusing its allocations; on an
+    /// alarm `out` is left empty.
+    pub fn execute_into(&mut self, block: &Block, out: &mut Outcome) -> Result<(), Diagnostic> {
+        out.clear();
         if block.block_delete && self.switches.block_delete {
-            return Ok(Outcome::default());
+            return Ok(());
         }
-        let mut step = Step { profile: self.profile, params: &self.params, span: block.span, st: self.state.clone(), out: Outcome::default() };
-        run_block(&mut step, block, self.switches)?;
+        let mut step = Step { profile: self.profile, params: &self.params, span: block.span, st: self.state.clone(), out };
+        if let Err(d) = run_block(&mut step, block, self.switches) {
+            step.out.clear();
+            return Err(d);
+        }
         // Single block stops after the block's last record (a held-back thread run end carries
         // its own mark).
         if let Some(last) = step.out.records.iter_mut().rev().find(|r| r.span == block.span) {
             last.block_end = true;
         }
         self.state = step.st;
-        Ok(step.out)
+        Ok(())
     }
 }
 
@@ -223,12 +252,12 @@ impl Interpreter {
 fn collect<'w>(
     step: &mut Step,
     block: &'w Block,
-) -> Result<(Words, Vec<(&'w Word, &'static GDef)>, Vec<(&'w Word, Option<&'static MDef>)>), Diagnostic> {
+) -> Result<(Words<'w>, Vec<(&'w Word, &'static GDef)>, Vec<(&'w Word, Option<&'static MDef>)>), Diagnostic> {
     let profile = step.profile;
-    let mut words = Words::default();
+    let mut words = Words::new(&block.words);
     let mut gs = Vec::new();
     let mut ms = Vec::new();
-    for w in &block.words {
+    for (i, w) in block.words.iter().enumerate() {
         let letter = w.letter;
         if !profile.takes_address(letter) {
             return Err(step.alarm(
@@ -268,7 +297,7 @@ fn collect<'w>(
                 ms.push((w, profile.m_code(w.value as u32)));
             }
             _ => {
-                if let Some(old) = words.insert(*w) {
+                if let Some(old) = words.insert(i) {
                     return Err(step.alarm(
                         Rule::DuplicateWord,
                         w.span,

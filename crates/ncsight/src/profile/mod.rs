@@ -346,7 +346,17 @@ impl Profile {
     }
 
     pub fn param(&self, key: ParamKey) -> Option<(usize, &'static ParamDef)> {
-        self.all_params().enumerate().find(|(_, p)| p.key == key)
+        // Plain loops: this runs for every parameter read of every block.
+        let mut i = 0;
+        for table in self.params {
+            for p in table.iter() {
+                if p.key == key {
+                    return Some((i, p));
+                }
+                i += 1;
+            }
+        }
+        None
     }
 
     /// Every parameter and setting, in order.
