@@ -47,6 +47,7 @@ pub struct Switches {
 }
 
 /// The interpreter of one programme run.
+#[derive(Clone)]
 pub struct Interpreter {
     profile: &'static Profile,
     params: Params,
