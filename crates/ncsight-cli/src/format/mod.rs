@@ -68,31 +68,53 @@ pub fn push_fixed(out: &mut String, v: f64, decimals: usize) {
         }
         return;
     };
-    if v.is_sign_negative() && scaled != 0 {
-        out.push('-');
-    }
+    // Right to left: the fraction, the point, the integer part, the sign.
+    let mut buf = [0u8; 32];
+    let mut at = buf.len();
     let pow = POW10[decimals];
-    let mut digits = [0u8; 20];
-    let mut n = 0;
-    let mut int_part = scaled / pow;
-    loop {
-        digits[n] = b'0' + (int_part % 10) as u8;
-        n += 1;
-        int_part /= 10;
-        if int_part == 0 {
-            break;
-        }
-    }
-    out.extend(digits[..n].iter().rev().map(|&d| d as char));
     if decimals > 0 {
-        out.push('.');
-        let mut frac = scaled % pow;
-        for d in digits[..decimals].iter_mut().rev() {
-            *d = b'0' + (frac % 10) as u8;
-            frac /= 10;
-        }
-        out.extend(digits[..decimals].iter().map(|&d| d as char));
+        at = write_digits(&mut buf, at, scaled % pow, decimals);
+        at -= 1;
+        buf[at] = b'.';
     }
+    let int_part = scaled / pow;
+    let int_digits = int_part.checked_ilog10().unwrap_or(0) as usize + 1;
+    at = write_digits(&mut buf, at, int_part, int_digits);
+    if v.is_sign_negative() && scaled != 0 {
+        at -= 1;
+        buf[at] = b'-';
+    }
+    out.push_str(std::str::from_utf8(&buf[at..]).expect("ASCII digits"));
+}
+
+/// "00", "01", ..., "99".
+const DIGIT_PAIRS: [u8; 200] = {
+    let mut t = [0u8; 200];
+    let mut i = 0;
+    while i < 100 {
+        t[2 * i] = b'0' + (i / 10) as u8;
+        t[2 * i + 1] = b'0' + (i % 10) as u8;
+        i += 1;
+    }
+    t
+};
+
+/// Write the last `count` decimal digits of `n` (zero-padded) ending before `end`, two at a
+/// time; returns where they start.
+fn write_digits(buf: &mut [u8], end: usize, mut n: u64, count: usize) -> usize {
+    let mut at = end;
+    let start = end - count;
+    while at - start >= 2 {
+        let pair = (n % 100) as usize * 2;
+        n /= 100;
+        at -= 2;
+        buf[at..at + 2].copy_from_slice(&DIGIT_PAIRS[pair..pair + 2]);
+    }
+    if at > start {
+        at -= 1;
+        buf[at] = b'0' + (n % 10) as u8;
+    }
+    at
 }
 
 const POW10: [u64; 10] = [1, 10, 100, 1_000, 10_000, 100_000, 1_000_000, 10_000_000, 100_000_000, 1_000_000_000];

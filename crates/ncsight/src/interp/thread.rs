@@ -61,7 +61,7 @@ impl Step<'_> {
         let f = words.take(b'F');
         let i = if inch_i { words.take(b'I') } else { None };
         let e = if e_word { words.take(b'E') } else { None };
-        let given: Vec<Word> = [f, i, e].into_iter().flatten().collect();
+        let given: Vec<Word> = [f, i, e].into_iter().flatten().copied().collect();
         if given.len() > 1 {
             return Err(self.alarm(
                 Rule::DuplicateWord,
@@ -137,7 +137,7 @@ impl Step<'_> {
         }
         // Above 360 degrees counts as 360 (= 0): seed 001 Q rule 2, seed 002.
         let deg = (w.value * unit_deg).min(360.0);
-        Ok(Some((wrap_deg(deg), w)))
+        Ok(Some((wrap_deg(deg), *w)))
     }
 
     /// J and K into the values in force. Returns whether J or K was written in this block.

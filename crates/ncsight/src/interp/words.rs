@@ -23,13 +23,14 @@ impl<'w> Words<'w> {
         Words { all, slots: [0; 26], present: 0, used: 0 }
     }
 
-    fn slot(&self, i: usize) -> Option<Word> {
-        self.slots[i].checked_sub(1).map(|k| self.all[k as usize])
+    fn slot(&self, i: usize) -> Option<&'w Word> {
+        let all: &'w [Word] = self.all;
+        self.slots[i].checked_sub(1).map(|k| &all[k as usize])
     }
 
     /// Store the word at `index` of the block; returns the earlier word of the same address if
     /// there was one.
-    pub fn insert(&mut self, index: usize) -> Option<Word> {
+    pub fn insert(&mut self, index: usize) -> Option<&'w Word> {
         let i = idx(self.all[index].letter);
         let old = self.slot(i);
         self.slots[i] = u16::try_from(index + 1).expect("a block holds fewer words than a line has bytes");
@@ -42,12 +43,12 @@ impl<'w> Words<'w> {
     }
 
     /// Look at a word without taking it.
-    pub fn peek(&self, letter: u8) -> Option<Word> {
+    pub fn peek(&self, letter: u8) -> Option<&'w Word> {
         self.slot(idx(letter))
     }
 
     /// Take a word: it is now used by a command.
-    pub fn take(&mut self, letter: u8) -> Option<Word> {
+    pub fn take(&mut self, letter: u8) -> Option<&'w Word> {
         let i = idx(letter);
         let w = self.slot(i)?;
         self.used |= 1 << i;
@@ -55,7 +56,7 @@ impl<'w> Words<'w> {
     }
 
     /// The first word, in the order written, that no command took.
-    pub fn first_unused(&self) -> Option<Word> {
+    pub fn first_unused(&self) -> Option<&'w Word> {
         let unused = self.present & !self.used;
         (0..26).filter(|i| unused & (1 << i) != 0).filter_map(|i| self.slot(i)).min_by_key(|w| w.span.col)
     }
