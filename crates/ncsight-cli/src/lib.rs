@@ -211,6 +211,9 @@ fn open(file: &str) -> Result<Box<dyn BufRead>, Failure> {
     Ok(Box::new(BufReader::with_capacity(1 << 16, f)))
 }
 
+/// Output buffer: large writes, few system calls.
+const OUTPUT_BUFFER_BYTES: usize = 256 * 1024;
+
 /// Longest line kept; the rest of a longer line is skipped, so memory stays bounded (the
 /// reader still sees the line as too long).
 const MAX_KEPT_LINE_BYTES: usize = 64 * 1024;
@@ -288,11 +291,12 @@ fn run(
     let mut stdout_buf;
     let writer: &mut dyn Write = match output {
         Some(path) => {
-            file_out = io::BufWriter::new(std::fs::File::create(path).map_err(|e| usage(format!("cannot write {path}: {e}")))?);
+            let f = std::fs::File::create(path).map_err(|e| usage(format!("cannot write {path}: {e}")))?;
+            file_out = io::BufWriter::with_capacity(OUTPUT_BUFFER_BYTES, f);
             &mut file_out
         }
         None => {
-            stdout_buf = io::BufWriter::new(out);
+            stdout_buf = io::BufWriter::with_capacity(OUTPUT_BUFFER_BYTES, out);
             &mut stdout_buf
         }
     };

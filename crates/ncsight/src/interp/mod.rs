@@ -60,7 +60,8 @@ struct Step<'a> {
     profile: &'static Profile,
     params: &'a Params,
     span: Span,
-    st: Modal,
+    /// The interpreter's modal state, changed in place (restored from a copy on an alarm).
+    st: &'a mut Modal,
     out: &'a mut Outcome,
 }
 
@@ -213,11 +214,10 @@ impl Interpreter {
         if self.state.thread.pending.is_none() {
             return;
         }
-        let mut step = Step { profile: self.profile, params: &self.params, span: Span::default(), st: self.state.clone(), out };
+        let mut step = Step { profile: self.profile, params: &self.params, span: Span::default(), st: &mut self.state, out };
         if let Some(p) = step.st.thread.pending.take() {
             thread::flush(&mut step, p, true);
         }
-        self.state = step.st;
     }
 
     /// Execute one block. On an alarm nothing changes.
@@ -234,9 +234,11 @@ impl Interpreter {
         if block.block_delete && self.switches.block_delete {
             return Ok(());
         }
-        let mut step = Step { profile: self.profile, params: &self.params, span: block.span, st: self.state.clone(), out };
+        let before = self.state.clone();
+        let mut step = Step { profile: self.profile, params: &self.params, span: block.span, st: &mut self.state, out };
         if let Err(d) = run_block(&mut step, block, self.switches) {
             step.out.clear();
+            self.state = before;
             return Err(d);
         }
         // Single block stops after the block's last record (a held-back thread run end carries
@@ -244,7 +246,6 @@ impl Interpreter {
         if let Some(last) = step.out.records.iter_mut().rev().find(|r| r.span == block.span) {
             last.block_end = true;
         }
-        self.state = step.st;
         Ok(())
     }
 }
