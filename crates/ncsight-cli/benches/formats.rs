@@ -10,7 +10,7 @@ use ncsight_cli::format;
 fn records() -> Vec<(&'static str, Event)> {
     let from = Vec3::new(1.25, -3.5, 10.0);
     let to = Vec3::new(12.3456, 7.891, -5.0);
-    let mut rec = |name, op| {
+    let rec = |name, op| {
         let mut r = Record::new(Span::new(12, 1, 10), op);
         r.t_s = 123.456789;
         (name, Event::Record(r))

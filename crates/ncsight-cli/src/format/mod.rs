@@ -122,7 +122,7 @@ const POW10: [u64; 10] = [1, 10, 100, 1_000, 10_000, 100_000, 1_000_000, 10_000_
 /// |v| * 10^decimals rounded half to even from the exact binary value (as `format!` rounds),
 /// when it fits a u64 and `decimals` is at most 9; `None` otherwise (also NaN and infinities).
 fn scaled_abs(v: f64, decimals: usize) -> Option<u64> {
-    if decimals >= POW10.len() || !(v.abs() < 1e9) {
+    if decimals >= POW10.len() || v.is_nan() || v.abs() >= 1e9 {
         return None;
     }
     let bits = v.abs().to_bits();

@@ -30,16 +30,16 @@ fn take_hole_words(step: &mut Step, words: &mut Words) -> Result<(), Diagnostic>
     let (_, _, n) = step.st.plane.axes();
     let inc = step.st.incremental;
     if let Some(w) = words.take(letter(n)) {
-        let v = step.length(&w)?;
+        let v = step.length(w)?;
         step.st.drill.bottom = Some((v, inc));
     }
     if let Some(w) = words.take(b'R') {
-        let v = step.length(&w)?;
+        let v = step.length(w)?;
         step.st.drill.r = Some((v, inc));
     }
     if let Some(w) = words.take(b'Q') {
         // Peck depth or shift; "Q is always positive" (seed 003 8.1.3, 8.1.7).
-        let v = step.length(&w)?.abs();
+        let v = step.length(w)?.abs();
         step.st.drill.q = Some(v);
     }
     if let Some(w) = words.take(b'P') {
@@ -80,7 +80,7 @@ pub(super) fn block(step: &mut Step, words: &mut Words, kind: DrillKind, enterin
     let mut target = [step.st.pos.axis(a), step.st.pos.axis(b)];
     for (i, axis) in [a, b].into_iter().enumerate() {
         if let Some(w) = words.take(letter(axis)) {
-            let v = step.length(&w)?;
+            let v = step.length(w)?;
             if step.st.incremental {
                 delta[i] = v;
                 target[i] += v;

@@ -693,11 +693,11 @@ fn axis_target(step: &mut Step, words: &mut Words) -> Result<(Vec3, [bool; 3]), 
             ));
         }
         if let Some(w) = abs_w {
-            let v = step.length(&w)? * scale;
+            let v = step.length(w)? * scale;
             target.set_axis(axis, if step.st.incremental { step.st.pos.axis(axis) + v } else { v });
             given[axis] = true;
         } else if let Some(w) = inc_w {
-            let v = step.length(&w)? * scale;
+            let v = step.length(w)? * scale;
             target.set_axis(axis, step.st.pos.axis(axis) + v);
             given[axis] = true;
         }
@@ -755,7 +755,7 @@ fn resolve_arc(step: &mut Step, words: &mut Words, from: Vec3, to: Vec3, dir: Ar
             let msg = format!("{}: ignored, R takes precedence over the centre words", w.text());
             step.warn(Rule::TextIgnored, w.span, msg);
         }
-        let r = step.length(&rw)?;
+        let r = step.length(rw)?;
         return match geom::arc_from_radius(from, to, plane, dir, r, ARC_TOLERANCE_MM) {
             Ok(g) => Ok(ArcOutcome::Arc(g)),
             Err(ArcError::ZeroArcWithR) => {
@@ -781,7 +781,7 @@ fn resolve_arc(step: &mut Step, words: &mut Words, from: Vec3, to: Vec3, dir: Ar
     for (w, axis) in [(ca, a), (cb, b)] {
         if let Some(w) = w {
             // I, J, K: from the start point to the centre, radius values (TDi help G02/03).
-            let v = step.length(&w)?;
+            let v = step.length(w)?;
             center.set_axis(axis, from.axis(axis) + v);
         }
     }

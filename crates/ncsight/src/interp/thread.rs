@@ -70,7 +70,7 @@ impl Step<'_> {
             ));
         }
         if let Some(w) = f.or(e) {
-            let lead = self.lead_word(&w);
+            let lead = self.lead_word(w);
             if !(lead > 0.0 && lead <= max_mm + 1e-9) {
                 return Err(self.alarm(
                     Rule::ValueOutOfRange,
@@ -145,14 +145,14 @@ impl Step<'_> {
         let j = words.take(b'J');
         let k = words.take(b'K');
         if let Some(w) = j {
-            let v = self.length(&w)?;
+            let v = self.length(w)?;
             if v < 0.0 && !j_may_be_negative {
                 return Err(self.alarm(Rule::ValueOutOfRange, w.span, format!("{}: J of {gname} cannot be negative", w.text())));
             }
             self.st.thread.j = Some(v);
         }
         if let Some(w) = k {
-            let v = self.length(&w)?;
+            let v = self.length(w)?;
             if v < 0.0 && !k_may_be_negative {
                 return Err(self.alarm(Rule::ValueOutOfRange, w.span, format!("{}: K of {gname} has no sign (0 or more)", w.text())));
             }
@@ -453,7 +453,7 @@ fn cycle(step: &mut Step, words: &mut Words, kind: CycleKind, explicit: bool) ->
         CycleKind::Yasnac => {
             // Seed 004 (4): K, with its sign, shifts this pass's start along Z (flank infeed).
             if let Some(w) = words.take(b'K') {
-                flank_mm = step.length(&w)?;
+                flank_mm = step.length(w)?;
             }
         }
     }
@@ -490,7 +490,7 @@ fn cycle(step: &mut Step, words: &mut Words, kind: CycleKind, explicit: bool) ->
         c.x = remembered.map(|m| m.x).unwrap_or(a.x);
     }
     match taper_word {
-        Some(w) => step.st.thread.taper_mm = step.length(&w)?,
+        Some(w) => step.st.thread.taper_mm = step.length(w)?,
         None if explicit => step.st.thread.taper_mm = 0.0,
         None => {} // continuation blocks keep the taper (assumption, docs/threads.md)
     }
