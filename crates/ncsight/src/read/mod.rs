@@ -102,10 +102,12 @@ pub struct Line {
 impl Line {
     /// Empty it for the next line, keeping the allocations.
     fn reset(&mut self) {
-        for b in self.blocks.drain(..).flatten() {
-            let mut words = b.words;
-            words.clear();
-            self.spare.push(words);
+        while let Some(item) = self.blocks.pop() {
+            if let Ok(b) = item {
+                let mut words = b.words;
+                words.clear();
+                self.spare.push(words);
+            }
         }
         self.warnings.clear();
         self.tape_mark = false;
