@@ -297,43 +297,58 @@ fn open(file: &str) -> Result<Box<dyn BufRead>, Failure> {
     Ok(Box::new(BufReader::with_capacity(1 << 16, f)))
 }
 
+/// Output buffer: large writes, few system calls.
+const OUTPUT_BUFFER_BYTES: usize = 256 * 1024;
+
+/// Longest line kept; the rest of a longer line is skipped, so memory stays bounded (the
+/// reader still sees the line as too long).
+const MAX_KEPT_LINE_BYTES: usize = 64 * 1024;
+
 /// Feed a reader line by line into a programme; `on_event` gets each event with its line text.
+/// Lines are read in place in the reader's buffer; one is copied only when it straddles two reads.
 fn drive(
     input: &mut dyn BufRead,
     program: &mut Program,
     on_event: &mut dyn FnMut(&Event, &[u8]) -> io::Result<()>,
 ) -> Result<(), Failure> {
-    let mut line = Vec::with_capacity(256);
     let mut pending: io::Result<()> = Ok(());
-    loop {
-        line.clear();
-        // A line longer than the reader's limit is cut here, so memory stays bounded; the reader
-        // still sees it as too long.
-        let n = Read::take(&mut *input, 64 * 1024).read_until(b'\n', &mut line)?;
-        if n == 0 {
-            break;
-        }
-        if !line.ends_with(b"\n") && n == 64 * 1024 {
-            // Skip the rest of a huge line.
-            let mut sink = Vec::new();
-            loop {
-                sink.clear();
-                let m = Read::take(&mut *input, 64 * 1024).read_until(b'\n', &mut sink)?;
-                if m == 0 || sink.ends_with(b"\n") {
-                    break;
-                }
-            }
-        }
-        let text = &line;
+    let mut feed = |program: &mut Program, text: &[u8], pending: &mut io::Result<()>| {
         program.feed_line(text, &mut |e| {
             if pending.is_ok() {
-                pending = on_event(&e, text);
+                *pending = on_event(&e, text);
             }
         });
-        pending.as_ref().map_err(|e| io::Error::new(e.kind(), e.to_string()))?;
-        if !program.wants_more() {
+    };
+    let mut partial = Vec::new();
+    let mut skipping = false;
+    while program.wants_more() {
+        let buf = input.fill_buf()?;
+        if buf.is_empty() {
+            if !partial.is_empty() && !skipping {
+                feed(program, &partial, &mut pending);
+            }
             break;
         }
+        let (piece, complete) = match buf.iter().position(|&b| b == b'\n') {
+            Some(k) => (&buf[..=k], true),
+            None => (buf, false),
+        };
+        let used = piece.len();
+        if complete && partial.is_empty() && !skipping {
+            feed(program, piece, &mut pending);
+        } else if !skipping {
+            let room = MAX_KEPT_LINE_BYTES - partial.len();
+            partial.extend_from_slice(&piece[..used.min(room)]);
+            if complete || partial.len() == MAX_KEPT_LINE_BYTES {
+                feed(program, &partial, &mut pending);
+                partial.clear();
+                skipping = !complete;
+            }
+        } else if complete {
+            skipping = false;
+        }
+        input.consume(used);
+        pending.as_ref().map_err(|e| io::Error::new(e.kind(), e.to_string()))?;
     }
     program.finish(&mut |e| {
         if pending.is_ok() {
@@ -362,11 +377,12 @@ fn run(
     let mut stdout_buf;
     let writer: &mut dyn Write = match output {
         Some(path) => {
-            file_out = io::BufWriter::new(std::fs::File::create(path).map_err(|e| usage(format!("cannot write {path}: {e}")))?);
+            let f = std::fs::File::create(path).map_err(|e| usage(format!("cannot write {path}: {e}")))?;
+            file_out = io::BufWriter::with_capacity(OUTPUT_BUFFER_BYTES, f);
             &mut file_out
         }
         None => {
-            stdout_buf = io::BufWriter::new(out);
+            stdout_buf = io::BufWriter::with_capacity(OUTPUT_BUFFER_BYTES, out);
             &mut stdout_buf
         }
     };
@@ -394,7 +410,7 @@ fn check(files: &[String], m: &MachineArgs, out: &mut dyn Write, err: &mut dyn W
     let mut w = io::BufWriter::new(out);
     for file in files {
         let mut input = open(file)?;
-        let mut program = Program::new(params.clone(), switches, Mode::Check);
+        let mut program = Program::diagnostics_only(params.clone(), switches);
         let (mut alarms, mut warnings) = (0usize, 0usize);
         let shown = if file == "-" { "<stdin>" } else { file.as_str() };
         drive(&mut *input, &mut program, &mut |e, text| {

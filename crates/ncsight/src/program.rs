@@ -8,11 +8,11 @@
 //!   it was) and reading goes on; blocks after the programme end are still read for their syntax.
 
 use crate::alarm::{Diagnostic, Rule};
-use crate::interp::{Interpreter, Switches};
+use crate::interp::{Interpreter, Outcome, Switches};
 use crate::machine::{Machine, Options};
 use crate::motion::Record;
 use crate::profile::Params;
-use crate::read::Reader;
+use crate::read::{Line, Reader};
 use crate::source::Span;
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -40,10 +40,18 @@ pub enum Status {
 }
 
 pub struct Program {
+    core: Core,
+    machine: Machine,
+}
+
+/// Everything but the operator machine: reading and interpreting, with buffers reused from line
+/// to line so that the steady state allocates nothing.
+struct Core {
     reader: Reader,
     interp: Interpreter,
-    machine: Machine,
     mode: Mode,
+    /// Records are passed on (through the machine); off for a diagnostics-only check.
+    records: bool,
     line_no: u32,
     status: Status,
     eof: bool,
@@ -51,8 +59,8 @@ pub struct Program {
     alarms: usize,
     /// Span of the last block read (for the end-of-input warning).
     last_span: Span,
-    /// Events of the line being read, reused.
-    buffer: Vec<Event>,
+    line: Line,
+    outcome: Outcome,
 }
 
 impl Program {
@@ -64,36 +72,49 @@ impl Program {
     pub fn with_operator(params: Params, switches: Switches, mode: Mode, operator: Options) -> Program {
         let style = params.profile().alarm_style;
         Program {
-            reader: Reader::new(style),
             machine: Machine::new(&params, operator),
-            interp: Interpreter::new(params, switches),
-            mode,
-            line_no: 0,
-            status: Status::Running,
-            eof: false,
-            warned_after_end: false,
-            alarms: 0,
-            last_span: Span::new(1, 1, 1),
-            buffer: Vec::new(),
+            core: Core {
+                reader: Reader::new(style),
+                interp: Interpreter::new(params, switches),
+                mode,
+                records: true,
+                line_no: 0,
+                status: Status::Running,
+                eof: false,
+                warned_after_end: false,
+                alarms: 0,
+                last_span: Span::new(1, 1, 1),
+                line: Line::default(),
+                outcome: Outcome::default(),
+            },
         }
     }
 
+    /// Check mode that passes on only the diagnostics: records are neither timed nor passed on
+    /// (the same diagnostics as [`Mode::Check`], without the time model's work).
+    pub fn diagnostics_only(params: Params, switches: Switches) -> Program {
+        let mut p = Program::new(params, switches, Mode::Check);
+        p.core.records = false;
+        p
+    }
+
     pub fn interpreter(&self) -> &Interpreter {
-        &self.interp
+        &self.core.interp
     }
 
     pub fn status(&self) -> Status {
-        self.status
+        self.core.status
     }
 
     /// Alarms reported so far.
     pub fn alarm_count(&self) -> usize {
-        self.alarms
+        self.core.alarms
     }
 
     /// Whether more lines can change anything.
     pub fn wants_more(&self) -> bool {
-        !self.eof && !self.machine.is_reset() && (self.mode == Mode::Check || self.status == Status::Running)
+        let c = &self.core;
+        !c.eof && !self.machine.is_reset() && (c.mode == Mode::Check || c.status == Status::Running)
     }
 
     /// Seconds from programme start so far (the cycle time once the input has ended).
@@ -103,33 +124,67 @@ impl Program {
 
     /// Feed the next line (with or without its line break).
     pub fn feed_line(&mut self, raw: &[u8], sink: &mut dyn FnMut(Event)) {
-        self.line_no += 1;
+        self.core.line_no += 1;
         if !self.wants_more() {
             return;
         }
-        let mut events = std::mem::take(&mut self.buffer);
-        self.interpret_line(raw, &mut |e| events.push(e));
-        for e in events.drain(..) {
-            self.machine.push(e, sink);
+        let Program { core, machine } = self;
+        if core.records {
+            core.interpret_line(raw, &mut |e| machine.push(e, sink));
+        } else {
+            core.interpret_line(raw, sink);
         }
-        self.buffer = events;
     }
 
+    /// The input has ended. Without M02/M30 the controller would wait at the last block; say so.
+    pub fn finish(&mut self, sink: &mut dyn FnMut(Event)) {
+        let c = &mut self.core;
+        let mut events = Vec::new();
+        if c.status != Status::Alarm && !self.machine.is_reset() {
+            c.flush_pending(&mut |e| events.push(e));
+        }
+        if c.status == Status::Running && !self.machine.is_reset() {
+            let d = Diagnostic::new(
+                Rule::NoProgramEnd,
+                c.interp.profile().alarm_style,
+                c.last_span,
+                "the programme has no end (M02 or M30): the controller stops after the last block",
+            );
+            events.push(Event::Diagnostic(d));
+        }
+        if !c.records {
+            events.into_iter().for_each(sink);
+            return;
+        }
+        for e in events {
+            self.machine.push(e, sink);
+        }
+        self.machine.finish(sink);
+    }
+}
+
+impl Core {
     /// Read and interpret one line; the events are untimed.
     fn interpret_line(&mut self, raw: &[u8], sink: &mut dyn FnMut(Event)) {
-        let line = self.reader.read_line(self.line_no, raw);
-        for w in line.warnings {
+        let mut line = std::mem::take(&mut self.line);
+        self.reader.read_line_into(self.line_no, raw, &mut line);
+        self.interpret_blocks(&mut line, sink);
+        self.line = line;
+    }
+
+    fn interpret_blocks(&mut self, line: &mut Line, sink: &mut dyn FnMut(Event)) {
+        for w in line.warnings.drain(..) {
             sink(Event::Diagnostic(w));
         }
         if line.end_of_file {
             self.eof = true;
         }
-        for item in line.blocks {
+        for item in &line.blocks {
             let block = match item {
                 Ok(b) => b,
                 Err(d) => {
                     self.flush_pending(sink);
-                    self.alarm(d, sink);
+                    self.alarm(d.clone(), sink);
                     if self.mode == Mode::Run {
                         return;
                     }
@@ -153,14 +208,9 @@ impl Program {
                 }
                 continue;
             }
-            match self.interp.execute(&block) {
-                Ok(out) => {
-                    for w in out.warnings {
-                        sink(Event::Diagnostic(w));
-                    }
-                    for r in out.records {
-                        sink(Event::Record(r));
-                    }
+            match self.interp.execute_into(block, &mut self.outcome) {
+                Ok(()) => {
+                    self.pass_on(sink);
                     if self.interp.state().ended {
                         self.status = Status::Ended;
                         if self.mode == Mode::Run {
@@ -180,10 +230,22 @@ impl Program {
         }
     }
 
-    fn flush_pending(&mut self, sink: &mut dyn FnMut(Event)) {
-        for r in self.interp.flush_pending().records {
-            sink(Event::Record(r));
+    /// The warnings and (if wanted) the records of the outcome buffer, in that order.
+    fn pass_on(&mut self, sink: &mut dyn FnMut(Event)) {
+        for w in self.outcome.warnings.drain(..) {
+            sink(Event::Diagnostic(w));
         }
+        if self.records {
+            for r in self.outcome.records.drain(..) {
+                sink(Event::Record(r));
+            }
+        }
+    }
+
+    fn flush_pending(&mut self, sink: &mut dyn FnMut(Event)) {
+        self.interp.flush_pending_into(&mut self.outcome);
+        self.outcome.warnings.clear(); // a flush reports its records only
+        self.pass_on(sink);
     }
 
     fn alarm(&mut self, d: Diagnostic, sink: &mut dyn FnMut(Event)) {
@@ -192,27 +254,6 @@ impl Program {
             self.status = Status::Alarm;
         }
         sink(Event::Diagnostic(d));
-    }
-
-    /// The input has ended. Without M02/M30 the controller would wait at the last block; say so.
-    pub fn finish(&mut self, sink: &mut dyn FnMut(Event)) {
-        let mut events = Vec::new();
-        if self.status != Status::Alarm && !self.machine.is_reset() {
-            self.flush_pending(&mut |e| events.push(e));
-        }
-        if self.status == Status::Running && !self.machine.is_reset() {
-            let d = Diagnostic::new(
-                Rule::NoProgramEnd,
-                self.interp.profile().alarm_style,
-                self.last_span,
-                "the programme has no end (M02 or M30): the controller stops after the last block",
-            );
-            events.push(Event::Diagnostic(d));
-        }
-        for e in events {
-            self.machine.push(e, sink);
-        }
-        self.machine.finish(sink);
     }
 }
 

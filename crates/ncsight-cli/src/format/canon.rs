@@ -3,31 +3,51 @@
 //! radius, four decimals. A thread record is wrapped as rs274 wraps a G33 move:
 //! `START_SPEED_FEED_SYNC(lead,0)`, the move, `STOP_SPEED_FEED_SYNCH()`.
 
-use super::{fixed, Format};
+use super::{push_fixed, Format};
 use ncsight::motion::{ArcDir, Op, Plane};
 use ncsight::{Event, Profile, Vec3};
+use std::fmt::Write as _;
 use std::io::{self, Write};
 
 pub struct Canon {
     feed: Option<f64>,
     plane: Option<Plane>,
     rpm: Option<f64>,
+    /// The text of the record being written, reused.
+    text: String,
+}
+
+/// `v` with four decimals and the separator rs274 puts after an argument.
+fn arg(s: &mut String, v: f64) {
+    push_fixed(s, v, 4);
+    s.push_str(", ");
+}
+
+/// A straight move's arguments: X, Y, Z and the three rotary axes at zero.
+fn xyz(s: &mut String, name: &str, p: &Vec3) {
+    s.push_str(name);
+    s.push('(');
+    arg(s, p.x);
+    arg(s, p.y);
+    push_fixed(s, p.z, 4);
+    s.push_str(", 0.0000, 0.0000, 0.0000)\n");
 }
 
 impl Canon {
     pub fn new(_profile: &'static Profile) -> Canon {
-        Canon { feed: None, plane: None, rpm: None }
+        Canon { feed: None, plane: None, rpm: None, text: String::with_capacity(256) }
     }
 
-    fn set_feed(&mut self, f: f64, w: &mut dyn Write) -> io::Result<()> {
+    fn set_feed(&mut self, f: f64, s: &mut String) {
         if self.feed != Some(f) {
             self.feed = Some(f);
-            writeln!(w, "SET_FEED_RATE({})", fixed(f, 4))?;
+            s.push_str("SET_FEED_RATE(");
+            push_fixed(s, f, 4);
+            s.push_str(")\n");
         }
-        Ok(())
     }
 
-    fn arc(&mut self, to: &Vec3, center: &Vec3, plane: Plane, dir: ArcDir, w: &mut dyn Write) -> io::Result<()> {
+    fn arc(&mut self, to: &Vec3, center: &Vec3, plane: Plane, dir: ArcDir, s: &mut String) {
         if self.plane != Some(plane) {
             self.plane = Some(plane);
             let name = match plane {
@@ -35,24 +55,70 @@ impl Canon {
                 Plane::ZX => "CANON_PLANE_XZ",
                 Plane::YZ => "CANON_PLANE_YZ",
             };
-            writeln!(w, "SELECT_PLANE({name})")?;
+            let _ = writeln!(s, "SELECT_PLANE({name})");
         }
         let (a, b, n) = plane.axes();
-        let rot = if dir == ArcDir::Cw { -1 } else { 1 };
-        writeln!(
-            w,
-            "ARC_FEED({}, {}, {}, {}, {rot}, {}, 0.0000, 0.0000, 0.0000)",
-            fixed(to.axis(a), 4),
-            fixed(to.axis(b), 4),
-            fixed(center.axis(a), 4),
-            fixed(center.axis(b), 4),
-            fixed(to.axis(n), 4)
-        )
+        s.push_str("ARC_FEED(");
+        for v in [to.axis(a), to.axis(b), center.axis(a), center.axis(b)] {
+            arg(s, v);
+        }
+        s.push_str(if dir == ArcDir::Cw { "-1, " } else { "1, " });
+        push_fixed(s, to.axis(n), 4);
+        s.push_str(", 0.0000, 0.0000, 0.0000)\n");
     }
-}
 
-fn xyz(p: &Vec3) -> String {
-    format!("{}, {}, {}, 0.0000, 0.0000, 0.0000", fixed(p.x, 4), fixed(p.y, 4), fixed(p.z, 4))
+    /// The calls of one record, each line ending in a line break.
+    fn record(&mut self, op: &Op, s: &mut String) {
+        match op {
+            Op::Rapid { to, .. } => xyz(s, "STRAIGHT_TRAVERSE", to),
+            Op::Feed { to, feed_mm_min, .. } => {
+                self.set_feed(*feed_mm_min, s);
+                xyz(s, "STRAIGHT_FEED", to);
+            }
+            Op::Arc { to, center, plane, dir, feed_mm_min, .. } => {
+                self.set_feed(*feed_mm_min, s);
+                self.arc(to, center, *plane, *dir, s);
+            }
+            Op::Thread { to, lead_mm, .. } => {
+                let _ = writeln!(s, "START_SPEED_FEED_SYNC({lead_mm:.6},0)");
+                xyz(s, "STRAIGHT_FEED", to);
+                s.push_str("STOP_SPEED_FEED_SYNCH()\n");
+            }
+            Op::ThreadArc { to, center, plane, dir, lead_mm, .. } => {
+                let _ = writeln!(s, "START_SPEED_FEED_SYNC({lead_mm:.6},0)");
+                self.arc(to, center, *plane, *dir, s);
+                s.push_str("STOP_SPEED_FEED_SYNCH()\n");
+            }
+            Op::Dwell { seconds } => {
+                s.push_str("DWELL(");
+                push_fixed(s, *seconds, 4);
+                s.push_str(")\n");
+            }
+            Op::Spindle { oriented: true, .. } => {
+                self.rpm = None;
+                s.push_str("ORIENT_SPINDLE(0, 0.0000, 0)\n");
+            }
+            Op::Spindle { rpm, .. } => {
+                if *rpm == 0.0 {
+                    self.rpm = None;
+                    s.push_str("STOP_SPINDLE_TURNING(0)\n");
+                    return;
+                }
+                if self.rpm != Some(rpm.abs()) {
+                    self.rpm = Some(rpm.abs());
+                    s.push_str("SET_SPINDLE_SPEED(0, ");
+                    push_fixed(s, rpm.abs(), 4);
+                    s.push_str(")\n");
+                }
+                s.push_str(if *rpm > 0.0 { "START_SPINDLE_CLOCKWISE(0)\n" } else { "START_SPINDLE_COUNTERCLOCKWISE(0)\n" });
+            }
+            Op::Tool { number, .. } => {
+                let _ = writeln!(s, "SELECT_TOOL({number})\nCHANGE_TOOL({number})");
+            }
+            Op::Stop { .. } => s.push_str("PROGRAM_STOP()\n"),
+            Op::End { .. } => s.push_str("PROGRAM_END()\n"),
+        }
+    }
 }
 
 impl Format for Canon {
@@ -62,49 +128,11 @@ impl Format for Canon {
 
     fn event(&mut self, e: &Event, w: &mut dyn Write) -> io::Result<()> {
         let Event::Record(r) = e else { return Ok(()) };
-        match &r.op {
-            Op::Rapid { to, .. } => writeln!(w, "STRAIGHT_TRAVERSE({})", xyz(to)),
-            Op::Feed { to, feed_mm_min, .. } => {
-                self.set_feed(*feed_mm_min, w)?;
-                writeln!(w, "STRAIGHT_FEED({})", xyz(to))
-            }
-            Op::Arc { to, center, plane, dir, feed_mm_min, .. } => {
-                self.set_feed(*feed_mm_min, w)?;
-                self.arc(to, center, *plane, *dir, w)
-            }
-            Op::Thread { to, lead_mm, .. } => {
-                writeln!(w, "START_SPEED_FEED_SYNC({lead_mm:.6},0)")?;
-                writeln!(w, "STRAIGHT_FEED({})", xyz(to))?;
-                writeln!(w, "STOP_SPEED_FEED_SYNCH()")
-            }
-            Op::ThreadArc { to, center, plane, dir, lead_mm, .. } => {
-                writeln!(w, "START_SPEED_FEED_SYNC({lead_mm:.6},0)")?;
-                self.arc(to, center, *plane, *dir, w)?;
-                writeln!(w, "STOP_SPEED_FEED_SYNCH()")
-            }
-            Op::Dwell { seconds } => writeln!(w, "DWELL({})", fixed(*seconds, 4)),
-            Op::Spindle { oriented: true, .. } => {
-                self.rpm = None;
-                writeln!(w, "ORIENT_SPINDLE(0, 0.0000, 0)")
-            }
-            Op::Spindle { rpm, .. } => {
-                if *rpm == 0.0 {
-                    self.rpm = None;
-                    return writeln!(w, "STOP_SPINDLE_TURNING(0)");
-                }
-                if self.rpm != Some(rpm.abs()) {
-                    self.rpm = Some(rpm.abs());
-                    writeln!(w, "SET_SPINDLE_SPEED(0, {})", fixed(rpm.abs(), 4))?;
-                }
-                if *rpm > 0.0 {
-                    writeln!(w, "START_SPINDLE_CLOCKWISE(0)")
-                } else {
-                    writeln!(w, "START_SPINDLE_COUNTERCLOCKWISE(0)")
-                }
-            }
-            Op::Tool { number, .. } => writeln!(w, "SELECT_TOOL({number})\nCHANGE_TOOL({number})"),
-            Op::Stop { .. } => writeln!(w, "PROGRAM_STOP()"),
-            Op::End { .. } => writeln!(w, "PROGRAM_END()"),
-        }
+        let mut s = std::mem::take(&mut self.text);
+        s.clear();
+        self.record(&r.op, &mut s);
+        let written = w.write_all(s.as_bytes());
+        self.text = s;
+        written
     }
 }

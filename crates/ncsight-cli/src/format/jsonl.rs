@@ -1,35 +1,62 @@
 //! `--format jsonl`: one JSON object per line, field for field as ../shared/spec/INTERFACE.md
 //! says. Lathe X is shown as a diameter; axes the machine lacks are left out.
 
-use super::{num, Format};
+use super::{push_num, Format};
 use ncsight::motion::{ArcDir, Op};
 use ncsight::{Event, Profile, Severity, Vec3};
+use std::fmt::Write as _;
 use std::io::{self, Write};
 
 pub struct Jsonl {
-    profile: &'static Profile,
+    /// Which of X, Y, Z the machine has.
+    axes: [bool; 3],
     x_scale: f64,
+    /// The line being written, reused.
+    text: String,
 }
 
 impl Jsonl {
     pub fn new(profile: &'static Profile) -> Jsonl {
-        Jsonl { profile, x_scale: if profile.diameter_x { 2.0 } else { 1.0 } }
+        let axes = ['X', 'Y', 'Z'].map(|a| profile.axes.contains(a));
+        Jsonl { axes, x_scale: if profile.diameter_x { 2.0 } else { 1.0 }, text: String::with_capacity(256) }
     }
 
     fn point(&self, s: &mut String, p: &Vec3, prefix: &str) {
-        for (axis, name) in [(0usize, "x"), (1, "y"), (2, "z")] {
-            if !self.profile.axes.contains(name.to_ascii_uppercase().as_str()) {
+        for (axis, name) in ["x", "y", "z"].into_iter().enumerate() {
+            if !self.axes[axis] {
                 continue;
             }
             let v = if axis == 0 { p.x * self.x_scale } else { p.axis(axis) };
-            s.push_str(&format!(",\"{prefix}{name}\":{}", num(v, 4)));
+            field(s, prefix, name);
+            push_num(s, v, 4);
         }
     }
 }
 
+/// `,"<prefix><name>":` before a value.
+fn field(s: &mut String, prefix: &str, name: &str) {
+    s.push_str(",\"");
+    s.push_str(prefix);
+    s.push_str(name);
+    s.push_str("\":");
+}
+
+/// A field with a number of at most `decimals` decimals.
+fn num_field(s: &mut String, name: &str, v: f64, decimals: usize) {
+    field(s, "", name);
+    push_num(s, v, decimals);
+}
+
+/// Append a JSON string literal.
 /// A JSON string literal.
 pub fn json_str(s: &str) -> String {
     let mut out = String::with_capacity(s.len() + 2);
+    push_json_str(&mut out, s);
+    out
+}
+
+/// Append a JSON string literal.
+pub fn push_json_str(out: &mut String, s: &str) {
     out.push('"');
     for c in s.chars() {
         match c {
@@ -38,23 +65,98 @@ pub fn json_str(s: &str) -> String {
             '\n' => out.push_str("\\n"),
             '\r' => out.push_str("\\r"),
             '\t' => out.push_str("\\t"),
-            c if (c as u32) < 0x20 => out.push_str(&format!("\\u{:04x}", c as u32)),
+            c if (c as u32) < 0x20 => {
+                let _ = write!(out, "\\u{:04x}", c as u32);
+            }
             c => out.push(c),
         }
     }
     out.push('"');
-    out
 }
 
 fn thread_fields(s: &mut String, lead: f64, long_axis: &str, spindle_deg: f64, rpm: f64) {
     // 360 - 1e-7 would print as 360: keep the interface's [0, 360).
-    let deg = if num(spindle_deg, 6) == "360" { 0.0 } else { spindle_deg };
-    s.push_str(&format!(
-        ",\"lead\":{},\"long_axis\":\"{long_axis}\",\"spindle_deg\":{},\"rpm\":{}",
-        num(lead, 6),
-        num(deg, 6),
-        num(rpm, 3)
-    ));
+    let deg = if super::num(spindle_deg, 6) == "360" { 0.0 } else { spindle_deg };
+    num_field(s, "lead", lead, 6);
+    let _ = write!(s, ",\"long_axis\":\"{long_axis}\"");
+    num_field(s, "spindle_deg", deg, 6);
+    num_field(s, "rpm", rpm, 3);
+}
+
+fn dir_field(s: &mut String, dir: ArcDir) {
+    s.push_str(if dir == ArcDir::Cw { ",\"dir\":\"cw\"" } else { ",\"dir\":\"ccw\"" });
+}
+
+impl Jsonl {
+    fn line(&self, e: &Event, s: &mut String) {
+        match e {
+            Event::Diagnostic(d) => {
+                let kind = if d.severity() == Severity::Alarm { "alarm" } else { "warning" };
+                let _ = write!(s, "{{\"line\":{},\"kind\":\"{kind}\",\"code\":", d.span.line);
+                push_json_str(s, d.code);
+                s.push_str(",\"message\":");
+                push_json_str(s, &d.message);
+                let _ = write!(s, ",\"col\":{}", d.span.col);
+                if let Some(h) = &d.hint {
+                    s.push_str(",\"hint\":");
+                    push_json_str(s, h);
+                }
+                s.push('}');
+            }
+            Event::Record(r) => {
+                let _ = write!(s, "{{\"line\":{},\"kind\":\"{}\"", r.span.line, r.op.kind());
+                match &r.op {
+                    Op::Rapid { to, .. } => self.point(s, to, ""),
+                    Op::Feed { to, feed_mm_min, .. } => {
+                        self.point(s, to, "");
+                        num_field(s, "f", *feed_mm_min, 4);
+                    }
+                    Op::Arc { to, center, dir, feed_mm_min, .. } => {
+                        self.point(s, to, "");
+                        self.point(s, center, "c");
+                        dir_field(s, *dir);
+                        num_field(s, "f", *feed_mm_min, 4);
+                    }
+                    Op::Thread { to, lead_mm, long_axis, spindle_deg, rpm, .. } => {
+                        self.point(s, to, "");
+                        thread_fields(s, *lead_mm, long_axis.as_str(), *spindle_deg, *rpm);
+                    }
+                    Op::ThreadArc { to, center, dir, lead_mm, long_axis, spindle_deg, rpm, .. } => {
+                        self.point(s, to, "");
+                        self.point(s, center, "c");
+                        dir_field(s, *dir);
+                        thread_fields(s, *lead_mm, long_axis.as_str(), *spindle_deg, *rpm);
+                    }
+                    Op::Dwell { seconds } => num_field(s, "seconds", *seconds, 6),
+                    Op::Spindle { rpm, surface_m_min, position_mode, oriented } => {
+                        num_field(s, "rpm", *rpm, 3);
+                        if *oriented {
+                            s.push_str(",\"oriented\":true");
+                        }
+                        if let Some(v) = surface_m_min {
+                            num_field(s, "surface_m_min", *v, 3);
+                        }
+                        s.push_str(if *position_mode { ",\"mode\":\"position\"" } else { ",\"mode\":\"speed\"" });
+                    }
+                    Op::Tool { number, offset } => {
+                        let _ = write!(s, ",\"tool\":{number}");
+                        if let Some(o) = offset {
+                            let _ = write!(s, ",\"offset\":{o}");
+                        }
+                    }
+                    Op::Stop { reason } => {
+                        let _ = write!(s, ",\"reason\":\"{}\"", reason.as_str());
+                    }
+                    Op::End { code } => {
+                        let _ = write!(s, ",\"code\":\"M{code:02}\"");
+                    }
+                }
+                num_field(s, "t", r.t_s, 6);
+                s.push('}');
+            }
+        }
+        s.push('\n');
+    }
 }
 
 impl Format for Jsonl {
@@ -63,72 +165,11 @@ impl Format for Jsonl {
     }
 
     fn event(&mut self, e: &Event, w: &mut dyn Write) -> io::Result<()> {
-        let mut s = String::with_capacity(128);
-        match e {
-            Event::Diagnostic(d) => {
-                let kind = if d.severity() == Severity::Alarm { "alarm" } else { "warning" };
-                s.push_str(&format!(
-                    "{{\"line\":{},\"kind\":\"{kind}\",\"code\":{},\"message\":{},\"col\":{}",
-                    d.span.line,
-                    json_str(d.code),
-                    json_str(&d.message),
-                    d.span.col
-                ));
-                if let Some(h) = &d.hint {
-                    s.push_str(&format!(",\"hint\":{}", json_str(h)));
-                }
-                s.push('}');
-            }
-            Event::Record(r) => {
-                s.push_str(&format!("{{\"line\":{},\"kind\":\"{}\"", r.span.line, r.op.kind()));
-                match &r.op {
-                    Op::Rapid { to, .. } => self.point(&mut s, to, ""),
-                    Op::Feed { to, feed_mm_min, .. } => {
-                        self.point(&mut s, to, "");
-                        s.push_str(&format!(",\"f\":{}", num(*feed_mm_min, 4)));
-                    }
-                    Op::Arc { to, center, dir, feed_mm_min, .. } => {
-                        self.point(&mut s, to, "");
-                        self.point(&mut s, center, "c");
-                        let d = if *dir == ArcDir::Cw { "cw" } else { "ccw" };
-                        s.push_str(&format!(",\"dir\":\"{d}\",\"f\":{}", num(*feed_mm_min, 4)));
-                    }
-                    Op::Thread { to, lead_mm, long_axis, spindle_deg, rpm, .. } => {
-                        self.point(&mut s, to, "");
-                        thread_fields(&mut s, *lead_mm, long_axis.as_str(), *spindle_deg, *rpm);
-                    }
-                    Op::ThreadArc { to, center, dir, lead_mm, long_axis, spindle_deg, rpm, .. } => {
-                        self.point(&mut s, to, "");
-                        self.point(&mut s, center, "c");
-                        let d = if *dir == ArcDir::Cw { "cw" } else { "ccw" };
-                        s.push_str(&format!(",\"dir\":\"{d}\""));
-                        thread_fields(&mut s, *lead_mm, long_axis.as_str(), *spindle_deg, *rpm);
-                    }
-                    Op::Dwell { seconds } => s.push_str(&format!(",\"seconds\":{}", num(*seconds, 6))),
-                    Op::Spindle { rpm, surface_m_min, position_mode, oriented } => {
-                        s.push_str(&format!(",\"rpm\":{}", num(*rpm, 3)));
-                        if *oriented {
-                            s.push_str(",\"oriented\":true");
-                        }
-                        if let Some(v) = surface_m_min {
-                            s.push_str(&format!(",\"surface_m_min\":{}", num(*v, 3)));
-                        }
-                        let mode = if *position_mode { "position" } else { "speed" };
-                        s.push_str(&format!(",\"mode\":\"{mode}\""));
-                    }
-                    Op::Tool { number, offset } => {
-                        s.push_str(&format!(",\"tool\":{number}"));
-                        if let Some(o) = offset {
-                            s.push_str(&format!(",\"offset\":{o}"));
-                        }
-                    }
-                    Op::Stop { reason } => s.push_str(&format!(",\"reason\":\"{}\"", reason.as_str())),
-                    Op::End { code } => s.push_str(&format!(",\"code\":\"M{code:02}\"")),
-                }
-                s.push_str(&format!(",\"t\":{}}}", num(r.t_s, 6)));
-            }
-        }
-        s.push('\n');
-        w.write_all(s.as_bytes())
+        let mut s = std::mem::take(&mut self.text);
+        s.clear();
+        self.line(e, &mut s);
+        let written = w.write_all(s.as_bytes());
+        self.text = s;
+        written
     }
 }

@@ -1,29 +1,111 @@
 //! `--format text`: one aligned line per record for a person reading a terminal.
 
-use super::{num, Format};
+use super::{push_num, Format};
 use ncsight::motion::{ArcDir, Op};
 use ncsight::{Event, Profile, Vec3};
+use std::fmt::Write as _;
 use std::io::{self, Write};
 
 pub struct Text {
     profile: &'static Profile,
+    /// What the record does, then the whole line: reused.
+    what: String,
+    line: String,
+}
+
+fn dir_name(dir: ArcDir) -> &'static str {
+    if dir == ArcDir::Cw { "cw" } else { "ccw" }
 }
 
 impl Text {
     pub fn new(profile: &'static Profile) -> Text {
-        Text { profile }
+        Text { profile, what: String::with_capacity(128), line: String::with_capacity(160) }
     }
 
-    fn point(&self, p: &Vec3, prefix: &str) -> String {
-        let mut parts = Vec::new();
-        for (axis, name) in [(0usize, 'X'), (1, 'Y'), (2, 'Z')] {
+    fn point(&self, s: &mut String, p: &Vec3) {
+        let mut first = true;
+        for (axis, name) in ['X', 'Y', 'Z'].into_iter().enumerate() {
             if !self.profile.axes.contains(name) {
                 continue;
             }
+            if !first {
+                s.push(' ');
+            }
+            first = false;
             let v = if axis == 0 && self.profile.diameter_x { p.x * 2.0 } else { p.axis(axis) };
-            parts.push(format!("{prefix}{name}{}", num(v, 4)));
+            s.push(name);
+            push_num(s, v, 4);
         }
-        parts.join(" ")
+    }
+
+    fn thread(&self, s: &mut String, lead_mm: f64, long_axis: &str, spindle_deg: f64, rpm: f64) {
+        s.push_str("  lead ");
+        push_num(s, lead_mm, 4);
+        let _ = write!(s, " along {long_axis}  from ");
+        push_num(s, spindle_deg, 3);
+        s.push_str(" deg  ");
+        push_num(s, rpm, 1);
+        s.push_str(" rpm");
+    }
+
+    /// What a record does, without its line, kind and time.
+    fn what(&self, op: &Op, s: &mut String) {
+        match op {
+            Op::Rapid { to, .. } => self.point(s, to),
+            Op::Feed { to, feed_mm_min, .. } => {
+                self.point(s, to);
+                s.push_str("  F");
+                push_num(s, *feed_mm_min, 3);
+                s.push_str(" mm/min");
+            }
+            Op::Arc { to, center, dir, feed_mm_min, .. } => {
+                self.point(s, to);
+                let _ = write!(s, "  {} centre ", dir_name(*dir));
+                self.point(s, center);
+                s.push_str("  F");
+                push_num(s, *feed_mm_min, 3);
+                s.push_str(" mm/min");
+            }
+            Op::Thread { to, lead_mm, long_axis, spindle_deg, rpm, .. } => {
+                self.point(s, to);
+                self.thread(s, *lead_mm, long_axis.as_str(), *spindle_deg, *rpm);
+            }
+            Op::ThreadArc { to, center, dir, lead_mm, long_axis, spindle_deg, rpm, .. } => {
+                self.point(s, to);
+                let _ = write!(s, "  {} centre ", dir_name(*dir));
+                self.point(s, center);
+                self.thread(s, *lead_mm, long_axis.as_str(), *spindle_deg, *rpm);
+            }
+            Op::Dwell { seconds } => {
+                push_num(s, *seconds, 3);
+                s.push_str(" s");
+            }
+            Op::Spindle { rpm, surface_m_min, position_mode, oriented } => {
+                push_num(s, *rpm, 1);
+                s.push_str(" rpm");
+                if *oriented {
+                    s.push_str(" oriented stop");
+                }
+                if let Some(v) = surface_m_min {
+                    s.push_str(" (G96 ");
+                    push_num(s, *v, 1);
+                    s.push_str(" m/min)");
+                }
+                if *position_mode {
+                    s.push_str(" position mode");
+                }
+            }
+            Op::Tool { number, offset } => {
+                let _ = match offset {
+                    Some(o) => write!(s, "T{number:02}{o:02}"),
+                    None => write!(s, "T{number}"),
+                };
+            }
+            Op::Stop { reason } => s.push_str(reason.as_str()),
+            Op::End { code } => {
+                let _ = write!(s, "M{code:02}");
+            }
+        }
     }
 }
 
@@ -34,55 +116,15 @@ impl Format for Text {
 
     fn event(&mut self, e: &Event, w: &mut dyn Write) -> io::Result<()> {
         let Event::Record(r) = e else { return Ok(()) };
-        let what = match &r.op {
-            Op::Rapid { to, .. } => self.point(to, ""),
-            Op::Feed { to, feed_mm_min, .. } => format!("{}  F{} mm/min", self.point(to, ""), num(*feed_mm_min, 3)),
-            Op::Arc { to, center, dir, feed_mm_min, .. } => format!(
-                "{}  {} centre {}  F{} mm/min",
-                self.point(to, ""),
-                if *dir == ArcDir::Cw { "cw" } else { "ccw" },
-                self.point(center, ""),
-                num(*feed_mm_min, 3)
-            ),
-            Op::Thread { to, lead_mm, long_axis, spindle_deg, rpm, .. } => format!(
-                "{}  lead {} along {}  from {} deg  {} rpm",
-                self.point(to, ""),
-                num(*lead_mm, 4),
-                long_axis.as_str(),
-                num(*spindle_deg, 3),
-                num(*rpm, 1)
-            ),
-            Op::ThreadArc { to, center, dir, lead_mm, long_axis, spindle_deg, rpm, .. } => format!(
-                "{}  {} centre {}  lead {} along {}  from {} deg  {} rpm",
-                self.point(to, ""),
-                if *dir == ArcDir::Cw { "cw" } else { "ccw" },
-                self.point(center, ""),
-                num(*lead_mm, 4),
-                long_axis.as_str(),
-                num(*spindle_deg, 3),
-                num(*rpm, 1)
-            ),
-            Op::Dwell { seconds } => format!("{} s", num(*seconds, 3)),
-            Op::Spindle { rpm, surface_m_min, position_mode, oriented } => {
-                let mut s = format!("{} rpm", num(*rpm, 1));
-                if *oriented {
-                    s.push_str(" oriented stop");
-                }
-                if let Some(v) = surface_m_min {
-                    s.push_str(&format!(" (G96 {} m/min)", num(*v, 1)));
-                }
-                if *position_mode {
-                    s.push_str(" position mode");
-                }
-                s
-            }
-            Op::Tool { number, offset } => match offset {
-                Some(o) => format!("T{number:02}{o:02}"),
-                None => format!("T{number}"),
-            },
-            Op::Stop { reason } => reason.as_str().to_string(),
-            Op::End { code } => format!("M{code:02}"),
-        };
-        writeln!(w, "{:>6}  {:<8} {:<60} t={}", r.span.line, r.op.kind(), what, num(r.t_s, 3))
+        let (mut what, mut line) = (std::mem::take(&mut self.what), std::mem::take(&mut self.line));
+        what.clear();
+        line.clear();
+        self.what(&r.op, &mut what);
+        let _ = write!(line, "{:>6}  {:<8} {:<60} t=", r.span.line, r.op.kind(), what);
+        push_num(&mut line, r.t_s, 3);
+        line.push('\n');
+        let written = w.write_all(line.as_bytes());
+        (self.what, self.line) = (what, line);
+        written
     }
 }

@@ -113,36 +113,42 @@ pub enum Step {
 /// The steps of one hole.
 pub fn expand(h: &Hole) -> Vec<Step> {
     let mut s = Vec::with_capacity(12);
+    expand_each(h, &mut |step| s.push(step));
+    s
+}
+
+/// The steps of one hole, each passed to `s` as it is made (no allocation).
+pub fn expand_each(h: &Hole, s: &mut dyn FnMut(Step)) {
     let [a, b] = h.at;
     let p = |lvl: f64| [a, b, lvl];
     let ret = if h.return_initial || h.kind == DrillKind::G87 { h.initial } else { h.r };
     // Positioning in the plane at the current level.
     if h.from[0] != a || h.from[1] != b {
-        s.push(Step::Rapid([a, b, h.from[2]]));
+        s(Step::Rapid([a, b, h.from[2]]));
     }
     let level = h.from[2];
     let shifted = |lvl: f64| [a + h.q * h.shift_dir[0], b + h.q * h.shift_dir[1], lvl];
     if h.kind == DrillKind::G87 {
         // Back boring: orient and shift, rapid down to R (below the hole), shift back, start the
         // spindle, feed up to Z, orient, shift, rapid up to the initial level, shift back, start.
-        s.push(Step::Orient);
-        s.push(Step::Rapid(shifted(level)));
-        s.push(Step::Rapid(shifted(h.r)));
-        s.push(Step::Rapid(p(h.r)));
-        s.push(Step::Spindle(h.rpm));
-        s.push(Step::Feed(p(h.bottom), h.feed));
+        s(Step::Orient);
+        s(Step::Rapid(shifted(level)));
+        s(Step::Rapid(shifted(h.r)));
+        s(Step::Rapid(p(h.r)));
+        s(Step::Spindle(h.rpm));
+        s(Step::Feed(p(h.bottom), h.feed));
         if h.dwell_s > 0.0 {
-            s.push(Step::Dwell(h.dwell_s));
+            s(Step::Dwell(h.dwell_s));
         }
-        s.push(Step::Orient);
-        s.push(Step::Rapid(shifted(h.bottom)));
-        s.push(Step::Rapid(shifted(h.initial)));
-        s.push(Step::Rapid(p(h.initial)));
-        s.push(Step::Spindle(h.rpm));
-        return s;
+        s(Step::Orient);
+        s(Step::Rapid(shifted(h.bottom)));
+        s(Step::Rapid(shifted(h.initial)));
+        s(Step::Rapid(p(h.initial)));
+        s(Step::Spindle(h.rpm));
+        return;
     }
     if level != h.r {
-        s.push(Step::Rapid(p(h.r)));
+        s(Step::Rapid(p(h.r)));
     }
     let down = if h.bottom < h.r { -1.0 } else { 1.0 };
     match h.kind {
@@ -150,74 +156,73 @@ pub fn expand(h: &Hole) -> Vec<Step> {
             let mut depth = h.r;
             loop {
                 let next = if (h.bottom - depth).abs() <= h.q { h.bottom } else { depth + down * h.q };
-                s.push(Step::Feed(p(next), h.feed));
+                s(Step::Feed(p(next), h.feed));
                 if next == h.bottom {
                     break;
                 }
                 if h.kind == DrillKind::G73 {
-                    s.push(Step::Rapid(p(next - down * h.d)));
+                    s(Step::Rapid(p(next - down * h.d)));
                 } else {
-                    s.push(Step::Rapid(p(h.r)));
-                    s.push(Step::Rapid(p(next - down * h.d)));
+                    s(Step::Rapid(p(h.r)));
+                    s(Step::Rapid(p(next - down * h.d)));
                 }
                 depth = next;
             }
         }
-        _ => s.push(Step::Feed(p(h.bottom), h.feed)),
+        _ => s(Step::Feed(p(h.bottom), h.feed)),
     }
-    let dwell = |s: &mut Vec<Step>| {
+    let dwell = |s: &mut dyn FnMut(Step)| {
         if h.dwell_s > 0.0 {
-            s.push(Step::Dwell(h.dwell_s));
+            s(Step::Dwell(h.dwell_s));
         }
     };
     match h.kind {
-        DrillKind::G73 | DrillKind::G81 | DrillKind::G83 => s.push(Step::Rapid(p(ret))),
+        DrillKind::G73 | DrillKind::G81 | DrillKind::G83 => s(Step::Rapid(p(ret))),
         DrillKind::G82 => {
-            dwell(&mut s);
-            s.push(Step::Rapid(p(ret)));
+            dwell(s);
+            s(Step::Rapid(p(ret)));
         }
         DrillKind::G85 | DrillKind::G89 => {
             if h.kind == DrillKind::G89 {
-                dwell(&mut s);
+                dwell(s);
             }
-            s.push(Step::Feed(p(h.r), h.feed));
+            s(Step::Feed(p(h.r), h.feed));
             if ret != h.r {
-                s.push(Step::Rapid(p(ret)));
+                s(Step::Rapid(p(ret)));
             }
         }
         DrillKind::G74 | DrillKind::G84 => {
             // Tapping: reverse at the bottom, feed out to R, turn forward again.
-            dwell(&mut s);
-            s.push(Step::Spindle(-h.rpm));
-            s.push(Step::Feed(p(h.r), h.feed));
-            s.push(Step::Spindle(h.rpm));
+            dwell(s);
+            s(Step::Spindle(-h.rpm));
+            s(Step::Feed(p(h.r), h.feed));
+            s(Step::Spindle(h.rpm));
             if ret != h.r {
-                s.push(Step::Rapid(p(ret)));
+                s(Step::Rapid(p(ret)));
             }
         }
         DrillKind::G86 => {
-            s.push(Step::Spindle(0.0));
-            s.push(Step::Rapid(p(ret)));
-            s.push(Step::Spindle(h.rpm));
+            s(Step::Spindle(0.0));
+            s(Step::Rapid(p(ret)));
+            s(Step::Spindle(h.rpm));
         }
         DrillKind::G76 => {
-            dwell(&mut s);
-            s.push(Step::Orient);
-            s.push(Step::Rapid(shifted(h.bottom)));
-            s.push(Step::Rapid(shifted(ret)));
-            s.push(Step::Rapid(p(ret)));
-            s.push(Step::Spindle(h.rpm));
+            dwell(s);
+            s(Step::Orient);
+            s(Step::Rapid(shifted(h.bottom)));
+            s(Step::Rapid(shifted(ret)));
+            s(Step::Rapid(p(ret)));
+            s(Step::Spindle(h.rpm));
         }
         DrillKind::G88 => {
-            dwell(&mut s);
-            s.push(Step::Spindle(0.0));
-            s.push(Step::ManualRetract);
-            s.push(Step::Rapid(p(ret)));
-            s.push(Step::Spindle(h.rpm));
+            dwell(s);
+            s(Step::Spindle(0.0));
+            s(Step::ManualRetract);
+            s(Step::Rapid(p(ret)));
+            s(Step::Spindle(h.rpm));
         }
         DrillKind::G87 => unreachable!("handled above"),
     }
-    s
 }
 
 #[cfg(test)]

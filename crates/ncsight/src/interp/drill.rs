@@ -30,16 +30,16 @@ fn take_hole_words(step: &mut Step, words: &mut Words) -> Result<(), Diagnostic>
     let (_, _, n) = step.st.plane.axes();
     let inc = step.st.incremental;
     if let Some(w) = words.take(letter(n)) {
-        let v = step.length(&w)?;
+        let v = step.length(w)?;
         step.st.drill.bottom = Some((v, inc));
     }
     if let Some(w) = words.take(b'R') {
-        let v = step.length(&w)?;
+        let v = step.length(w)?;
         step.st.drill.r = Some((v, inc));
     }
     if let Some(w) = words.take(b'Q') {
         // Peck depth or shift; "Q is always positive" (seed 003 8.1.3, 8.1.7).
-        let v = step.length(&w)?.abs();
+        let v = step.length(w)?.abs();
         step.st.drill.q = Some(v);
     }
     if let Some(w) = words.take(b'P') {
@@ -80,7 +80,7 @@ pub(super) fn block(step: &mut Step, words: &mut Words, kind: DrillKind, enterin
     let mut target = [step.st.pos.axis(a), step.st.pos.axis(b)];
     for (i, axis) in [a, b].into_iter().enumerate() {
         if let Some(w) = words.take(letter(axis)) {
-            let v = step.length(&w)?;
+            let v = step.length(w)?;
             if step.st.incremental {
                 delta[i] = v;
                 target[i] += v;
@@ -140,10 +140,14 @@ pub(super) fn block(step: &mut Step, words: &mut Words, kind: DrillKind, enterin
     };
     // Parameter 2 bits 5 and 4: 00 +X, 01 -X, 10 +Y, 11 -Y (BEHAVIOUR.md); X is the plane's
     // first axis and Y its second (exact in G17).
-    let b4 = step.params.get(ParamKey::Number(2, Some(4))) != 0.0;
-    let b5 = step.params.get(ParamKey::Number(2, Some(5))) != 0.0;
-    let sign = if b4 { -1.0 } else { 1.0 };
-    let shift_dir = if b5 { [0.0, sign] } else { [sign, 0.0] };
+    let shift_dir = if kind.shifts() {
+        let b4 = step.params.get(ParamKey::Number(2, Some(4))) != 0.0;
+        let b5 = step.params.get(ParamKey::Number(2, Some(5))) != 0.0;
+        let sign = if b4 { -1.0 } else { 1.0 };
+        if b5 { [0.0, sign] } else { [sign, 0.0] }
+    } else {
+        [0.0; 2]
+    };
     for k in 0..repeats {
         if k > 0 && step.st.incremental {
             // Under G91 each repeat moves by the increment again: equally spaced holes.
@@ -174,7 +178,7 @@ pub(super) fn block(step: &mut Step, words: &mut Words, kind: DrillKind, enterin
         };
         let position_mode = step.st.spindle_position_mode;
         let first = step.out.records.len();
-        for s in drill::expand(&hole) {
+        drill::expand_each(&hole, &mut |s| {
             let here = step.st.pos;
             let op = match s {
                 drill::Step::Rapid(l) => Op::Rapid { from: here, to: to_global(plane, l, &here) },
@@ -186,11 +190,11 @@ pub(super) fn block(step: &mut Step, words: &mut Words, kind: DrillKind, enterin
             };
             if let Op::Rapid { from, to } | Op::Feed { from, to, .. } = op {
                 if from == to {
-                    continue;
+                    return;
                 }
             }
             step.emit(op);
-        }
+        });
         // Tapping: feed hold and feed override are ignored until the cycle ends (seed 003 8.1.2);
         // positioning to the hole still stops. Single block stops after each hole (BEHAVIOUR.md).
         let tapping = matches!(kind, DrillKind::G74 | DrillKind::G84);

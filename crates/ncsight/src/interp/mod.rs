@@ -31,6 +31,13 @@ pub struct Outcome {
     pub warnings: Vec<Diagnostic>,
 }
 
+impl Outcome {
+    fn clear(&mut self) {
+        self.records.clear();
+        self.warnings.clear();
+    }
+}
+
 /// Switches on the operator's panel, and what the operator recorded, that change what a
 /// programme does.
 #[derive(Debug, Clone, Copy, Default)]
@@ -44,6 +51,7 @@ pub struct Switches {
 }
 
 /// The interpreter of one programme run.
+#[derive(Clone)]
 pub struct Interpreter {
     profile: &'static Profile,
     params: Params,
@@ -58,8 +66,9 @@ struct Step<'a> {
     /// The recorded thread repair position, if any.
     repair: Option<crate::repair::Recorded>,
     span: Span,
-    st: Modal,
-    out: Outcome,
+    /// The interpreter's modal state, changed in place (restored from a copy on an alarm).
+    st: &'a mut Modal,
+    out: &'a mut Outcome,
 }
 
 impl Step<'_> {
@@ -200,42 +209,52 @@ impl Interpreter {
     /// A held-back thread run end is made now, with its pull-out: the input ended, or the next
     /// block alarmed (the controller finishes the thread it is cutting).
     pub fn flush_pending(&mut self) -> Outcome {
-        let mut step = Step {
-            profile: self.profile,
-            params: &self.params,
-            repair: self.switches.repair_position,
-            span: Span::default(),
-            st: self.state.clone(),
-            out: Outcome::default(),
-        };
+        let mut out = Outcome::default();
+        self.flush_pending_into(&mut out);
+        out
+    }
+
+    /// [`Interpreter::flush_pending`] into `out` (emptied first), reusing its allocations.
+    pub fn flush_pending_into(&mut self, out: &mut Outcome) {
+        out.clear();
+        if self.state.thread.pending.is_none() {
+            return;
+        }
+        let repair = self.switches.repair_position;
+        let mut step = Step { profile: self.profile, params: &self.params, repair, span: Span::default(), st: &mut self.state, out };
         if let Some(p) = step.st.thread.pending.take() {
             thread::flush(&mut step, p, true);
         }
-        self.state = step.st;
-        step.out
     }
 
     /// Execute one block. On an alarm nothing changes.
     pub fn execute(&mut self, block: &Block) -> Result<Outcome, Diagnostic> {
+        let mut out = Outcome::default();
+        self.execute_into(block, &mut out)?;
+        Ok(out)
+    }
+
+    /// [`Interpreter::execute`] into `out` (emptied first), reusing its allocations; on an
+    /// alarm `out` is left empty.
+    pub fn execute_into(&mut self, block: &Block, out: &mut Outcome) -> Result<(), Diagnostic> {
+        out.clear();
         if block.block_delete && self.switches.block_delete {
-            return Ok(Outcome::default());
+            return Ok(());
         }
-        let mut step = Step {
-            profile: self.profile,
-            params: &self.params,
-            repair: self.switches.repair_position,
-            span: block.span,
-            st: self.state.clone(),
-            out: Outcome::default(),
-        };
-        run_block(&mut step, block, self.switches)?;
+        let before = self.state.clone();
+        let repair = self.switches.repair_position;
+        let mut step = Step { profile: self.profile, params: &self.params, repair, span: block.span, st: &mut self.state, out };
+        if let Err(d) = run_block(&mut step, block, self.switches) {
+            step.out.clear();
+            self.state = before;
+            return Err(d);
+        }
         // Single block stops after the block's last record (a held-back thread run end carries
         // its own mark).
         if let Some(last) = step.out.records.iter_mut().rev().find(|r| r.span == block.span) {
             last.block_end = true;
         }
-        self.state = step.st;
-        Ok(step.out)
+        Ok(())
     }
 }
 
@@ -243,12 +262,12 @@ impl Interpreter {
 fn collect<'w>(
     step: &mut Step,
     block: &'w Block,
-) -> Result<(Words, Vec<(&'w Word, &'static GDef)>, Vec<(&'w Word, Option<&'static MDef>)>), Diagnostic> {
+) -> Result<(Words<'w>, Vec<(&'w Word, &'static GDef)>, Vec<(&'w Word, Option<&'static MDef>)>), Diagnostic> {
     let profile = step.profile;
-    let mut words = Words::default();
+    let mut words = Words::new(&block.words);
     let mut gs = Vec::new();
     let mut ms = Vec::new();
-    for w in &block.words {
+    for (i, w) in block.words.iter().enumerate() {
         let letter = w.letter;
         if !profile.takes_address(letter) {
             return Err(step.alarm(
@@ -288,7 +307,7 @@ fn collect<'w>(
                 ms.push((w, profile.m_code(w.value as u32)));
             }
             _ => {
-                if let Some(old) = words.insert(*w) {
+                if let Some(old) = words.insert(i) {
                     return Err(step.alarm(
                         Rule::DuplicateWord,
                         w.span,
@@ -685,11 +704,11 @@ fn axis_target(step: &mut Step, words: &mut Words) -> Result<(Vec3, [bool; 3]), 
             ));
         }
         if let Some(w) = abs_w {
-            let v = step.length(&w)? * scale;
+            let v = step.length(w)? * scale;
             target.set_axis(axis, if step.st.incremental { step.st.pos.axis(axis) + v } else { v });
             given[axis] = true;
         } else if let Some(w) = inc_w {
-            let v = step.length(&w)? * scale;
+            let v = step.length(w)? * scale;
             target.set_axis(axis, step.st.pos.axis(axis) + v);
             given[axis] = true;
         }
@@ -747,7 +766,7 @@ fn resolve_arc(step: &mut Step, words: &mut Words, from: Vec3, to: Vec3, dir: Ar
             let msg = format!("{}: ignored, R takes precedence over the centre words", w.text());
             step.warn(Rule::TextIgnored, w.span, msg);
         }
-        let r = step.length(&rw)?;
+        let r = step.length(rw)?;
         return match geom::arc_from_radius(from, to, plane, dir, r, ARC_TOLERANCE_MM) {
             Ok(g) => Ok(ArcOutcome::Arc(g)),
             Err(ArcError::ZeroArcWithR) => {
@@ -773,7 +792,7 @@ fn resolve_arc(step: &mut Step, words: &mut Words, from: Vec3, to: Vec3, dir: Ar
     for (w, axis) in [(ca, a), (cb, b)] {
         if let Some(w) = w {
             // I, J, K: from the start point to the centre, radius values (TDi help G02/03).
-            let v = step.length(&w)?;
+            let v = step.length(w)?;
             center.set_axis(axis, from.axis(axis) + v);
         }
     }

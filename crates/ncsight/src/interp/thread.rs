@@ -63,7 +63,7 @@ impl Step<'_> {
         let f = words.take(b'F');
         let i = if inch_i { words.take(b'I') } else { None };
         let e = if e_word { words.take(b'E') } else { None };
-        let given: Vec<Word> = [f, i, e].into_iter().flatten().collect();
+        let given: Vec<Word> = [f, i, e].into_iter().flatten().copied().collect();
         if given.len() > 1 {
             return Err(self.alarm(
                 Rule::DuplicateWord,
@@ -72,7 +72,7 @@ impl Step<'_> {
             ));
         }
         if let Some(w) = f.or(e) {
-            let lead = self.lead_word(&w);
+            let lead = self.lead_word(w);
             if !(lead > 0.0 && lead <= max_mm + 1e-9) {
                 return Err(self.alarm(
                     Rule::ValueOutOfRange,
@@ -139,7 +139,7 @@ impl Step<'_> {
         }
         // Above 360 degrees counts as 360 (= 0): seed 001 Q rule 2, seed 002.
         let deg = (w.value * unit_deg).min(360.0);
-        Ok(Some((wrap_deg(deg), w)))
+        Ok(Some((wrap_deg(deg), *w)))
     }
 
     /// J and K into the values in force. Returns whether J or K was written in this block.
@@ -147,14 +147,14 @@ impl Step<'_> {
         let j = words.take(b'J');
         let k = words.take(b'K');
         if let Some(w) = j {
-            let v = self.length(&w)?;
+            let v = self.length(w)?;
             if v < 0.0 && !j_may_be_negative {
                 return Err(self.alarm(Rule::ValueOutOfRange, w.span, format!("{}: J of {gname} cannot be negative", w.text())));
             }
             self.st.thread.j = Some(v);
         }
         if let Some(w) = k {
-            let v = self.length(&w)?;
+            let v = self.length(w)?;
             if v < 0.0 && !k_may_be_negative {
                 return Err(self.alarm(Rule::ValueOutOfRange, w.span, format!("{}: K of {gname} has no sign (0 or more)", w.text())));
             }
@@ -433,17 +433,27 @@ fn cycle(step: &mut Step, words: &mut Words, kind: CycleKind, explicit: bool) ->
     let gname = name(cmd);
     // GSK980TDi G92.1: "F > 0 right hand, F < 0 left hand": the spindle turns the other way.
     let mut hand = 1.0;
+    let mut left_lead = None;
     if kind == CycleKind::TdiRigid {
-        if let Some(mut w) = words.peek(b'F').filter(|w| w.value < 0.0) {
+        if let Some(w) = words.peek(b'F').filter(|w| w.value < 0.0) {
             hand = -1.0;
-            w.value = -w.value;
-            words.insert(w);
+            let mut positive = *w;
+            positive.value = -w.value;
+            words.take(b'F');
+            let lead = step.lead_word(&positive);
+            if lead > MAX_LEAD_MM {
+                return Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("{}: the lead of G92.1 must be at most {MAX_LEAD_MM} mm", w.text())));
+            }
+            step.st.feed = Some(lead);
+            step.st.thread.lead_mm = None;
+            left_lead = Some(lead);
         }
     }
-    let lead = match kind {
-        CycleKind::Gsk | CycleKind::TdiRigid => step.read_lead(words, gname, true, false, MAX_LEAD_MM)?,
-        CycleKind::GskRigid | CycleKind::Fanuc => step.read_lead(words, gname, false, false, MAX_LEAD_MM)?,
-        CycleKind::Yasnac => step.read_lead(words, gname, false, true, MAX_LEAD_MM)?,
+    let lead = match (left_lead, kind) {
+        (Some(l), _) => l,
+        (None, CycleKind::Gsk | CycleKind::TdiRigid) => step.read_lead(words, gname, true, false, MAX_LEAD_MM)?,
+        (None, CycleKind::GskRigid | CycleKind::Fanuc) => step.read_lead(words, gname, false, false, MAX_LEAD_MM)?,
+        (None, CycleKind::Yasnac) => step.read_lead(words, gname, false, true, MAX_LEAD_MM)?,
     };
     let repair_word = if matches!(kind, CycleKind::Gsk | CycleKind::TdiRigid) { words.take(b'P') } else { None };
     if let Some(w) = repair_word {
@@ -480,7 +490,7 @@ fn cycle(step: &mut Step, words: &mut Words, kind: CycleKind, explicit: bool) ->
         CycleKind::Yasnac => {
             // Seed 004 (4): K, with its sign, shifts this pass's start along Z (flank infeed).
             if let Some(w) = words.take(b'K') {
-                flank_mm = step.length(&w)?;
+                flank_mm = step.length(w)?;
             }
         }
     }
@@ -522,7 +532,7 @@ fn cycle(step: &mut Step, words: &mut Words, kind: CycleKind, explicit: bool) ->
         c.x = remembered.map(|m| m.x).unwrap_or(a.x);
     }
     match taper_word {
-        Some(w) => step.st.thread.taper_mm = step.length(&w)?,
+        Some(w) => step.st.thread.taper_mm = step.length(w)?,
         None if explicit => step.st.thread.taper_mm = 0.0,
         None => {} // continuation blocks keep the taper (assumption, docs/threads.md)
     }

@@ -3,9 +3,13 @@
 
 use crate::read::Word;
 
-#[derive(Debug, Default)]
-pub struct Words {
-    slots: [Option<Word>; 26],
+/// Indices into the block's words, so that the table stays small to move.
+#[derive(Debug)]
+pub struct Words<'w> {
+    all: &'w [Word],
+    /// 1 + the index in `all` of each address's word; 0 for none.
+    slots: [u16; 26],
+    present: u32,
     used: u32,
 }
 
@@ -13,39 +17,47 @@ fn idx(letter: u8) -> usize {
     (letter - b'A') as usize
 }
 
-impl Words {
-    /// Store a word; returns the earlier word of the same address if there was one.
-    pub fn insert(&mut self, w: Word) -> Option<Word> {
-        let i = idx(w.letter);
-        let old = self.slots[i];
-        self.slots[i] = Some(w);
+impl<'w> Words<'w> {
+    /// An empty table over a block's words.
+    pub fn new(all: &'w [Word]) -> Words<'w> {
+        Words { all, slots: [0; 26], present: 0, used: 0 }
+    }
+
+    fn slot(&self, i: usize) -> Option<&'w Word> {
+        let all: &'w [Word] = self.all;
+        self.slots[i].checked_sub(1).map(|k| &all[k as usize])
+    }
+
+    /// Store the word at `index` of the block; returns the earlier word of the same address if
+    /// there was one.
+    pub fn insert(&mut self, index: usize) -> Option<&'w Word> {
+        let i = idx(self.all[index].letter);
+        let old = self.slot(i);
+        self.slots[i] = u16::try_from(index + 1).expect("a block holds fewer words than a line has bytes");
+        self.present |= 1 << i;
         old
     }
 
     pub fn has(&self, letter: u8) -> bool {
-        self.slots[idx(letter)].is_some()
+        self.present & (1 << idx(letter)) != 0
     }
 
     /// Look at a word without taking it.
-    pub fn peek(&self, letter: u8) -> Option<Word> {
-        self.slots[idx(letter)]
+    pub fn peek(&self, letter: u8) -> Option<&'w Word> {
+        self.slot(idx(letter))
     }
 
     /// Take a word: it is now used by a command.
-    pub fn take(&mut self, letter: u8) -> Option<Word> {
+    pub fn take(&mut self, letter: u8) -> Option<&'w Word> {
         let i = idx(letter);
-        let w = self.slots[i]?;
+        let w = self.slot(i)?;
         self.used |= 1 << i;
         Some(w)
     }
 
     /// The first word, in the order written, that no command took.
-    pub fn first_unused(&self) -> Option<Word> {
-        self.slots
-            .iter()
-            .enumerate()
-            .filter(|(i, w)| w.is_some() && self.used & (1 << i) == 0)
-            .map(|(_, w)| w.unwrap())
-            .min_by_key(|w| w.span.col)
+    pub fn first_unused(&self) -> Option<&'w Word> {
+        let unused = self.present & !self.used;
+        (0..26).filter(|i| unused & (1 << i) != 0).filter_map(|i| self.slot(i)).min_by_key(|w| w.span.col)
     }
 }

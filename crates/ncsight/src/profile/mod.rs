@@ -382,7 +382,17 @@ impl Profile {
     }
 
     pub fn param(&self, key: ParamKey) -> Option<(usize, &'static ParamDef)> {
-        self.all_params().enumerate().find(|(_, p)| p.key == key)
+        // Plain loops: this runs for every parameter read of every block.
+        let mut i = 0;
+        for table in self.params {
+            for p in table.iter() {
+                if p.key == key {
+                    return Some((i, p));
+                }
+                i += 1;
+            }
+        }
+        None
     }
 
     /// Every parameter and setting, in order.
@@ -404,6 +414,8 @@ impl Profile {
 pub struct Params {
     profile: &'static Profile,
     values: Vec<f64>,
+    /// The feed limit, read by every cutting block: kept up to date by `set`.
+    feed_max_mm_min: f64,
 }
 
 /// Why a `--param` could not be taken.
@@ -430,7 +442,9 @@ impl std::error::Error for ParamError {}
 
 impl Params {
     pub fn defaults(profile: &'static Profile) -> Params {
-        Params { profile, values: profile.all_params().map(|p| p.default).collect() }
+        let mut params = Params { profile, values: profile.all_params().map(|p| p.default).collect(), feed_max_mm_min: 0.0 };
+        params.feed_max_mm_min = params.get(profile.time.feed_max);
+        params
     }
 
     pub fn profile(&self) -> &'static Profile {
@@ -460,6 +474,7 @@ impl Params {
             return Err(ParamError::OutOfRange { key: key.to_string(), value, min: def.min, max: def.max, unit: def.unit });
         }
         self.values[i] = value;
+        self.feed_max_mm_min = self.get(self.profile.time.feed_max);
         Ok(())
     }
 
@@ -478,7 +493,7 @@ impl Params {
     }
 
     pub fn feed_max_mm_min(&self) -> f64 {
-        self.get(self.profile.time.feed_max)
+        self.feed_max_mm_min
     }
 }
 

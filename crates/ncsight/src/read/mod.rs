@@ -95,6 +95,28 @@ pub struct Line {
     pub tape_mark: bool,
     /// A DOS end-of-file byte (0x1A) ended the text.
     pub end_of_file: bool,
+    /// Word lists of earlier lines, kept for reuse by [`Reader::read_line_into`].
+    spare: Vec<Vec<Word>>,
+}
+
+impl Line {
+    /// Empty it for the next line, keeping the allocations.
+    fn reset(&mut self) {
+        while let Some(item) = self.blocks.pop() {
+            if let Ok(b) = item {
+                let mut words = b.words;
+                words.clear();
+                self.spare.push(words);
+            }
+        }
+        self.warnings.clear();
+        self.tape_mark = false;
+        self.end_of_file = false;
+    }
+
+    fn new_block(&mut self) -> Block {
+        Block { words: self.spare.pop().unwrap_or_default(), ..Block::default() }
+    }
 }
 
 /// Reads lines. Holds only what a line needs.
@@ -118,6 +140,13 @@ impl Reader {
     /// Read one line (its line break may be included). `line_no` is 1-based.
     pub fn read_line(&self, line_no: u32, raw: &[u8]) -> Line {
         let mut out = Line::default();
+        self.read_line_into(line_no, raw, &mut out);
+        out
+    }
+
+    /// [`Reader::read_line`] into `out`, reusing its allocations (the streaming path).
+    pub fn read_line_into(&self, line_no: u32, raw: &[u8], out: &mut Line) {
+        out.reset();
         let mut s = raw;
         if line_no == 1 && s.starts_with(&[0xEF, 0xBB, 0xBF]) {
             s = &s[3..];
@@ -137,7 +166,7 @@ impl Reader {
                 1,
                 format!("line of {} bytes: a block may be at most {MAX_LINE_BYTES} bytes long", s.len()),
             )));
-            return out;
+            return;
         }
         let mut i = 0;
         while i < s.len() && is_blank(s[i]) {
@@ -155,19 +184,19 @@ impl Reader {
                     "text after the '%' tape mark is ignored",
                 ));
             }
-            return out;
+            return;
         }
-        let mut block = Block::default();
+        let mut block = out.new_block();
         let mut block_start: Option<usize> = None;
         let mut block_end = 0usize;
-        let finish = |block: &mut Block, start: Option<usize>, end: usize, out: &mut Line| {
-            let b = std::mem::take(block);
+        let finish = |mut b: Block, start: Option<usize>, end: usize, out: &mut Line| {
             if let Some(st) = start {
-                let mut b = b;
                 b.span = Span::new(line_no, st as u32 + 1, (end - st).max(1) as u32);
                 out.blocks.push(Ok(b));
             } else if !b.comments.is_empty() {
                 out.blocks.push(Ok(Block { span: Span::new(line_no, 1, 1), ..b }));
+            } else {
+                out.spare.push(b.words);
             }
         };
         while i < s.len() {
@@ -193,7 +222,8 @@ impl Reader {
                     i = (end + 1).min(s.len()).max(end);
                 }
                 b';' => {
-                    finish(&mut block, block_start, block_end, &mut out);
+                    let next = out.new_block();
+                    finish(std::mem::replace(&mut block, next), block_start, block_end, out);
                     block_start = None;
                     i += 1;
                 }
@@ -237,7 +267,7 @@ impl Reader {
                         }
                         Err(d) => {
                             out.blocks.push(Err(d));
-                            return out;
+                            return;
                         }
                     }
                 }
@@ -279,12 +309,11 @@ impl Reader {
                         .with_hint("text other than ASCII belongs inside ( ) comments")
                     };
                     out.blocks.push(Err(d));
-                    return out;
+                    return;
                 }
             }
         }
-        finish(&mut block, block_start, block_end.max(block_start.unwrap_or(0)), &mut out);
-        out
+        finish(block, block_start, block_end.max(block_start.unwrap_or(0)), out);
     }
 
     /// One word starting at the letter `s[at]`. Returns the word and the index after it.
@@ -356,7 +385,10 @@ impl Reader {
         let mut decimal = false;
         let mut digits = 0usize;
         let mut significant = 0usize;
-        let mut text = String::new();
+        // The digits as an integer and how many of them follow the point (exact while
+        // `significant` is within MAX_DIGITS).
+        let mut mantissa = 0u64;
+        let mut fraction_digits = 0i32;
         while i < s.len() {
             let c = s[i];
             if c.is_ascii_digit() {
@@ -364,7 +396,8 @@ impl Reader {
                 if significant > 0 || c != b'0' {
                     significant += 1;
                 }
-                text.push(c as char);
+                mantissa = mantissa.wrapping_mul(10).wrapping_add(u64::from(c - b'0'));
+                fraction_digits += i32::from(decimal);
             } else if c == b'.' {
                 if decimal {
                     let mut end = i + 1;
@@ -384,7 +417,6 @@ impl Reader {
                     .with_hint("delete one of the decimal points"));
                 }
                 decimal = true;
-                text.push('.');
             } else {
                 break;
             }
@@ -426,7 +458,7 @@ impl Reader {
                 ),
             ));
         }
-        let mut value: f64 = text.parse().unwrap_or(0.0);
+        let mut value = decimal_value(mantissa, fraction_digits, &s[digits_start..i]);
         if negative {
             value = -value;
         }
@@ -434,9 +466,42 @@ impl Reader {
     }
 }
 
+/// `mantissa / 10^fraction_digits`, correctly rounded as `str::parse` gives it: exact when both
+/// are exact doubles (one IEEE division); `text` (digits and a point) is parsed otherwise.
+fn decimal_value(mantissa: u64, fraction_digits: i32, text: &[u8]) -> f64 {
+    const POW10: [f64; 23] = [
+        1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19,
+        1e20, 1e21, 1e22,
+    ];
+    if mantissa < 1 << 53 && (fraction_digits as usize) < POW10.len() {
+        return mantissa as f64 / POW10[fraction_digits as usize];
+    }
+    std::str::from_utf8(text).ok().and_then(|t| t.parse().ok()).unwrap_or(0.0)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn numbers_as_str_parse_reads_them() {
+        for t in ["0", "5.", ".5", "1.000", "0.1", "123.456789", "99999.999", "0.000000000000000000000001", "000123.4500", "7.0000001"] {
+            let l = read(&format!("X{t}"));
+            let v = l.blocks[0].as_ref().unwrap().words[0].value;
+            assert_eq!(v, t.parse::<f64>().unwrap(), "{t}");
+        }
+        let mut state = 0x9e37_79b9_7f4a_7c15u64;
+        for _ in 0..20_000 {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            let digits = format!("{}", state % 1_000_000_000);
+            let point = (state >> 40) as usize % (digits.len() + 1);
+            let t = format!("{}.{}", &digits[..point], &digits[point..]);
+            let v = read(&format!("Y-{t}")).blocks[0].as_ref().unwrap().words[0].value;
+            assert_eq!(v, -t.parse::<f64>().unwrap(), "{t}");
+        }
+    }
 
     fn read(s: &str) -> Line {
         Reader::new(AlarmStyle::Project).read_line(1, s.as_bytes())

@@ -1,0 +1,76 @@
+//! Streaming: `check` and `run -o` on a ~50 MB programme must keep their peak memory far below
+//! the programme's size, so a regression to whole-file buffering (or to keeping every record)
+//! fails here. The peak (VmHWM) is read from /proc while the built binary runs.
+
+use std::io::Write;
+use std::path::Path;
+use std::process::{Command, Stdio};
+use std::time::Duration;
+
+/// Bytes of programme text generated.
+const PROGRAMME_BYTES: usize = 50 << 20;
+/// Peak resident memory allowed, KiB: a few MiB of binary and buffers, nothing per line.
+const PEAK_LIMIT_KB: u64 = 32 << 10;
+
+/// A G01 programme of about `bytes` bytes with varied coordinates.
+fn write_programme(path: &Path, bytes: usize) {
+    let mut chunk = String::new();
+    for i in 0..1000u32 {
+        let (x, y, z) = (f64::from(i % 97) * 0.25, f64::from(i % 101) * 0.125, -f64::from(i % 7) * 0.5);
+        chunk.push_str(&format!("X{x:.3} Y{y:.3} Z{z:.3}\n"));
+    }
+    let mut f = std::io::BufWriter::new(std::fs::File::create(path).unwrap());
+    f.write_all(b"G21 G17 G90 G00 X0. Y0. Z10.\nG01 F500.\n").unwrap();
+    for _ in 0..bytes.div_ceil(chunk.len()) {
+        f.write_all(chunk.as_bytes()).unwrap();
+    }
+    f.write_all(b"M30\n").unwrap();
+}
+
+/// Run the binary and return its exit status and its peak resident memory in KiB, polled from
+/// /proc/<pid>/status (the last value read before it exits).
+fn peak_kb(args: &[&str]) -> (i32, u64) {
+    let mut child = Command::new(env!("CARGO_BIN_EXE_ncsight"))
+        .args(args)
+        .stdout(Stdio::null())
+        .stderr(Stdio::null())
+        .spawn()
+        .unwrap();
+    let status_path = format!("/proc/{}/status", child.id());
+    let mut peak = 0;
+    loop {
+        if let Ok(text) = std::fs::read_to_string(&status_path) {
+            let hwm = text.lines().find_map(|l| l.strip_prefix("VmHWM:")).and_then(|v| v.trim().trim_end_matches("kB").trim().parse().ok());
+            peak = peak.max(hwm.unwrap_or(0));
+        }
+        if let Some(status) = child.try_wait().unwrap() {
+            return (status.code().unwrap_or(-1), peak);
+        }
+        std::thread::sleep(Duration::from_millis(5));
+    }
+}
+
+#[test]
+fn check_and_run_stream_a_50_mb_programme() {
+    let dir = std::env::temp_dir().join(format!("ncsight-memory-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let programme = dir.join("big.nc");
+    write_programme(&programme, PROGRAMME_BYTES);
+    let out = dir.join("big.canon");
+    let p = programme.to_str().unwrap();
+    let runs: [&[&str]; 2] = [&["check", p, "--machine", "fanuc0m"], &["run", p, "--machine", "fanuc0m", "--format", "canon", "-o", out.to_str().unwrap()]];
+    let mut results = Vec::new();
+    for args in runs {
+        let (code, kb) = peak_kb(args);
+        results.push((args[0], code, kb));
+    }
+    let output_bytes = std::fs::metadata(&out).map(|m| m.len()).unwrap_or(0);
+    std::fs::remove_dir_all(&dir).unwrap();
+    for (command, code, kb) in results {
+        eprintln!("{command}: peak {kb} KiB");
+        assert_eq!(code, 0, "{command} failed");
+        assert!(kb > 0, "{command}: no VmHWM read from /proc");
+        assert!(kb < PEAK_LIMIT_KB, "{command} peaked at {kb} KiB on a {} MiB programme (limit {PEAK_LIMIT_KB} KiB)", PROGRAMME_BYTES >> 20);
+    }
+    assert!(output_bytes > PROGRAMME_BYTES as u64, "run wrote {output_bytes} bytes");
+}
