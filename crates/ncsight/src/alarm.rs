@@ -89,6 +89,7 @@ rules! {
     RepairDisabled => Alarm, "NCS-E49", None, "THREAD REPAIR NOT ENABLED";
     RepairNoPosition => Alarm, "NCS-E50", None, "NO REPAIR POSITION RECORDED";
     ThreadData => Alarm, "NCS-E51", None, "ILLEGAL THREAD CYCLE DATA";
+    ForeignDialect => Alarm, "NCS-E52", None, "PROGRAMME FOR ANOTHER CONTROL";
     // --- warnings ---
     SameGroupTwice => Warning, "NCS-W01", None, "TWO G CODES OF ONE GROUP: THE LAST ONE COUNTS";
     IntegerLength => Warning, "NCS-W02", None, "LENGTH WITHOUT DECIMAL POINT";

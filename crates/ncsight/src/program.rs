@@ -166,6 +166,25 @@ impl Program {
 impl Core {
     /// Read and interpret one line; the events are untimed.
     fn interpret_line(&mut self, raw: &[u8], sink: &mut dyn FnMut(Event)) {
+        // Another control's programme gets one answer, not a cascade of alarms (issue 10). Its
+        // signs come early or carry `$ @ = <`; only such lines are looked at.
+        if self.line_no <= 100 || raw.iter().any(|b| matches!(b, b'$' | b'@' | b'=' | b'<')) {
+            if let Some(f) = crate::dialect::sniff(raw) {
+                let profile = self.interp.profile();
+                let d = Diagnostic::new(
+                    Rule::ForeignDialect,
+                    profile.alarm_style,
+                    Span::new(self.line_no, 1, raw.len().clamp(1, 80) as u32),
+                    format!("this looks like {}, not a programme for {} ({}): its words mean other things there, so ncsight stops here", f.name(), profile.name, profile.title),
+                )
+                .with_hint("run it on the profile of the control it was written for");
+                self.alarm(d, sink);
+                // Both modes stop: reading on would only repeat the same answer.
+                self.status = Status::Alarm;
+                self.eof = true;
+                return;
+            }
+        }
         let mut line = std::mem::take(&mut self.line);
         self.reader.read_line_into(self.line_no, raw, &mut line);
         self.interpret_blocks(&mut line, sink);

@@ -12,6 +12,10 @@ use crate::profile::ParamKey;
 /// Most repeats K (seed 003: "K 的最大取值为9999").
 pub const MAX_REPEATS: f64 = 9999.0;
 
+/// Most pecks one G73/G83 block may make (a limit of ncsight's, so that a broken Q cannot make a
+/// programme of endless motion).
+pub const MAX_PECKS: f64 = 1_000_000.0;
+
 fn letter(axis: usize) -> u8 {
     [b'X', b'Y', b'Z'][axis]
 }
@@ -131,6 +135,17 @@ pub(super) fn block(step: &mut Step, words: &mut Words, kind: DrillKind, enterin
         if step.st.spindle != want {
             let msg = format!("{code} taps with the spindle turning {name}-wise; it is not (seed 003: program {name} before the cycle)");
             step.warn(Rule::TapDirection, step.span, msg);
+        }
+    }
+    // A cap on the motion one block may make (issue 10): pecks x repeats.
+    if kind.needs_q() {
+        let pecks = ((bottom - r).abs() / d.q.unwrap_or(1.0)).ceil() * repeats as f64;
+        if pecks > MAX_PECKS {
+            return Err(step.alarm(
+                Rule::MotionLimit,
+                step.span,
+                format!("{code}: {pecks:.0} pecks in one block (Q too small for the depth, times K); at most {MAX_PECKS}"),
+            ));
         }
     }
     let d_mm = match kind {
