@@ -531,6 +531,7 @@ fn simulate(
     let job = job_setup(setup_file, stock)?;
     let opts = simulate::options(resolution, expect).map_err(usage)?;
     let mut input = open(file)?;
+    let lathe = params.profile().is_lathe();
     let mut program = Program::new(params, switches, Mode::Run);
     let shown = if file == "-" { "<stdin>" } else { file };
     let mut records = Vec::new();
@@ -542,6 +543,12 @@ fn simulate(
         }
         Ok(())
     })?;
+    if !lathe {
+        let sim = ncsight::stock::measure::simulate_mill(&records, &job, opts.dz_mm).map_err(usage)?;
+        let body = if format == "json" { simulate::mill_json(&sim) } else { simulate::mill_text(&sim) };
+        out.write_all(body.as_bytes())?;
+        return Ok(if program.status() == Status::Alarm { EXIT_ALARM } else { EXIT_OK });
+    }
     let sim = ncsight::stock::measure::simulate(&records, &job, &opts).map_err(usage)?;
     let body = if format == "json" { simulate::json(&sim.measurement) } else { simulate::text(&sim.measurement) };
     out.write_all(body.as_bytes())?;

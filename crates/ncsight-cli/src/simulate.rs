@@ -37,6 +37,33 @@ pub fn json(m: &Measurement) -> String {
     )
 }
 
+/// A drilling simulation as one JSON object.
+pub fn mill_json(sim: &ncsight::stock::measure::MillSimulation) -> String {
+    let holes: Vec<String> = sim
+        .holes
+        .iter()
+        .map(|h| format!("{{\"x\":{},\"y\":{},\"depth_mm\":{},\"diameter_mm\":{}}}", num(h.x, 3), num(h.y, 3), num(h.depth_mm, 3), num(h.diameter_mm, 3)))
+        .collect();
+    let findings: Vec<String> = sim
+        .findings
+        .iter()
+        .map(|f| format!("{{\"kind\":\"{}\",\"line\":{},\"message\":{}}}", f.kind, f.line, json_str(&f.message)))
+        .collect();
+    format!("{{\"holes\":[{}],\"grid\":{{\"cell_mm\":{}}},\"findings\":[{}]}}\n", holes.join(","), num(sim.stock.cell_mm, 4), findings.join(","))
+}
+
+/// A drilling simulation for a person.
+pub fn mill_text(sim: &ncsight::stock::measure::MillSimulation) -> String {
+    let mut s = format!("{} hole(s) on a {} mm grid\n", sim.holes.len(), num(sim.stock.cell_mm, 4));
+    for h in &sim.holes {
+        s.push_str(&format!("hole at X{} Y{}: depth {} mm, diameter {} mm\n", num(h.x, 3), num(h.y, 3), num(h.depth_mm, 3), num(h.diameter_mm, 3)));
+    }
+    for f in &sim.findings {
+        s.push_str(&format!("finding {:<14} line {}: {}\n", f.kind, f.line, f.message));
+    }
+    s
+}
+
 /// The measurement for a person.
 pub fn text(m: &Measurement) -> String {
     let mut s = String::new();

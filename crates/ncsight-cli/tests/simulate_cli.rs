@@ -36,3 +36,16 @@ fn simulate_usage_errors() {
         assert_eq!(code, 2, "{bad:?}: {err}");
     }
 }
+
+#[test]
+fn simulate_drilling_on_a_mill() {
+    let prog = common::root().join("tests/golden/seed003_nine_steps/input.nc");
+    let (code, out, err) = common::ncsight(&["simulate", prog.to_str().unwrap(), "--machine", "fanuc0m", "--format", "json"]);
+    assert_eq!(code, 0, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    let holes = v["holes"].as_array().unwrap();
+    // The nine steps drill six places (the first twice); G01 X70 Y70 at Z50 cuts nothing.
+    assert_eq!(holes.len(), 6, "{out}");
+    assert!(holes.iter().any(|h| h["x"] == 50.0 && h["y"] == 40.0 && h["depth_mm"] == 10.0), "{out}");
+    assert_eq!(v["findings"].as_array().unwrap().len(), 0, "{out}");
+}

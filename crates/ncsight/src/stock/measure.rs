@@ -76,6 +76,53 @@ fn infer_bar(records: &[Record], internal: bool) -> Option<Bar> {
     })
 }
 
+/// A drilling simulation on a machining centre.
+pub struct MillSimulation {
+    pub stock: super::mill::MillStock,
+    pub holes: Vec<super::mill::Hole>,
+    pub findings: Vec<Finding>,
+}
+
+/// Run a machining centre's records through a block (G17 drilling). Without a block in the
+/// setup: the holes' extent plus 10 mm around, its top at Z0, 5 mm below the deepest hole.
+pub fn simulate_mill(records: &[Record], setup: &Setup, cell_mm: Option<f64>) -> Result<MillSimulation, String> {
+    let plunges: Vec<(f64, f64, f64)> = records
+        .iter()
+        .filter_map(|r| match r.op {
+            Op::Feed { from, to, .. } if from.x == to.x && from.y == to.y && to.z < from.z => Some((to.x, to.y, to.z)),
+            _ => None,
+        })
+        .collect();
+    let block = match setup.block {
+        Some(b) => b,
+        None if !plunges.is_empty() => {
+            let f = |k: usize, min: bool| plunges.iter().map(|p| [p.0, p.1, p.2][k]).fold(if min { f64::MAX } else { f64::MIN }, if min { f64::min } else { f64::max });
+            super::mill::Block { min_mm: [f(0, true) - 10.0, f(1, true) - 10.0, f(2, true) - 5.0], max_mm: [f(0, false) + 10.0, f(1, false) + 10.0, 0.0] }
+        }
+        None => return Err("no block: give one in the setup ([block] min_mm, max_mm); the programme drills nothing to infer it from".into()),
+    };
+    let cell = cell_mm.unwrap_or(0.1);
+    let cells = ((block.max_mm[0] - block.min_mm[0]) / cell) * ((block.max_mm[1] - block.min_mm[1]) / cell);
+    if !(cell > 0.0) || cells > 100e6 {
+        return Err(format!("a grid of {cells:.0} cells: coarsen --resolution"));
+    }
+    let mut stock = super::mill::MillStock::new(block, cell);
+    let mut tool = setup.mill_tool(0);
+    let mut turning = false;
+    let first_rapid = records.iter().position(|r| matches!(r.op, Op::Rapid { .. })).unwrap_or(0);
+    for (k, r) in records.iter().enumerate() {
+        match r.op {
+            Op::Tool { number, .. } => tool = setup.mill_tool(number),
+            Op::Spindle { rpm, .. } => turning = rpm != 0.0,
+            _ if k > first_rapid => stock.apply(r, &tool, turning),
+            _ => {}
+        }
+    }
+    let holes = stock.holes();
+    let findings = std::mem::take(&mut stock.findings);
+    Ok(MillSimulation { stock, holes, findings })
+}
+
 /// Run the records through the stock and measure.
 pub fn simulate(records: &[Record], setup: &Setup, opts: &SimOptions) -> Result<Simulation, String> {
     // The tool of each record follows the T words.

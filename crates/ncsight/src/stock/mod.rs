@@ -4,6 +4,7 @@
 
 pub mod lathe;
 pub mod measure;
+pub mod mill;
 pub mod standard;
 
 use serde::Deserialize;
@@ -13,6 +14,8 @@ use serde::Deserialize;
 #[serde(deny_unknown_fields)]
 pub struct Setup {
     pub stock: Option<Bar>,
+    /// A block on a machining centre (drilling cycles).
+    pub block: Option<mill::Block>,
     #[serde(default, rename = "tool")]
     pub tools: Vec<Tool>,
 }
@@ -161,6 +164,16 @@ impl Setup {
     /// The tool of a T number, or the default threading insert.
     pub fn tool(&self, number: u32) -> Tool {
         self.tools.iter().find(|t| t.number == number).copied().unwrap_or_else(Tool::default_thread)
+    }
+
+    /// The tool of a T number on a machining centre, or the default drill (5 mm, 118 degrees).
+    pub fn mill_tool(&self, number: u32) -> Tool {
+        self.tools.iter().find(|t| t.number == number).copied().unwrap_or(Tool {
+            kind: ToolKind::Drill,
+            diameter_mm: 5.0,
+            point_angle_deg: 118.0,
+            ..Tool::default_thread()
+        })
     }
 }
 
