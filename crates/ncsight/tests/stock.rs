@@ -25,7 +25,7 @@ fn records(machine: &str, params: &[&str], text: &str) -> Vec<Record> {
 }
 
 fn bar(d: f64, l: f64) -> Setup {
-    Setup { stock: Some(Bar { diameter_mm: d, length_mm: l, bore_mm: 0.0, front_z_mm: 0.0 }), tools: vec![] }
+    Setup { stock: Some(Bar { diameter_mm: d, length_mm: l, bore_mm: 0.0, front_z_mm: 0.0 }), ..Setup::default() }
 }
 
 fn opts(dz: f64, dtheta: f64) -> SimOptions {
