@@ -67,6 +67,16 @@ pub struct G76Data {
     pub k: Option<f64>,
 }
 
+/// What the first G78 block sets beyond the G76 data (GSK980TDi help text, G78).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct G78Data {
+    pub base: G76Data,
+    pub schedule: crate::cycles::thread::compound::Schedule,
+    pub infeed: crate::cycles::thread::compound::Infeed,
+    /// L: number of starts.
+    pub starts: u32,
+}
+
 /// Thread words and memories that last from block to block.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ThreadState {
@@ -90,6 +100,8 @@ pub struct ThreadState {
     pub repair: bool,
     /// G76 data set by its first block for the rest of the run (it rewrites the parameters).
     pub g76: Option<G76Data>,
+    /// G78 data set by its first block (GSK980TDi), kept apart from G76's.
+    pub g78: Option<G78Data>,
 }
 
 /// Hole data that stays from block to block while a drilling cycle is in force (seed 003): the
@@ -184,6 +196,7 @@ impl Modal {
                 cycles: 0,
                 repair: false,
                 g76: None,
+                g78: None,
             },
             drill: DrillData::default(),
             ended: false,

@@ -603,37 +603,81 @@ mod g76 {
     proptest! {
         #![proptest_config(ProptestConfig { cases: 150, .. ProptestConfig::default() })]
 
-        /// Issue 11: depths strictly increase until the finishing depth, the last roughing pass is
-        /// at k - d, exactly m finishing passes at k, every pass starts at the same spindle angle.
+        /// Issue 11, for G76 and G78: depths strictly increase until the finishing depth, the
+        /// last roughing pass is at k - d, exactly m (G78: D) finishing passes at k, every pass
+        /// of a start begins at that start's spindle angle, and G78's equal schedule steps by dd.
         #[test]
-        fn g76_depth_schedule(
+        fn compound_depth_schedule(
             k_um in 300u32..4000, first_frac in 0.05f64..0.9, dmin_um in 0u32..200,
             d_frac in 0.0f64..0.3, m in 1u32..5, lead in 0.5f64..4.0,
+            g78 in any::<bool>(), equal in any::<bool>(), infeed in 0u32..4, starts in 1u32..4,
         ) {
             let first_um = ((k_um as f64 * first_frac) as u32).max(1);
             let d_mm = ((k_um as f64 * d_frac) as u32) as f64 / 1000.0;
+            let (first_block, starts) = if g78 {
+                (format!("G78 P{:02}{infeed:02}60 Q{dmin_um} R{d_mm:.3} D{m} L{starts}", u32::from(!equal)), starts)
+            } else {
+                (format!("G76 P{m:02}0060 Q{dmin_um} R{d_mm:.3}"), 1)
+            };
+            let code = if g78 { "G78" } else { "G76" };
             let prog = format!(
-                "G97 S300 M03\nG0 X70 Z5\nG76 P{m:02}0060 Q{dmin_um} R{d_mm:.3}\nG76 X60 Z-40 P{k_um} Q{first_um} F{lead:.3}\nM30\n"
+                "G97 S300 M03\nG0 X70 Z5\n{first_block}\n{code} X60 Z-40 P{k_um} Q{first_um} F{lead:.3}\nM30\n"
             );
             let r = run("gsk980tdi", &[], &prog);
             prop_assert!(r.alarm().is_none(), "{:?}\n{}", r.alarm(), prog);
             let k = k_um as f64 / 1000.0;
             // The cut of each pass: the first thread record after a rapid to the pass start.
-            let passes: Vec<(f64, f64)> = r.records.windows(2)
+            let cuts: Vec<(f64, f64)> = r.records.windows(2)
                 .filter(|w| matches!(w[0].op, Op::Rapid { .. }) && matches!(w[1].op, Op::Thread { .. }))
                 .map(|w| match w[1].op { Op::Thread { from, spindle_deg, .. } => (k - (from.x - 30.0), spindle_deg), _ => unreachable!() })
                 .collect();
+            // Each depth is cut once per start, start j at j x 360 / L.
+            prop_assert_eq!(cuts.len() % starts as usize, 0);
+            for (i, c) in cuts.iter().enumerate() {
+                let j = (i % starts as usize) as f64;
+                prop_assert!((c.1 - j * 360.0 / starts as f64).abs() < 1e-9, "{:?}", cuts);
+                prop_assert!((c.0 - cuts[i - i % starts as usize].0).abs() < 1e-12);
+            }
+            let passes: Vec<f64> = cuts.iter().step_by(starts as usize).map(|c| c.0).collect();
             // With no finishing allowance the last roughing pass is at k too.
-            let at_k = passes.iter().filter(|p| (p.0 - k).abs() < 1e-9).count() as u32;
+            let at_k = passes.iter().filter(|p| (*p - k).abs() < 1e-9).count() as u32;
             prop_assert_eq!(at_k, m + u32::from(d_mm == 0.0));
-            let rough: Vec<f64> = passes[..passes.len() - m as usize].iter().map(|p| p.0).collect();
+            let rough = &passes[..passes.len() - m as usize];
             prop_assert!((rough.last().unwrap() - (k - d_mm)).abs() < 1e-9, "{:?} k {} d {}", rough, k, d_mm);
             for w in rough.windows(2) {
                 prop_assert!(w[1] > w[0]);
             }
-            prop_assert!(passes.iter().all(|p| p.1 == passes[0].1));
+            if g78 && equal {
+                // Equal-distance infeed: every roughing step but the last is max(dd, dmin).
+                let step = (first_um.max(dmin_um)) as f64 / 1000.0;
+                for w in rough.windows(2).take(rough.len().saturating_sub(2)) {
+                    prop_assert!((w[1] - w[0] - step).abs() < 1e-9, "{:?} step {}", rough, step);
+                }
+            }
         }
     }
+}
+
+#[test]
+fn g78_infeed_modes_shift_the_pass_start_along_the_flank() {
+    // k 1, dd 0.5, d 0: passes at 0.5 and 1.0, a 60: shift depth x tan 30.
+    let t = 30f64.to_radians().tan();
+    for (mode, signs) in [(0, [0.0, 0.0]), (1, [-1.0, -1.0]), (2, [1.0, 1.0]), (3, [-1.0, 1.0])] {
+        let prog = format!("G97 S300 M03\nG0 X70 Z5\nG78 P00{mode:02}60 Q0 R0 D0\nG78 X60 Z-40 P1000 Q500 F2\nM30\n");
+        let r = run("gsk980tdi", &[], &prog).ok();
+        let starts: Vec<f64> = r.threads().iter().filter(|t| (t.0.z - 5.0).abs() < 1.0).map(|t| t.0.z).collect();
+        assert_eq!(starts.len(), 2, "{starts:?}");
+        for (z, (sign, depth)) in starts.iter().zip(signs.iter().zip([0.5, 1.0])) {
+            assert!((z - (5.0 + sign * depth * t)).abs() < 1e-9, "mode {mode}: {starts:?}");
+        }
+    }
+    // Bad P fields, D, L: alarms naming the word; E warns that it is not simulated.
+    for (block, code) in [("G78 P020060", "NCS-E33"), ("G78 P000460", "NCS-E33"), ("G78 P000060 D1.5", "NCS-E33"), ("G78 P000060 L0", "NCS-E33")] {
+        let r = run("gsk980tdi", &[], &format!("G97 S300 M03\nG0 X70 Z5\n{block}\nM30\n"));
+        assert_eq!(r.alarm().map(|a| a.code), Some(code), "{block}");
+    }
+    let r = run("gsk980tdi", &[], "G97 S300 M03\nG0 X70 Z5\nG78 P000060 E0.2\nG78 X60 Z-40 P1000 Q500 F2\nM30\n").ok();
+    assert!(r.warned("NCS-W12"), "E warns");
 }
 
 #[test]

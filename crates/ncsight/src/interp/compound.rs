@@ -1,14 +1,15 @@
-//! G76 compound thread cutting (two blocks), G33 tapping and G34 variable lead (GSK980TDi help
+//! G76 and G78 compound thread cutting (two blocks), G33 tapping and G34 variable lead (GSK980TDi help
 //! text; G76 also FANUC 0-T). The passes are the shared four-step cycle and pull-out.
 
 use super::thread::{chamfer_of, gsk_jk_pull_out};
 use super::words::Words;
 use super::{axis_target, Step};
 use crate::alarm::{Diagnostic, Rule};
-use crate::cycles::thread::compound::depths;
+use crate::cycles::thread::compound::{infeed_shift_mm, pass_depths, Infeed, Schedule};
 use crate::cycles::thread::cycle::{expand_cycle, Cycle};
 use crate::cycles::thread::{phase_after, thread_op, wrap_deg};
-use crate::modal::{G76Data, SpindleDir};
+use crate::modal::{G76Data, G78Data, SpindleDir};
+use crate::profile::Compound;
 use crate::motion::{Hold, LongAxis, Op, Vec3};
 use crate::read::Word;
 
@@ -26,15 +27,12 @@ fn increments(step: &Step, w: &Word) -> Result<f64, Diagnostic> {
     Ok(w.value * unit)
 }
 
-fn g76_alarm(step: &Step, msg: impl Into<String>) -> Diagnostic {
-    step.alarm(Rule::ThreadData, step.span, format!("G76: {}", msg.into()))
+fn cycle_alarm(step: &Step, name: &str, msg: impl Into<String>) -> Diagnostic {
+    step.alarm(Rule::ThreadData, step.span, format!("{name}: {}", msg.into()))
 }
 
-/// The G76 data in force: what the first block set, else the parameters.
-fn g76_data(step: &Step) -> G76Data {
-    if let Some(d) = step.st.thread.g76 {
-        return d;
-    }
+/// The G76 data the parameters give (power-on values, before any first block).
+fn params_data(step: &Step) -> G76Data {
     let keys = step.profile.thread.g76.expect("the profile has G76");
     let p = |k| step.params.get(k);
     G76Data {
@@ -48,101 +46,186 @@ fn g76_data(step: &Step) -> G76Data {
     }
 }
 
-/// G76, either block. The first (`G76 P(m)(r)(a) Q(dmin) R(d) [J K]`) sets the data; the second
-/// (`G76 X(U) Z(W) R(i) P(k) Q(dd) F(I)`) cuts.
-pub(super) fn g76(step: &mut Step, words: &mut Words) -> Result<(), Diagnostic> {
-    let has_axis = [b'X', b'Z', b'U', b'W'].iter().any(|l| words.has(*l));
-    let mut data = g76_data(step);
-    if !has_axis {
-        if let Some(w) = words.take(b'P') {
-            if w.decimal || w.value < 0.0 || w.value > 999_999.0 {
-                return Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("{}: G76 P is six digits m m r r a a", w.text())));
-            }
-            let p = w.value as u32;
-            // P(m)(r)(a): finishing passes, pull-out in 0.1 lead, tool angle (rewrites No.57,
-            // No.19, No.58 on the GSK; 5142, 5130, 5143 on the FANUC).
-            data.finishing = p / 10_000;
-            data.pull_out_tenths = ((p / 100) % 100) as f64;
-            data.angle_deg = (p % 100) as f64;
+/// The data in force for `kind`: what its first block set, else the parameters. G78 without a
+/// first block: decreasing depths, straight infeed, one start (ncsight's choice; docs/commands/g78.md).
+fn data_in_force(step: &Step, kind: Compound) -> G78Data {
+    match kind {
+        Compound::G76 => {
+            let base = step.st.thread.g76.unwrap_or_else(|| params_data(step));
+            let toward_plus_z = true; // replaced by the cut direction in `cut`
+            G78Data { base, schedule: Schedule::Decreasing, infeed: Infeed::Flank { toward_plus_z }, starts: 1 }
         }
-        if let Some(w) = words.take(b'Q') {
-            data.dmin_mm = increments(step, &w)?;
-        }
-        if let Some(w) = words.take(b'R') {
-            data.allowance_mm = step.length(&w)?;
-        }
-        if step.profile.thread.g32_pull_out {
-            // GSK: J/K in the first block; the pull-out is then that of G32/G92 (help note 2).
-            if let Some(w) = words.take(b'J') {
-                data.j = Some(step.length(&w)?);
-            }
-            if let Some(w) = words.take(b'K') {
-                data.k = Some(step.length(&w)?);
-            }
-        }
-        step.st.thread.g76 = Some(data);
-        return Ok(());
+        Compound::G78 => step.st.thread.g78.unwrap_or_else(|| G78Data {
+            base: params_data(step),
+            schedule: Schedule::Decreasing,
+            infeed: Infeed::Radial,
+            starts: 1,
+        }),
     }
-    let lead = step.read_lead(words, "G76", step.profile.thread.g32_pull_out, false, super::thread::MAX_LEAD_MM)?;
+}
+
+/// G76 or G78, either block. The first (`G76 P(m)(r)(a) Q(dmin) R(d) [J K]`,
+/// `G78 P(m)(r)(a) Q(dmin) R(d) J K D L E`) sets the data; the second
+/// (`X(U) Z(W) R(i) P(k) Q(dd) F(I)`, the same for both) cuts.
+pub(super) fn compound(step: &mut Step, words: &mut Words, kind: Compound) -> Result<(), Diagnostic> {
+    let name = match kind {
+        Compound::G76 => "G76",
+        Compound::G78 => "G78",
+    };
+    let has_axis = [b'X', b'Z', b'U', b'W'].iter().any(|l| words.has(*l));
+    let mut data = data_in_force(step, kind);
+    if has_axis {
+        return cut(step, words, name, kind, data);
+    }
+    if let Some(w) = words.take(b'P') {
+        if w.decimal || w.value < 0.0 || w.value > 999_999.0 {
+            return Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("{}: {name} P is six digits m m r r a a", w.text())));
+        }
+        let p = w.value as u32;
+        let (m, r) = (p / 10_000, (p / 100) % 100);
+        data.base.angle_deg = (p % 100) as f64;
+        match kind {
+            Compound::G76 => {
+                // P(m)(r)(a): finishing passes, pull-out in 0.1 lead, tool angle (rewrites No.57,
+                // No.19, No.58 on the GSK; 5142, 5130, 5143 on the FANUC).
+                data.base.finishing = m;
+                data.base.pull_out_tenths = r as f64;
+            }
+            Compound::G78 => {
+                // G78 help text: m 0 equal-distance infeed, 1 decreasing (as G76); r 0-3 the
+                // cut-in mode: middle, left, right, left and right in turn.
+                data.schedule = match m {
+                    0 => Schedule::Equal,
+                    1 => Schedule::Decreasing,
+                    _ => return Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("{}: G78 P(m) is 00 (equal depths) or 01 (decreasing depths), not {m:02}", w.text()))),
+                };
+                data.infeed = match r {
+                    0 => Infeed::Radial,
+                    1 => Infeed::Flank { toward_plus_z: false },
+                    2 => Infeed::Flank { toward_plus_z: true },
+                    3 => Infeed::Alternate,
+                    _ => return Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("{}: G78 P(r), the cut-in mode, is 00 to 03, not {r:02}", w.text()))),
+                };
+            }
+        }
+    }
+    if let Some(w) = words.take(b'Q') {
+        data.base.dmin_mm = increments(step, &w)?;
+    }
+    if let Some(w) = words.take(b'R') {
+        data.base.allowance_mm = step.length(&w)?;
+    }
+    if step.profile.thread.g32_pull_out {
+        // GSK: J/K in the first block; the pull-out is then that of G32/G92 (G76 help note 2).
+        if let Some(w) = words.take(b'J') {
+            data.base.j = Some(step.length(&w)?);
+        }
+        if let Some(w) = words.take(b'K') {
+            data.base.k = Some(step.length(&w)?);
+        }
+    }
+    if kind == Compound::G78 {
+        if let Some(w) = words.take(b'D') {
+            if w.decimal || !(0.0..=99.0).contains(&w.value) {
+                return Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("{}: G78 D, the number of finishing passes, is a whole number 0 to 99", w.text())));
+            }
+            data.base.finishing = w.value as u32;
+        }
+        if let Some(w) = words.take(b'L') {
+            if w.decimal || !(1.0..=99.0).contains(&w.value) {
+                return Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("{}: the number of starts L is a whole number 1 to 99", w.text())));
+            }
+            data.starts = w.value as u32;
+        }
+        if let Some(w) = words.take(b'E') {
+            let e = step.length(&w)?;
+            if e != 0.0 {
+                // The help text names E "X screw-in distance (radius)" without saying where it acts.
+                let msg = format!("{}: the G78 screw-in distance E is not simulated (the help text does not say how it moves the tool)", w.text());
+                step.warn(Rule::NotSimulated, w.span, msg);
+            }
+        }
+        step.st.thread.g78 = Some(data);
+    } else {
+        step.st.thread.g76 = Some(data.base);
+    }
+    Ok(())
+}
+
+/// The second block: every pass of the schedule, each a four-step cycle (for each start).
+fn cut(step: &mut Step, words: &mut Words, name: &str, kind: Compound, data: G78Data) -> Result<(), Diagnostic> {
+    let lead = step.read_lead(words, name, step.profile.thread.g32_pull_out, false, super::thread::MAX_LEAD_MM)?;
     let taper = match words.take(b'R') {
         Some(w) => step.length(&w)?,
         None => 0.0,
     };
     let height = match words.take(b'P') {
         Some(w) => increments(step, &w)?,
-        None => return Err(g76_alarm(step, "the thread height P(k) is missing")),
+        None => return Err(cycle_alarm(step, name, "the thread height P(k) is missing")),
     };
     let first = match words.take(b'Q') {
         Some(w) => increments(step, &w)?,
-        None => return Err(g76_alarm(step, "the first depth Q(dd) is missing")),
+        None => return Err(cycle_alarm(step, name, "the first depth Q(dd) is missing")),
     };
-    let rpm = step.follow_rpm("G76")?;
+    let rpm = step.follow_rpm(name)?;
     let a = step.st.pos;
     let (c, _) = axis_target(step, words)?;
     if (c.z - a.z).abs() < 1e-9 {
-        return Err(g76_alarm(step, "the end point has the start point's Z: G76 cuts no face thread"));
+        return Err(cycle_alarm(step, name, "the end point has the start point's Z: it cuts no face thread"));
     }
     if (c.x - a.x).abs() < 1e-9 {
-        return Err(g76_alarm(step, "the start point is at the thread's root X: there is no room to retract"));
+        return Err(cycle_alarm(step, name, "the start point is at the thread's root X: there is no room to retract"));
     }
-    if data.finishing == 0 {
-        step.warn(Rule::TextIgnored, step.span, "G76 with m = 0 finishing passes: the finishing allowance is never cut");
+    let base = data.base;
+    if base.finishing == 0 {
+        step.warn(Rule::TextIgnored, step.span, format!("{name} with no finishing passes: the finishing allowance is never cut"));
     }
-    let schedule = depths(height, first, data.dmin_mm, data.allowance_mm, data.finishing).map_err(|e| g76_alarm(step, e))?;
+    let schedule = pass_depths(data.schedule, height, first, base.dmin_mm, base.allowance_mm, base.finishing)
+        .map_err(|e| cycle_alarm(step, name, e))?;
     // External thread when the start is outside the root: deeper passes are at smaller X.
     let outward = if a.x > c.x { 1.0 } else { -1.0 };
-    let dir_z = (c.z - a.z).signum();
-    let half_angle = (data.angle_deg / 2.0).to_radians().tan();
-    step.feed_warning("G76", lead, rpm);
-    for depth in schedule {
+    let infeed = match kind {
+        // G76 cuts on the flank that faces the direction of cutting: each pass starts
+        // depth x tan(a/2) further along the cut (the shallowest pass nearest the start).
+        Compound::G76 => Infeed::Flank { toward_plus_z: c.z > a.z },
+        Compound::G78 => data.infeed,
+    };
+    step.feed_warning(name, lead, rpm);
+    for (index, depth) in schedule.into_iter().enumerate() {
         let end_x = c.x + outward * (height - depth);
-        // Flank infeed: each pass starts depth x tan(a/2) further along the cut, so the tool cuts
-        // on one flank (the start of the first, shallowest pass is nearest the programmed start).
-        let cut_start = Vec3::new(end_x + taper, a.y, a.z + dir_z * depth * half_angle);
+        let shift = infeed_shift_mm(infeed, index, depth, base.angle_deg);
+        let cut_start = Vec3::new(end_x + taper, a.y, a.z + shift);
         let cut_end = Vec3::new(end_x, a.y, c.z);
         let retract = (a.x - end_x).abs();
-        let pull_out = if data.j.is_some() || data.k.is_some() {
-            gsk_jk_pull_out(step, data.j, data.k, data.pull_out_tenths, lead, outward)
+        let pull_out = if base.j.is_some() || base.k.is_some() {
+            gsk_jk_pull_out(step, base.j, base.k, base.pull_out_tenths, lead, outward)
         } else {
             let angle = step.profile.thread.g76.and_then(|k| k.pull_out_angle).map(|k| step.params.get(k)).unwrap_or(0.0);
-            chamfer_of(data.pull_out_tenths, angle, lead, outward)
+            chamfer_of(base.pull_out_tenths, angle, lead, outward)
         }
         .map(|mut p| {
             p.short_mm = p.short_mm.min(retract);
             p
         });
-        let spec = Cycle { start: a, cut_start, cut_end, lead_mm: lead, rpm, starts: 1, first_deg: 0.0, pull_out };
-        let ops = expand_cycle(&spec).map_err(|e| step.pass_error("G76", e))?;
-        step.st.thread.cycles += 1;
-        let id = step.st.thread.cycles;
+        let spec = Cycle { start: a, cut_start, cut_end, lead_mm: lead, rpm, starts: data.starts, first_deg: 0.0, pull_out };
+        let ops = expand_cycle(&spec).map_err(|e| step.pass_error(name, e))?;
         let first_rec = step.out.records.len();
-        for (_, op) in ops {
+        let mut last_start = None;
+        for (start, op) in ops {
+            if last_start != Some(start) {
+                step.st.thread.cycles += 1;
+                last_start = Some(start);
+            }
+            let id = step.st.thread.cycles;
+            let at = step.out.records.len();
             step.emit(op);
+            for r in step.records_since(at) {
+                r.cycle = Some(id);
+            }
         }
         for r in step.records_since(first_rec) {
-            r.cycle = Some(id);
             if r.op.is_thread() {
-                // Help note 1: FEED HOLD waits for the end of the thread.
+                // G76 help note 1: FEED HOLD waits for the end of the thread.
                 r.hold = Hold::AfterRun;
             }
         }

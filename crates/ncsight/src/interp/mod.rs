@@ -11,7 +11,7 @@ use crate::alarm::{Diagnostic, Rule};
 use crate::geom::{self, ArcError};
 use crate::modal::{Modal, Motion, SpindleDir};
 use crate::motion::{ArcDir, Op, Plane, Record, StopReason, Vec3};
-use crate::profile::{GDef, GFn, Group, IntegerLengths, MDef, MFn, Params, Profile, MAX_RPM};
+use crate::profile::{Compound, GDef, GFn, Group, IntegerLengths, MDef, MFn, Params, Profile, MAX_RPM};
 use crate::read::{Block, Word};
 use crate::source::Span;
 use words::Words;
@@ -402,7 +402,7 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
             // G80: the cycle and its hole data end; F stays (seed 003 8.1.4).
             GFn::CycleCancel => step.st.drill = Default::default(),
             GFn::Drill(kind) => codes.drill = Some(kind),
-            GFn::Dwell | GFn::ReferenceReturn | GFn::LatheCoordinateSet | GFn::MillCoordinateSet | GFn::CompoundThread => {
+            GFn::Dwell | GFn::ReferenceReturn | GFn::LatheCoordinateSet | GFn::MillCoordinateSet | GFn::CompoundThread(_) => {
                 codes.non_modal = Some((w.span, g.function))
             }
             GFn::NotYet(_) => unreachable!("rejected above"),
@@ -534,7 +534,7 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
     // --- one-shot codes ---
     match codes.non_modal {
         Some((_, GFn::Dwell)) => dwell(step, &mut words)?,
-        Some((_, GFn::CompoundThread)) => compound::g76(step, &mut words)?,
+        Some((_, GFn::CompoundThread(kind))) => compound::compound(step, &mut words, kind)?,
         Some((_, GFn::ReferenceReturn)) => {
             let (target, given) = axis_target(step, &mut words)?;
             let mid = target;
@@ -632,7 +632,8 @@ fn describe_command(step: &Step, codes: &Codes) -> String {
         Some((_, GFn::ReferenceReturn)) => return "G28 (reference return)".into(),
         Some((_, GFn::LatheCoordinateSet)) => return "G50 (coordinate setting)".into(),
         Some((_, GFn::MillCoordinateSet)) => return "G92 (coordinate setting)".into(),
-        Some((_, GFn::CompoundThread)) => return "G76 (compound threading)".into(),
+        Some((_, GFn::CompoundThread(Compound::G76))) => return "G76 (compound threading)".into(),
+        Some((_, GFn::CompoundThread(Compound::G78))) => return "G78 (compound threading with infeed modes)".into(),
         _ => ((), step.st.motion),
     };
     if let Some(kind) = step.st.drill.kind {

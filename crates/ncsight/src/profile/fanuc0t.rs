@@ -5,7 +5,7 @@
 
 use super::common::{self, g};
 use super::lathe_a::{self, LATER_THREAD};
-use super::{
+use super::{Compound, 
     CycleKind, G76Keys, GDef, GFn, Group, IntegerLengths, MachineKind, ParamDef, ParamKey, Profile, QPoint, ThreadCmd,
     ThreadRules, TimeKeys, DRY_RUN, SETTINGS,
 };
@@ -14,7 +14,7 @@ use crate::alarm::AlarmStyle;
 const EXTRA: &[GDef] = &[
     g(32, Group::Motion, GFn::Thread(ThreadCmd::Lead), "thread cutting: F lead, Q start angle"),
     g(92, Group::Motion, GFn::Thread(ThreadCmd::Cycle(CycleKind::Fanuc)), "thread cutting cycle: R taper, F lead, Q start angle"),
-    g(76, Group::NonModal, GFn::CompoundThread, "compound thread cutting cycle, two blocks"),
+    g(76, Group::NonModal, GFn::CompoundThread(Compound::G76), "compound thread cutting cycle, two blocks"),
     g(34, Group::Motion, LATER_THREAD, "variable-lead thread cutting"),
     g(80, Group::Motion, GFn::CycleCancel, "cancel a drilling cycle (the 0-T drilling cycles themselves are not simulated)"),
 ];

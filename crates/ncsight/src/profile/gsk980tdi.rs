@@ -2,7 +2,7 @@
 
 use super::common::{self, g, gp};
 use super::lathe_a::{self, LATER_THREAD};
-use super::{G76Keys, SETTINGS, DRY_RUN, CycleKind, QPoint, ThreadCmd, ThreadRules, GDef, GFn, Group, IntegerLengths, MachineKind, ParamDef, ParamKey, Profile, TimeKeys};
+use super::{Compound, G76Keys, SETTINGS, DRY_RUN, CycleKind, QPoint, ThreadCmd, ThreadRules, GDef, GFn, Group, IntegerLengths, MachineKind, ParamDef, ParamKey, Profile, TimeKeys};
 use crate::alarm::AlarmStyle;
 use crate::motion::ArcDir;
 
@@ -14,7 +14,7 @@ const EXTRA: &[GDef] = &[
     gp(32, 1, Group::Motion, LATER_THREAD, "rigid thread cutting (GSK980TDi form with C)"),
     gp(32, 2, Group::Motion, GFn::Thread(ThreadCmd::Arc(ArcDir::Cw)), "arc thread, clockwise"),
     gp(32, 3, Group::Motion, GFn::Thread(ThreadCmd::Arc(ArcDir::Ccw)), "arc thread, counter-clockwise"),
-    g(76, Group::NonModal, GFn::CompoundThread, "compound thread cutting cycle, two blocks"),
+    g(76, Group::NonModal, GFn::CompoundThread(Compound::G76), "compound thread cutting cycle, two blocks"),
     g(33, Group::Motion, GFn::Thread(ThreadCmd::Tap), "tapping: in, spindle reversed, out (help text)"),
     g(34, Group::Motion, GFn::Thread(ThreadCmd::VariableLead), "variable-lead thread cutting"),
     gp(92, 1, Group::Motion, GFn::Thread(ThreadCmd::Cycle(CycleKind::TdiRigid)), "rigid thread cutting cycle (help text: R F L P S)"),
@@ -25,7 +25,7 @@ const EXTRA: &[GDef] = &[
     GDef { major: 87, minor: None, group: Group::Motion, function: LATER_DRILL, meaning: "side peck drilling cycle" },
     GDef { major: 88, minor: None, group: Group::Motion, function: LATER_DRILL, meaning: "side tapping cycle" },
     GDef { major: 89, minor: None, group: Group::Motion, function: LATER_DRILL, meaning: "side boring cycle" },
-    GDef { major: 78, minor: None, group: Group::Motion, function: LATER_THREAD, meaning: "thread cutting cycle with infeed modes" },
+    g(78, Group::NonModal, GFn::CompoundThread(Compound::G78), "compound thread cutting cycle with infeed modes, two blocks"),
 ];
 
 const PARAMS: &[ParamDef] = &[
@@ -142,7 +142,7 @@ pub static PROFILE: Profile = Profile {
     group00_with_01_alarm: true,
     axes: "XZ",
     reference_point_mm: crate::motion::Vec3::new(100.0, 0.0, 200.0),
-    addresses: "GMSTFXZUWRIJKPQLN",
+    addresses: "GMSTFXZUWRIJKPQLNDE",
     g_codes: &[common::G_CODES, lathe_a::G_CODES, EXTRA],
     m_codes: &[common::M_CODES, lathe_a::M_CODES, lathe_a::GSK_M_CODES],
     params: &[PARAMS, DRY_RUN, SETTINGS],

@@ -103,10 +103,21 @@ pub enum GFn {
     Drill(crate::cycles::drill::DrillKind),
     /// A thread-cutting command (group 01).
     Thread(ThreadCmd),
-    /// G76 compound thread cutting, the two-block form (group 00).
-    CompoundThread,
+    /// G76 compound thread cutting, or the GSK980TDi G78 with its infeed modes: the two-block
+    /// form (group 00).
+    CompoundThread(Compound),
     /// Known to the controller, not yet simulated: an alarm that says so.
     NotYet(&'static str),
+}
+
+/// The two-block compound threading cycles.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Compound {
+    /// G76: decreasing depths, infeed along one flank.
+    G76,
+    /// G78 (GSK980TDi help text): G76 with a choice of depth schedule, infeed mode, finishing
+    /// passes D and starts L.
+    G78,
 }
 
 /// The thread-cutting commands. What differs between them is data here and in

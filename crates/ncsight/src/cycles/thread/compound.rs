@@ -6,10 +6,50 @@
 //! at exactly `k - d`); then `m` finishing passes at the full depth k, the first removing the
 //! finishing allowance d.
 
-/// The depth (radius, mm) of every pass, roughing then finishing.
+/// How the roughing depths grow.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Schedule {
+    /// Pass n at `dd x sqrt(n)`: the same area of chip each pass (G76; G78 P m = 1).
+    Decreasing,
+    /// Pass n at `dd x n`: the same depth each pass (G78 P m = 0, "equal-distance infeed").
+    Equal,
+}
+
+/// Where each pass enters the thread groove.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Infeed {
+    /// Straight in, no Z shift (G78 P r = 0, "middle").
+    Radial,
+    /// Along one flank: each pass shifted by `depth x tan(a/2)` towards +Z (`toward_plus_z`) or
+    /// -Z (G76; G78 P r = 1 left, 2 right).
+    Flank { toward_plus_z: bool },
+    /// One flank then the other, pass by pass, the first towards -Z (G78 P r = 3).
+    Alternate,
+}
+
+/// The Z shift (mm) of pass `index` (0-based) at `depth` (radius, mm) for tool angle `angle_deg`.
+pub fn infeed_shift_mm(infeed: Infeed, index: usize, depth: f64, angle_deg: f64) -> f64 {
+    let along = depth * (angle_deg / 2.0).to_radians().tan();
+    match infeed {
+        Infeed::Radial => 0.0,
+        Infeed::Flank { toward_plus_z: true } => along,
+        Infeed::Flank { toward_plus_z: false } => -along,
+        Infeed::Alternate if index % 2 == 0 => -along,
+        Infeed::Alternate => along,
+    }
+}
+
+/// The depth (radius, mm) of every pass of G76, roughing then finishing.
+pub fn depths(k: f64, first: f64, dmin: f64, allowance: f64, finishing: u32) -> Result<Vec<f64>, &'static str> {
+    pass_depths(Schedule::Decreasing, k, first, dmin, allowance, finishing)
+}
+
+/// The depth (radius, mm) of every pass, roughing then finishing: k the thread height, `first`
+/// the first depth dd, `dmin` the least cut, `allowance` the finishing allowance d, `finishing`
+/// the number of passes at k.
 ///
 /// Errors when the data cannot make a thread (the text says which word).
-pub fn depths(k: f64, first: f64, dmin: f64, allowance: f64, finishing: u32) -> Result<Vec<f64>, &'static str> {
+pub fn pass_depths(schedule: Schedule, k: f64, first: f64, dmin: f64, allowance: f64, finishing: u32) -> Result<Vec<f64>, &'static str> {
     if !(k > 0.0) {
         return Err("the thread height P(k) must be more than 0");
     }
@@ -24,7 +64,10 @@ pub fn depths(k: f64, first: f64, dmin: f64, allowance: f64, finishing: u32) -> 
     let mut prev = 0.0f64;
     let mut n = 1u32;
     loop {
-        let mut d = first * (n as f64).sqrt();
+        let mut d = match schedule {
+            Schedule::Decreasing => first * (n as f64).sqrt(),
+            Schedule::Equal => first * n as f64,
+        };
         if d - prev < dmin {
             d = prev + dmin;
         }
@@ -68,6 +111,27 @@ mod tests {
             assert!(w[1] - w[0] >= 0.15 - 1e-12, "{d:?}");
         }
         assert_eq!(*d.last().unwrap(), 1.0);
+    }
+
+    #[test]
+    fn equal_depths() {
+        // G78 P m = 0: k 1.0, dd 0.3, d 0.1: 0.3, 0.6, 0.9 (= k - d), then 2 passes at 1.0.
+        let d = pass_depths(Schedule::Equal, 1.0, 0.3, 0.0, 0.1, 2).unwrap();
+        let expect = [0.3, 0.6, 0.9, 1.0, 1.0];
+        assert_eq!(d.len(), expect.len(), "{d:?}");
+        for (a, b) in d.iter().zip(expect) {
+            assert!((a - b).abs() < 1e-9, "{d:?}");
+        }
+    }
+
+    #[test]
+    fn infeed_shifts() {
+        let t = 30f64.to_radians().tan();
+        assert_eq!(infeed_shift_mm(Infeed::Radial, 3, 1.0, 60.0), 0.0);
+        assert!((infeed_shift_mm(Infeed::Flank { toward_plus_z: true }, 0, 1.0, 60.0) - t).abs() < 1e-12);
+        assert!((infeed_shift_mm(Infeed::Flank { toward_plus_z: false }, 0, 1.0, 60.0) + t).abs() < 1e-12);
+        assert!((infeed_shift_mm(Infeed::Alternate, 0, 1.0, 60.0) + t).abs() < 1e-12);
+        assert!((infeed_shift_mm(Infeed::Alternate, 1, 1.0, 60.0) - t).abs() < 1e-12);
     }
 
     #[test]
