@@ -15,6 +15,8 @@ pub enum Motion {
     ArcCcw,
     /// A thread command (G32, G32.1, G92, G92.1, G32.2/G32.3) is the group 01 mode.
     Thread(ThreadCmd),
+    /// G90 / G94 single turning or facing cycle is the group 01 mode.
+    Box(crate::cycles::turning::BoxKind),
 }
 
 /// The last block of a run of continuous thread blocks, held back until the next block shows
@@ -77,6 +79,15 @@ pub struct G78Data {
     pub starts: u32,
 }
 
+/// What the blocks after a G90/G94 block repeat: its end point and taper, kept while the cycle
+/// is the group 01 mode (X, Z and R are modal in these cycles; ncsight follows the FANUC
+/// reading, the GSK help text calls the codes modal without listing the words).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct BoxMemory {
+    pub end: Option<Vec3>,
+    pub taper_mm: f64,
+}
+
 /// Thread words and memories that last from block to block.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ThreadState {
@@ -131,6 +142,8 @@ pub enum SpindleDir {
 
 #[derive(Debug, Clone, PartialEq)]
 pub struct Modal {
+    /// G90/G94 end point and taper of the last cycle block, for the blocks that repeat it.
+    pub box_cycle: BoxMemory,
     /// Current position, programme coordinates, mm, X as a radius.
     pub pos: Vec3,
     pub motion: Motion,
@@ -170,6 +183,7 @@ impl Modal {
         Modal {
             pos: Vec3::default(),
             motion: Motion::Rapid,
+            box_cycle: BoxMemory::default(),
             plane: if profile.kind == MachineKind::Lathe { Plane::ZX } else { Plane::XY },
             incremental: false,
             inch: false,

@@ -3,3 +3,4 @@
 
 pub mod drill;
 pub mod thread;
+pub mod turning;

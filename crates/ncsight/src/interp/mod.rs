@@ -5,6 +5,7 @@
 mod compound;
 mod drill;
 mod thread;
+mod turning;
 mod words;
 
 use crate::alarm::{Diagnostic, Rule};
@@ -378,6 +379,7 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
             GFn::ArcCw => codes.motion = Some((w.span, Motion::ArcCw)),
             GFn::ArcCcw => codes.motion = Some((w.span, Motion::ArcCcw)),
             GFn::Thread(cmd) => codes.motion = Some((w.span, Motion::Thread(cmd))),
+            GFn::BoxCycle(kind) => codes.motion = Some((w.span, Motion::Box(kind))),
             GFn::PlaneXY => st.plane = Plane::XY,
             GFn::PlaneZX => st.plane = Plane::ZX,
             GFn::PlaneYZ => st.plane = Plane::YZ,
@@ -420,6 +422,9 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
             }
             step.st.thread.cycle_end = None;
             step.st.thread.repair = false;
+        }
+        if !matches!(m, Motion::Box(_)) {
+            step.st.box_cycle = Default::default();
         }
         // A group 01 code cancels a drilling cycle as G80 does (seed 003 8.1.4).
         step.st.drill = Default::default();
@@ -569,6 +574,12 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
                 }
                 return finish_block(step, words, &codes, after, switches);
             }
+            if let Motion::Box(kind) = step.st.motion {
+                if has_axis || words.has(b'R') {
+                    turning::block(step, &mut words, kind, codes.motion.is_some())?;
+                }
+                return finish_block(step, words, &codes, after, switches);
+            }
             let arc_words = matches!(step.st.motion, Motion::ArcCw | Motion::ArcCcw) && b"RIJK".iter().any(|l| words.has(*l));
             let motion_words = has_axis || arc_words;
             if motion_words {
@@ -650,6 +661,7 @@ fn describe_command(step: &Step, codes: &Codes) -> String {
         Motion::ArcCw => format!("G02 in the {plane} plane"),
         Motion::ArcCcw => format!("G03 in the {plane} plane"),
         Motion::Thread(cmd) => format!("{} (thread cutting)", thread::name(cmd)),
+        Motion::Box(kind) => format!("{} (single turning/facing cycle)", kind.code()),
     }
 }
 
@@ -737,6 +749,7 @@ fn motion(step: &mut Step, words: &mut Words) -> Result<(), Diagnostic> {
             arc(step, words, from, target, dir)?;
         }
         Motion::Thread(_) => unreachable!("thread blocks go to thread::block"),
+        Motion::Box(_) => unreachable!("cycle blocks go to turning::block"),
     }
     Ok(())
 }

@@ -16,7 +16,7 @@ const EXTRA: &[GDef] = &[
     g(92, Group::Motion, GFn::Thread(ThreadCmd::Cycle(CycleKind::Fanuc)), "thread cutting cycle: R taper, F lead, Q start angle"),
     g(76, Group::NonModal, GFn::CompoundThread(Compound::G76), "compound thread cutting cycle, two blocks"),
     g(34, Group::Motion, LATER_THREAD, "variable-lead thread cutting"),
-    g(80, Group::Motion, GFn::CycleCancel, "cancel a drilling cycle (the 0-T drilling cycles themselves are not simulated)"),
+    g(80, Group::CannedCycle, GFn::CycleCancel, "cancel a drilling cycle, group 10 on the FANUC (the 0-T drilling cycles themselves are not simulated)"),
 ];
 
 const PARAMS: &[ParamDef] = &[

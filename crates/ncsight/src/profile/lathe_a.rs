@@ -4,9 +4,9 @@
 
 use super::common::{g, m};
 use super::{GDef, GFn, Group, MDef, MFn};
+use crate::cycles::turning::BoxKind;
 
 const LATER_MRC: GFn = GFn::NotYet("multiple repetitive cycles (G70-G75) are not simulated by ncsight yet");
-const LATER_BOX: GFn = GFn::NotYet("single turning/facing cycles (G90/G94) are not simulated by ncsight yet");
 pub(super) const LATER_THREAD: GFn = GFn::NotYet("this thread command is not simulated by ncsight yet");
 pub(super) const LATER_G76: GFn = GFn::NotYet("the G76 compound threading cycle is not simulated by ncsight yet");
 
@@ -19,8 +19,8 @@ pub(super) const G_CODES: &[GDef] = &[
     g(73, Group::NonModal, LATER_MRC, "pattern repeating"),
     g(74, Group::NonModal, LATER_MRC, "end face peck drilling"),
     g(75, Group::NonModal, LATER_MRC, "outer/inner diameter grooving"),
-    g(90, Group::Motion, LATER_BOX, "outer/inner diameter cutting cycle"),
-    g(94, Group::Motion, LATER_BOX, "end face cutting cycle"),
+    g(90, Group::Motion, GFn::BoxCycle(BoxKind::Turning), "outer/inner diameter cutting cycle"),
+    g(94, Group::Motion, GFn::BoxCycle(BoxKind::Facing), "end face cutting cycle"),
     g(96, Group::SpindleSpeedMode, GFn::ConstantSurfaceSpeed, "constant surface speed: S in m/min"),
     g(97, Group::SpindleSpeedMode, GFn::ConstantRpm, "constant spindle speed: S in rpm"),
     g(98, Group::FeedMode, GFn::FeedPerMinute, "feed per minute: F in mm/min"),

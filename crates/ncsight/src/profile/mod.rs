@@ -106,6 +106,8 @@ pub enum GFn {
     /// G76 compound thread cutting, or the GSK980TDi G78 with its infeed modes: the two-block
     /// form (group 00).
     CompoundThread(Compound),
+    /// G90 / G94: the single turning and facing cycles of the lathes (group 01).
+    BoxCycle(crate::cycles::turning::BoxKind),
     /// Known to the controller, not yet simulated: an alarm that says so.
     NotYet(&'static str),
 }

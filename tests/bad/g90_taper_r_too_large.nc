@@ -1,0 +1,5 @@
+(expect NCS-E45 line 4 col 14 on gsk980tdi)
+G97 S500 M03
+G0 X50 Z2
+G90 X46 Z-30 R3 F100
+M30
