@@ -1,22 +1,12 @@
 //! Drilling canned cycles (seed 003, FANUC 0-M), rule by rule.
 
 use ncsight::motion::{Op, StopReason};
-use ncsight::profile::{self, Params};
-use ncsight::{run_text, Diagnostic, Event, Mode, Record, Switches};
+use ncsight::{Diagnostic, Record};
+
+mod common;
 
 fn run(params: &[&str], text: &str) -> (Vec<Record>, Vec<Diagnostic>) {
-    let mut p = Params::defaults(profile::by_name("fanuc0m").unwrap());
-    for a in params {
-        p.set_text(a).unwrap();
-    }
-    let mut records = Vec::new();
-    let mut diags = Vec::new();
-    for e in run_text(p, Switches::default(), Mode::Run, text.as_bytes()) {
-        match e {
-            Event::Record(r) => records.push(r),
-            Event::Diagnostic(d) => diags.push(d),
-        }
-    }
+    let (records, diags) = common::run_plain("fanuc0m", params, text);
     assert!(diags.iter().all(|d| !d.is_alarm()), "{diags:?}");
     (records, diags)
 }

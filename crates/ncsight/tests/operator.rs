@@ -1,23 +1,15 @@
 //! The operator machine and the time model, rule by rule; each test names the note it follows.
 
 use ncsight::motion::{Op, StopReason, Vec3};
-use ncsight::profile::{self, Params};
 use ncsight::time::Overrides;
-use ncsight::{run_text_with, Event, Mode, Options, Record, Switches};
+use ncsight::{Options, Record, Switches};
+
+mod common;
 
 fn run(machine: &str, params: &[&str], opts: Options, text: &str) -> Vec<Record> {
-    let mut p = Params::defaults(profile::by_name(machine).unwrap());
-    for a in params {
-        p.set_text(a).unwrap();
-    }
-    let mut out = Vec::new();
-    for e in run_text_with(p, Switches::default(), Mode::Run, opts, text.as_bytes()) {
-        match e {
-            Event::Record(r) => out.push(r),
-            Event::Diagnostic(d) => assert!(!d.is_alarm(), "{d:?}"),
-        }
-    }
-    out
+    let (records, diags) = common::run_with(machine, params, Switches::default(), opts, text);
+    assert!(diags.iter().all(|d| !d.is_alarm()), "{diags:?}");
+    records
 }
 
 fn hold_at(t: f64) -> Options {

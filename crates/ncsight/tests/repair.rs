@@ -2,24 +2,14 @@
 //! through the interpreter, passes the recorded point when the spindle is at the recorded angle.
 
 use ncsight::motion::{Op, Vec3};
-use ncsight::profile::{self, Params};
 use ncsight::repair::{Recorded, RepairJob};
-use ncsight::{run_text, Event, Mode, Record, Switches};
+use ncsight::{Record, Switches};
+
+mod common;
 use proptest::prelude::*;
 
 fn run(machine: &str, params: &[&str], switches: Switches, text: &str) -> (Vec<Record>, Vec<ncsight::Diagnostic>) {
-    let mut p = Params::defaults(profile::by_name(machine).unwrap());
-    for a in params {
-        p.set_text(a).unwrap();
-    }
-    let (mut recs, mut diags) = (Vec::new(), Vec::new());
-    for e in run_text(p, switches, Mode::Run, text.as_bytes()) {
-        match e {
-            Event::Record(r) => recs.push(r),
-            Event::Diagnostic(d) => diags.push(d),
-        }
-    }
-    (recs, diags)
+    common::run_with(machine, params, switches, ncsight::Options::default(), text)
 }
 
 /// The C angle (positive C direction) when the tool passes long-axis coordinate `m`.

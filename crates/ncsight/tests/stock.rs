@@ -1,27 +1,17 @@
 //! The stock simulation (issue 7): the cut surface follows the spindle angle of every record.
 
 use ncsight::motion::Vec3;
-use ncsight::profile::{self, Params};
 use ncsight::repair::{Recorded, RepairJob};
 use ncsight::stock::measure::{simulate, SimOptions};
 use ncsight::stock::{Bar, Setup};
-use ncsight::{run_text, Event, Mode, Record, Switches};
+use ncsight::Record;
+
+mod common;
 
 fn records(machine: &str, params: &[&str], text: &str) -> Vec<Record> {
-    let mut p = Params::defaults(profile::by_name(machine).unwrap());
-    for a in params {
-        p.set_text(a).unwrap();
-    }
-    run_text(p, Switches::default(), Mode::Run, text.as_bytes())
-        .into_iter()
-        .filter_map(|e| match e {
-            Event::Record(r) => Some(r),
-            Event::Diagnostic(d) => {
-                assert!(!d.is_alarm(), "{d:?}");
-                None
-            }
-        })
-        .collect()
+    let (records, diags) = common::run_plain(machine, params, text);
+    assert!(diags.iter().all(|d| !d.is_alarm()), "{diags:?}");
+    records
 }
 
 fn bar(d: f64, l: f64) -> Setup {

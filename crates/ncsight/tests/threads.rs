@@ -1,8 +1,9 @@
 //! Thread commands, rule by rule: each test names the manual note it follows.
 
 use ncsight::motion::{LongAxis, Op, Vec3};
-use ncsight::profile::{self, Params};
-use ncsight::{run_text, Diagnostic, Event, Mode, Record, Switches};
+use ncsight::{Diagnostic, Record};
+
+mod common;
 
 struct Run {
     records: Vec<Record>,
@@ -10,18 +11,7 @@ struct Run {
 }
 
 fn run(machine: &str, params: &[&str], text: &str) -> Run {
-    let mut p = Params::defaults(profile::by_name(machine).unwrap());
-    for a in params {
-        p.set_text(a).unwrap();
-    }
-    let mut records = Vec::new();
-    let mut diags = Vec::new();
-    for e in run_text(p, Switches::default(), Mode::Run, text.as_bytes()) {
-        match e {
-            Event::Record(r) => records.push(r),
-            Event::Diagnostic(d) => diags.push(d),
-        }
-    }
+    let (records, diags) = common::run_plain(machine, params, text);
     Run { records, diags }
 }
 

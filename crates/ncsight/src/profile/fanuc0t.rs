@@ -5,7 +5,7 @@
 
 use super::common::{self, g};
 use super::lathe_a::{self, LATER_THREAD};
-use super::{Compound, 
+use super::{FANUC_RATES, Compound, 
     CycleKind, G76Keys, GDef, GFn, Group, IntegerLengths, MachineKind, ParamDef, ParamKey, Profile, QPoint, ThreadCmd,
     ThreadRules, TimeKeys, DRY_RUN, SETTINGS,
 };
@@ -20,24 +20,6 @@ const EXTRA: &[GDef] = &[
 ];
 
 const PARAMS: &[ParamDef] = &[
-    ParamDef {
-        key: ParamKey::Number(1420, None),
-        meaning: "rapid traverse rate (each axis)",
-        unit: "mm/min",
-        min: 1.0,
-        max: 60000.0,
-        default: 8000.0,
-        source: "FANUC 0i numbering (inferred); default assumed",
-    },
-    ParamDef {
-        key: ParamKey::Number(1422, None),
-        meaning: "upper limit of the cutting feed",
-        unit: "mm/min",
-        min: 1.0,
-        max: 60000.0,
-        default: 8000.0,
-        source: "FANUC 0i numbering (inferred); default assumed",
-    },
     ParamDef {
         key: ParamKey::Number(5130, None),
         meaning: "thread chamfering (pull-out) amount of G92 and G76",
@@ -109,7 +91,7 @@ pub static PROFILE: Profile = Profile {
     addresses: "GMSTFXZUWRIKPQLN",
     g_codes: &[common::G_CODES, lathe_a::G_CODES, EXTRA],
     m_codes: &[common::M_CODES, lathe_a::M_CODES],
-    params: &[PARAMS, DRY_RUN, SETTINGS],
+    params: &[FANUC_RATES, PARAMS, DRY_RUN, SETTINGS],
     time: TimeKeys {
         rapid: [ParamKey::Number(1420, None), ParamKey::Number(1420, None), ParamKey::Number(1420, None)],
         dry_run: ParamKey::Setting("dry_run_mm_min"),

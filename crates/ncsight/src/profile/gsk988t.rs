@@ -4,7 +4,7 @@
 
 use super::common::{self, g, gp};
 use super::lathe_a::{self, LATER_G76, LATER_THREAD};
-use super::{SETTINGS, CycleKind, GFn, QPoint, ThreadCmd, ThreadRules, GDef, Group, IntegerLengths, MachineKind, ParamDef, ParamKey, Profile, TimeKeys};
+use super::{FANUC_RATES, SETTINGS, CycleKind, GFn, QPoint, ThreadCmd, ThreadRules, GDef, Group, IntegerLengths, MachineKind, ParamDef, ParamKey, Profile, TimeKeys};
 use crate::alarm::AlarmStyle;
 use crate::motion::ArcDir;
 
@@ -27,24 +27,6 @@ const PARAMS: &[ParamDef] = &[
         max: 60000.0,
         default: 5000.0,
         source: "seed 001, G32.1 note 13; default assumed (not found)",
-    },
-    ParamDef {
-        key: ParamKey::Number(1420, None),
-        meaning: "rapid traverse rate (each axis)",
-        unit: "mm/min",
-        min: 1.0,
-        max: 60000.0,
-        default: 8000.0,
-        source: "FANUC numbering (inferred); default assumed",
-    },
-    ParamDef {
-        key: ParamKey::Number(1422, None),
-        meaning: "upper limit of the cutting feed",
-        unit: "mm/min",
-        min: 1.0,
-        max: 60000.0,
-        default: 8000.0,
-        source: "FANUC numbering (inferred); default assumed",
     },
     ParamDef {
         key: ParamKey::Number(1466, None),
@@ -108,7 +90,7 @@ pub static PROFILE: Profile = Profile {
     addresses: "GMSTFXYZUVWRIJKPQLN",
     g_codes: &[common::G_CODES, lathe_a::G_CODES, EXTRA],
     m_codes: &[common::M_CODES, lathe_a::M_CODES, lathe_a::GSK_M_CODES],
-    params: &[PARAMS, SETTINGS],
+    params: &[FANUC_RATES, PARAMS, SETTINGS],
     time: TimeKeys {
         rapid: [ParamKey::Number(1420, None), ParamKey::Number(1420, None), ParamKey::Number(1420, None)],
         dry_run: ParamKey::Number(1410, None),

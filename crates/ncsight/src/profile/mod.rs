@@ -307,6 +307,30 @@ pub struct TimeKeys {
 
 /// ncsight's own settings, on every profile: what the time model needs where no manual gave a
 /// parameter number (params_alarms.md: acc/dec time constants were not found).
+/// The rapid rate and feed ceiling under their FANUC numbers (1420, 1422), shared by the
+/// profiles that use FANUC parameter numbering (fanuc0t; the GSK988T, whose manual numbers its
+/// parameters the FANUC way).
+pub const FANUC_RATES: &[ParamDef] = &[
+    ParamDef {
+        key: ParamKey::Number(1420, None),
+        meaning: "rapid traverse rate (each axis)",
+        unit: "mm/min",
+        min: 1.0,
+        max: 60000.0,
+        default: 8000.0,
+        source: "FANUC 0i numbering (inferred); default assumed",
+    },
+    ParamDef {
+        key: ParamKey::Number(1422, None),
+        meaning: "upper limit of the cutting feed",
+        unit: "mm/min",
+        min: 1.0,
+        max: 60000.0,
+        default: 8000.0,
+        source: "FANUC 0i numbering (inferred); default assumed",
+    },
+];
+
 pub const SETTINGS: &[ParamDef] = &[
     ParamDef {
         key: ParamKey::Setting("rapid_accel_ms"),

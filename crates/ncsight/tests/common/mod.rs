@@ -1,0 +1,32 @@
+//! What the integration tests share: run a programme on a machine with some parameters and
+//! collect what the interpreter says.
+#![allow(dead_code)]
+
+use ncsight::profile::{self, Params};
+use ncsight::{run_text_with, Diagnostic, Event, Mode, Options, Record, Switches};
+
+/// `machine` with its default parameters, each of `params` (`NAME=VALUE`) set on top.
+pub fn params(machine: &str, params: &[&str]) -> Params {
+    let mut p = Params::defaults(profile::by_name(machine).unwrap());
+    for a in params {
+        p.set_text(a).unwrap();
+    }
+    p
+}
+
+/// Every record and diagnostic of `text` run on `machine`.
+pub fn run_with(machine: &str, given: &[&str], switches: Switches, opts: Options, text: &str) -> (Vec<Record>, Vec<Diagnostic>) {
+    let (mut records, mut diags) = (Vec::new(), Vec::new());
+    for e in run_text_with(params(machine, given), switches, Mode::Run, opts, text.as_bytes()) {
+        match e {
+            Event::Record(r) => records.push(r),
+            Event::Diagnostic(d) => diags.push(d),
+        }
+    }
+    (records, diags)
+}
+
+/// The same with the default switches and options.
+pub fn run_plain(machine: &str, given: &[&str], text: &str) -> (Vec<Record>, Vec<Diagnostic>) {
+    run_with(machine, given, Switches::default(), Options::default(), text)
+}
