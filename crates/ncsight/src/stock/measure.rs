@@ -3,6 +3,7 @@
 //! full-depth and run-out lengths, deviation from a named thread, and the findings (phase error
 //! between passes, a rapid into the stock, the tool past the stock's end).
 
+use rayon::prelude::*;
 use super::lathe::{Finding, LatheStock};
 use super::standard::Expected;
 use super::{Bar, Setup, Tool};
@@ -236,16 +237,25 @@ fn measure(stock: &LatheStock, records: &[Record], tools: &[Tool]) -> Measuremen
     if i_lo >= i_hi {
         return m;
     }
-    // One pass in memory order: the extremes, and the envelope (the deepest point around each z).
-    let (mut lo, mut hi) = (f32::MAX, f32::MIN);
-    let mut envelope = vec![if internal { f32::MIN } else { f32::MAX }; i_hi - i_lo + 1];
-    for j in 0..g.ntheta {
-        for (e, &v) in envelope.iter_mut().zip(&stock.row(j)[i_lo..=i_hi]) {
-            lo = lo.min(v);
-            hi = hi.max(v);
-            *e = if internal { e.max(v) } else { e.min(v) };
-        }
-    }
+    // One pass in memory order, rows in parallel: the extremes, and the envelope (the deepest
+    // point around each z).
+    let deeper = |a: f32, b: f32| if internal { a.max(b) } else { a.min(b) };
+    let empty = || (f32::MAX, f32::MIN, vec![if internal { f32::MIN } else { f32::MAX }; i_hi - i_lo + 1]);
+    let (lo, hi, envelope) = stock
+        .r
+        .par_chunks(g.nz)
+        .fold(empty, |(mut lo, mut hi, mut env), row| {
+            for (e, &v) in env.iter_mut().zip(&row[i_lo..=i_hi]) {
+                lo = lo.min(v);
+                hi = hi.max(v);
+                *e = deeper(*e, v);
+            }
+            (lo, hi, env)
+        })
+        .reduce(empty, |(lo_a, hi_a, mut env_a), (lo_b, hi_b, env_b)| {
+            env_a.iter_mut().zip(&env_b).for_each(|(a, &b)| *a = deeper(*a, b));
+            (lo_a.min(lo_b), hi_a.max(hi_b), env_a)
+        });
     // External: the crest is the largest radius, the root the smallest; a bore the other way
     // round, and its major diameter is still the largest.
     let (major_r, minor_r) = (hi, lo);
