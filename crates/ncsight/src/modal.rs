@@ -142,6 +142,8 @@ pub enum SpindleDir {
 
 #[derive(Debug, Clone, PartialEq)]
 pub struct Modal {
+    /// G74 / G75 back-off e from their first blocks (index 0 G74, 1 G75).
+    pub peck_back_off_mm: [Option<f64>; 2],
     /// G90/G94 end point and taper of the last cycle block, for the blocks that repeat it.
     pub box_cycle: BoxMemory,
     /// Current position, programme coordinates, mm, X as a radius.
@@ -183,6 +185,7 @@ impl Modal {
         Modal {
             pos: Vec3::default(),
             motion: Motion::Rapid,
+            peck_back_off_mm: [None; 2],
             box_cycle: BoxMemory::default(),
             plane: if profile.kind == MachineKind::Lathe { Plane::ZX } else { Plane::XY },
             incremental: false,

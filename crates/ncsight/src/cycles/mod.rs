@@ -2,5 +2,6 @@
 //! modal state and no words here; the interpreter reads the words and calls these.
 
 pub mod drill;
+pub mod groove;
 pub mod thread;
 pub mod turning;

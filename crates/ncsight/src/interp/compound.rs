@@ -15,12 +15,12 @@ use crate::read::Word;
 
 /// Lengths the manual gives in least input increments whatever the profile's decimal-point
 /// rule: G76 P(k), Q(dd), Q(dmin) (BEHAVIOUR.md; TAC p139: `Q150` = 0.15 mm).
-fn increments(step: &Step, w: &Word) -> Result<f64, Diagnostic> {
+pub(super) fn increments(step: &Step, w: &Word, code: &str) -> Result<f64, Diagnostic> {
     if w.decimal && !w.expr {
         return Err(step.alarm(
             Rule::IllegalDecimalPoint,
             w.span,
-            format!("{}: G76 gives this in least input increments, without a decimal point", w.text()),
+            format!("{}: {code} gives this in least input increments, without a decimal point", w.text()),
         ));
     }
     let unit = if step.st.inch { 0.0001 * 25.4 } else { 0.001 };
@@ -110,7 +110,7 @@ pub(super) fn compound(step: &mut Step, words: &mut Words, kind: Compound) -> Re
         }
     }
     if let Some(w) = words.take(b'Q') {
-        data.base.dmin_mm = increments(step, &w)?;
+        data.base.dmin_mm = increments(step, &w, name)?;
     }
     if let Some(w) = words.take(b'R') {
         data.base.allowance_mm = step.length(&w)?;
@@ -160,11 +160,11 @@ fn cut(step: &mut Step, words: &mut Words, name: &str, kind: Compound, data: G78
         None => 0.0,
     };
     let height = match words.take(b'P') {
-        Some(w) => increments(step, &w)?,
+        Some(w) => increments(step, &w, name)?,
         None => return Err(cycle_alarm(step, name, "the thread height P(k) is missing")),
     };
     let first = match words.take(b'Q') {
-        Some(w) => increments(step, &w)?,
+        Some(w) => increments(step, &w, name)?,
         None => return Err(cycle_alarm(step, name, "the first depth Q(dd) is missing")),
     };
     let rpm = step.follow_rpm(name)?;

@@ -4,6 +4,7 @@
 
 mod compound;
 mod drill;
+mod groove;
 mod thread;
 mod turning;
 mod words;
@@ -404,7 +405,7 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
             // G80: the cycle and its hole data end; F stays (seed 003 8.1.4).
             GFn::CycleCancel => step.st.drill = Default::default(),
             GFn::Drill(kind) => codes.drill = Some(kind),
-            GFn::Dwell | GFn::ReferenceReturn | GFn::LatheCoordinateSet | GFn::MillCoordinateSet | GFn::CompoundThread(_) => {
+            GFn::Dwell | GFn::ReferenceReturn | GFn::LatheCoordinateSet | GFn::MillCoordinateSet | GFn::CompoundThread(_) | GFn::PeckCycle(_) => {
                 codes.non_modal = Some((w.span, g.function))
             }
             GFn::NotYet(_) => unreachable!("rejected above"),
@@ -540,6 +541,7 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
     match codes.non_modal {
         Some((_, GFn::Dwell)) => dwell(step, &mut words)?,
         Some((_, GFn::CompoundThread(kind))) => compound::compound(step, &mut words, kind)?,
+        Some((_, GFn::PeckCycle(kind))) => groove::block(step, &mut words, kind)?,
         Some((_, GFn::ReferenceReturn)) => {
             let (target, given) = axis_target(step, &mut words)?;
             let mid = target;
@@ -645,6 +647,7 @@ fn describe_command(step: &Step, codes: &Codes) -> String {
         Some((_, GFn::MillCoordinateSet)) => return "G92 (coordinate setting)".into(),
         Some((_, GFn::CompoundThread(Compound::G76))) => return "G76 (compound threading)".into(),
         Some((_, GFn::CompoundThread(Compound::G78))) => return "G78 (compound threading with infeed modes)".into(),
+        Some((_, GFn::PeckCycle(kind))) => return format!("{} (peck cutting cycle)", kind.code()),
         _ => ((), step.st.motion),
     };
     if let Some(kind) = step.st.drill.kind {

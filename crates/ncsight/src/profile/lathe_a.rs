@@ -4,9 +4,10 @@
 
 use super::common::{g, m};
 use super::{GDef, GFn, Group, MDef, MFn};
+use crate::cycles::groove::PeckKind;
 use crate::cycles::turning::BoxKind;
 
-const LATER_MRC: GFn = GFn::NotYet("multiple repetitive cycles (G70-G75) are not simulated by ncsight yet");
+const LATER_MRC: GFn = GFn::NotYet("multiple repetitive cycles (G70-G73) are not simulated by ncsight yet");
 pub(super) const LATER_THREAD: GFn = GFn::NotYet("this thread command is not simulated by ncsight yet");
 pub(super) const LATER_G76: GFn = GFn::NotYet("the G76 compound threading cycle is not simulated by ncsight yet");
 
@@ -17,8 +18,8 @@ pub(super) const G_CODES: &[GDef] = &[
     g(71, Group::NonModal, LATER_MRC, "stock removal in turning"),
     g(72, Group::NonModal, LATER_MRC, "stock removal in facing"),
     g(73, Group::NonModal, LATER_MRC, "pattern repeating"),
-    g(74, Group::NonModal, LATER_MRC, "end face peck drilling"),
-    g(75, Group::NonModal, LATER_MRC, "outer/inner diameter grooving"),
+    g(74, Group::NonModal, GFn::PeckCycle(PeckKind::Face), "end face peck drilling"),
+    g(75, Group::NonModal, GFn::PeckCycle(PeckKind::Groove), "outer/inner diameter grooving"),
     g(90, Group::Motion, GFn::BoxCycle(BoxKind::Turning), "outer/inner diameter cutting cycle"),
     g(94, Group::Motion, GFn::BoxCycle(BoxKind::Facing), "end face cutting cycle"),
     g(96, Group::SpindleSpeedMode, GFn::ConstantSurfaceSpeed, "constant surface speed: S in m/min"),

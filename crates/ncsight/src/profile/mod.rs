@@ -106,6 +106,9 @@ pub enum GFn {
     /// G76 compound thread cutting, or the GSK980TDi G78 with its infeed modes: the two-block
     /// form (group 00).
     CompoundThread(Compound),
+    /// G74 / G75 on the lathes: peck cutting along one axis, stepping along the other, two
+    /// blocks (group 00).
+    PeckCycle(crate::cycles::groove::PeckKind),
     /// G90 / G94: the single turning and facing cycles of the lathes (group 01).
     BoxCycle(crate::cycles::turning::BoxKind),
     /// Known to the controller, not yet simulated: an alarm that says so.

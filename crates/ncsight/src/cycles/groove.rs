@@ -1,0 +1,192 @@
+//! G74 (end face peck cutting: pecks along Z, steps along X) and G75 (outer/inner diameter
+//! grooving: pecks along X, steps along Z) of the system-A lathes, GSK980TDi help text G74/G75
+//! steps 1-7. One cycle written once along a "peck axis" and a "step axis":
+//! 1. from the groove's start An, feed Δk (G74) / Δi (G75) along the peck axis;
+//! 2. rapid back e;
+//! 3. feed on by (peck + e) while the end stays between An and Bn, else feed to Bn;
+//! 4. rapid the relief Δd along the step axis to Cn;
+//! 5. rapid back along the peck axis to Dn (the start's peck level);
+//! 6. if grooves remain, rapid along the step axis by (Δd + step), no further than Af, and 1;
+//! 7. else rapid along the step axis back to the start A.
+
+use crate::motion::Vec3;
+
+/// Which cycle: which axis pecks.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum PeckKind {
+    /// G74: pecks along Z, steps along X.
+    Face,
+    /// G75: pecks along X, steps along Z.
+    Groove,
+}
+
+impl PeckKind {
+    pub fn code(self) -> &'static str {
+        match self {
+            PeckKind::Face => "G74",
+            PeckKind::Groove => "G75",
+        }
+    }
+
+    /// (peck axis, step axis) as `Vec3` indices.
+    pub fn axes(self) -> (usize, usize) {
+        match self {
+            PeckKind::Face => (2, 0),
+            PeckKind::Groove => (0, 2),
+        }
+    }
+}
+
+/// One cycle block, resolved (all lengths mm along the axes, positive).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PeckCycle {
+    pub kind: PeckKind,
+    pub start: Vec3,
+    pub end: Vec3,
+    /// e: the back-off after each peck.
+    pub back_off_mm: f64,
+    /// The peck along the peck axis (Δk for G74, Δi for G75).
+    pub peck_mm: f64,
+    /// The step between grooves along the step axis (Δi for G74, Δk for G75).
+    pub step_mm: f64,
+    /// Δd: the relief at the bottom along the step axis, away from the direction of stepping.
+    pub relief_mm: f64,
+}
+
+/// One move of the cycle.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Move {
+    Rapid(Vec3),
+    Feed(Vec3),
+}
+
+/// Why a cycle cannot run.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum PeckError {
+    /// The end differs from the start along the peck axis but the peck is 0.
+    NoPeck,
+    /// The end differs from the start along the step axis but the step is 0.
+    NoStep,
+    /// More moves than `limit`.
+    TooMany,
+}
+
+/// The moves of one cycle block, at most `limit` of them.
+pub fn expand(c: &PeckCycle, limit: usize) -> Result<Vec<Move>, PeckError> {
+    let (p, s) = c.kind.axes();
+    let (p0, p_end) = (c.start.axis(p), c.end.axis(p));
+    let (s0, s_end) = (c.start.axis(s), c.end.axis(s));
+    let dir_p = (p_end - p0).signum();
+    let dir_s = (s_end - s0).signum();
+    let depth = (p_end - p0).abs();
+    let across = (s_end - s0).abs();
+    if depth > 0.0 && c.peck_mm <= 0.0 {
+        return Err(PeckError::NoPeck);
+    }
+    if across > 0.0 && c.step_mm <= 0.0 {
+        return Err(PeckError::NoStep);
+    }
+    let at = |pv: f64, sv: f64| {
+        let mut v = c.start;
+        v.set_axis(p, pv);
+        v.set_axis(s, sv);
+        v
+    };
+    let mut out = Vec::new();
+    let push = |m: Move, out: &mut Vec<Move>| {
+        out.push(m);
+        if out.len() > limit {
+            Err(PeckError::TooMany)
+        } else {
+            Ok(())
+        }
+    };
+    let mut done_across = 0.0f64;
+    loop {
+        let sv = s0 + dir_s * done_across;
+        // Steps 1-3: peck down to the groove's bottom.
+        if depth > 0.0 {
+            let mut reached = 0.0f64;
+            loop {
+                reached = (reached + c.peck_mm).min(depth);
+                push(Move::Feed(at(p0 + dir_p * reached, sv)), &mut out)?;
+                if reached >= depth - 1e-12 {
+                    break;
+                }
+                let back = (reached - c.back_off_mm).max(0.0);
+                if c.back_off_mm > 0.0 {
+                    push(Move::Rapid(at(p0 + dir_p * back, sv)), &mut out)?;
+                }
+            }
+        }
+        // Steps 4-5: relief along the step axis (back toward the start's side), out to Dn.
+        let relief_s = if done_across > 0.0 { sv - dir_s * c.relief_mm.min(done_across) } else { sv };
+        if depth > 0.0 {
+            if relief_s != sv {
+                push(Move::Rapid(at(p_end, relief_s)), &mut out)?;
+            }
+            push(Move::Rapid(at(p0, relief_s)), &mut out)?;
+        }
+        if done_across >= across - 1e-12 {
+            break;
+        }
+        // Step 6: over to the next groove, no further than Af.
+        done_across = (done_across + c.step_mm).min(across);
+        push(Move::Rapid(at(p0, s0 + dir_s * done_across)), &mut out)?;
+    }
+    // Step 7: back to A along the step axis.
+    if across > 0.0 {
+        push(Move::Rapid(at(p0, s0)), &mut out)?;
+    }
+    Ok(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn pts(m: &[Move]) -> Vec<(char, f64, f64)> {
+        m.iter()
+            .map(|m| match m {
+                Move::Rapid(v) => ('r', v.x, v.z),
+                Move::Feed(v) => ('f', v.x, v.z),
+            })
+            .collect()
+    }
+
+    #[test]
+    fn g74_centre_hole_pecks_and_backs_off() {
+        // From X0 Z1 to Z-10, peck 4, back-off 0.5: depths 4, back to 3.5, 8, back to 7.5, 11
+        // (the bottom), then out to Z1.
+        let c = PeckCycle { kind: PeckKind::Face, start: Vec3::new(0.0, 0.0, 1.0), end: Vec3::new(0.0, 0.0, -10.0), back_off_mm: 0.5, peck_mm: 4.0, step_mm: 0.0, relief_mm: 0.0 };
+        let got = pts(&expand(&c, 100).unwrap());
+        let want = [('f', 0.0, -3.0), ('r', 0.0, -2.5), ('f', 0.0, -7.0), ('r', 0.0, -6.5), ('f', 0.0, -10.0), ('r', 0.0, 1.0)];
+        assert_eq!(got.len(), want.len(), "{got:?}");
+        for (g, w) in got.iter().zip(want) {
+            assert!(g.0 == w.0 && (g.1 - w.1).abs() < 1e-9 && (g.2 - w.2).abs() < 1e-9, "{got:?}");
+        }
+    }
+
+    #[test]
+    fn g75_steps_across_and_stops_at_the_end() {
+        // Grooves from Z0 to Z-5 with step 2: at Z0, -2, -4, -5; relief 0.2 toward the start.
+        let c = PeckCycle { kind: PeckKind::Groove, start: Vec3::new(20.0, 0.0, 0.0), end: Vec3::new(18.0, 0.0, -5.0), back_off_mm: 0.0, peck_mm: 5.0, step_mm: 2.0, relief_mm: 0.2 };
+        let m = expand(&c, 100).unwrap();
+        let bottoms: Vec<f64> = m.iter().filter_map(|m| if let Move::Feed(v) = m { Some(v.z) } else { None }).collect();
+        assert_eq!(bottoms, vec![0.0, -2.0, -4.0, -5.0]);
+        // The relief at the second groove moves Z back 0.2 toward the start before X comes out.
+        assert!(pts(&m).contains(&('r', 18.0, -1.8)));
+        assert_eq!(*m.last().unwrap(), Move::Rapid(Vec3::new(20.0, 0.0, 0.0)));
+    }
+
+    #[test]
+    fn missing_peck_or_step_and_the_limit() {
+        let mut c = PeckCycle { kind: PeckKind::Face, start: Vec3::new(0.0, 0.0, 1.0), end: Vec3::new(5.0, 0.0, -10.0), back_off_mm: 0.0, peck_mm: 1.0, step_mm: 0.0, relief_mm: 0.0 };
+        assert_eq!(expand(&c, 100), Err(PeckError::NoStep));
+        c.step_mm = 1.0;
+        c.peck_mm = 0.0;
+        assert_eq!(expand(&c, 100), Err(PeckError::NoPeck));
+        c.peck_mm = 0.001;
+        assert_eq!(expand(&c, 1000), Err(PeckError::TooMany));
+    }
+}

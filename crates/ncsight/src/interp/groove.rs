@@ -1,0 +1,77 @@
+//! G74 / G75 blocks on the system-A lathes (GSK980TDi help text G74, G75): the first block
+//! (`G74 R(e)`) sets the back-off, the second (`G74 X(U) Z(W) P(Δi) Q(Δk) R(Δd) F`) cuts.
+
+use super::compound::increments;
+use super::words::Words;
+use super::{axis_target, lerp, Step};
+use crate::alarm::{Diagnostic, Rule};
+use crate::cycles::groove::{expand, Move, PeckCycle, PeckError, PeckKind};
+use crate::motion::Op;
+
+/// At most this many moves in one block (a peck far too small for the depth).
+const MAX_MOVES: usize = 1_000_000;
+
+pub(super) fn block(step: &mut Step, words: &mut Words, kind: PeckKind) -> Result<(), Diagnostic> {
+    let code = kind.code();
+    let slot = usize::from(kind == PeckKind::Groove);
+    let has_axis = [b'X', b'Z', b'U', b'W'].iter().any(|l| words.has(*l));
+    if !has_axis {
+        // First block: R(e), the back-off after each peck; it stays for later blocks.
+        if let Some(w) = words.take(b'R') {
+            let e = step.length(&w)?;
+            if e < 0.0 {
+                return Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("{}: the back-off e of {code} cannot be negative", w.text())));
+            }
+            step.st.peck_back_off_mm[slot] = Some(e);
+        }
+        return Ok(());
+    }
+    // Every X amount is a diameter value, as X is programmed: the help text moves X by Δi/2
+    // and Δd/2 in G74 (docs/commands/g74_g75.md).
+    let x_scale = 0.5;
+    let (peck_letter, step_letter) = if kind == PeckKind::Face { (b'Q', b'P') } else { (b'P', b'Q') };
+    let amount = |step: &mut Step, words: &mut Words, letter: u8, x_axis: bool| -> Result<f64, Diagnostic> {
+        match words.take(letter) {
+            Some(w) => Ok(increments(step, &w, code)?.abs() * if x_axis { x_scale } else { 1.0 }),
+            None => Ok(0.0),
+        }
+    };
+    let peck_mm = amount(step, words, peck_letter, kind == PeckKind::Groove)?;
+    let step_mm = amount(step, words, step_letter, kind == PeckKind::Face)?;
+    let relief_mm = match words.take(b'R') {
+        Some(w) => step.length(&w)?.abs() * if kind == PeckKind::Face { x_scale } else { 1.0 },
+        None => 0.0,
+    };
+    let start = step.st.pos;
+    let (end, _) = axis_target(step, words)?;
+    let cycle = PeckCycle {
+        kind,
+        start,
+        end,
+        back_off_mm: step.st.peck_back_off_mm[slot].unwrap_or(0.0),
+        peck_mm,
+        step_mm,
+        relief_mm,
+    };
+    let moves = expand(&cycle, MAX_MOVES).map_err(|e| {
+        let (peck_name, step_name) = if kind == PeckKind::Face { ("Q(Δk)", "P(Δi)") } else { ("P(Δi)", "Q(Δk)") };
+        let (rule, msg) = match e {
+            PeckError::NoPeck => (Rule::MissingWord, format!("{code}: the end point is deeper than the start but the peck {peck_name} is missing or 0")),
+            PeckError::NoStep => (Rule::MissingWord, format!("{code}: the end point lies across from the start but the step {step_name} is missing or 0")),
+            PeckError::TooMany => (Rule::MotionLimit, format!("{code}: more than {MAX_MOVES} moves in one block (the peck or step is too small)")),
+        };
+        step.alarm(rule, step.span, msg)
+    })?;
+    for m in moves {
+        let from = step.st.pos;
+        let op = match m {
+            Move::Rapid(to) => Op::Rapid { from, to },
+            Move::Feed(to) => {
+                let feed_mm_min = step.cutting_feed(code, &|u| lerp(&from, &to, u))?;
+                Op::Feed { from, to, feed_mm_min }
+            }
+        };
+        step.emit(op);
+    }
+    Ok(())
+}

@@ -1,0 +1,5 @@
+(expect NCS-E07 line 4 col 14 on gsk980tdi)
+G97 S600 M03
+G99 G0 X42 Z-10
+G75 X36 Z-14 P2.0 Q2500 F0.05
+M30
