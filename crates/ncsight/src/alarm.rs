@@ -67,6 +67,9 @@ rules! {
     RadiusTolerance => Alarm, "NCS-E20", Some("PS0020"), "OVER TOLERANCE OF RADIUS";
     ArcDataMissing => Alarm, "NCS-E22", Some("PS0022"), "R OR I,J,K COMMAND NOT FOUND";
     PeckMissing => Alarm, "NCS-E47", Some("PS0045"), "ADDRESS Q NOT FOUND (G73/G83)";
+    ContourNotFound => Alarm, "NCS-E53", Some("PS0063"), "THE BLOCK OF A SPECIFIED SEQUENCE NUMBER IS NOT FOUND";
+    ContourNotMonotonic => Alarm, "NCS-E54", Some("PS0064"), "THE FINISHING SHAPE IS NOT A MONOTONOUS CHANGE";
+    ContourCommand => Alarm, "NCS-E55", Some("PS0066"), "UNAVAILABLE COMMAND IN THE SHAPE PROGRAM";
     // --- project rules (no controller number known) ---
     BadCharacter => Alarm, "NCS-E30", None, "CHARACTER NOT ALLOWED";
     LineTooLong => Alarm, "NCS-E31", None, "BLOCK TOO LONG";

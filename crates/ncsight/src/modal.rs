@@ -142,6 +142,12 @@ pub enum SpindleDir {
 
 #[derive(Debug, Clone, PartialEq)]
 pub struct Modal {
+    /// G71 / G72 depth of cut and back-off from their first blocks (index 0 G71, 1 G72).
+    pub rough_data: [Option<(f64, f64)>; 2],
+    /// Set by a second G71/G72 block: collect the contour blocks that follow.
+    pub rough_request: Option<crate::interp::RoughRequest>,
+    /// Set by G70: run a stored contour.
+    pub finish_request: Option<crate::interp::FinishRequest>,
     /// G74 / G75 back-off e from their first blocks (index 0 G74, 1 G75).
     pub peck_back_off_mm: [Option<f64>; 2],
     /// G90/G94 end point and taper of the last cycle block, for the blocks that repeat it.
@@ -185,6 +191,9 @@ impl Modal {
         Modal {
             pos: Vec3::default(),
             motion: Motion::Rapid,
+            rough_data: [None; 2],
+            rough_request: None,
+            finish_request: None,
             peck_back_off_mm: [None; 2],
             box_cycle: BoxMemory::default(),
             plane: if profile.kind == MachineKind::Lathe { Plane::ZX } else { Plane::XY },

@@ -143,6 +143,14 @@ impl Program {
         if c.status != Status::Alarm && !self.machine.is_reset() {
             c.flush_pending(&mut |e| events.push(e));
         }
+        // A G71/G72 whose contour never closed: its blocks were read but nothing ran them.
+        if let Some(d) = c.interp.unfinished_contour() {
+            c.alarms += 1;
+            if c.mode == Mode::Run {
+                c.status = Status::Alarm;
+            }
+            events.push(Event::Diagnostic(d));
+        }
         if c.status == Status::Running && !self.machine.is_reset() {
             let d = Diagnostic::new(
                 Rule::NoProgramEnd,

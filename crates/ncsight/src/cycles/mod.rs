@@ -3,5 +3,6 @@
 
 pub mod drill;
 pub mod groove;
+pub mod rough;
 pub mod thread;
 pub mod turning;

@@ -5,6 +5,8 @@
 mod compound;
 mod drill;
 mod groove;
+mod rough;
+pub use rough::{FinishRequest, RoughRequest};
 mod thread;
 mod turning;
 mod words;
@@ -59,6 +61,12 @@ pub struct Interpreter {
     params: Params,
     state: Modal,
     switches: Switches,
+    /// A G71/G72 block is collecting its contour blocks (they follow it).
+    collecting: Option<(RoughRequest, Vec<Block>)>,
+    /// Contours collected so far, by (ns, nf), for G70.
+    contours: Vec<(u32, u32, Vec<Block>)>,
+    /// G70 is running a stored contour.
+    replaying: bool,
 }
 
 /// The working copy of one block's effects.
@@ -193,7 +201,7 @@ impl Step<'_> {
 impl Interpreter {
     pub fn new(params: Params, switches: Switches) -> Interpreter {
         let profile = params.profile();
-        Interpreter { profile, state: Modal::power_on(profile), params, switches }
+        Interpreter { profile, state: Modal::power_on(profile), params, switches, collecting: None, contours: Vec::new(), replaying: false }
     }
 
     pub fn profile(&self) -> &'static Profile {
@@ -243,6 +251,9 @@ impl Interpreter {
         if block.block_delete && self.switches.block_delete {
             return Ok(());
         }
+        if self.collecting.is_some() {
+            return self.collect_contour(block, out);
+        }
         let before = self.state.clone();
         let repair = self.switches.repair_position;
         let mut step = Step { profile: self.profile, params: &self.params, repair, span: block.span, st: &mut self.state, out };
@@ -255,6 +266,21 @@ impl Interpreter {
         // its own mark).
         if let Some(last) = step.out.records.iter_mut().rev().find(|r| r.span == block.span) {
             last.block_end = true;
+        }
+        if let Some(req) = self.state.rough_request.take() {
+            if self.replaying {
+                self.state = before;
+                out.clear();
+                return Err(self.contour_alarm(Rule::ContourCommand, block.span, format!("{} cannot run inside the contour that G70 is finishing", req.kind.code())));
+            }
+            self.collecting = Some((req, Vec::new()));
+        }
+        if let Some(req) = self.state.finish_request.take() {
+            if let Err(d) = self.finish_contour(req, out) {
+                self.state = before;
+                out.clear();
+                return Err(d);
+            }
         }
         Ok(())
     }
@@ -405,7 +431,7 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
             // G80: the cycle and its hole data end; F stays (seed 003 8.1.4).
             GFn::CycleCancel => step.st.drill = Default::default(),
             GFn::Drill(kind) => codes.drill = Some(kind),
-            GFn::Dwell | GFn::ReferenceReturn | GFn::LatheCoordinateSet | GFn::MillCoordinateSet | GFn::CompoundThread(_) | GFn::PeckCycle(_) => {
+            GFn::Dwell | GFn::ReferenceReturn | GFn::LatheCoordinateSet | GFn::MillCoordinateSet | GFn::CompoundThread(_) | GFn::PeckCycle(_) | GFn::Rough(_) | GFn::Finish => {
                 codes.non_modal = Some((w.span, g.function))
             }
             GFn::NotYet(_) => unreachable!("rejected above"),
@@ -542,6 +568,8 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
         Some((_, GFn::Dwell)) => dwell(step, &mut words)?,
         Some((_, GFn::CompoundThread(kind))) => compound::compound(step, &mut words, kind)?,
         Some((_, GFn::PeckCycle(kind))) => groove::block(step, &mut words, kind)?,
+        Some((_, GFn::Rough(kind))) => rough::block(step, &mut words, kind)?,
+        Some((_, GFn::Finish)) => rough::finishing(step, &mut words)?,
         Some((_, GFn::ReferenceReturn)) => {
             let (target, given) = axis_target(step, &mut words)?;
             let mid = target;
@@ -648,6 +676,8 @@ fn describe_command(step: &Step, codes: &Codes) -> String {
         Some((_, GFn::CompoundThread(Compound::G76))) => return "G76 (compound threading)".into(),
         Some((_, GFn::CompoundThread(Compound::G78))) => return "G78 (compound threading with infeed modes)".into(),
         Some((_, GFn::PeckCycle(kind))) => return format!("{} (peck cutting cycle)", kind.code()),
+        Some((_, GFn::Rough(kind))) => return format!("{} (roughing cycle)", kind.code()),
+        Some((_, GFn::Finish)) => return "G70 (finishing cycle)".into(),
         _ => ((), step.st.motion),
     };
     if let Some(kind) = step.st.drill.kind {

@@ -106,6 +106,10 @@ pub enum GFn {
     /// G76 compound thread cutting, or the GSK980TDi G78 with its infeed modes: the two-block
     /// form (group 00).
     CompoundThread(Compound),
+    /// G71 / G72 roughing on the lathes (group 00, two blocks, the contour blocks after them).
+    Rough(crate::cycles::rough::RoughKind),
+    /// G70 finishing along a contour roughed before (group 00).
+    Finish,
     /// G74 / G75 on the lathes: peck cutting along one axis, stepping along the other, two
     /// blocks (group 00).
     PeckCycle(crate::cycles::groove::PeckKind),

@@ -1,0 +1,250 @@
+//! G71 (stock removal in turning) and G72 (stock removal in facing), type I, of the system-A
+//! lathes: GSK980TDi help text G71 / G72 steps 1-8. One roughing written along a "level axis"
+//! (the axis the depth of cut Δd is taken on: X for G71, Z for G72) and a "cut axis" (Z for
+//! G71, X for G72):
+//! 1. rapid from the start A to A' (A moved by the finishing allowances Δu, Δw);
+//! 2. move Δd along the level axis (at the speed of the ns block: rapid for G00, feed for G01),
+//!    toward the contour's start B';
+//! 3. feed along the cut axis up to the contour (moved by the allowances);
+//! 4. feed back e at 45 degrees (both axes);
+//! 5. rapid along the cut axis back to A's cut-axis level;
+//! 6. while a further Δd + e stays short of B', move it and go to 3; else move to B';
+//! 7. feed along the moved contour from B' to C';
+//! 8. rapid from C' to A.
+
+use crate::geom;
+use crate::motion::{Op, Vec3};
+
+/// Which roughing.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum RoughKind {
+    /// G71: depth along X, cuts along Z.
+    Turning,
+    /// G72: depth along Z, cuts along X.
+    Facing,
+}
+
+impl RoughKind {
+    pub fn code(self) -> &'static str {
+        match self {
+            RoughKind::Turning => "G71",
+            RoughKind::Facing => "G72",
+        }
+    }
+
+    /// (level axis, cut axis) as `Vec3` indices.
+    pub fn axes(self) -> (usize, usize) {
+        match self {
+            RoughKind::Turning => (0, 2),
+            RoughKind::Facing => (2, 0),
+        }
+    }
+}
+
+/// One roughing block, resolved. The contour is the finishing path from A (the ns block's move
+/// first) as the interpreter produced it, not yet moved by the allowances.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Roughing<'a> {
+    pub kind: RoughKind,
+    pub start: Vec3,
+    pub contour: &'a [Op],
+    /// The finishing allowances as a move: (Δu/2, 0, Δw).
+    pub allowance: Vec3,
+    /// Δd, the depth of each cut (positive).
+    pub depth_mm: f64,
+    /// e, the back-off (not negative).
+    pub back_off_mm: f64,
+    /// The ns block moves at rapid (G00) rather than at the feed (G01).
+    pub ns_rapid: bool,
+}
+
+/// Why a contour cannot be roughed.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum RoughError {
+    /// The contour is not monotonic along the given axis (index) (help text note 3).
+    NotMonotonic(usize),
+    /// More passes than the limit.
+    TooMany,
+    /// The contour has a move that is not a straight line or an arc.
+    NotAPath,
+}
+
+fn shift(v: &Vec3, by: &Vec3) -> Vec3 {
+    Vec3::new(v.x + by.x, v.y + by.y, v.z + by.z)
+}
+
+/// A moved copy of a contour move; rapids become feeds (step 7 cuts along the whole contour).
+fn moved(op: &Op, by: &Vec3) -> Result<Op, RoughError> {
+    Ok(match *op {
+        Op::Rapid { from, to } => Op::Feed { from: shift(&from, by), to: shift(&to, by), feed_mm_min: 0.0 },
+        Op::Feed { from, to, feed_mm_min } => Op::Feed { from: shift(&from, by), to: shift(&to, by), feed_mm_min },
+        Op::Arc { from, to, center, plane, dir, feed_mm_min } => {
+            Op::Arc { from: shift(&from, by), to: shift(&to, by), center: shift(&center, by), plane, dir, feed_mm_min }
+        }
+        _ => return Err(RoughError::NotAPath),
+    })
+}
+
+/// The contour as fine points (arcs as chords of at most `chord_mm`), for finding where a level
+/// meets it.
+fn polyline(contour: &[Op], chord_mm: f64) -> Vec<Vec3> {
+    let mut pts = Vec::new();
+    for op in contour {
+        match op {
+            Op::Feed { from, to, .. } | Op::Rapid { from, to } => {
+                if pts.is_empty() {
+                    pts.push(*from);
+                }
+                pts.push(*to);
+            }
+            Op::Arc { from, to, plane, dir, .. } => {
+                if pts.is_empty() {
+                    pts.push(*from);
+                }
+                if let Some(g) = crate::time::arc_geom_of(op) {
+                    let n = ((geom::arc_length(from, to, *plane, &g) / chord_mm).ceil() as usize).clamp(8, 100_000);
+                    for k in 1..=n {
+                        pts.push(geom::arc_point(from, to, *plane, *dir, &g, k as f64 / n as f64));
+                    }
+                } else {
+                    pts.push(*to);
+                }
+            }
+            _ => {}
+        }
+    }
+    pts
+}
+
+/// The moves of one roughing block (feeds carry 0: the interpreter sets each from F), at most
+/// `limit` passes.
+pub fn expand(r: &Roughing, limit: usize) -> Result<Vec<Op>, RoughError> {
+    let (l, c) = r.kind.axes();
+    let Some(first) = r.contour.first() else { return Ok(Vec::new()) };
+    let b = first.end_point().ok_or(RoughError::NotAPath)?;
+    let a1 = shift(&r.start, &r.allowance);
+    let b1 = shift(&b, &r.allowance);
+    // The contour after the ns move, moved by the allowances.
+    let path: Vec<Op> = r.contour[1..].iter().map(|op| moved(op, &r.allowance)).collect::<Result<_, _>>()?;
+    let pts: Vec<Vec3> = {
+        let mut p = vec![b1];
+        p.extend(polyline(&path, 0.01).into_iter().skip(1));
+        p
+    };
+    // Help text note 3: both axes monotonic along the contour (type I).
+    for axis in [l, c] {
+        let mut dir = 0.0;
+        for w in pts.windows(2) {
+            let d = w[1].axis(axis) - w[0].axis(axis);
+            if d.abs() < 1e-9 {
+                continue;
+            }
+            if dir != 0.0 && d.signum() != dir {
+                return Err(RoughError::NotMonotonic(axis));
+            }
+            dir = d.signum();
+        }
+    }
+    let end = *pts.last().unwrap_or(&b1);
+    let dir_l = (b1.axis(l) - a1.axis(l)).signum();
+    let dir_c = (end.axis(c) - b1.axis(c)).signum();
+    let at = |lv: f64, cv: f64| {
+        let mut v = a1;
+        v.set_axis(l, lv);
+        v.set_axis(c, cv);
+        v
+    };
+    let mut ops = Vec::new();
+    let mut pos = r.start;
+    let go = |to: Vec3, feed: bool, ops: &mut Vec<Op>, pos: &mut Vec3| {
+        if to != *pos {
+            ops.push(if feed { Op::Feed { from: *pos, to, feed_mm_min: 0.0 } } else { Op::Rapid { from: *pos, to } });
+            *pos = to;
+        }
+    };
+    // 1: A to A'.
+    go(a1, false, &mut ops, &mut pos);
+    // 2-6: the levels strictly between A' and B'.
+    let total = (b1.axis(l) - a1.axis(l)).abs();
+    let mut k = 1usize;
+    while dir_l != 0.0 && r.depth_mm > 0.0 && (k as f64) * r.depth_mm < total - 1e-9 {
+        if k > limit {
+            return Err(RoughError::TooMany);
+        }
+        let level = a1.axis(l) + dir_l * k as f64 * r.depth_mm;
+        // Where the level meets the contour, walking from B'.
+        let hit = pts.windows(2).find_map(|w| {
+            let (p, q) = (w[0].axis(l), w[1].axis(l));
+            if (level - p) * (level - q) <= 0.0 && (p - q).abs() > 1e-12 {
+                let u = (level - p) / (q - p);
+                Some(w[0].axis(c) + u * (w[1].axis(c) - w[0].axis(c)))
+            } else {
+                None
+            }
+        });
+        let hit = hit.unwrap_or(end.axis(c));
+        go(at(level, a1.axis(c)), !r.ns_rapid, &mut ops, &mut pos);
+        go(at(level, hit), true, &mut ops, &mut pos);
+        go(at(level - dir_l * r.back_off_mm, hit - dir_c * r.back_off_mm), true, &mut ops, &mut pos);
+        go(at(level - dir_l * r.back_off_mm, a1.axis(c)), false, &mut ops, &mut pos);
+        k += 1;
+    }
+    // 6-7: to B', along the contour to C'.
+    go(b1, !r.ns_rapid, &mut ops, &mut pos);
+    for op in path {
+        pos = op.end_point().unwrap_or(pos);
+        ops.push(op);
+    }
+    // 8: back to A.
+    go(r.start, false, &mut ops, &mut pos);
+    Ok(ops)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn feed(from: (f64, f64), to: (f64, f64)) -> Op {
+        Op::Feed { from: Vec3::new(from.0, 0.0, from.1), to: Vec3::new(to.0, 0.0, to.1), feed_mm_min: 100.0 }
+    }
+
+    #[test]
+    fn g71_step_contour() {
+        // Radius coordinates. A (25, 2); contour: ns G00 to X10 (B at Z2), Z-10, X20, Z-20, X25.
+        let contour = [
+            Op::Rapid { from: Vec3::new(25.0, 0.0, 2.0), to: Vec3::new(10.0, 0.0, 2.0) },
+            feed((10.0, 2.0), (10.0, -10.0)),
+            feed((10.0, -10.0), (20.0, -10.0)),
+            feed((20.0, -10.0), (20.0, -20.0)),
+            feed((20.0, -20.0), (25.0, -20.0)),
+        ];
+        let r = Roughing { kind: RoughKind::Turning, start: Vec3::new(25.0, 0.0, 2.0), contour: &contour, allowance: Vec3::new(0.5, 0.0, 0.1), depth_mm: 4.0, back_off_mm: 1.0, ns_rapid: true };
+        let ops = expand(&r, 1000).unwrap();
+        // A' = (25.5, 2.1); levels 21.5, 17.5, 13.5 (B' is at 10.5).
+        let cuts: Vec<(f64, f64)> = ops.iter().filter_map(|o| match o {
+            Op::Feed { from, to, feed_mm_min } if *feed_mm_min == 0.0 && from.x == to.x && from.z == 2.1 => Some((to.x, to.z)),
+            _ => None,
+        }).collect();
+        // Level 21.5 meets the moved contour at Z -20 + 0.1 = -19.9; 17.5 and 13.5 at -9.9.
+        assert_eq!(cuts.len(), 3, "{ops:?}");
+        for (got, want) in cuts.iter().zip([(21.5, -19.9), (17.5, -9.9), (13.5, -9.9)]) {
+            assert!((got.0 - want.0).abs() < 1e-9 && (got.1 - want.1).abs() < 1e-9, "{cuts:?}");
+        }
+        // The 45-degree back-off after the first cut: to (22.5, -18.9).
+        assert!(ops.iter().any(|o| matches!(o, Op::Feed { to, .. } if (to.x - 22.5).abs() < 1e-9 && (to.z + 18.9).abs() < 1e-9)));
+        // Ends with the contour pass (moved) and a rapid back to A.
+        assert_eq!(ops.last().unwrap(), &Op::Rapid { from: Vec3::new(25.5, 0.0, -19.9), to: Vec3::new(25.0, 0.0, 2.0) });
+    }
+
+    #[test]
+    fn a_pocket_is_not_type_one() {
+        let contour = [
+            Op::Rapid { from: Vec3::new(25.0, 0.0, 2.0), to: Vec3::new(10.0, 0.0, 2.0) },
+            feed((10.0, 2.0), (20.0, -10.0)),
+            feed((20.0, -10.0), (15.0, -15.0)),
+            feed((15.0, -15.0), (25.0, -20.0)),
+        ];
+        let r = Roughing { kind: RoughKind::Turning, start: Vec3::new(25.0, 0.0, 2.0), contour: &contour, allowance: Vec3::default(), depth_mm: 2.0, back_off_mm: 0.5, ns_rapid: true };
+        assert_eq!(expand(&r, 1000), Err(RoughError::NotMonotonic(0)));
+    }
+}

@@ -1,0 +1,296 @@
+//! G71 / G72 roughing (type I) and G70 finishing on the system-A lathes (GSK980TDi help text
+//! G70, G71, G72). The first block (`G71 U(Δd) R(e)`, `G72 W(Δd) R(e)`) sets the depth of cut
+//! and the back-off; the second (`G71 P(ns) Q(nf) U(Δu) W(Δw) F S T`) names the contour
+//! blocks, which follow it. The interpreter collects them (they are not executed then: after
+//! the cycle the programme goes on after nf, help text step 8), works out the contour on a copy
+//! of the modal state, and roughs it. G70 P(ns) Q(nf) runs those blocks for real (their F, S
+//! and T count there) and returns to its start point.
+
+use super::words::Words;
+use super::Step;
+use crate::alarm::{Diagnostic, Rule};
+use crate::cycles::rough::RoughKind;
+use crate::motion::Vec3;
+use crate::read::Word;
+use crate::source::Span;
+
+/// What a second G71/G72 block asks the interpreter to do with the blocks that follow.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RoughRequest {
+    pub kind: RoughKind,
+    pub span: Span,
+    pub ns: u32,
+    pub nf: u32,
+    /// (Δu/2, 0, Δw): the finishing allowances as a move.
+    pub allowance: Vec3,
+    pub depth_mm: f64,
+    pub back_off_mm: f64,
+    pub start: Vec3,
+}
+
+/// G70: run the stored contour ns..nf, then back to `start`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FinishRequest {
+    pub span: Span,
+    pub ns: u32,
+    pub nf: u32,
+    pub start: Vec3,
+}
+
+fn sequence_number(step: &Step, w: &Word, code: &str, what: &str) -> Result<u32, Diagnostic> {
+    if w.decimal || w.value < 0.0 || w.value > 99_999.0 {
+        return Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("{}: {code} {what} is a sequence number (N), 0 to 99999", w.text())));
+    }
+    Ok(w.value as u32)
+}
+
+fn p_and_q(step: &mut Step, words: &mut Words, code: &str) -> Result<(u32, u32), Diagnostic> {
+    let (Some(p), Some(q)) = (words.take(b'P'), words.take(b'Q')) else {
+        return Err(step.alarm(Rule::MissingWord, step.span, format!("{code} needs P(ns) and Q(nf), the first and last blocks of the contour")));
+    };
+    Ok((sequence_number(step, p, code, "P(ns)")?, sequence_number(step, q, code, "Q(nf)")?))
+}
+
+/// G71 or G72, either block.
+pub(super) fn block(step: &mut Step, words: &mut Words, kind: RoughKind) -> Result<(), Diagnostic> {
+    let code = kind.code();
+    let slot = usize::from(kind == RoughKind::Facing);
+    if !(words.has(b'P') || words.has(b'Q')) {
+        // First block: Δd (U for G71, W for G72) and e.
+        let depth_letter = if kind == RoughKind::Turning { b'U' } else { b'W' };
+        let mut data = step.st.rough_data[slot].unwrap_or((0.0, 0.0));
+        if let Some(w) = words.take(depth_letter) {
+            let d = step.length(&w)?;
+            if d <= 0.0 {
+                return Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("{}: the depth of cut Δd of {code} must be more than 0", w.text())));
+            }
+            data.0 = d;
+        }
+        if let Some(w) = words.take(b'R') {
+            data.1 = step.length(&w)?.abs();
+        }
+        step.st.rough_data[slot] = Some(data);
+        return Ok(());
+    }
+    let (ns, nf) = p_and_q(step, words, code)?;
+    let Some((depth_mm, back_off_mm)) = step.st.rough_data[slot].filter(|d| d.0 > 0.0) else {
+        let letter = if kind == RoughKind::Turning { 'U' } else { 'W' };
+        return Err(step.alarm(Rule::MissingWord, step.span, format!("{code} P{ns} Q{nf} needs the depth of cut first: a block {code} {letter}(Δd) R(e) before it")));
+    };
+    let mut allowance = Vec3::default();
+    if let Some(w) = words.take(b'U') {
+        // Δu is on the diameter, as X is programmed.
+        allowance.x = step.length(&w)? / 2.0;
+    }
+    if let Some(w) = words.take(b'W') {
+        allowance.z = step.length(&w)?;
+    }
+    for l in [b'K', b'J'] {
+        if let Some(w) = words.take(l) {
+            let msg = format!("{}: the type II options of {code} (K monotony check, J extra contour pass) are not simulated", w.text());
+            step.warn(Rule::NotSimulated, w.span, msg);
+        }
+    }
+    step.st.rough_request = Some(RoughRequest { kind, span: step.span, ns, nf, allowance, depth_mm, back_off_mm, start: step.st.pos });
+    Ok(())
+}
+
+/// G70 P(ns) Q(nf).
+pub(super) fn finishing(step: &mut Step, words: &mut Words) -> Result<(), Diagnostic> {
+    let (ns, nf) = p_and_q(step, words, "G70")?;
+    step.st.finish_request = Some(FinishRequest { span: step.span, ns, nf, start: step.st.pos });
+    Ok(())
+}
+
+use super::{lerp, run_block, Interpreter, Outcome};
+use crate::cycles::rough::{expand, RoughError, Roughing};
+use crate::motion::Op;
+use crate::read::Block;
+
+/// At most this many blocks in one contour (help text G71 note 5).
+const MAX_CONTOUR_BLOCKS: usize = 100;
+
+/// Whether a block ends the programme (M02, M30, M99): a contour cannot run past it.
+fn ends_programme(block: &Block) -> bool {
+    block.words.iter().any(|w| w.letter == b'M' && !w.decimal && matches!(w.value as i64, 2 | 30 | 99))
+}
+
+impl Interpreter {
+    pub(super) fn contour_alarm(&self, rule: Rule, span: Span, msg: String) -> Diagnostic {
+        Diagnostic::new(rule, self.profile.alarm_style, span, msg)
+    }
+
+    /// A block after a second G71/G72 block: part of the contour, not executed now.
+    pub(super) fn collect_contour(&mut self, block: &Block, out: &mut Outcome) -> Result<(), Diagnostic> {
+        let (req, blocks) = self.collecting.as_mut().expect("collecting");
+        let req = *req;
+        let code = req.kind.code();
+        if blocks.is_empty() && block.sequence != Some(req.ns) {
+            self.collecting = None;
+            return Err(self.contour_alarm(
+                Rule::ContourNotFound,
+                block.span,
+                format!("{code} P{}: ncsight needs the contour right after the cycle block, starting with N{}; this block is not N{}", req.ns, req.ns, req.ns),
+            ));
+        }
+        if ends_programme(block) {
+            self.collecting = None;
+            return Err(self.contour_alarm(Rule::ContourNotFound, block.span, format!("{code} Q{}: the programme ends before block N{}", req.nf, req.nf)));
+        }
+        blocks.push(block.clone());
+        if block.sequence == Some(req.nf) {
+            let (req, blocks) = self.collecting.take().expect("collecting");
+            // Kept for G70 even when the roughing alarms (check mode reads on).
+            self.contours.retain(|c| (c.0, c.1) != (req.ns, req.nf));
+            self.contours.push((req.ns, req.nf, blocks));
+            let blocks = &self.contours.last().expect("just pushed").2.clone();
+            self.rough_contour(req, blocks, out)?;
+        } else if blocks.len() > MAX_CONTOUR_BLOCKS {
+            self.collecting = None;
+            return Err(self.contour_alarm(
+                Rule::ContourNotFound,
+                block.span,
+                format!("{code} Q{}: no block N{} within {MAX_CONTOUR_BLOCKS} blocks of the contour's start (help text note 5)", req.nf, req.nf),
+            ));
+        }
+        Ok(())
+    }
+
+    /// The input ended while a contour was being collected.
+    pub fn unfinished_contour(&mut self) -> Option<Diagnostic> {
+        let (req, blocks) = self.collecting.take()?;
+        let span = blocks.last().map(|b| b.span).unwrap_or(req.span);
+        Some(self.contour_alarm(Rule::ContourNotFound, span, format!("{} Q{}: the input ends before block N{}", req.kind.code(), req.nf, req.nf)))
+    }
+
+    /// The contour's moves, worked out on a copy of the modal state (their F, S, T and M do not
+    /// count during roughing: help text note 7).
+    fn contour_moves(&self, code: &str, blocks: &[Block]) -> Result<Vec<Op>, Diagnostic> {
+        let mut st = self.state.clone();
+        let mut scratch = Outcome::default();
+        for b in blocks {
+            if b.block_delete && self.switches.block_delete {
+                continue;
+            }
+            let mut step = Step { profile: self.profile, params: &self.params, repair: None, span: b.span, st: &mut st, out: &mut scratch };
+            run_block(&mut step, b, self.switches)?;
+            if st.rough_request.is_some() || st.finish_request.is_some() {
+                return Err(self.contour_alarm(Rule::ContourCommand, b.span, format!("{code}: a contour block cannot call a cycle itself")));
+            }
+        }
+        let mut moves = Vec::new();
+        for r in &scratch.records {
+            match r.op {
+                Op::Rapid { .. } | Op::Feed { .. } | Op::Arc { .. } => moves.push(r.op.clone()),
+                Op::Spindle { .. } | Op::Tool { .. } | Op::Dwell { .. } => {}
+                _ => {
+                    return Err(self.contour_alarm(
+                        Rule::ContourCommand,
+                        r.span,
+                        format!("{code}: the contour may hold only G00, G01, G02 and G03 moves; this block makes a {} record", r.op.kind()),
+                    ))
+                }
+            }
+        }
+        Ok(moves)
+    }
+
+    /// Rough the collected contour (the records carry the G71/G72 block's span).
+    fn rough_contour(&mut self, req: RoughRequest, blocks: &[Block], out: &mut Outcome) -> Result<(), Diagnostic> {
+        let code = req.kind.code();
+        let contour = self.contour_moves(code, blocks)?;
+        let first = &blocks[0];
+        // Help text note 1: the ns block is G00 or G01.
+        let Some(first_move) = contour.first().filter(|op| matches!(op, Op::Rapid { .. } | Op::Feed { .. })) else {
+            return Err(self.contour_alarm(Rule::ContourCommand, first.span, format!("{code}: the contour's first block N{} must move with G00 or G01", req.ns)));
+        };
+        let ns_rapid = matches!(first_move, Op::Rapid { .. });
+        let has = |letters: &[u8]| first.words.iter().any(|w| letters.contains(&w.letter));
+        let type_two = has(b"XU") && has(b"ZW");
+        let r = Roughing { kind: req.kind, start: req.start, contour: &contour, allowance: req.allowance, depth_mm: req.depth_mm, back_off_mm: req.back_off_mm, ns_rapid };
+        let ops = expand(&r, 100_000).map_err(|e| match e {
+            RoughError::NotMonotonic(axis) if type_two && axis == req.kind.axes().0 => self.contour_alarm(
+                Rule::NotSupported,
+                req.span,
+                format!("{code}: the contour N{}..N{} has a pocket; type II roughing of pockets is given only in the help text's figures and is not simulated by ncsight yet", req.ns, req.nf),
+            ),
+            RoughError::NotMonotonic(axis) => self.contour_alarm(
+                Rule::ContourNotMonotonic,
+                req.span,
+                format!("{code}: the contour N{}..N{} does not move one way only along {} (type I roughing needs that: help text note 3)", req.ns, req.nf, if axis == 0 { "X" } else { "Z" }),
+            ),
+            RoughError::TooMany => self.contour_alarm(Rule::MotionLimit, req.span, format!("{code}: more than 100000 roughing passes (Δd too small)")),
+            RoughError::NotAPath => self.contour_alarm(Rule::ContourCommand, req.span, format!("{code}: the contour holds a move that is not a line or an arc")),
+        })?;
+        let before = self.state.clone();
+        let mut step = Step { profile: self.profile, params: &self.params, repair: None, span: req.span, st: &mut self.state, out };
+        if type_two {
+            let msg = format!("{code}: N{} names both axes, the help text's type II; its path is given only in figures, so ncsight roughs it as type I", req.ns);
+            step.warn(Rule::NotSimulated, first.span, msg);
+        }
+        let mut result = Ok(());
+        for op in ops {
+            let op = match op {
+                Op::Feed { from, to, .. } => match step.cutting_feed(code, &|u| lerp(&from, &to, u)) {
+                    Ok(f) => Op::Feed { from, to, feed_mm_min: f },
+                    Err(d) => {
+                        result = Err(d);
+                        break;
+                    }
+                },
+                Op::Arc { from, to, center, plane, dir, .. } => match step.cutting_feed(code, &|u| lerp(&from, &to, u)) {
+                    Ok(f) => Op::Arc { from, to, center, plane, dir, feed_mm_min: f },
+                    Err(d) => {
+                        result = Err(d);
+                        break;
+                    }
+                },
+                other => other,
+            };
+            step.emit(op);
+        }
+        if let Err(d) = result {
+            out.clear();
+            self.state = before;
+            return Err(d);
+        }
+        if let Some(last) = out.records.last_mut() {
+            last.block_end = true;
+        }
+        Ok(())
+    }
+
+    /// G70: the stored contour run for real, then back to the start.
+    pub(super) fn finish_contour(&mut self, req: FinishRequest, out: &mut Outcome) -> Result<(), Diagnostic> {
+        if self.replaying {
+            return Err(self.contour_alarm(Rule::ContourCommand, req.span, "G70 cannot run inside the contour it is finishing".into()));
+        }
+        let Some(blocks) = self.contours.iter().find(|c| (c.0, c.1) == (req.ns, req.nf)).map(|c| c.2.clone()) else {
+            return Err(self.contour_alarm(
+                Rule::ContourNotFound,
+                req.span,
+                format!("G70 P{} Q{}: no G71/G72 before it collected the blocks N{} to N{}", req.ns, req.nf, req.ns, req.nf),
+            ));
+        };
+        self.replaying = true;
+        let mut scratch = Outcome::default();
+        let mut result = Ok(());
+        for b in &blocks {
+            if let Err(d) = self.execute_into(b, &mut scratch) {
+                result = Err(d);
+                break;
+            }
+            out.records.append(&mut scratch.records);
+            out.warnings.append(&mut scratch.warnings);
+        }
+        self.replaying = false;
+        result?;
+        // Back to the start point at rapid (the cycle's end, as G71 step 8).
+        let from = self.state.pos;
+        if from != req.start {
+            self.state.pos = req.start;
+            out.records.push(crate::motion::Record::new(req.span, Op::Rapid { from, to: req.start }));
+        }
+        Ok(())
+    }
+}

@@ -1,0 +1,8 @@
+(expect NCS-E53 line 6 col 1 on gsk980tdi)
+G97 S500 M03
+G99 G0 X50 Z2
+G71 U2 R1
+G71 P10 Q20 F0.3
+G1 X20 Z-10 F0.1
+N20 X50
+M30
