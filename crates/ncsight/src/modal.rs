@@ -144,6 +144,8 @@ pub enum SpindleDir {
 pub struct Modal {
     /// G71 / G72 depth of cut and back-off from their first blocks (index 0 G71, 1 G72).
     pub rough_data: [Option<(f64, f64)>; 2],
+    /// G73 relief Δi (radius), Δk and number of passes d from its first block.
+    pub pattern_data: Option<(f64, f64, u32)>,
     /// Set by a second G71/G72 block: collect the contour blocks that follow.
     pub rough_request: Option<crate::interp::RoughRequest>,
     /// Set by G70: run a stored contour.
@@ -192,6 +194,7 @@ impl Modal {
             pos: Vec3::default(),
             motion: Motion::Rapid,
             rough_data: [None; 2],
+            pattern_data: None,
             rough_request: None,
             finish_request: None,
             peck_back_off_mm: [None; 2],

@@ -23,5 +23,16 @@ G72 P30 Q40 F0.2
 N30 G0 Z-6
 G1 X20
 N40 Z2
+(G73 from X50 Z2 - relief U3 = 3 mm radius, W1, R3 passes, allowances U1 = 0.5 radius, W0.2 - contour N50-N60,)
+(a cone with an undercut, X20 Z2 to X36 Z-10, X30 Z-15, X50 Z-20 - a pocket is fine for G73.)
+(Pass k moved by the allowance + relief x [3 - k] / 2 - radius 3.5 and Z 1.2, then 2 and 0.7, then 0.5 and 0.2;)
+(each pass - rapid to A moved, the ns rapid moved, the rest at F0.2 - and from its end a rapid to the next.)
+G0 X50 Z2
+G73 U3 W1 R3
+G73 P50 Q60 U1 W0.2 F0.2
+N50 G0 X20
+G1 X36 Z-10
+X30 Z-15
+N60 X50 Z-20
 G0 X60 Z10
 M30

@@ -22,6 +22,8 @@ pub enum RoughKind {
     Turning,
     /// G72: depth along Z, cuts along X.
     Facing,
+    /// G73: the whole contour again and again, each pass closer (pattern repeating).
+    Pattern,
 }
 
 impl RoughKind {
@@ -29,13 +31,14 @@ impl RoughKind {
         match self {
             RoughKind::Turning => "G71",
             RoughKind::Facing => "G72",
+            RoughKind::Pattern => "G73",
         }
     }
 
-    /// (level axis, cut axis) as `Vec3` indices.
+    /// (level axis, cut axis) as `Vec3` indices (G73 has none; it answers as G71).
     pub fn axes(self) -> (usize, usize) {
         match self {
-            RoughKind::Turning => (0, 2),
+            RoughKind::Turning | RoughKind::Pattern => (0, 2),
             RoughKind::Facing => (2, 0),
         }
     }
@@ -200,6 +203,43 @@ pub fn expand(r: &Roughing, limit: usize) -> Result<Vec<Op>, RoughError> {
     Ok(ops)
 }
 
+/// G73 pattern repeating (GSK980TDi help text G73): `passes` (d) passes over the whole contour,
+/// the ns move included, pass k (1-based) moved by the allowance plus `relief x (d - k) / (d - 1)`
+/// (the first pass Δi, Δk further out, the last on the allowance); a rapid from each pass's end
+/// to the next pass's start (A1 -> B1 -> C1 -> A2 ...), and from the last back to A.
+pub fn pattern(start: Vec3, contour: &[Op], allowance: Vec3, relief: Vec3, passes: u32) -> Result<Vec<Op>, RoughError> {
+    let mut ops = Vec::new();
+    if contour.is_empty() || passes == 0 {
+        return Ok(ops);
+    }
+    let mut pos = start;
+    for k in 1..=passes {
+        let f = if passes > 1 { (passes - k) as f64 / (passes - 1) as f64 } else { 0.0 };
+        let by = Vec3::new(allowance.x + relief.x * f, allowance.y + relief.y * f, allowance.z + relief.z * f);
+        let pass_start = shift(&start, &by);
+        if pass_start != pos {
+            ops.push(Op::Rapid { from: pos, to: pass_start });
+        }
+        for (i, op) in contour.iter().enumerate() {
+            let m = if i == 0 {
+                // The ns move keeps its own speed.
+                match *op {
+                    Op::Rapid { from, to } => Op::Rapid { from: shift(&from, &by), to: shift(&to, &by) },
+                    ref other => moved(other, &by)?,
+                }
+            } else {
+                moved(op, &by)?
+            };
+            pos = m.end_point().unwrap_or(pos);
+            ops.push(m);
+        }
+    }
+    if pos != start {
+        ops.push(Op::Rapid { from: pos, to: start });
+    }
+    Ok(ops)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -234,6 +274,19 @@ mod tests {
         assert!(ops.iter().any(|o| matches!(o, Op::Feed { to, .. } if (to.x - 22.5).abs() < 1e-9 && (to.z + 18.9).abs() < 1e-9)));
         // Ends with the contour pass (moved) and a rapid back to A.
         assert_eq!(ops.last().unwrap(), &Op::Rapid { from: Vec3::new(25.5, 0.0, -19.9), to: Vec3::new(25.0, 0.0, 2.0) });
+    }
+
+    #[test]
+    fn g73_passes_close_in_evenly() {
+        let contour = [
+            Op::Rapid { from: Vec3::new(25.0, 0.0, 2.0), to: Vec3::new(10.0, 0.0, 2.0) },
+            feed((10.0, 2.0), (20.0, -10.0)),
+        ];
+        // Three passes, relief (3, 0, 1), allowance (0.5, 0, 0): offsets 3.5/1, 2/0.5, 0.5/0.
+        let ops = pattern(Vec3::new(25.0, 0.0, 2.0), &contour, Vec3::new(0.5, 0.0, 0.0), Vec3::new(3.0, 0.0, 1.0), 3).unwrap();
+        let cut_ends: Vec<(f64, f64)> = ops.iter().filter_map(|o| if let Op::Feed { to, .. } = o { Some((to.x, to.z)) } else { None }).collect();
+        assert_eq!(cut_ends, vec![(23.5, -9.0), (22.0, -9.5), (20.5, -10.0)]);
+        assert_eq!(*ops.last().unwrap(), Op::Rapid { from: Vec3::new(20.5, 0.0, -10.0), to: Vec3::new(25.0, 0.0, 2.0) });
     }
 
     #[test]

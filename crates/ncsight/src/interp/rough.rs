@@ -25,6 +25,8 @@ pub struct RoughRequest {
     pub allowance: Vec3,
     pub depth_mm: f64,
     pub back_off_mm: f64,
+    /// G73: relief (Δi, 0, Δk) and the number of passes.
+    pub pattern: Option<(Vec3, u32)>,
     pub start: Vec3,
 }
 
@@ -52,8 +54,31 @@ fn p_and_q(step: &mut Step, words: &mut Words, code: &str) -> Result<(u32, u32),
 }
 
 /// G71 or G72, either block.
+/// The first G73 block: U(Δi) W(Δk) R(d).
+fn pattern_first(step: &mut Step, words: &mut Words) -> Result<(), Diagnostic> {
+    let mut data = step.st.pattern_data.unwrap_or((0.0, 0.0, 1));
+    if let Some(w) = words.take(b'U') {
+        data.0 = step.length(&w)?;
+    }
+    if let Some(w) = words.take(b'W') {
+        data.1 = step.length(&w)?;
+    }
+    if let Some(w) = words.take(b'R') {
+        // d is a count of passes, whatever the decimal-point rule for lengths.
+        if w.value.fract() != 0.0 || !(1.0..=9999.0).contains(&w.value) {
+            return Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("{}: the number of G73 passes R(d) is a whole number 1 to 9999", w.text())));
+        }
+        data.2 = w.value as u32;
+    }
+    step.st.pattern_data = Some(data);
+    Ok(())
+}
+
 pub(super) fn block(step: &mut Step, words: &mut Words, kind: RoughKind) -> Result<(), Diagnostic> {
     let code = kind.code();
+    if kind == RoughKind::Pattern && !(words.has(b'P') || words.has(b'Q')) {
+        return pattern_first(step, words);
+    }
     let slot = usize::from(kind == RoughKind::Facing);
     if !(words.has(b'P') || words.has(b'Q')) {
         // First block: Δd (U for G71, W for G72) and e.
@@ -73,7 +98,16 @@ pub(super) fn block(step: &mut Step, words: &mut Words, kind: RoughKind) -> Resu
         return Ok(());
     }
     let (ns, nf) = p_and_q(step, words, code)?;
-    let Some((depth_mm, back_off_mm)) = step.st.rough_data[slot].filter(|d| d.0 > 0.0) else {
+    let pattern = if kind == RoughKind::Pattern {
+        let Some((di, dk, d)) = step.st.pattern_data else {
+            return Err(step.alarm(Rule::MissingWord, step.span, format!("G73 P{ns} Q{nf} needs its first block G73 U(Δi) W(Δk) R(d) before it")));
+        };
+        Some((Vec3::new(di, 0.0, dk), d))
+    } else {
+        None
+    };
+    let data = if pattern.is_some() { Some((1.0, 0.0)) } else { step.st.rough_data[slot] };
+    let Some((depth_mm, back_off_mm)) = data.filter(|d| d.0 > 0.0) else {
         let letter = if kind == RoughKind::Turning { 'U' } else { 'W' };
         return Err(step.alarm(Rule::MissingWord, step.span, format!("{code} P{ns} Q{nf} needs the depth of cut first: a block {code} {letter}(Δd) R(e) before it")));
     };
@@ -91,7 +125,7 @@ pub(super) fn block(step: &mut Step, words: &mut Words, kind: RoughKind) -> Resu
             step.warn(Rule::NotSimulated, w.span, msg);
         }
     }
-    step.st.rough_request = Some(RoughRequest { kind, span: step.span, ns, nf, allowance, depth_mm, back_off_mm, start: step.st.pos });
+    step.st.rough_request = Some(RoughRequest { kind, span: step.span, ns, nf, allowance, depth_mm, back_off_mm, pattern, start: step.st.pos });
     Ok(())
 }
 
@@ -103,7 +137,7 @@ pub(super) fn finishing(step: &mut Step, words: &mut Words) -> Result<(), Diagno
 }
 
 use super::{lerp, run_block, Interpreter, Outcome};
-use crate::cycles::rough::{expand, RoughError, Roughing};
+use crate::cycles::rough::{expand, pattern, RoughError, Roughing};
 use crate::motion::Op;
 use crate::read::Block;
 
@@ -205,6 +239,11 @@ impl Interpreter {
             return Err(self.contour_alarm(Rule::ContourCommand, first.span, format!("{code}: the contour's first block N{} must move with G00 or G01", req.ns)));
         };
         let ns_rapid = matches!(first_move, Op::Rapid { .. });
+        if let Some((relief, passes)) = req.pattern {
+            let ops = pattern(req.start, &contour, req.allowance, relief, passes)
+                .map_err(|_| self.contour_alarm(Rule::ContourCommand, req.span, format!("{code}: the contour holds a move that is not a line or an arc")))?;
+            return self.emit_cycle(&req, ops, out, None);
+        }
         let has = |letters: &[u8]| first.words.iter().any(|w| letters.contains(&w.letter));
         let type_two = has(b"XU") && has(b"ZW");
         let r = Roughing { kind: req.kind, start: req.start, contour: &contour, allowance: req.allowance, depth_mm: req.depth_mm, back_off_mm: req.back_off_mm, ns_rapid };
@@ -222,11 +261,21 @@ impl Interpreter {
             RoughError::TooMany => self.contour_alarm(Rule::MotionLimit, req.span, format!("{code}: more than 100000 roughing passes (Δd too small)")),
             RoughError::NotAPath => self.contour_alarm(Rule::ContourCommand, req.span, format!("{code}: the contour holds a move that is not a line or an arc")),
         })?;
+        let note = type_two.then(|| {
+            let msg = format!("{code}: N{} names both axes, the help text's type II; its path is given only in figures, so ncsight roughs it as type I", req.ns);
+            (first.span, msg)
+        });
+        self.emit_cycle(&req, ops, out, note)
+    }
+
+    /// Emit a roughing cycle's moves under the cycle block's span, each feed at the block's F
+    /// (per revolution under G99, at the point's speed under G96); `note` is a warning to give.
+    fn emit_cycle(&mut self, req: &RoughRequest, ops: Vec<Op>, out: &mut Outcome, note: Option<(Span, String)>) -> Result<(), Diagnostic> {
+        let code = req.kind.code();
         let before = self.state.clone();
         let mut step = Step { profile: self.profile, params: &self.params, repair: None, span: req.span, st: &mut self.state, out };
-        if type_two {
-            let msg = format!("{code}: N{} names both axes, the help text's type II; its path is given only in figures, so ncsight roughs it as type I", req.ns);
-            step.warn(Rule::NotSimulated, first.span, msg);
+        if let Some((span, msg)) = note {
+            step.warn(Rule::NotSimulated, span, msg);
         }
         let mut result = Ok(());
         for op in ops {

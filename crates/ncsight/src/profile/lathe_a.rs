@@ -8,7 +8,6 @@ use crate::cycles::groove::PeckKind;
 use crate::cycles::rough::RoughKind;
 use crate::cycles::turning::BoxKind;
 
-const LATER_MRC: GFn = GFn::NotYet("the pattern repeating cycle G73 is not simulated by ncsight yet");
 pub(super) const LATER_THREAD: GFn = GFn::NotYet("this thread command is not simulated by ncsight yet");
 pub(super) const LATER_G76: GFn = GFn::NotYet("the G76 compound threading cycle is not simulated by ncsight yet");
 
@@ -18,7 +17,7 @@ pub(super) const G_CODES: &[GDef] = &[
     g(70, Group::NonModal, GFn::Finish, "finishing cycle"),
     g(71, Group::NonModal, GFn::Rough(RoughKind::Turning), "stock removal in turning"),
     g(72, Group::NonModal, GFn::Rough(RoughKind::Facing), "stock removal in facing"),
-    g(73, Group::NonModal, LATER_MRC, "pattern repeating"),
+    g(73, Group::NonModal, GFn::Rough(RoughKind::Pattern), "pattern repeating"),
     g(74, Group::NonModal, GFn::PeckCycle(PeckKind::Face), "end face peck drilling"),
     g(75, Group::NonModal, GFn::PeckCycle(PeckKind::Groove), "outer/inner diameter grooving"),
     g(90, Group::Motion, GFn::BoxCycle(BoxKind::Turning), "outer/inner diameter cutting cycle"),

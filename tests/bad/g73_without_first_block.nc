@@ -1,0 +1,7 @@
+(expect NCS-E36 line 4 col 1 on gsk980tdi)
+G97 S500 M03
+G99 G0 X50 Z2
+G73 P50 Q60 U1 W0.2 F0.2
+N50 G0 X20
+N60 G1 X50 Z-20
+M30
