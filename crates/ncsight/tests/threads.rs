@@ -650,7 +650,8 @@ mod g76 {
 
 #[test]
 fn g78_infeed_modes_shift_the_pass_start_along_the_flank() {
-    // k 1, dd 0.5, d 0: passes at 0.5 and 1.0, a 60: shift depth x tan 30.
+    // k 1, dd 0.5, d 0: passes at 0.5 and 1.0, a 60: the tip sits (k - depth) x tan 30 off the
+    // groove's centre toward the flank it follows (left = -Z), the full-depth pass on it.
     let t = 30f64.to_radians().tan();
     for (mode, signs) in [(0, [0.0, 0.0]), (1, [-1.0, -1.0]), (2, [1.0, 1.0]), (3, [-1.0, 1.0])] {
         let prog = format!("G97 S300 M03\nG0 X70 Z5\nG78 P00{mode:02}60 Q0 R0 D0\nG78 X60 Z-40 P1000 Q500 F2\nM30\n");
@@ -658,7 +659,7 @@ fn g78_infeed_modes_shift_the_pass_start_along_the_flank() {
         let starts: Vec<f64> = r.threads().iter().filter(|t| (t.0.z - 5.0).abs() < 1.0).map(|t| t.0.z).collect();
         assert_eq!(starts.len(), 2, "{starts:?}");
         for (z, (sign, depth)) in starts.iter().zip(signs.iter().zip([0.5, 1.0])) {
-            assert!((z - (5.0 + sign * depth * t)).abs() < 1e-9, "mode {mode}: {starts:?}");
+            assert!((z - (5.0 + sign * (1.0 - depth) * t)).abs() < 1e-9, "mode {mode}: {starts:?}");
         }
     }
     // Bad P fields, D, L: alarms naming the word; E warns that it is not simulated.

@@ -2,7 +2,7 @@
 (Hand check - k 3.68, first depth 1.8, dmin 0.15, allowance 0.1, m 2, pull-out r 05 = 0.5 x 6 = 3 mm, a 60.)
 (Depths 1.8, 1.8 sqrt2 = 2.546, 1.8 sqrt3 = 3.118, then 3.58 = k - d since 1.8 sqrt4 = 3.6 passes it, then 3.68 twice.)
 (Pass X = 60.64 + 2 x [3.68 - depth] - 64.4, 62.909, 61.765, 60.84, 60.64, 60.64.)
-(Pass start Z = 5 - depth x tan 30 - 3.961, 3.530, 3.200, 2.933, 2.875 - flank infeed along the 60-degree flank.)
+(Pass start Z = 5 + [3.68 - depth] x tan 30 - 6.085, 5.655, 5.325, 5.058, 5, 5 - the passes follow the flank on the start's side, the full-depth ones at the programmed Z.)
 (The pull-out 3 mm at 45 degrees is cut to the retract distance - radius 2.8 on the first pass.)
 G97 S500 M03
 G0 X70 Z5

@@ -5,7 +5,7 @@ use super::thread::{chamfer_of, gsk_jk_pull_out};
 use super::words::Words;
 use super::{axis_target, Step};
 use crate::alarm::{Diagnostic, Rule};
-use crate::cycles::thread::compound::{infeed_shift_mm, pass_depths, Infeed, Schedule};
+use crate::cycles::thread::compound::{infeed_shift_mm, pass_depths, Flank, Infeed, Schedule};
 use crate::cycles::thread::cycle::{expand_cycle, Cycle};
 use crate::cycles::thread::{phase_after, thread_op, wrap_deg};
 use crate::modal::{G76Data, G78Data, SpindleDir};
@@ -52,11 +52,12 @@ fn data_in_force(step: &Step, kind: Compound) -> G78Data {
     match kind {
         Compound::G76 => {
             let base = step.st.thread.g76.unwrap_or_else(|| params_data(step));
-            let toward_plus_z = true; // replaced by the cut direction in `cut`
-            G78Data { base, schedule: Schedule::Decreasing, infeed: Infeed::Flank { toward_plus_z }, starts: 1 }
+            // The flank is chosen from the cut direction in `cut`.
+            G78Data { base, schedule: Schedule::Decreasing, infeed: Infeed::Along(Flank::PlusZ), starts: 1 }
         }
+        // A G76 first block rewrote the parameters G78 falls back on (No.57, 19, 58-60).
         Compound::G78 => step.st.thread.g78.unwrap_or_else(|| G78Data {
-            base: params_data(step),
+            base: step.st.thread.g76.unwrap_or_else(|| params_data(step)),
             schedule: Schedule::Decreasing,
             infeed: Infeed::Radial,
             starts: 1,
@@ -101,8 +102,8 @@ pub(super) fn compound(step: &mut Step, words: &mut Words, kind: Compound) -> Re
                 };
                 data.infeed = match r {
                     0 => Infeed::Radial,
-                    1 => Infeed::Flank { toward_plus_z: false },
-                    2 => Infeed::Flank { toward_plus_z: true },
+                    1 => Infeed::Along(Flank::MinusZ),
+                    2 => Infeed::Along(Flank::PlusZ),
                     3 => Infeed::Alternate,
                     _ => return Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("{}: G78 P(r), the cut-in mode, is 00 to 03, not {r:02}", w.text()))),
                 };
@@ -185,16 +186,18 @@ fn cut(step: &mut Step, words: &mut Words, name: &str, kind: Compound, data: G78
     // External thread when the start is outside the root: deeper passes are at smaller X.
     let outward = if a.x > c.x { 1.0 } else { -1.0 };
     let infeed = match kind {
-        // G76 cuts on the flank that faces the direction of cutting: each pass starts
-        // depth x tan(a/2) further along the cut (the shallowest pass nearest the start).
-        Compound::G76 => Infeed::Flank { toward_plus_z: c.z > a.z },
+        // G76 follows the flank on the start point's side: the passes move in along it toward
+        // the finished groove, which the passes at full depth cut at the programmed position.
+        Compound::G76 => Infeed::Along(if c.z < a.z { Flank::PlusZ } else { Flank::MinusZ }),
         Compound::G78 => data.infeed,
     };
     step.feed_warning(name, lead, rpm);
     for (index, depth) in schedule.into_iter().enumerate() {
         let end_x = c.x + outward * (height - depth);
-        let shift = infeed_shift_mm(infeed, index, depth, base.angle_deg);
-        let cut_start = Vec3::new(end_x + taper, a.y, a.z + shift);
+        let shift = infeed_shift_mm(infeed, index, depth, height, base.angle_deg);
+        // On a taper the shifted start stays on the pass's cone.
+        let start_z = a.z + shift;
+        let cut_start = Vec3::new(end_x + taper * (c.z - start_z) / (c.z - a.z), a.y, start_z);
         let cut_end = Vec3::new(end_x, a.y, c.z);
         let retract = (a.x - end_x).abs();
         let pull_out = if base.j.is_some() || base.k.is_some() {

@@ -15,27 +15,40 @@ pub enum Schedule {
     Equal,
 }
 
+/// A flank of the thread groove: the one on its -Z side or on its +Z side.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Flank {
+    MinusZ,
+    PlusZ,
+}
+
 /// Where each pass enters the thread groove.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Infeed {
     /// Straight in, no Z shift (G78 P r = 0, "middle").
     Radial,
-    /// Along one flank: each pass shifted by `depth x tan(a/2)` towards +Z (`toward_plus_z`) or
-    /// -Z (G76; G78 P r = 1 left, 2 right).
-    Flank { toward_plus_z: bool },
-    /// One flank then the other, pass by pass, the first towards -Z (G78 P r = 3).
+    /// Along one flank of the groove: every pass's edge on that flank lies on the finished
+    /// flank (G76; G78 P r = 1 left = the -Z flank, 2 right = the +Z flank).
+    Along(Flank),
+    /// The -Z flank, then the +Z flank, pass by pass (G78 P r = 3).
     Alternate,
 }
 
-/// The Z shift (mm) of pass `index` (0-based) at `depth` (radius, mm) for tool angle `angle_deg`.
-pub fn infeed_shift_mm(infeed: Infeed, index: usize, depth: f64, angle_deg: f64) -> f64 {
-    let along = depth * (angle_deg / 2.0).to_radians().tan();
-    match infeed {
-        Infeed::Radial => 0.0,
-        Infeed::Flank { toward_plus_z: true } => along,
-        Infeed::Flank { toward_plus_z: false } => -along,
-        Infeed::Alternate if index % 2 == 0 => -along,
-        Infeed::Alternate => along,
+/// The Z shift (mm) of the tool tip, relative to the finished groove's centre, of pass `index`
+/// (0-based) at `depth` (radius, mm) of a thread `height_mm` deep, tool angle `angle_deg`. A pass
+/// that follows the -Z flank sits `(height - depth) x tan(a/2)` towards -Z, so its -Z edge is
+/// on the finished flank; the passes at full depth sit on the centre.
+pub fn infeed_shift_mm(infeed: Infeed, index: usize, depth: f64, height_mm: f64, angle_deg: f64) -> f64 {
+    let off = (height_mm - depth).max(0.0) * (angle_deg / 2.0).to_radians().tan();
+    let flank = match infeed {
+        Infeed::Radial => return 0.0,
+        Infeed::Along(f) => f,
+        Infeed::Alternate if index % 2 == 0 => Flank::MinusZ,
+        Infeed::Alternate => Flank::PlusZ,
+    };
+    match flank {
+        Flank::MinusZ => -off,
+        Flank::PlusZ => off,
     }
 }
 
@@ -126,12 +139,21 @@ mod tests {
 
     #[test]
     fn infeed_shifts() {
+        // Height 1.5, pass at depth 0.5: 1.0 x tan 30 off the centre; at full depth on it.
         let t = 30f64.to_radians().tan();
-        assert_eq!(infeed_shift_mm(Infeed::Radial, 3, 1.0, 60.0), 0.0);
-        assert!((infeed_shift_mm(Infeed::Flank { toward_plus_z: true }, 0, 1.0, 60.0) - t).abs() < 1e-12);
-        assert!((infeed_shift_mm(Infeed::Flank { toward_plus_z: false }, 0, 1.0, 60.0) + t).abs() < 1e-12);
-        assert!((infeed_shift_mm(Infeed::Alternate, 0, 1.0, 60.0) + t).abs() < 1e-12);
-        assert!((infeed_shift_mm(Infeed::Alternate, 1, 1.0, 60.0) - t).abs() < 1e-12);
+        assert_eq!(infeed_shift_mm(Infeed::Radial, 3, 0.5, 1.5, 60.0), 0.0);
+        assert!((infeed_shift_mm(Infeed::Along(Flank::PlusZ), 0, 0.5, 1.5, 60.0) - t).abs() < 1e-12);
+        assert!((infeed_shift_mm(Infeed::Along(Flank::MinusZ), 0, 0.5, 1.5, 60.0) + t).abs() < 1e-12);
+        assert!((infeed_shift_mm(Infeed::Alternate, 0, 0.5, 1.5, 60.0) + t).abs() < 1e-12);
+        assert!((infeed_shift_mm(Infeed::Alternate, 1, 0.5, 1.5, 60.0) - t).abs() < 1e-12);
+        assert_eq!(infeed_shift_mm(Infeed::Alternate, 1, 1.5, 1.5, 60.0), 0.0);
+        // The edge on the followed flank stays on the finished flank: tip z - (depth - y) t at
+        // height y is the same line for every depth.
+        for d in [0.3, 0.9, 1.5] {
+            let s = infeed_shift_mm(Infeed::Along(Flank::MinusZ), 0, d, 1.5, 60.0);
+            let at_surface = s - d * t;
+            assert!((at_surface + 1.5 * t).abs() < 1e-12);
+        }
     }
 
     #[test]
