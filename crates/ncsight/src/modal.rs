@@ -150,8 +150,8 @@ pub struct Modal {
     pub rough_request: Option<crate::interp::RoughRequest>,
     /// Set by G70: run a stored contour.
     pub finish_request: Option<crate::interp::FinishRequest>,
-    /// G74 / G75 back-off e from their first blocks (index 0 G74, 1 G75).
-    pub peck_back_off_mm: [Option<f64>; 2],
+    /// G74 / G75 back-off e set by a first block (one value for both, as the parameter).
+    pub peck_back_off_mm: Option<f64>,
     /// G90/G94 end point and taper of the last cycle block, for the blocks that repeat it.
     pub box_cycle: BoxMemory,
     /// Current position, programme coordinates, mm, X as a radius.
@@ -197,7 +197,7 @@ impl Modal {
             pattern_data: None,
             rough_request: None,
             finish_request: None,
-            peck_back_off_mm: [None; 2],
+            peck_back_off_mm: None,
             box_cycle: BoxMemory::default(),
             plane: if profile.kind == MachineKind::Lathe { Plane::ZX } else { Plane::XY },
             incremental: false,

@@ -101,38 +101,37 @@ pub fn expand(c: &PeckCycle, limit: usize) -> Result<Vec<Move>, PeckError> {
             Ok(())
         }
     };
-    let mut done_across = 0.0f64;
-    loop {
-        let sv = s0 + dir_s * done_across;
+    // Counts worked out once (a sum of many small steps would drift past the end).
+    let count = |total: f64, each: f64| if total > 0.0 { ((total / each) - 1e-9).ceil().max(1.0) } else { 0.0 };
+    let (pecks, grooves) = (count(depth, c.peck_mm), count(across, c.step_mm) + 1.0);
+    if pecks * grooves * 2.0 > limit as f64 {
+        return Err(PeckError::TooMany);
+    }
+    let (pecks, grooves) = (pecks as usize, grooves as usize);
+    for g in 0..grooves {
+        let sv = s0 + dir_s * (g as f64 * c.step_mm).min(across);
+        if g > 0 {
+            // Step 6: over to the next groove, no further than Af.
+            push(Move::Rapid(at(p0, sv)), &mut out)?;
+        }
+        if depth <= 0.0 {
+            continue;
+        }
         // Steps 1-3: peck down to the groove's bottom.
-        if depth > 0.0 {
-            let mut reached = 0.0f64;
-            loop {
-                reached = (reached + c.peck_mm).min(depth);
-                push(Move::Feed(at(p0 + dir_p * reached, sv)), &mut out)?;
-                if reached >= depth - 1e-12 {
-                    break;
-                }
-                let back = (reached - c.back_off_mm).max(0.0);
-                if c.back_off_mm > 0.0 {
-                    push(Move::Rapid(at(p0 + dir_p * back, sv)), &mut out)?;
-                }
+        for i in 1..=pecks {
+            let reached = (i as f64 * c.peck_mm).min(depth);
+            push(Move::Feed(at(p0 + dir_p * reached, sv)), &mut out)?;
+            if i < pecks && c.back_off_mm > 0.0 {
+                push(Move::Rapid(at(p0 + dir_p * (reached - c.back_off_mm).max(0.0), sv)), &mut out)?;
             }
         }
-        // Steps 4-5: relief along the step axis (back toward the start's side), out to Dn.
-        let relief_s = if done_across > 0.0 { sv - dir_s * c.relief_mm.min(done_across) } else { sv };
-        if depth > 0.0 {
-            if relief_s != sv {
-                push(Move::Rapid(at(p_end, relief_s)), &mut out)?;
-            }
-            push(Move::Rapid(at(p0, relief_s)), &mut out)?;
+        // Steps 4-5: the relief along the step axis, back toward the start's side (at every
+        // groove, the first too, as the help text's steps say), out to Dn.
+        let relief_s = sv - dir_s * c.relief_mm;
+        if relief_s != sv {
+            push(Move::Rapid(at(p_end, relief_s)), &mut out)?;
         }
-        if done_across >= across - 1e-12 {
-            break;
-        }
-        // Step 6: over to the next groove, no further than Af.
-        done_across = (done_across + c.step_mm).min(across);
-        push(Move::Rapid(at(p0, s0 + dir_s * done_across)), &mut out)?;
+        push(Move::Rapid(at(p0, relief_s)), &mut out)?;
     }
     // Step 7: back to A along the step axis.
     if across > 0.0 {

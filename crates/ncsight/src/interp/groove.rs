@@ -13,7 +13,6 @@ const MAX_MOVES: usize = 1_000_000;
 
 pub(super) fn block(step: &mut Step, words: &mut Words, kind: PeckKind) -> Result<(), Diagnostic> {
     let code = kind.code();
-    let slot = usize::from(kind == PeckKind::Groove);
     let has_axis = [b'X', b'Z', b'U', b'W'].iter().any(|l| words.has(*l));
     if !has_axis {
         // First block: R(e), the back-off after each peck; it stays for later blocks.
@@ -22,33 +21,34 @@ pub(super) fn block(step: &mut Step, words: &mut Words, kind: PeckKind) -> Resul
             if e < 0.0 {
                 return Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("{}: the back-off e of {code} cannot be negative", w.text())));
             }
-            step.st.peck_back_off_mm[slot] = Some(e);
+            step.st.peck_back_off_mm = Some(e);
         }
         return Ok(());
     }
-    // Every X amount is a diameter value, as X is programmed: the help text moves X by Δi/2
-    // and Δd/2 in G74 (docs/commands/g74_g75.md).
-    let x_scale = 0.5;
+    // As the help text writes the steps: G74 moves X by Δi/2 and Δd/2 (steps 4 and 6), G75
+    // moves X by Δi (step 1); Z amounts as given.
+    let halved = if kind == PeckKind::Face { 0.5 } else { 1.0 };
     let (peck_letter, step_letter) = if kind == PeckKind::Face { (b'Q', b'P') } else { (b'P', b'Q') };
-    let amount = |step: &mut Step, words: &mut Words, letter: u8, x_axis: bool| -> Result<f64, Diagnostic> {
+    let amount = |step: &mut Step, words: &mut Words, letter: u8, scale: f64| -> Result<f64, Diagnostic> {
         match words.take(letter) {
-            Some(w) => Ok(increments(step, &w, code)?.abs() * if x_axis { x_scale } else { 1.0 }),
+            Some(w) => Ok(increments(step, &w, code)?.abs() * scale),
             None => Ok(0.0),
         }
     };
-    let peck_mm = amount(step, words, peck_letter, kind == PeckKind::Groove)?;
-    let step_mm = amount(step, words, step_letter, kind == PeckKind::Face)?;
+    let peck_mm = amount(step, words, peck_letter, 1.0)?;
+    let step_mm = amount(step, words, step_letter, halved)?;
     let relief_mm = match words.take(b'R') {
-        Some(w) => step.length(&w)?.abs() * if kind == PeckKind::Face { x_scale } else { 1.0 },
+        Some(w) => step.length(&w)?.abs() * halved,
         None => 0.0,
     };
+    let back_off_mm = step.st.peck_back_off_mm.or_else(|| step.profile.peck_back_off.map(|k| step.params.get(k))).unwrap_or(0.0);
     let start = step.st.pos;
     let (end, _) = axis_target(step, words)?;
     let cycle = PeckCycle {
         kind,
         start,
         end,
-        back_off_mm: step.st.peck_back_off_mm[slot].unwrap_or(0.0),
+        back_off_mm,
         peck_mm,
         step_mm,
         relief_mm,

@@ -450,7 +450,8 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
             step.st.thread.cycle_end = None;
             step.st.thread.repair = false;
         }
-        if !matches!(m, Motion::Box(_)) {
+        // Another group 01 code, or the other box cycle, ends the remembered X, Z and R.
+        if m != step.st.motion {
             step.st.box_cycle = Default::default();
         }
         // A group 01 code cancels a drilling cycle as G80 does (seed 003 8.1.4).
@@ -564,6 +565,10 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
     }
 
     // --- one-shot codes ---
+    // A one-shot code other than G04 ends the box cycles' remembered X, Z and R (FANUC 0-T).
+    if matches!(codes.non_modal, Some((_, f)) if f != GFn::Dwell) {
+        step.st.box_cycle = Default::default();
+    }
     match codes.non_modal {
         Some((_, GFn::Dwell)) => dwell(step, &mut words)?,
         Some((_, GFn::CompoundThread(kind))) => compound::compound(step, &mut words, kind)?,
@@ -606,7 +611,7 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
             }
             if let Motion::Box(kind) = step.st.motion {
                 if has_axis || words.has(b'R') {
-                    turning::block(step, &mut words, kind, codes.motion.is_some())?;
+                    turning::block(step, &mut words, kind)?;
                 }
                 return finish_block(step, words, &codes, after, switches);
             }

@@ -8,29 +8,27 @@ use crate::cycles::turning::{box_cycle, BoxKind};
 use crate::modal::BoxMemory;
 use crate::motion::Op;
 
-/// One G90 or G94 block. `explicit`: the block names the G code itself; otherwise it repeats
-/// the cycle in force and the end point words it leaves out come from the last cycle block.
-pub(super) fn block(step: &mut Step, words: &mut Words, kind: BoxKind, explicit: bool) -> Result<(), Diagnostic> {
+/// One G90 or G94 block, naming the code or repeating the cycle in force.
+pub(super) fn block(step: &mut Step, words: &mut Words, kind: BoxKind) -> Result<(), Diagnostic> {
     let name = kind.code();
     let taper_word = words.take(b'R');
     let a = step.st.pos;
     let given_x = words.has(b'X') || words.has(b'U');
     let given_z = words.has(b'Z') || words.has(b'W');
     let (mut c, _) = axis_target(step, words)?;
+    // X, Z and R are modal in the cycle: what a block leaves out comes from the last cycle block,
+    // whether or not it names G90/G94 again.
     let memory = step.st.box_cycle;
-    if !explicit {
-        if let Some(m) = memory.end {
-            if !given_x {
-                c.x = m.x;
-            }
-            if !given_z {
-                c.z = m.z;
-            }
+    if let Some(m) = memory.end {
+        if !given_x {
+            c.x = m.x;
+        }
+        if !given_z {
+            c.z = m.z;
         }
     }
     let taper_mm = match taper_word {
         Some(w) => step.length(&w)?,
-        None if explicit => 0.0,
         None => memory.taper_mm,
     };
     // The taper may not carry the cut start past the start point: with R and U (G90) or R and
@@ -38,7 +36,7 @@ pub(super) fn block(step: &mut Step, words: &mut Words, kind: BoxKind, explicit:
     // taper cases).
     let step_axis = kind.step_axis();
     let travel = c.axis(step_axis) - a.axis(step_axis);
-    if taper_mm != 0.0 && travel != 0.0 && taper_mm.signum() != travel.signum() && taper_mm.abs() > travel.abs() + 1e-9 {
+    if taper_mm != 0.0 && (travel == 0.0 || taper_mm.signum() != travel.signum()) && taper_mm.abs() > travel.abs() + 1e-9 {
         let span = taper_word.map(|w| w.span).unwrap_or(step.span);
         let (letter, shown) = if kind == BoxKind::Turning { ("U/2", travel.abs()) } else { ("W", travel.abs()) };
         return Err(step.alarm(

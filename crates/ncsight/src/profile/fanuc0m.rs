@@ -128,6 +128,7 @@ pub static PROFILE: Profile = Profile {
     axes: "XYZ",
     reference_point_mm: crate::motion::Vec3::new(0.0, 0.0, 0.0),
     addresses: "GMSTFXYZIJKRPQLHDN",
+    peck_back_off: None,
     g_codes: &[common::G_CODES, G_CODES],
     m_codes: &[common::M_CODES, M_CODES],
     params: &[PARAMS, DRY_RUN, SETTINGS],

@@ -21,6 +21,15 @@ const EXTRA: &[GDef] = &[
 
 const PARAMS: &[ParamDef] = &[
     ParamDef {
+        key: ParamKey::Number(5139, None),
+        meaning: "G74/G75 return amount e at power on; their first block R rewrites it",
+        unit: "mm",
+        min: 0.0,
+        max: 99.0,
+        default: 0.0,
+        source: "FANUC 0i numbering (inferred; not in params_alarms.md); default assumed",
+    },
+    ParamDef {
         key: ParamKey::Number(5130, None),
         meaning: "thread chamfering (pull-out) amount of G92 and G76",
         unit: "0.1 x lead",
@@ -89,6 +98,7 @@ pub static PROFILE: Profile = Profile {
     axes: "XZ",
     reference_point_mm: crate::motion::Vec3::new(100.0, 0.0, 200.0),
     addresses: "GMSTFXZUWRIKPQLN",
+    peck_back_off: Some(ParamKey::Number(5139, None)),
     g_codes: &[common::G_CODES, lathe_a::G_CODES, EXTRA],
     m_codes: &[common::M_CODES, lathe_a::M_CODES],
     params: &[FANUC_RATES, PARAMS, DRY_RUN, SETTINGS],

@@ -111,6 +111,15 @@ const PARAMS: &[ParamDef] = &[
         source: "TAC p135 (the ordering, inferred); default assumed",
     },
     ParamDef {
+        key: ParamKey::Number(56, None),
+        meaning: "G74/G75 back-off e at power on; their first block R rewrites it",
+        unit: "mm",
+        min: 0.0,
+        max: 99.0,
+        default: 0.0,
+        source: "TDi p70; default assumed",
+    },
+    ParamDef {
         key: ParamKey::Number(60, None),
         meaning: "G76 finishing allowance d, the power-on value of R",
         unit: "mm",
@@ -143,6 +152,7 @@ pub static PROFILE: Profile = Profile {
     axes: "XZ",
     reference_point_mm: crate::motion::Vec3::new(100.0, 0.0, 200.0),
     addresses: "GMSTFXZUWRIJKPQLNDE",
+    peck_back_off: Some(ParamKey::Number(56, None)),
     g_codes: &[common::G_CODES, lathe_a::G_CODES, EXTRA],
     m_codes: &[common::M_CODES, lathe_a::M_CODES, lathe_a::GSK_M_CODES],
     params: &[PARAMS, DRY_RUN, SETTINGS],

@@ -396,6 +396,9 @@ pub struct Profile {
     pub reference_point_mm: crate::motion::Vec3,
     /// Addresses the controller reads at all (anything else is IMPROPER NC-ADDRESS).
     pub addresses: &'static str,
+    /// The parameter with the power-on back-off e of the lathe peck cycles G74/G75 (one value
+    /// for both; their first block rewrites it), if the profile knows it.
+    pub peck_back_off: Option<ParamKey>,
     pub g_codes: &'static [&'static [GDef]],
     pub m_codes: &'static [&'static [MDef]],
     /// The manual's parameters, then ncsight's own settings ([`SETTINGS`]).

@@ -55,6 +55,7 @@ pub static PROFILE: Profile = Profile {
     axes: "XZ",
     reference_point_mm: crate::motion::Vec3::new(100.0, 0.0, 200.0),
     addresses: "GMSTFEXZUWRIKPQLN",
+    peck_back_off: None,
     g_codes: &[common::G_CODES, lathe_a::G_CODES, EXTRA],
     m_codes: &[common::M_CODES, lathe_a::M_CODES],
     params: &[PARAMS, DRY_RUN, SETTINGS],

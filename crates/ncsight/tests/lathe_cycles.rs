@@ -1,0 +1,80 @@
+//! The lathe's turning, facing, peck and roughing cycles, rule by rule (GSK980TDi help text
+//! G70-G75, G90, G94).
+
+use ncsight::motion::Op;
+use ncsight::{Diagnostic, Record};
+
+mod common;
+
+fn run(text: &str) -> (Vec<Record>, Vec<Diagnostic>) {
+    common::run_plain("gsk980tdi", &[], text)
+}
+
+fn alarm(d: &[Diagnostic]) -> Option<&'static str> {
+    d.iter().find(|d| d.is_alarm()).map(|d| d.code)
+}
+
+fn feeds_on_line(r: &[Record], line: u32) -> Vec<(f64, f64)> {
+    r.iter()
+        .filter(|r| r.span.line == line)
+        .filter_map(|r| if let Op::Feed { to, .. } = r.op { Some((2.0 * to.x, to.z)) } else { None })
+        .collect()
+}
+
+const START: &str = "G97 S500 M03\nG99 G0 X50 Z2\n";
+
+#[test]
+fn g90_x_z_and_r_stay_when_the_code_is_named_again() {
+    // Line 4 names G90 again with X only: Z-30 and R-1 come from line 3.
+    let (r, d) = run(&format!("{START}G90 X46 Z-30 R-1 F0.2\nG90 X42\nM30\n"));
+    assert_eq!(alarm(&d), None);
+    let f = feeds_on_line(&r, 4);
+    assert_eq!(f[0], (42.0, -30.0));
+    // The cut start is at X 42 + 2 x -1 = 40.
+    let start = r.iter().find(|r| r.span.line == 4).unwrap().op.end_point().unwrap();
+    assert!((2.0 * start.x - 40.0).abs() < 1e-9);
+}
+
+#[test]
+fn switching_between_g90_and_g94_or_a_one_shot_code_forgets_the_end_point() {
+    // G94 after G90: G90's X46 is not G94's end X; X stays where the tool is (X50).
+    let (r, d) = run(&format!("{START}G90 X46 Z-30 F0.2\nG94 Z-2\nM30\n"));
+    assert_eq!(alarm(&d), None);
+    assert!(feeds_on_line(&r, 4).iter().all(|f| (f.0 - 50.0).abs() < 1e-9));
+    // G28 in between: the repeat block's Z is not Z-30 any more.
+    let (r, _) = run(&format!("{START}G90 X46 Z-30 F0.2\nG28 U0\nG90 X42 Z-10\nX40\nM30\n"));
+    assert_eq!(feeds_on_line(&r, 6)[0], (40.0, -10.0));
+}
+
+#[test]
+fn a_taper_with_no_step_is_too_large() {
+    let (_, d) = run(&format!("{START}G90 U0 Z-30 R1 F0.2\nM30\n"));
+    assert_eq!(alarm(&d), Some("NCS-E45"));
+}
+
+#[test]
+fn g75_counts_its_pecks_without_drift() {
+    // 100 mm deep (radius) in pecks of 0.1 mm: exactly 1000 feeds, the last at the bottom.
+    let (r, d) = run("G97 S500 M03\nG99 G0 X300 Z0\nG75 X100 Z0 P100 F0.05\nM30\n");
+    assert_eq!(alarm(&d), None);
+    let f = feeds_on_line(&r, 3);
+    assert_eq!(f.len(), 1000);
+    assert!((f.last().unwrap().0 - 100.0).abs() < 1e-9);
+}
+
+#[test]
+fn g74_and_g75_share_one_back_off() {
+    // G74 R0.5 sets e for G75 too: each G75 peck is followed by a 0.5 mm rapid back in X.
+    let (r, d) = run("G97 S500 M03\nG99 G0 X42 Z-10\nG74 R0.5\nG75 X36 Z-10 P2000 F0.05\nM30\n");
+    assert_eq!(alarm(&d), None);
+    let backs: Vec<f64> = r.iter().filter(|r| r.span.line == 4).filter_map(|r| if let Op::Rapid { from, to } = r.op { Some(to.x - from.x) } else { None }).collect();
+    assert!((backs[0] - 0.5).abs() < 1e-9, "{backs:?}");
+}
+
+#[test]
+fn a_contour_never_closed_is_an_alarm_not_a_silent_skip() {
+    let (_, d) = run(&format!("{START}G71 U2 R1\nG71 P10 Q99 F0.3\nN10 G0 X20\nG1 Z-10\nM30\n"));
+    assert_eq!(alarm(&d), Some("NCS-E53"));
+    let (_, d) = run(&format!("{START}G71 U2 R1\nG71 P10 Q99 F0.3\nN10 G0 X20\nG1 Z-10\n"));
+    assert_eq!(alarm(&d), Some("NCS-E53"));
+}
