@@ -14,8 +14,8 @@ fn every_profile() -> impl Strategy<Value = &'static ncsight::Profile> {
 /// Lines made of G-code-ish pieces, so the interpreter is reached, not only the reader.
 fn gcode_line() -> impl Strategy<Value = String> {
     let word = (
-        prop::sample::select(b"GXYZUWIJKRFSTMPQLNO".to_vec()),
-        prop::sample::select(vec!["0", "1", "2", "3", "4", "-1.5", "10.", "92", "32.1", "99", "0.0", "1e3", "[1/0]", "[2*3]", ".", "-"]),
+        prop::sample::select(b"GXYZUWIJKRFSTMPQLNODE".to_vec()),
+        prop::sample::select(vec!["0", "1", "2", "3", "4", "-1.5", "10.", "92", "32.1", "99", "0.0", "1e3", "[1/0]", "[2*3]", ".", "-", "70", "71", "72", "73", "74", "75", "76", "78", "90", "94", "500", "010260"]),
     )
         .prop_map(|(l, v)| format!("{}{}", l as char, v));
     prop::collection::vec(word, 0..8).prop_map(|ws| ws.join(" "))
