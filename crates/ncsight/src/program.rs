@@ -144,7 +144,8 @@ impl Program {
             c.flush_pending(&mut |e| events.push(e));
         }
         // A G71/G72 whose contour never closed: its blocks were read but nothing ran them.
-        if let Some(d) = c.interp.unfinished_contour() {
+        let stopped = c.status == Status::Alarm || self.machine.is_reset();
+        if let Some(d) = c.interp.unfinished_contour().filter(|_| !stopped) {
             c.alarms += 1;
             if c.mode == Mode::Run {
                 c.status = Status::Alarm;
@@ -251,6 +252,10 @@ impl Core {
                     self.alarm(d, sink);
                     if self.mode == Mode::Run {
                         return;
+                    }
+                    // A programme end inside an unfinished contour still ends the programme.
+                    if self.interp.state().ended {
+                        self.status = Status::Ended;
                     }
                 }
             }

@@ -78,3 +78,23 @@ fn a_contour_never_closed_is_an_alarm_not_a_silent_skip() {
     let (_, d) = run(&format!("{START}G71 U2 R1\nG71 P10 Q99 F0.3\nN10 G0 X20\nG1 Z-10\n"));
     assert_eq!(alarm(&d), Some("NCS-E53"));
 }
+
+#[test]
+fn the_ns_block_must_step_along_the_depth_axis() {
+    // G72 steps its depth along Z: an ns block that only moves X is the wrong contour (note 2).
+    let (_, d) = run(&format!("{START}G72 W2 R1\nG72 P10 Q20 F0.3\nN10 G0 X20\nN20 G1 Z-10\nM30\n"));
+    assert_eq!(alarm(&d), Some("NCS-E55"));
+    // A contour with nothing after its ns block.
+    let (_, d) = run(&format!("{START}G71 U2 R1\nG71 P10 Q10 F0.3\nN10 G0 X20\nM30\n"));
+    assert_eq!(alarm(&d), Some("NCS-E55"));
+}
+
+#[test]
+fn m00_in_a_contour_is_ignored_in_roughing_and_g70_ends_its_block() {
+    let (r, d) = run(&format!("{START}G71 U2 R1\nG71 P10 Q20 F0.3\nN10 G0 X20\nG1 Z-10 M00\nN20 X50\nG70 P10 Q20\nM30\n"));
+    assert_eq!(alarm(&d), None, "{d:?}");
+    // G70's last record (the rapid back to its start) carries the single-block stop.
+    let last_g70 = r.iter().rev().find(|r| r.span.line == 8).expect("G70 returns to its start");
+    assert!(last_g70.block_end);
+    assert!(matches!(last_g70.op, Op::Rapid { .. }));
+}

@@ -105,7 +105,7 @@ fn polyline(contour: &[Op], chord_mm: f64) -> Vec<Vec3> {
                     pts.push(*from);
                 }
                 if let Some(g) = crate::time::arc_geom_of(op) {
-                    let n = ((geom::arc_length(from, to, *plane, &g) / chord_mm).ceil() as usize).clamp(8, 100_000);
+                    let n = ((geom::arc_length(from, to, *plane, &g) / chord_mm).ceil() as usize).clamp(8, 20_000);
                     for k in 1..=n {
                         pts.push(geom::arc_point(from, to, *plane, *dir, &g, k as f64 / n as f64));
                     }
@@ -150,6 +150,8 @@ pub fn expand(r: &Roughing, limit: usize) -> Result<Vec<Op>, RoughError> {
     }
     let end = *pts.last().unwrap_or(&b1);
     let dir_l = (b1.axis(l) - a1.axis(l)).signum();
+    // Which way the contour runs along the level axis (from B' back toward A's level).
+    let rise = (end.axis(l) - b1.axis(l)).signum();
     let dir_c = (end.axis(c) - b1.axis(c)).signum();
     let at = |lv: f64, cv: f64| {
         let mut v = a1;
@@ -175,17 +177,20 @@ pub fn expand(r: &Roughing, limit: usize) -> Result<Vec<Op>, RoughError> {
             return Err(RoughError::TooMany);
         }
         let level = a1.axis(l) + dir_l * k as f64 * r.depth_mm;
-        // Where the level meets the contour, walking from B'.
-        let hit = pts.windows(2).find_map(|w| {
-            let (p, q) = (w[0].axis(l), w[1].axis(l));
-            if (level - p) * (level - q) <= 0.0 && (p - q).abs() > 1e-12 {
-                let u = (level - p) / (q - p);
-                Some(w[0].axis(c) + u * (w[1].axis(c) - w[0].axis(c)))
-            } else {
-                None
-            }
-        });
-        let hit = hit.unwrap_or(end.axis(c));
+        // Where the level meets the contour, walking from B': the contour is monotonic along
+        // the level axis (checked above), so a binary search finds the first point at or past
+        // the level.
+        let i = pts.partition_point(|p| (p.axis(l) - level) * rise < 0.0);
+        let hit = if i == 0 {
+            pts[0].axis(c)
+        } else if i >= pts.len() {
+            end.axis(c)
+        } else {
+            let (w0, w1) = (pts[i - 1], pts[i]);
+            let (p, q) = (w0.axis(l), w1.axis(l));
+            let u = if (q - p).abs() > 1e-12 { (level - p) / (q - p) } else { 1.0 };
+            w0.axis(c) + u * (w1.axis(c) - w0.axis(c))
+        };
         go(at(level, a1.axis(c)), !r.ns_rapid, &mut ops, &mut pos);
         go(at(level, hit), true, &mut ops, &mut pos);
         go(at(level - dir_l * r.back_off_mm, hit - dir_c * r.back_off_mm), true, &mut ops, &mut pos);

@@ -169,7 +169,17 @@ impl Interpreter {
         }
         if ends_programme(block) {
             self.collecting = None;
+            // The end still ends the programme (check mode reads on after the alarm).
+            self.state.ended = true;
             return Err(self.contour_alarm(Rule::ContourNotFound, block.span, format!("{code} Q{}: the programme ends before block N{}", req.nf, req.nf)));
+        }
+        if blocks.len() >= MAX_CONTOUR_BLOCKS {
+            self.collecting = None;
+            return Err(self.contour_alarm(
+                Rule::ContourNotFound,
+                block.span,
+                format!("{code} Q{}: no block N{} within {MAX_CONTOUR_BLOCKS} blocks of the contour's start (help text note 5)", req.nf, req.nf),
+            ));
         }
         blocks.push(block.clone());
         if block.sequence == Some(req.nf) {
@@ -179,13 +189,6 @@ impl Interpreter {
             self.contours.push((req.ns, req.nf, blocks));
             let blocks = &self.contours.last().expect("just pushed").2.clone();
             self.rough_contour(req, blocks, out)?;
-        } else if blocks.len() > MAX_CONTOUR_BLOCKS {
-            self.collecting = None;
-            return Err(self.contour_alarm(
-                Rule::ContourNotFound,
-                block.span,
-                format!("{code} Q{}: no block N{} within {MAX_CONTOUR_BLOCKS} blocks of the contour's start (help text note 5)", req.nf, req.nf),
-            ));
         }
         Ok(())
     }
@@ -199,7 +202,9 @@ impl Interpreter {
 
     /// The contour's moves, worked out on a copy of the modal state (their F, S, T and M do not
     /// count during roughing: help text note 7).
-    fn contour_moves(&self, code: &str, blocks: &[Block]) -> Result<Vec<Op>, Diagnostic> {
+    ///
+    /// Returns the ns block's move, the moves after it, and the warnings the blocks gave.
+    fn contour_moves(&self, code: &str, blocks: &[Block]) -> Result<(Op, Vec<Op>, Vec<Diagnostic>), Diagnostic> {
         let mut st = self.state.clone();
         let mut scratch = Outcome::default();
         for b in blocks {
@@ -212,11 +217,25 @@ impl Interpreter {
                 return Err(self.contour_alarm(Rule::ContourCommand, b.span, format!("{code}: a contour block cannot call a cycle itself")));
             }
         }
+        // Help text notes 1 and 2: the ns block makes one G00 or G01 move.
+        let ns_span = blocks[0].span;
+        let ns_moves: Vec<&Op> = scratch.records.iter().filter(|r| r.span == ns_span && r.op.end_point().is_some()).map(|r| &r.op).collect();
+        let ns_move = match ns_moves.as_slice() {
+            [op @ (Op::Rapid { .. } | Op::Feed { .. })] => (*op).clone(),
+            _ => {
+                return Err(self.contour_alarm(
+                    Rule::ContourCommand,
+                    ns_span,
+                    format!("{code}: the contour's first block must make one G00 or G01 move (help text note 1)"),
+                ))
+            }
+        };
         let mut moves = Vec::new();
-        for r in &scratch.records {
+        for r in scratch.records.iter().filter(|r| r.span != ns_span) {
             match r.op {
                 Op::Rapid { .. } | Op::Feed { .. } | Op::Arc { .. } => moves.push(r.op.clone()),
-                Op::Spindle { .. } | Op::Tool { .. } | Op::Dwell { .. } => {}
+                // Note 7: S, T and M in the contour do nothing during roughing.
+                Op::Spindle { .. } | Op::Tool { .. } | Op::Dwell { .. } | Op::Stop { .. } => {}
                 _ => {
                     return Err(self.contour_alarm(
                         Rule::ContourCommand,
@@ -226,19 +245,22 @@ impl Interpreter {
                 }
             }
         }
-        Ok(moves)
+        if moves.is_empty() {
+            return Err(self.contour_alarm(Rule::ContourCommand, ns_span, format!("{code}: the contour has no move after its first block")));
+        }
+        Ok((ns_move, moves, scratch.warnings))
     }
 
     /// Rough the collected contour (the records carry the G71/G72 block's span).
     fn rough_contour(&mut self, req: RoughRequest, blocks: &[Block], out: &mut Outcome) -> Result<(), Diagnostic> {
         let code = req.kind.code();
-        let contour = self.contour_moves(code, blocks)?;
+        let (ns_move, rest, warnings) = self.contour_moves(code, blocks)?;
         let first = &blocks[0];
-        // Help text note 1: the ns block is G00 or G01.
-        let Some(first_move) = contour.first().filter(|op| matches!(op, Op::Rapid { .. } | Op::Feed { .. })) else {
-            return Err(self.contour_alarm(Rule::ContourCommand, first.span, format!("{code}: the contour's first block N{} must move with G00 or G01", req.ns)));
-        };
-        let ns_rapid = matches!(first_move, Op::Rapid { .. });
+        let ns_rapid = matches!(ns_move, Op::Rapid { .. });
+        let contour: Vec<Op> = std::iter::once(ns_move.clone()).chain(rest).collect();
+        // The contour blocks' own warnings (a length without a decimal point, ...) are passed on.
+        out.warnings.extend(warnings.iter().cloned());
+        let hint = warnings.first().map(|w| format!("{} (line {})", w.message, w.span.line));
         if let Some((relief, passes)) = req.pattern {
             let ops = pattern(req.start, &contour, req.allowance, relief, passes)
                 .map_err(|_| self.contour_alarm(Rule::ContourCommand, req.span, format!("{code}: the contour holds a move that is not a line or an arc")))?;
@@ -246,6 +268,16 @@ impl Interpreter {
         }
         let has = |letters: &[u8]| first.words.iter().any(|w| letters.contains(&w.letter));
         let type_two = has(b"XU") && has(b"ZW");
+        // Note 2: the ns move goes along the depth axis (X for G71, Z for G72).
+        let (level_axis, _) = req.kind.axes();
+        let ns_from = match ns_move {
+            Op::Rapid { from, .. } | Op::Feed { from, .. } => from,
+            _ => req.start,
+        };
+        if (ns_move.end_point().map(|p| p.axis(level_axis)).unwrap_or(0.0) - ns_from.axis(level_axis)).abs() < 1e-9 {
+            let axis = if level_axis == 0 { "X (U)" } else { "Z (W)" };
+            return Err(self.contour_alarm(Rule::ContourCommand, first.span, format!("{code}: the contour's first block N{} must move along {axis}, the axis {code} steps its depth on (help text note 2)", req.ns)));
+        }
         let r = Roughing { kind: req.kind, start: req.start, contour: &contour, allowance: req.allowance, depth_mm: req.depth_mm, back_off_mm: req.back_off_mm, ns_rapid };
         let ops = expand(&r, 100_000).map_err(|e| match e {
             RoughError::NotMonotonic(axis) if type_two && axis == req.kind.axes().0 => self.contour_alarm(
@@ -253,11 +285,17 @@ impl Interpreter {
                 req.span,
                 format!("{code}: the contour N{}..N{} has a pocket; type II roughing of pockets is given only in the help text's figures and is not simulated by ncsight yet", req.ns, req.nf),
             ),
-            RoughError::NotMonotonic(axis) => self.contour_alarm(
-                Rule::ContourNotMonotonic,
-                req.span,
-                format!("{code}: the contour N{}..N{} does not move one way only along {} (type I roughing needs that: help text note 3)", req.ns, req.nf, if axis == 0 { "X" } else { "Z" }),
-            ),
+            RoughError::NotMonotonic(axis) => {
+                let d = self.contour_alarm(
+                    Rule::ContourNotMonotonic,
+                    req.span,
+                    format!("{code}: the contour N{}..N{} does not move one way only along {} (type I roughing needs that: help text note 3)", req.ns, req.nf, if axis == 0 { "X" } else { "Z" }),
+                );
+                match &hint {
+                    Some(h) => d.with_hint(format!("the contour's blocks warned: {h}")),
+                    None => d,
+                }
+            }
             RoughError::TooMany => self.contour_alarm(Rule::MotionLimit, req.span, format!("{code}: more than 100000 roughing passes (Δd too small)")),
             RoughError::NotAPath => self.contour_alarm(Rule::ContourCommand, req.span, format!("{code}: the contour holds a move that is not a line or an arc")),
         })?;
@@ -318,7 +356,7 @@ impl Interpreter {
             return Err(self.contour_alarm(
                 Rule::ContourNotFound,
                 req.span,
-                format!("G70 P{} Q{}: no G71/G72 before it collected the blocks N{} to N{}", req.ns, req.nf, req.ns, req.nf),
+                format!("G70 P{} Q{}: no G71, G72 or G73 before it collected the blocks N{} to N{}", req.ns, req.nf, req.ns, req.nf),
             ));
         };
         self.replaying = true;
@@ -339,6 +377,10 @@ impl Interpreter {
         if from != req.start {
             self.state.pos = req.start;
             out.records.push(crate::motion::Record::new(req.span, Op::Rapid { from, to: req.start }));
+        }
+        // Single block stops after the whole G70.
+        if let Some(last) = out.records.last_mut() {
+            last.block_end = true;
         }
         Ok(())
     }
