@@ -37,21 +37,18 @@ impl BoxKind {
 }
 
 /// The four legs of one box, from the start `a` to the end point `c` with taper `taper_mm`
-/// (radius for G90), the cut (step 2) and the way back (step 3) fed at `feeds_mm_min`. Legs of
-/// zero length are left out.
-pub fn box_cycle(kind: BoxKind, a: Vec3, c: Vec3, taper_mm: f64, feeds_mm_min: [f64; 2]) -> Vec<Op> {
+/// (radius for G90); the cut (step 2) and the way back (step 3) are feeds that carry 0 (the
+/// interpreter sets each from F). Legs of zero length are left out.
+pub fn box_cycle(kind: BoxKind, a: Vec3, c: Vec3, taper_mm: f64) -> Vec<Op> {
     let s = kind.step_axis();
     let mut b = a;
     b.set_axis(s, c.axis(s) + taper_mm);
     let mut d = c;
     d.set_axis(s, a.axis(s));
-    let legs = [(a, b, None), (b, c, Some(feeds_mm_min[0])), (c, d, Some(feeds_mm_min[1])), (d, a, None)];
+    let legs = [(a, b, false), (b, c, true), (c, d, true), (d, a, false)];
     legs.into_iter()
         .filter(|(from, to, _)| from != to)
-        .map(|(from, to, feed)| match feed {
-            Some(feed_mm_min) => Op::Feed { from, to, feed_mm_min },
-            None => Op::Rapid { from, to },
-        })
+        .map(|(from, to, cut)| if cut { Op::Feed { from, to, feed_mm_min: 0.0 } } else { Op::Rapid { from, to } })
         .collect()
 }
 
@@ -71,16 +68,16 @@ mod tests {
         // Radius coordinates: from X25 Z2 to X20 Z-30.
         let a = Vec3::new(25.0, 0.0, 2.0);
         let c = Vec3::new(20.0, 0.0, -30.0);
-        assert_eq!(ends(&box_cycle(BoxKind::Turning, a, c, 0.0, [100.0; 2])), vec![(20.0, 2.0, false), (20.0, -30.0, true), (25.0, -30.0, true), (25.0, 2.0, false)]);
+        assert_eq!(ends(&box_cycle(BoxKind::Turning, a, c, 0.0)), vec![(20.0, 2.0, false), (20.0, -30.0, true), (25.0, -30.0, true), (25.0, 2.0, false)]);
         // the cut starts 2 mm (radius) below the end X.
-        assert_eq!(ends(&box_cycle(BoxKind::Turning, a, c, -2.0, [100.0; 2]))[0], (18.0, 2.0, false));
+        assert_eq!(ends(&box_cycle(BoxKind::Turning, a, c, -2.0))[0], (18.0, 2.0, false));
     }
 
     #[test]
     fn g94_face() {
         let a = Vec3::new(25.0, 0.0, 2.0);
         let c = Vec3::new(10.0, 0.0, -1.0);
-        assert_eq!(ends(&box_cycle(BoxKind::Facing, a, c, 0.0, [100.0; 2])), vec![(25.0, -1.0, false), (10.0, -1.0, true), (10.0, 2.0, true), (25.0, 2.0, false)]);
-        assert_eq!(ends(&box_cycle(BoxKind::Facing, a, c, -0.5, [100.0; 2]))[0], (25.0, -1.5, false));
+        assert_eq!(ends(&box_cycle(BoxKind::Facing, a, c, 0.0)), vec![(25.0, -1.0, false), (10.0, -1.0, true), (10.0, 2.0, true), (25.0, 2.0, false)]);
+        assert_eq!(ends(&box_cycle(BoxKind::Facing, a, c, -0.5))[0], (25.0, -1.5, false));
     }
 }

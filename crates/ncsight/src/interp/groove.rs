@@ -3,7 +3,7 @@
 
 use super::compound::increments;
 use super::words::Words;
-use super::{axis_target, lerp, Step};
+use super::{axis_target, Step};
 use crate::alarm::{Diagnostic, Rule};
 use crate::cycles::groove::{expand, Move, PeckCycle, PeckError, PeckKind};
 use crate::motion::Op;
@@ -66,12 +66,9 @@ pub(super) fn block(step: &mut Step, words: &mut Words, kind: PeckKind) -> Resul
         let from = step.st.pos;
         let op = match m {
             Move::Rapid(to) => Op::Rapid { from, to },
-            Move::Feed(to) => {
-                let feed_mm_min = step.cutting_feed(code, &|u| lerp(&from, &to, u))?;
-                Op::Feed { from, to, feed_mm_min }
-            }
+            Move::Feed(to) => Op::Feed { from, to, feed_mm_min: 0.0 },
         };
-        step.emit(op);
+        step.emit_cut(code, op)?;
     }
     Ok(())
 }

@@ -103,6 +103,27 @@ impl Step<'_> {
         self.out.records.push(Record::new(span, op));
     }
 
+    /// Emit a move a cycle laid out: a feed or an arc gets the feed in force for its points (F
+    /// per revolution under G99, at the speed of its points under G96); anything else as it is.
+    fn emit_cut(&mut self, what: &str, op: Op) -> Result<(), Diagnostic> {
+        let op = match op {
+            Op::Feed { from, to, .. } => {
+                let feed_mm_min = self.cutting_feed(what, &|u| lerp(&from, &to, u))?;
+                Op::Feed { from, to, feed_mm_min }
+            }
+            Op::Arc { from, to, center, plane, dir, .. } => {
+                let feed_mm_min = match crate::time::arc_geom_of(&op) {
+                    Some(g) => self.cutting_feed(what, &|u| geom::arc_point(&from, &to, plane, dir, &g, u))?,
+                    None => self.cutting_feed(what, &|u| lerp(&from, &to, u))?,
+                };
+                Op::Arc { from, to, center, plane, dir, feed_mm_min }
+            }
+            other => other,
+        };
+        self.emit(op);
+        Ok(())
+    }
+
     /// The records emitted since `from` (an index into this block's records).
     fn records_since(&mut self, from: usize) -> &mut [Record] {
         &mut self.out.records[from..]

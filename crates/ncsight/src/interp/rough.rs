@@ -7,11 +7,11 @@
 //! and T count there) and returns to its start point.
 
 use super::words::Words;
-use super::Step;
+use super::{run_block, Interpreter, Outcome, Step};
 use crate::alarm::{Diagnostic, Rule};
-use crate::cycles::rough::RoughKind;
-use crate::motion::Vec3;
-use crate::read::Word;
+use crate::cycles::rough::{expand, pattern, RoughError, RoughKind, Roughing};
+use crate::motion::{Op, Vec3};
+use crate::read::{Block, Word};
 use crate::source::Span;
 
 /// What a second G71/G72 block asks the interpreter to do with the blocks that follow.
@@ -135,11 +135,6 @@ pub(super) fn finishing(step: &mut Step, words: &mut Words) -> Result<(), Diagno
     step.st.finish_request = Some(FinishRequest { span: step.span, ns, nf, start: step.st.pos });
     Ok(())
 }
-
-use super::{lerp, run_block, Interpreter, Outcome};
-use crate::cycles::rough::{expand, pattern, RoughError, Roughing};
-use crate::motion::Op;
-use crate::read::Block;
 
 /// At most this many blocks in one contour (help text G71 note 5).
 const MAX_CONTOUR_BLOCKS: usize = 100;
@@ -315,27 +310,7 @@ impl Interpreter {
         if let Some((span, msg)) = note {
             step.warn(Rule::NotSimulated, span, msg);
         }
-        let mut result = Ok(());
-        for op in ops {
-            let op = match op {
-                Op::Feed { from, to, .. } => match step.cutting_feed(code, &|u| lerp(&from, &to, u)) {
-                    Ok(f) => Op::Feed { from, to, feed_mm_min: f },
-                    Err(d) => {
-                        result = Err(d);
-                        break;
-                    }
-                },
-                Op::Arc { from, to, center, plane, dir, .. } => match step.cutting_feed(code, &|u| lerp(&from, &to, u)) {
-                    Ok(f) => Op::Arc { from, to, center, plane, dir, feed_mm_min: f },
-                    Err(d) => {
-                        result = Err(d);
-                        break;
-                    }
-                },
-                other => other,
-            };
-            step.emit(op);
-        }
+        let result = ops.into_iter().try_for_each(|op| step.emit_cut(code, op));
         if let Err(d) = result {
             out.clear();
             self.state = before;

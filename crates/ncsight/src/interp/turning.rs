@@ -2,11 +2,10 @@
 //! the blocks that repeat the cycle, and emit the box of `cycles::turning`.
 
 use super::words::Words;
-use super::{axis_target, lerp, Step};
+use super::{axis_target, Step};
 use crate::alarm::{Diagnostic, Rule};
 use crate::cycles::turning::{box_cycle, BoxKind};
 use crate::modal::BoxMemory;
-use crate::motion::Op;
 
 /// One G90 or G94 block, naming the code or repeating the cycle in force.
 pub(super) fn block(step: &mut Step, words: &mut Words, kind: BoxKind) -> Result<(), Diagnostic> {
@@ -49,18 +48,9 @@ pub(super) fn block(step: &mut Step, words: &mut Words, kind: BoxKind) -> Result
     if c == a && taper_mm == 0.0 {
         return Ok(());
     }
-    // Steps 2 and 3 are cutting feeds (per revolution under G99, at the speed of the point
-    // under G96): the feed of each leg comes from the legs `box_cycle` lays out.
-    let legs = box_cycle(kind, a, c, taper_mm, [0.0; 2]);
-    for op in legs {
-        let op = match op {
-            Op::Feed { from, to, .. } => {
-                let feed_mm_min = step.cutting_feed(name, &|u| lerp(&from, &to, u))?;
-                Op::Feed { from, to, feed_mm_min }
-            }
-            other => other,
-        };
-        step.emit(op);
+    // Steps 2 and 3 are cutting feeds at the F in force.
+    for op in box_cycle(kind, a, c, taper_mm) {
+        step.emit_cut(name, op)?;
     }
     Ok(())
 }
