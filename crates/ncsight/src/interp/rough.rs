@@ -98,18 +98,19 @@ pub(super) fn block(step: &mut Step, words: &mut Words, kind: RoughKind) -> Resu
         return Ok(());
     }
     let (ns, nf) = p_and_q(step, words, code)?;
-    let pattern = if kind == RoughKind::Pattern {
+    // G73 takes its relief and passes from its first block; G71/G72 their depth of cut and
+    // back-off (G73 has neither: 0).
+    let (depth_mm, back_off_mm, pattern) = if kind == RoughKind::Pattern {
         let Some((di, dk, d)) = step.st.pattern_data else {
             return Err(step.alarm(Rule::MissingWord, step.span, format!("G73 P{ns} Q{nf} needs its first block G73 U(Δi) W(Δk) R(d) before it")));
         };
-        Some((Vec3::new(di, 0.0, dk), d))
+        (0.0, 0.0, Some((Vec3::new(di, 0.0, dk), d)))
     } else {
-        None
-    };
-    let data = if pattern.is_some() { Some((1.0, 0.0)) } else { step.st.rough_data[slot] };
-    let Some((depth_mm, back_off_mm)) = data.filter(|d| d.0 > 0.0) else {
-        let letter = if kind == RoughKind::Turning { 'U' } else { 'W' };
-        return Err(step.alarm(Rule::MissingWord, step.span, format!("{code} P{ns} Q{nf} needs the depth of cut first: a block {code} {letter}(Δd) R(e) before it")));
+        let Some((depth_mm, back_off_mm)) = step.st.rough_data[slot].filter(|d| d.0 > 0.0) else {
+            let letter = if kind == RoughKind::Turning { 'U' } else { 'W' };
+            return Err(step.alarm(Rule::MissingWord, step.span, format!("{code} P{ns} Q{nf} needs the depth of cut first: a block {code} {letter}(Δd) R(e) before it")));
+        };
+        (depth_mm, back_off_mm, None)
     };
     let mut allowance = Vec3::default();
     if let Some(w) = words.take(b'U') {
