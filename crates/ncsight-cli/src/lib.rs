@@ -2,6 +2,7 @@
 //! formats and diagnostics. `main.rs` only calls [`main_with`].
 
 pub mod diag;
+mod feed;
 pub mod format;
 pub mod report;
 pub mod simulate;
@@ -289,7 +290,7 @@ fn setup(m: &MachineArgs, err: &mut dyn Write) -> Result<(Params, Switches), Fai
     Ok((params, Switches { block_delete: m.block_delete, optional_stop: m.optional_stop, repair_position }))
 }
 
-fn open(file: &str) -> Result<Box<dyn BufRead>, Failure> {
+fn open(file: &str) -> Result<Box<dyn BufRead + Send>, Failure> {
     if file == "-" {
         return Ok(Box::new(BufReader::new(io::stdin())));
     }
@@ -299,65 +300,6 @@ fn open(file: &str) -> Result<Box<dyn BufRead>, Failure> {
 
 /// Output buffer: large writes, few system calls.
 const OUTPUT_BUFFER_BYTES: usize = 256 * 1024;
-
-/// Longest line kept; the rest of a longer line is skipped, so memory stays bounded (the
-/// reader still sees the line as too long).
-const MAX_KEPT_LINE_BYTES: usize = 64 * 1024;
-
-/// Feed a reader line by line into a programme; `on_event` gets each event with its line text.
-/// Lines are read in place in the reader's buffer; one is copied only when it straddles two reads.
-fn drive(
-    input: &mut dyn BufRead,
-    program: &mut Program,
-    on_event: &mut dyn FnMut(&Event, &[u8]) -> io::Result<()>,
-) -> Result<(), Failure> {
-    let mut pending: io::Result<()> = Ok(());
-    let mut feed = |program: &mut Program, text: &[u8], pending: &mut io::Result<()>| {
-        program.feed_line(text, &mut |e| {
-            if pending.is_ok() {
-                *pending = on_event(&e, text);
-            }
-        });
-    };
-    let mut partial = Vec::new();
-    let mut skipping = false;
-    while program.wants_more() {
-        let buf = input.fill_buf()?;
-        if buf.is_empty() {
-            if !partial.is_empty() && !skipping {
-                feed(program, &partial, &mut pending);
-            }
-            break;
-        }
-        let (piece, complete) = match buf.iter().position(|&b| b == b'\n') {
-            Some(k) => (&buf[..=k], true),
-            None => (buf, false),
-        };
-        let used = piece.len();
-        if complete && partial.is_empty() && !skipping {
-            feed(program, piece, &mut pending);
-        } else if !skipping {
-            let room = MAX_KEPT_LINE_BYTES - partial.len();
-            partial.extend_from_slice(&piece[..used.min(room)]);
-            if complete || partial.len() == MAX_KEPT_LINE_BYTES {
-                feed(program, &partial, &mut pending);
-                partial.clear();
-                skipping = !complete;
-            }
-        } else if complete {
-            skipping = false;
-        }
-        input.consume(used);
-        pending.as_ref().map_err(|e| io::Error::new(e.kind(), e.to_string()))?;
-    }
-    program.finish(&mut |e| {
-        if pending.is_ok() {
-            pending = on_event(&e, b"");
-        }
-    });
-    pending?;
-    Ok(())
-}
 
 fn run(
     file: &str,
@@ -372,7 +314,7 @@ fn run(
     let operator = operator.options()?;
     let profile = params.profile();
     let mut fmt = format::by_name(format, profile).ok_or_else(|| usage(format!("unknown format '{format}': choose text, jsonl or canon")))?;
-    let mut input = open(file)?;
+    let input = open(file)?;
     let mut file_out;
     let mut stdout_buf;
     let writer: &mut dyn Write = match output {
@@ -389,7 +331,7 @@ fn run(
     let mut program = Program::with_operator(params, switches, Mode::Run, operator);
     let carries = fmt.carries_diagnostics();
     let shown = if file == "-" { "<stdin>" } else { file };
-    drive(&mut *input, &mut program, &mut |e, text| {
+    feed::drive(input, &mut program, &mut |e, text| {
         if let Event::Diagnostic(d) = e {
             if !carries || d.severity() == Severity::Alarm {
                 err.write_all(diag::render(shown, text, d).as_bytes())?;
@@ -409,11 +351,11 @@ fn check(files: &[String], m: &MachineArgs, out: &mut dyn Write, err: &mut dyn W
     let mut any_alarm = false;
     let mut w = io::BufWriter::new(out);
     for file in files {
-        let mut input = open(file)?;
+        let input = open(file)?;
         let mut program = Program::diagnostics_only(params.clone(), switches);
         let (mut alarms, mut warnings) = (0usize, 0usize);
         let shown = if file == "-" { "<stdin>" } else { file.as_str() };
-        drive(&mut *input, &mut program, &mut |e, text| {
+        feed::drive(input, &mut program, &mut |e, text| {
             if let Event::Diagnostic(d) = e {
                 if d.is_alarm() { alarms += 1 } else { warnings += 1 }
                 w.write_all(diag::render(shown, text, d).as_bytes())?;
@@ -486,7 +428,7 @@ fn report(
     settings.push("assumptions: docs/guide.md and docs/commands/*.md".into());
     let mut program = Program::with_operator(params.clone(), switches, Mode::Run, opts);
     let (mut records, mut diags) = (Vec::new(), Vec::new());
-    drive(&mut &source[..], &mut program, &mut |e, _| {
+    feed::drive(Box::new(io::Cursor::new(source.clone())), &mut program, &mut |e, _| {
         match e {
             Event::Record(r) => records.push(r.clone()),
             Event::Diagnostic(d) => diags.push(d.clone()),
@@ -530,12 +472,12 @@ fn simulate(
     let (params, switches) = setup(m, err)?;
     let job = job_setup(setup_file, stock)?;
     let opts = simulate::options(resolution, expect).map_err(usage)?;
-    let mut input = open(file)?;
+    let input = open(file)?;
     let lathe = params.profile().is_lathe();
     let mut program = Program::new(params, switches, Mode::Run);
     let shown = if file == "-" { "<stdin>" } else { file };
     let mut records = Vec::new();
-    drive(&mut *input, &mut program, &mut |e, text| {
+    feed::drive(input, &mut program, &mut |e, text| {
         match e {
             Event::Record(r) => records.push(r.clone()),
             Event::Diagnostic(d) if d.is_alarm() => err.write_all(diag::render(shown, text, d).as_bytes())?,

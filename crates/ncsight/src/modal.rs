@@ -103,16 +103,18 @@ pub struct ThreadState {
     pub taper_mm: f64,
     /// S of a rigid thread command, signed (seed 001: the sign selects the direction).
     pub rigid_rpm: Option<f64>,
-    pub pending: Option<PendingThread>,
+    /// Boxed, as are the other large rarely-set parts: the modal state is copied for every block
+    /// (atomic blocks), so it is kept small.
+    pub pending: Option<Box<PendingThread>>,
     pub memory: Option<PassMemory>,
     /// Four-step cycles started so far (each start of each block), to tell them apart.
     pub cycles: u32,
     /// G92 P1 / G92.1 P1 repair in force (P1 in the first block is enough: help note 4).
     pub repair: bool,
     /// G76 data set by its first block for the rest of the run (it rewrites the parameters).
-    pub g76: Option<G76Data>,
+    pub g76: Option<Box<G76Data>>,
     /// G78 data set by its first block (GSK980TDi), kept apart from G76's.
-    pub g78: Option<G78Data>,
+    pub g78: Option<Box<G78Data>>,
 }
 
 /// Hole data that stays from block to block while a drilling cycle is in force (seed 003): the
@@ -147,7 +149,7 @@ pub struct Modal {
     /// G73 relief Δi (radius), Δk and number of passes d from its first block.
     pub pattern_data: Option<(f64, f64, u32)>,
     /// Set by a second G71/G72 block: collect the contour blocks that follow.
-    pub rough_request: Option<crate::interp::RoughRequest>,
+    pub rough_request: Option<Box<crate::interp::RoughRequest>>,
     /// Set by G70: run a stored contour.
     pub finish_request: Option<crate::interp::FinishRequest>,
     /// G74 / G75 back-off e set by a first block (one value for both, as the parameter).

@@ -8,6 +8,7 @@
 //!   it was) and reading goes on; blocks after the programme end are still read for their syntax.
 
 use crate::alarm::{Diagnostic, Rule};
+use crate::dialect::Foreign;
 use crate::interp::{Interpreter, Outcome, Switches};
 use crate::machine::{Machine, Options};
 use crate::motion::Record;
@@ -59,8 +60,44 @@ struct Core {
     alarms: usize,
     /// Span of the last block read (for the end-of-input warning).
     last_span: Span,
-    line: Line,
+    read: ReadLine,
     outcome: Outcome,
+}
+
+/// One line read ahead of its interpretation: the reader's blocks and the look for another
+/// control's language. Reading needs nothing of the modal state, so a caller may read lines on
+/// another thread while the programme interprets earlier ones (the command line does).
+#[derive(Debug, Default)]
+pub struct ReadLine {
+    line_no: u32,
+    line: Line,
+    foreign: Option<Foreign>,
+    /// The line's length in bytes (for the span of a foreign-language answer).
+    len: usize,
+}
+
+/// Reads lines into [`ReadLine`]s for a [`Program`]; cheap to clone and to send to a thread.
+#[derive(Debug, Clone)]
+pub struct LineReader {
+    reader: Reader,
+}
+
+impl LineReader {
+    /// Read line `line_no` (1-based, with or without its line break) into `out`, reusing its
+    /// allocations.
+    pub fn read(&self, line_no: u32, raw: &[u8], out: &mut ReadLine) {
+        out.line_no = line_no;
+        out.len = raw.len();
+        // Another control's programme gets one answer, not a cascade of alarms (issue 10). Its
+        // signs come early or carry `$ @ = <`; only such lines are looked at.
+        out.foreign = None;
+        if line_no <= 100 || raw.iter().any(|b| matches!(b, b'$' | b'@' | b'=' | b'<')) {
+            out.foreign = crate::dialect::sniff(raw);
+        }
+        if out.foreign.is_none() {
+            self.reader.read_line_into(line_no, raw, &mut out.line);
+        }
+    }
 }
 
 impl Program {
@@ -84,7 +121,7 @@ impl Program {
                 warned_after_end: false,
                 alarms: 0,
                 last_span: Span::new(1, 1, 1),
-                line: Line::default(),
+                read: ReadLine::default(),
                 outcome: Outcome::default(),
             },
         }
@@ -95,6 +132,7 @@ impl Program {
     pub fn diagnostics_only(params: Params, switches: Switches) -> Program {
         let mut p = Program::new(params, switches, Mode::Check);
         p.core.records = false;
+        p.core.outcome.discard_records = true;
         p
     }
 
@@ -124,15 +162,34 @@ impl Program {
 
     /// Feed the next line (with or without its line break).
     pub fn feed_line(&mut self, raw: &[u8], sink: &mut dyn FnMut(Event)) {
-        self.core.line_no += 1;
+        if !self.wants_more() {
+            self.core.line_no += 1;
+            return;
+        }
+        let mut read = std::mem::take(&mut self.core.read);
+        self.line_reader().read(self.core.line_no + 1, raw, &mut read);
+        self.feed_read(&mut read, sink);
+        self.core.read = read;
+    }
+
+    /// A reader for the lines of this programme (see [`ReadLine`]).
+    pub fn line_reader(&self) -> LineReader {
+        LineReader { reader: self.core.reader.clone() }
+    }
+
+    /// Feed the next line, read ahead by [`LineReader::read`]; lines must come in order, each
+    /// once. The [`ReadLine`] may be reused for a later line.
+    pub fn feed_read(&mut self, read: &mut ReadLine, sink: &mut dyn FnMut(Event)) {
+        debug_assert_eq!(read.line_no, self.core.line_no + 1, "lines fed out of order");
+        self.core.line_no = read.line_no;
         if !self.wants_more() {
             return;
         }
         let Program { core, machine } = self;
         if core.records {
-            core.interpret_line(raw, &mut |e| machine.push(e, sink));
+            core.interpret_read(read, &mut |e| machine.push(e, sink));
         } else {
-            core.interpret_line(raw, sink);
+            core.interpret_read(read, sink);
         }
     }
 
@@ -173,31 +230,24 @@ impl Program {
 }
 
 impl Core {
-    /// Read and interpret one line; the events are untimed.
-    fn interpret_line(&mut self, raw: &[u8], sink: &mut dyn FnMut(Event)) {
-        // Another control's programme gets one answer, not a cascade of alarms (issue 10). Its
-        // signs come early or carry `$ @ = <`; only such lines are looked at.
-        if self.line_no <= 100 || raw.iter().any(|b| matches!(b, b'$' | b'@' | b'=' | b'<')) {
-            if let Some(f) = crate::dialect::sniff(raw) {
-                let profile = self.interp.profile();
-                let d = Diagnostic::new(
-                    Rule::ForeignDialect,
-                    profile.alarm_style,
-                    Span::new(self.line_no, 1, raw.len().clamp(1, 80) as u32),
-                    format!("this looks like {}, not a programme for {} ({}): its words mean other things there, so ncsight stops here", f.name(), profile.name, profile.title),
-                )
-                .with_hint("run it on the profile of the control it was written for");
-                self.alarm(d, sink);
-                // Both modes stop: reading on would only repeat the same answer.
-                self.status = Status::Alarm;
-                self.eof = true;
-                return;
-            }
+    /// Interpret one line read ahead; the events are untimed.
+    fn interpret_read(&mut self, read: &mut ReadLine, sink: &mut dyn FnMut(Event)) {
+        if let Some(f) = read.foreign {
+            let profile = self.interp.profile();
+            let d = Diagnostic::new(
+                Rule::ForeignDialect,
+                profile.alarm_style,
+                Span::new(self.line_no, 1, read.len.clamp(1, 80) as u32),
+                format!("this looks like {}, not a programme for {} ({}): its words mean other things there, so ncsight stops here", f.name(), profile.name, profile.title),
+            )
+            .with_hint("run it on the profile of the control it was written for");
+            self.alarm(d, sink);
+            // Both modes stop: reading on would only repeat the same answer.
+            self.status = Status::Alarm;
+            self.eof = true;
+            return;
         }
-        let mut line = std::mem::take(&mut self.line);
-        self.reader.read_line_into(self.line_no, raw, &mut line);
-        self.interpret_blocks(&mut line, sink);
-        self.line = line;
+        self.interpret_blocks(&mut read.line, sink);
     }
 
     fn interpret_blocks(&mut self, line: &mut Line, sink: &mut dyn FnMut(Event)) {

@@ -33,6 +33,9 @@ pub const ARC_TOLERANCE_MM: f64 = 0.01;
 pub struct Outcome {
     pub records: Vec<Record>,
     pub warnings: Vec<Diagnostic>,
+    /// Records are not kept (a check that wants only the diagnostics): the blocks still move the
+    /// tool in the modal state, so every rule is checked as in a run.
+    pub discard_records: bool,
 }
 
 impl Outcome {
@@ -100,7 +103,9 @@ impl Step<'_> {
         if let Some(p) = op.end_point() {
             self.st.pos = p;
         }
-        self.out.records.push(Record::new(span, op));
+        if !self.out.discard_records {
+            self.out.records.push(Record::new(span, op));
+        }
     }
 
     /// Emit a move a cycle laid out: a feed or an arc gets the feed in force for its points (F
@@ -254,7 +259,7 @@ impl Interpreter {
         let repair = self.switches.repair_position;
         let mut step = Step { profile: self.profile, params: &self.params, repair, span: Span::default(), st: &mut self.state, out };
         if let Some(p) = step.st.thread.pending.take() {
-            thread::flush(&mut step, p, true);
+            thread::flush(&mut step, *p, true);
         }
     }
 
@@ -294,7 +299,7 @@ impl Interpreter {
                 out.clear();
                 return Err(self.contour_alarm(Rule::ContourCommand, block.span, format!("{} cannot run inside the contour that G70 is finishing", req.kind.code())));
             }
-            self.collecting = Some((req, Vec::new()));
+            self.collecting = Some((*req, Vec::new()));
         }
         if let Some(req) = self.state.finish_request.take() {
             if let Err(d) = self.finish_contour(req, out) {
@@ -493,7 +498,7 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
         if goes_on {
             run_deg = Some(p.end_deg);
         }
-        thread::flush(step, p, !goes_on);
+        thread::flush(step, *p, !goes_on);
     }
     let rigid_thread = matches!(motion_now, Motion::Thread(cmd) if thread::is_rigid(cmd));
 
@@ -652,7 +657,7 @@ fn finish_block(step: &mut Step, words: Words, codes: &Codes, after: Vec<(&Word,
     // A stop or an end after a held-back thread run end: the run ends first.
     if !after.is_empty() {
         if let Some(p) = step.st.thread.pending.take() {
-            thread::flush(step, p, true);
+            thread::flush(step, *p, true);
         }
     }
     for (w, f) in after {

@@ -126,7 +126,7 @@ pub(super) fn block(step: &mut Step, words: &mut Words, kind: RoughKind) -> Resu
             step.warn(Rule::NotSimulated, w.span, msg);
         }
     }
-    step.st.rough_request = Some(RoughRequest { kind, span: step.span, ns, nf, allowance, depth_mm, back_off_mm, pattern, start: step.st.pos });
+    step.st.rough_request = Some(Box::new(RoughRequest { kind, span: step.span, ns, nf, allowance, depth_mm, back_off_mm, pattern, start: step.st.pos }));
     Ok(())
 }
 

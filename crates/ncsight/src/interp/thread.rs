@@ -368,7 +368,7 @@ fn straight(step: &mut Step, words: &mut Words, cmd: ThreadCmd, run_deg: Option<
     let ends_run = rigid && (j_given || k_given) && (j.unwrap_or(0.0) != 0.0 || k.unwrap_or(0.0) != 0.0);
     let end_deg = phase_after(start_deg, length, lead);
     step.st.pos = target;
-    step.st.thread.pending = Some(PendingThread { span: step.span, body: PendingBody::Straight(pass), ends_run, rigid, end_deg });
+    step.st.thread.pending = Some(Box::new(PendingThread { span: step.span, body: PendingBody::Straight(pass), ends_run, rigid, end_deg }));
     Ok(())
 }
 
@@ -417,13 +417,13 @@ fn arc(step: &mut Step, words: &mut Words, dir: ArcDir, run_deg: Option<f64>) ->
     let long_travel = (to.axis(i) - from.axis(i)).abs();
     let op = Op::ThreadArc { from, to, center: g.center, plane, dir, lead_mm: lead, long_axis, spindle_deg: wrap_deg(start_deg), rpm };
     step.st.pos = to;
-    step.st.thread.pending = Some(PendingThread {
+    step.st.thread.pending = Some(Box::new(PendingThread {
         span: step.span,
         body: PendingBody::Arc(op),
         ends_run: false,
         rigid: false,
         end_deg: phase_after(start_deg, long_travel, lead),
-    });
+    }));
     Ok(())
 }
 
@@ -634,10 +634,11 @@ fn cycle(step: &mut Step, words: &mut Words, kind: CycleKind, explicit: bool) ->
         let first = step.out.records.len();
         step.emit(op);
         let id = step.st.thread.cycles;
-        let r = &mut step.records_since(first)[0];
-        r.cycle = Some(id);
-        if is_thread {
-            r.hold = hold;
+        if let Some(r) = step.records_since(first).first_mut() {
+            r.cycle = Some(id);
+            if is_thread {
+                r.hold = hold;
+            }
         }
     }
     step.st.thread.cycle_end = Some(c);

@@ -58,6 +58,9 @@ impl<'w> Words<'w> {
     /// The first word, in the order written, that no command took.
     pub fn first_unused(&self) -> Option<&'w Word> {
         let unused = self.present & !self.used;
+        if unused == 0 {
+            return None;
+        }
         (0..26).filter(|i| unused & (1 << i) != 0).filter_map(|i| self.slot(i)).min_by_key(|w| w.span.col)
     }
 }

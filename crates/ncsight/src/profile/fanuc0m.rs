@@ -127,7 +127,7 @@ pub static PROFILE: Profile = Profile {
     group00_with_01_alarm: false,
     axes: "XYZ",
     reference_point_mm: crate::motion::Vec3::new(0.0, 0.0, 0.0),
-    addresses: "GMSTFXYZIJKRPQLHDN",
+    addresses: super::Letters::new("GMSTFXYZIJKRPQLHDN"),
     peck_back_off: None,
     g_codes: &[common::G_CODES, G_CODES],
     m_codes: &[common::M_CODES, M_CODES],

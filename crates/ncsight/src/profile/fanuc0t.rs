@@ -97,7 +97,7 @@ pub static PROFILE: Profile = Profile {
     group00_with_01_alarm: false,
     axes: "XZ",
     reference_point_mm: crate::motion::Vec3::new(100.0, 0.0, 200.0),
-    addresses: "GMSTFXZUWRIKPQLN",
+    addresses: super::Letters::new("GMSTFXZUWRIKPQLN"),
     peck_back_off: Some(ParamKey::Number(5139, None)),
     g_codes: &[common::G_CODES, lathe_a::G_CODES, EXTRA],
     m_codes: &[common::M_CODES, lathe_a::M_CODES],

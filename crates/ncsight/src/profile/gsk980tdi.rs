@@ -151,7 +151,7 @@ pub static PROFILE: Profile = Profile {
     group00_with_01_alarm: true,
     axes: "XZ",
     reference_point_mm: crate::motion::Vec3::new(100.0, 0.0, 200.0),
-    addresses: "GMSTFXZUWRIJKPQLNDE",
+    addresses: super::Letters::new("GMSTFXZUWRIJKPQLNDE"),
     peck_back_off: Some(ParamKey::Number(56, None)),
     g_codes: &[common::G_CODES, lathe_a::G_CODES, EXTRA],
     m_codes: &[common::M_CODES, lathe_a::M_CODES, lathe_a::GSK_M_CODES],

@@ -395,7 +395,7 @@ pub struct Profile {
     /// simulation has no machine coordinates, so this is a documented assumption per profile.
     pub reference_point_mm: crate::motion::Vec3,
     /// Addresses the controller reads at all (anything else is IMPROPER NC-ADDRESS).
-    pub addresses: &'static str,
+    pub addresses: Letters,
     /// The parameter with the power-on back-off e of the lathe peck cycles G74/G75 (one value
     /// for both; their first block rewrites it), if the profile knows it.
     pub peck_back_off: Option<ParamKey>,
@@ -448,11 +448,39 @@ impl Profile {
     }
 
     pub fn takes_address(&self, letter: u8) -> bool {
-        self.addresses.as_bytes().contains(&letter)
+        self.addresses.contains(letter)
     }
 
     pub fn is_lathe(&self) -> bool {
         self.kind == MachineKind::Lathe
+    }
+}
+
+/// A set of address letters A-Z, looked up once per word of every block.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Letters(u32);
+
+impl Letters {
+    /// The letters of `s` (upper-case A-Z; anything else is a mistake in a profile table).
+    pub const fn new(s: &str) -> Letters {
+        let b = s.as_bytes();
+        let mut mask = 0u32;
+        let mut i = 0;
+        while i < b.len() {
+            assert!(b[i].is_ascii_uppercase(), "address letters are A-Z");
+            mask |= 1 << (b[i] - b'A');
+            i += 1;
+        }
+        Letters(mask)
+    }
+
+    pub fn contains(self, letter: u8) -> bool {
+        letter.is_ascii_uppercase() && self.0 & (1 << (letter - b'A')) != 0
+    }
+
+    /// The letters in alphabetical order.
+    pub fn iter(self) -> impl Iterator<Item = char> {
+        (b'A'..=b'Z').filter(move |&c| self.contains(c)).map(char::from)
     }
 }
 

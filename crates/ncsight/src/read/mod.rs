@@ -120,6 +120,7 @@ impl Line {
 }
 
 /// Reads lines. Holds only what a line needs.
+#[derive(Debug, Clone)]
 pub struct Reader {
     style: AlarmStyle,
 }

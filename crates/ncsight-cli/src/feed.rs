@@ -1,0 +1,279 @@
+//! Feeding a programme from a byte stream (issue 9): one thread reads the input and turns its
+//! lines into blocks while the calling thread interprets the lines read before, so reading and
+//! interpreting share the two cores a small machine has. Memory stays bounded: a few batches of
+//! at most `BATCH_BYTES` (plus one kept line) are in flight, and their buffers are reused.
+
+use ncsight::{Event, LineReader, Program, ReadLine};
+use std::io::{self, BufRead};
+use std::ops::Range;
+use std::sync::mpsc;
+
+/// Longest line kept; the rest of a longer line is skipped, so memory stays bounded (the
+/// reader still sees the line as too long).
+pub const MAX_KEPT_LINE_BYTES: usize = 64 * 1024;
+
+/// A batch is handed over once it holds this much text or `BATCH_LINES` lines.
+const BATCH_BYTES: usize = 64 * 1024;
+const BATCH_LINES: usize = 2048;
+
+/// Batches read but not yet interpreted, at most.
+const BATCHES_IN_FLIGHT: usize = 4;
+
+/// Lines on their way from the reading thread to the interpreting one: their text (for the
+/// diagnostics) and what the reader made of them.
+#[derive(Default)]
+struct Batch {
+    text: Vec<u8>,
+    lines: Vec<(Range<usize>, ReadLine)>,
+    used: usize,
+}
+
+impl Batch {
+    fn clear(&mut self) {
+        self.text.clear();
+        self.used = 0;
+    }
+
+    fn is_full(&self) -> bool {
+        self.text.len() >= BATCH_BYTES || self.used >= BATCH_LINES
+    }
+
+    /// Read the text from `start` to the end as line `line_no`.
+    fn read_line(&mut self, reader: &LineReader, line_no: u32, start: usize) {
+        if self.used == self.lines.len() {
+            self.lines.push(Default::default());
+        }
+        let (range, read) = &mut self.lines[self.used];
+        *range = start..self.text.len();
+        reader.read(line_no, &self.text[range.clone()], read);
+        self.used += 1;
+    }
+}
+
+/// Feed `input` line by line into `program`; `on_event` gets each event with its line's text.
+/// Stops reading when the programme wants no more (an alarm in a run, the end of the text).
+pub fn drive(
+    input: Box<dyn BufRead + Send>,
+    program: &mut Program,
+    on_event: &mut dyn FnMut(&Event, &[u8]) -> io::Result<()>,
+) -> io::Result<()> {
+    let reader = program.line_reader();
+    let (full_tx, full_rx) = mpsc::sync_channel::<io::Result<Batch>>(BATCHES_IN_FLIGHT);
+    let (empty_tx, empty_rx) = mpsc::channel::<Batch>();
+    let reading = std::thread::Builder::new()
+        .name("ncsight-read".into())
+        .spawn(move || read_ahead(input, &reader, &full_tx, &empty_rx))?;
+    let mut pending: io::Result<()> = Ok(());
+    let mut stopped = false;
+    'batches: for batch in full_rx.iter() {
+        let mut batch = batch?;
+        let Batch { text, lines, used } = &mut batch;
+        for (range, read) in &mut lines[..*used] {
+            if !program.wants_more() {
+                stopped = true;
+                break 'batches;
+            }
+            let line = &text[range.clone()];
+            program.feed_read(read, &mut |e| {
+                if pending.is_ok() {
+                    pending = on_event(&e, line);
+                }
+            });
+            pending.as_ref().map_err(|e| io::Error::new(e.kind(), e.to_string()))?;
+        }
+        batch.clear();
+        // The reader may have ended already; then the batch is simply dropped.
+        let _ = empty_tx.send(batch);
+        if !program.wants_more() {
+            stopped = true;
+            break;
+        }
+    }
+    drop(full_rx);
+    if !stopped {
+        // The reader sent its last batch and returned; a panic there is a bug to pass on.
+        if let Err(p) = reading.join() {
+            std::panic::resume_unwind(p);
+        }
+    }
+    // Otherwise the reader ends at its next send (the channel is closed); it is not waited for,
+    // as it may be waiting for input that never comes (a terminal, a pipe left open).
+    program.finish(&mut |e| {
+        if pending.is_ok() {
+            pending = on_event(&e, b"");
+        }
+    });
+    pending
+}
+
+/// The reading thread: lines into batches, until the input ends or nobody listens.
+fn read_ahead(
+    mut input: Box<dyn BufRead + Send>,
+    reader: &LineReader,
+    full: &mpsc::SyncSender<io::Result<Batch>>,
+    empty: &mpsc::Receiver<Batch>,
+) {
+    let mut batch = Batch::default();
+    let mut line_no = 0u32;
+    // Where the line being gathered starts in the batch text; the rest of an over-long line is
+    // being skipped.
+    let mut start = 0usize;
+    let mut skipping = false;
+    loop {
+        let buf = match input.fill_buf() {
+            Ok(b) => b,
+            Err(e) if e.kind() == io::ErrorKind::Interrupted => continue,
+            Err(e) => {
+                let _ = full.send(Err(e));
+                return;
+            }
+        };
+        if buf.is_empty() {
+            if batch.text.len() > start && !skipping {
+                line_no = line_no.wrapping_add(1);
+                batch.read_line(reader, line_no, start);
+            }
+            if batch.used > 0 {
+                let _ = full.send(Ok(batch));
+            }
+            return;
+        }
+        let (piece, complete) = match buf.iter().position(|&b| b == b'\n') {
+            Some(k) => (&buf[..=k], true),
+            None => (buf, false),
+        };
+        let used = piece.len();
+        // The buffer is used up: the next read may wait (a terminal, a pipe), so the lines
+        // read so far go now.
+        let drained = used == buf.len();
+        if !skipping {
+            let room = MAX_KEPT_LINE_BYTES - (batch.text.len() - start);
+            batch.text.extend_from_slice(&piece[..used.min(room)]);
+            if complete || batch.text.len() - start == MAX_KEPT_LINE_BYTES {
+                line_no = line_no.wrapping_add(1);
+                batch.read_line(reader, line_no, start);
+                skipping = !complete;
+                start = batch.text.len();
+            }
+        } else if complete {
+            skipping = false;
+        }
+        input.consume(used);
+        let between_lines = start == batch.text.len();
+        if between_lines && (batch.is_full() || drained && batch.used > 0) {
+            let mut next = empty.try_recv().unwrap_or_default();
+            next.clear();
+            if full.send(Ok(std::mem::replace(&mut batch, next))).is_err() {
+                return;
+            }
+            start = 0;
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use ncsight::profile::{self, Params};
+    use ncsight::{Mode, Switches};
+
+    fn program(mode: Mode) -> Program {
+        Program::new(Params::defaults(profile::by_name("fanuc0m").unwrap()), Switches::default(), mode)
+    }
+
+    fn events_of(input: Box<dyn BufRead + Send>, mode: Mode) -> (Vec<Event>, Vec<Vec<u8>>) {
+        let mut p = program(mode);
+        let (mut events, mut texts) = (Vec::new(), Vec::new());
+        drive(input, &mut p, &mut |e, text| {
+            events.push(e.clone());
+            texts.push(text.to_vec());
+            Ok(())
+        })
+        .unwrap();
+        (events, texts)
+    }
+
+    /// The threaded feed gives what feeding the lines one by one gives: the same events, each
+    /// with its own line's text, across many batches, CRLF, blank lines and a last line without
+    /// a line break.
+    #[test]
+    fn same_events_as_line_by_line() {
+        let mut text = String::from("G21 G17 G90 G00 X0. Y0. Z10.\r\nF500.\n\nG98 G81 X1. Y1. Z-5. R2.\n");
+        for i in 0..20_000 {
+            text.push_str(&format!("X{}.{} Y{}.5\n", i % 300, i % 10, i / 300));
+            if i % 4999 == 0 {
+                text.push_str("X1. Q5.\n"); // an alarm now and then (Q is not taken by G81)
+            }
+        }
+        text.push_str("G80\nM30");
+        for mode in [Mode::Run, Mode::Check] {
+            let expected = ncsight::run_text(Params::defaults(profile::by_name("fanuc0m").unwrap()), Switches::default(), mode, text.as_bytes());
+            let (events, texts) = events_of(Box::new(io::Cursor::new(text.clone().into_bytes())), mode);
+            assert_eq!(events, expected, "{mode:?}");
+            let lines: Vec<&str> = text.split('\n').collect();
+            for (e, t) in events.iter().zip(&texts) {
+                if let Event::Diagnostic(d) = e {
+                    if d.span.line as usize <= lines.len() && !t.is_empty() {
+                        assert_eq!(String::from_utf8_lossy(t).trim_end(), lines[d.span.line as usize - 1].trim_end());
+                    }
+                }
+            }
+        }
+    }
+
+    /// A line longer than the kept length: its start is read (and is one alarm), the rest is
+    /// skipped, and the next line is line 2.
+    #[test]
+    fn overlong_line_is_cut_and_counted_once() {
+        let mut text = "G01 X1.".repeat(20_000);
+        text.push_str("\nG0 X1 Q\nM30\n");
+        let (events, _) = events_of(Box::new(io::Cursor::new(text.into_bytes())), Mode::Check);
+        let lines: Vec<u32> = events
+            .iter()
+            .filter_map(|e| match e {
+                Event::Diagnostic(d) if d.is_alarm() => Some(d.span.line),
+                _ => None,
+            })
+            .collect();
+        assert_eq!(lines, vec![1, 2]);
+    }
+
+    /// Input that never ends (a pipe left open) after the programme end: the run returns.
+    #[test]
+    fn endless_input_after_the_end() {
+        struct Endless(Vec<u8>, usize);
+        impl io::Read for Endless {
+            fn read(&mut self, buf: &mut [u8]) -> io::Result<usize> {
+                let n = buf.len().min(self.0.len() - self.1);
+                buf[..n].copy_from_slice(&self.0[self.1..self.1 + n]);
+                self.1 = (self.1 + n) % self.0.len();
+                Ok(n)
+            }
+        }
+        struct Stuck(Option<Vec<u8>>, mpsc::Receiver<()>);
+        impl io::Read for Stuck {
+            fn read(&mut self, buf: &mut [u8]) -> io::Result<usize> {
+                match self.0.take() {
+                    Some(d) => {
+                        buf[..d.len()].copy_from_slice(&d);
+                        Ok(d.len())
+                    }
+                    None => {
+                        let _ = self.1.recv(); // blocks: nobody sends
+                        Ok(0)
+                    }
+                }
+            }
+        }
+        let (tx, rx) = mpsc::channel();
+        let (done_tx, done_rx) = mpsc::channel();
+        std::thread::spawn(move || {
+            let (e1, _) = events_of(Box::new(io::BufReader::new(Endless(b"G0 X1.\nM30\n".to_vec(), 0))), Mode::Run);
+            let (e2, _) = events_of(Box::new(io::BufReader::new(Stuck(Some(b"G0 X1.\nM30\n".to_vec()), rx))), Mode::Run);
+            done_tx.send((e1.len(), e2.len())).unwrap();
+        });
+        let (n1, n2) = done_rx.recv_timeout(std::time::Duration::from_secs(20)).expect("the run did not return");
+        assert!(n1 > 0 && n2 > 0);
+        drop(tx);
+    }
+}
