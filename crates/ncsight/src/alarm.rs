@@ -70,6 +70,7 @@ rules! {
     ContourNotFound => Alarm, "NCS-E53", Some("PS0063"), "THE BLOCK OF A SPECIFIED SEQUENCE NUMBER IS NOT FOUND";
     ContourNotMonotonic => Alarm, "NCS-E54", Some("PS0064"), "THE FINISHING SHAPE IS NOT A MONOTONOUS CHANGE";
     ContourCommand => Alarm, "NCS-E55", Some("PS0066"), "UNAVAILABLE COMMAND IN THE SHAPE PROGRAM";
+    PlaneMismatch => Alarm, "NCS-E56", None, "CYCLE NOT AVAILABLE IN THIS PLANE";
     // --- project rules (no controller number known) ---
     BadCharacter => Alarm, "NCS-E30", None, "CHARACTER NOT ALLOWED";
     LineTooLong => Alarm, "NCS-E31", None, "BLOCK TOO LONG";

@@ -130,6 +130,8 @@ pub struct DrillData {
     pub r: Option<(f64, bool)>,
     pub q: Option<f64>,
     pub dwell_s: Option<f64>,
+    /// GSK lathe G83/G87 J1: the deep-hole cycle.
+    pub deep: bool,
 }
 
 /// Spindle rotation commanded by M03/M04/M05.

@@ -5,6 +5,10 @@
 //!
 //! Each hole: positioning in the plane at the current level, rapid to the R level, the cycle's
 //! own motion, and the return to the initial level (G98) or the R level (G99).
+//!
+//! The GSK980TDi lathe cycles G83 (end face, along Z) and G87 (side, along X) are the same family
+//! in the same local terms: `h` is their drilling axis, the R level is the start point, and R is
+//! the retract after each peck (help text G83/87).
 
 /// The cycle of a hole.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -33,6 +37,10 @@ pub enum DrillKind {
     G88,
     /// Boring with a dwell, feed out to R.
     G89,
+    /// GSK980TDi lathe G83: peck drilling along Z from the start point (help text G83/87).
+    FaceG83,
+    /// GSK980TDi lathe G87: peck drilling along X from the start point (help text G83/87).
+    SideG87,
 }
 
 impl DrillKind {
@@ -50,6 +58,8 @@ impl DrillKind {
             DrillKind::G87 => "G87",
             DrillKind::G88 => "G88",
             DrillKind::G89 => "G89",
+            DrillKind::FaceG83 => "G83",
+            DrillKind::SideG87 => "G87",
         }
     }
 
@@ -61,6 +71,11 @@ impl DrillKind {
     /// Q is the shift at the bottom.
     pub fn shifts(self) -> bool {
         matches!(self, DrillKind::G76 | DrillKind::G87)
+    }
+
+    /// A lathe cycle that drills from the start point (GSK980TDi G83/G87).
+    pub fn from_start(self) -> bool {
+        matches!(self, DrillKind::FaceG83 | DrillKind::SideG87)
     }
 }
 
@@ -86,8 +101,12 @@ pub struct Hole {
     pub q: f64,
     /// Dwell at the bottom, seconds (P).
     pub dwell_s: f64,
-    /// G73 retract / G83 clearance d (parameters 531/532), mm.
+    /// G73 retract / G83 clearance d (parameters 531/532), mm; the R word of the GSK lathe
+    /// cycles.
     pub d: f64,
+    /// GSK lathe cycles: J1, the deep-hole cycle (back to the start after each peck); J0 the
+    /// high-speed one (back by d).
+    pub deep: bool,
     /// Unit direction of the G76/G87 shift in the plane (parameter 2 bits 4 and 5).
     pub shift_dir: [f64; 2],
     /// Cutting feed, mm/min.
@@ -145,6 +164,10 @@ pub fn expand_each(h: &Hole, s: &mut dyn FnMut(Step)) {
         s(Step::Rapid(shifted(h.initial)));
         s(Step::Rapid(p(h.initial)));
         s(Step::Spindle(h.rpm));
+        return;
+    }
+    if h.kind.from_start() {
+        from_start(h, &p, s);
         return;
     }
     if level != h.r {
@@ -221,8 +244,49 @@ pub fn expand_each(h: &Hole, s: &mut dyn FnMut(Step)) {
             s(Step::Rapid(p(ret)));
             s(Step::Spindle(h.rpm));
         }
-        DrillKind::G87 => unreachable!("handled above"),
+        DrillKind::G87 | DrillKind::FaceG83 | DrillKind::SideG87 => unreachable!("handled above"),
     }
+}
+
+/// GSK980TDi G83/G87 from the start level `h.r` (help text G83/87, steps 2-6 of both cycles):
+/// J0 feeds Q, rapids back d but never past the start, and feeds Q plus what it went back; J1
+/// feeds Q, rapids to the start, rapids to d short of the depth reached and feeds Q + d. Q 0
+/// (note 5), or d 0 under J0 (note 6), drills in one feed. Dwell P at the bottom, rapid back to
+/// the start.
+fn from_start(h: &Hole, p: &dyn Fn(f64) -> Local, s: &mut dyn FnMut(Step)) {
+    let start = h.r;
+    let down = if h.bottom < start { -1.0 } else { 1.0 };
+    // d short of `depth`, clamped at the start (J0 step 3).
+    let back = |depth: f64| {
+        let t = depth - down * h.d;
+        if (t - start) * down < 0.0 { start } else { t }
+    };
+    if h.q <= 0.0 || (!h.deep && h.d <= 0.0) {
+        s(Step::Feed(p(h.bottom), h.feed));
+    } else {
+        let mut depth = start;
+        loop {
+            let next = if (h.bottom - depth).abs() <= h.q { h.bottom } else { depth + down * h.q };
+            s(Step::Feed(p(next), h.feed));
+            if next == h.bottom {
+                break;
+            }
+            if h.deep {
+                s(Step::Rapid(p(start)));
+                let t = back(next);
+                if t != start {
+                    s(Step::Rapid(p(t)));
+                }
+            } else {
+                s(Step::Rapid(p(back(next))));
+            }
+            depth = next;
+        }
+    }
+    if h.dwell_s > 0.0 {
+        s(Step::Dwell(h.dwell_s));
+    }
+    s(Step::Rapid(p(h.initial)));
 }
 
 #[cfg(test)]
@@ -241,6 +305,7 @@ mod tests {
             q: 1.0,
             dwell_s: 0.5,
             d: 0.254,
+            deep: false,
             shift_dir: [1.0, 0.0],
             feed: 100.0,
             rpm: 1000.0,
@@ -293,6 +358,33 @@ mod tests {
         assert_eq!(spindle, vec![-1000.0, 1000.0]);
         let s = expand(&hole(DrillKind::G74));
         assert!(s.iter().any(|x| matches!(x, Step::Feed(p, _) if p[2] == 2.0)));
+    }
+
+    /// GSK G83 from Z2 to Z-3, Q1: J0 backs off R 0.3 (clamped at the start), J1 goes back to
+    /// the start and down to 0.3 short of the depth; dwell, then back to the start.
+    #[test]
+    fn gsk_lathe_pecks_from_the_start() {
+        let mut h = hole(DrillKind::FaceG83);
+        h.from = [1.0, 0.0, 2.0];
+        h.at = [1.0, 0.0];
+        h.initial = 2.0;
+        h.r = 2.0;
+        h.d = 0.3;
+        let s = expand(&h);
+        assert_eq!(levels(&s), vec![1.0, 1.3, 0.0, 0.3, -1.0, -0.7, -2.0, -1.7, -3.0, 2.0]);
+        assert!(matches!(s[s.len() - 2], Step::Dwell(_)));
+        h.deep = true;
+        assert_eq!(levels(&expand(&h)), vec![1.0, 2.0, 1.3, 0.0, 2.0, 0.3, -1.0, 2.0, -0.7, -2.0, 2.0, -1.7, -3.0, 2.0]);
+        // A retract longer than the depth reached stops at the start (J0 step 3).
+        h.deep = false;
+        h.d = 1.5;
+        assert_eq!(levels(&expand(&h))[..2], [1.0, 2.0]);
+        // Q 0, or R 0 under J0: one feed to the bottom (notes 5 and 6).
+        h.d = 0.0;
+        assert_eq!(levels(&expand(&h)), vec![-3.0, 2.0]);
+        h.deep = true;
+        h.q = 0.0;
+        assert_eq!(levels(&expand(&h)), vec![-3.0, 2.0]);
     }
 
     #[test]

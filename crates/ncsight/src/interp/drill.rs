@@ -46,6 +46,28 @@ fn take_hole_words(step: &mut Step, words: &mut Words) -> Result<(), Diagnostic>
         let v = step.length(w)?.abs();
         step.st.drill.q = Some(v);
     }
+    take_dwell(step, words)
+}
+
+/// The repeat count K (1 without K).
+fn repeats(step: &mut Step, words: &mut Words) -> Result<u32, Diagnostic> {
+    match words.take(b'K') {
+        Some(w) => {
+            if w.decimal || w.value < 0.0 || w.value > MAX_REPEATS {
+                return Err(step.alarm(
+                    Rule::ValueOutOfRange,
+                    w.span,
+                    format!("{}: the repeat count K is a whole number 0 to 9999 (seed 003)", w.text()),
+                ));
+            }
+            Ok(w.value as u32)
+        }
+        None => Ok(1),
+    }
+}
+
+/// The dwell P at the bottom, a whole number of ms (seed 003; GSK help text G83/87).
+fn take_dwell(step: &mut Step, words: &mut Words) -> Result<(), Diagnostic> {
     if let Some(w) = words.take(b'P') {
         if w.decimal {
             return Err(step.alarm(Rule::IllegalDecimalPoint, w.span, format!("{}: the dwell P is a whole number of ms", w.text())));
@@ -55,8 +77,132 @@ fn take_hole_words(step: &mut Step, words: &mut Words) -> Result<(), Diagnostic>
     Ok(())
 }
 
+/// Emit the steps of one hole, mapped by `global`; single block stops after the hole.
+fn emit_hole(step: &mut Step, hole: &Hole, global: &dyn Fn(drill::Local, &Vec3) -> Vec3) -> usize {
+    let position_mode = step.st.spindle_position_mode;
+    let first = step.out.records.len();
+    drill::expand_each(hole, &mut |s| {
+        let here = step.st.pos;
+        let op = match s {
+            drill::Step::Rapid(l) => Op::Rapid { from: here, to: global(l, &here) },
+            drill::Step::Feed(l, f) => Op::Feed { from: here, to: global(l, &here), feed_mm_min: f },
+            drill::Step::Dwell(s) => Op::Dwell { seconds: s },
+            drill::Step::Spindle(rpm) => Op::Spindle { rpm, surface_m_min: None, position_mode, oriented: false },
+            drill::Step::Orient => Op::Spindle { rpm: 0.0, surface_m_min: None, position_mode, oriented: true },
+            drill::Step::ManualRetract => Op::Stop { reason: StopReason::ManualRetract },
+        };
+        if let Op::Rapid { from, to } | Op::Feed { from, to, .. } = op {
+            if from == to {
+                return;
+            }
+        }
+        step.emit(op);
+    });
+    if let Some(last) = step.records_since(first).last_mut() {
+        last.block_end = true;
+    }
+    first
+}
+
+/// GSK980TDi G83 (end face: hole at X, drilled along Z) and G87 (side: hole at Z, drilled along
+/// X) (help text G83/87). The tool rapids to the hole position and drills from where it stands
+/// on the drilling axis; the bottom, Q, R, P and J stay until G80 or a group 01 code, so a later
+/// block with only a bottom drills again. A block without X, Z, U or W only stores its data.
+fn from_start_block(step: &mut Step, words: &mut Words, kind: DrillKind) -> Result<(), Diagnostic> {
+    let code = kind.code();
+    if step.st.plane != crate::motion::Plane::ZX {
+        // Note 2: G18 must be selected.
+        return Err(step.alarm(Rule::PlaneMismatch, step.span, format!("{code} drills only in the G18 plane (GSK980TDi help, G83/87 note 2)")));
+    }
+    // Vec3 axes: G83 places the hole on X and drills along Z; G87 the other way round.
+    let (place, along) = if kind == DrillKind::SideG87 { (2, 0) } else { (0, 2) };
+    if let Some(w) = words.take(b'Q') {
+        // Q in least input increments, a radius value.
+        let q = super::compound::increments(step, &w, code)?;
+        if q < 0.0 {
+            return Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("{}: the peck Q of {code} cannot be negative", w.text())));
+        }
+        step.st.drill.q = Some(q);
+    }
+    if let Some(w) = words.take(b'R') {
+        let r = step.length(&w)?;
+        if r < 0.0 {
+            return Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("{}: the retract R of {code} cannot be negative", w.text())));
+        }
+        step.st.drill.r = Some((r, false));
+    }
+    take_dwell(step, words)?;
+    if let Some(w) = words.take(b'J') {
+        if w.decimal || (w.value != 0.0 && w.value != 1.0) {
+            return Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("{}: J of {code} is 0 (high-speed peck) or 1 (deep hole)", w.text())));
+        }
+        step.st.drill.deep = w.value == 1.0;
+    }
+    let repeats = repeats(step, words)?;
+    let (target, given) = super::axis_target(step, words)?;
+    if given[along] {
+        step.st.drill.bottom = Some((target.axis(along), false));
+    }
+    if !(given[place] || given[along]) || repeats == 0 {
+        return Ok(());
+    }
+    let start = step.st.pos.axis(along);
+    let axis_name = if along == 2 { "Z (W)" } else { "X (U)" };
+    let Some((bottom, _)) = step.st.drill.bottom else {
+        return Err(step.alarm(Rule::MissingWord, step.span, format!("{code} needs the hole bottom {axis_name}")));
+    };
+    if bottom == start {
+        return Err(step.alarm(
+            Rule::DrillLevels,
+            step.span,
+            format!("{code}: the hole bottom {axis_name} is where the tool starts: there is nothing to drill"),
+        ));
+    }
+    let d = step.st.drill;
+    let q = d.q.unwrap_or(0.0);
+    let retract = d.r.map_or(0.0, |r| r.0);
+    if q > 0.0 && ((bottom - start).abs() / q).ceil() * f64::from(repeats) > MAX_PECKS {
+        return Err(step.alarm(Rule::MotionLimit, step.span, format!("{code}: more than {MAX_PECKS} pecks in one block (Q too small for the depth, times K)")));
+    }
+    let rpm = step.rpm_here();
+    let global = move |l: drill::Local, keep: &Vec3| {
+        let mut v = *keep;
+        v.set_axis(place, l[0]);
+        v.y = l[1];
+        v.set_axis(along, l[2]);
+        v
+    };
+    for _ in 0..repeats {
+        let from_g = step.st.pos;
+        let at = [target.axis(place), from_g.y];
+        let feed = step.cutting_feed(code, &|u| global([at[0], at[1], start + (bottom - start) * u], &from_g))?;
+        let hole = Hole {
+            kind,
+            from: [from_g.axis(place), from_g.y, from_g.axis(along)],
+            at,
+            initial: start,
+            r: start,
+            bottom,
+            return_initial: true,
+            q,
+            dwell_s: d.dwell_s.unwrap_or(0.0),
+            d: retract,
+            deep: d.deep,
+            shift_dir: [0.0; 2],
+            feed,
+            rpm,
+        };
+        emit_hole(step, &hole, &global);
+    }
+    Ok(())
+}
+
 /// A block while a drilling cycle is in force. `entering`: the block names a cycle code.
 pub(super) fn block(step: &mut Step, words: &mut Words, kind: DrillKind, entering: bool) -> Result<(), Diagnostic> {
+    if kind.from_start() {
+        step.st.drill.kind = Some(kind);
+        return from_start_block(step, words, kind);
+    }
     let plane = step.st.plane;
     let (a, b, n) = plane.axes();
     if entering && step.st.drill.kind.is_none() {
@@ -66,19 +212,7 @@ pub(super) fn block(step: &mut Step, words: &mut Words, kind: DrillKind, enterin
     step.st.drill.kind = Some(kind);
     let drills = words.has(letter(a)) || words.has(letter(b)) || words.has(letter(n)) || words.has(b'R');
     take_hole_words(step, words)?;
-    let repeats = match words.take(b'K') {
-        Some(w) => {
-            if w.decimal || w.value < 0.0 || w.value > MAX_REPEATS {
-                return Err(step.alarm(
-                    Rule::ValueOutOfRange,
-                    w.span,
-                    format!("{}: the repeat count K is a whole number 0 to 9999 (seed 003)", w.text()),
-                ));
-            }
-            w.value as u32
-        }
-        None => 1,
-    };
+    let repeats = repeats(step, words)?;
     // Positioning words in the plane.
     let mut delta = [0.0; 2];
     let mut target = [step.st.pos.axis(a), step.st.pos.axis(b)];
@@ -187,29 +321,12 @@ pub(super) fn block(step: &mut Step, words: &mut Words, kind: DrillKind, enterin
             q: d.q.unwrap_or(0.0),
             dwell_s: d.dwell_s.unwrap_or(0.0),
             d: d_mm,
+            deep: false,
             shift_dir,
             feed,
             rpm,
         };
-        let position_mode = step.st.spindle_position_mode;
-        let first = step.out.records.len();
-        drill::expand_each(&hole, &mut |s| {
-            let here = step.st.pos;
-            let op = match s {
-                drill::Step::Rapid(l) => Op::Rapid { from: here, to: to_global(plane, l, &here) },
-                drill::Step::Feed(l, f) => Op::Feed { from: here, to: to_global(plane, l, &here), feed_mm_min: f },
-                drill::Step::Dwell(s) => Op::Dwell { seconds: s },
-                drill::Step::Spindle(rpm) => Op::Spindle { rpm, surface_m_min: None, position_mode, oriented: false },
-                drill::Step::Orient => Op::Spindle { rpm: 0.0, surface_m_min: None, position_mode, oriented: true },
-                drill::Step::ManualRetract => Op::Stop { reason: StopReason::ManualRetract },
-            };
-            if let Op::Rapid { from, to } | Op::Feed { from, to, .. } = op {
-                if from == to {
-                    return;
-                }
-            }
-            step.emit(op);
-        });
+        let first = emit_hole(step, &hole, &|l, here| to_global(plane, l, here));
         // Tapping: feed hold and feed override are ignored until the cycle ends (seed 003 8.1.2);
         // positioning to the hole still stops. Single block stops after each hole (BEHAVIOUR.md).
         let tapping = matches!(kind, DrillKind::G74 | DrillKind::G84);
@@ -220,9 +337,6 @@ pub(super) fn block(step: &mut Step, words: &mut Words, kind: DrillKind, enterin
                 r.hold = Hold::AfterRun;
                 r.override_free = true;
             }
-        }
-        if let Some(last) = recs.last_mut() {
-            last.block_end = true;
         }
     }
     Ok(())

@@ -4,9 +4,10 @@ use super::common::{self, g, gp};
 use super::lathe_a::{self, LATER_THREAD};
 use super::{Compound, G76Keys, SETTINGS, DRY_RUN, CycleKind, QPoint, ThreadCmd, ThreadRules, GDef, GFn, Group, IntegerLengths, MachineKind, ParamDef, ParamKey, Profile, TimeKeys};
 use crate::alarm::AlarmStyle;
+use crate::cycles::drill::DrillKind;
 use crate::motion::ArcDir;
 
-const LATER_DRILL: GFn = GFn::NotYet("the lathe drilling cycles (G83-G89) are not simulated by ncsight yet");
+const LATER_DRILL: GFn = GFn::NotYet("the lathe tapping and boring cycles (G84, G85, G88, G89) are not simulated by ncsight yet");
 
 const EXTRA: &[GDef] = &[
     g(32, Group::Motion, GFn::Thread(ThreadCmd::Lead), "thread cutting: F lead or I threads per inch, J/K pull-out, Q start angle"),
@@ -19,10 +20,10 @@ const EXTRA: &[GDef] = &[
     g(34, Group::Motion, GFn::Thread(ThreadCmd::VariableLead), "variable-lead thread cutting"),
     gp(92, 1, Group::Motion, GFn::Thread(ThreadCmd::Cycle(CycleKind::TdiRigid)), "rigid thread cutting cycle (help text: R F L P S)"),
     GDef { major: 80, minor: None, group: Group::Motion, function: GFn::CycleCancel, meaning: "cancel a drilling cycle" },
-    GDef { major: 83, minor: None, group: Group::Motion, function: LATER_DRILL, meaning: "end face peck drilling cycle" },
+    GDef { major: 83, minor: None, group: Group::Motion, function: GFn::Drill(DrillKind::FaceG83), meaning: "end face peck drilling cycle" },
     GDef { major: 84, minor: None, group: Group::Motion, function: LATER_DRILL, meaning: "end face tapping cycle" },
     GDef { major: 85, minor: None, group: Group::Motion, function: LATER_DRILL, meaning: "end face boring cycle" },
-    GDef { major: 87, minor: None, group: Group::Motion, function: LATER_DRILL, meaning: "side peck drilling cycle" },
+    GDef { major: 87, minor: None, group: Group::Motion, function: GFn::Drill(DrillKind::SideG87), meaning: "side peck drilling cycle" },
     GDef { major: 88, minor: None, group: Group::Motion, function: LATER_DRILL, meaning: "side tapping cycle" },
     GDef { major: 89, minor: None, group: Group::Motion, function: LATER_DRILL, meaning: "side boring cycle" },
     g(78, Group::NonModal, GFn::CompoundThread(Compound::G78), "compound thread cutting cycle with infeed modes, two blocks"),
