@@ -3,7 +3,7 @@
 //! interpreting share the two cores a small machine has. Memory stays bounded: a few batches of
 //! at most `BATCH_BYTES` (plus one kept line) are in flight, and their buffers are reused.
 
-use ncsight::{Event, LineReader, Program, ReadLine};
+use ncsight::{Event, LineReader, Program, ReadBatch};
 use std::io::{self, BufRead};
 use std::ops::Range;
 use std::sync::mpsc;
@@ -24,29 +24,27 @@ const BATCHES_IN_FLIGHT: usize = 4;
 #[derive(Default)]
 struct Batch {
     text: Vec<u8>,
-    lines: Vec<(Range<usize>, ReadLine)>,
-    used: usize,
+    /// Each line's text in `text`.
+    ranges: Vec<Range<usize>>,
+    read: ReadBatch,
 }
 
 impl Batch {
     fn clear(&mut self) {
         self.text.clear();
-        self.used = 0;
+        self.ranges.clear();
+        self.read.clear();
     }
 
     fn is_full(&self) -> bool {
-        self.text.len() >= BATCH_BYTES || self.used >= BATCH_LINES
+        self.text.len() >= BATCH_BYTES || self.ranges.len() >= BATCH_LINES
     }
 
     /// Read the text from `start` to the end as line `line_no`.
     fn read_line(&mut self, reader: &LineReader, line_no: u32, start: usize) {
-        if self.used == self.lines.len() {
-            self.lines.push(Default::default());
-        }
-        let (range, read) = &mut self.lines[self.used];
-        *range = start..self.text.len();
-        reader.read(line_no, &self.text[range.clone()], read);
-        self.used += 1;
+        let range = start..self.text.len();
+        self.read.push(reader, line_no, &self.text[range.clone()]);
+        self.ranges.push(range);
     }
 }
 
@@ -67,14 +65,13 @@ pub fn drive(
     let mut stopped = false;
     'batches: for batch in full_rx.iter() {
         let mut batch = batch?;
-        let Batch { text, lines, used } = &mut batch;
-        for (range, read) in &mut lines[..*used] {
+        for (i, range) in batch.ranges.iter().enumerate() {
             if !program.wants_more() {
                 stopped = true;
                 break 'batches;
             }
-            let line = &text[range.clone()];
-            program.feed_read(read, &mut |e| {
+            let line = &batch.text[range.clone()];
+            program.feed_from(&batch.read, i, &mut |e| {
                 if pending.is_ok() {
                     pending = on_event(&e, line);
                 }
@@ -133,7 +130,7 @@ fn read_ahead(
                 line_no = line_no.wrapping_add(1);
                 batch.read_line(reader, line_no, start);
             }
-            if batch.used > 0 {
+            if !batch.ranges.is_empty() {
                 let _ = full.send(Ok(batch));
             }
             return;
@@ -160,7 +157,7 @@ fn read_ahead(
         }
         input.consume(used);
         let between_lines = start == batch.text.len();
-        if between_lines && (batch.is_full() || drained && batch.used > 0) {
+        if between_lines && (batch.is_full() || drained && !batch.ranges.is_empty()) {
             let mut next = empty.try_recv().unwrap_or_default();
             next.clear();
             if full.send(Ok(std::mem::replace(&mut batch, next))).is_err() {

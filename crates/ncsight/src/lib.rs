@@ -25,4 +25,4 @@ pub use interp::{Interpreter, Switches};
 pub use machine::{Machine, Options};
 pub use motion::{Op, Record, Vec3};
 pub use profile::{Params, Profile};
-pub use program::{run_text, run_text_with, Event, LineReader, Mode, Program, ReadLine, Status};
+pub use program::{run_text, run_text_with, Event, LineReader, Mode, Program, ReadBatch, Status};

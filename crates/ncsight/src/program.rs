@@ -13,7 +13,7 @@ use crate::interp::{Interpreter, Outcome, Switches};
 use crate::machine::{Machine, Options};
 use crate::motion::Record;
 use crate::profile::Params;
-use crate::read::{Line, Reader};
+use crate::read::{Block, Line, Reader, Word};
 use crate::source::Span;
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -43,6 +43,8 @@ pub enum Status {
 pub struct Program {
     core: Core,
     machine: Machine,
+    /// The block a batch's packed blocks are set into, one after the other.
+    block: Block,
 }
 
 /// Everything but the operator machine: reading and interpreting, with buffers reused from line
@@ -64,11 +66,10 @@ struct Core {
     outcome: Outcome,
 }
 
-/// One line read ahead of its interpretation: the reader's blocks and the look for another
-/// control's language. Reading needs nothing of the modal state, so a caller may read lines on
-/// another thread while the programme interprets earlier ones (the command line does).
+/// One line read, not yet interpreted: the reader's blocks and the look for another control's
+/// language.
 #[derive(Debug, Default)]
-pub struct ReadLine {
+struct ReadLine {
     line_no: u32,
     line: Line,
     foreign: Option<Foreign>,
@@ -76,7 +77,9 @@ pub struct ReadLine {
     len: usize,
 }
 
-/// Reads lines into [`ReadLine`]s for a [`Program`]; cheap to clone and to send to a thread.
+/// Reads lines for a [`Program`]; cheap to clone and to send to a thread. Reading needs nothing
+/// of the modal state, so a caller may read lines on one thread into a [`ReadBatch`] while the
+/// programme interprets earlier ones on another (the command line does).
 #[derive(Debug, Clone)]
 pub struct LineReader {
     reader: Reader,
@@ -85,7 +88,7 @@ pub struct LineReader {
 impl LineReader {
     /// Read line `line_no` (1-based, with or without its line break) into `out`, reusing its
     /// allocations.
-    pub fn read(&self, line_no: u32, raw: &[u8], out: &mut ReadLine) {
+    fn read(&self, line_no: u32, raw: &[u8], out: &mut ReadLine) {
         out.line_no = line_no;
         out.len = raw.len();
         // Another control's programme gets one answer, not a cascade of alarms (issue 10). Its
@@ -100,6 +103,136 @@ impl LineReader {
     }
 }
 
+/// Lines read ahead, packed: the blocks of all lines in one array and their words in another,
+/// so that a batch handed to another thread is a few buffers read front to back (issue 9: the
+/// interpreting thread then streams them instead of chasing one small allocation per block).
+/// The buffers are kept by [`ReadBatch::clear`] for the next batch.
+#[derive(Debug, Default)]
+pub struct ReadBatch {
+    lines: Vec<PackedLine>,
+    blocks: Vec<PackedBlock>,
+    words: Vec<Word>,
+    /// The rare parts: the reader's alarms and line warnings, and comment texts.
+    diagnostics: Vec<Diagnostic>,
+    comments: Vec<Vec<String>>,
+    /// The reader's line buffers.
+    scratch: ReadLine,
+}
+
+#[derive(Debug, Clone, Copy)]
+struct PackedLine {
+    line_no: u32,
+    len: usize,
+    foreign: Option<Foreign>,
+    /// Index ranges into the batch's blocks and diagnostics (the line's warnings).
+    blocks: (u32, u32),
+    warnings: (u32, u32),
+    end_of_file: bool,
+}
+
+#[derive(Debug, Clone, Copy)]
+struct PackedBlock {
+    /// The block could not be read: this diagnostic (an index) is its alarm.
+    error: Option<u32>,
+    span: Span,
+    block_delete: bool,
+    sequence: Option<u32>,
+    program: Option<u32>,
+    words: (u32, u32),
+    comments: Option<u32>,
+}
+
+/// The next index of a batch buffer (a batch holds far fewer than 2^32 of anything).
+fn index<T>(v: &[T]) -> u32 {
+    u32::try_from(v.len()).expect("a batch holds fewer than 2^32 items")
+}
+
+impl ReadBatch {
+    /// Lines held.
+    pub fn len(&self) -> usize {
+        self.lines.len()
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.lines.is_empty()
+    }
+
+    /// Empty it for the next batch, keeping the buffers.
+    pub fn clear(&mut self) {
+        self.lines.clear();
+        self.blocks.clear();
+        self.words.clear();
+        self.diagnostics.clear();
+        self.comments.clear();
+    }
+
+    /// Read line `line_no` (1-based, with or without its line break) and append it.
+    pub fn push(&mut self, reader: &LineReader, line_no: u32, raw: &[u8]) {
+        reader.read(line_no, raw, &mut self.scratch);
+        let r = &self.scratch;
+        let first_block = index(&self.blocks);
+        let first_warning = index(&self.diagnostics);
+        self.diagnostics.extend(r.line.warnings.iter().cloned());
+        let warnings = (first_warning, index(&self.diagnostics));
+        for item in &r.line.blocks {
+            let packed = match item {
+                Err(d) => {
+                    self.diagnostics.push(d.clone());
+                    PackedBlock {
+                        error: Some(index(&self.diagnostics) - 1),
+                        span: d.span,
+                        block_delete: false,
+                        sequence: None,
+                        program: None,
+                        words: (0, 0),
+                        comments: None,
+                    }
+                }
+                Ok(b) => {
+                    let first_word = index(&self.words);
+                    self.words.extend_from_slice(&b.words);
+                    let comments = (!b.comments.is_empty()).then(|| {
+                        self.comments.push(b.comments.clone());
+                        index(&self.comments) - 1
+                    });
+                    PackedBlock {
+                        error: None,
+                        span: b.span,
+                        block_delete: b.block_delete,
+                        sequence: b.sequence,
+                        program: b.program,
+                        words: (first_word, index(&self.words)),
+                        comments,
+                    }
+                }
+            };
+            self.blocks.push(packed);
+        }
+        self.lines.push(PackedLine {
+            line_no,
+            len: r.len,
+            foreign: r.foreign,
+            blocks: (first_block, index(&self.blocks)),
+            warnings,
+            end_of_file: r.line.end_of_file,
+        });
+    }
+
+    /// Block `pb` of this batch into `b`, reusing its allocations.
+    fn fill(&self, pb: &PackedBlock, b: &mut Block) {
+        b.span = pb.span;
+        b.block_delete = pb.block_delete;
+        b.sequence = pb.sequence;
+        b.program = pb.program;
+        b.words.clear();
+        b.words.extend_from_slice(&self.words[pb.words.0 as usize..pb.words.1 as usize]);
+        match pb.comments {
+            Some(c) => b.comments.clone_from(&self.comments[c as usize]),
+            None => b.comments.clear(),
+        }
+    }
+}
+
 impl Program {
     pub fn new(params: Params, switches: Switches, mode: Mode) -> Program {
         Program::with_operator(params, switches, mode, Options::default())
@@ -110,6 +243,7 @@ impl Program {
         let style = params.profile().alarm_style;
         Program {
             machine: Machine::new(&params, operator),
+            block: Block::default(),
             core: Core {
                 reader: Reader::new(style),
                 interp: Interpreter::new(params, switches),
@@ -172,20 +306,35 @@ impl Program {
         self.core.read = read;
     }
 
-    /// A reader for the lines of this programme (see [`ReadLine`]).
+    /// A reader for the lines of this programme (see [`ReadBatch`]).
     pub fn line_reader(&self) -> LineReader {
         LineReader { reader: self.core.reader.clone() }
     }
 
-    /// Feed the next line, read ahead by [`LineReader::read`]; lines must come in order, each
-    /// once. The [`ReadLine`] may be reused for a later line.
-    pub fn feed_read(&mut self, read: &mut ReadLine, sink: &mut dyn FnMut(Event)) {
-        debug_assert_eq!(read.line_no, self.core.line_no + 1, "lines fed out of order");
+    /// Feed line `i` of a batch read ahead by [`ReadBatch::push`]. Lines must come in order,
+    /// each once, across batches.
+    pub fn feed_from(&mut self, batch: &ReadBatch, i: usize, sink: &mut dyn FnMut(Event)) {
+        let l = batch.lines[i];
+        debug_assert_eq!(l.line_no, self.core.line_no.wrapping_add(1), "lines fed out of order");
+        self.core.line_no = l.line_no;
+        if !self.wants_more() {
+            return;
+        }
+        let Program { core, machine, block } = self;
+        if core.records {
+            core.interpret_packed(batch, &l, block, &mut |e| machine.push(e, sink));
+        } else {
+            core.interpret_packed(batch, &l, block, sink);
+        }
+    }
+
+    fn feed_read(&mut self, read: &mut ReadLine, sink: &mut dyn FnMut(Event)) {
+        debug_assert_eq!(read.line_no, self.core.line_no.wrapping_add(1), "lines fed out of order");
         self.core.line_no = read.line_no;
         if !self.wants_more() {
             return;
         }
-        let Program { core, machine } = self;
+        let Program { core, machine, .. } = self;
         if core.records {
             core.interpret_read(read, &mut |e| machine.push(e, sink));
         } else {
@@ -230,14 +379,34 @@ impl Program {
 }
 
 impl Core {
-    /// Interpret one line read ahead; the events are untimed.
+    /// Interpret one line read; the events are untimed.
     fn interpret_read(&mut self, read: &mut ReadLine, sink: &mut dyn FnMut(Event)) {
-        if let Some(f) = read.foreign {
+        let line = &mut read.line;
+        if self.begin_line(read.foreign, read.len, line.warnings.drain(..), line.end_of_file, sink) {
+            for item in &line.blocks {
+                if !self.interpret_item(item.as_ref(), sink) {
+                    return;
+                }
+            }
+        }
+    }
+
+    /// The start of a line: another control's language ends the run; the line's warnings; a DOS
+    /// end-of-file mark. Whether the line's blocks are to be interpreted.
+    fn begin_line(
+        &mut self,
+        foreign: Option<Foreign>,
+        len: usize,
+        warnings: impl Iterator<Item = Diagnostic>,
+        end_of_file: bool,
+        sink: &mut dyn FnMut(Event),
+    ) -> bool {
+        if let Some(f) = foreign {
             let profile = self.interp.profile();
             let d = Diagnostic::new(
                 Rule::ForeignDialect,
                 profile.alarm_style,
-                Span::new(self.line_no, 1, read.len.clamp(1, 80) as u32),
+                Span::new(self.line_no, 1, len.clamp(1, 80) as u32),
                 format!("this looks like {}, not a programme for {} ({}): its words mean other things there, so ncsight stops here", f.name(), profile.name, profile.title),
             )
             .with_hint("run it on the profile of the control it was written for");
@@ -245,71 +414,89 @@ impl Core {
             // Both modes stop: reading on would only repeat the same answer.
             self.status = Status::Alarm;
             self.eof = true;
-            return;
+            return false;
         }
-        self.interpret_blocks(&mut read.line, sink);
-    }
-
-    fn interpret_blocks(&mut self, line: &mut Line, sink: &mut dyn FnMut(Event)) {
-        for w in line.warnings.drain(..) {
+        for w in warnings {
             sink(Event::Diagnostic(w));
         }
-        if line.end_of_file {
+        if end_of_file {
             self.eof = true;
         }
-        for item in &line.blocks {
-            let block = match item {
-                Ok(b) => b,
-                Err(d) => {
-                    self.flush_pending(sink);
-                    self.alarm(d.clone(), sink);
-                    if self.mode == Mode::Run {
-                        return;
-                    }
-                    continue;
+        true
+    }
+
+    /// A line of a batch, its blocks set one by one into a block kept for reuse.
+    fn interpret_packed(&mut self, batch: &ReadBatch, l: &PackedLine, block: &mut Block, sink: &mut dyn FnMut(Event)) {
+        let warnings = batch.diagnostics[l.warnings.0 as usize..l.warnings.1 as usize].iter().cloned();
+        if !self.begin_line(l.foreign, l.len, warnings, l.end_of_file, sink) {
+            return;
+        }
+        for pb in &batch.blocks[l.blocks.0 as usize..l.blocks.1 as usize] {
+            let go_on = match pb.error {
+                Some(k) => self.interpret_item(Err(&batch.diagnostics[k as usize]), sink),
+                None => {
+                    batch.fill(pb, block);
+                    self.interpret_item(Ok(block), sink)
                 }
             };
-            if block.is_empty() {
-                continue;
+            if !go_on {
+                break;
             }
-            self.last_span = block.span;
-            if self.status == Status::Ended {
-                if !self.warned_after_end {
-                    self.warned_after_end = true;
-                    let d = Diagnostic::new(
-                        Rule::AfterEnd,
-                        self.interp.profile().alarm_style,
-                        block.span,
-                        "this block comes after the programme end (M02/M30) and is not executed; later blocks are only read",
-                    );
-                    sink(Event::Diagnostic(d));
-                }
-                continue;
+        }
+    }
+
+    /// One block of a line, or the alarm the reader made of it. Whether the rest of the line is
+    /// to be interpreted (a run stops at its first alarm and at the programme end).
+    fn interpret_item(&mut self, item: Result<&Block, &Diagnostic>, sink: &mut dyn FnMut(Event)) -> bool {
+        let block = match item {
+            Ok(b) => b,
+            Err(d) => {
+                self.flush_pending(sink);
+                self.alarm(d.clone(), sink);
+                return self.mode != Mode::Run;
             }
-            match self.interp.execute_into(block, &mut self.outcome) {
-                Ok(()) => {
-                    self.pass_on(sink);
-                    if self.interp.state().ended {
-                        self.status = Status::Ended;
-                        if self.mode == Mode::Run {
-                            return;
-                        }
-                    }
-                }
-                Err(d) => {
-                    // The thread being cut when the next block alarms is finished first.
-                    self.flush_pending(sink);
-                    self.alarm(d, sink);
+        };
+        if block.is_empty() {
+            return true;
+        }
+        self.last_span = block.span;
+        if self.status == Status::Ended {
+            if !self.warned_after_end {
+                self.warned_after_end = true;
+                let d = Diagnostic::new(
+                    Rule::AfterEnd,
+                    self.interp.profile().alarm_style,
+                    block.span,
+                    "this block comes after the programme end (M02/M30) and is not executed; later blocks are only read",
+                );
+                sink(Event::Diagnostic(d));
+            }
+            return true;
+        }
+        match self.interp.execute_into(block, &mut self.outcome) {
+            Ok(()) => {
+                self.pass_on(sink);
+                if self.interp.state().ended {
+                    self.status = Status::Ended;
                     if self.mode == Mode::Run {
-                        return;
+                        return false;
                     }
-                    // A programme end inside an unfinished contour still ends the programme.
-                    if self.interp.state().ended {
-                        self.status = Status::Ended;
-                    }
+                }
+            }
+            Err(d) => {
+                // The thread being cut when the next block alarms is finished first.
+                self.flush_pending(sink);
+                self.alarm(d, sink);
+                if self.mode == Mode::Run {
+                    return false;
+                }
+                // A programme end inside an unfinished contour still ends the programme.
+                if self.interp.state().ended {
+                    self.status = Status::Ended;
                 }
             }
         }
+        true
     }
 
     /// The warnings and (if wanted) the records of the outcome buffer, in that order.
@@ -356,4 +543,42 @@ pub fn run_text_with(params: Params, switches: Switches, mode: Mode, operator: O
     }
     program.finish(&mut |e| events.push(e));
     events
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::profile;
+
+    /// Lines fed through a packed batch give the events that feeding them one by one gives:
+    /// reader alarms, line warnings, comments, several blocks on a line, block delete, N and O
+    /// numbers, an unclosed comment, text after `%`, a BOM, a DOS end-of-file mark.
+    #[test]
+    fn a_batch_feeds_as_lines_do() {
+        let text: &[u8] = b"\xEF\xBB\xBF% tape\nO0012 (PART 12)\nN10 G00 X10. Z2. ; (tool) ; N11 G01 Z-5. F0.1\n/N12 X1\nG0 X#1\nX-4.5.Z0.\n(open comment\nG0 X1 (FURA\x80AO) Z1\nGO X0.\nN20 G4 P100\n\nM30\nG0 X5\n\x1A\nG0 X9\n";
+        for machine in ["gsk980tdi", "fanuc0t", "fanuc0m"] {
+            for mode in [Mode::Run, Mode::Check] {
+                let params = || Params::defaults(profile::by_name(machine).unwrap());
+                let expected = run_text(params(), Switches::default(), mode, text);
+                let mut program = Program::new(params(), Switches::default(), mode);
+                let reader = program.line_reader();
+                let mut batch = ReadBatch::default();
+                let lines: Vec<&[u8]> = text.split_inclusive(|&b| b == b'\n').collect();
+                let mut events = Vec::new();
+                // Two batches, the second reusing the first one's buffers.
+                for part in lines.chunks(7) {
+                    batch.clear();
+                    let first = program.core.line_no;
+                    for (k, l) in part.iter().enumerate() {
+                        batch.push(&reader, first + 1 + k as u32, l);
+                    }
+                    for i in 0..batch.len() {
+                        program.feed_from(&batch, i, &mut |e| events.push(e));
+                    }
+                }
+                program.finish(&mut |e| events.push(e));
+                assert_eq!(events, expected, "{machine} {mode:?}");
+            }
+        }
+    }
 }

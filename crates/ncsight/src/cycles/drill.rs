@@ -253,7 +253,7 @@ pub fn expand_each(h: &Hole, s: &mut dyn FnMut(Step)) {
 /// feeds Q, rapids to the start, rapids to d short of the depth reached and feeds Q + d. Q 0
 /// (note 5), or d 0 under J0 (note 6), drills in one feed. Dwell P at the bottom, rapid back to
 /// the start.
-fn from_start(h: &Hole, p: &dyn Fn(f64) -> Local, s: &mut dyn FnMut(Step)) {
+fn from_start(h: &Hole, p: &impl Fn(f64) -> Local, s: &mut dyn FnMut(Step)) {
     let start = h.r;
     let down = if h.bottom < start { -1.0 } else { 1.0 };
     // d short of `depth`, clamped at the start (J0 step 3).

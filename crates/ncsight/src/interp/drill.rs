@@ -78,9 +78,22 @@ fn take_dwell(step: &mut Step, words: &mut Words) -> Result<(), Diagnostic> {
 }
 
 /// Emit the steps of one hole, mapped by `global`; single block stops after the hole.
-fn emit_hole(step: &mut Step, hole: &Hole, global: &dyn Fn(drill::Local, &Vec3) -> Vec3) -> usize {
+fn emit_hole(step: &mut Step, hole: &Hole, global: impl Fn(drill::Local, &Vec3) -> Vec3) -> usize {
     let position_mode = step.st.spindle_position_mode;
     let first = step.out.records.len();
+    if step.out.discard_records {
+        // Nothing is kept: only where the hole leaves the tool matters.
+        let mut last = None;
+        drill::expand_each(hole, &mut |s| {
+            if let drill::Step::Rapid(l) | drill::Step::Feed(l, _) = s {
+                last = Some(l);
+            }
+        });
+        if let Some(l) = last {
+            step.st.pos = global(l, &step.st.pos);
+        }
+        return first;
+    }
     drill::expand_each(hole, &mut |s| {
         let here = step.st.pos;
         let op = match s {
@@ -192,7 +205,7 @@ fn from_start_block(step: &mut Step, words: &mut Words, kind: DrillKind) -> Resu
             feed,
             rpm,
         };
-        emit_hole(step, &hole, &global);
+        emit_hole(step, &hole, global);
     }
     Ok(())
 }
@@ -326,7 +339,7 @@ pub(super) fn block(step: &mut Step, words: &mut Words, kind: DrillKind, enterin
             feed,
             rpm,
         };
-        let first = emit_hole(step, &hole, &|l, here| to_global(plane, l, here));
+        let first = emit_hole(step, &hole, |l, here| to_global(plane, l, here));
         // Tapping: feed hold and feed override are ignored until the cycle ends (seed 003 8.1.2);
         // positioning to the hole still stops. Single block stops after each hole (BEHAVIOUR.md).
         let tapping = matches!(kind, DrillKind::G74 | DrillKind::G84);

@@ -312,13 +312,15 @@ impl Interpreter {
     }
 }
 
-/// Collect words, G and M codes, checking addresses and duplicates.
+/// The G and M codes of a block, and its other words into `words` (filled in place: the table
+/// is not moved once written), checking addresses and duplicates.
+#[allow(clippy::type_complexity)]
 fn collect<'w>(
     step: &mut Step,
     block: &'w Block,
-) -> Result<(Words<'w>, Vec<(&'w Word, &'static GDef)>, Vec<(&'w Word, Option<&'static MDef>)>), Diagnostic> {
+    words: &mut Words<'w>,
+) -> Result<(Vec<(&'w Word, &'static GDef)>, Vec<(&'w Word, Option<&'static MDef>)>), Diagnostic> {
     let profile = step.profile;
-    let mut words = Words::new(&block.words);
     let mut gs = Vec::new();
     let mut ms = Vec::new();
     for (i, w) in block.words.iter().enumerate() {
@@ -371,7 +373,7 @@ fn collect<'w>(
             }
         }
     }
-    Ok((words, gs, ms))
+    Ok((gs, ms))
 }
 
 /// What one block asks for after its G codes are sorted.
@@ -384,7 +386,8 @@ struct Codes {
 }
 
 fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), Diagnostic> {
-    let (mut words, gs, ms) = collect(step, block)?;
+    let mut words = Words::new(&block.words);
+    let (gs, ms) = collect(step, block, &mut words)?;
     let profile = step.profile;
 
     // --- G codes: the last of a group counts (GSK: TAC p65; FANUC the same); a warning says so.
@@ -627,19 +630,19 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
             let drill_kind = codes.drill.or(step.st.drill.kind);
             if let Some(kind) = drill_kind {
                 drill::block(step, &mut words, kind, codes.drill.is_some())?;
-                return finish_block(step, words, &codes, after, switches);
+                return finish_block(step, &words, &codes, after, switches);
             }
             if let Motion::Thread(cmd) = step.st.motion {
                 if has_axis {
                     thread::block(step, &mut words, cmd, codes.motion.is_some(), run_deg)?;
                 }
-                return finish_block(step, words, &codes, after, switches);
+                return finish_block(step, &words, &codes, after, switches);
             }
             if let Motion::Box(kind) = step.st.motion {
                 if has_axis || words.has(b'R') {
                     turning::block(step, &mut words, kind)?;
                 }
-                return finish_block(step, words, &codes, after, switches);
+                return finish_block(step, &words, &codes, after, switches);
             }
             let arc_words = matches!(step.st.motion, Motion::ArcCw | Motion::ArcCcw) && b"RIJK".iter().any(|l| words.has(*l));
             let motion_words = has_axis || arc_words;
@@ -649,11 +652,11 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
         }
     }
 
-    finish_block(step, words, &codes, after, switches)
+    finish_block(step, &words, &codes, after, switches)
 }
 
 /// M codes that act after the motion, then the check that every word was used.
-fn finish_block(step: &mut Step, words: Words, codes: &Codes, after: Vec<(&Word, MFn)>, switches: Switches) -> Result<(), Diagnostic> {
+fn finish_block(step: &mut Step, words: &Words, codes: &Codes, after: Vec<(&Word, MFn)>, switches: Switches) -> Result<(), Diagnostic> {
     // A stop or an end after a held-back thread run end: the run ends first.
     if !after.is_empty() {
         if let Some(p) = step.st.thread.pending.take() {

@@ -101,7 +101,7 @@ pub struct Line {
 
 impl Line {
     /// Empty it for the next line, keeping the allocations.
-    fn reset(&mut self) {
+    pub(crate) fn reset(&mut self) {
         while let Some(item) = self.blocks.pop() {
             if let Ok(b) = item {
                 let mut words = b.words;
@@ -114,7 +114,7 @@ impl Line {
         self.end_of_file = false;
     }
 
-    fn new_block(&mut self) -> Block {
+    pub(crate) fn new_block(&mut self) -> Block {
         Block { words: self.spare.pop().unwrap_or_default(), ..Block::default() }
     }
 }
