@@ -57,6 +57,16 @@ impl Plane {
             Plane::YZ => (1, 2, 0),
         }
     }
+
+    /// The point with plane-local coordinates `[a, b, n]` (the inverse of [`Plane::axes`]),
+    /// built whole rather than axis by axis.
+    pub fn from_local(self, l: [f64; 3]) -> Vec3 {
+        match self {
+            Plane::XY => Vec3::new(l[0], l[1], l[2]),
+            Plane::ZX => Vec3::new(l[1], l[2], l[0]),
+            Plane::YZ => Vec3::new(l[2], l[0], l[1]),
+        }
+    }
 }
 
 /// Direction of an arc as G02/G03 name it (seen from the positive end of the plane's normal).

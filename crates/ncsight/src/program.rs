@@ -225,7 +225,10 @@ impl ReadBatch {
         b.sequence = pb.sequence;
         b.program = pb.program;
         b.words.clear();
-        b.words.extend_from_slice(&self.words[pb.words.0 as usize..pb.words.1 as usize]);
+        // Word by word: blocks hold a few words, too few for a copy call to pay.
+        for w in &self.words[pb.words.0 as usize..pb.words.1 as usize] {
+            b.words.push(*w);
+        }
         match pb.comments {
             Some(c) => b.comments.clone_from(&self.comments[c as usize]),
             None => b.comments.clear(),
@@ -501,10 +504,12 @@ impl Core {
 
     /// The warnings and (if wanted) the records of the outcome buffer, in that order.
     fn pass_on(&mut self, sink: &mut dyn FnMut(Event)) {
-        for w in self.outcome.warnings.drain(..) {
-            sink(Event::Diagnostic(w));
+        if !self.outcome.warnings.is_empty() {
+            for w in self.outcome.warnings.drain(..) {
+                sink(Event::Diagnostic(w));
+            }
         }
-        if self.records {
+        if self.records && !self.outcome.records.is_empty() {
             for r in self.outcome.records.drain(..) {
                 sink(Event::Record(r));
             }

@@ -20,15 +20,6 @@ fn letter(axis: usize) -> u8 {
     [b'X', b'Y', b'Z'][axis]
 }
 
-fn to_global(plane: crate::motion::Plane, l: drill::Local, y_keep: &Vec3) -> Vec3 {
-    let (a, b, n) = plane.axes();
-    let mut p = *y_keep;
-    p.set_axis(a, l[0]);
-    p.set_axis(b, l[1]);
-    p.set_axis(n, l[2]);
-    p
-}
-
 /// Take the hole words (R, Q, P, the drilling-axis word) into the modal data.
 fn take_hole_words(step: &mut Step, words: &mut Words) -> Result<(), Diagnostic> {
     let (_, _, n) = step.st.plane.axes();
@@ -131,14 +122,14 @@ fn from_start_block(step: &mut Step, words: &mut Words, kind: DrillKind) -> Resu
     let (place, along) = if kind == DrillKind::SideG87 { (2, 0) } else { (0, 2) };
     if let Some(w) = words.take(b'Q') {
         // Q in least input increments, a radius value.
-        let q = super::compound::increments(step, &w, code)?;
+        let q = super::compound::increments(step, w, code)?;
         if q < 0.0 {
             return Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("{}: the peck Q of {code} cannot be negative", w.text())));
         }
         step.st.drill.q = Some(q);
     }
     if let Some(w) = words.take(b'R') {
-        let r = step.length(&w)?;
+        let r = step.length(w)?;
         if r < 0.0 {
             return Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("{}: the retract R of {code} cannot be negative", w.text())));
         }
@@ -227,16 +218,17 @@ pub(super) fn block(step: &mut Step, words: &mut Words, kind: DrillKind, enterin
     take_hole_words(step, words)?;
     let repeats = repeats(step, words)?;
     // Positioning words in the plane.
-    let mut delta = [0.0; 2];
-    let mut target = [step.st.pos.axis(a), step.st.pos.axis(b)];
-    for (i, axis) in [a, b].into_iter().enumerate() {
+    // Kept in scalars, not arrays written element by element: this runs for every hole.
+    let (mut delta_a, mut delta_b) = (0.0, 0.0);
+    let (mut target_a, mut target_b) = (step.st.pos.axis(a), step.st.pos.axis(b));
+    for (delta, target, axis) in [(&mut delta_a, &mut target_a, a), (&mut delta_b, &mut target_b, b)] {
         if let Some(w) = words.take(letter(axis)) {
             let v = step.length(w)?;
             if step.st.incremental {
-                delta[i] = v;
-                target[i] += v;
+                *delta = v;
+                *target += v;
             } else {
-                target[i] = v;
+                *target = v;
             }
         }
     }
@@ -313,15 +305,15 @@ pub(super) fn block(step: &mut Step, words: &mut Words, kind: DrillKind, enterin
     for k in 0..repeats {
         if k > 0 && step.st.incremental {
             // Under G91 each repeat moves by the increment again: equally spaced holes.
-            target[0] += delta[0];
-            target[1] += delta[1];
+            target_a += delta_a;
+            target_b += delta_b;
         }
         let from_g = step.st.pos;
         let from = [from_g.axis(a), from_g.axis(b), from_g.axis(n)];
-        let at = target;
+        let at = [target_a, target_b];
         let feed = step.cutting_feed(code, &|u| {
             let lvl = r + (bottom - r) * u;
-            to_global(plane, [at[0], at[1], lvl], &from_g)
+            plane.from_local([at[0], at[1], lvl])
         })?;
         let hole = Hole {
             kind,
@@ -339,7 +331,7 @@ pub(super) fn block(step: &mut Step, words: &mut Words, kind: DrillKind, enterin
             feed,
             rpm,
         };
-        let first = emit_hole(step, &hole, |l, here| to_global(plane, l, here));
+        let first = emit_hole(step, &hole, |l, _| plane.from_local(l));
         // Tapping: feed hold and feed override are ignored until the cycle ends (seed 003 8.1.2);
         // positioning to the hole still stops. Single block stops after each hole (BEHAVIOUR.md).
         let tapping = matches!(kind, DrillKind::G74 | DrillKind::G84);

@@ -135,31 +135,42 @@ impl Step<'_> {
     }
 
     /// A length word in mm, read by the profile's decimal-point rule and the units in force.
+    #[inline]
     fn length(&mut self, w: &Word) -> Result<f64, Diagnostic> {
         let mut v = w.value;
         if !w.decimal && self.profile.integer_lengths == IntegerLengths::LeastIncrement {
             v *= if self.st.inch { 0.0001 } else { 0.001 };
             if w.value != 0.0 {
-                let unit = if self.st.inch { "inch" } else { "mm" };
-                let shown = if self.st.inch { format!("{v:.4}") } else { format!("{v:.3}") };
-                self.warn(
-                    Rule::IntegerLength,
-                    w.span,
-                    format!("{} is {shown} {unit} on this control (no decimal point: least input increments)", w.text()),
-                );
+                self.warn_increments(w, v);
             }
         }
         if self.st.inch {
             v *= 25.4;
         }
         if v.abs() > MAX_COORD_MM {
-            return Err(self.alarm(
-                Rule::ValueOutOfRange,
-                w.span,
-                format!("{}: {v} mm is beyond the controller's range (at most {MAX_COORD_MM:.3} mm)", w.text()),
-            ));
+            return Err(self.out_of_range(w, v));
         }
         Ok(v)
+    }
+
+    #[cold]
+    fn warn_increments(&mut self, w: &Word, v: f64) {
+        let unit = if self.st.inch { "inch" } else { "mm" };
+        let shown = if self.st.inch { format!("{v:.4}") } else { format!("{v:.3}") };
+        self.warn(
+            Rule::IntegerLength,
+            w.span,
+            format!("{} is {shown} {unit} on this control (no decimal point: least input increments)", w.text()),
+        );
+    }
+
+    #[cold]
+    fn out_of_range(&self, w: &Word, v: f64) -> Diagnostic {
+        self.alarm(
+            Rule::ValueOutOfRange,
+            w.span,
+            format!("{}: {v} mm is beyond the controller's range (at most {MAX_COORD_MM:.3} mm)", w.text()),
+        )
     }
 
     /// Spindle speed at a point (G96 makes it depend on the diameter), signed.
