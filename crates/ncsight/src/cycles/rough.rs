@@ -11,6 +11,12 @@
 //! 6. while a further Δd + e stays short of B', move it and go to 3; else move to B';
 //! 7. feed along the moved contour from B' to C';
 //! 8. rapid from C' to A.
+//!
+//! Type II (the ns block names both axes) lets the contour go back and forth along the level
+//! axis, with up to 10 pockets (help text type II, 2); only figures show its path, so ncsight's
+//! path is an assumption (docs/commands/g70_g71_g72.md): at each level every stretch of the cut
+//! axis where the contour lies deeper than the level is cut, the first from A's side as in type
+//! I, each pocket entered over the ridge before it; then steps 6-8 as in type I.
 
 use crate::geom;
 use crate::motion::{Op, Vec3};
@@ -59,7 +65,12 @@ pub struct Roughing<'a> {
     pub back_off_mm: f64,
     /// The ns block moves at rapid (G00) rather than at the feed (G01).
     pub ns_rapid: bool,
+    /// Type II: pockets along the level axis allowed.
+    pub type_two: bool,
 }
+
+/// Most pockets a type II contour may have (help text G71/G72 type II, 2).
+pub const MAX_POCKETS: usize = 10;
 
 /// Why a contour cannot be roughed.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -68,6 +79,8 @@ pub enum RoughError {
     NotMonotonic(usize),
     /// More passes than the limit.
     TooMany,
+    /// A type II contour with more than [`MAX_POCKETS`] pockets.
+    TooManyPockets,
     /// The contour has a move that is not a straight line or an arc.
     NotAPath,
 }
@@ -134,8 +147,10 @@ pub fn expand(r: &Roughing, limit: usize) -> Result<Vec<Op>, RoughError> {
         p.extend(polyline(&path, 0.01).into_iter().skip(1));
         p
     };
-    // Help text note 3: both axes monotonic along the contour (type I).
-    for axis in [l, c] {
+    // Help text note 3: both axes monotonic along the contour (type I); type II only the cut
+    // axis.
+    let monotonic: &[usize] = if r.type_two { &[c] } else { &[l, c] };
+    for &axis in monotonic {
         let mut dir = 0.0;
         for w in pts.windows(2) {
             let d = w[1].axis(axis) - w[0].axis(axis);
@@ -153,49 +168,43 @@ pub fn expand(r: &Roughing, limit: usize) -> Result<Vec<Op>, RoughError> {
     // Which way the contour runs along the level axis (from B' back toward A's level).
     let rise = (end.axis(l) - b1.axis(l)).signum();
     let dir_c = (end.axis(c) - b1.axis(c)).signum();
-    let at = |lv: f64, cv: f64| {
-        let mut v = a1;
-        v.set_axis(l, lv);
-        v.set_axis(c, cv);
-        v
-    };
+    let at = |lv: f64, cv: f64| place(a1, (l, c), lv, cv);
     let mut ops = Vec::new();
     let mut pos = r.start;
-    let go = |to: Vec3, feed: bool, ops: &mut Vec<Op>, pos: &mut Vec3| {
-        if to != *pos {
-            ops.push(if feed { Op::Feed { from: *pos, to, feed_mm_min: 0.0 } } else { Op::Rapid { from: *pos, to } });
-            *pos = to;
-        }
-    };
     // 1: A to A'.
     go(a1, false, &mut ops, &mut pos);
-    // 2-6: the levels strictly between A' and B'.
-    let total = (b1.axis(l) - a1.axis(l)).abs();
-    let mut k = 1usize;
-    while dir_l != 0.0 && r.depth_mm > 0.0 && (k as f64) * r.depth_mm < total - 1e-9 {
-        if k > limit {
-            return Err(RoughError::TooMany);
+    if r.type_two {
+        // 2-6 of type II: the levels strictly between A' and the deepest point of the contour.
+        levels_type_two(r, a1, &pts, limit, &mut ops, &mut pos)?;
+    } else {
+        // 2-6: the levels strictly between A' and B'.
+        let total = (b1.axis(l) - a1.axis(l)).abs();
+        let mut k = 1usize;
+        while dir_l != 0.0 && r.depth_mm > 0.0 && (k as f64) * r.depth_mm < total - 1e-9 {
+            if k > limit {
+                return Err(RoughError::TooMany);
+            }
+            let level = a1.axis(l) + dir_l * k as f64 * r.depth_mm;
+            // Where the level meets the contour, walking from B': the contour is monotonic along
+            // the level axis (checked above), so a binary search finds the first point at or past
+            // the level.
+            let i = pts.partition_point(|p| (p.axis(l) - level) * rise < 0.0);
+            let hit = if i == 0 {
+                pts[0].axis(c)
+            } else if i >= pts.len() {
+                end.axis(c)
+            } else {
+                let (w0, w1) = (pts[i - 1], pts[i]);
+                let (p, q) = (w0.axis(l), w1.axis(l));
+                let u = if (q - p).abs() > 1e-12 { (level - p) / (q - p) } else { 1.0 };
+                w0.axis(c) + u * (w1.axis(c) - w0.axis(c))
+            };
+            go(at(level, a1.axis(c)), !r.ns_rapid, &mut ops, &mut pos);
+            go(at(level, hit), true, &mut ops, &mut pos);
+            go(at(level - dir_l * r.back_off_mm, hit - dir_c * r.back_off_mm), true, &mut ops, &mut pos);
+            go(at(level - dir_l * r.back_off_mm, a1.axis(c)), false, &mut ops, &mut pos);
+            k += 1;
         }
-        let level = a1.axis(l) + dir_l * k as f64 * r.depth_mm;
-        // Where the level meets the contour, walking from B': the contour is monotonic along
-        // the level axis (checked above), so a binary search finds the first point at or past
-        // the level.
-        let i = pts.partition_point(|p| (p.axis(l) - level) * rise < 0.0);
-        let hit = if i == 0 {
-            pts[0].axis(c)
-        } else if i >= pts.len() {
-            end.axis(c)
-        } else {
-            let (w0, w1) = (pts[i - 1], pts[i]);
-            let (p, q) = (w0.axis(l), w1.axis(l));
-            let u = if (q - p).abs() > 1e-12 { (level - p) / (q - p) } else { 1.0 };
-            w0.axis(c) + u * (w1.axis(c) - w0.axis(c))
-        };
-        go(at(level, a1.axis(c)), !r.ns_rapid, &mut ops, &mut pos);
-        go(at(level, hit), true, &mut ops, &mut pos);
-        go(at(level - dir_l * r.back_off_mm, hit - dir_c * r.back_off_mm), true, &mut ops, &mut pos);
-        go(at(level - dir_l * r.back_off_mm, a1.axis(c)), false, &mut ops, &mut pos);
-        k += 1;
     }
     // 6-7: to B', along the contour to C'.
     go(b1, !r.ns_rapid, &mut ops, &mut pos);
@@ -206,6 +215,122 @@ pub fn expand(r: &Roughing, limit: usize) -> Result<Vec<Op>, RoughError> {
     // 8: back to A.
     go(r.start, false, &mut ops, &mut pos);
     Ok(ops)
+}
+
+/// Append a move to `to` (a feed or a rapid) unless the tool is there already.
+fn go(to: Vec3, feed: bool, ops: &mut Vec<Op>, pos: &mut Vec3) {
+    if to != *pos {
+        ops.push(if feed { Op::Feed { from: *pos, to, feed_mm_min: 0.0 } } else { Op::Rapid { from: *pos, to } });
+        *pos = to;
+    }
+}
+
+/// `base` with the level axis `l` at `lv` and the cut axis `c` at `cv`.
+fn place(base: Vec3, (l, c): (usize, usize), lv: f64, cv: f64) -> Vec3 {
+    let mut v = base;
+    v.set_axis(l, lv);
+    v.set_axis(c, cv);
+    v
+}
+
+/// Steps 2-6 of type II. At each level (Δd apart from A', strictly short of the contour's
+/// deepest point) the stretches of the cut axis where the contour lies deeper than the level are
+/// cut in order from A's side: the first, if it starts on A's side, as in type I (move to the
+/// level at A's cut-axis position, cut); each later one (a pocket) by rising to a travel level
+/// over the ridge before it, rapid along the cut axis to the pocket's edge, rapid down to the
+/// level before this one and feed down to the level, cut. Every cut ends with the 45-degree
+/// back-off e; after the level the tool rises to the travel level over what lies between it and
+/// A's cut-axis position and rapids back there. A travel level is e outside the last level cut
+/// over the highest point passed, so that it clears the steps the levels leave.
+fn levels_type_two(r: &Roughing, a1: Vec3, pts: &[Vec3], limit: usize, ops: &mut Vec<Op>, pos: &mut Vec3) -> Result<(), RoughError> {
+    let axes = r.kind.axes();
+    let (l, c) = axes;
+    let (Some(first), Some(last)) = (pts.first(), pts.last()) else { return Ok(()) };
+    let dir_c = (last.axis(c) - first.axis(c)).signum();
+    // The contour lies on this side of A' along the level axis; its deepest point there.
+    let dir_l = (first.axis(l) - a1.axis(l)).signum();
+    let deepest = pts.iter().map(|p| p.axis(l)).fold(a1.axis(l), |m, v| if (v - m) * dir_l > 0.0 { v } else { m });
+    if dir_l == 0.0 || r.depth_mm <= 0.0 {
+        return Ok(());
+    }
+    // Outward, away from the part: the way the tool backs off.
+    let out = -dir_l;
+    let e = r.back_off_mm;
+    let at = |lv: f64, cv: f64| place(a1, axes, lv, cv);
+    let outer = |a: f64, b: f64| if (a - b) * out >= 0.0 { a } else { b };
+    // The travel level over the contour between two cut-axis positions (nothing stands before
+    // the contour's start).
+    let travel = |from_c: f64, to_c: f64, level: f64| {
+        let (lo, hi) = if from_c < to_c { (from_c, to_c) } else { (to_c, from_c) };
+        let top = pts.iter().filter(|p| p.axis(c) >= lo && p.axis(c) <= hi).map(|p| p.axis(l)).reduce(outer);
+        match top {
+            None => level + out * e,
+            Some(top) => {
+                let whole = ((top - a1.axis(l)) * dir_l / r.depth_mm).floor().max(0.0);
+                outer(a1.axis(l) + dir_l * whole * r.depth_mm, level) + out * e
+            }
+        }
+    };
+    let total = (deepest - a1.axis(l)).abs();
+    let mut k = 1usize;
+    while (k as f64) * r.depth_mm < total - 1e-9 {
+        if k > limit {
+            return Err(RoughError::TooMany);
+        }
+        let level = a1.axis(l) + dir_l * k as f64 * r.depth_mm;
+        let stretches = deeper_stretches(pts, l, c, level, dir_l, a1.axis(c));
+        if stretches.len() > MAX_POCKETS + 1 {
+            return Err(RoughError::TooManyPockets);
+        }
+        for (i, &(from_c, to_c)) in stretches.iter().enumerate() {
+            if i == 0 && from_c == a1.axis(c) {
+                go(at(level, from_c), !r.ns_rapid, ops, pos);
+            } else {
+                let top = outer(travel(pos.axis(c), from_c, level), pos.axis(l));
+                go(at(top, pos.axis(c)), false, ops, pos);
+                go(at(top, from_c), false, ops, pos);
+                // Down at rapid through what the earlier levels cleared, to the level before.
+                let above = level + out * r.depth_mm;
+                go(at(if (above - top) * out < 0.0 { above } else { top }, from_c), false, ops, pos);
+                go(at(level, from_c), true, ops, pos);
+            }
+            go(at(level, to_c), true, ops, pos);
+            go(at(level + out * e, to_c - dir_c * e), true, ops, pos);
+        }
+        let top = outer(travel(pos.axis(c), a1.axis(c), level), pos.axis(l));
+        go(at(top, pos.axis(c)), false, ops, pos);
+        go(at(top, a1.axis(c)), false, ops, pos);
+        k += 1;
+    }
+    Ok(())
+}
+
+/// The stretches `(from, to)` of the cut axis, in the contour's order, where the contour lies
+/// deeper than `level` (the side `dir_l` points to); a stretch that begins at the contour's
+/// start begins at `start_c`, A's cut-axis position (nothing stands before the contour).
+fn deeper_stretches(pts: &[Vec3], l: usize, c: usize, level: f64, dir_l: f64, start_c: f64) -> Vec<(f64, f64)> {
+    let deeper = |p: &Vec3| (p.axis(l) - level) * dir_l > 0.0;
+    let cross = |p: &Vec3, q: &Vec3| {
+        let (a, b) = (p.axis(l), q.axis(l));
+        let u = if (b - a).abs() > 1e-12 { (level - a) / (b - a) } else { 0.0 };
+        p.axis(c) + u * (q.axis(c) - p.axis(c))
+    };
+    let mut out = Vec::new();
+    let mut open = pts.first().filter(|p| deeper(p)).map(|_| start_c);
+    for w in pts.windows(2) {
+        match (open, deeper(&w[0]), deeper(&w[1])) {
+            (None, false, true) => open = Some(cross(&w[0], &w[1])),
+            (Some(from), true, false) => {
+                out.push((from, cross(&w[0], &w[1])));
+                open = None;
+            }
+            _ => {}
+        }
+    }
+    if let (Some(from), Some(p)) = (open, pts.last()) {
+        out.push((from, p.axis(c)));
+    }
+    out
 }
 
 /// G73 pattern repeating (GSK980TDi help text G73): `passes` (d) passes over the whole contour,
@@ -263,7 +388,7 @@ mod tests {
             feed((20.0, -10.0), (20.0, -20.0)),
             feed((20.0, -20.0), (25.0, -20.0)),
         ];
-        let r = Roughing { kind: RoughKind::Turning, start: Vec3::new(25.0, 0.0, 2.0), contour: &contour, allowance: Vec3::new(0.5, 0.0, 0.1), depth_mm: 4.0, back_off_mm: 1.0, ns_rapid: true };
+        let r = Roughing { kind: RoughKind::Turning, start: Vec3::new(25.0, 0.0, 2.0), contour: &contour, allowance: Vec3::new(0.5, 0.0, 0.1), depth_mm: 4.0, back_off_mm: 1.0, ns_rapid: true, type_two: false };
         let ops = expand(&r, 1000).unwrap();
         // A' = (25.5, 2.1); levels 21.5, 17.5, 13.5 (B' is at 10.5).
         let cuts: Vec<(f64, f64)> = ops.iter().filter_map(|o| match o {
@@ -302,7 +427,73 @@ mod tests {
             feed((20.0, -10.0), (15.0, -15.0)),
             feed((15.0, -15.0), (25.0, -20.0)),
         ];
-        let r = Roughing { kind: RoughKind::Turning, start: Vec3::new(25.0, 0.0, 2.0), contour: &contour, allowance: Vec3::default(), depth_mm: 2.0, back_off_mm: 0.5, ns_rapid: true };
+        let r = Roughing { kind: RoughKind::Turning, start: Vec3::new(25.0, 0.0, 2.0), contour: &contour, allowance: Vec3::default(), depth_mm: 2.0, back_off_mm: 0.5, ns_rapid: true, type_two: false };
         assert_eq!(expand(&r, 1000), Err(RoughError::NotMonotonic(0)));
+    }
+
+    /// Type II over one pocket, radius coordinates, no allowance. A (25, 2); contour: B (10, 2),
+    /// out to (20, -10), down into the pocket to (15, -15), out to (25, -20). Δd 2, e 0.5:
+    /// levels 23 ... 11 (the deepest point is B at 10).
+    #[test]
+    fn type_two_cuts_the_pocket_from_over_its_ridge() {
+        let contour = [
+            Op::Rapid { from: Vec3::new(25.0, 0.0, 2.0), to: Vec3::new(10.0, 0.0, 2.0) },
+            feed((10.0, 2.0), (20.0, -10.0)),
+            feed((20.0, -10.0), (15.0, -15.0)),
+            feed((15.0, -15.0), (25.0, -20.0)),
+        ];
+        let r = Roughing { kind: RoughKind::Turning, start: Vec3::new(25.0, 0.0, 2.0), contour: &contour, allowance: Vec3::default(), depth_mm: 2.0, back_off_mm: 0.5, ns_rapid: true, type_two: true };
+        let ops = expand(&r, 1000).unwrap();
+        let cuts: Vec<(f64, f64, f64)> = ops
+            .iter()
+            .filter_map(|o| match o {
+                Op::Feed { from, to, .. } if from.x == to.x && from.z != to.z => Some((to.x, from.z, to.z)),
+                _ => None,
+            })
+            .collect();
+        let near = |a: f64, b: f64| (a - b).abs() < 1e-6;
+        // Level 23 and 21: one stretch each, from A's side to where the last rise meets them
+        // (z -19 and -18); the ridge top (20) is deeper than both.
+        assert!(near(cuts[0].0, 23.0) && near(cuts[0].1, 2.0) && near(cuts[0].2, -19.0), "{cuts:?}");
+        assert!(near(cuts[1].0, 21.0) && near(cuts[1].2, -18.0), "{cuts:?}");
+        // Level 19: from A's side to the ridge (z -8.8: 10 + 10.8 x 10/12 = 19), then the pocket from -11 to -17.
+        assert!(near(cuts[2].0, 19.0) && near(cuts[2].2, -8.8), "{cuts:?}");
+        assert!(near(cuts[3].0, 19.0) && near(cuts[3].1, -11.0) && near(cuts[3].2, -17.0), "{cuts:?}");
+        // Down to level 15 the pocket is cut again at each level; below it only A's side.
+        let pocket_levels: Vec<f64> = cuts.iter().filter(|c| c.1 < -10.0).map(|c| c.0).collect();
+        assert_eq!(pocket_levels.len(), 2, "{cuts:?}");
+        assert!(near(pocket_levels[1], 17.0));
+        // The pocket is entered over the ridge: the last level cut over the ridge top 20 is 21,
+        // plus e: travel at 21.5, down at rapid to the level before (21), feed in to 19.
+        assert!(ops.windows(3).any(|w| matches!(w, [Op::Rapid { to: a, .. }, Op::Rapid { to: b, .. }, Op::Feed { to: f, .. }]
+            if near(a.x, 21.5) && near(a.z, -11.0) && near(b.x, 21.0) && near(f.x, 19.0) && near(f.z, -11.0))), "{ops:?}");
+        // No move passes through the part: every point of every move is outside the contour.
+        let contour_x = |z: f64| -> f64 {
+            if z >= 2.0 { return f64::NEG_INFINITY; }
+            if z >= -10.0 { 10.0 + (2.0 - z) * 10.0 / 12.0 } else if z >= -15.0 { 20.0 - (-10.0 - z) } else if z >= -20.0 { 15.0 + (-15.0 - z) * 2.0 } else { 25.0 }
+        };
+        for o in &ops[..ops.len() - 4] {
+            if let Op::Feed { from, to, .. } | Op::Rapid { from, to } = o {
+                for k in 0..=20 {
+                    let u = k as f64 / 20.0;
+                    let (x, z) = (from.x + u * (to.x - from.x), from.z + u * (to.z - from.z));
+                    assert!(x >= contour_x(z) - 1e-6, "{o:?} passes through the part at ({x}, {z})");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn too_many_pockets() {
+        let mut contour = vec![Op::Rapid { from: Vec3::new(30.0, 0.0, 2.0), to: Vec3::new(10.0, 0.0, 2.0) }];
+        let mut z = 2.0;
+        for _ in 0..12 {
+            contour.push(feed((10.0, z), (20.0, z - 1.0)));
+            contour.push(feed((20.0, z - 1.0), (10.0, z - 2.0)));
+            z -= 2.0;
+        }
+        contour.push(feed((10.0, z), (30.0, z - 1.0)));
+        let r = Roughing { kind: RoughKind::Turning, start: Vec3::new(30.0, 0.0, 2.0), contour: &contour, allowance: Vec3::default(), depth_mm: 1.0, back_off_mm: 0.5, ns_rapid: true, type_two: true };
+        assert_eq!(expand(&r, 1000), Err(RoughError::TooManyPockets));
     }
 }

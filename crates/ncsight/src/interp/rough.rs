@@ -9,7 +9,7 @@
 use super::words::Words;
 use super::{run_block, Interpreter, Outcome, Step};
 use crate::alarm::{Diagnostic, Rule};
-use crate::cycles::rough::{expand, pattern, RoughError, RoughKind, Roughing};
+use crate::cycles::rough::{expand, pattern, RoughError, RoughKind, Roughing, MAX_POCKETS};
 use crate::motion::{Op, Vec3};
 use crate::read::{Block, Word};
 use crate::source::Span;
@@ -274,31 +274,29 @@ impl Interpreter {
             let axis = if level_axis == 0 { "X (U)" } else { "Z (W)" };
             return Err(self.contour_alarm(Rule::ContourCommand, first.span, format!("{code}: the contour's first block N{} must move along {axis}, the axis {code} steps its depth on (help text note 2)", req.ns)));
         }
-        let r = Roughing { kind: req.kind, start: req.start, contour: &contour, allowance: req.allowance, depth_mm: req.depth_mm, back_off_mm: req.back_off_mm, ns_rapid };
+        let r = Roughing { kind: req.kind, start: req.start, contour: &contour, allowance: req.allowance, depth_mm: req.depth_mm, back_off_mm: req.back_off_mm, ns_rapid, type_two };
         let ops = expand(&r, 100_000).map_err(|e| match e {
-            RoughError::NotMonotonic(axis) if type_two && axis == req.kind.axes().0 => self.contour_alarm(
-                Rule::NotSupported,
-                req.span,
-                format!("{code}: the contour N{}..N{} has a pocket; type II roughing of pockets is given only in the help text's figures and is not simulated by ncsight yet", req.ns, req.nf),
-            ),
             RoughError::NotMonotonic(axis) => {
+                let rule = if type_two { "type II roughing needs that along the cut axis" } else { "type I roughing needs that" };
                 let d = self.contour_alarm(
                     Rule::ContourNotMonotonic,
                     req.span,
-                    format!("{code}: the contour N{}..N{} does not move one way only along {} (type I roughing needs that: help text note 3)", req.ns, req.nf, if axis == 0 { "X" } else { "Z" }),
+                    format!("{code}: the contour N{}..N{} does not move one way only along {} ({rule}: help text note 3)", req.ns, req.nf, if axis == 0 { "X" } else { "Z" }),
                 );
                 match &hint {
                     Some(h) => d.with_hint(format!("the contour's blocks warned: {h}")),
                     None => d,
                 }
             }
+            RoughError::TooManyPockets => self.contour_alarm(
+                Rule::ContourNotMonotonic,
+                req.span,
+                format!("{code}: the contour N{}..N{} has more than {MAX_POCKETS} pockets (help text type II, 2)", req.ns, req.nf),
+            ),
             RoughError::TooMany => self.contour_alarm(Rule::MotionLimit, req.span, format!("{code}: more than 100000 roughing passes (Δd too small)")),
             RoughError::NotAPath => self.contour_alarm(Rule::ContourCommand, req.span, format!("{code}: the contour holds a move that is not a line or an arc")),
         })?;
-        let note = type_two.then(|| {
-            let msg = format!("{code}: N{} names both axes, the help text's type II; its path is given only in figures, so ncsight roughs it as type I", req.ns);
-            (first.span, msg)
-        });
+        let note = None;
         self.emit_cycle(&req, ops, out, note)
     }
 
