@@ -121,6 +121,11 @@ fn read_ahead(
             Ok(b) => b,
             Err(e) if e.kind() == io::ErrorKind::Interrupted => continue,
             Err(e) => {
+                // The lines read before the error are interpreted first.
+                if !batch.ranges.is_empty() {
+                    batch.text.truncate(start);
+                    let _ = full.send(Ok(batch));
+                }
                 let _ = full.send(Err(e));
                 return;
             }
@@ -156,10 +161,12 @@ fn read_ahead(
             skipping = false;
         }
         input.consume(used);
-        let between_lines = start == batch.text.len();
-        if between_lines && (batch.is_full() || drained && !batch.ranges.is_empty()) {
+        if !batch.ranges.is_empty() && (batch.is_full() || drained) {
+            // The line being gathered, if any, moves on to the next batch.
             let mut next = empty.try_recv().unwrap_or_default();
             next.clear();
+            next.text.extend_from_slice(&batch.text[start..]);
+            batch.text.truncate(start);
             if full.send(Ok(std::mem::replace(&mut batch, next))).is_err() {
                 return;
             }
@@ -218,6 +225,33 @@ mod tests {
         }
     }
 
+    /// An input error after some lines: those lines are interpreted, then the error is given.
+    #[test]
+    fn lines_before_an_input_error_count() {
+        struct Broken(Option<Vec<u8>>);
+        impl io::Read for Broken {
+            fn read(&mut self, buf: &mut [u8]) -> io::Result<usize> {
+                match self.0.take() {
+                    Some(d) => {
+                        buf[..d.len()].copy_from_slice(&d);
+                        Ok(d.len())
+                    }
+                    None => Err(io::Error::new(io::ErrorKind::ConnectionReset, "reset")),
+                }
+            }
+        }
+        let mut p = program(Mode::Check);
+        let mut alarms = Vec::new();
+        let r = drive(Box::new(io::BufReader::new(Broken(Some(b"G0 X1. Q5\nG0 X2".to_vec())))), &mut p, &mut |e, _| {
+            if let Event::Diagnostic(d) = e {
+                alarms.push(d.span.line);
+            }
+            Ok(())
+        });
+        assert_eq!(r.unwrap_err().kind(), io::ErrorKind::ConnectionReset);
+        assert_eq!(alarms, vec![1]);
+    }
+
     /// A line longer than the kept length: its start is read (and is one alarm), the rest is
     /// skipped, and the next line is line 2.
     #[test]
@@ -263,14 +297,17 @@ mod tests {
             }
         }
         let (tx, rx) = mpsc::channel();
+        let (tx2, rx2) = mpsc::channel::<()>();
         let (done_tx, done_rx) = mpsc::channel();
         std::thread::spawn(move || {
             let (e1, _) = events_of(Box::new(io::BufReader::new(Endless(b"G0 X1.\nM30\n".to_vec(), 0))), Mode::Run);
             let (e2, _) = events_of(Box::new(io::BufReader::new(Stuck(Some(b"G0 X1.\nM30\n".to_vec()), rx))), Mode::Run);
-            done_tx.send((e1.len(), e2.len())).unwrap();
+            // A line begun but not ended after the programme end: the run does not wait for it.
+            let (e3, _) = events_of(Box::new(io::BufReader::new(Stuck(Some(b"G0 X1.\nM30\nG0 X".to_vec()), rx2))), Mode::Run);
+            done_tx.send((e1.len(), e2.len().min(e3.len()))).unwrap();
         });
         let (n1, n2) = done_rx.recv_timeout(std::time::Duration::from_secs(20)).expect("the run did not return");
         assert!(n1 > 0 && n2 > 0);
-        drop(tx);
+        drop((tx, tx2));
     }
 }

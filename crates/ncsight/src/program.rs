@@ -300,11 +300,11 @@ impl Program {
     /// Feed the next line (with or without its line break).
     pub fn feed_line(&mut self, raw: &[u8], sink: &mut dyn FnMut(Event)) {
         if !self.wants_more() {
-            self.core.line_no += 1;
+            self.core.line_no = self.core.line_no.wrapping_add(1);
             return;
         }
         let mut read = std::mem::take(&mut self.core.read);
-        self.line_reader().read(self.core.line_no + 1, raw, &mut read);
+        self.line_reader().read(self.core.line_no.wrapping_add(1), raw, &mut read);
         self.feed_read(&mut read, sink);
         self.core.read = read;
     }

@@ -98,3 +98,27 @@ fn m00_in_a_contour_is_ignored_in_roughing_and_g70_ends_its_block() {
     assert!(last_g70.block_end);
     assert!(matches!(last_g70.op, Op::Rapid { .. }));
 }
+
+/// G83/G87 are group 01 codes on the GSK lathe: a thread or a G90 cycle before them does not come
+/// back after G80 (the mode is then G00), and a G87 after a G83 does not take G83's bottom.
+#[test]
+fn lathe_drilling_ends_the_motion_mode_and_its_data() {
+    let (r, d) = run(&format!("{START}G00 X0 Z2\nG32 Z-10 F1.5\nG83 X0 Z-15 F0.1\nG80\nZ-20\nM30\n"));
+    assert_eq!(alarm(&d), None, "{d:?}");
+    // Line 5 drills (a feed, no thread); line 7 is a rapid.
+    assert!(r.iter().any(|r| r.span.line == 5 && matches!(r.op, Op::Feed { .. })));
+    assert!(r.iter().filter(|r| r.span.line == 7).all(|r| matches!(r.op, Op::Rapid { .. })), "{r:?}");
+    let (r, d) = run(&format!("{START}G90 X30 Z-10 F0.2\nG83 X0 Z-5 F0.1\nG80\nX20\nM30\n"));
+    assert_eq!(alarm(&d), None);
+    assert_eq!(r.iter().filter(|r| r.span.line == 6).count(), 1, "{r:?}");
+    let (_, d) = run(&format!("{START}G00 X20 Z2\nG83 Z-5 F0.1\nG87 Z-8\nM30\n"));
+    assert_eq!(alarm(&d), Some("NCS-E36"));
+}
+
+/// Pecks land on start + k Q exactly: 2 mm in Q0.2 mm pecks is 10 feeds, not 10 and a sliver.
+#[test]
+fn lathe_pecks_do_not_drift() {
+    let (r, d) = run(&format!("{START}G00 X0 Z0\nG83 Z-2. Q200 R0.1 F0.1\nM30\n"));
+    assert_eq!(alarm(&d), None);
+    assert_eq!(feeds_on_line(&r, 4).len(), 10);
+}

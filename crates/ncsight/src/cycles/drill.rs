@@ -264,9 +264,14 @@ fn from_start(h: &Hole, p: &impl Fn(f64) -> Local, s: &mut dyn FnMut(Step)) {
     if h.q <= 0.0 || (!h.deep && h.d <= 0.0) {
         s(Step::Feed(p(h.bottom), h.feed));
     } else {
-        let mut depth = start;
+        // Peck k ends at start + k Q, computed afresh (no drift from adding Q again and again,
+        // which would leave a sliver of a last peck); within a nanometre of the bottom is the
+        // bottom, as the control's whole increments make it.
+        let mut k = 0.0;
         loop {
-            let next = if (h.bottom - depth).abs() <= h.q { h.bottom } else { depth + down * h.q };
+            k += 1.0;
+            let depth = start + down * h.q * k;
+            let next = if (h.bottom - depth) * down <= 1e-6 { h.bottom } else { depth };
             s(Step::Feed(p(next), h.feed));
             if next == h.bottom {
                 break;
@@ -280,7 +285,6 @@ fn from_start(h: &Hole, p: &impl Fn(f64) -> Local, s: &mut dyn FnMut(Step)) {
             } else {
                 s(Step::Rapid(p(back(next))));
             }
-            depth = next;
         }
     }
     if h.dwell_s > 0.0 {

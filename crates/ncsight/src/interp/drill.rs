@@ -63,7 +63,10 @@ fn take_dwell(step: &mut Step, words: &mut Words) -> Result<(), Diagnostic> {
         if w.decimal {
             return Err(step.alarm(Rule::IllegalDecimalPoint, w.span, format!("{}: the dwell P is a whole number of ms", w.text())));
         }
-        step.st.drill.dwell_s = Some(w.value.max(0.0) / 1000.0);
+        if w.value < 0.0 {
+            return Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("{}: the dwell P cannot be negative", w.text())));
+        }
+        step.st.drill.dwell_s = Some(w.value / 1000.0);
     }
     Ok(())
 }
@@ -165,7 +168,8 @@ fn from_start_block(step: &mut Step, words: &mut Words, kind: DrillKind) -> Resu
     let d = step.st.drill;
     let q = d.q.unwrap_or(0.0);
     let retract = d.r.map_or(0.0, |r| r.0);
-    if q > 0.0 && ((bottom - start).abs() / q).ceil() * f64::from(repeats) > MAX_PECKS {
+    let one_feed = q <= 0.0 || (!d.deep && retract <= 0.0);
+    if !one_feed && ((bottom - start).abs() / q).ceil() * f64::from(repeats) > MAX_PECKS {
         return Err(step.alarm(Rule::MotionLimit, step.span, format!("{code}: more than {MAX_PECKS} pecks in one block (Q too small for the depth, times K)")));
     }
     let rpm = step.rpm_here();

@@ -470,7 +470,14 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
             GFn::ReturnR => st.return_initial = false,
             // G80: the cycle and its hole data end; F stays (seed 003 8.1.4).
             GFn::CycleCancel => step.st.drill = Default::default(),
-            GFn::Drill(kind) => codes.drill = Some(kind),
+            GFn::Drill(kind) => {
+                codes.drill = Some(kind);
+                // The GSK lathe's G83/G87 are group 01 codes: they end the motion mode in force
+                // (its thread and box-cycle memories with it); G80 then leaves G00 (docs).
+                if kind.from_start() {
+                    codes.motion = Some((w.span, Motion::Rapid));
+                }
+            }
             GFn::Dwell | GFn::ReferenceReturn | GFn::LatheCoordinateSet | GFn::MillCoordinateSet | GFn::CompoundThread(_) | GFn::PeckCycle(_) | GFn::Rough(_) | GFn::Finish => {
                 codes.non_modal = Some((w.span, g.function))
             }
@@ -494,8 +501,12 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
         if m != step.st.motion {
             step.st.box_cycle = Default::default();
         }
-        // A group 01 code cancels a drilling cycle as G80 does (seed 003 8.1.4).
-        step.st.drill = Default::default();
+        // A group 01 code cancels a drilling cycle as G80 does (seed 003 8.1.4); a GSK lathe
+        // cycle restated keeps its data, another one starts afresh (its bottom is on another
+        // axis).
+        if !codes.drill.is_some_and(|k| k.from_start() && step.st.drill.kind == Some(k)) {
+            step.st.drill = Default::default();
+        }
     }
     let motion_now = codes.motion.map(|(_, m)| m).unwrap_or(step.st.motion);
     let axis_letters: &[u8] = if profile.incremental_addresses { b"XYZUVW" } else { b"XYZ" };

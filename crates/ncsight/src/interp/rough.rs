@@ -212,6 +212,10 @@ impl Interpreter {
             if st.rough_request.is_some() || st.finish_request.is_some() {
                 return Err(self.contour_alarm(Rule::ContourCommand, b.span, format!("{code}: a contour block cannot call a cycle itself")));
             }
+            if let Some(kind) = st.drill.kind {
+                // G83/G87 note 3: no drilling cycle inside G71-G73.
+                return Err(self.contour_alarm(Rule::ContourCommand, b.span, format!("{code}: a contour block cannot run the drilling cycle {}", kind.code())));
+            }
         }
         // Help text notes 1 and 2: the ns block makes one G00 or G01 move.
         let ns_span = blocks[0].span;
