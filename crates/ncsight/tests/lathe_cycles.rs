@@ -122,3 +122,19 @@ fn lathe_pecks_do_not_drift() {
     assert_eq!(alarm(&d), None);
     assert_eq!(feeds_on_line(&r, 4).len(), 10);
 }
+
+/// FANUC 3401#0 (DPI) set: a length without a decimal point is millimetres, as in the ICNC
+/// course programmes of the corpus (`G03 X26 Z-13 R3`); unset, it is 0.001 mm (warned).
+#[test]
+fn calculator_type_input_on_fanuc() {
+    let text = "G99 G97 S500 M03\nG00 X20 Z1\nG01 Z-10 F0.2\nG03 X26 Z-13 R3\nM30\n";
+    let (r, d) = common::run_plain("fanuc0t", &["3401.0=1"], text);
+    assert_eq!(alarm(&d), None, "{d:?}");
+    assert!(d.iter().all(|d| d.rule != ncsight::Rule::IntegerLength));
+    let end = r.iter().rev().find_map(|r| r.op.end_point()).unwrap();
+    assert!((2.0 * end.x - 26.0).abs() < 1e-9 && (end.z + 13.0).abs() < 1e-9);
+    let (r, d) = common::run_plain("fanuc0t", &[], text);
+    assert!(d.iter().any(|d| d.rule == ncsight::Rule::IntegerLength));
+    let end = r.iter().rev().find_map(|r| r.op.end_point()).unwrap();
+    assert!((2.0 * end.x - 0.026).abs() < 1e-12);
+}

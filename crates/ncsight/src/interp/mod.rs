@@ -138,7 +138,7 @@ impl Step<'_> {
     #[inline]
     fn length(&mut self, w: &Word) -> Result<f64, Diagnostic> {
         let mut v = w.value;
-        if !w.decimal && self.profile.integer_lengths == IntegerLengths::LeastIncrement {
+        if !w.decimal && self.params.integer_lengths() == IntegerLengths::LeastIncrement {
             v *= if self.st.inch { 0.0001 } else { 0.001 };
             if w.value != 0.0 {
                 self.warn_increments(w, v);
@@ -773,7 +773,7 @@ fn dwell(step: &mut Step, words: &mut Words) -> Result<(), Diagnostic> {
         }
         w.value / 1000.0
     } else if let Some(w) = x.or(u) {
-        if w.decimal || step.profile.integer_lengths == IntegerLengths::Millimetres {
+        if w.decimal || step.params.integer_lengths() == IntegerLengths::Millimetres {
             w.value
         } else {
             w.value / 1000.0

@@ -52,7 +52,7 @@ impl Step<'_> {
     /// input increments (BEHAVIOUR.md "Numbers and words").
     fn lead_word(&mut self, w: &Word) -> f64 {
         let mut v = w.value;
-        if !w.decimal && self.profile.integer_lengths == IntegerLengths::LeastIncrement {
+        if !w.decimal && self.params.integer_lengths() == IntegerLengths::LeastIncrement {
             v *= if self.st.inch { 0.0001 } else { 0.001 };
         }
         if self.st.inch { v * 25.4 } else { v }

@@ -121,6 +121,7 @@ pub static PROFILE: Profile = Profile {
     kind: MachineKind::Mill,
     diameter_x: false,
     integer_lengths: IntegerLengths::LeastIncrement,
+    calculator_input: Some(ParamKey::Number(3401, Some(0))),
     alarm_style: AlarmStyle::Fanuc,
     incremental_addresses: false,
     power_on_per_rev: false,
@@ -131,7 +132,7 @@ pub static PROFILE: Profile = Profile {
     peck_back_off: None,
     g_codes: &[common::G_CODES, G_CODES],
     m_codes: &[common::M_CODES, M_CODES],
-    params: &[PARAMS, DRY_RUN, SETTINGS],
+    params: &[PARAMS, super::FANUC_INPUT, DRY_RUN, SETTINGS],
     time: TimeKeys {
         rapid: [ParamKey::Number(518, None), ParamKey::Number(519, None), ParamKey::Number(520, None)],
         dry_run: ParamKey::Setting("dry_run_mm_min"),

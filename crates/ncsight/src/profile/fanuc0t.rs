@@ -91,6 +91,7 @@ pub static PROFILE: Profile = Profile {
     kind: MachineKind::Lathe,
     diameter_x: true,
     integer_lengths: IntegerLengths::LeastIncrement,
+    calculator_input: Some(ParamKey::Number(3401, Some(0))),
     alarm_style: AlarmStyle::Fanuc,
     incremental_addresses: true,
     power_on_per_rev: true,
@@ -101,7 +102,7 @@ pub static PROFILE: Profile = Profile {
     peck_back_off: Some(ParamKey::Number(5139, None)),
     g_codes: &[common::G_CODES, lathe_a::G_CODES, EXTRA],
     m_codes: &[common::M_CODES, lathe_a::M_CODES],
-    params: &[FANUC_RATES, PARAMS, DRY_RUN, SETTINGS],
+    params: &[FANUC_RATES, PARAMS, super::FANUC_INPUT, DRY_RUN, SETTINGS],
     time: TimeKeys {
         rapid: [ParamKey::Number(1420, None), ParamKey::Number(1420, None), ParamKey::Number(1420, None)],
         dry_run: ParamKey::Setting("dry_run_mm_min"),

@@ -338,6 +338,17 @@ pub const FANUC_RATES: &[ParamDef] = &[
     },
 ];
 
+/// FANUC input format: 3401#0 DPI (params_alarms.md, FANUC: [inferred]).
+pub const FANUC_INPUT: &[ParamDef] = &[ParamDef {
+    key: ParamKey::Number(3401, Some(0)),
+    meaning: "DPI: 1 = a length without a decimal point is in mm (inch), calculator-type input; 0 = in least input increments",
+    unit: "bit",
+    min: 0.0,
+    max: 1.0,
+    default: 0.0,
+    source: "params_alarms.md, FANUC (inferred)",
+}];
+
 pub const SETTINGS: &[ParamDef] = &[
     ParamDef {
         key: ParamKey::Setting("rapid_accel_ms"),
@@ -382,6 +393,9 @@ pub struct Profile {
     /// X words are diameters (lathes).
     pub diameter_x: bool,
     pub integer_lengths: IntegerLengths,
+    /// The parameter that makes a length without a decimal point millimetres (inches) instead
+    /// (FANUC 3401#0 DPI, "calculator-type" input), if the profile knows one.
+    pub calculator_input: Option<ParamKey>,
     pub alarm_style: AlarmStyle,
     /// `U`/`W` (and `V`) are incremental X/Z (Y) words: lathes with G-code system A.
     pub incremental_addresses: bool,
@@ -491,6 +505,9 @@ pub struct Params {
     values: Vec<f64>,
     /// The feed limit, read by every cutting block: kept up to date by `set`.
     feed_max_mm_min: f64,
+    /// How lengths without a decimal point read (the profile's rule, or calculator-type input
+    /// when its parameter is set): kept up to date by `set`.
+    integer_lengths: IntegerLengths,
 }
 
 /// Why a `--param` could not be taken.
@@ -517,8 +534,13 @@ impl std::error::Error for ParamError {}
 
 impl Params {
     pub fn defaults(profile: &'static Profile) -> Params {
-        let mut params = Params { profile, values: profile.all_params().map(|p| p.default).collect(), feed_max_mm_min: 0.0 };
-        params.feed_max_mm_min = params.get(profile.time.feed_max);
+        let mut params = Params {
+            profile,
+            values: profile.all_params().map(|p| p.default).collect(),
+            feed_max_mm_min: 0.0,
+            integer_lengths: profile.integer_lengths,
+        };
+        params.cache();
         params
     }
 
@@ -549,8 +571,22 @@ impl Params {
             return Err(ParamError::OutOfRange { key: key.to_string(), value, min: def.min, max: def.max, unit: def.unit });
         }
         self.values[i] = value;
-        self.feed_max_mm_min = self.get(self.profile.time.feed_max);
+        self.cache();
         Ok(())
+    }
+
+    /// Refresh the values kept for the blocks that read them all the time.
+    fn cache(&mut self) {
+        self.feed_max_mm_min = self.get(self.profile.time.feed_max);
+        self.integer_lengths = match self.profile.calculator_input {
+            Some(k) if self.get(k) != 0.0 => IntegerLengths::Millimetres,
+            _ => self.profile.integer_lengths,
+        };
+    }
+
+    /// How a length without a decimal point reads under these parameters.
+    pub fn integer_lengths(&self) -> IntegerLengths {
+        self.integer_lengths
     }
 
     /// The value of a parameter the profile defines. Asking for one it lacks is a programming

@@ -48,6 +48,7 @@ pub static PROFILE: Profile = Profile {
     kind: MachineKind::Lathe,
     diameter_x: true,
     integer_lengths: IntegerLengths::LeastIncrement,
+    calculator_input: None,
     alarm_style: AlarmStyle::Project,
     incremental_addresses: true,
     power_on_per_rev: true,
