@@ -105,3 +105,15 @@ fn hole_data_in_least_increments_without_a_point() {
     assert_eq!(holes(&r, -5.0).len(), 1);
     assert!(d.iter().filter(|d| d.code == "NCS-W02").count() >= 3);
 }
+
+/// 2 mm in pecks of 0.2: ten feeds, the last to the bottom, no sliver of an eleventh (the control
+/// counts in increments; rs274 makes 11 here by adding Q in floating point).
+#[test]
+fn pecks_do_not_drift() {
+    for code in ["G83", "G73"] {
+        let (r, _) = run(&[], &format!("{START}G98 {code} X0. Y0. Z-2. R0. Q0.2 F100.\nM30\n"));
+        let feeds: Vec<f64> = r.iter().filter_map(|r| if let Op::Feed { to, .. } = r.op { Some(to.z) } else { None }).collect();
+        assert_eq!(feeds.len(), 10, "{code}: {feeds:?}");
+        assert_eq!(*feeds.last().unwrap(), -2.0);
+    }
+}

@@ -176,9 +176,14 @@ pub fn expand_each(h: &Hole, s: &mut dyn FnMut(Step)) {
     let down = if h.bottom < h.r { -1.0 } else { 1.0 };
     match h.kind {
         DrillKind::G73 | DrillKind::G83 => {
-            let mut depth = h.r;
+            // Peck k ends at R + k Q, computed afresh, and within a nanometre of the bottom is the
+            // bottom: the control counts in whole increments, so rounding leaves no sliver of a
+            // last peck (LinuxCNC's rs274, adding Q again and again, sometimes makes one).
+            let mut k = 0.0;
             loop {
-                let next = if (h.bottom - depth).abs() <= h.q { h.bottom } else { depth + down * h.q };
+                k += 1.0;
+                let depth = h.r + down * h.q * k;
+                let next = if (h.bottom - depth) * down <= 1e-6 { h.bottom } else { depth };
                 s(Step::Feed(p(next), h.feed));
                 if next == h.bottom {
                     break;
@@ -189,7 +194,6 @@ pub fn expand_each(h: &Hole, s: &mut dyn FnMut(Step)) {
                     s(Step::Rapid(p(h.r)));
                     s(Step::Rapid(p(next - down * h.d)));
                 }
-                depth = next;
             }
         }
         _ => s(Step::Feed(p(h.bottom), h.feed)),
