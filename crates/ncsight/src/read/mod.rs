@@ -292,13 +292,21 @@ impl Reader {
                     } else if c == b'#' {
                         self.diag(Rule::NotSupported, line_no, i, 1, "macro variables (#) are not supported by ncsight")
                     } else if c.is_ascii() {
-                        self.diag(
+                        let d = self.diag(
                             Rule::BadCharacter,
                             line_no,
                             i,
                             1,
                             format!("character '{}' is not allowed outside a comment", c as char),
-                        )
+                        );
+                        // `[BILLET X42.86 Z82`: a line for a CNC simulator's stock, not G-code
+                        // (corpus: the ICNC course programmes).
+                        let word = s[i + 1..].iter().take_while(|b| b.is_ascii_alphabetic()).count();
+                        if c == b'[' && block_start.is_none() && word >= 3 {
+                            d.with_hint("a line that starts with '[' and a name is a CNC simulator's setting (its stock, say), not G-code: the control stops here; put it in ( ) or delete it")
+                        } else {
+                            d
+                        }
                     } else {
                         self.diag(
                             Rule::BadCharacter,
@@ -567,6 +575,15 @@ mod tests {
         assert!(l.tape_mark);
         let l = Reader::new(AlarmStyle::Project).read_line(3, b"\x1A");
         assert!(l.end_of_file);
+    }
+
+    #[test]
+    fn a_simulator_stock_line_gets_a_hint() {
+        let d = read("[BILLET X42.86 Z82").blocks.remove(0).unwrap_err();
+        assert_eq!(d.rule, Rule::BadCharacter);
+        assert!(d.hint.as_deref().unwrap().contains("simulator"));
+        // A bracket after a word is an expression, not such a line.
+        assert!(read("X[1+2]").blocks[0].is_ok());
     }
 
     #[test]
