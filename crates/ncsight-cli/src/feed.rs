@@ -63,6 +63,8 @@ pub fn drive(
         .spawn(move || read_ahead(input, &reader, &full_tx, &empty_rx))?;
     let mut pending: io::Result<()> = Ok(());
     let mut stopped = false;
+    // The number of the line being fed (the reader counts the same way).
+    let mut line_no = 0u32;
     'batches: for batch in full_rx.iter() {
         let mut batch = batch?;
         for (i, range) in batch.ranges.iter().enumerate() {
@@ -70,10 +72,17 @@ pub fn drive(
                 stopped = true;
                 break 'batches;
             }
+            line_no = line_no.wrapping_add(1);
             let line = &batch.text[range.clone()];
             program.feed_from(&batch.read, i, &mut |e| {
+                // A diagnostic about an earlier line (a cycle that ends here) gets no source
+                // text: that line is gone from memory.
+                let text = match &e {
+                    Event::Diagnostic(d) if d.span.line != line_no => &b""[..],
+                    _ => line,
+                };
                 if pending.is_ok() {
-                    pending = on_event(&e, line);
+                    pending = on_event(&e, text);
                 }
             });
             pending.as_ref().map_err(|e| io::Error::new(e.kind(), e.to_string()))?;

@@ -116,6 +116,7 @@ rules! {
     ReturnLevel => Warning, "NCS-W19", None, "RETURN LEVEL DIFFERS FROM G98/G99";
     NotReached => Warning, "NCS-W20", None, "OPERATOR ACTION AFTER THE PROGRAMME END";
     CycleWords => Warning, "NCS-W21", None, "T, S, M BELONG BEFORE THE CYCLE";
+    RoughingCollision => Warning, "NCS-W22", None, "ROUGHING MOVES THROUGH THE PART";
 }
 
 impl Rule {

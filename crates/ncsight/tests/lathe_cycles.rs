@@ -138,3 +138,24 @@ fn calculator_type_input_on_fanuc() {
     let end = r.iter().rev().find_map(|r| r.op.end_point()).unwrap();
     assert!((2.0 * end.x - 0.026).abs() < 1e-12);
 }
+
+/// Type II tells what the control would also do: a straight rapid back to A through a ridge the
+/// contour passed (step 8), a W allowance that shifts the pocket walls, a contour that rises
+/// beyond the start point.
+#[test]
+fn type_two_warns_what_runs_into_the_part() {
+    let warned = |contour: &str, allowance: &str| {
+        let text = format!("G99 M03 S500\nG00 X50 Z2\nG71 U2 R0.5\nG71 P10 Q20 {allowance} F0.2\n{contour}\nM30\n");
+        let (_, d) = run(&text);
+        assert_eq!(alarm(&d), None, "{d:?}");
+        d.iter().filter(|d| d.rule == ncsight::Rule::RoughingCollision).map(|d| d.message.clone()).collect::<Vec<_>>()
+    };
+    let w = warned("N10 G00 X20 Z2\nG01 X40 Z-10\nZ-15\nN20 X30 Z-20", "U0 W0");
+    assert!(w.len() == 1 && w[0].contains("step 8"), "{w:?}");
+    let w = warned("N10 G00 X20 Z2\nG01 X40 Z-10\nX30\nZ-15\nN20 X50 Z-20", "U0.4 W0.3");
+    assert!(w.len() == 1 && w[0].contains("allowance W"), "{w:?}");
+    let w = warned("N10 G00 X20 Z2\nG01 X60 Z-10\nX30 Z-15\nN20 X70 Z-20", "U0 W0");
+    assert!(w.iter().any(|m| m.contains("beyond the start point")), "{w:?}");
+    // The plain pocket of the golden trace: nothing to tell.
+    assert!(warned("N10 G00 X20 Z2\nG01 X40 Z-10\nX30 Z-15\nN20 X50 Z-20", "U0 W0").is_empty());
+}

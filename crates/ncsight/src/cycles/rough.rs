@@ -72,6 +72,27 @@ pub struct Roughing<'a> {
 /// Most pockets a type II contour may have (help text G71/G72 type II, 2).
 pub const MAX_POCKETS: usize = 10;
 
+/// What a roughing does that its programmer should hear of (the control does it as well).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum RoughNote {
+    /// Step 8's straight rapid from C' back to A passes through the part: the contour ends
+    /// deeper than something it passed.
+    EndRapidThroughPart,
+    /// Type II with pockets and an allowance along the cut axis: the whole contour moves, so one
+    /// wall of each pocket is left thinner than the allowance, or cut into.
+    AllowanceMovesPocketWalls,
+    /// The contour rises outside the start point A' along the depth axis: the levels begin at A',
+    /// so the roughing runs into it.
+    ContourBeyondStart,
+}
+
+/// The moves of a roughing, and what to tell about them.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Rough {
+    pub ops: Vec<Op>,
+    pub notes: Vec<RoughNote>,
+}
+
 /// Why a contour cannot be roughed.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub enum RoughError {
@@ -134,9 +155,9 @@ fn polyline(contour: &[Op], chord_mm: f64) -> Vec<Vec3> {
 
 /// The moves of one roughing block (feeds carry 0: the interpreter sets each from F), at most
 /// `limit` passes.
-pub fn expand(r: &Roughing, limit: usize) -> Result<Vec<Op>, RoughError> {
+pub fn expand(r: &Roughing, limit: usize) -> Result<Rough, RoughError> {
     let (l, c) = r.kind.axes();
-    let Some(first) = r.contour.first() else { return Ok(Vec::new()) };
+    let Some(first) = r.contour.first() else { return Ok(Rough { ops: Vec::new(), notes: Vec::new() }) };
     let b = first.end_point().ok_or(RoughError::NotAPath)?;
     let a1 = shift(&r.start, &r.allowance);
     let b1 = shift(&b, &r.allowance);
@@ -173,9 +194,10 @@ pub fn expand(r: &Roughing, limit: usize) -> Result<Vec<Op>, RoughError> {
     let mut pos = r.start;
     // 1: A to A'.
     go(a1, false, &mut ops, &mut pos);
+    let mut notes = Vec::new();
     if r.type_two {
         // 2-6 of type II: the levels strictly between A' and the deepest point of the contour.
-        levels_type_two(r, a1, &pts, limit, &mut ops, &mut pos)?;
+        levels_type_two(r, a1, &pts, limit, &mut ops, &mut pos, &mut notes)?;
     } else {
         // 2-6: the levels strictly between A' and B'.
         let total = (b1.axis(l) - a1.axis(l)).abs();
@@ -212,9 +234,32 @@ pub fn expand(r: &Roughing, limit: usize) -> Result<Vec<Op>, RoughError> {
         pos = op.end_point().unwrap_or(pos);
         ops.push(op);
     }
-    // 8: back to A.
+    // 8: back to A, a straight rapid (the help text's step 8), whatever lies in between.
+    let inward = (b1.axis(l) - a1.axis(l)).signum();
+    let through = (0..=64).any(|k| {
+        let u = f64::from(k) / 64.0;
+        let (lv, cv) = (pos.axis(l) + u * (r.start.axis(l) - pos.axis(l)), pos.axis(c) + u * (r.start.axis(c) - pos.axis(c)));
+        contour_level_at(&pts, l, c, cv).is_some_and(|at| (lv - at) * inward > 1e-6)
+    });
+    if through {
+        notes.push(RoughNote::EndRapidThroughPart);
+    }
     go(r.start, false, &mut ops, &mut pos);
-    Ok(ops)
+    Ok(Rough { ops, notes })
+}
+
+/// The contour's position along the level axis `l` at `cv` on the cut axis `c` (the contour is
+/// monotonic along `c`), if `cv` lies within its extent.
+fn contour_level_at(pts: &[Vec3], l: usize, c: usize, cv: f64) -> Option<f64> {
+    pts.windows(2).find_map(|w| {
+        let (p, q) = (w[0].axis(c), w[1].axis(c));
+        let (lo, hi) = if p < q { (p, q) } else { (q, p) };
+        if cv < lo || cv > hi {
+            return None;
+        }
+        let u = if (q - p).abs() > 1e-12 { (cv - p) / (q - p) } else { 0.0 };
+        Some(w[0].axis(l) + u * (w[1].axis(l) - w[0].axis(l)))
+    })
 }
 
 /// Append a move to `to` (a feed or a rapid) unless the tool is there already.
@@ -242,7 +287,15 @@ fn place(base: Vec3, (l, c): (usize, usize), lv: f64, cv: f64) -> Vec3 {
 /// back-off e; after the level the tool rises to the travel level over what lies between it and
 /// A's cut-axis position and rapids back there. A travel level is e outside the last level cut
 /// over the highest point passed, so that it clears the steps the levels leave.
-fn levels_type_two(r: &Roughing, a1: Vec3, pts: &[Vec3], limit: usize, ops: &mut Vec<Op>, pos: &mut Vec3) -> Result<(), RoughError> {
+fn levels_type_two(
+    r: &Roughing,
+    a1: Vec3,
+    pts: &[Vec3],
+    limit: usize,
+    ops: &mut Vec<Op>,
+    pos: &mut Vec3,
+    notes: &mut Vec<RoughNote>,
+) -> Result<(), RoughError> {
     let axes = r.kind.axes();
     let (l, c) = axes;
     let (Some(first), Some(last)) = (pts.first(), pts.last()) else { return Ok(()) };
@@ -256,17 +309,43 @@ fn levels_type_two(r: &Roughing, a1: Vec3, pts: &[Vec3], limit: usize, ops: &mut
     // Outward, away from the part: the way the tool backs off.
     let out = -dir_l;
     let e = r.back_off_mm;
+    // Pockets: each turn from going deeper to coming out again (help text type II, 2).
+    let mut pockets = 0usize;
+    let mut was = 0.0;
+    for w in pts.windows(2) {
+        let d = (w[1].axis(l) - w[0].axis(l)) * dir_l;
+        let now = if d > 1e-9 { 1.0 } else if d < -1e-9 { -1.0 } else { continue };
+        if was > 0.0 && now < 0.0 {
+            pockets += 1;
+        }
+        was = now;
+    }
+    if pockets > MAX_POCKETS {
+        return Err(RoughError::TooManyPockets);
+    }
+    if pockets > 0 && r.allowance.axis(c) != 0.0 {
+        notes.push(RoughNote::AllowanceMovesPocketWalls);
+    }
+    if pts.iter().any(|p| (p.axis(l) - a1.axis(l)) * dir_l < -1e-9) {
+        notes.push(RoughNote::ContourBeyondStart);
+    }
     let at = |lv: f64, cv: f64| place(a1, axes, lv, cv);
     let outer = |a: f64, b: f64| if (a - b) * out >= 0.0 { a } else { b };
     // The travel level over the contour between two cut-axis positions (nothing stands before
     // the contour's start).
     let travel = |from_c: f64, to_c: f64, level: f64| {
         let (lo, hi) = if from_c < to_c { (from_c, to_c) } else { (to_c, from_c) };
-        let top = pts.iter().filter(|p| p.axis(c) >= lo && p.axis(c) <= hi).map(|p| p.axis(l)).reduce(outer);
-        match top {
+        let inside = pts.iter().filter(|p| p.axis(c) >= lo && p.axis(c) <= hi).map(|p| p.axis(l));
+        let ends = [lo, hi].into_iter().filter_map(|cv| contour_level_at(pts, l, c, cv));
+        match inside.chain(ends).reduce(outer) {
             None => level + out * e,
             Some(top) => {
-                let whole = ((top - a1.axis(l)) * dir_l / r.depth_mm).floor().max(0.0);
+                // The last level cut over the top lies strictly outside it (the test of
+                // `deeper_stretches`): a level exactly at a flat leaves its slab standing.
+                let mut whole = ((top - a1.axis(l)) * dir_l / r.depth_mm).floor().max(0.0);
+                while whole > 0.0 && (top - (a1.axis(l) + dir_l * whole * r.depth_mm)) * dir_l <= 0.0 {
+                    whole -= 1.0;
+                }
                 outer(a1.axis(l) + dir_l * whole * r.depth_mm, level) + out * e
             }
         }
@@ -279,9 +358,6 @@ fn levels_type_two(r: &Roughing, a1: Vec3, pts: &[Vec3], limit: usize, ops: &mut
         }
         let level = a1.axis(l) + dir_l * k as f64 * r.depth_mm;
         let stretches = deeper_stretches(pts, l, c, level, dir_l, a1.axis(c));
-        if stretches.len() > MAX_POCKETS + 1 {
-            return Err(RoughError::TooManyPockets);
-        }
         for (i, &(from_c, to_c)) in stretches.iter().enumerate() {
             if i == 0 && from_c == a1.axis(c) {
                 go(at(level, from_c), !r.ns_rapid, ops, pos);
@@ -295,7 +371,9 @@ fn levels_type_two(r: &Roughing, a1: Vec3, pts: &[Vec3], limit: usize, ops: &mut
                 go(at(level, from_c), true, ops, pos);
             }
             go(at(level, to_c), true, ops, pos);
-            go(at(level + out * e, to_c - dir_c * e), true, ops, pos);
+            // The back-off, at 45 degrees but no wider than the stretch (a narrow pocket).
+            let back = e.min((to_c - from_c).abs());
+            go(at(level + out * e, to_c - dir_c * back), true, ops, pos);
         }
         let top = outer(travel(pos.axis(c), a1.axis(c), level), pos.axis(l));
         go(at(top, pos.axis(c)), false, ops, pos);
@@ -389,7 +467,7 @@ mod tests {
             feed((20.0, -20.0), (25.0, -20.0)),
         ];
         let r = Roughing { kind: RoughKind::Turning, start: Vec3::new(25.0, 0.0, 2.0), contour: &contour, allowance: Vec3::new(0.5, 0.0, 0.1), depth_mm: 4.0, back_off_mm: 1.0, ns_rapid: true, type_two: false };
-        let ops = expand(&r, 1000).unwrap();
+        let ops = expand(&r, 1000).unwrap().ops;
         // A' = (25.5, 2.1); levels 21.5, 17.5, 13.5 (B' is at 10.5).
         let cuts: Vec<(f64, f64)> = ops.iter().filter_map(|o| match o {
             Op::Feed { from, to, feed_mm_min } if *feed_mm_min == 0.0 && from.x == to.x && from.z == 2.1 => Some((to.x, to.z)),
@@ -443,7 +521,7 @@ mod tests {
             feed((15.0, -15.0), (25.0, -20.0)),
         ];
         let r = Roughing { kind: RoughKind::Turning, start: Vec3::new(25.0, 0.0, 2.0), contour: &contour, allowance: Vec3::default(), depth_mm: 2.0, back_off_mm: 0.5, ns_rapid: true, type_two: true };
-        let ops = expand(&r, 1000).unwrap();
+        let ops = expand(&r, 1000).unwrap().ops;
         let cuts: Vec<(f64, f64, f64)> = ops
             .iter()
             .filter_map(|o| match o {
@@ -472,7 +550,7 @@ mod tests {
             if z >= 2.0 { return f64::NEG_INFINITY; }
             if z >= -10.0 { 10.0 + (2.0 - z) * 10.0 / 12.0 } else if z >= -15.0 { 20.0 - (-10.0 - z) } else if z >= -20.0 { 15.0 + (-15.0 - z) * 2.0 } else { 25.0 }
         };
-        for o in &ops[..ops.len() - 4] {
+        for o in &ops {
             if let Op::Feed { from, to, .. } | Op::Rapid { from, to } = o {
                 for k in 0..=20 {
                     let u = k as f64 / 20.0;

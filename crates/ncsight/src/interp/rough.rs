@@ -9,7 +9,7 @@
 use super::words::Words;
 use super::{run_block, Interpreter, Outcome, Step};
 use crate::alarm::{Diagnostic, Rule};
-use crate::cycles::rough::{expand, pattern, RoughError, RoughKind, Roughing, MAX_POCKETS};
+use crate::cycles::rough::{expand, pattern, RoughError, RoughKind, RoughNote, Roughing, MAX_POCKETS};
 use crate::motion::{Op, Vec3};
 use crate::read::{Block, Word};
 use crate::source::Span;
@@ -264,7 +264,7 @@ impl Interpreter {
         if let Some((relief, passes)) = req.pattern {
             let ops = pattern(req.start, &contour, req.allowance, relief, passes)
                 .map_err(|_| self.contour_alarm(Rule::ContourCommand, req.span, format!("{code}: the contour holds a move that is not a line or an arc")))?;
-            return self.emit_cycle(&req, ops, out, None);
+            return self.emit_cycle(&req, ops, out);
         }
         let has = |letters: &[u8]| first.words.iter().any(|w| letters.contains(&w.letter));
         let type_two = has(b"XU") && has(b"ZW");
@@ -279,7 +279,7 @@ impl Interpreter {
             return Err(self.contour_alarm(Rule::ContourCommand, first.span, format!("{code}: the contour's first block N{} must move along {axis}, the axis {code} steps its depth on (help text note 2)", req.ns)));
         }
         let r = Roughing { kind: req.kind, start: req.start, contour: &contour, allowance: req.allowance, depth_mm: req.depth_mm, back_off_mm: req.back_off_mm, ns_rapid, type_two };
-        let ops = expand(&r, 100_000).map_err(|e| match e {
+        let rough = expand(&r, 100_000).map_err(|e| match e {
             RoughError::NotMonotonic(axis) => {
                 let rule = if type_two { "type II roughing needs that along the cut axis" } else { "type I roughing needs that" };
                 let d = self.contour_alarm(
@@ -300,19 +300,25 @@ impl Interpreter {
             RoughError::TooMany => self.contour_alarm(Rule::MotionLimit, req.span, format!("{code}: more than 100000 roughing passes (Δd too small)")),
             RoughError::NotAPath => self.contour_alarm(Rule::ContourCommand, req.span, format!("{code}: the contour holds a move that is not a line or an arc")),
         })?;
-        let note = None;
-        self.emit_cycle(&req, ops, out, note)
+        // The depth axis, and the allowance word and axis along the cut.
+        let (depth_axis, cut_word, cut_axis) = if req.kind == RoughKind::Facing { ("Z", "U", "X") } else { ("X", "W", "Z") };
+        for n in &rough.notes {
+            let msg = match n {
+                RoughNote::EndRapidThroughPart => format!("{code}: the rapid from the contour's end back to the start point (step 8) passes through the part: end the contour N{} outside what it passes", req.nf),
+                RoughNote::AllowanceMovesPocketWalls => format!("{code}: with pockets, the allowance {cut_word} moves the whole contour along {cut_axis}: one wall of each pocket keeps less than {cut_word}, or is cut into (give {cut_word}0 for type II)"),
+                RoughNote::ContourBeyondStart => format!("{code}: the contour N{}..N{} rises beyond the start point along {depth_axis}: the levels begin at the start point and run into it", req.ns, req.nf),
+            };
+            out.warnings.push(self.contour_alarm(Rule::RoughingCollision, req.span, msg));
+        }
+        self.emit_cycle(&req, rough.ops, out)
     }
 
     /// Emit a roughing cycle's moves under the cycle block's span, each feed at the block's F
-    /// (per revolution under G99, at the point's speed under G96); `note` is a warning to give.
-    fn emit_cycle(&mut self, req: &RoughRequest, ops: Vec<Op>, out: &mut Outcome, note: Option<(Span, String)>) -> Result<(), Diagnostic> {
+    /// (per revolution under G99, at the point's speed under G96).
+    fn emit_cycle(&mut self, req: &RoughRequest, ops: Vec<Op>, out: &mut Outcome) -> Result<(), Diagnostic> {
         let code = req.kind.code();
         let before = self.state.clone();
         let mut step = Step { profile: self.profile, params: &self.params, repair: None, span: req.span, st: &mut self.state, out };
-        if let Some((span, msg)) = note {
-            step.warn(Rule::NotSimulated, span, msg);
-        }
         let result = ops.into_iter().try_for_each(|op| step.emit_cut(code, op));
         if let Err(d) = result {
             out.clear();
