@@ -41,6 +41,11 @@ pub enum DrillKind {
     FaceG83,
     /// GSK980TDi lathe G87: peck drilling along X from the start point (help text G83/87).
     SideG87,
+    /// FANUC 0-T lathe G83 without Q: drilling along Z from the R level, dwell, rapid out to the
+    /// initial level (docs/commands/g83_g87_lathe.md).
+    FanucFace,
+    /// FANUC 0-T lathe G87 without Q: the same along X.
+    FanucSide,
 }
 
 impl DrillKind {
@@ -58,8 +63,8 @@ impl DrillKind {
             DrillKind::G87 => "G87",
             DrillKind::G88 => "G88",
             DrillKind::G89 => "G89",
-            DrillKind::FaceG83 => "G83",
-            DrillKind::SideG87 => "G87",
+            DrillKind::FaceG83 | DrillKind::FanucFace => "G83",
+            DrillKind::SideG87 | DrillKind::FanucSide => "G87",
         }
     }
 
@@ -76,6 +81,16 @@ impl DrillKind {
     /// A lathe cycle that drills from the start point (GSK980TDi G83/G87).
     pub fn from_start(self) -> bool {
         matches!(self, DrillKind::FaceG83 | DrillKind::SideG87)
+    }
+
+    /// A lathe cycle: it drills along Z (G83) or X (G87) of the lathe, not along a plane's normal.
+    pub fn on_lathe(self) -> bool {
+        matches!(self, DrillKind::FaceG83 | DrillKind::SideG87 | DrillKind::FanucFace | DrillKind::FanucSide)
+    }
+
+    /// The lathe cycles that drill along X.
+    pub fn along_x(self) -> bool {
+        matches!(self, DrillKind::SideG87 | DrillKind::FanucSide)
     }
 }
 
@@ -205,7 +220,7 @@ pub fn expand_each(h: &Hole, s: &mut dyn FnMut(Step)) {
     };
     match h.kind {
         DrillKind::G73 | DrillKind::G81 | DrillKind::G83 => s(Step::Rapid(p(ret))),
-        DrillKind::G82 => {
+        DrillKind::G82 | DrillKind::FanucFace | DrillKind::FanucSide => {
             dwell(s);
             s(Step::Rapid(p(ret)));
         }

@@ -117,12 +117,7 @@ fn emit_hole(step: &mut Step, hole: &Hole, global: impl Fn(drill::Local, &Vec3) 
 /// block with only a bottom drills again. A block without X, Z, U or W only stores its data.
 fn from_start_block(step: &mut Step, words: &mut Words, kind: DrillKind) -> Result<(), Diagnostic> {
     let code = kind.code();
-    if step.st.plane != crate::motion::Plane::ZX {
-        // Note 2: G18 must be selected.
-        return Err(step.alarm(Rule::PlaneMismatch, step.span, format!("{code} drills only in the G18 plane (GSK980TDi help, G83/87 note 2)")));
-    }
-    // Vec3 axes: G83 places the hole on X and drills along Z; G87 the other way round.
-    let (place, along) = if kind == DrillKind::SideG87 { (2, 0) } else { (0, 2) };
+    let (place, along) = lathe_axes(step, kind)?;
     if let Some(w) = words.take(b'Q') {
         // Q in least input increments, a radius value.
         let q = super::compound::increments(step, w, code)?;
@@ -173,13 +168,7 @@ fn from_start_block(step: &mut Step, words: &mut Words, kind: DrillKind) -> Resu
         return Err(step.alarm(Rule::MotionLimit, step.span, format!("{code}: more than {MAX_PECKS} pecks in one block (Q too small for the depth, times K)")));
     }
     let rpm = step.rpm_here();
-    let global = move |l: drill::Local, keep: &Vec3| {
-        let mut v = *keep;
-        v.set_axis(place, l[0]);
-        v.y = l[1];
-        v.set_axis(along, l[2]);
-        v
-    };
+    let global = lathe_global(place, along);
     for _ in 0..repeats {
         let from_g = step.st.pos;
         let at = [target.axis(place), from_g.y];
@@ -205,11 +194,126 @@ fn from_start_block(step: &mut Step, words: &mut Words, kind: DrillKind) -> Resu
     Ok(())
 }
 
+/// The `Vec3` axes of a lathe cycle, (hole position, drilling axis): G83 places the hole on X
+/// and drills along Z, G87 the other way round; only in the G18 plane (GSK help text G83/87
+/// note 2; a FANUC lathe has no other).
+fn lathe_axes(step: &Step, kind: DrillKind) -> Result<(usize, usize), Diagnostic> {
+    if step.st.plane != crate::motion::Plane::ZX {
+        return Err(step.alarm(Rule::PlaneMismatch, step.span, format!("{} drills only in the G18 plane (GSK980TDi help, G83/87 note 2)", kind.code())));
+    }
+    Ok(if kind.along_x() { (2, 0) } else { (0, 2) })
+}
+
+/// A lathe cycle's plane-local point on the machine: the hole position on `place`, the drilling
+/// level on `along`, Y kept.
+fn lathe_global(place: usize, along: usize) -> impl Fn(drill::Local, &Vec3) -> Vec3 + Copy {
+    move |l, keep| {
+        let mut v = *keep;
+        v.set_axis(place, l[0]);
+        v.y = l[1];
+        v.set_axis(along, l[2]);
+        v
+    }
+}
+
+/// A lathe axis word, absolute (`abs_l`) or incremental (`inc_l`), in mm along the axis (X as a
+/// radius): the value and whether it is incremental; both at once is an alarm.
+fn lathe_word(step: &mut Step, words: &mut Words, axis: usize) -> Result<Option<(f64, bool)>, Diagnostic> {
+    let (abs_l, inc_l) = if axis == 0 { (b'X', b'U') } else { (b'Z', b'W') };
+    let scale = if axis == 0 && step.profile.diameter_x { 0.5 } else { 1.0 };
+    match (words.take(abs_l), words.take(inc_l)) {
+        (Some(a), Some(i)) => Err(step.alarm(Rule::DuplicateWord, i.span, format!("{} and {} both give the {} axis", a.text(), i.text(), abs_l as char))),
+        (Some(w), None) => Ok(Some((step.length(w)? * scale, false))),
+        (None, Some(w)) => Ok(Some((step.length(w)? * scale, true))),
+        (None, None) => Ok(None),
+    }
+}
+
+/// FANUC 0-T G83 (face: the hole at X, drilled along Z) and G87 (side: the hole at Z, drilled
+/// along X), the cycle without Q: rapid to the hole position, rapid to the R level (R, signed, is
+/// the distance from the initial level), feed to the bottom Z (X; W, U from the R level), dwell
+/// P, rapid back to the initial level; K repeats (a FANUC lathe manual's format, quoted in
+/// docs/commands/g83_g87_lathe.md). The data stays until G80 or a group 01 code. With Q, the peck
+/// drilling of these cycles is not simulated (no FANUC 0-T text for it here).
+fn fanuc_lathe_block(step: &mut Step, words: &mut Words, kind: DrillKind) -> Result<(), Diagnostic> {
+    let code = kind.code();
+    let (place, along) = lathe_axes(step, kind)?;
+    if step.st.drill.kind != Some(kind) {
+        // A new cycle (or the other one: its bottom lies on the other axis).
+        step.st.drill = Default::default();
+        step.st.drill.initial = step.st.pos.axis(along);
+        step.st.drill.kind = Some(kind);
+    }
+    if let Some(w) = words.peek(b'Q') {
+        return Err(step.alarm(
+            Rule::NotSupported,
+            w.span,
+            format!("{}: the peck drilling of the FANUC 0-T {code} (with Q) is not simulated: the sources here give only the cycle without Q", w.text()),
+        ));
+    }
+    let drills = [b'X', b'Z', b'U', b'W', b'R'].iter().any(|l| words.has(*l));
+    if let Some(w) = words.take(b'R') {
+        let r = step.length(w)?;
+        step.st.drill.r = Some((r, true));
+    }
+    take_dwell(step, words)?;
+    let repeats = repeats(step, words)?;
+    if let Some(b) = lathe_word(step, words, along)? {
+        step.st.drill.bottom = Some(b);
+    }
+    let target = match lathe_word(step, words, place)? {
+        Some((v, true)) => step.st.pos.axis(place) + v,
+        Some((v, false)) => v,
+        None => step.st.pos.axis(place),
+    };
+    if !drills || repeats == 0 {
+        return Ok(());
+    }
+    let d = step.st.drill;
+    let axis_name = if along == 2 { "Z (W)" } else { "X (U)" };
+    let Some((b, b_inc)) = d.bottom else {
+        return Err(step.alarm(Rule::MissingWord, step.span, format!("{code} needs the hole bottom {axis_name}")));
+    };
+    let r_level = d.initial + d.r.map_or(0.0, |r| r.0);
+    let bottom = if b_inc { r_level + b } else { b };
+    if bottom == r_level {
+        return Err(step.alarm(Rule::DrillLevels, step.span, format!("{code}: the hole bottom {axis_name} is at the R level: there is nothing to drill")));
+    }
+    let rpm = step.rpm_here();
+    let global = lathe_global(place, along);
+    for _ in 0..repeats {
+        let from_g = step.st.pos;
+        let at = [target, from_g.y];
+        let feed = step.cutting_feed(code, &|u| global([at[0], at[1], r_level + (bottom - r_level) * u], &from_g))?;
+        let hole = Hole {
+            kind,
+            from: [from_g.axis(place), from_g.y, from_g.axis(along)],
+            at,
+            initial: d.initial,
+            r: r_level,
+            bottom,
+            return_initial: true,
+            q: 0.0,
+            dwell_s: d.dwell_s.unwrap_or(0.0),
+            d: 0.0,
+            deep: false,
+            shift_dir: [0.0; 2],
+            feed,
+            rpm,
+        };
+        emit_hole(step, &hole, global);
+    }
+    Ok(())
+}
+
 /// A block while a drilling cycle is in force. `entering`: the block names a cycle code.
 pub(super) fn block(step: &mut Step, words: &mut Words, kind: DrillKind, entering: bool) -> Result<(), Diagnostic> {
     if kind.from_start() {
         step.st.drill.kind = Some(kind);
         return from_start_block(step, words, kind);
+    }
+    if kind.on_lathe() {
+        return fanuc_lathe_block(step, words, kind);
     }
     let plane = step.st.plane;
     let (a, b, n) = plane.axes();

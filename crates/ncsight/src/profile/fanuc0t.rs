@@ -10,13 +10,16 @@ use super::{FANUC_RATES, Compound,
     ThreadRules, TimeKeys, DRY_RUN, SETTINGS,
 };
 use crate::alarm::AlarmStyle;
+use crate::cycles::drill::DrillKind;
 
 const EXTRA: &[GDef] = &[
     g(32, Group::Motion, GFn::Thread(ThreadCmd::Lead), "thread cutting: F lead, Q start angle"),
     g(92, Group::Motion, GFn::Thread(ThreadCmd::Cycle(CycleKind::Fanuc)), "thread cutting cycle: R taper, F lead, Q start angle"),
     g(76, Group::NonModal, GFn::CompoundThread(Compound::G76), "compound thread cutting cycle, two blocks"),
     g(34, Group::Motion, LATER_THREAD, "variable-lead thread cutting"),
-    g(80, Group::CannedCycle, GFn::CycleCancel, "cancel a drilling cycle, group 10 on the FANUC (the 0-T drilling cycles themselves are not simulated)"),
+    g(80, Group::CannedCycle, GFn::CycleCancel, "cancel a drilling cycle (group 10 on the FANUC)"),
+    g(83, Group::CannedCycle, GFn::Drill(DrillKind::FanucFace), "face drilling cycle (the cycle without Q)"),
+    g(87, Group::CannedCycle, GFn::Drill(DrillKind::FanucSide), "side drilling cycle (the cycle without Q)"),
 ];
 
 const PARAMS: &[ParamDef] = &[
