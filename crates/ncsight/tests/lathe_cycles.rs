@@ -159,3 +159,17 @@ fn type_two_warns_what_runs_into_the_part() {
     // The plain pocket of the golden trace: nothing to tell.
     assert!(warned("N10 G00 X20 Z2\nG01 X40 Z-10\nX30 Z-15\nN20 X50 Z-20", "U0 W0").is_empty());
 }
+
+/// FANUC 0-T G83: R between the initial level and the bottom, as on the 0-M; a drilling code in a
+/// contour is PS0066 even when its block would alarm by itself.
+#[test]
+fn fanuc_lathe_drilling_levels_and_contours() {
+    let (_, d) = common::run_plain("fanuc0t", &[], "G99 M03 S1000\nG00 X0 Z5.\nG83 Z4. R-3. F0.1\nM30\n");
+    assert_eq!(alarm(&d), Some("NCS-E46"));
+    let (r, d) = common::run_plain("fanuc0t", &[], "G99 M03 S1000\nG00 X0 Z5.\nG83 Z-10. R-3. F0.1\nM30\n");
+    assert_eq!(alarm(&d), None);
+    assert_eq!(feeds_on_line(&r, 3), vec![(0.0, -10.0)]);
+    let text = "G99 M03 S1000\nG00 X40. Z2.\nG71 U1. R0.5\nG71 P10 Q20 U0.2 W0.1 F0.2\nN10 G00 X20.\nG83 Z-10. R-3. Q1000\nN20 G01 Z-20.\nM30\n";
+    let (_, d) = common::run_plain("fanuc0t", &[], text);
+    assert_eq!(alarm(&d), Some("PS0066"));
+}

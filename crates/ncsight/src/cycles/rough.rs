@@ -326,10 +326,9 @@ fn levels_type_two(
     if pockets > 0 && r.allowance.axis(c) != 0.0 {
         notes.push(RoughNote::AllowanceMovesPocketWalls);
     }
-    if pts.iter().any(|p| (p.axis(l) - a1.axis(l)) * dir_l < -1e-9) {
-        notes.push(RoughNote::ContourBeyondStart);
-    }
     let at = |lv: f64, cv: f64| place(a1, axes, lv, cv);
+    // How far along the cut axis the levels reach (for the check after them).
+    let mut reach = a1.axis(c);
     let outer = |a: f64, b: f64| if (a - b) * out >= 0.0 { a } else { b };
     // The travel level over the contour between two cut-axis positions (nothing stands before
     // the contour's start).
@@ -371,6 +370,9 @@ fn levels_type_two(
                 go(at(level, from_c), true, ops, pos);
             }
             go(at(level, to_c), true, ops, pos);
+            if (to_c - reach) * dir_c > 0.0 {
+                reach = to_c;
+            }
             // The back-off, at 45 degrees but no wider than the stretch (a narrow pocket).
             let back = e.min((to_c - from_c).abs());
             go(at(level + out * e, to_c - dir_c * back), true, ops, pos);
@@ -379,6 +381,11 @@ fn levels_type_two(
         go(at(top, pos.axis(c)), false, ops, pos);
         go(at(top, a1.axis(c)), false, ops, pos);
         k += 1;
+    }
+    // A point of the contour outside A' where the levels pass: they begin at A' and run into it.
+    let (lo, hi) = if a1.axis(c) < reach { (a1.axis(c), reach) } else { (reach, a1.axis(c)) };
+    if pts.iter().any(|p| p.axis(c) >= lo && p.axis(c) <= hi && (p.axis(l) - a1.axis(l)) * dir_l < -1e-9) {
+        notes.push(RoughNote::ContourBeyondStart);
     }
     Ok(())
 }

@@ -276,8 +276,16 @@ fn fanuc_lathe_block(step: &mut Step, words: &mut Words, kind: DrillKind) -> Res
     };
     let r_level = d.initial + d.r.map_or(0.0, |r| r.0);
     let bottom = if b_inc { r_level + b } else { b };
-    if bottom == r_level {
+    if (bottom - r_level).abs() < 1e-9 {
         return Err(step.alarm(Rule::DrillLevels, step.span, format!("{code}: the hole bottom {axis_name} is at the R level: there is nothing to drill")));
+    }
+    if (d.initial - r_level) * (bottom - r_level) > 1e-12 {
+        // The R level lies between the initial level and the bottom, as on the FANUC 0-M.
+        return Err(step.alarm(
+            Rule::DrillLevels,
+            step.span,
+            format!("{code}: R {r_level:.3} and bottom {bottom:.3}: the R level must lie between the initial level {:.3} and the hole bottom", d.initial),
+        ));
     }
     let rpm = step.rpm_here();
     let global = lathe_global(place, along);

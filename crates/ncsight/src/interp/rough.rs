@@ -207,6 +207,14 @@ impl Interpreter {
             if b.block_delete && self.switches.block_delete {
                 continue;
             }
+            // G83/G87 note 3: no drilling cycle inside G71-G73, whatever else the block says.
+            let drilling = b.words.iter().filter(|w| w.letter == b'G').find_map(|w| {
+                let (major, minor) = w.code();
+                self.profile.g_code(major, minor).filter(|g| matches!(g.function, crate::profile::GFn::Drill(_)))
+            });
+            if let Some(g) = drilling {
+                return Err(self.contour_alarm(Rule::ContourCommand, b.span, format!("{code}: a contour block cannot run the drilling cycle G{}", g.major)));
+            }
             let mut step = Step { profile: self.profile, params: &self.params, repair: None, span: b.span, st: &mut st, out: &mut scratch };
             run_block(&mut step, b, self.switches)?;
             if st.rough_request.is_some() || st.finish_request.is_some() {
