@@ -111,18 +111,18 @@ pub(super) fn compound(step: &mut Step, words: &mut Words, kind: Compound) -> Re
         }
     }
     if let Some(w) = words.take(b'Q') {
-        data.base.dmin_mm = increments(step, &w, name)?;
+        data.base.dmin_mm = increments(step, w, name)?;
     }
     if let Some(w) = words.take(b'R') {
-        data.base.allowance_mm = step.length(&w)?;
+        data.base.allowance_mm = step.length(w)?;
     }
     if step.profile.thread.g32_pull_out {
         // GSK: J/K in the first block; the pull-out is then that of G32/G92 (G76 help note 2).
         if let Some(w) = words.take(b'J') {
-            data.base.j = Some(step.length(&w)?);
+            data.base.j = Some(step.length(w)?);
         }
         if let Some(w) = words.take(b'K') {
-            data.base.k = Some(step.length(&w)?);
+            data.base.k = Some(step.length(w)?);
         }
     }
     if kind == Compound::G78 {
@@ -139,7 +139,7 @@ pub(super) fn compound(step: &mut Step, words: &mut Words, kind: Compound) -> Re
             data.starts = w.value as u32;
         }
         if let Some(w) = words.take(b'E') {
-            let e = step.length(&w)?;
+            let e = step.length(w)?;
             if e != 0.0 {
                 // The help text names E "X screw-in distance (radius)" without saying where it acts.
                 let msg = format!("{}: the G78 screw-in distance E is not simulated (the help text does not say how it moves the tool)", w.text());
@@ -157,15 +157,15 @@ pub(super) fn compound(step: &mut Step, words: &mut Words, kind: Compound) -> Re
 fn cut(step: &mut Step, words: &mut Words, name: &str, kind: Compound, data: G78Data) -> Result<(), Diagnostic> {
     let lead = step.read_lead(words, name, step.profile.thread.g32_pull_out, false, super::thread::MAX_LEAD_MM)?;
     let taper = match words.take(b'R') {
-        Some(w) => step.length(&w)?,
+        Some(w) => step.length(w)?,
         None => 0.0,
     };
     let height = match words.take(b'P') {
-        Some(w) => increments(step, &w, name)?,
+        Some(w) => increments(step, w, name)?,
         None => return Err(cycle_alarm(step, name, "the thread height P(k) is missing")),
     };
     let first = match words.take(b'Q') {
-        Some(w) => increments(step, &w, name)?,
+        Some(w) => increments(step, w, name)?,
         None => return Err(cycle_alarm(step, name, "the first depth Q(dd) is missing")),
     };
     let rpm = step.follow_rpm(name)?;
@@ -285,7 +285,7 @@ pub(super) fn tap(step: &mut Step, words: &mut Words) -> Result<(), Diagnostic> 
 pub(super) fn variable_lead(step: &mut Step, words: &mut Words, run_deg: Option<f64>) -> Result<(), Diagnostic> {
     let lead = step.read_lead(words, "G34", true, false, super::thread::MAX_LEAD_MM)?;
     let change = match words.take(b'R') {
-        Some(w) => step.length(&w)?,
+        Some(w) => step.length(w)?,
         None => 0.0,
     };
     for l in [b'J', b'K'] {

@@ -17,7 +17,7 @@ pub(super) fn block(step: &mut Step, words: &mut Words, kind: PeckKind) -> Resul
     if !has_axis {
         // First block: R(e), the back-off after each peck; it stays for later blocks.
         if let Some(w) = words.take(b'R') {
-            let e = step.length(&w)?;
+            let e = step.length(w)?;
             if e < 0.0 {
                 return Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("{}: the back-off e of {code} cannot be negative", w.text())));
             }
@@ -31,14 +31,14 @@ pub(super) fn block(step: &mut Step, words: &mut Words, kind: PeckKind) -> Resul
     let (peck_letter, step_letter) = if kind == PeckKind::Face { (b'Q', b'P') } else { (b'P', b'Q') };
     let amount = |step: &mut Step, words: &mut Words, letter: u8, scale: f64| -> Result<f64, Diagnostic> {
         match words.take(letter) {
-            Some(w) => Ok(increments(step, &w, code)?.abs() * scale),
+            Some(w) => Ok(increments(step, w, code)?.abs() * scale),
             None => Ok(0.0),
         }
     };
     let peck_mm = amount(step, words, peck_letter, 1.0)?;
     let step_mm = amount(step, words, step_letter, halved)?;
     let relief_mm = match words.take(b'R') {
-        Some(w) => step.length(&w)?.abs() * halved,
+        Some(w) => step.length(w)?.abs() * halved,
         None => 0.0,
     };
     let back_off_mm = step.st.peck_back_off_mm.or_else(|| step.profile.peck_back_off.map(|k| step.params.get(k))).unwrap_or(0.0);

@@ -58,10 +58,10 @@ fn p_and_q(step: &mut Step, words: &mut Words, code: &str) -> Result<(u32, u32),
 fn pattern_first(step: &mut Step, words: &mut Words) -> Result<(), Diagnostic> {
     let mut data = step.st.pattern_data.unwrap_or((0.0, 0.0, 1));
     if let Some(w) = words.take(b'U') {
-        data.0 = step.length(&w)?;
+        data.0 = step.length(w)?;
     }
     if let Some(w) = words.take(b'W') {
-        data.1 = step.length(&w)?;
+        data.1 = step.length(w)?;
     }
     if let Some(w) = words.take(b'R') {
         // d is a count of passes, whatever the decimal-point rule for lengths.
@@ -85,14 +85,14 @@ pub(super) fn block(step: &mut Step, words: &mut Words, kind: RoughKind) -> Resu
         let depth_letter = if kind == RoughKind::Turning { b'U' } else { b'W' };
         let mut data = step.st.rough_data[slot].unwrap_or((0.0, 0.0));
         if let Some(w) = words.take(depth_letter) {
-            let d = step.length(&w)?;
+            let d = step.length(w)?;
             if d <= 0.0 {
                 return Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("{}: the depth of cut Δd of {code} must be more than 0", w.text())));
             }
             data.0 = d;
         }
         if let Some(w) = words.take(b'R') {
-            data.1 = step.length(&w)?.abs();
+            data.1 = step.length(w)?.abs();
         }
         step.st.rough_data[slot] = Some(data);
         return Ok(());
@@ -115,10 +115,10 @@ pub(super) fn block(step: &mut Step, words: &mut Words, kind: RoughKind) -> Resu
     let mut allowance = Vec3::default();
     if let Some(w) = words.take(b'U') {
         // Δu is on the diameter, as X is programmed.
-        allowance.x = step.length(&w)? / 2.0;
+        allowance.x = step.length(w)? / 2.0;
     }
     if let Some(w) = words.take(b'W') {
-        allowance.z = step.length(&w)?;
+        allowance.z = step.length(w)?;
     }
     for l in [b'K', b'J'] {
         if let Some(w) = words.take(l) {

@@ -27,7 +27,7 @@ pub(super) fn block(step: &mut Step, words: &mut Words, kind: BoxKind) -> Result
         }
     }
     let taper_mm = match taper_word {
-        Some(w) => step.length(&w)?,
+        Some(w) => step.length(w)?,
         None => memory.taper_mm,
     };
     // The taper may not carry the cut start past the start point: with R and U (G90) or R and

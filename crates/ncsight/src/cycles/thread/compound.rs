@@ -43,7 +43,7 @@ pub fn infeed_shift_mm(infeed: Infeed, index: usize, depth: f64, height_mm: f64,
     let flank = match infeed {
         Infeed::Radial => return 0.0,
         Infeed::Along(f) => f,
-        Infeed::Alternate if index % 2 == 0 => Flank::MinusZ,
+        Infeed::Alternate if index.is_multiple_of(2) => Flank::MinusZ,
         Infeed::Alternate => Flank::PlusZ,
     };
     match flank {
