@@ -74,11 +74,18 @@ pub fn drive(
             }
             line_no = line_no.wrapping_add(1);
             let line = &batch.text[range.clone()];
+            let (ranges, text) = (&batch.ranges, &batch.text);
             program.feed_from(&batch.read, i, &mut |e| {
-                // A diagnostic about an earlier line (a cycle that ends here) gets no source
-                // text: that line is gone from memory.
+                // A diagnostic about an earlier line (a cycle that ends here) gets that line's
+                // text while the line is still in this batch, none once it is gone.
                 let text = match &e {
-                    Event::Diagnostic(d) if d.span.line != line_no => &b""[..],
+                    Event::Diagnostic(d) if d.span.line != line_no => {
+                        let back = line_no.wrapping_sub(d.span.line) as usize;
+                        match i.checked_sub(back) {
+                            Some(k) if d.span.line < line_no => &text[ranges[k].clone()],
+                            _ => &b""[..],
+                        }
+                    }
                     _ => line,
                 };
                 if pending.is_ok() {
