@@ -63,12 +63,18 @@ pub fn drive(
         .spawn(move || read_ahead(input, &reader, &full_tx, &empty_rx))?;
     let mut pending: io::Result<()> = Ok(());
     let mut stopped = false;
-    // The number of the line being fed (the reader counts the same way).
+    // The number of the line being fed (the reader counts the same way), and the text of the
+    // last line fed once its batch is gone (for what the end of the input says about it).
     let mut line_no = 0u32;
+    let mut last_text = Vec::new();
     'batches: for batch in full_rx.iter() {
         let mut batch = batch?;
         for (i, range) in batch.ranges.iter().enumerate() {
             if !program.wants_more() {
+                if let Some(r) = i.checked_sub(1).map(|k| batch.ranges[k].clone()) {
+                    last_text.clear();
+                    last_text.extend_from_slice(&batch.text[r]);
+                }
                 stopped = true;
                 break 'batches;
             }
@@ -94,6 +100,10 @@ pub fn drive(
             });
             pending.as_ref().map_err(|e| io::Error::new(e.kind(), e.to_string()))?;
         }
+        if let Some(r) = batch.ranges.last() {
+            last_text.clear();
+            last_text.extend_from_slice(&batch.text[r.clone()]);
+        }
         batch.clear();
         // The reader may have ended already; then the batch is simply dropped.
         let _ = empty_tx.send(batch);
@@ -112,8 +122,12 @@ pub fn drive(
     // Otherwise the reader ends at its next send (the channel is closed); it is not waited for,
     // as it may be waiting for input that never comes (a terminal, a pipe left open).
     program.finish(&mut |e| {
+        let text = match &e {
+            Event::Diagnostic(d) if d.span.line == line_no => &last_text[..],
+            _ => &b""[..],
+        };
         if pending.is_ok() {
-            pending = on_event(&e, b"");
+            pending = on_event(&e, text);
         }
     });
     pending
@@ -266,6 +280,27 @@ mod tests {
         });
         assert_eq!(r.unwrap_err().kind(), io::ErrorKind::ConnectionReset);
         assert_eq!(alarms, vec![1]);
+    }
+
+    /// What the end of the input says about the last line (no programme end) comes with that
+    /// line's text; a diagnostic about an earlier line in the same batch with its own.
+    #[test]
+    fn late_diagnostics_keep_their_line() {
+        let (events, texts) = events_of(Box::new(io::Cursor::new(b"G0 X1.\nG1 X2. F100.\n".to_vec())), Mode::Check);
+        let k = events.iter().position(|e| matches!(e, Event::Diagnostic(d) if d.rule == ncsight::Rule::NoProgramEnd)).unwrap();
+        assert_eq!(texts[k], b"G1 X2. F100.\n");
+        let text = "G99 M03 S500\nG00 X50. Z2.\nG71 U2. R0.5\nG71 P10 Q20 U0 W0 F0.2\nN10 G00 X20. Z2.\nG01 X40. Z-10.\nZ-15.\nN20 X30. Z-20.\nM30\n";
+        let mut p = Program::new(Params::defaults(profile::by_name("gsk980tdi").unwrap()), Switches::default(), Mode::Check);
+        let mut seen = Vec::new();
+        drive(Box::new(io::Cursor::new(text.as_bytes().to_vec())), &mut p, &mut |e, t| {
+            if let Event::Diagnostic(d) = e {
+                seen.push((d.span.line, String::from_utf8_lossy(t).into_owned()));
+            }
+            Ok(())
+        })
+        .unwrap();
+        // The step-8 warning belongs to the G71 block of line 4, given when the contour ends.
+        assert!(seen.iter().any(|(l, t)| *l == 4 && t.starts_with("G71 P10")), "{seen:?}");
     }
 
     /// A line longer than the kept length: its start is read (and is one alarm), the rest is
