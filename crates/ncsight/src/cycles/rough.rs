@@ -332,11 +332,12 @@ fn levels_type_two(
     let outer = |a: f64, b: f64| if (a - b) * out >= 0.0 { a } else { b };
     // The travel level over the contour between two cut-axis positions (nothing stands before
     // the contour's start).
+    let outermost = Outermost::new(pts, l, c, dir_c, out);
     let travel = |from_c: f64, to_c: f64, level: f64| {
         let (lo, hi) = if from_c < to_c { (from_c, to_c) } else { (to_c, from_c) };
-        let inside = pts.iter().filter(|p| p.axis(c) >= lo && p.axis(c) <= hi).map(|p| p.axis(l));
+        let inside = outermost.between(lo, hi);
         let ends = [lo, hi].into_iter().filter_map(|cv| contour_level_at(pts, l, c, cv));
-        match inside.chain(ends).reduce(outer) {
+        match inside.into_iter().chain(ends).reduce(outer) {
             None => level + out * e,
             Some(top) => {
                 // The last level cut over the top lies strictly outside it (the test of
@@ -350,13 +351,17 @@ fn levels_type_two(
         }
     };
     let total = (deepest - a1.axis(l)).abs();
-    let mut k = 1usize;
-    while (k as f64) * r.depth_mm < total - 1e-9 {
-        if k > limit {
+    let mut count = 0usize;
+    while ((count + 1) as f64) * r.depth_mm < total - 1e-9 {
+        count += 1;
+        if count > limit {
             return Err(RoughError::TooMany);
         }
-        let level = a1.axis(l) + dir_l * k as f64 * r.depth_mm;
-        let stretches = deeper_stretches(pts, l, c, level, dir_l, a1.axis(c));
+    }
+    let level_of = |k: usize| a1.axis(l) + dir_l * k as f64 * r.depth_mm;
+    let all = all_stretches(pts, l, c, &level_of, count, dir_l, a1.axis(c));
+    for (k, stretches) in (1..=count).zip(&all) {
+        let level = level_of(k);
         for (i, &(from_c, to_c)) in stretches.iter().enumerate() {
             if i == 0 && from_c == a1.axis(c) {
                 go(at(level, from_c), !r.ns_rapid, ops, pos);
@@ -380,7 +385,6 @@ fn levels_type_two(
         let top = outer(travel(pos.axis(c), a1.axis(c), level), pos.axis(l));
         go(at(top, pos.axis(c)), false, ops, pos);
         go(at(top, a1.axis(c)), false, ops, pos);
-        k += 1;
     }
     // A point of the contour outside A' where the levels pass: they begin at A' and run into it.
     let (lo, hi) = if a1.axis(c) < reach { (a1.axis(c), reach) } else { (reach, a1.axis(c)) };
@@ -390,32 +394,117 @@ fn levels_type_two(
     Ok(())
 }
 
+/// The outermost level of the contour's points over a range of the cut axis, answered from a
+/// table of powers of two (the contour is monotonic along the cut axis, so a range of the axis
+/// is a range of points): each query is two lookups, not a walk over the contour.
+struct Outermost<'a> {
+    pts: &'a [Vec3],
+    c: usize,
+    dir_c: f64,
+    out: f64,
+    /// `table[j][i]`: the outermost level of points i .. i + 2^j.
+    table: Vec<Vec<f64>>,
+}
+
+impl<'a> Outermost<'a> {
+    fn new(pts: &'a [Vec3], l: usize, c: usize, dir_c: f64, out: f64) -> Outermost<'a> {
+        let mut table = vec![pts.iter().map(|p| p.axis(l)).collect::<Vec<f64>>()];
+        let mut width = 1;
+        while 2 * width <= pts.len() {
+            let prev = table.last().expect("one row at least");
+            let row = (0..=pts.len() - 2 * width).map(|i| Self::outer_of(out, prev[i], prev[i + width])).collect();
+            table.push(row);
+            width *= 2;
+        }
+        Outermost { pts, c, dir_c, out, table }
+    }
+
+    fn outer_of(out: f64, a: f64, b: f64) -> f64 {
+        if (a - b) * out >= 0.0 { a } else { b }
+    }
+
+    /// The outermost level of the points with cut-axis position in `lo..=hi`, if any.
+    fn between(&self, lo: f64, hi: f64) -> Option<f64> {
+        let (i0, i1) = if self.dir_c == 0.0 {
+            // All at one cut-axis position.
+            let inside = self.pts.first().is_some_and(|p| p.axis(self.c) >= lo && p.axis(self.c) <= hi);
+            if inside { (0, self.pts.len()) } else { (0, 0) }
+        } else {
+            let key = |p: &Vec3| p.axis(self.c) * self.dir_c;
+            let (a, b) = if self.dir_c > 0.0 { (lo, hi) } else { (-hi, -lo) };
+            (self.pts.partition_point(|p| key(p) < a), self.pts.partition_point(|p| key(p) <= b))
+        };
+        if i0 >= i1 {
+            return None;
+        }
+        let j = (usize::BITS - 1 - (i1 - i0).leading_zeros()) as usize;
+        let row = &self.table[j];
+        Some(Self::outer_of(self.out, row[i0], row[i1 - (1 << j)]))
+    }
+}
+
 /// The stretches `(from, to)` of the cut axis, in the contour's order, where the contour lies
-/// deeper than `level` (the side `dir_l` points to); a stretch that begins at the contour's
-/// start begins at `start_c`, A's cut-axis position (nothing stands before the contour).
-fn deeper_stretches(pts: &[Vec3], l: usize, c: usize, level: f64, dir_l: f64, start_c: f64) -> Vec<(f64, f64)> {
-    let deeper = |p: &Vec3| (p.axis(l) - level) * dir_l > 0.0;
-    let cross = |p: &Vec3, q: &Vec3| {
-        let (a, b) = (p.axis(l), q.axis(l));
-        let u = if (b - a).abs() > 1e-12 { (level - a) / (b - a) } else { 0.0 };
-        p.axis(c) + u * (q.axis(c) - p.axis(c))
-    };
-    let mut out = Vec::new();
-    let mut open = pts.first().filter(|p| deeper(p)).map(|_| start_c);
-    for w in pts.windows(2) {
-        match (open, deeper(&w[0]), deeper(&w[1])) {
-            (None, false, true) => open = Some(cross(&w[0], &w[1])),
-            (Some(from), true, false) => {
-                out.push((from, cross(&w[0], &w[1])));
-                open = None;
+/// deeper than each level 1 ..= `count` (the side `dir_l` points to); a stretch that begins at the
+/// contour's start begins at `start_c`, A's cut-axis position (nothing stands before the contour).
+/// All levels at once, in one pass over the contour: a
+/// segment's ends lie on different sides only of the levels between them, so each segment is
+/// looked at for those levels alone (and one more each side, where rounding could tip it).
+fn all_stretches(
+    pts: &[Vec3],
+    l: usize,
+    c: usize,
+    level_of: &dyn Fn(usize) -> f64,
+    count: usize,
+    dir_l: f64,
+    start_c: f64,
+) -> Vec<Vec<(f64, f64)>> {
+    let mut crossings: Vec<Vec<u32>> = vec![Vec::new(); count];
+    if count > 0 && pts.len() > 1 {
+        let deeper = |p: &Vec3, k: usize| (p.axis(l) - level_of(k)) * dir_l > 0.0;
+        // A point's depth in levels from A' (level k lies at k).
+        let a1 = level_of(0);
+        let depth = |p: &Vec3| (p.axis(l) - a1) * dir_l / ((level_of(1) - a1) * dir_l);
+        for (s, w) in pts.windows(2).enumerate() {
+            let (t0, t1) = (depth(&w[0]), depth(&w[1]));
+            let lo = (t0.min(t1).floor() - 1.0).max(1.0);
+            let hi = (t0.max(t1).ceil() + 1.0).min(count as f64);
+            if !(lo <= hi) {
+                continue;
             }
-            _ => {}
+            for k in lo as usize..=hi as usize {
+                if deeper(&w[0], k) != deeper(&w[1], k) {
+                    crossings[k - 1].push(s as u32);
+                }
+            }
         }
     }
-    if let (Some(from), Some(p)) = (open, pts.last()) {
-        out.push((from, p.axis(c)));
-    }
-    out
+    (1..=count)
+        .zip(&crossings)
+        .map(|(k, segs)| {
+            let level = level_of(k);
+            let cross = |p: &Vec3, q: &Vec3| {
+                let (a, b) = (p.axis(l), q.axis(l));
+                let u = if (b - a).abs() > 1e-12 { (level - a) / (b - a) } else { 0.0 };
+                p.axis(c) + u * (q.axis(c) - p.axis(c))
+            };
+            let mut out = Vec::new();
+            let mut open = pts.first().filter(|p| (p.axis(l) - level) * dir_l > 0.0).map(|_| start_c);
+            for &s in segs {
+                let (p, q) = (&pts[s as usize], &pts[s as usize + 1]);
+                match open {
+                    None => open = Some(cross(p, q)),
+                    Some(from) => {
+                        out.push((from, cross(p, q)));
+                        open = None;
+                    }
+                }
+            }
+            if let (Some(from), Some(p)) = (open, pts.last()) {
+                out.push((from, p.axis(c)));
+            }
+            out
+        })
+        .collect()
 }
 
 /// G73 pattern repeating (GSK980TDi help text G73): `passes` (d) passes over the whole contour,
@@ -580,5 +669,67 @@ mod tests {
         contour.push(feed((10.0, z), (30.0, z - 1.0)));
         let r = Roughing { kind: RoughKind::Turning, start: Vec3::new(30.0, 0.0, 2.0), contour: &contour, allowance: Vec3::default(), depth_mm: 1.0, back_off_mm: 0.5, ns_rapid: true, type_two: true };
         assert_eq!(expand(&r, 1000), Err(RoughError::TooManyPockets));
+    }
+
+    /// The plain scan, level by level, that `all_stretches` must agree with.
+    /// The stretches `(from, to)` of the cut axis, in the contour's order, where the contour lies
+    /// deeper than `level` (the side `dir_l` points to); a stretch that begins at the contour's
+    /// start begins at `start_c`, A's cut-axis position (nothing stands before the contour).
+    fn deeper_stretches(pts: &[Vec3], l: usize, c: usize, level: f64, dir_l: f64, start_c: f64) -> Vec<(f64, f64)> {
+        let deeper = |p: &Vec3| (p.axis(l) - level) * dir_l > 0.0;
+        let cross = |p: &Vec3, q: &Vec3| {
+            let (a, b) = (p.axis(l), q.axis(l));
+            let u = if (b - a).abs() > 1e-12 { (level - a) / (b - a) } else { 0.0 };
+            p.axis(c) + u * (q.axis(c) - p.axis(c))
+        };
+        let mut out = Vec::new();
+        let mut open = pts.first().filter(|p| deeper(p)).map(|_| start_c);
+        for w in pts.windows(2) {
+            match (open, deeper(&w[0]), deeper(&w[1])) {
+                (None, false, true) => open = Some(cross(&w[0], &w[1])),
+                (Some(from), true, false) => {
+                    out.push((from, cross(&w[0], &w[1])));
+                    open = None;
+                }
+                _ => {}
+            }
+        }
+        if let (Some(from), Some(p)) = (open, pts.last()) {
+            out.push((from, p.axis(c)));
+        }
+        out
+    }
+
+    proptest::proptest! {
+        /// `all_stretches` gives, bit for bit, what scanning the contour at each level gives,
+        /// and `Outermost` what scanning the points in a range gives.
+        #[test]
+        fn one_pass_stretches_match_the_scan(
+            levels in proptest::collection::vec(-30.0f64..30.0, 2..60),
+            step in 0.01f64..3.0,
+            dz in 0.05f64..2.0,
+            start in -5.0f64..35.0,
+            outward in proptest::bool::ANY,
+            ranges in proptest::collection::vec((-80.0f64..10.0, -80.0f64..10.0), 1..8),
+        ) {
+            // Cut axis Z falling, level axis X: a zigzag contour (flats when two levels repeat).
+            let pts: Vec<Vec3> = levels.iter().enumerate().map(|(i, &x)| Vec3::new((x * 4.0).round() / 4.0, 0.0, -(i as f64) * dz)).collect();
+            let dir_l = if outward { 1.0 } else { -1.0 };
+            let a1 = start * -dir_l;
+            let level_of = |k: usize| a1 + dir_l * k as f64 * step;
+            let deepest = pts.iter().map(|p| p.x).fold(a1, |m, v| if (v - m) * dir_l > 0.0 { v } else { m });
+            let count = (((deepest - a1).abs() / step) as usize).min(400);
+            let all = all_stretches(&pts, 0, 2, &level_of, count, dir_l, 2.0);
+            for k in 1..=count {
+                proptest::prop_assert_eq!(&all[k - 1], &deeper_stretches(&pts, 0, 2, level_of(k), dir_l, 2.0), "level {}", k);
+            }
+            let out = -dir_l;
+            let table = Outermost::new(&pts, 0, 2, -1.0, out);
+            for (a, b) in ranges {
+                let (lo, hi) = if a < b { (a, b) } else { (b, a) };
+                let scan = pts.iter().filter(|p| p.z >= lo && p.z <= hi).map(|p| p.x).reduce(|m, v| if (m - v) * out >= 0.0 { m } else { v });
+                proptest::prop_assert_eq!(table.between(lo, hi), scan);
+            }
+        }
     }
 }
