@@ -132,6 +132,10 @@ pub struct DrillData {
     pub dwell_s: Option<f64>,
     /// GSK lathe G83/G87 J1: the deep-hole cycle.
     pub deep: bool,
+    /// M29 given: rigid tapping mode for G84/G88 (GSK980TDi).
+    pub rigid_tap: bool,
+    /// G84/G88 with a negative F: a left-hand thread.
+    pub tap_left: bool,
 }
 
 /// Spindle rotation commanded by M03/M04/M05.

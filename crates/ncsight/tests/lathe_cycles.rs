@@ -173,3 +173,24 @@ fn fanuc_lathe_drilling_levels_and_contours() {
     let (_, d) = common::run_plain("fanuc0t", &[], text);
     assert_eq!(alarm(&d), Some("PS0066"));
 }
+
+/// G84 rigid tapping (help text G84/88): in with the spindle, out with it reversed, the way out
+/// starting at the angle the way in ended on; FEED HOLD and single block wait for the end (note
+/// 4), the feed override does not apply.
+#[test]
+fn rigid_tapping_goes_in_and_out_with_the_spindle() {
+    let (r, d) = run("G97 M03 S500\nG00 X0 Z3\nM29 S300\nG84 Z-20 P200 F1.5\nM30\n");
+    assert_eq!(alarm(&d), None, "{d:?}");
+    let taps: Vec<&Record> = r.iter().filter(|r| r.span.line == 4).collect();
+    let threads: Vec<(f64, f64, f64)> = taps
+        .iter()
+        .filter_map(|r| if let Op::Thread { to, spindle_deg, rpm, .. } = r.op { Some((to.z, spindle_deg, rpm)) } else { None })
+        .collect();
+    // 23 mm at 1.5 mm a turn = 15 1/3 turns: the way in ends at 120 degrees, the way out
+    // (turning back) starts at 240.
+    assert_eq!(threads.len(), 2);
+    assert_eq!((threads[0].0, threads[0].2), (-20.0, 300.0));
+    assert!((threads[1].1 - 240.0).abs() < 1e-6 && threads[1].2 == -300.0 && threads[1].0 == 3.0, "{threads:?}");
+    assert!(taps.iter().all(|r| r.hold == ncsight::motion::Hold::AfterRun && r.override_free));
+    assert!(taps.last().unwrap().block_end);
+}

@@ -46,6 +46,10 @@ pub enum DrillKind {
     FanucFace,
     /// FANUC 0-T lathe G87 without Q: the same along X.
     FanucSide,
+    /// GSK980TDi G84: rigid tapping along Z from the start point (help text G84/88).
+    TapFace,
+    /// GSK980TDi G88: rigid tapping along X from the start point.
+    TapSide,
 }
 
 impl DrillKind {
@@ -65,6 +69,8 @@ impl DrillKind {
             DrillKind::G89 => "G89",
             DrillKind::FaceG83 | DrillKind::FanucFace => "G83",
             DrillKind::SideG87 | DrillKind::FanucSide => "G87",
+            DrillKind::TapFace => "G84",
+            DrillKind::TapSide => "G88",
         }
     }
 
@@ -85,12 +91,23 @@ impl DrillKind {
 
     /// A lathe cycle: it drills along Z (G83) or X (G87) of the lathe, not along a plane's normal.
     pub fn on_lathe(self) -> bool {
-        matches!(self, DrillKind::FaceG83 | DrillKind::SideG87 | DrillKind::FanucFace | DrillKind::FanucSide)
+        matches!(self, DrillKind::FaceG83 | DrillKind::SideG87 | DrillKind::FanucFace | DrillKind::FanucSide | DrillKind::TapFace | DrillKind::TapSide)
     }
 
     /// The lathe cycles that drill along X.
     pub fn along_x(self) -> bool {
-        matches!(self, DrillKind::SideG87 | DrillKind::FanucSide)
+        matches!(self, DrillKind::SideG87 | DrillKind::FanucSide | DrillKind::TapSide)
+    }
+
+    /// GSK980TDi rigid tapping G84/G88: spindle-synchronised, not laid out by [`expand_each`].
+    pub fn rigid_tap(self) -> bool {
+        matches!(self, DrillKind::TapFace | DrillKind::TapSide)
+    }
+
+    /// A group 01 code that starts a lathe cycle of the GSK980TDi (G83, G87, G84, G88): it ends
+    /// the motion mode in force.
+    pub fn gsk_group01(self) -> bool {
+        self.from_start() || self.rigid_tap()
     }
 }
 
@@ -264,6 +281,7 @@ pub fn expand_each(h: &Hole, s: &mut dyn FnMut(Step)) {
             s(Step::Spindle(h.rpm));
         }
         DrillKind::G87 | DrillKind::FaceG83 | DrillKind::SideG87 => unreachable!("handled above"),
+        DrillKind::TapFace | DrillKind::TapSide => unreachable!("rigid tapping is laid out by the interpreter"),
     }
 }
 

@@ -314,8 +314,97 @@ fn fanuc_lathe_block(step: &mut Step, words: &mut Words, kind: DrillKind) -> Res
     Ok(())
 }
 
+/// GSK980TDi G84 (end face: the hole at X, tapped along Z) and G88 (side: the hole at Z, tapped
+/// along X), rigid tapping after `M29 S_` (help text G84/88): rapid to the hole position (the
+/// tapping start point, at the level the tool stands on), tap to the bottom with the spindle
+/// (lead F; F > 0 right-hand, F < 0 left-hand; or I threads per inch), dwell P, tap back out with
+/// the spindle reversed to the start point; K repeats. FEED HOLD and single block wait for the
+/// end of the tapping (note 4). The bottom, P and the hand stay until G80 or a group 01 code.
+fn rigid_tap_block(step: &mut Step, words: &mut Words, kind: DrillKind) -> Result<(), Diagnostic> {
+    let code = kind.code();
+    let (place, along) = lathe_axes(step, kind)?;
+    step.st.drill.kind = Some(kind);
+    if !step.st.drill.rigid_tap {
+        return Err(step.alarm(Rule::RigidTapOrder, step.span, format!("{code} needs M29 S_ before it (help text G84/88: rigid tapping is specified by M29)")));
+    }
+    let lead = match words.take(b'F') {
+        Some(w) => {
+            // The hand from F's sign, the lead its size; it stays as the F in force.
+            let lead = step.lead_word(w);
+            if lead == 0.0 || lead.abs() > super::thread::MAX_LEAD_MM + 1e-9 {
+                return Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("{}: the lead of {code} must be other than 0 and at most {} mm", w.text(), super::thread::MAX_LEAD_MM)));
+            }
+            step.st.drill.tap_left = lead < 0.0;
+            step.st.feed = Some(lead.abs());
+            step.st.thread.lead_mm = None;
+            lead.abs()
+        }
+        // I threads per inch, or the lead in force.
+        None => step.read_lead(words, code, true, false, super::thread::MAX_LEAD_MM)?,
+    };
+    take_dwell(step, words)?;
+    let repeats = repeats(step, words)?;
+    let bottom_given = lathe_word(step, words, along)?;
+    if let Some((v, inc)) = bottom_given {
+        let start = step.st.pos.axis(along);
+        step.st.drill.bottom = Some((if inc { start + v } else { v }, false));
+    }
+    let target = match lathe_word(step, words, place)? {
+        Some((v, true)) => Some(step.st.pos.axis(place) + v),
+        Some((v, false)) => Some(v),
+        None => None,
+    };
+    // A block without a position or a bottom only stores its data (F, P).
+    if (target.is_none() && bottom_given.is_none()) || repeats == 0 {
+        return Ok(());
+    }
+    let axis_name = if along == 2 { "Z (W)" } else { "X (U)" };
+    let Some((bottom, _)) = step.st.drill.bottom else {
+        return Err(step.alarm(Rule::MissingWord, step.span, format!("{code} needs the hole bottom {axis_name}")));
+    };
+    let rpm = step.follow_rpm(code)?.abs();
+    let rpm_in = if step.st.drill.tap_left { -rpm } else { rpm };
+    let dwell_s = step.st.drill.dwell_s.unwrap_or(0.0);
+    let first = step.out.records.len();
+    for _ in 0..repeats {
+        let mut start = step.st.pos;
+        if let Some(t) = target {
+            start.set_axis(place, t);
+        }
+        if start != step.st.pos {
+            step.emit(Op::Rapid { from: step.st.pos, to: start });
+        }
+        let mut end = start;
+        end.set_axis(along, bottom);
+        if end == start {
+            return Err(step.alarm(Rule::DrillLevels, step.span, format!("{code}: the hole bottom {axis_name} is where the tool starts: there is nothing to tap")));
+        }
+        let long = crate::motion::LongAxis::of(&start, &end);
+        let depth = (bottom - start.axis(along)).abs();
+        let tapping = step.out.records.len();
+        step.emit(crate::cycles::thread::thread_op(start, end, lead, long, 0.0, rpm_in));
+        if dwell_s > 0.0 {
+            step.emit(Op::Dwell { seconds: dwell_s });
+        }
+        let back_deg = crate::cycles::thread::wrap_deg(360.0 - crate::cycles::thread::phase_after(0.0, depth, lead));
+        step.emit(crate::cycles::thread::thread_op(end, start, lead, long, back_deg, -rpm_in));
+        // Note 4: FEED HOLD and single block wait for the end of the tapping and its way out.
+        for r in step.records_since(tapping) {
+            r.hold = Hold::AfterRun;
+            r.override_free = true;
+        }
+    }
+    if let Some(last) = step.records_since(first).last_mut() {
+        last.block_end = true;
+    }
+    Ok(())
+}
+
 /// A block while a drilling cycle is in force. `entering`: the block names a cycle code.
 pub(super) fn block(step: &mut Step, words: &mut Words, kind: DrillKind, entering: bool) -> Result<(), Diagnostic> {
+    if kind.rigid_tap() {
+        return rigid_tap_block(step, words, kind);
+    }
     if kind.from_start() {
         step.st.drill.kind = Some(kind);
         return from_start_block(step, words, kind);

@@ -472,9 +472,10 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
             GFn::CycleCancel => step.st.drill = Default::default(),
             GFn::Drill(kind) => {
                 codes.drill = Some(kind);
-                // The GSK lathe's G83/G87 are group 01 codes: they end the motion mode in force
-                // (its thread and box-cycle memories with it); G80 then leaves G00 (docs).
-                if kind.from_start() {
+                // The GSK lathe's G83/G87 (and G84/G88) are group 01 codes: they end the motion
+                // mode in force (its thread and box-cycle memories with it); G80 then leaves G00
+                // (docs).
+                if kind.gsk_group01() {
                     codes.motion = Some((w.span, Motion::Rapid));
                 }
             }
@@ -486,6 +487,13 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
     }
     // A non-thread group 01 code cancels the thread J/K and the cycle memory (seed 001 G32.1
     // note 1).
+    // Help text G84/88: no axis move between M29 and the G84/G88 block.
+    if step.st.drill.rigid_tap && step.st.drill.kind.is_none() && !codes.drill.is_some_and(|k| k.rigid_tap()) {
+        let axes: &[u8] = if profile.incremental_addresses { b"XYZUVW" } else { b"XYZ" };
+        if axes.iter().any(|l| words.has(*l)) {
+            return Err(step.alarm(Rule::RigidTapOrder, step.span, "an axis move between M29 and G84/G88 (help text G84/88: none may come between them)"));
+        }
+    }
     if let Some((_, m)) = codes.motion {
         if !matches!(m, Motion::Thread(_)) {
             // Seed 001 G32.1 note 1: a non-thread code cancels the rigid commands' J/K. Seed 000
@@ -504,8 +512,11 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
         // A group 01 code cancels a drilling cycle as G80 does (seed 003 8.1.4); a GSK lathe
         // cycle restated keeps its data, another one starts afresh (its bottom is on another
         // axis).
-        if !codes.drill.is_some_and(|k| k.from_start() && step.st.drill.kind == Some(k)) {
+        if !codes.drill.is_some_and(|k| k.gsk_group01() && step.st.drill.kind == Some(k)) {
+            // M29's rigid tapping mode is for the G84/G88 that follows.
+            let armed = step.st.drill.rigid_tap && codes.drill.is_some_and(|k| k.rigid_tap());
             step.st.drill = Default::default();
+            step.st.drill.rigid_tap = armed;
         }
     }
     let motion_now = codes.motion.map(|(_, m)| m).unwrap_or(step.st.motion);
@@ -537,7 +548,9 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
 
     // --- F, S, T ---
     let thread_block = matches!(motion_now, Motion::Thread(_)) && has_axis && codes.non_modal.is_none();
-    let f_word = if thread_block { None } else { words.take(b'F') };
+    // G84/G88's F is the tap's lead, signed by its hand (help text G84/88): the cycle reads it.
+    let tap_block = codes.drill.or(step.st.drill.kind).is_some_and(|k| k.rigid_tap());
+    let f_word = if thread_block || tap_block { None } else { words.take(b'F') };
     if let Some(w) = f_word {
         if w.value < 0.0 {
             return Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("{}: a feed cannot be negative", w.text())));
@@ -596,6 +609,13 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
                 }
                 MFn::SpindleSpeedMode => {
                     step.st.spindle_position_mode = false;
+                }
+                MFn::RigidTapping => {
+                    // Help text G84/88: M29 may not be given again while the mode is on.
+                    if step.st.drill.rigid_tap {
+                        return Err(step.alarm(Rule::RigidTapOrder, w.span, "M29: rigid tapping mode is on already (help text G84/88: M29 may not be repeated)"));
+                    }
+                    step.st.drill.rigid_tap = true;
                 }
                 MFn::Auxiliary => {}
                 MFn::SubprogramCall => {

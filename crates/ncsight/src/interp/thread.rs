@@ -50,7 +50,7 @@ pub(super) fn continues(cmd: ThreadCmd, pending: &PendingThread) -> bool {
 impl Step<'_> {
     /// A lead word (F, E) in mm: GSK reads it in mm without a point; FANUC/YASNAC in least
     /// input increments (BEHAVIOUR.md "Numbers and words").
-    fn lead_word(&mut self, w: &Word) -> f64 {
+    pub(super) fn lead_word(&mut self, w: &Word) -> f64 {
         let mut v = w.value;
         if !w.decimal && self.params.integer_lengths() == IntegerLengths::LeastIncrement {
             v *= if self.st.inch { 0.0001 } else { 0.001 };

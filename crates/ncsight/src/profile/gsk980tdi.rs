@@ -7,7 +7,10 @@ use crate::alarm::AlarmStyle;
 use crate::cycles::drill::DrillKind;
 use crate::motion::ArcDir;
 
-const LATER_DRILL: GFn = GFn::NotYet("the lathe tapping and boring cycles (G84, G85, G88, G89) are not simulated by ncsight yet");
+const LATER_DRILL: GFn = GFn::NotYet("the lathe boring cycles (G85, G89) are not simulated by ncsight yet: the help text has no page for them");
+
+/// M29 S_: rigid tapping mode (help text G84/88).
+const TAPPING_M: &[super::MDef] = &[super::MDef { code: 29, function: super::MFn::RigidTapping, meaning: "rigid tapping mode: with S, before G84/G88" }];
 
 const EXTRA: &[GDef] = &[
     g(32, Group::Motion, GFn::Thread(ThreadCmd::Lead), "thread cutting: F lead or I threads per inch, J/K pull-out, Q start angle"),
@@ -21,10 +24,10 @@ const EXTRA: &[GDef] = &[
     gp(92, 1, Group::Motion, GFn::Thread(ThreadCmd::Cycle(CycleKind::TdiRigid)), "rigid thread cutting cycle (help text: R F L P S)"),
     GDef { major: 80, minor: None, group: Group::Motion, function: GFn::CycleCancel, meaning: "cancel a drilling cycle" },
     GDef { major: 83, minor: None, group: Group::Motion, function: GFn::Drill(DrillKind::FaceG83), meaning: "end face peck drilling cycle" },
-    GDef { major: 84, minor: None, group: Group::Motion, function: LATER_DRILL, meaning: "end face tapping cycle" },
+    GDef { major: 84, minor: None, group: Group::Motion, function: GFn::Drill(DrillKind::TapFace), meaning: "end face rigid tapping cycle (after M29 S_)" },
     GDef { major: 85, minor: None, group: Group::Motion, function: LATER_DRILL, meaning: "end face boring cycle" },
     GDef { major: 87, minor: None, group: Group::Motion, function: GFn::Drill(DrillKind::SideG87), meaning: "side peck drilling cycle" },
-    GDef { major: 88, minor: None, group: Group::Motion, function: LATER_DRILL, meaning: "side tapping cycle" },
+    GDef { major: 88, minor: None, group: Group::Motion, function: GFn::Drill(DrillKind::TapSide), meaning: "side rigid tapping cycle (after M29 S_)" },
     GDef { major: 89, minor: None, group: Group::Motion, function: LATER_DRILL, meaning: "side boring cycle" },
     g(78, Group::NonModal, GFn::CompoundThread(Compound::G78), "compound thread cutting cycle with infeed modes, two blocks"),
 ];
@@ -156,7 +159,7 @@ pub static PROFILE: Profile = Profile {
     addresses: super::Letters::new("GMSTFXZUWRIJKPQLNDE"),
     peck_back_off: Some(ParamKey::Number(56, None)),
     g_codes: &[common::G_CODES, lathe_a::G_CODES, EXTRA],
-    m_codes: &[common::M_CODES, lathe_a::M_CODES, lathe_a::GSK_M_CODES],
+    m_codes: &[common::M_CODES, lathe_a::M_CODES, lathe_a::GSK_M_CODES, TAPPING_M],
     params: &[PARAMS, DRY_RUN, SETTINGS],
     time: TimeKeys {
         rapid: [ParamKey::Number(22, None), ParamKey::Number(22, None), ParamKey::Number(22, None)],

@@ -239,6 +239,9 @@ pub enum MFn {
     SpindleSpeedMode,
     /// Coolant, chuck, tailstock...: no motion, accepted.
     Auxiliary,
+    /// M29 S_ on the GSK980TDi: rigid tapping mode for the G84/G88 that follows (help text
+    /// G84/88).
+    RigidTapping,
 }
 
 #[derive(Debug, Clone, Copy)]
