@@ -134,6 +134,8 @@ pub struct DrillData {
     pub deep: bool,
     /// M29 given: rigid tapping mode for G84/G88 (GSK980TDi).
     pub rigid_tap: bool,
+    /// M29 given and no G84/G88 block run since: no axis may move (help text G84/88).
+    pub tap_waiting: bool,
     /// G84/G88 with a negative F: a left-hand thread.
     pub tap_left: bool,
 }

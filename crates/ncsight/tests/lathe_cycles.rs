@@ -193,4 +193,15 @@ fn rigid_tapping_goes_in_and_out_with_the_spindle() {
     assert!((threads[1].1 - 240.0).abs() < 1e-6 && threads[1].2 == -300.0 && threads[1].0 == 3.0, "{threads:?}");
     assert!(taps.iter().all(|r| r.hold == ncsight::motion::Hold::AfterRun && r.override_free));
     assert!(taps.last().unwrap().block_end);
+    // K2: single block stops after each hole; G04 between M29 and G84 is not a move; G84 to G88
+    // keeps the hand and the dwell (note 1 asks only for the bottom again).
+    let (r, d) = run("G97 M03 S500\nG00 X40 Z3\nM29 S300\nG04 X1.0\nG84 X0 Z-20 F-1.5 P300 K2\nG88 Z-10 X20\nM30\n");
+    assert_eq!(alarm(&d), None, "{d:?}");
+    assert_eq!(r.iter().filter(|r| r.span.line == 5 && r.block_end).count(), 2);
+    let g88: Vec<f64> = r.iter().filter(|r| r.span.line == 6).filter_map(|r| if let Op::Thread { rpm, .. } = r.op { Some(rpm) } else { None }).collect();
+    assert_eq!(g88, vec![-300.0, 300.0]);
+    assert!(r.iter().any(|r| r.span.line == 6 && matches!(r.op, Op::Dwell { .. })));
+    // M29 while G83 is in force, then a move: NCS-E57.
+    let (_, d) = run("G97 M03 S500\nG00 X0 Z3\nG83 Z-5 F0.1\nM29 S300\nX10\nG84 Z-20 F1.5\nM30\n");
+    assert_eq!(alarm(&d), Some("NCS-E57"));
 }

@@ -364,8 +364,8 @@ fn rigid_tap_block(step: &mut Step, words: &mut Words, kind: DrillKind) -> Resul
     };
     let rpm = step.follow_rpm(code)?.abs();
     let rpm_in = if step.st.drill.tap_left { -rpm } else { rpm };
+    step.st.drill.tap_waiting = false;
     let dwell_s = step.st.drill.dwell_s.unwrap_or(0.0);
-    let first = step.out.records.len();
     for _ in 0..repeats {
         let mut start = step.st.pos;
         if let Some(t) = target {
@@ -388,14 +388,16 @@ fn rigid_tap_block(step: &mut Step, words: &mut Words, kind: DrillKind) -> Resul
         }
         let back_deg = crate::cycles::thread::wrap_deg(360.0 - crate::cycles::thread::phase_after(0.0, depth, lead));
         step.emit(crate::cycles::thread::thread_op(end, start, lead, long, back_deg, -rpm_in));
-        // Note 4: FEED HOLD and single block wait for the end of the tapping and its way out.
-        for r in step.records_since(tapping) {
+        // Note 4: FEED HOLD and single block wait for the end of the tapping and its way out;
+        // single block stops after each hole, K times for K repeats (docs/commands/operator.md).
+        let recs = step.records_since(tapping);
+        for r in recs.iter_mut() {
             r.hold = Hold::AfterRun;
             r.override_free = true;
         }
-    }
-    if let Some(last) = step.records_since(first).last_mut() {
-        last.block_end = true;
+        if let Some(last) = recs.last_mut() {
+            last.block_end = true;
+        }
     }
     Ok(())
 }

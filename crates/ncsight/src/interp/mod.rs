@@ -485,15 +485,16 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
             GFn::NotYet(_) => unreachable!("rejected above"),
         }
     }
-    // A non-thread group 01 code cancels the thread J/K and the cycle memory (seed 001 G32.1
-    // note 1).
-    // Help text G84/88: no axis move between M29 and the G84/G88 block.
-    if step.st.drill.rigid_tap && step.st.drill.kind.is_none() && !codes.drill.is_some_and(|k| k.rigid_tap()) {
+    // Help text G84/88: no axis move between M29 and the G84/G88 block (a dwell's X is a time).
+    let dwell_block = matches!(codes.non_modal, Some((_, GFn::Dwell)));
+    if step.st.drill.tap_waiting && !dwell_block && !codes.drill.is_some_and(|k| k.rigid_tap()) {
         let axes: &[u8] = if profile.incremental_addresses { b"XYZUVW" } else { b"XYZ" };
         if axes.iter().any(|l| words.has(*l)) {
             return Err(step.alarm(Rule::RigidTapOrder, step.span, "an axis move between M29 and G84/G88 (help text G84/88: none may come between them)"));
         }
     }
+    // A non-thread group 01 code cancels the thread J/K and the cycle memory (seed 001 G32.1
+    // note 1).
     if let Some((_, m)) = codes.motion {
         if !matches!(m, Motion::Thread(_)) {
             // Seed 001 G32.1 note 1: a non-thread code cancels the rigid commands' J/K. Seed 000
@@ -513,10 +514,18 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
         // cycle restated keeps its data, another one starts afresh (its bottom is on another
         // axis).
         if !codes.drill.is_some_and(|k| k.gsk_group01() && step.st.drill.kind == Some(k)) {
-            // M29's rigid tapping mode is for the G84/G88 that follows.
-            let armed = step.st.drill.rigid_tap && codes.drill.is_some_and(|k| k.rigid_tap());
+            let before = step.st.drill;
             step.st.drill = Default::default();
-            step.st.drill.rigid_tap = armed;
+            if codes.drill.is_some_and(|k| k.rigid_tap()) {
+                // M29's rigid tapping mode is for the G84/G88 that follows; between G84 and G88
+                // only the bottom is to be given again (note 1): the hand and P stay.
+                step.st.drill.rigid_tap = before.rigid_tap;
+                step.st.drill.tap_waiting = before.tap_waiting;
+                if before.kind.is_some_and(|k| k.rigid_tap()) {
+                    step.st.drill.tap_left = before.tap_left;
+                    step.st.drill.dwell_s = before.dwell_s;
+                }
+            }
         }
     }
     let motion_now = codes.motion.map(|(_, m)| m).unwrap_or(step.st.motion);
@@ -616,6 +625,7 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
                         return Err(step.alarm(Rule::RigidTapOrder, w.span, "M29: rigid tapping mode is on already (help text G84/88: M29 may not be repeated)"));
                     }
                     step.st.drill.rigid_tap = true;
+                    step.st.drill.tap_waiting = true;
                 }
                 MFn::Auxiliary => {}
                 MFn::SubprogramCall => {
