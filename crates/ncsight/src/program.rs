@@ -50,11 +50,9 @@ pub struct Program {
 /// Everything but the operator machine: reading and interpreting, with buffers reused from line
 /// to line so that the steady state allocates nothing.
 struct Core {
-    reader: Reader,
+    reader: LineReader,
     interp: Interpreter,
     mode: Mode,
-    /// Records are passed on (through the machine); off for a diagnostics-only check.
-    records: bool,
     line_no: u32,
     status: Status,
     eof: bool,
@@ -248,10 +246,9 @@ impl Program {
             machine: Machine::new(&params, operator),
             block: Block::default(),
             core: Core {
-                reader: Reader::new(style),
+                reader: LineReader { reader: Reader::new(style) },
                 interp: Interpreter::new(params, switches),
                 mode,
-                records: true,
                 line_no: 0,
                 status: Status::Running,
                 eof: false,
@@ -268,7 +265,6 @@ impl Program {
     /// (the same diagnostics as [`Mode::Check`], without the time model's work).
     pub fn diagnostics_only(params: Params, switches: Switches) -> Program {
         let mut p = Program::new(params, switches, Mode::Check);
-        p.core.records = false;
         p.core.outcome.discard_records = true;
         p
     }
@@ -304,14 +300,14 @@ impl Program {
             return;
         }
         let mut read = std::mem::take(&mut self.core.read);
-        self.line_reader().read(self.core.line_no.wrapping_add(1), raw, &mut read);
+        self.core.reader.read(self.core.line_no.wrapping_add(1), raw, &mut read);
         self.feed_read(&mut read, sink);
         self.core.read = read;
     }
 
     /// A reader for the lines of this programme (see [`ReadBatch`]).
     pub fn line_reader(&self) -> LineReader {
-        LineReader { reader: self.core.reader.clone() }
+        self.core.reader.clone()
     }
 
     /// Feed line `i` of a batch read ahead by [`ReadBatch::push`]. Lines must come in order,
@@ -324,7 +320,7 @@ impl Program {
             return;
         }
         let Program { core, machine, block } = self;
-        if core.records {
+        if core.records() {
             core.interpret_packed(batch, &l, block, &mut |e| machine.push(e, sink));
         } else {
             core.interpret_packed(batch, &l, block, sink);
@@ -338,7 +334,7 @@ impl Program {
             return;
         }
         let Program { core, machine, .. } = self;
-        if core.records {
+        if core.records() {
             core.interpret_read(read, &mut |e| machine.push(e, sink));
         } else {
             core.interpret_read(read, sink);
@@ -370,7 +366,7 @@ impl Program {
             );
             events.push(Event::Diagnostic(d));
         }
-        if !c.records {
+        if !c.records() {
             events.into_iter().for_each(sink);
             return;
         }
@@ -382,6 +378,12 @@ impl Program {
 }
 
 impl Core {
+    /// Records are passed on (through the machine); not in a diagnostics-only check, whose
+    /// interpreter keeps none.
+    fn records(&self) -> bool {
+        !self.outcome.discard_records
+    }
+
     /// Interpret one line read; the events are untimed.
     fn interpret_read(&mut self, read: &mut ReadLine, sink: &mut dyn FnMut(Event)) {
         let line = &mut read.line;
@@ -509,7 +511,7 @@ impl Core {
                 sink(Event::Diagnostic(w));
             }
         }
-        if self.records && !self.outcome.records.is_empty() {
+        if self.records() && !self.outcome.records.is_empty() {
             for r in self.outcome.records.drain(..) {
                 sink(Event::Record(r));
             }

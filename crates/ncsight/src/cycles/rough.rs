@@ -329,7 +329,7 @@ fn levels_type_two(
     let at = |lv: f64, cv: f64| place(a1, axes, lv, cv);
     // How far along the cut axis the levels reach (for the check after them).
     let mut reach = a1.axis(c);
-    let outer = |a: f64, b: f64| if (a - b) * out >= 0.0 { a } else { b };
+    let outer = |a: f64, b: f64| Outermost::outer_of(out, a, b);
     // The travel level over the contour between two cut-axis positions (nothing stands before
     // the contour's start).
     let outermost = Outermost::new(pts, l, c, dir_c, out);
@@ -419,6 +419,7 @@ impl<'a> Outermost<'a> {
         Outermost { pts, c, dir_c, out, table }
     }
 
+    /// The one of `a` and `b` further out (`out` gives the outward sign); `a` on a tie.
     fn outer_of(out: f64, a: f64, b: f64) -> f64 {
         if (a - b) * out >= 0.0 { a } else { b }
     }

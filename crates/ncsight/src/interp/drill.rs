@@ -141,18 +141,18 @@ fn from_start_block(step: &mut Step, words: &mut Words, kind: DrillKind) -> Resu
         step.st.drill.deep = w.value == 1.0;
     }
     let repeats = repeats(step, words)?;
-    let (target, given) = super::axis_target(step, words)?;
-    if given[along] {
-        step.st.drill.bottom = Some((target.axis(along), false));
+    let place_at = lathe_position(step, words, place)?;
+    let bottom_at = lathe_position(step, words, along)?;
+    if let Some(b) = bottom_at {
+        step.st.drill.bottom = Some((b, false));
     }
-    if !(given[place] || given[along]) || repeats == 0 {
+    if (place_at.is_none() && bottom_at.is_none()) || repeats == 0 {
         return Ok(());
     }
+    let target = place_at.unwrap_or(step.st.pos.axis(place));
     let start = step.st.pos.axis(along);
-    let axis_name = if along == 2 { "Z (W)" } else { "X (U)" };
-    let Some((bottom, _)) = step.st.drill.bottom else {
-        return Err(step.alarm(Rule::MissingWord, step.span, format!("{code} needs the hole bottom {axis_name}")));
-    };
+    let axis_name = axis_name(along);
+    let (bottom, _) = bottom_in_force(step, code, along)?;
     if bottom == start {
         return Err(step.alarm(
             Rule::DrillLevels,
@@ -171,7 +171,7 @@ fn from_start_block(step: &mut Step, words: &mut Words, kind: DrillKind) -> Resu
     let global = lathe_global(place, along);
     for _ in 0..repeats {
         let from_g = step.st.pos;
-        let at = [target.axis(place), from_g.y];
+        let at = [target, from_g.y];
         let feed = step.cutting_feed(code, &|u| global([at[0], at[1], start + (bottom - start) * u], &from_g))?;
         let hole = Hole {
             kind,
@@ -229,6 +229,23 @@ fn lathe_word(step: &mut Step, words: &mut Words, axis: usize) -> Result<Option<
     }
 }
 
+/// A lathe axis word as a position on that axis: absolute, or from where the tool stands.
+fn lathe_position(step: &mut Step, words: &mut Words, axis: usize) -> Result<Option<f64>, Diagnostic> {
+    let word = lathe_word(step, words, axis)?;
+    Ok(word.map(|(v, inc)| if inc { step.st.pos.axis(axis) + v } else { v }))
+}
+
+/// How a lathe cycle's drilling axis is named in its messages.
+fn axis_name(along: usize) -> &'static str {
+    if along == 2 { "Z (W)" } else { "X (U)" }
+}
+
+/// The hole bottom in force (as stored: the value and whether it counts from the R level), or
+/// the alarm that none was given since the cycle began.
+fn bottom_in_force(step: &Step, code: &str, along: usize) -> Result<(f64, bool), Diagnostic> {
+    step.st.drill.bottom.ok_or_else(|| step.alarm(Rule::MissingWord, step.span, format!("{code} needs the hole bottom {}", axis_name(along))))
+}
+
 /// FANUC 0-T G83 (face: the hole at X, drilled along Z) and G87 (side: the hole at Z, drilled
 /// along X), the cycle without Q: rapid to the hole position, rapid to the R level (R, signed, is
 /// the distance from the initial level), feed to the bottom Z (X; W, U from the R level), dwell
@@ -261,19 +278,13 @@ fn fanuc_lathe_block(step: &mut Step, words: &mut Words, kind: DrillKind) -> Res
     if let Some(b) = lathe_word(step, words, along)? {
         step.st.drill.bottom = Some(b);
     }
-    let target = match lathe_word(step, words, place)? {
-        Some((v, true)) => step.st.pos.axis(place) + v,
-        Some((v, false)) => v,
-        None => step.st.pos.axis(place),
-    };
+    let target = lathe_position(step, words, place)?.unwrap_or(step.st.pos.axis(place));
     if !drills || repeats == 0 {
         return Ok(());
     }
     let d = step.st.drill;
-    let axis_name = if along == 2 { "Z (W)" } else { "X (U)" };
-    let Some((b, b_inc)) = d.bottom else {
-        return Err(step.alarm(Rule::MissingWord, step.span, format!("{code} needs the hole bottom {axis_name}")));
-    };
+    let axis_name = axis_name(along);
+    let (b, b_inc) = bottom_in_force(step, code, along)?;
     let r_level = d.initial + d.r.map_or(0.0, |r| r.0);
     let bottom = if b_inc { r_level + b } else { b };
     if (bottom - r_level).abs() < 1e-9 {
@@ -344,24 +355,17 @@ fn rigid_tap_block(step: &mut Step, words: &mut Words, kind: DrillKind) -> Resul
     };
     take_dwell(step, words)?;
     let repeats = repeats(step, words)?;
-    let bottom_given = lathe_word(step, words, along)?;
-    if let Some((v, inc)) = bottom_given {
-        let start = step.st.pos.axis(along);
-        step.st.drill.bottom = Some((if inc { start + v } else { v }, false));
+    let bottom_given = lathe_position(step, words, along)?;
+    if let Some(b) = bottom_given {
+        step.st.drill.bottom = Some((b, false));
     }
-    let target = match lathe_word(step, words, place)? {
-        Some((v, true)) => Some(step.st.pos.axis(place) + v),
-        Some((v, false)) => Some(v),
-        None => None,
-    };
+    let target = lathe_position(step, words, place)?;
     // A block without a position or a bottom only stores its data (F, P).
     if (target.is_none() && bottom_given.is_none()) || repeats == 0 {
         return Ok(());
     }
-    let axis_name = if along == 2 { "Z (W)" } else { "X (U)" };
-    let Some((bottom, _)) = step.st.drill.bottom else {
-        return Err(step.alarm(Rule::MissingWord, step.span, format!("{code} needs the hole bottom {axis_name}")));
-    };
+    let axis_name = axis_name(along);
+    let (bottom, _) = bottom_in_force(step, code, along)?;
     let rpm = step.follow_rpm(code)?.abs();
     let rpm_in = if step.st.drill.tap_left { -rpm } else { rpm };
     step.st.drill.tap_waiting = false;
