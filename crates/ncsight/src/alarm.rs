@@ -118,6 +118,8 @@ rules! {
     NotReached => Warning, "NCS-W20", None, "OPERATOR ACTION AFTER THE PROGRAMME END";
     CycleWords => Warning, "NCS-W21", None, "T, S, M BELONG BEFORE THE CYCLE";
     RoughingCollision => Warning, "NCS-W22", None, "ROUGHING MOVES THROUGH THE PART";
+    HoldIgnored => Warning, "NCS-W23", None, "FEED HOLD IGNORED DURING THE THREAD";
+    AllowanceNotCut => Warning, "NCS-W24", None, "FINISHING ALLOWANCE NEVER CUT";
 }
 
 impl Rule {
@@ -159,5 +161,24 @@ impl Diagnostic {
 
     pub fn is_alarm(&self) -> bool {
         self.severity() == Severity::Alarm
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// One code, one meaning: no two rules share a project code or a FANUC number.
+    #[test]
+    fn every_code_belongs_to_one_rule() {
+        for (i, a) in Rule::ALL.iter().enumerate() {
+            for b in &Rule::ALL[i + 1..] {
+                assert_ne!(a.project_code(), b.project_code(), "{a:?} and {b:?}");
+                if let (Some(x), Some(y)) = (a.fanuc_code(), b.fanuc_code()) {
+                    assert_ne!(x, y, "{a:?} and {b:?}");
+                }
+                assert_ne!(a.title(), b.title(), "{a:?} and {b:?}");
+            }
+        }
     }
 }

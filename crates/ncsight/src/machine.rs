@@ -138,7 +138,16 @@ impl Machine {
         out(Event::Record(r));
     }
 
+    /// Run a record, and the records a thread hold makes it cut again (a queue, not recursion:
+    /// any number of presses runs in constant stack).
     fn run(&mut self, r: Record, out: &mut dyn FnMut(Event)) {
+        let mut queue = std::collections::VecDeque::from([r]);
+        while let Some(r) = queue.pop_front() {
+            self.run_one(r, &mut queue, out);
+        }
+    }
+
+    fn run_one(&mut self, r: Record, queue: &mut std::collections::VecDeque<Record>, out: &mut dyn FnMut(Event)) {
         if self.reset {
             return;
         }
@@ -208,13 +217,21 @@ impl Machine {
                 self.deferred = true;
                 self.finish_record(r, dur, out);
             }
+            Hold::Ignored => {
+                // The press is lost: the screen keeps showing RUN (GSK988T manual, G32.1 note 6).
+                let msg = format!(
+                    "FEED HOLD at {h} s was ignored: the thread is being cut (the control keeps running and does not remember the press; press it again once the thread is done)"
+                );
+                out(Event::Diagnostic(Diagnostic::new(Rule::HoldIgnored, self.style, r.span, msg)));
+                self.finish_record(r, dur, out);
+            }
             Hold::ThreadCycle(th) => match th.style {
                 ThreadHoldStyle::FinishThenStop => {
                     // NO.0018 bit 6 = 1: the thread and its pull-out are finished first.
                     self.deferred = true;
                     self.finish_record(r, dur, out);
                 }
-                _ => self.thread_hold(r, th, start, dur, h.max(start), out),
+                _ => self.thread_hold(r, th, start, dur, h.max(start), queue, out),
             },
         }
     }
@@ -258,7 +275,8 @@ impl Machine {
 
     /// The G92 thread hold: pull out (thread up) at once from where the tool is, return to A
     /// (or stop where the pull-out ends), then cut the cycle again from its start.
-    fn thread_hold(&mut self, r: Record, th: ThreadHold, start: f64, dur: f64, at: f64, out: &mut dyn FnMut(Event)) {
+    #[allow(clippy::too_many_arguments)]
+    fn thread_hold(&mut self, r: Record, th: ThreadHold, start: f64, dur: f64, at: f64, queue: &mut std::collections::VecDeque<Record>, out: &mut dyn FnMut(Event)) {
         let span = r.span;
         let Op::Thread { from, to, lead_mm, long_axis, spindle_deg, rpm } = r.op else {
             self.finish_record(r, dur, out);
@@ -313,9 +331,8 @@ impl Machine {
         }
         // CYCLE START: the interrupted cycle again from its start (seed 004: "restarts the current
         // processing from the beginning"), the same records, so the same groove.
-        let again: Vec<Record> = self.cycle_buf.clone();
-        for rec in again {
-            self.run(rec, out);
+        for rec in self.cycle_buf.iter().rev() {
+            queue.push_front(rec.clone());
         }
     }
 }

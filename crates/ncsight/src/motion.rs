@@ -255,6 +255,10 @@ pub enum Hold {
     /// Ignored until the synchronised run or the tapping cycle this record belongs to is done
     /// (seed 001 G32.1 note 6, G92.1 note 7; seed 003 8.1.2; TDi help G32 note 3).
     AfterRun,
+    /// A press during this record is discarded: the controller keeps showing RUN and does not
+    /// remember it; the operator must press FEED HOLD again once no thread is being cut (GSK988T
+    /// manual, G32.1 note 6 and G92.1 note 7; GSK980TDi help text, G32.1 note 4).
+    Ignored,
     /// A thread of a G92 cycle: the controller's own thread hold.
     ThreadCycle(ThreadHold),
 }

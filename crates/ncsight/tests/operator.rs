@@ -95,24 +95,42 @@ fn seed_004_thread_cutting_hold_d7_1_stops_at_b() {
 
 const O0009_RUN: &str = "M14\nG00 X30 Z3\nG32.1 W-20 F2 S500\nG32.1 W-20 J1 K1\nG00 X55\nM15\nM30\n";
 
-#[test]
-fn seed_001_g32_1_note_6_hold_waits_for_the_end_of_the_run() {
-    let plain = run("gsk988t", &[], Options::default(), O0009_RUN);
-    let h = mid_thread(&plain);
-    let r = run("gsk988t", &[], hold_at(h), O0009_RUN);
-    let i = stops(&r)[0].0;
-    // After the last thread record of the run (the pull-out), before G00 X55.
-    assert_eq!(r[i - 1].op.kind(), "thread");
-    assert_eq!(r[i + 1].op.end_point().map(dia_z).unwrap().0, 55.0);
+fn run_diags(machine: &str, opts: Options, text: &str) -> (Vec<Record>, Vec<ncsight::Diagnostic>) {
+    common::run_with(machine, &[], Switches::default(), opts, text)
 }
 
+/// GSK988T manual, G32.1 note 6: FEED HOLD during a G32.1 thread does nothing (the screen keeps
+/// showing RUN); the press is not remembered, so the run goes on past the thread; the operator
+/// must press again once no thread is being cut. A warning says the press was ignored.
 #[test]
-fn seed_001_g92_1_note_7_hold_after_the_thread_but_at_once_in_a_rapid() {
+fn seed_001_g32_1_note_6_a_hold_during_the_thread_is_ignored() {
+    let plain = run("gsk988t", &[], Options::default(), O0009_RUN);
+    let h = mid_thread(&plain);
+    let (r, d) = run_diags("gsk988t", hold_at(h), O0009_RUN);
+    assert!(stops(&r).is_empty(), "no stop anywhere: {:?}", stops(&r));
+    assert_eq!(r.len(), plain.len());
+    let w: Vec<_> = d.iter().filter(|d| d.code == "NCS-W23").collect();
+    assert_eq!(w.len(), 1, "{d:?}");
+    assert!(w[0].message.contains("ignored"), "{}", w[0].message);
+    // Pressed again during the G00 X55 that follows: that press stops the axes.
+    let j = plain.iter().position(|r| r.op.end_point().map(dia_z).is_some_and(|p| p.0 == 55.0)).unwrap();
+    let h2 = (plain[j - 1].t_s + plain[j].t_s) / 2.0;
+    let (r, _) = run_diags("gsk988t", Options { feed_hold_at: vec![h, h2], ..Options::default() }, O0009_RUN);
+    let s = stops(&r);
+    assert_eq!(s.len(), 1);
+    let last_thread = r.iter().rposition(|r| r.op.is_thread()).unwrap();
+    assert!(s[0].0 > last_thread && r[s[0].0 - 1].op.kind() == "rapid", "the second press stops the G00: {s:?}");
+}
+
+/// GSK988T manual, G92.1 note 7: a press during the thread is ignored (the cycle goes on to its
+/// end without stopping); during the cycle's rapids it stops the axes at once.
+#[test]
+fn seed_001_g92_1_note_7_hold_ignored_in_the_thread_but_at_once_in_a_rapid() {
     let prog = "G0 X65 Z5\nM14\nG92.1 X58.7 Z-28 F3 S300 J3 K1\nM15\nM30\n";
     let plain = run("gsk988t", &[], Options::default(), prog);
-    let r = run("gsk988t", &[], hold_at(mid_thread(&plain)), prog);
-    let i = stops(&r)[0].0;
-    assert_eq!(r[i - 1].op.end_point().map(dia_z), Some((64.7, -28.0)));
+    let (r, d) = run_diags("gsk988t", hold_at(mid_thread(&plain)), prog);
+    assert!(stops(&r).is_empty(), "{:?}", stops(&r));
+    assert!(d.iter().any(|d| d.code == "NCS-W23"));
     // During the step 4 rapid the hold stops the axes where they are.
     let j = plain.iter().rposition(|r| matches!(r.op, Op::Rapid { .. })).unwrap();
     let h = (plain[j - 1].t_s + plain[j].t_s) / 2.0;
@@ -121,6 +139,35 @@ fn seed_001_g92_1_note_7_hold_after_the_thread_but_at_once_in_a_rapid() {
     let p = r[i - 1].op.end_point().unwrap();
     assert!(p.z > -28.0 && p.z < 5.0, "{p:?}");
     assert_eq!(r[i + 1].op.end_point().map(dia_z), Some((65.0, 5.0)));
+}
+
+/// GSK980TDi help text, G92.1 note 3 (and G32 note 3): the thread is finished, then the run
+/// pauses: the press is remembered.
+#[test]
+fn tdi_help_g92_1_note_3_hold_stops_after_the_thread() {
+    let prog = "G0 X65 Z5\nM14\nG92.1 X58.7 Z-28 F3 S300\nM15\nM30\n";
+    let plain = run("gsk980tdi", &[], Options::default(), prog);
+    let (r, d) = run_diags("gsk980tdi", hold_at(mid_thread(&plain)), prog);
+    let s = stops(&r);
+    assert_eq!(s.len(), 1);
+    assert_eq!(r[s[0].0 - 1].op.kind(), "thread");
+    assert!(!d.iter().any(|d| d.code == "NCS-W23"));
+}
+
+/// Thousands of presses run in constant stack (the thread hold's restart is a queue).
+#[test]
+fn thousands_of_presses_do_not_overflow_the_stack() {
+    let plain = run("gsk980tdi", &[], Options::default(), O0012);
+    let end = plain.last().unwrap().t_s;
+    let presses: Vec<f64> = (0..8000).map(|i| end * i as f64 / 8000.0).collect();
+    let opts = Options { feed_hold_at: presses, ..Options::default() };
+    let (r, _) = std::thread::Builder::new()
+        .stack_size(256 * 1024)
+        .spawn(move || run_diags("gsk980tdi", opts, O0012))
+        .unwrap()
+        .join()
+        .unwrap();
+    assert!(r.last().is_some_and(|r| matches!(r.op, Op::End { .. })));
 }
 
 #[test]

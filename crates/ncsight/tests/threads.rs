@@ -690,3 +690,11 @@ fn g34_lead_must_stay_positive() {
     let r = run("gsk980tdi", &[], "G97 S200 M03\nG0 X40 Z5\nG34 Z-40 F2 R-0.5\nM30\n");
     assert_eq!(r.alarm().unwrap().code, "NCS-E51");
 }
+
+/// G76 with m = 0 finishing passes: its own warning (NCS-W24), not the "text ignored" one.
+#[test]
+fn g76_without_finishing_passes_warns_with_its_own_code() {
+    let r = run("gsk980tdi", &[], "G97 S300 M03\nG0 X70 Z5\nG76 P000060 Q100 R0.1\nG76 X60 Z-40 P1000 Q500 F2\nM30\n").ok();
+    assert!(r.warned("NCS-W24"));
+    assert!(!r.warned("NCS-W04"));
+}

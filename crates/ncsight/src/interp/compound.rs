@@ -179,7 +179,7 @@ fn cut(step: &mut Step, words: &mut Words, name: &str, kind: Compound, data: G78
     }
     let base = data.base;
     if base.finishing == 0 {
-        step.warn(Rule::TextIgnored, step.span, format!("{name} with no finishing passes: the finishing allowance is never cut"));
+        step.warn(Rule::AllowanceNotCut, step.span, format!("{name} with no finishing passes: the finishing allowance is never cut"));
     }
     let schedule = pass_depths(data.schedule, height, first, base.dmin_mm, base.allowance_mm, base.finishing)
         .map_err(|e| cycle_alarm(step, name, e))?;

@@ -622,7 +622,10 @@ fn cycle(step: &mut Step, words: &mut Words, kind: CycleKind, explicit: bool) ->
         }
         // FANUC 0-T without the thread-cutting retract option: the thread finishes first
         // (assumption, docs/commands/operator.md).
-        CycleKind::GskRigid | CycleKind::TdiRigid | CycleKind::Fanuc => Hold::AfterRun,
+        // GSK988T G92.1 note 7: a press during the thread does nothing (the cycle's rapids stop).
+        CycleKind::GskRigid => Hold::Ignored,
+        // GSK980TDi help text, G92.1 note 3: the thread is finished, then the run pauses.
+        CycleKind::TdiRigid | CycleKind::Fanuc => Hold::AfterRun,
     };
     let mut last_start = None;
     for (k, op) in ops {
@@ -721,9 +724,12 @@ pub(super) fn flush(step: &mut Step, p: PendingThread, run_ends: bool) {
     }
     // Single block stops after the last block of a run only (seed 001 G32.1 note 7; TDi help G32
     // note 4). The perpendicular pull-out after a G32.1 end is part of the thread for the hold.
+    // FEED HOLD: G32 (TDi help G32 note 3) stops when the run is cut; G32.1 ignores the press
+    // (GSK988T manual, G32.1 note 6: the screen keeps showing RUN; TDi help G32.1 note 4).
+    let hold = if p.rigid { Hold::Ignored } else { Hold::AfterRun };
     let recs = step.records_since(first);
     for r in recs.iter_mut() {
-        r.hold = Hold::AfterRun;
+        r.hold = hold;
     }
     if let Some(last) = recs.last_mut() {
         last.block_end = run_ends;
