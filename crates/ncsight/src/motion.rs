@@ -303,6 +303,9 @@ pub struct Record {
     pub cycle: Option<u32>,
     /// The feed override does not apply (threads always; tapping: seed 003 8.1.2).
     pub override_free: bool,
+    /// The acceleration time constant of this move where the controller has its own for it
+    /// (the GSK988T's perpendicular pull-out after a G32.1 end: parameter 1628), seconds.
+    pub accel_s: Option<f64>,
 }
 
 impl Record {
@@ -314,6 +317,6 @@ impl Record {
             _ => Hold::Stop,
         };
         let override_free = op.is_thread();
-        Record { span, t_s: 0.0, op, block_end: false, hold, cycle: None, override_free }
+        Record { span, t_s: 0.0, op, block_end: false, hold, cycle: None, override_free, accel_s: None }
     }
 }

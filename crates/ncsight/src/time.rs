@@ -163,7 +163,7 @@ impl TimeModel {
 
     /// The time constant that applies to a record.
     pub fn accel_s(&self, r: &Record) -> f64 {
-        if matches!(r.op, Op::Rapid { .. }) { self.rapid_accel_s } else { self.feed_accel_s }
+        if matches!(r.op, Op::Rapid { .. }) { self.rapid_accel_s } else { r.accel_s.unwrap_or(self.feed_accel_s) }
     }
 
     /// Seconds a record takes. `run_start`: a thread record that starts a synchronised run
@@ -173,7 +173,7 @@ impl TimeModel {
             Op::Rapid { from, to } => (0..3)
                 .map(|a| trapezoid_s((to.axis(a) - from.axis(a)).abs(), self.rapid_mm_min[a], self.rapid_accel_s))
                 .fold(0.0, f64::max),
-            Op::Feed { from, to, feed_mm_min } => trapezoid_s(from.dist(to), self.feed_speed(r, *feed_mm_min), self.feed_accel_s),
+            Op::Feed { from, to, feed_mm_min } => trapezoid_s(from.dist(to), self.feed_speed(r, *feed_mm_min), self.accel_s(r)),
             Op::Arc { from, to, plane, feed_mm_min, .. } => {
                 let len = arc_geom_of(&r.op).map(|g| geom::arc_length(from, to, *plane, &g)).unwrap_or(0.0);
                 trapezoid_s(len, self.feed_speed(r, *feed_mm_min), self.feed_accel_s)

@@ -325,3 +325,26 @@ mod properties {
         }
     }
 }
+
+/// GSK988T manual, G32.1 note 5: with J and no K the tool goes straight out along the short axis
+/// after the end point at parameter 1466's speed, with parameter 1628's acceleration time constant.
+#[test]
+fn seed_001_g32_1_note_5_the_pull_out_follows_1466_and_1628() {
+    let prog = "M14\nG00 X30 Z3\nG32.1 W-20 F2 S500 J1\nG00 X55\nM15\nM30\n";
+    let pull_out_s = |params: &[&str]| {
+        let r = run("gsk988t", params, Options::default(), prog);
+        let i = r.iter().position(|r| matches!(r.op, Op::Feed { .. })).expect("the pull-out feed");
+        let Op::Feed { from, to, .. } = r[i].op else { unreachable!() };
+        assert!((from.dist(&to) - 1.0).abs() < 1e-9, "J1: 1 mm out");
+        r[i].t_s - r[i - 1].t_s
+    };
+    // 1 mm at 3000 mm/min (50 mm/s): never at speed with T = 0.05 s (it would need 2.5 mm):
+    // a triangle, 2 sqrt(L T / v).
+    let t = pull_out_s(&["1466=3000", "1628=50"]);
+    assert!((t - 2.0 * (1.0f64 * 0.05 / 50.0).sqrt()).abs() < 1e-9, "{t}");
+    let t = pull_out_s(&["1466=3000", "1628=500"]);
+    assert!((t - 2.0 * (1.0f64 * 0.5 / 50.0).sqrt()).abs() < 1e-9, "{t}");
+    // 600 mm/min (10 mm/s), T = 0.05 s: at speed after 0.5 mm: L / v + T.
+    let t = pull_out_s(&["1466=600", "1628=50"]);
+    assert!((t - (0.1 + 0.05)).abs() < 1e-9, "{t}");
+}

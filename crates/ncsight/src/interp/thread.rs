@@ -273,6 +273,12 @@ impl Step<'_> {
         }
     }
 
+    /// The time constant of the perpendicular pull-out after the end point (GSK988T 1628, seed
+    /// 001 G32.1 note 5), seconds; `None` where the profile has none (the feed's own applies).
+    fn pull_out_accel_s(&self) -> Option<f64> {
+        self.profile.thread.pull_out_accel.map(|k| self.params.get(k) / 1000.0)
+    }
+
     fn after_end_feed(&self) -> f64 {
         self.profile.thread.after_end_feed.map(|k| self.params.get(k)).filter(|v| *v > 0.0).unwrap_or(self.params.feed_max_mm_min())
     }
@@ -637,9 +643,15 @@ fn cycle(step: &mut Step, words: &mut Words, kind: CycleKind, explicit: bool) ->
         let first = step.out.records.len();
         step.emit(op);
         let id = step.st.thread.cycles;
+        let accel = step.pull_out_accel_s();
         if let Some(r) = step.records_since(first).first_mut() {
             r.cycle = Some(id);
             if is_thread {
+                r.hold = hold;
+            }
+            if matches!(r.op, Op::Feed { .. }) {
+                // The perpendicular pull-out after the end point (G92.1 note 3).
+                r.accel_s = accel;
                 r.hold = hold;
             }
         }
@@ -727,9 +739,13 @@ pub(super) fn flush(step: &mut Step, p: PendingThread, run_ends: bool) {
     // FEED HOLD: G32 (TDi help G32 note 3) stops when the run is cut; G32.1 ignores the press
     // (GSK988T manual, G32.1 note 6: the screen keeps showing RUN; TDi help G32.1 note 4).
     let hold = if p.rigid { Hold::Ignored } else { Hold::AfterRun };
+    let accel = step.pull_out_accel_s();
     let recs = step.records_since(first);
     for r in recs.iter_mut() {
         r.hold = hold;
+        if matches!(r.op, Op::Feed { .. }) {
+            r.accel_s = accel;
+        }
     }
     if let Some(last) = recs.last_mut() {
         last.block_end = run_ends;

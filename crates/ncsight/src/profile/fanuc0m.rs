@@ -138,7 +138,7 @@ pub static PROFILE: Profile = Profile {
         dry_run: ParamKey::Setting("dry_run_mm_min"),
         feed_max: ParamKey::Number(527, None),
     },
-    thread: ThreadRules { q_point: QPoint::Alarm, arc_q_unit_deg: 0.001, pull_out_speed: None, after_end_feed: None, repair_enable: None, g32_pull_out: false, g76: None },
+    thread: ThreadRules { q_point: QPoint::Alarm, arc_q_unit_deg: 0.001, pull_out_speed: None, after_end_feed: None, pull_out_accel: None, repair_enable: None, g32_pull_out: false, g76: None },
     summary: "FANUC 0-M machining centre. G90/G91, G17 at power on. Lengths without a decimal point \
 are least input increments (X100 = 0.1 mm), F without a point is mm/min.",
 };

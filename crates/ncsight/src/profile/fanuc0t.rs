@@ -116,6 +116,7 @@ pub static PROFILE: Profile = Profile {
         arc_q_unit_deg: 0.001,
         pull_out_speed: None,
         after_end_feed: None,
+        pull_out_accel: None,
         repair_enable: None,
         g32_pull_out: false,
         g76: Some(G76Keys {

@@ -98,7 +98,7 @@ pub static PROFILE: Profile = Profile {
         dry_run: ParamKey::Number(1410, None),
         feed_max: ParamKey::Number(1422, None),
     },
-    thread: ThreadRules { q_point: QPoint::Alarm, arc_q_unit_deg: 1.0, pull_out_speed: None, after_end_feed: Some(ParamKey::Number(1466, None)), repair_enable: Some(ParamKey::Number(8135, Some(7))), g32_pull_out: true, g76: None },
+    thread: ThreadRules { q_point: QPoint::Alarm, arc_q_unit_deg: 1.0, pull_out_speed: None, after_end_feed: Some(ParamKey::Number(1466, None)), pull_out_accel: Some(ParamKey::Number(1628, None)), repair_enable: Some(ParamKey::Number(8135, Some(7))), g32_pull_out: true, g76: None },
     summary: "GSK988T turning centre with a servo (CS) spindle: M14 position mode, M15 speed mode. \
 X is a diameter, U/W incremental; lengths without a decimal point are millimetres.",
 };

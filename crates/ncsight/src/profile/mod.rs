@@ -183,6 +183,9 @@ pub struct ThreadRules {
     pub pull_out_speed: Option<ParamKey>,
     /// Parameter giving the perpendicular pull-out speed after the end point (GSK988T 1466).
     pub after_end_feed: Option<ParamKey>,
+    /// Parameter giving that pull-out's acceleration/deceleration time constant, ms (GSK988T
+    /// 1628, seed 001 G32.1 note 5).
+    pub pull_out_accel: Option<ParamKey>,
     /// Bit parameter that enables thread repair (GSK988T 8135.7 RPTH, GSK980TDi No.174 bit 4).
     pub repair_enable: Option<ParamKey>,
     /// G32 takes J and K (GSK) or not (FANUC).
