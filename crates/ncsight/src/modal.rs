@@ -244,6 +244,11 @@ impl Modal {
 
     /// Spindle speed in rpm at a given diameter (G96 needs it), signed by direction; 0 if
     /// stopped.
+    /// The G96 surface speed in m/min: S is feet per minute under G20.
+    pub fn surface_m_min(&self) -> f64 {
+        if self.inch { self.s_word * 0.3048 } else { self.s_word }
+    }
+
     pub fn rpm_at(&self, diameter_mm: f64, max_rpm: f64) -> f64 {
         let sign = match self.spindle {
             SpindleDir::Stopped => return 0.0,
@@ -254,7 +259,8 @@ impl Modal {
         let rpm = if self.css {
             let clamp = self.rpm_clamp.unwrap_or(max_rpm).min(max_rpm);
             let d = diameter_mm.abs();
-            if d < 1e-9 { clamp } else { (self.s_word * 1000.0 / (std::f64::consts::PI * d)).min(clamp) }
+            // S is m/min, or ft/min under G20 (FANUC and GSK lathe manuals, G96): mm per unit.
+            if d < 1e-9 { clamp } else { (self.surface_m_min() * 1000.0 / (std::f64::consts::PI * d)).min(clamp) }
         } else {
             self.s_word.min(max_rpm)
         };

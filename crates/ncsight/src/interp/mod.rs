@@ -786,7 +786,7 @@ fn describe_command(step: &Step, codes: &Codes) -> String {
 
 fn emit_spindle(step: &mut Step) {
     let rpm = step.rpm_here();
-    let surface = if step.st.css { Some(step.st.s_word) } else { None };
+    let surface = if step.st.css { Some(step.st.surface_m_min()) } else { None };
     let position_mode = step.st.spindle_position_mode;
     step.emit(Op::Spindle { rpm, surface_m_min: surface, position_mode, oriented: false });
 }
