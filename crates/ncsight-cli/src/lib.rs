@@ -597,7 +597,7 @@ fn machines(name: Option<&str>, out: &mut dyn Write) -> Result<i32, Failure> {
                     Some(m) => format!("G{:02}.{m}", g.major),
                     None => format!("G{:02}", g.major),
                 };
-                let state = if let ncsight::profile::GFn::NotYet(_) = g.function { " (not simulated yet)" } else { "" };
+                let state = if let ncsight::profile::GFn::NotYet(_) | ncsight::profile::GFn::NotYetReference(_) = g.function { " (not simulated yet)" } else { "" };
                 writeln!(out, "  {code:<7} {}{state}", g.meaning)?;
             }
             writeln!(out, "\nM codes:")?;

@@ -72,6 +72,7 @@ rules! {
     ContourCommand => Alarm, "NCS-E55", Some("PS0066"), "UNAVAILABLE COMMAND IN THE SHAPE PROGRAM";
     PlaneMismatch => Alarm, "NCS-E56", None, "CYCLE NOT AVAILABLE IN THIS PLANE";
     RigidTapOrder => Alarm, "NCS-E57", None, "RIGID TAPPING: M29 S_ FIRST, THEN G84/G88";
+    ReferenceInCannedCycle => Alarm, "NCS-E58", Some("PS0044"), "G27-G30 NOT ALLOWED IN FIXED CYC";
     // --- project rules (no controller number known) ---
     BadCharacter => Alarm, "NCS-E30", None, "CHARACTER NOT ALLOWED";
     LineTooLong => Alarm, "NCS-E31", None, "BLOCK TOO LONG";

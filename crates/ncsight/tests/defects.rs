@@ -23,3 +23,64 @@ fn g96_under_g20_is_feet_per_minute() {
         assert!((rpm.last().unwrap() - 150_000.0 / (std::f64::consts::PI * 50.0)).abs() < 0.01, "{machine}: {rpm:?}");
     }
 }
+
+fn first_alarm(machine: &str, text: &str) -> Option<ncsight::Diagnostic> {
+    let (_, d) = common::run_plain(machine, &[], text);
+    d.into_iter().find(|d| d.is_alarm())
+}
+
+/// FANUC alarm 0044: G27-G30 while a drilling cycle is in force (no extra hole drilled); after
+/// G80, or with G80 in the same block, G28 runs.
+#[test]
+fn fanuc_0044_reference_return_in_a_canned_cycle() {
+    let head = "G21 G17 G90 G0 X0. Y0. Z50.\nS500 M3\nG99 G81 X10. Y10. Z-10. R2. F100.\n";
+    let a = first_alarm("fanuc0m", &format!("{head}G91 G28 Z0.\nM30\n")).unwrap();
+    assert_eq!((a.code, a.span.line), ("PS0044", 4));
+    assert!(first_alarm("fanuc0m", &format!("{head}G80\nG91 G28 Z0.\nM30\n")).is_none());
+    assert!(first_alarm("fanuc0m", &format!("{head}G80 G91 G28 Z0.\nM30\n")).is_none());
+    // G30 (not simulated yet) in a cycle is 0044 too, outside one "not simulated yet".
+    assert_eq!(first_alarm("fanuc0m", &format!("{head}G30 Z0.\nM30\n")).unwrap().code, "PS0044");
+    assert_eq!(first_alarm("fanuc0m", "G30 Z0.\nM30\n").unwrap().code, "NCS-E38");
+}
+
+/// A code the controller has but ncsight does not simulate is "not simulated yet" (NCS-E38),
+/// never "no such G code"; a code the controller lacks is IMPROPER G-CODE.
+#[test]
+fn codes_of_the_manual_are_not_simulated_yet_not_unknown() {
+    for (machine, block) in [
+        ("fanuc0m", "G30 Z0."),
+        ("fanuc0m", "G52 X10."),
+        ("fanuc0m", "G45 X10. D1"),
+        ("fanuc0m", "G31 X10. F100."),
+        ("fanuc0m", "G60 X10."),
+        ("fanuc0m", "G65 P9000"),
+        ("fanuc0m", "G68 X0 Y0 R45."),
+        ("fanuc0m", "G69"),
+        ("fanuc0t", "G53 X0 Z0"),
+        ("fanuc0t", "G84 Z-10. F1."),
+        ("fanuc0t", "G30 U0 W0"),
+        ("gsk980tdi", "G65 H01 P100 Q10"),
+        ("gsk980tdi", "G31 W-10 F100"),
+        ("gsk988t", "G12.1"),
+        ("yasnac-lx3", "G30 U0 W0"),
+    ] {
+        let a = first_alarm(machine, &format!("{block}\nM30\n")).unwrap_or_else(|| panic!("{machine} {block}: no alarm"));
+        assert_eq!(a.code, "NCS-E38", "{machine} {block}: {a:?}");
+        assert!(a.message.contains("not simulated"), "{}", a.message);
+    }
+    assert_eq!(first_alarm("fanuc0m", "G71 X10.\nM30\n").unwrap().code, "PS0010");
+}
+
+/// Custom macro statements say that they are not simulated yet, instead of a misleading alarm
+/// about their first letter ("address I has no value", "letter O where a zero was meant").
+#[test]
+fn macro_statements_are_not_simulated_yet() {
+    for block in ["IF [#1 GT 10] GOTO 20", "WHILE [#2 LT 5] DO 1", "END 1", "GOTO 4", "/GOTO4", "N10 IF[#100EQ0]GOTO99", "#100 = 5", "G0 X#1", "DO1"] {
+        for machine in ["fanuc0m", "gsk980tdi"] {
+            let a = first_alarm(machine, &format!("{block}\nM30\n")).unwrap();
+            assert_eq!(a.code, "NCS-E38", "{block}: {a:?}");
+            assert!(a.message.contains("custom macro") && a.message.contains("not simulated"), "{block}: {}", a.message);
+            assert!(a.hint.as_deref().is_none_or(|h| !h.contains("letter O")), "{block}: {:?}", a.hint);
+        }
+    }
+}

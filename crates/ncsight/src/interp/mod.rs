@@ -334,9 +334,17 @@ fn collect<'w>(
     let profile = step.profile;
     let mut gs = Vec::new();
     let mut ms = Vec::new();
+    // A code not simulated yet answers for its block: its own words (G65's H, G10's L) are not
+    // judged by the rules of the codes that are.
+    let not_yet = block.words.iter().any(|w| {
+        w.letter == b'G'
+            && !w.expr
+            && w.value >= 0.0
+            && matches!(profile.g_code(w.code().0, w.code().1).map(|g| g.function), Some(GFn::NotYet(_) | GFn::NotYetReference(_)))
+    });
     for (i, w) in block.words.iter().enumerate() {
         let letter = w.letter;
-        if !profile.takes_address(letter) {
+        if !profile.takes_address(letter) && !not_yet {
             return Err(step.alarm(
                 Rule::ImproperAddress,
                 w.span,
@@ -411,7 +419,19 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
         } else {
             last_of.push((g.group, w, g));
         }
-        if let GFn::NotYet(why) = g.function {
+        if matches!(g.function, GFn::ReferenceReturn | GFn::NotYetReference(_))
+            && profile.reference_in_canned_cycle_alarm
+            && step.st.drill.kind.is_some()
+            && !gs.iter().any(|(_, g)| g.function == GFn::CycleCancel)
+        {
+            // FANUC alarm 0044: cancel the drilling cycle (G80) before G27-G30.
+            return Err(step.alarm(
+                Rule::ReferenceInCannedCycle,
+                w.span,
+                format!("{}: a reference-point return while a drilling canned cycle is in force; cancel it with G80 first", w.text()),
+            ));
+        }
+        if let GFn::NotYet(why) | GFn::NotYetReference(why) = g.function {
             return Err(step.alarm(Rule::NotSupported, w.span, format!("{} ({}): {why}", w.text(), g.meaning)));
         }
     }
@@ -482,7 +502,7 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
             GFn::Dwell | GFn::ReferenceReturn | GFn::LatheCoordinateSet | GFn::MillCoordinateSet | GFn::CompoundThread(_) | GFn::PeckCycle(_) | GFn::Rough(_) | GFn::Finish => {
                 codes.non_modal = Some((w.span, g.function))
             }
-            GFn::NotYet(_) => unreachable!("rejected above"),
+            GFn::NotYet(_) | GFn::NotYetReference(_) => unreachable!("rejected above"),
         }
     }
     // Help text G84/88: no axis move between M29 and the G84/G88 block (a dwell's X is a time).

@@ -12,6 +12,7 @@ mod fanuc0t;
 mod gsk980tdi;
 mod gsk988t;
 mod lathe_a;
+mod later;
 mod yasnac_lx3;
 
 use crate::alarm::AlarmStyle;
@@ -57,6 +58,20 @@ pub enum Group {
     ReturnLevel,
     WorkOffset,
     PathMode,
+    /// Polar coordinate interpolation (G12.1/G13.1) or command (G15/G16).
+    Polar,
+    /// The GSK980TDi's G15/G16, beside its G12.1/G13.1.
+    Polar2,
+    /// Stored stroke check G22/G23.
+    StrokeCheck,
+    /// Scaling G50/G51 (FANUC 0-M).
+    Scaling,
+    /// Modal macro call G66/G67.
+    MacroCall,
+    /// Coordinate rotation (mill) or turret mirror image (lathe) G68/G69.
+    Rotation,
+    /// Spindle speed fluctuation detection G25/G26 (FANUC 0-T).
+    SpindleCheck,
 }
 
 /// What a G code does, as far as the interpreter is concerned.
@@ -117,6 +132,9 @@ pub enum GFn {
     BoxCycle(crate::cycles::turning::BoxKind),
     /// Known to the controller, not yet simulated: an alarm that says so.
     NotYet(&'static str),
+    /// A reference-point code (G27, G29, G30) known to the controller, not yet simulated: an
+    /// alarm that says so, after the rules that every reference-point code follows (FANUC 0044).
+    NotYetReference(&'static str),
 }
 
 /// The two-block compound threading cycles.
@@ -409,6 +427,9 @@ pub struct Profile {
     pub power_on_per_rev: bool,
     /// Two G codes from group 00 and group 01 in one block is an alarm (GSK, TAC p65).
     pub group00_with_01_alarm: bool,
+    /// A reference-point code (G27-G30) while a drilling canned cycle is in force is an alarm
+    /// (FANUC alarm 0044, G27-G30 NOT ALLOWED IN FIXED CYC).
+    pub reference_in_canned_cycle_alarm: bool,
     /// Axes the machine has, of "XYZ" (formatters omit the others).
     pub axes: &'static str,
     /// The reference point G28 returns to, in programme coordinates (mm, X as a radius). The

@@ -138,6 +138,27 @@ impl Reader {
         Diagnostic::new(rule, self.style, Span::new(line, col as u32 + 1, len.max(1) as u32), msg)
     }
 
+    /// A custom macro statement (`IF [..] GOTO n`, `WHILE [..] DO m`, `END m`, `GOTO n`, the
+    /// output statements) starting at `i`: the letters form a keyword, not an address and its
+    /// value. Until macros are simulated such a block gets one clear alarm instead of a
+    /// misleading one about its first letter.
+    fn macro_statement(&self, line_no: u32, s: &[u8], i: usize) -> Option<Diagnostic> {
+        const KEYWORDS: [&[u8]; 10] = [b"IF", b"WHILE", b"GOTO", b"END", b"DO", b"POPEN", b"PCLOS", b"DPRNT", b"BPRNT", b"SETVN"];
+        let run = s[i..].iter().take_while(|c| c.is_ascii_alphabetic()).count();
+        let word = &s[i..i + run];
+        let keyword = KEYWORDS.iter().find(|k| k.eq_ignore_ascii_case(word))?;
+        let end = s[i..].iter().position(|&c| c == b';' || c == b'(').map_or(s.len(), |k| i + k);
+        let text = String::from_utf8_lossy(&s[i..end]);
+        let d = self.diag(
+            Rule::NotSupported,
+            line_no,
+            i,
+            end - i,
+            format!("{}: custom macro statements ({}) are not simulated by ncsight yet", text.trim_end(), String::from_utf8_lossy(keyword)),
+        );
+        Some(d.with_hint("custom macro B (IF, WHILE, GOTO, # variables) is planned; until then the programme stops here"))
+    }
+
     /// Read one line (its line break may be included). `line_no` is 1-based.
     pub fn read_line(&self, line_no: u32, raw: &[u8]) -> Line {
         let mut out = Line::default();
@@ -252,6 +273,10 @@ impl Reader {
                 }
                 _ if c.is_ascii_alphabetic() => {
                     block_start.get_or_insert(i);
+                    if let Some(d) = self.macro_statement(line_no, s, i) {
+                        out.blocks.push(Err(d));
+                        return;
+                    }
                     match self.word(line_no, s, i) {
                         Ok((w, next)) => {
                             i = next;
@@ -290,7 +315,7 @@ impl Reader {
                         )
                         .with_hint("a letter such as G was probably left out")
                     } else if c == b'#' {
-                        self.diag(Rule::NotSupported, line_no, i, 1, "macro variables (#) are not supported by ncsight")
+                        self.diag(Rule::NotSupported, line_no, i, 1, "custom macro variables (#) are not simulated by ncsight yet")
                     } else if c.is_ascii() {
                         let d = self.diag(
                             Rule::BadCharacter,
@@ -378,7 +403,7 @@ impl Reader {
                 Rule::NotSupported,
                 self.style,
                 span_to(i + 1),
-                format!("{}#: macro variables are not supported by ncsight", letter as char),
+                format!("{}#: custom macro variables are not simulated by ncsight yet", letter as char),
             ));
         }
         let num_start = i;

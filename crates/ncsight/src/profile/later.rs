@@ -1,0 +1,151 @@
+//! Codes each controller's manual has that ncsight does not simulate yet: listed so that a
+//! programme using one stops with "not simulated yet" (NCS-E38), never "no such G code". The
+//! lists follow each manual's G-code table; where no table of that controller was at hand the
+//! nearest one is used and the meaning says "inferred" (docs/profiles.md names the sources).
+
+use super::common::{g, gp};
+use super::{GDef, GFn, Group};
+
+const LATER: GFn = GFn::NotYet("not simulated by ncsight yet");
+/// A reference-point code not simulated yet (it still counts for FANUC alarm 0044).
+const LATER_REF: GFn = GFn::NotYetReference("not simulated by ncsight yet");
+
+/// FANUC 0-M (the 0-M list as the FANUC 0i-MC manual gives it; seed 003's table of contents
+/// names G27-G30, G52, G53, G92).
+pub(super) const FANUC_0M: &[GDef] = &[
+    g(9, Group::NonModal, LATER, "exact stop for one block"),
+    g(10, Group::NonModal, LATER, "programmable data input (offsets, work offsets)"),
+    g(15, Group::Polar, LATER, "polar coordinate command off"),
+    g(16, Group::Polar, LATER, "polar coordinate command on"),
+    g(22, Group::StrokeCheck, LATER, "stored stroke check on"),
+    g(23, Group::StrokeCheck, LATER, "stored stroke check off"),
+    g(27, Group::NonModal, LATER_REF, "reference point return check"),
+    g(29, Group::NonModal, LATER_REF, "return from the reference point via the G28 intermediate point"),
+    g(30, Group::NonModal, LATER_REF, "return to the 2nd, 3rd or 4th reference point"),
+    g(31, Group::NonModal, LATER, "skip function (feed until the skip signal)"),
+    g(33, Group::Motion, LATER, "thread cutting"),
+    g(37, Group::NonModal, LATER, "automatic tool length measurement"),
+    g(39, Group::NonModal, LATER, "corner circular interpolation in cutter compensation"),
+    g(45, Group::NonModal, LATER, "tool offset increase"),
+    g(46, Group::NonModal, LATER, "tool offset decrease"),
+    g(47, Group::NonModal, LATER, "tool offset double increase"),
+    g(48, Group::NonModal, LATER, "tool offset double decrease"),
+    g(50, Group::Scaling, LATER, "scaling off"),
+    g(51, Group::Scaling, LATER, "scaling on"),
+    g(52, Group::NonModal, LATER, "local coordinate system"),
+    g(60, Group::NonModal, LATER, "single direction positioning"),
+    g(62, Group::PathMode, LATER, "automatic corner override"),
+    g(63, Group::PathMode, LATER, "tapping mode"),
+    g(65, Group::NonModal, LATER, "custom macro call"),
+    g(66, Group::MacroCall, LATER, "custom macro modal call"),
+    g(67, Group::MacroCall, LATER, "custom macro modal call cancel"),
+    g(68, Group::Rotation, LATER, "coordinate system rotation"),
+    g(69, Group::Rotation, LATER, "coordinate system rotation cancel"),
+    g(96, Group::SpindleSpeedMode, LATER, "constant surface speed control"),
+    g(97, Group::SpindleSpeedMode, LATER, "constant surface speed control cancel"),
+];
+
+/// FANUC 0-T, G-code system A (the FANUC 0-TC G-code table; the 0i-TC for what it lacks).
+pub(super) const FANUC_0T: &[GDef] = &[
+    gp(7, 1, Group::NonModal, LATER, "cylindrical interpolation (C axis)"),
+    g(10, Group::NonModal, LATER, "programmable data input (offsets)"),
+    g(11, Group::NonModal, LATER, "programmable data input cancel"),
+    gp(12, 1, Group::Polar, LATER, "polar coordinate interpolation on (C axis)"),
+    gp(13, 1, Group::Polar, LATER, "polar coordinate interpolation off"),
+    g(22, Group::StrokeCheck, LATER, "stored stroke check on"),
+    g(23, Group::StrokeCheck, LATER, "stored stroke check off"),
+    g(25, Group::SpindleCheck, LATER, "spindle speed fluctuation detection off"),
+    g(26, Group::SpindleCheck, LATER, "spindle speed fluctuation detection on"),
+    g(27, Group::NonModal, LATER_REF, "reference point return check"),
+    g(30, Group::NonModal, LATER_REF, "return to the 2nd, 3rd or 4th reference point"),
+    g(31, Group::NonModal, LATER, "skip function"),
+    g(36, Group::NonModal, LATER, "automatic tool compensation, X"),
+    g(37, Group::NonModal, LATER, "automatic tool compensation, Z"),
+    g(52, Group::NonModal, LATER, "local coordinate system"),
+    g(53, Group::NonModal, LATER, "positioning in the machine coordinate system"),
+    g(65, Group::NonModal, LATER, "custom macro call"),
+    g(66, Group::MacroCall, LATER, "custom macro modal call"),
+    g(67, Group::MacroCall, LATER, "custom macro modal call cancel"),
+    g(68, Group::Rotation, LATER, "mirror image for double turrets on"),
+    g(69, Group::Rotation, LATER, "mirror image for double turrets off"),
+    g(84, Group::CannedCycle, LATER, "face tapping cycle"),
+    g(85, Group::CannedCycle, LATER, "face boring cycle"),
+    g(88, Group::CannedCycle, LATER, "side tapping cycle"),
+    g(89, Group::CannedCycle, LATER, "side boring cycle"),
+];
+
+/// GSK980TDi (every code of the on-line help text).
+pub(super) const GSK980TDI: &[GDef] = &[
+    g(5, Group::NonModal, LATER, "high-speed machining (look-ahead) mode"),
+    gp(5, 1, Group::NonModal, LATER, "smooth interpolation"),
+    gp(6, 2, Group::Motion, LATER, "elliptic interpolation, clockwise"),
+    gp(6, 3, Group::Motion, LATER, "elliptic interpolation, counter-clockwise"),
+    gp(7, 1, Group::NonModal, LATER, "cylindrical interpolation"),
+    gp(7, 2, Group::Motion, LATER, "parabolic interpolation, clockwise"),
+    gp(7, 3, Group::Motion, LATER, "parabolic interpolation, counter-clockwise"),
+    g(9, Group::NonModal, LATER, "exact stop for one block"),
+    g(10, Group::NonModal, LATER, "data input from the programme (L3: tool life)"),
+    g(11, Group::NonModal, LATER, "data input cancel"),
+    gp(12, 1, Group::Polar, LATER, "polar coordinate interpolation on"),
+    gp(13, 1, Group::Polar, LATER, "polar coordinate interpolation off"),
+    g(15, Group::Polar2, LATER, "polar coordinate command off"),
+    g(16, Group::Polar2, LATER, "polar coordinate command on"),
+    g(22, Group::StrokeCheck, LATER, "stored stroke check on"),
+    g(23, Group::StrokeCheck, LATER, "stored stroke check off"),
+    g(30, Group::NonModal, LATER_REF, "return to the 2nd, 3rd or 4th reference point"),
+    g(31, Group::NonModal, LATER, "skip function"),
+    g(36, Group::NonModal, LATER, "automatic tool compensation, X"),
+    g(37, Group::NonModal, LATER, "automatic tool compensation, Z"),
+    g(52, Group::NonModal, LATER, "local coordinate system"),
+    g(61, Group::PathMode, LATER, "exact stop mode"),
+    g(64, Group::PathMode, LATER, "continuous cutting mode"),
+    g(65, Group::NonModal, LATER, "macro call (macro A and B)"),
+    g(66, Group::MacroCall, LATER, "macro modal call"),
+    g(67, Group::MacroCall, LATER, "macro modal call cancel"),
+];
+
+/// GSK988T: G12.1/G13.1 from its G-code table; the rest inferred from the GSK980TDi help text.
+pub(super) const GSK988T: &[GDef] = &[
+    g(10, Group::NonModal, LATER, "data input from the programme (inferred)"),
+    g(11, Group::NonModal, LATER, "data input cancel (inferred)"),
+    gp(12, 1, Group::Polar, LATER, "polar coordinate interpolation on"),
+    gp(13, 1, Group::Polar, LATER, "polar coordinate interpolation off"),
+    g(22, Group::StrokeCheck, LATER, "stored stroke check on (inferred)"),
+    g(23, Group::StrokeCheck, LATER, "stored stroke check off (inferred)"),
+    g(27, Group::NonModal, LATER_REF, "reference point return check (inferred)"),
+    g(30, Group::NonModal, LATER_REF, "return to the 2nd, 3rd or 4th reference point (inferred)"),
+    g(31, Group::NonModal, LATER, "skip function (inferred)"),
+    g(33, Group::Motion, LATER, "tapping cycle (inferred)"),
+    g(34, Group::Motion, LATER, "variable-lead thread cutting (inferred)"),
+    g(36, Group::NonModal, LATER, "automatic tool compensation, X (inferred)"),
+    g(37, Group::NonModal, LATER, "automatic tool compensation, Z (inferred)"),
+    g(52, Group::NonModal, LATER, "local coordinate system (inferred)"),
+    g(53, Group::NonModal, LATER, "positioning in the machine coordinate system (inferred)"),
+    g(65, Group::NonModal, LATER, "macro call (inferred)"),
+    g(66, Group::MacroCall, LATER, "macro modal call (inferred)"),
+    g(67, Group::MacroCall, LATER, "macro modal call cancel (inferred)"),
+    g(80, Group::Motion, LATER, "drilling cycle cancel (inferred)"),
+    g(83, Group::Motion, LATER, "end face drilling cycle (inferred)"),
+    g(84, Group::Motion, LATER, "end face tapping cycle (inferred)"),
+    g(85, Group::Motion, LATER, "end face boring cycle (inferred)"),
+    g(87, Group::Motion, LATER, "side drilling cycle (inferred)"),
+    g(88, Group::Motion, LATER, "side tapping cycle (inferred)"),
+    g(89, Group::Motion, LATER, "side boring cycle (inferred)"),
+];
+
+/// YASNAC LX3: no G-code table was found; FANUC 0-T-style lathe codes (inferred).
+pub(super) const YASNAC_LX3: &[GDef] = &[
+    g(10, Group::NonModal, LATER, "data setting (inferred)"),
+    g(22, Group::StrokeCheck, LATER, "stored stroke limit on (inferred)"),
+    g(23, Group::StrokeCheck, LATER, "stored stroke limit off (inferred)"),
+    g(27, Group::NonModal, LATER_REF, "reference point return check (inferred)"),
+    g(29, Group::NonModal, LATER_REF, "return from the reference point (inferred)"),
+    g(30, Group::NonModal, LATER_REF, "return to the 2nd reference point (inferred)"),
+    g(31, Group::NonModal, LATER, "skip function (inferred)"),
+    g(34, Group::Motion, LATER, "variable-lead thread cutting (inferred)"),
+    g(65, Group::NonModal, LATER, "custom macro call (inferred)"),
+    g(66, Group::MacroCall, LATER, "custom macro modal call (inferred)"),
+    g(67, Group::MacroCall, LATER, "custom macro modal call cancel (inferred)"),
+    g(68, Group::Rotation, LATER, "mirror image for an opposed turret on (inferred)"),
+    g(69, Group::Rotation, LATER, "mirror image for an opposed turret off (inferred)"),
+];

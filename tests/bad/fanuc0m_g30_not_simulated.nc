@@ -1,0 +1,3 @@
+(expect NCS-E38 line 2 col 1 on fanuc0m)
+G30 Z0.
+M30

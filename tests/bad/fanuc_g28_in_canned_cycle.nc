@@ -1,0 +1,6 @@
+(expect PS0044 line 5 col 5 on fanuc0m)
+G21 G17 G90 G0 X0. Y0. Z50.
+S500 M3
+G99 G81 X10. Y10. Z-10. R2. F100.
+G91 G28 Z0.
+M30
