@@ -84,3 +84,34 @@ fn macro_statements_are_not_simulated_yet() {
         }
     }
 }
+
+/// The G71 monotonic check has a tolerance of one least input increment: a rounded corner
+/// `G03 X.875 Z-.036 R.036` whose arc rises 0.0007 mm past its end point is not a pocket; a
+/// real step back of 0.01 mm still is PS0064.
+#[test]
+fn g71_contour_check_has_a_tolerance() {
+    let prog = |start: &str, back: &str| {
+        format!(
+            "G20 G99 G97 S1000 M03\nG0 X1.0 Z0.1\nG71 U0.02 R0.01\nG71 P10 Q20 U0.01 W0.005 F0.008\nN10 G0 X{start}\nG1 Z0 F0.004\nG03 X.875 Z-.036 R.036\nG1 Z-.5\n{back}N20 G1 X1.0\nG70 P10 Q20\nG0 X2. Z1.\nM30\n"
+        )
+    };
+    // Start X.823: the arc's centre lies between its ends, its highest point 0.0007 mm above X.875.
+    assert!(first_alarm("fanuc0t", &prog(".823", "")).is_none());
+    let a = first_alarm("fanuc0t", &prog(".823", "G1 X.8742 Z-.6\nG1 Z-.7\n")).unwrap();
+    assert_eq!(a.code, "PS0064");
+}
+
+/// A G73 (or G71) contour whose first block is a G00 to where the tool already stands: the
+/// help text asks only for a G00 or G01 code in that block (note 1), so it runs; a first block
+/// with no G00/G01 move words at all, or a G71 first block without X, still alarms.
+#[test]
+fn a_contour_may_start_with_a_move_of_no_length() {
+    let g73 = "G99 G97 S800 M03\nG0 X42. Z2.\nG73 U3. W0. R3\nG73 P10 Q20 U0.4 W0.1 F0.2\nN10 G0 X42. Z2.\nG1 X20. Z0.\nZ-20.\nN20 X42. Z-25.\nG70 P10 Q20\nG0 X100. Z100.\nM30\n";
+    for machine in ["gsk980tdi", "fanuc0t"] {
+        let (r, d) = common::run_plain(machine, &[], g73);
+        assert!(d.iter().all(|d| !d.is_alarm()), "{machine}: {d:?}");
+        assert!(r.iter().filter(|r| matches!(r.op, Op::Feed { .. })).count() > 6);
+    }
+    let g71 = "G99 G97 S800 M03\nG0 X42. Z2.\nG71 U1. R0.5\nG71 P10 Q20 U0.4 W0.1 F0.2\nN10 G0 Z2.\nG1 X20. Z0.\nZ-20.\nN20 X42. Z-25.\nM30\n";
+    assert_eq!(first_alarm("gsk980tdi", g71).unwrap().code, "NCS-E55");
+}

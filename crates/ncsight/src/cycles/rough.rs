@@ -67,6 +67,40 @@ pub struct Roughing<'a> {
     pub ns_rapid: bool,
     /// Type II: pockets along the level axis allowed.
     pub type_two: bool,
+    /// How far the contour may go back along an axis before it counts as a change of direction
+    /// (a rounded corner's arc may rise a fraction of a micrometre past its end point): one
+    /// least input increment in the units in force (docs/commands/g70_g71_g72.md).
+    pub tolerance_mm: f64,
+}
+
+/// The directions (+1 or -1) in which a run of values moves, one entry per change: a turn
+/// counts only once the values have come back more than `tol` from the furthest point reached.
+pub fn direction_runs(values: impl Iterator<Item = f64>, tol: f64) -> Vec<f64> {
+    let mut runs = Vec::new();
+    let mut extreme: Option<f64> = None;
+    for v in values {
+        let Some(x) = extreme else {
+            extreme = Some(v);
+            continue;
+        };
+        match runs.last().copied() {
+            None => {
+                if (v - x).abs() > tol {
+                    runs.push((v - x).signum());
+                    extreme = Some(v);
+                }
+            }
+            Some(dir) => {
+                if (v - x) * dir > 0.0 {
+                    extreme = Some(v);
+                } else if (x - v) * dir > tol {
+                    runs.push(-dir);
+                    extreme = Some(v);
+                }
+            }
+        }
+    }
+    runs
 }
 
 /// Most pockets a type II contour may have (help text G71/G72 type II, 2).
@@ -172,16 +206,8 @@ pub fn expand(r: &Roughing, limit: usize) -> Result<Rough, RoughError> {
     // axis.
     let monotonic: &[usize] = if r.type_two { &[c] } else { &[l, c] };
     for &axis in monotonic {
-        let mut dir = 0.0;
-        for w in pts.windows(2) {
-            let d = w[1].axis(axis) - w[0].axis(axis);
-            if d.abs() < 1e-9 {
-                continue;
-            }
-            if dir != 0.0 && d.signum() != dir {
-                return Err(RoughError::NotMonotonic(axis));
-            }
-            dir = d.signum();
+        if direction_runs(pts.iter().map(|p| p.axis(axis)), r.tolerance_mm).len() > 1 {
+            return Err(RoughError::NotMonotonic(axis));
         }
     }
     let end = *pts.last().unwrap_or(&b1);
@@ -310,16 +336,8 @@ fn levels_type_two(
     let out = -dir_l;
     let e = r.back_off_mm;
     // Pockets: each turn from going deeper to coming out again (help text type II, 2).
-    let mut pockets = 0usize;
-    let mut was = 0.0;
-    for w in pts.windows(2) {
-        let d = (w[1].axis(l) - w[0].axis(l)) * dir_l;
-        let now = if d > 1e-9 { 1.0 } else if d < -1e-9 { -1.0 } else { continue };
-        if was > 0.0 && now < 0.0 {
-            pockets += 1;
-        }
-        was = now;
-    }
+    let runs = direction_runs(pts.iter().map(|p| p.axis(l) * dir_l), r.tolerance_mm);
+    let pockets = runs.windows(2).filter(|w| w[0] > 0.0 && w[1] < 0.0).count();
     if pockets > MAX_POCKETS {
         return Err(RoughError::TooManyPockets);
     }
@@ -563,7 +581,7 @@ mod tests {
             feed((20.0, -10.0), (20.0, -20.0)),
             feed((20.0, -20.0), (25.0, -20.0)),
         ];
-        let r = Roughing { kind: RoughKind::Turning, start: Vec3::new(25.0, 0.0, 2.0), contour: &contour, allowance: Vec3::new(0.5, 0.0, 0.1), depth_mm: 4.0, back_off_mm: 1.0, ns_rapid: true, type_two: false };
+        let r = Roughing { kind: RoughKind::Turning, start: Vec3::new(25.0, 0.0, 2.0), contour: &contour, allowance: Vec3::new(0.5, 0.0, 0.1), depth_mm: 4.0, back_off_mm: 1.0, ns_rapid: true, type_two: false, tolerance_mm: 0.001 };
         let ops = expand(&r, 1000).unwrap().ops;
         // A' = (25.5, 2.1); levels 21.5, 17.5, 13.5 (B' is at 10.5).
         let cuts: Vec<(f64, f64)> = ops.iter().filter_map(|o| match o {
@@ -602,7 +620,7 @@ mod tests {
             feed((20.0, -10.0), (15.0, -15.0)),
             feed((15.0, -15.0), (25.0, -20.0)),
         ];
-        let r = Roughing { kind: RoughKind::Turning, start: Vec3::new(25.0, 0.0, 2.0), contour: &contour, allowance: Vec3::default(), depth_mm: 2.0, back_off_mm: 0.5, ns_rapid: true, type_two: false };
+        let r = Roughing { kind: RoughKind::Turning, start: Vec3::new(25.0, 0.0, 2.0), contour: &contour, allowance: Vec3::default(), depth_mm: 2.0, back_off_mm: 0.5, ns_rapid: true, type_two: false, tolerance_mm: 0.001 };
         assert_eq!(expand(&r, 1000), Err(RoughError::NotMonotonic(0)));
     }
 
@@ -617,7 +635,7 @@ mod tests {
             feed((20.0, -10.0), (15.0, -15.0)),
             feed((15.0, -15.0), (25.0, -20.0)),
         ];
-        let r = Roughing { kind: RoughKind::Turning, start: Vec3::new(25.0, 0.0, 2.0), contour: &contour, allowance: Vec3::default(), depth_mm: 2.0, back_off_mm: 0.5, ns_rapid: true, type_two: true };
+        let r = Roughing { kind: RoughKind::Turning, start: Vec3::new(25.0, 0.0, 2.0), contour: &contour, allowance: Vec3::default(), depth_mm: 2.0, back_off_mm: 0.5, ns_rapid: true, type_two: true, tolerance_mm: 0.001 };
         let ops = expand(&r, 1000).unwrap().ops;
         let cuts: Vec<(f64, f64, f64)> = ops
             .iter()
@@ -668,7 +686,7 @@ mod tests {
             z -= 2.0;
         }
         contour.push(feed((10.0, z), (30.0, z - 1.0)));
-        let r = Roughing { kind: RoughKind::Turning, start: Vec3::new(30.0, 0.0, 2.0), contour: &contour, allowance: Vec3::default(), depth_mm: 1.0, back_off_mm: 0.5, ns_rapid: true, type_two: true };
+        let r = Roughing { kind: RoughKind::Turning, start: Vec3::new(30.0, 0.0, 2.0), contour: &contour, allowance: Vec3::default(), depth_mm: 1.0, back_off_mm: 0.5, ns_rapid: true, type_two: true, tolerance_mm: 0.001 };
         assert_eq!(expand(&r, 1000), Err(RoughError::TooManyPockets));
     }
 

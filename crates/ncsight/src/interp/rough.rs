@@ -10,6 +10,7 @@ use super::words::Words;
 use super::{run_block, Interpreter, Outcome, Step};
 use crate::alarm::{Diagnostic, Rule};
 use crate::cycles::rough::{expand, pattern, RoughError, RoughKind, RoughNote, Roughing, MAX_POCKETS};
+use crate::modal::Motion;
 use crate::motion::{Op, Vec3};
 use crate::read::{Block, Word};
 use crate::source::Span;
@@ -203,6 +204,9 @@ impl Interpreter {
     fn contour_moves(&self, code: &str, blocks: &[Block]) -> Result<(Op, Vec<Op>, Vec<Diagnostic>), Diagnostic> {
         let mut st = self.state.clone();
         let mut scratch = Outcome::default();
+        // The motion mode and position after the ns block (a G00 to where the tool stands makes
+        // no record).
+        let mut after_ns = None;
         for b in blocks {
             if b.block_delete && self.switches.block_delete {
                 continue;
@@ -224,12 +228,19 @@ impl Interpreter {
                 // G83/G87 note 3: no drilling cycle inside G71-G73.
                 return Err(self.contour_alarm(Rule::ContourCommand, b.span, format!("{code}: a contour block cannot run the drilling cycle {}", kind.code())));
             }
+            after_ns.get_or_insert((st.motion, st.pos));
         }
         // Help text notes 1 and 2: the ns block makes one G00 or G01 move.
         let ns_span = blocks[0].span;
         let ns_moves: Vec<&Op> = scratch.records.iter().filter(|r| r.span == ns_span && r.op.end_point().is_some()).map(|r| &r.op).collect();
-        let ns_move = match ns_moves.as_slice() {
-            [op @ (Op::Rapid { .. } | Op::Feed { .. })] => (*op).clone(),
+        let axis_word = blocks[0].words.iter().any(|w| b"XZUW".contains(&w.letter));
+        let ns_move = match (ns_moves.as_slice(), after_ns) {
+            ([op @ (Op::Rapid { .. } | Op::Feed { .. })], _) => (*op).clone(),
+            // A G00 or G01 block to where the tool already stands: the help text (note 1) asks
+            // only for a G00 or G01 code in the block; the FANUC manuals likewise (PS0065 is for
+            // a block without one). Its move has no length (docs).
+            ([], Some((Motion::Rapid, p))) if axis_word => Op::Rapid { from: p, to: p },
+            ([], Some((Motion::Linear, p))) if axis_word => Op::Feed { from: p, to: p, feed_mm_min: 0.0 },
             _ => {
                 return Err(self.contour_alarm(
                     Rule::ContourCommand,
@@ -278,15 +289,12 @@ impl Interpreter {
         let type_two = has(b"XU") && has(b"ZW");
         // Note 2: the ns move goes along the depth axis (X for G71, Z for G72).
         let (level_axis, _) = req.kind.axes();
-        let ns_from = match ns_move {
-            Op::Rapid { from, .. } | Op::Feed { from, .. } => from,
-            _ => req.start,
-        };
-        if (ns_move.end_point().map(|p| p.axis(level_axis)).unwrap_or(0.0) - ns_from.axis(level_axis)).abs() < 1e-9 {
+        // The block names the depth axis (a move of no length included: the tool may stand there).
+        if !has(if level_axis == 0 { b"XU" } else { b"ZW" }) {
             let axis = if level_axis == 0 { "X (U)" } else { "Z (W)" };
             return Err(self.contour_alarm(Rule::ContourCommand, first.span, format!("{code}: the contour's first block N{} must move along {axis}, the axis {code} steps its depth on (help text note 2)", req.ns)));
         }
-        let r = Roughing { kind: req.kind, start: req.start, contour: &contour, allowance: req.allowance, depth_mm: req.depth_mm, back_off_mm: req.back_off_mm, ns_rapid, type_two };
+        let r = Roughing { kind: req.kind, start: req.start, contour: &contour, allowance: req.allowance, depth_mm: req.depth_mm, back_off_mm: req.back_off_mm, ns_rapid, type_two, tolerance_mm: if self.state.inch { 0.00254 } else { 0.001 } };
         let rough = expand(&r, 100_000).map_err(|e| match e {
             RoughError::NotMonotonic(axis) => {
                 let rule = if type_two { "type II roughing needs that along the cut axis" } else { "type I roughing needs that" };
