@@ -133,6 +133,27 @@ impl Rule {
     }
 }
 
+/// A computed number as a message shows it: rounded to `decimals` (the controllers' display
+/// increment: 4 for mm and mm/rev, 1 for rpm), trailing zeros dropped, never `-0`.
+pub fn shown(v: f64, decimals: usize) -> String {
+    if !v.is_finite() {
+        return format!("{v}");
+    }
+    let mut s = format!("{v:.decimals$}");
+    if s.contains('.') {
+        while s.ends_with('0') {
+            s.pop();
+        }
+        if s.ends_with('.') {
+            s.pop();
+        }
+    }
+    if s == "-0" {
+        s = "0".into();
+    }
+    s
+}
+
 /// One alarm or warning, tied to the text that caused it.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Diagnostic {

@@ -115,3 +115,33 @@ fn a_contour_may_start_with_a_move_of_no_length() {
     let g71 = "G99 G97 S800 M03\nG0 X42. Z2.\nG71 U1. R0.5\nG71 P10 Q20 U0.4 W0.1 F0.2\nN10 G0 Z2.\nG1 X20. Z0.\nZ-20.\nN20 X42. Z-25.\nM30\n";
     assert_eq!(first_alarm("gsk980tdi", g71).unwrap().code, "NCS-E55");
 }
+
+/// Messages show computed numbers rounded to the display increment, never a raw float such as
+/// `F0.11683999999999999 mm/rev` (F0.0046 inch per revolution is 0.11684 mm).
+#[test]
+fn messages_round_computed_numbers() {
+    let a = first_alarm("fanuc0t", "G20 G99 G0 X1.0 Z0.1\nM05\nG01 Z-1.0 F0.0046\nM30\n").unwrap();
+    assert!(a.message.contains("F0.1168 mm/rev"), "{}", a.message);
+    assert_eq!(ncsight::alarm::shown(-0.00001, 3), "0");
+    assert_eq!(ncsight::alarm::shown(954.929658, 1), "954.9");
+    assert_eq!(ncsight::alarm::shown(2.0, 4), "2");
+}
+
+/// `:0100` is a programme number in ISO code (FANUC: the colon is the O address of ISO tape).
+#[test]
+fn a_colon_is_the_iso_programme_number() {
+    let line = ncsight::read::Reader::new(ncsight::alarm::AlarmStyle::Fanuc).read_line(1, b":0100 (ISO)");
+    assert_eq!(line.blocks[0].as_ref().unwrap().program, Some(100));
+    assert!(first_alarm("fanuc0m", ":0100\nG0 X10.\nM30\n").is_none());
+}
+
+/// An alarm in a contour block that G73 and G70 both read is reported once by `check`.
+#[test]
+fn a_contour_alarm_is_reported_once() {
+    let text = "G99 G97 S800 M03\nG0 X42. Z2.\nG73 U3. W0. R3\nG73 P10 Q20 U0.4 W0.1 F0.2\nN10 G0 X20. Z2.\nG1 Z-20. Q5\nN20 X42. Z-25.\nG70 P10 Q20\nG0 X100. Z100.\nM30\n";
+    let params = common::params("gsk980tdi", &[]);
+    let events = ncsight::run_text(params, ncsight::Switches::default(), ncsight::Mode::Check, text.as_bytes());
+    let alarms: Vec<_> = events.iter().filter_map(|e| if let ncsight::Event::Diagnostic(d) = e { d.is_alarm().then_some(d) } else { None }).collect();
+    assert_eq!(alarms.len(), 1, "{alarms:?}");
+    assert_eq!(alarms[0].span.line, 6);
+}

@@ -316,7 +316,7 @@ pub(super) fn variable_lead(step: &mut Step, words: &mut Words, run_deg: Option<
             return Err(step.alarm(
                 Rule::ThreadData,
                 step.span,
-                format!("G34: after {n} revolutions the lead would leave 0 to {max} mm (F{lead} R{change})"),
+                format!("G34: after {n} revolutions the lead would leave 0 to {max} mm (F{} R{})", crate::alarm::shown(lead, 4), crate::alarm::shown(change, 4)),
             ));
         }
         let travel = rev_lead.min(length - done);

@@ -67,7 +67,7 @@ pub struct Interpreter {
     /// A G71/G72 block is collecting its contour blocks (they follow it).
     collecting: Option<(RoughRequest, Vec<Block>)>,
     /// Contours collected so far, by (ns, nf), for G70.
-    contours: Vec<(u32, u32, Vec<Block>)>,
+    contours: Vec<rough::Contour>,
     /// G70 is running a stored contour.
     replaying: bool,
 }
@@ -169,7 +169,7 @@ impl Step<'_> {
         self.alarm(
             Rule::ValueOutOfRange,
             w.span,
-            format!("{}: {v} mm is beyond the controller's range (at most {MAX_COORD_MM:.3} mm)", w.text()),
+            format!("{}: {} mm is beyond the controller's range (at most {MAX_COORD_MM:.3} mm)", w.text(), crate::alarm::shown(v, 3)),
         )
     }
 
@@ -208,7 +208,7 @@ impl Step<'_> {
                 return Err(self.alarm(
                     Rule::SpindleStopped,
                     self.span,
-                    format!("{what}: feed per revolution (F{f} mm/rev) with the spindle stopped or at S0"),
+                    format!("{what}: feed per revolution (F{} mm/rev) with the spindle stopped or at S0", crate::alarm::shown(f, 4)),
                 ));
             }
             feed = f * rpm;

@@ -182,10 +182,19 @@ impl Interpreter {
         if block.sequence == Some(req.nf) {
             let (req, blocks) = self.collecting.take().expect("collecting");
             // Kept for G70 even when the roughing alarms (check mode reads on).
-            self.contours.retain(|c| (c.0, c.1) != (req.ns, req.nf));
-            self.contours.push((req.ns, req.nf, blocks));
-            let blocks = &self.contours.last().expect("just pushed").2.clone();
-            self.rough_contour(req, blocks, out)?;
+            self.contours.retain(|c| (c.ns, c.nf) != (req.ns, req.nf));
+            self.contours.push(Contour { ns: req.ns, nf: req.nf, blocks, failed: false });
+            let blocks = &self.contours.last().expect("just pushed").blocks.clone();
+            if let Err(d) = self.rough_contour(req, blocks, out) {
+                // An alarm in one of the contour's own blocks: a G70 reading them again would
+                // only report it a second time (check mode reads on).
+                if blocks.iter().any(|b| b.span.line == d.span.line) {
+                    if let Some(c) = self.contours.last_mut() {
+                        c.failed = true;
+                    }
+                }
+                return Err(d);
+            }
         }
         Ok(())
     }
@@ -352,13 +361,18 @@ impl Interpreter {
         if self.replaying {
             return Err(self.contour_alarm(Rule::ContourCommand, req.span, "G70 cannot run inside the contour it is finishing".into()));
         }
-        let Some(blocks) = self.contours.iter().find(|c| (c.0, c.1) == (req.ns, req.nf)).map(|c| c.2.clone()) else {
+        let Some(contour) = self.contours.iter().find(|c| (c.ns, c.nf) == (req.ns, req.nf)) else {
             return Err(self.contour_alarm(
                 Rule::ContourNotFound,
                 req.span,
                 format!("G70 P{} Q{}: no G71, G72 or G73 before it collected the blocks N{} to N{}", req.ns, req.nf, req.ns, req.nf),
             ));
         };
+        if contour.failed {
+            // Its alarm was reported at the roughing cycle (check mode): G70 does nothing.
+            return Ok(());
+        }
+        let blocks = contour.blocks.clone();
         self.replaying = true;
         let mut scratch = Outcome::default();
         let mut result = Ok(());
@@ -384,4 +398,14 @@ impl Interpreter {
         }
         Ok(())
     }
+}
+
+/// A contour collected by G71-G73, kept for G70.
+#[derive(Clone)]
+pub(super) struct Contour {
+    pub ns: u32,
+    pub nf: u32,
+    pub blocks: Vec<Block>,
+    /// One of its blocks alarmed when the roughing cycle read it.
+    pub failed: bool,
 }

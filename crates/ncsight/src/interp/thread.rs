@@ -101,7 +101,7 @@ impl Step<'_> {
             Some(l) => Err(self.alarm(
                 Rule::ValueOutOfRange,
                 self.span,
-                format!("{gname}: the F in force ({l} mm) is not a lead of at most {max_mm} mm"),
+                format!("{gname}: the F in force ({} mm) is not a lead of at most {max_mm} mm", crate::alarm::shown(l, 4)),
             )),
             None => Err(self.alarm(
                 Rule::MissingWord,
@@ -240,7 +240,11 @@ impl Step<'_> {
             return;
         };
         if (m.rpm - rpm).abs() > 1e-9 {
-            let msg = format!("{gname}: this pass turns at {rpm} rpm, the first at {} rpm: the passes may not line up", m.rpm);
+            let msg = format!(
+                "{gname}: this pass turns at {} rpm, the first at {} rpm: the passes may not line up",
+                crate::alarm::shown(rpm, 1),
+                crate::alarm::shown(m.rpm, 1)
+            );
             self.warn(Rule::PassMismatch, self.span, msg);
         }
         if (m.start_deg - start_deg).abs() > 1e-9 {

@@ -271,6 +271,22 @@ impl Reader {
                     }
                     block_end = i;
                 }
+                // ISO code: ':' is the programme number's address, as O is (FANUC: `:0100`).
+                b':' if block.words.is_empty() && block.program.is_none() && s.get(i + 1).is_some_and(u8::is_ascii_digit) => {
+                    block_start.get_or_insert(i);
+                    let digits = s[i + 1..].iter().take_while(|c| c.is_ascii_digit()).count();
+                    let text = std::str::from_utf8(&s[i + 1..i + 1 + digits]).unwrap_or("0");
+                    match text.parse::<u32>() {
+                        Ok(n) if digits <= 8 => block.program = Some(n),
+                        _ => {
+                            let d = self.diag(Rule::TooManyDigits, line_no, i, digits + 1, format!(":{text}: a programme number has at most 8 digits"));
+                            out.blocks.push(Err(d));
+                            return;
+                        }
+                    }
+                    i += 1 + digits;
+                    block_end = i;
+                }
                 _ if c.is_ascii_alphabetic() => {
                     block_start.get_or_insert(i);
                     if let Some(d) = self.macro_statement(line_no, s, i) {
