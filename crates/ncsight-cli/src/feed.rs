@@ -48,6 +48,23 @@ impl Batch {
     }
 }
 
+/// An error reading the input (not writing the output): the caller names the file.
+#[derive(Debug)]
+pub struct ReadFailure(pub io::Error);
+
+impl std::fmt::Display for ReadFailure {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        self.0.fmt(f)
+    }
+}
+
+impl std::error::Error for ReadFailure {}
+
+/// Whether an error of [`drive`] came from reading the input.
+pub fn is_read_failure(e: &io::Error) -> bool {
+    e.get_ref().is_some_and(|i| i.is::<ReadFailure>())
+}
+
 /// Feed `input` line by line into `program`; `on_event` gets each event with its line's text.
 /// Stops reading when the programme wants no more (an alarm in a run, the end of the text).
 pub fn drive(
@@ -156,7 +173,7 @@ fn read_ahead(
                     batch.text.truncate(start);
                     let _ = full.send(Ok(batch));
                 }
-                let _ = full.send(Err(e));
+                let _ = full.send(Err(io::Error::new(e.kind(), ReadFailure(e))));
                 return;
             }
         };

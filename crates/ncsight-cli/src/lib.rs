@@ -44,6 +44,19 @@ struct MachineArgs {
     /// angle in degrees, for G92 P1 / G92.1 P1 (GSK980TDi).
     #[arg(long, value_name = "X,Z,C", allow_hyphen_values = true)]
     repair_position: Option<String>,
+    /// How lines that are not UTF-8 are shown (default: GB18030/GBK, as GSK controls and Chinese
+    /// editors save them, else Windows-1252): gbk, gb18030, big5, shift_jis, latin1, ...
+    #[arg(long, value_name = "NAME")]
+    encoding: Option<String>,
+}
+
+impl MachineArgs {
+    fn decoding(&self) -> Result<diag::Decoding, Failure> {
+        match &self.encoding {
+            None => Ok(diag::Decoding::default()),
+            Some(label) => diag::Decoding::by_label(label).ok_or_else(|| usage(format!("--encoding {label}: unknown encoding (try gbk, gb18030, big5, shift_jis, latin1)"))),
+        }
+    }
 }
 
 /// Numbers separated by commas, as many as expected.
@@ -131,6 +144,10 @@ enum Command {
         files: Vec<String>,
         #[command(flatten)]
         machine: MachineArgs,
+        /// full (the line underlined, the hint), short (one line each) or jsonl (one JSON
+        /// object per diagnostic).
+        #[arg(long, default_value = "full")]
+        format: String,
     },
     /// Cut the stock with the programme and measure the thread it makes.
     Simulate {
@@ -226,7 +243,7 @@ pub fn main_with(args: impl IntoIterator<Item = std::ffi::OsString>, out: &mut d
     };
     let result = match cli.command {
         Command::Run { file, machine, format, output, operator } => run(&file, &machine, &operator, &format, output.as_deref(), out, err),
-        Command::Check { files, machine } => check(&files, &machine, out, err),
+        Command::Check { files, machine, format } => check(&files, &machine, &format, out, err),
         Command::Machines { machine } => machines(machine.as_deref(), out),
         Command::Simulate { file, machine, setup: setup_file, stock, expect, format, image, resolution } => {
             simulate(&file, &machine, setup_file.as_deref(), stock.as_deref(), expect.as_deref(), &format, image.as_deref(), resolution.as_deref(), out, err)
@@ -294,8 +311,62 @@ fn open(file: &str) -> Result<Box<dyn BufRead + Send>, Failure> {
     if file == "-" {
         return Ok(Box::new(BufReader::new(io::stdin())));
     }
+    if std::fs::metadata(file).is_ok_and(|m| m.is_dir()) {
+        return Err(usage(format!("cannot read {file}: it is a directory, not a programme file")));
+    }
     let f = std::fs::File::open(file).map_err(|e| usage(format!("cannot read {file}: {e}")))?;
     Ok(Box::new(BufReader::with_capacity(1 << 16, f)))
+}
+
+/// [`feed::drive`] with an error in reading the input named by its file.
+fn drive(
+    file: &str,
+    input: Box<dyn BufRead + Send>,
+    program: &mut Program,
+    on_event: &mut dyn FnMut(&Event, &[u8]) -> io::Result<()>,
+) -> Result<(), Failure> {
+    feed::drive(input, program, on_event).map_err(|e| if feed::is_read_failure(&e) { usage(format!("cannot read {file}: {e}")) } else { Failure::Io(e) })
+}
+
+/// A writer whose reader went away (`ncsight check big.nc | head -1`): the rest is dropped
+/// silently and the run goes on, so that the exit status still says what was found.
+struct Tolerant<W: Write> {
+    inner: W,
+    gone: bool,
+}
+
+impl<W: Write> Tolerant<W> {
+    fn new(inner: W) -> Tolerant<W> {
+        Tolerant { inner, gone: false }
+    }
+}
+
+impl<W: Write> Write for Tolerant<W> {
+    fn write(&mut self, buf: &[u8]) -> io::Result<usize> {
+        if self.gone {
+            return Ok(buf.len());
+        }
+        match self.inner.write(buf) {
+            Err(e) if e.kind() == io::ErrorKind::BrokenPipe => {
+                self.gone = true;
+                Ok(buf.len())
+            }
+            r => r,
+        }
+    }
+
+    fn flush(&mut self) -> io::Result<()> {
+        if self.gone {
+            return Ok(());
+        }
+        match self.inner.flush() {
+            Err(e) if e.kind() == io::ErrorKind::BrokenPipe => {
+                self.gone = true;
+                Ok(())
+            }
+            r => r,
+        }
+    }
 }
 
 /// Output buffer: large writes, few system calls.
@@ -311,6 +382,7 @@ fn run(
     err: &mut dyn Write,
 ) -> Result<i32, Failure> {
     let (params, switches) = setup(m, err)?;
+    let decoding = m.decoding()?;
     let operator = operator.options()?;
     let profile = params.profile();
     let mut fmt = format::by_name(format, profile).ok_or_else(|| usage(format!("unknown format '{format}': choose text, jsonl or canon")))?;
@@ -324,17 +396,18 @@ fn run(
             &mut file_out
         }
         None => {
-            stdout_buf = io::BufWriter::with_capacity(OUTPUT_BUFFER_BYTES, out);
+            stdout_buf = Tolerant::new(io::BufWriter::with_capacity(OUTPUT_BUFFER_BYTES, Tolerant::new(out)));
             &mut stdout_buf
         }
     };
     let mut program = Program::with_operator(params, switches, Mode::Run, operator);
     let carries = fmt.carries_diagnostics();
     let shown = if file == "-" { "<stdin>" } else { file };
-    feed::drive(input, &mut program, &mut |e, text| {
+    let mut err = Tolerant::new(err);
+    drive(file, input, &mut program, &mut |e, text| {
         if let Event::Diagnostic(d) = e {
             if !carries || d.severity() == Severity::Alarm {
-                err.write_all(diag::render(shown, text, d).as_bytes())?;
+                err.write_all(diag::render(shown, text, d, diag::Style::Full, &decoding).as_bytes())?;
             }
             if !carries {
                 return Ok(());
@@ -346,27 +419,58 @@ fn run(
     Ok(if program.status() == Status::Alarm { EXIT_ALARM } else { EXIT_OK })
 }
 
-fn check(files: &[String], m: &MachineArgs, out: &mut dyn Write, err: &mut dyn Write) -> Result<i32, Failure> {
+fn check(files: &[String], m: &MachineArgs, format: &str, out: &mut dyn Write, err: &mut dyn Write) -> Result<i32, Failure> {
     let (params, switches) = setup(m, err)?;
+    let decoding = m.decoding()?;
+    let style = match format {
+        "full" => Some(diag::Style::Full),
+        "short" => Some(diag::Style::Short),
+        "jsonl" => None,
+        _ => return Err(usage(format!("unknown format '{format}': choose full, short or jsonl"))),
+    };
     let mut any_alarm = false;
-    let mut w = io::BufWriter::new(out);
+    let mut unreadable = false;
+    let mut w = Tolerant::new(io::BufWriter::new(Tolerant::new(out)));
     for file in files {
-        let input = open(file)?;
+        let shown = if file == "-" { "<stdin>" } else { file.as_str() };
+        // A file that cannot be read is reported, and the others are still checked.
+        let input = match open(file) {
+            Ok(i) => i,
+            Err(Failure::Usage(msg)) => {
+                writeln!(err, "ncsight: {msg}")?;
+                unreadable = true;
+                continue;
+            }
+            Err(e) => return Err(e),
+        };
         let mut program = Program::diagnostics_only(params.clone(), switches);
         let (mut alarms, mut warnings) = (0usize, 0usize);
-        let shown = if file == "-" { "<stdin>" } else { file.as_str() };
-        feed::drive(input, &mut program, &mut |e, text| {
+        let result = drive(file, input, &mut program, &mut |e, text| {
             if let Event::Diagnostic(d) = e {
                 if d.is_alarm() { alarms += 1 } else { warnings += 1 }
-                w.write_all(diag::render(shown, text, d).as_bytes())?;
+                match style {
+                    Some(style) => w.write_all(diag::render(shown, text, d, style, &decoding).as_bytes())?,
+                    None => w.write_all(format::jsonl::diagnostic_line(shown, d).as_bytes())?,
+                }
             }
             Ok(())
-        })?;
-        writeln!(w, "{shown}: {alarms} alarm(s), {warnings} warning(s) on {}", params.profile().name)?;
+        });
+        match result {
+            Ok(()) => {}
+            Err(Failure::Usage(msg)) => {
+                writeln!(err, "ncsight: {msg}")?;
+                unreadable = true;
+            }
+            Err(e) => return Err(e),
+        }
+        if style.is_some() {
+            writeln!(w, "{shown}: {alarms} alarm(s), {warnings} warning(s) on {}", params.profile().name)?;
+        }
         any_alarm |= alarms > 0;
     }
     w.flush()?;
-    Ok(if any_alarm { EXIT_ALARM } else { EXIT_OK })
+    // An unreadable file outranks what the others held: the check is not complete.
+    Ok(if unreadable { EXIT_USAGE } else if any_alarm { EXIT_ALARM } else { EXIT_OK })
 }
 
 /// The job setup from `--setup` and `--stock`.
@@ -428,7 +532,7 @@ fn report(
     settings.push("assumptions: docs/guide.md and docs/commands/*.md".into());
     let mut program = Program::with_operator(params.clone(), switches, Mode::Run, opts);
     let (mut records, mut diags) = (Vec::new(), Vec::new());
-    feed::drive(Box::new(io::Cursor::new(source.clone())), &mut program, &mut |e, _| {
+    drive(file, Box::new(io::Cursor::new(source.clone())), &mut program, &mut |e, _| {
         match e {
             Event::Record(r) => records.push(r.clone()),
             Event::Diagnostic(d) => diags.push(d.clone()),
@@ -470,6 +574,7 @@ fn simulate(
         return Err(usage(format!("unknown format '{format}': choose text or json")));
     }
     let (params, switches) = setup(m, err)?;
+    let decoding = m.decoding()?;
     let job = job_setup(setup_file, stock)?;
     let opts = simulate::options(resolution, expect).map_err(usage)?;
     let input = open(file)?;
@@ -477,10 +582,10 @@ fn simulate(
     let mut program = Program::new(params, switches, Mode::Run);
     let shown = if file == "-" { "<stdin>" } else { file };
     let mut records = Vec::new();
-    feed::drive(input, &mut program, &mut |e, text| {
+    drive(file, input, &mut program, &mut |e, text| {
         match e {
             Event::Record(r) => records.push(r.clone()),
-            Event::Diagnostic(d) if d.is_alarm() => err.write_all(diag::render(shown, text, d).as_bytes())?,
+            Event::Diagnostic(d) if d.is_alarm() => err.write_all(diag::render(shown, text, d, diag::Style::Full, &decoding).as_bytes())?,
             Event::Diagnostic(_) => {}
         }
         Ok(())

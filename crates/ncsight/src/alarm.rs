@@ -121,6 +121,7 @@ rules! {
     RoughingCollision => Warning, "NCS-W22", None, "ROUGHING MOVES THROUGH THE PART";
     HoldIgnored => Warning, "NCS-W23", None, "FEED HOLD IGNORED DURING THE THREAD";
     AllowanceNotCut => Warning, "NCS-W24", None, "FINISHING ALLOWANCE NEVER CUT";
+    Implausible => Warning, "NCS-W25", None, "IMPLAUSIBLE VALUE";
 }
 
 impl Rule {

@@ -152,6 +152,8 @@ pub enum SpindleDir {
 
 #[derive(Debug, Clone, PartialEq)]
 pub struct Modal {
+    /// The feed (mm/min or mm/rev) an implausibility warning was last given for: once per value.
+    pub feed_warned: Option<f64>,
     /// G71 / G72 depth of cut and back-off from their first blocks (index 0 G71, 1 G72).
     pub rough_data: [Option<(f64, f64)>; 2],
     /// G73 relief Δi (radius), Δk and number of passes d from its first block.
@@ -201,6 +203,7 @@ impl Modal {
     /// Power-on state of a profile.
     pub fn power_on(profile: &Profile) -> Modal {
         Modal {
+            feed_warned: None,
             pos: Vec3::default(),
             motion: Motion::Rapid,
             rough_data: [None; 2],

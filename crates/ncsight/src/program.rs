@@ -16,6 +16,10 @@ use crate::profile::Params;
 use crate::read::{Block, Line, Reader, Word};
 use crate::source::Span;
 
+/// How many "length without a decimal point" warnings (NCS-W02) are shown one by one; the rest
+/// are summed up in one warning at the end.
+pub const INCREMENT_WARNINGS_SHOWN: u32 = 3;
+
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Mode {
     Run,
@@ -60,6 +64,9 @@ struct Core {
     alarms: usize,
     /// Span of the last block read (for the end-of-input warning).
     last_span: Span,
+    /// NCS-W02 warnings passed on so far; past [`INCREMENT_WARNINGS_SHOWN`] they are counted
+    /// and summed up at the end.
+    increment_warnings: u32,
     read: ReadLine,
     outcome: Outcome,
 }
@@ -255,6 +262,7 @@ impl Program {
                 warned_after_end: false,
                 alarms: 0,
                 last_span: Span::new(1, 1, 1),
+                increment_warnings: 0,
                 read: ReadLine::default(),
                 outcome: Outcome::default(),
             },
@@ -357,6 +365,9 @@ impl Program {
             }
             events.push(Event::Diagnostic(d));
         }
+        if let Some(d) = c.increment_summary() {
+            events.push(Event::Diagnostic(d));
+        }
         if c.status == Status::Running && !self.machine.is_reset() {
             let d = Diagnostic::new(
                 Rule::NoProgramEnd,
@@ -378,6 +389,29 @@ impl Program {
 }
 
 impl Core {
+    /// The NCS-W02 warnings not shown one by one, in one warning; when most lengths written
+    /// without a decimal point would be under 1 mm, a hint that the programme was probably
+    /// written for calculator-type input.
+    fn increment_summary(&self) -> Option<Diagnostic> {
+        let hidden = self.increment_warnings.checked_sub(INCREMENT_WARNINGS_SHOWN).filter(|n| *n > 0)?;
+        let profile = self.interp.profile();
+        let (all, small) = (self.outcome.increment_words, self.outcome.increment_words_small);
+        let d = Diagnostic::new(
+            Rule::IntegerLength,
+            profile.alarm_style,
+            self.last_span,
+            format!(
+                "{hidden} more lengths without a decimal point were read in least input increments ({all} in all, {small} of them under 1 mm); only the first {INCREMENT_WARNINGS_SHOWN} were shown"
+            ),
+        );
+        Some(match profile.calculator_input {
+            Some(key) if small * 2 > all => d.with_hint(format!(
+                "whole numbers this small look like millimetres: if the programme was written for a control set for calculator-type input, run it with --param {key}=1"
+            )),
+            _ => d,
+        })
+    }
+
     /// Records are passed on (through the machine); not in a diagnostics-only check, whose
     /// interpreter keeps none.
     fn records(&self) -> bool {
@@ -508,6 +542,12 @@ impl Core {
     fn pass_on(&mut self, sink: &mut dyn FnMut(Event)) {
         if !self.outcome.warnings.is_empty() {
             for w in self.outcome.warnings.drain(..) {
+                if w.rule == Rule::IntegerLength {
+                    self.increment_warnings += 1;
+                    if self.increment_warnings > INCREMENT_WARNINGS_SHOWN {
+                        continue;
+                    }
+                }
                 sink(Event::Diagnostic(w));
             }
         }

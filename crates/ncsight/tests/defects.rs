@@ -145,3 +145,17 @@ fn a_contour_alarm_is_reported_once() {
     assert_eq!(alarms.len(), 1, "{alarms:?}");
     assert_eq!(alarms[0].span.line, 6);
 }
+
+/// Silent where a student needs a word: F0.2 under G98 on a lathe (a 22 mm cut in 1 h 50 min),
+/// a G84 whose F/S makes a 0.01 mm pitch.
+#[test]
+fn implausible_values_are_warned_with_their_numbers() {
+    let (_, d) = common::run_plain("gsk980tdi", &[], "G98 M3 S500\nG0 X20. Z2.\nG1 Z-20. F0.2\nZ-40.\nM30\n");
+    let w: Vec<_> = d.iter().filter(|d| d.code == "NCS-W25").collect();
+    assert_eq!(w.len(), 1, "once per F value: {d:?}");
+    assert!(w[0].message.contains("22 mm") && w[0].message.contains("1 h 50 min") && w[0].message.contains("G99"), "{}", w[0].message);
+    let (_, d) = common::run_plain("fanuc0m", &[], "G21 G17 G90 G0 X0. Y0. Z50.\nS500 M3\nG84 X10. Y10. Z-10. R2. F5.\nG80\nM30\n");
+    assert!(d.iter().any(|d| d.code == "NCS-W25" && d.message.contains("0.01 mm")), "{d:?}");
+    let (_, d) = common::run_plain("fanuc0m", &[], "G21 G17 G90 G0 X0. Y0. Z50.\nS500 M3\nG84 X10. Y10. Z-10. R2. F625.\nG80\nM30\n");
+    assert!(!d.iter().any(|d| d.code == "NCS-W25"), "{d:?}");
+}

@@ -8,8 +8,8 @@ use std::fmt::Write as _;
 use std::io::{self, Write};
 
 pub struct Jsonl {
-    /// Which of X, Y, Z the machine has.
-    axes: [bool; 3],
+    /// Which of X, Y, Z are shown: the machine's, and any other once a programme moved it.
+    axes: std::cell::Cell<[bool; 3]>,
     x_scale: f64,
     /// The line being written, reused.
     text: String,
@@ -18,13 +18,20 @@ pub struct Jsonl {
 impl Jsonl {
     pub fn new(profile: &'static Profile) -> Jsonl {
         let axes = ['X', 'Y', 'Z'].map(|a| profile.axes.contains(a));
-        Jsonl { axes, x_scale: if profile.diameter_x { 2.0 } else { 1.0 }, text: String::with_capacity(256) }
+        Jsonl { axes: std::cell::Cell::new(axes), x_scale: if profile.diameter_x { 2.0 } else { 1.0 }, text: String::with_capacity(256) }
     }
 
     fn point(&self, s: &mut String, p: &Vec3, prefix: &str) {
         for (axis, name) in ["x", "y", "z"].into_iter().enumerate() {
-            if !self.axes[axis] {
-                continue;
+            // An axis the profile does not list appears once a programme moves it (the GSK988T's
+            // arc threads in G17/G19 on a machine with a Y axis), and stays.
+            let mut shown = self.axes.get();
+            if !shown[axis] {
+                if p.axis(axis).abs() < 1e-9 {
+                    continue;
+                }
+                shown[axis] = true;
+                self.axes.set(shown);
             }
             let v = if axis == 0 { p.x * self.x_scale } else { p.axis(axis) };
             field(s, prefix, name);
@@ -85,6 +92,25 @@ fn thread_fields(s: &mut String, lead: f64, long_axis: &str, spindle_deg: f64, r
 
 fn dir_field(s: &mut String, dir: ArcDir) {
     s.push_str(if dir == ArcDir::Cw { ",\"dir\":\"cw\"" } else { ",\"dir\":\"ccw\"" });
+}
+
+/// One diagnostic as `check --format jsonl` writes it (INTERFACE.md, "check --format jsonl"):
+/// file, line, col, severity, code, message and the hint where there is one.
+pub fn diagnostic_line(file: &str, d: &ncsight::Diagnostic) -> String {
+    let mut s = String::with_capacity(160);
+    s.push_str("{\"file\":");
+    push_json_str(&mut s, file);
+    let severity = if d.severity() == Severity::Alarm { "alarm" } else { "warning" };
+    let _ = write!(s, ",\"line\":{},\"col\":{},\"severity\":\"{severity}\",\"code\":", d.span.line, d.span.col);
+    push_json_str(&mut s, d.code);
+    s.push_str(",\"message\":");
+    push_json_str(&mut s, &d.message);
+    if let Some(h) = &d.hint {
+        s.push_str(",\"hint\":");
+        push_json_str(&mut s, h);
+    }
+    s.push_str("}\n");
+    s
 }
 
 impl Jsonl {

@@ -11,6 +11,8 @@ pub struct Text {
     /// What the record does, then the whole line: reused.
     what: String,
     line: String,
+    /// Which of X, Y, Z are shown: the machine's, and any other once a programme moved it.
+    axes: std::cell::Cell<[bool; 3]>,
 }
 
 fn dir_name(dir: ArcDir) -> &'static str {
@@ -19,14 +21,20 @@ fn dir_name(dir: ArcDir) -> &'static str {
 
 impl Text {
     pub fn new(profile: &'static Profile) -> Text {
-        Text { profile, what: String::with_capacity(128), line: String::with_capacity(160) }
+        let axes = ['X', 'Y', 'Z'].map(|a| profile.axes.contains(a));
+        Text { profile, what: String::with_capacity(128), line: String::with_capacity(160), axes: std::cell::Cell::new(axes) }
     }
 
     fn point(&self, s: &mut String, p: &Vec3) {
         let mut first = true;
         for (axis, name) in ['X', 'Y', 'Z'].into_iter().enumerate() {
-            if !self.profile.axes.contains(name) {
-                continue;
+            let mut shown = self.axes.get();
+            if !shown[axis] {
+                if p.axis(axis).abs() < 1e-9 {
+                    continue;
+                }
+                shown[axis] = true;
+                self.axes.set(shown);
             }
             if !first {
                 s.push(' ');

@@ -487,6 +487,22 @@ pub(super) fn block(step: &mut Step, words: &mut Words, kind: DrillKind, enterin
             step.warn(Rule::TapDirection, step.span, msg);
         }
     }
+    if matches!(kind, DrillKind::G74 | DrillKind::G84) {
+        // The pitch the feed and speed make (seed 003: F/S is the pitch): a word for F/S slips.
+        if let (Some(f), true) = (step.st.feed, rpm.abs() > 0.0) {
+            let pitch = if step.st.per_rev { f } else { f / rpm.abs() };
+            if !(0.2..=10.0).contains(&pitch) {
+                let unit = if step.st.inch { 25.4 } else { 1.0 };
+                let msg = format!(
+                    "{code}: F{} at {} rpm taps a pitch of {} mm; taps run from 0.2 to 10 mm (F = pitch x S under G94)",
+                    crate::alarm::shown(f / unit, 4),
+                    crate::alarm::shown(rpm.abs(), 1),
+                    crate::alarm::shown(pitch, 4)
+                );
+                step.warn(Rule::Implausible, step.span, msg);
+            }
+        }
+    }
     // A cap on the motion one block may make (issue 10): pecks x repeats.
     if kind.needs_q() {
         let pecks = ((bottom - r).abs() / d.q.unwrap_or(1.0)).ceil() * repeats as f64;

@@ -36,6 +36,10 @@ pub struct Outcome {
     /// Records are not kept (a check that wants only the diagnostics): the blocks still move the
     /// tool in the modal state, so every rule is checked as in a run.
     pub discard_records: bool,
+    /// Lengths without a decimal point read in least input increments so far, and how many of
+    /// them came to less than 1 mm (0.1 inch): kept across blocks for the summary of NCS-W02.
+    pub increment_words: u32,
+    pub increment_words_small: u32,
 }
 
 impl Outcome {
@@ -155,6 +159,10 @@ impl Step<'_> {
 
     #[cold]
     fn warn_increments(&mut self, w: &Word, v: f64) {
+        self.out.increment_words += 1;
+        if v.abs() < if self.st.inch { 0.1 } else { 1.0 } {
+            self.out.increment_words_small += 1;
+        }
         let unit = if self.st.inch { "inch" } else { "mm" };
         let shown = if self.st.inch { format!("{v:.4}") } else { format!("{v:.3}") };
         self.warn(
@@ -171,6 +179,37 @@ impl Step<'_> {
             w.span,
             format!("{}: {} mm is beyond the controller's range (at most {MAX_COORD_MM:.3} mm)", w.text(), crate::alarm::shown(v, 3)),
         )
+    }
+
+    /// A word for the student (issue 15): a lathe feed per minute below 10 mm/min (`F0.2` under
+    /// G98: a 22 mm cut takes nearly two hours) was meant per revolution; a feed per revolution
+    /// above 10 mm/rev was meant per minute. Once per F value, with the numbers.
+    fn feed_plausible(&mut self, f: f64, point: &dyn Fn(f64) -> Vec3) {
+        if !self.profile.is_lathe() || self.st.feed_warned == Some(f) {
+            return;
+        }
+        let unit = if self.st.inch { 25.4 } else { 1.0 };
+        let shown = crate::alarm::shown(f / unit, 4);
+        let msg = if !self.st.per_rev && f < 10.0 {
+            let length = point(0.0).dist(&point(1.0));
+            let minutes = length / f;
+            format!(
+                "F{shown} under feed per minute is {} {}/min: this {} mm cut takes {}; feed per revolution (G99) was probably meant",
+                shown,
+                if self.st.inch { "inch" } else { "mm" },
+                crate::alarm::shown(length, 3),
+                hours_minutes(minutes * 60.0)
+            )
+        } else if self.st.per_rev && f > 10.0 {
+            format!(
+                "F{shown} under feed per revolution is {shown} {}/rev, more than any cutting tool takes; feed per minute (G98 on these lathes) was probably meant",
+                if self.st.inch { "inch" } else { "mm" }
+            )
+        } else {
+            return;
+        };
+        self.st.feed_warned = Some(f);
+        self.warn(Rule::Implausible, self.span, msg);
     }
 
     /// Spindle speed at a point (G96 makes it depend on the diameter), signed.
@@ -199,6 +238,7 @@ impl Step<'_> {
                 ))
             }
         };
+        self.feed_plausible(f, point);
         let max = self.params.feed_max_mm_min();
         let feed_at = |rpm: f64| (f * rpm.abs()).min(max);
         let mut feed = f;
@@ -891,6 +931,20 @@ fn motion(step: &mut Step, words: &mut Words) -> Result<(), Diagnostic> {
         Motion::Box(_) => unreachable!("cycle blocks go to turning::block"),
     }
     Ok(())
+}
+
+/// A duration as a person reads it: `1 h 50 min`, `3 min 20 s`, `12.5 s`.
+pub(crate) fn hours_minutes(seconds: f64) -> String {
+    let s = seconds.max(0.0);
+    if s >= 3600.0 {
+        let m = (s / 60.0).round() as u64;
+        format!("{} h {} min", m / 60, m % 60)
+    } else if s >= 60.0 {
+        let t = s.round() as u64;
+        format!("{} min {} s", t / 60, t % 60)
+    } else {
+        format!("{} s", crate::alarm::shown(s, 1))
+    }
 }
 
 fn lerp(a: &Vec3, b: &Vec3, u: f64) -> Vec3 {

@@ -87,7 +87,9 @@ pub static PROFILE: Profile = Profile {
     power_on_per_rev: false,
     reference_in_canned_cycle_alarm: false,
     group00_with_01_alarm: true,
-    axes: "XYZ",
+    // A lathe: X and Z. The arc threads in G17/G19 (seed 002) need a Y axis on the machines
+    // that have one; the formats show Y once a programme moves it.
+    axes: "XZ",
     reference_point_mm: crate::motion::Vec3::new(100.0, 0.0, 200.0),
     addresses: super::Letters::new("GMSTFXYZUVWRIJKPQLN"),
     peck_back_off: None,

@@ -119,6 +119,33 @@ impl Line {
     }
 }
 
+/// A full-width character at the start of `s` (what a Chinese input method types for `;`, `(`,
+/// `,`, digits, letters), in UTF-8 or in GBK: how it looks, its ASCII twin, and its length in bytes.
+fn full_width(s: &[u8]) -> Option<(String, char, usize)> {
+    // GBK: 0xA3 0xA1..0xFE is the full-width form of ASCII 0x21..0x7E; 0xA1 0xA1 the wide space.
+    if s.len() >= 2 && s[0] == 0xA3 && (0xA1..=0xFE).contains(&s[1]) {
+        let twin = (s[1] - 0x80) as char;
+        let shown = char::from_u32(twin as u32 + 0xFEE0).map(String::from).unwrap_or_default();
+        return Some((shown, twin, 2));
+    }
+    if s.len() >= 2 && s[0] == 0xA1 && s[1] == 0xA1 {
+        return Some(("\u{3000}".into(), ' ', 2));
+    }
+    let len = match s.first()? {
+        0xE0..=0xEF => 3,
+        _ => return None,
+    };
+    let c = std::str::from_utf8(s.get(..len)?).ok()?.chars().next()?;
+    let twin = match c as u32 {
+        0xFF01..=0xFF5E => char::from_u32(c as u32 - 0xFEE0)?,
+        0x3000 => ' ',
+        0x3001 => ',',
+        0x3002 => '.',
+        _ => return None,
+    };
+    Some((c.to_string(), twin, len))
+}
+
 /// Reads lines. Holds only what a line needs.
 #[derive(Debug, Clone)]
 pub struct Reader {
@@ -179,6 +206,13 @@ impl Reader {
             } else {
                 break;
             }
+        }
+        // A DOS end-of-file mark ends the text wherever it stands, even on a line that alarms
+        // (corpus: icnc__Delorensi_FASE2.txt).
+        if let Some(k) = s.iter().position(|&b| b == 0x1A) {
+            out.end_of_file = true;
+            out.warnings.push(self.diag(Rule::EndOfFileMark, line_no, k, 1, "byte 0x1A (DOS end-of-file mark): the text ends here"));
+            s = &s[..k];
         }
         if s.len() > MAX_LINE_BYTES {
             out.blocks.push(Err(self.diag(
@@ -248,18 +282,6 @@ impl Reader {
                     finish(std::mem::replace(&mut block, next), block_start, block_end, out);
                     block_start = None;
                     i += 1;
-                }
-                0x1A => {
-                    // DOS end-of-file mark (corpus: icnc__Delorensi_FASE2.txt).
-                    out.end_of_file = true;
-                    out.warnings.push(self.diag(
-                        Rule::EndOfFileMark,
-                        line_no,
-                        i,
-                        1,
-                        "byte 0x1A (DOS end-of-file mark): the text ends here",
-                    ));
-                    break;
                 }
                 b'/' if block_start.is_none() && block.words.is_empty() && !block.block_delete => {
                     block.block_delete = true;
@@ -332,6 +354,23 @@ impl Reader {
                         .with_hint("a letter such as G was probably left out")
                     } else if c == b'#' {
                         self.diag(Rule::NotSupported, line_no, i, 1, "custom macro variables (#) are not simulated by ncsight yet")
+                    } else if c.is_ascii_control() {
+                        self.diag(
+                            Rule::BadCharacter,
+                            line_no,
+                            i,
+                            1,
+                            format!("byte 0x{c:02X} (a control character) is not allowed outside a comment"),
+                        )
+                    } else if let Some((shown, twin, len)) = full_width(&s[i..]) {
+                        self.diag(
+                            Rule::BadCharacter,
+                            line_no,
+                            i,
+                            len,
+                            format!("character '{shown}' (full width) is not allowed outside a comment"),
+                        )
+                        .with_hint(format!("a Chinese input method typed it: write the ASCII '{twin}' instead"))
                     } else if c.is_ascii() {
                         let d = self.diag(
                             Rule::BadCharacter,

@@ -1,0 +1,136 @@
+//! Defects found by outside checks (issue 15) at the command line: each test failed before its fix.
+
+mod common;
+
+use std::io::Write;
+
+fn tmp(name: &str, bytes: &[u8]) -> std::path::PathBuf {
+    let dir = std::env::temp_dir().join(format!("ncsight-defects-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let p = dir.join(name);
+    std::fs::write(&p, bytes).unwrap();
+    p
+}
+
+/// GBK comments (GSK controls, Chinese Windows editors) show as written, not as `????`.
+#[test]
+fn gbk_comments_show_as_written() {
+    let p = tmp("gbk.nc", b"G0 X150 Z50 T0101 (\xC2\xDD\xCE\xC6\xB5\xB6)\nG1 X10 Q5 F0.1 (\xC2\xDD\xCE\xC6\xB5\xB6)\nM30\n");
+    let (code, out, _) = common::ncsight(&["check", p.to_str().unwrap(), "--machine", "gsk980tdi"]);
+    assert_eq!(code, 1);
+    assert!(out.contains("(螺纹刀)"), "{out}");
+    assert!(!out.contains('?'), "{out}");
+}
+
+/// One rendering per diagnostic by default (the message once), one line each with --format short.
+#[test]
+fn each_diagnostic_is_printed_once() {
+    let p = tmp("once.nc", b"G0 X10.\nG1 X20. Q5 F100.\nM30\n");
+    let (_, out, _) = common::ncsight(&["check", p.to_str().unwrap(), "--machine", "fanuc0m"]);
+    assert_eq!(out.matches("does not take address Q").count(), 1, "{out}");
+    assert!(out.lines().count() <= 5, "{out}");
+    let (_, out, _) = common::ncsight(&["check", p.to_str().unwrap(), "--machine", "fanuc0m", "--format", "short"]);
+    assert_eq!(out.lines().count(), 2, "{out}");
+}
+
+/// `check --format jsonl` as INTERFACE.md specifies: file, line, col, severity, code, message, hint.
+#[test]
+fn check_jsonl_fields() {
+    let p = tmp("jsonl.nc", b"GO X10.\nG0 X10\nM30\n");
+    let (code, out, _) = common::ncsight(&["check", p.to_str().unwrap(), "--machine", "fanuc0m", "--format", "jsonl"]);
+    assert_eq!(code, 1);
+    let lines: Vec<serde_json::Value> = out.lines().map(|l| serde_json::from_str(l).unwrap()).collect();
+    assert_eq!(lines.len(), 2, "{out}");
+    let a = &lines[0];
+    assert_eq!(a["file"], p.to_str().unwrap());
+    assert_eq!((a["line"].as_u64(), a["col"].as_u64(), a["severity"].as_str()), (Some(1), Some(1), Some("alarm")));
+    assert!(a["code"].is_string() && a["message"].is_string() && a["hint"].is_string(), "{a}");
+    assert_eq!(lines[1]["severity"], "warning");
+    assert!(lines[1].get("hint").is_none());
+}
+
+/// `check a.nc missing.nc dir b.nc` reports each unreadable one by its path and checks the rest.
+#[test]
+fn check_goes_on_past_unreadable_files() {
+    let a = tmp("a.nc", b"G0 X10.\nM30\n");
+    let b = tmp("b.nc", b"G0 X10.\nG1 X20. Q5 F100.\nM30\n");
+    let dir = a.parent().unwrap().to_str().unwrap().to_string();
+    let (code, out, err) = common::ncsight(&["check", a.to_str().unwrap(), "/nonexistent/x.nc", &dir, b.to_str().unwrap(), "--machine", "fanuc0m"]);
+    assert_eq!(code, 2, "an unreadable file: the check is incomplete");
+    assert!(err.contains("/nonexistent/x.nc") && err.contains(&format!("cannot read {dir}: it is a directory")), "{err}");
+    assert!(out.contains("a.nc: 0 alarm(s)") && out.contains("b.nc: 1 alarm(s)"), "{out}");
+}
+
+/// A writer whose reader goes away after a few bytes (`| head -1`).
+struct Closing(usize);
+impl Write for Closing {
+    fn write(&mut self, buf: &[u8]) -> std::io::Result<usize> {
+        if self.0 == 0 {
+            return Err(std::io::ErrorKind::BrokenPipe.into());
+        }
+        let n = buf.len().min(self.0);
+        self.0 -= n;
+        Ok(n)
+    }
+    fn flush(&mut self) -> std::io::Result<()> {
+        Ok(())
+    }
+}
+
+/// `check big.nc | head -1` still exits 1 when the programme has alarms; `run | head -1` too.
+#[test]
+fn output_cut_short_keeps_the_status() {
+    let mut text = String::from("G0 X10.\n");
+    for _ in 0..2000 {
+        text.push_str("G0 X10\n");
+    }
+    text.push_str("G1 X20. Q5 F100.\nM30\n");
+    let p = tmp("big.nc", text.as_bytes());
+    for args in [vec!["check", p.to_str().unwrap(), "--machine", "fanuc0m"], vec!["run", p.to_str().unwrap(), "--machine", "fanuc0m"]] {
+        let mut full = vec!["ncsight".to_string()];
+        full.extend(args.iter().map(|s| s.to_string()));
+        let mut err = Vec::new();
+        let code = ncsight_cli::main_with(full.into_iter().map(Into::into), &mut Closing(40), &mut err);
+        assert_eq!(code, 1, "{args:?}");
+    }
+}
+
+/// A full-width `；` typed with a Chinese input method is named, with its ASCII twin; a NUL byte
+/// is never printed raw; the DOS end-of-file mark is seen on a line that alarms.
+#[test]
+fn characters_are_named() {
+    let p = tmp("fw.nc", "G0 X10；\nM30\n".as_bytes());
+    let (_, out, _) = common::ncsight(&["check", p.to_str().unwrap(), "--machine", "gsk980tdi"]);
+    assert!(out.contains("character '；' (full width)") && out.contains("ASCII ';'"), "{out}");
+    let p = tmp("nul.nc", b"G0 X10 \x00\nM30\n");
+    let (_, out, _) = common::ncsight(&["check", p.to_str().unwrap(), "--machine", "gsk980tdi"]);
+    assert!(!out.contains('\0') && out.contains("byte 0x00"), "{out:?}");
+    let p = tmp("eof.nc", b"G0 X10.\nG1 X20. Q5 F100.\x1a\nG0 X#1\n");
+    let (_, out, _) = common::ncsight(&["check", p.to_str().unwrap(), "--machine", "fanuc0m", "--format", "short"]);
+    assert!(out.contains("NCS-W06"), "{out}");
+    assert!(!out.contains(":3:"), "line 3 lies after the end-of-file mark: {out}");
+}
+
+/// Thirty identical NCS-W02 warnings: the first few, then one summary with the hint.
+#[test]
+fn many_increment_warnings_are_summed_up() {
+    let mut text = String::new();
+    for k in 1..=30 {
+        text.push_str(&format!("G0 X{k}0\n"));
+    }
+    text.push_str("M30\n");
+    let p = tmp("w02.nc", text.as_bytes());
+    let (_, out, _) = common::ncsight(&["check", p.to_str().unwrap(), "--machine", "fanuc0m"]);
+    assert_eq!(out.matches("warning[NCS-W02]").count(), 4, "{out}");
+    assert!(out.contains("27 more lengths") && out.contains("--param 3401.0=1"), "{out}");
+}
+
+/// The GSK988T is a lathe: no `Y0` in its records.
+#[test]
+fn gsk988t_records_have_no_y() {
+    let p = common::root().join("examples/gsk988t_o0009.nc");
+    let (_, out, _) = common::ncsight(&["run", p.to_str().unwrap(), "--machine", "gsk988t", "--format", "jsonl"]);
+    assert!(!out.contains("\"y\""), "{out}");
+    let (_, out, _) = common::ncsight(&["run", p.to_str().unwrap(), "--machine", "gsk988t"]);
+    assert!(!out.contains(" Y0"), "{out}");
+}
