@@ -10,7 +10,7 @@ use std::sync::mpsc;
 
 /// Longest line kept; the rest of a longer line is skipped, so memory stays bounded (the
 /// reader still sees the line as too long).
-pub const MAX_KEPT_LINE_BYTES: usize = 64 * 1024;
+pub const MAX_KEPT_LINE_BYTES: usize = ncsight::read::MAX_KEPT_LINE_BYTES;
 
 /// A batch is handed over once it holds this much text or `BATCH_LINES` lines.
 const BATCH_BYTES: usize = 64 * 1024;

@@ -4,6 +4,7 @@
 pub mod diag;
 mod feed;
 pub mod format;
+mod output;
 pub mod report;
 pub mod simulate;
 
@@ -386,13 +387,16 @@ fn run(
     let operator = operator.options()?;
     let profile = params.profile();
     let mut fmt = format::by_name(format, profile).ok_or_else(|| usage(format!("unknown format '{format}': choose text, jsonl or canon")))?;
+    if let Some(path) = output {
+        // Refused before anything is read or written.
+        output::LazyFile::new(path, &[file], 0).map_err(usage)?;
+    }
     let input = open(file)?;
     let mut file_out;
     let mut stdout_buf;
     let writer: &mut dyn Write = match output {
         Some(path) => {
-            let f = std::fs::File::create(path).map_err(|e| usage(format!("cannot write {path}: {e}")))?;
-            file_out = io::BufWriter::with_capacity(OUTPUT_BUFFER_BYTES, f);
+            file_out = output::LazyFile::new(path, &[file], OUTPUT_BUFFER_BYTES).map_err(usage)?;
             &mut file_out
         }
         None => {
@@ -500,6 +504,9 @@ fn report(
     err: &mut dyn Write,
 ) -> Result<i32, Failure> {
     let (params, switches) = setup(m, err)?;
+    if let Some(path) = output {
+        output::LazyFile::new(path, &[file], 0).map_err(usage)?;
+    }
     let opts = operator.options()?;
     let job = job_setup(setup_file, stock)?;
     // The page shows the source, so the report reads the whole file (the run still streams).
@@ -548,7 +555,7 @@ fn report(
     let page = report::Report { file_name: shown, source: &source, params: &params, records: &records, diagnostics: &diags, sim: sim.as_ref(), settings };
     match output {
         Some(path) => {
-            let mut w = io::BufWriter::new(std::fs::File::create(path).map_err(|e| usage(format!("cannot write {path}: {e}")))?);
+            let mut w = output::LazyFile::new(path, &[file], 1 << 16).map_err(usage)?;
             page.write(&mut w)?;
             w.flush()?;
         }
@@ -576,6 +583,9 @@ fn simulate(
     let (params, switches) = setup(m, err)?;
     let decoding = m.decoding()?;
     let job = job_setup(setup_file, stock)?;
+    if let Some(path) = image {
+        output::LazyFile::new(path, &[file], 0).map_err(usage)?;
+    }
     let opts = simulate::options(resolution, expect).map_err(usage)?;
     let input = open(file)?;
     let lathe = params.profile().is_lathe();
@@ -600,8 +610,7 @@ fn simulate(
     let body = if format == "json" { simulate::json(&sim.measurement) } else { simulate::text(&sim.measurement) };
     out.write_all(body.as_bytes())?;
     if let Some(path) = image {
-        let f = std::fs::File::create(path).map_err(|e| usage(format!("cannot write {path}: {e}")))?;
-        let mut w = io::BufWriter::new(f);
+        let mut w = output::LazyFile::new(path, &[file], 1 << 16).map_err(usage)?;
         simulate::image(&sim, &mut w)?;
         w.flush()?;
     }
@@ -668,6 +677,8 @@ fn repair(
             out.write_all(text.as_bytes())?;
             Ok(EXIT_OK)
         }
+        // A number the control would not take is the caller's mistake: a usage error.
+        Err(ncsight::repair::RepairError::BadInput(why)) => Err(usage(format!("{why}; no programme is written"))),
         Err(e) => alarm(err, ncsight::Rule::RepairOutside, format!("{e}; no programme is written")),
     }
 }

@@ -134,3 +134,64 @@ fn gsk988t_records_have_no_y() {
     let (_, out, _) = common::ncsight(&["run", p.to_str().unwrap(), "--machine", "gsk988t"]);
     assert!(!out.contains(" Y0"), "{out}");
 }
+
+/// `-o` naming the input file is refused (exit 2) and the programme is left as it was, whatever
+/// the spelling of the path; likewise `report -o` and `simulate --image`.
+#[test]
+fn output_is_never_the_input() {
+    let src = std::fs::read(common::root().join("examples/gsk980tdi_o0012.nc")).unwrap();
+    let p = tmp("o12.nc", &src);
+    let dir = p.parent().unwrap().to_str().unwrap().to_string();
+    let other_spelling = format!("{dir}/./o12.nc");
+    for args in [
+        vec!["run", p.to_str().unwrap(), "--machine", "gsk980tdi", "-o", &other_spelling],
+        vec!["report", p.to_str().unwrap(), "--machine", "gsk980tdi", "-o", p.to_str().unwrap()],
+        vec!["simulate", p.to_str().unwrap(), "--machine", "gsk980tdi", "--stock", "60x80", "--image", p.to_str().unwrap()],
+    ] {
+        let (code, _, err) = common::ncsight(&args);
+        assert_eq!(code, 2, "{args:?}");
+        assert!(err.contains("is the input file"), "{err}");
+        assert_eq!(std::fs::read(&p).unwrap(), src, "{args:?} changed the programme");
+    }
+    // A run that fails before it has anything to write leaves an existing output as it was.
+    let out = tmp("keep.txt", b"keep me");
+    let (code, _, _) = common::ncsight(&["run", "/nonexistent/x.nc", "--machine", "gsk980tdi", "-o", out.to_str().unwrap()]);
+    assert_eq!(code, 2);
+    assert_eq!(std::fs::read(&out).unwrap(), b"keep me");
+}
+
+/// Every number that goes into the repair blocks is range-checked: no `JNaN`, `Kinf` or a
+/// 300-digit J in blocks meant to be typed into a controller.
+#[test]
+fn repair_refuses_numbers_the_control_cannot_take() {
+    let base = ["repair", "--machine", "gsk988t", "--param", "8135.7=1", "--start", "60,5", "--end", "60,-30", "--lead", "2", "--rpm", "500", "--measured", "58,-10,90"];
+    for extra in [["--j", "nan"], ["--k", "inf"], ["--j", "1e300"], ["--k", "-1"]] {
+        let args: Vec<&str> = base.iter().copied().chain(extra).collect();
+        let (code, out, err) = common::ncsight(&args);
+        assert_eq!(code, 2, "{extra:?}: {out}{err}");
+        assert!(out.is_empty(), "{out}");
+    }
+    let (code, out, _) = common::ncsight(&base);
+    assert_eq!(code, 0);
+    assert!(out.starts_with("G0 X60. Z5."), "{out}");
+}
+
+/// Parameters: an overflowing value is "not finite", a fraction of a whole-number parameter is
+/// refused; `--expect pitch=0` is refused; a line of more than 64 kB says "at least".
+#[test]
+fn usage_errors_name_the_rule() {
+    let prog = common::root().join("examples/gsk980tdi_o0012.nc");
+    let prog = prog.to_str().unwrap();
+    let (code, _, err) = common::ncsight(&["run", prog, "--machine", "gsk980tdi", "--param", "19=1e309"]);
+    assert!(code == 2 && err.contains("not a finite number"), "{err}");
+    let (code, _, err) = common::ncsight(&["run", prog, "--machine", "gsk980tdi", "--param", "19=0.5"]);
+    assert!(code == 2 && err.contains("whole number"), "{err}");
+    let (code, _, err) = common::ncsight(&["simulate", prog, "--machine", "gsk980tdi", "--expect", "major=60,minor=56,pitch=0"]);
+    assert!(code == 2 && err.contains("pitch"), "{err}");
+    let mut long = b"G0 X1".to_vec();
+    long.extend(std::iter::repeat(b' ').take(200_000));
+    long.extend(b"\nM30\n");
+    let p = tmp("long.nc", &long);
+    let (_, out, _) = common::ncsight(&["check", p.to_str().unwrap(), "--machine", "gsk980tdi", "--format", "short"]);
+    assert!(out.contains("at least 65536 bytes"), "{out}");
+}

@@ -122,6 +122,7 @@ rules! {
     HoldIgnored => Warning, "NCS-W23", None, "FEED HOLD IGNORED DURING THE THREAD";
     AllowanceNotCut => Warning, "NCS-W24", None, "FINISHING ALLOWANCE NEVER CUT";
     Implausible => Warning, "NCS-W25", None, "IMPLAUSIBLE VALUE";
+    SpeedClamped => Warning, "NCS-W26", None, "SPINDLE SPEED ABOVE THE MAXIMUM: CLAMPED";
 }
 
 impl Rule {

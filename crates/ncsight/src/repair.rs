@@ -96,8 +96,36 @@ impl RepairJob {
         Ok(((deg * 1000.0).round() as u32) % 360_000)
     }
 
+    /// Every number that goes into the blocks is one the control takes (seed 001's ranges for
+    /// F, J, K; 8 digits of 0.001 mm for X and Z): NaN, infinity or a 300-digit number never
+    /// reaches a block meant to be typed into a controller.
+    fn check_ranges(&self) -> Result<(), RepairError> {
+        const MAX: f64 = 99_999.999;
+        let coords = [2.0 * self.start.x, self.start.z, 2.0 * self.end.x, self.end.z];
+        if !coords.iter().all(|v| v.is_finite() && v.abs() <= MAX) {
+            return Err(RepairError::BadInput("X and Z must be finite and at most 99999.999 mm"));
+        }
+        if !(self.lead_mm.is_finite() && self.lead_mm >= 0.001 && self.lead_mm <= 500.0) {
+            return Err(RepairError::BadInput("the lead F must be 0.001 to 500 mm (GSK988T manual, G32.1, range of F)"));
+        }
+        if !(self.rpm.is_finite() && self.rpm.abs() >= 1.0 && self.rpm.abs() <= crate::profile::MAX_RPM) {
+            return Err(RepairError::BadInput("the spindle speed S must be 1 to 10000 rpm either way"));
+        }
+        if self.j_mm.is_some_and(|j| !(j.is_finite() && j.abs() <= MAX)) {
+            return Err(RepairError::BadInput("J must be finite, -99999.999 to 99999.999 mm (GSK988T manual, G32.1, range of J)"));
+        }
+        if self.k_mm.is_some_and(|k| !(k.is_finite() && (0.0..=MAX).contains(&k))) {
+            return Err(RepairError::BadInput("K must be finite, 0 to 99999.999 mm (GSK988T manual, G32.1, range of K)"));
+        }
+        if !self.recorded.c_deg.is_finite() || !self.recorded.point.x.is_finite() || !self.recorded.point.z.is_finite() {
+            return Err(RepairError::BadInput("the recorded point must be finite"));
+        }
+        Ok(())
+    }
+
     /// The programme text, two lines.
     pub fn programme(&self) -> Result<String, RepairError> {
+        self.check_ranges()?;
         let q = self.q_counts()?;
         let n = |v: f64| {
             let s = format!("{v:.4}");

@@ -159,3 +159,40 @@ fn implausible_values_are_warned_with_their_numbers() {
     let (_, d) = common::run_plain("fanuc0m", &[], "G21 G17 G90 G0 X0. Y0. Z50.\nS500 M3\nG84 X10. Y10. Z-10. R2. F625.\nG80\nM30\n");
     assert!(!d.iter().any(|d| d.code == "NCS-W25"), "{d:?}");
 }
+
+/// Smaller ones: the coordinate range is 99999.999 mm under G21 (9999.9999 inch under G20); S
+/// above the maximum warns; an F below the least increment is FEED ZERO; brackets nest at most
+/// 32 deep, the word's own counted.
+#[test]
+fn smaller_range_checks() {
+    assert_eq!(first_alarm("gsk980tdi", "G21 G0 Z100000.\nM30\n").unwrap().code, "NCS-E33");
+    assert!(first_alarm("gsk980tdi", "G21 G0 Z99999.\nM30\n").is_none());
+    assert_eq!(first_alarm("gsk980tdi", "G20 G0 Z10000.\nM30\n").unwrap().code, "NCS-E33");
+    let (_, d) = common::run_plain("gsk980tdi", &[], "G97 S20000 M03\nM30\n");
+    assert!(d.iter().any(|d| d.code == "NCS-W26"), "{d:?}");
+    let (_, d) = common::run_plain("gsk980tdi", &[], "G96 S20000 M03\nM30\n");
+    assert!(!d.iter().any(|d| d.code == "NCS-W26"), "G96 clamps by G50: {d:?}");
+    assert_eq!(first_alarm("gsk980tdi", "G99 M3 S500\nG0 X20. Z2.\nG1 Z-20. F0.0000001\nM30\n").unwrap().code, "NCS-E11");
+    let nest = |n: usize| format!("G0 X{}1{}\nM30\n", "[".repeat(n), "]".repeat(n));
+    assert!(first_alarm("gsk980tdi", &nest(32)).is_none());
+    assert_eq!(first_alarm("gsk980tdi", &nest(33)).unwrap().code, "NCS-E32");
+}
+
+/// NaN and infinity in the setup file are refused, as every out-of-range value.
+#[test]
+fn setup_values_are_validated() {
+    use ncsight::stock::Setup;
+    assert!(Setup::from_toml("[stock]\ndiameter_mm = 60.0\nlength_mm = 80.0\n").is_ok());
+    Setup::from_toml("[[tool]]\nnumber = 1\nkind = \"thread\"\ntip_radius_mm = 0.2\n").unwrap();
+    for bad in [
+        "[stock]\ndiameter_mm = nan\nlength_mm = 80.0\n",
+        "[stock]\ndiameter_mm = 60.0\nlength_mm = inf\n",
+        "[stock]\ndiameter_mm = 60.0\nlength_mm = 80.0\nfront_z_mm = nan\n",
+        "[[tool]]\nnumber = 1\nkind = \"thread\"\ntip_radius_mm = nan\n",
+        "[[tool]]\nnumber = 1\nkind = \"thread\"\nincluded_angle_deg = inf\n",
+        "[[tool]]\nnumber = 1\nkind = \"thread\"\npoint_angle_deg = nan\n",
+        "[[tool]]\nnumber = 1\nkind = \"thread\"\ndiameter_mm = -1.0\n",
+    ] {
+        assert!(Setup::from_toml(bad).is_err(), "{bad}");
+    }
+}

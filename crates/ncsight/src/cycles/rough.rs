@@ -188,7 +188,7 @@ fn polyline(contour: &[Op], chord_mm: f64) -> Vec<Vec3> {
 }
 
 /// The moves of one roughing block (feeds carry 0: the interpreter sets each from F), at most
-/// `limit` passes.
+/// `limit` passes and moves.
 pub fn expand(r: &Roughing, limit: usize) -> Result<Rough, RoughError> {
     let (l, c) = r.kind.axes();
     let Some(first) = r.contour.first() else { return Ok(Rough { ops: Vec::new(), notes: Vec::new() }) };
@@ -229,7 +229,7 @@ pub fn expand(r: &Roughing, limit: usize) -> Result<Rough, RoughError> {
         let total = (b1.axis(l) - a1.axis(l)).abs();
         let mut k = 1usize;
         while dir_l != 0.0 && r.depth_mm > 0.0 && (k as f64) * r.depth_mm < total - 1e-9 {
-            if k > limit {
+            if k > limit || ops.len() > limit {
                 return Err(RoughError::TooMany);
             }
             let level = a1.axis(l) + dir_l * k as f64 * r.depth_mm;
@@ -379,6 +379,9 @@ fn levels_type_two(
     let level_of = |k: usize| a1.axis(l) + dir_l * k as f64 * r.depth_mm;
     let all = all_stretches(pts, l, c, &level_of, count, dir_l, a1.axis(c));
     for (k, stretches) in (1..=count).zip(&all) {
+        if ops.len() > limit {
+            return Err(RoughError::TooMany);
+        }
         let level = level_of(k);
         for (i, &(from_c, to_c)) in stretches.iter().enumerate() {
             if i == 0 && from_c == a1.axis(c) {

@@ -325,8 +325,8 @@ pub(super) fn variable_lead(step: &mut Step, words: &mut Words, run_deg: Option<
         step.emit(thread_op(at, next, rev_lead, long_axis, start_deg, rpm));
         at = next;
         n += 1;
-        if n > 1_000_000 {
-            return Err(step.alarm(Rule::MotionLimit, step.span, "G34: more than a million revolutions"));
+        if n as usize > super::MAX_MOTIONS_PER_BLOCK {
+            return Err(step.alarm(Rule::MotionLimit, step.span, format!("G34: more than {} revolutions in one block", super::MAX_MOTIONS_PER_BLOCK)));
         }
     }
     Ok(())

@@ -14,7 +14,7 @@ pub const MAX_REPEATS: f64 = 9999.0;
 
 /// Most pecks one G73/G83 block may make (a limit of ncsight's, so that a broken Q cannot make a
 /// programme of endless motion).
-pub const MAX_PECKS: f64 = 1_000_000.0;
+pub const MAX_PECKS: f64 = 30_000.0;
 
 fn letter(axis: usize) -> u8 {
     [b'X', b'Y', b'Z'][axis]

@@ -9,7 +9,7 @@ use crate::cycles::groove::{expand, Move, PeckCycle, PeckError, PeckKind};
 use crate::motion::Op;
 
 /// At most this many moves in one block (a peck far too small for the depth).
-const MAX_MOVES: usize = 1_000_000;
+const MAX_MOVES: usize = super::MAX_MOTIONS_PER_BLOCK;
 
 pub(super) fn block(step: &mut Step, words: &mut Words, kind: PeckKind) -> Result<(), Diagnostic> {
     let code = kind.code();

@@ -21,8 +21,14 @@ use crate::source::Span;
 use words::Words;
 
 /// Largest |coordinate| accepted, mm: 99999.999 mm is the widest value an 8-digit word with
-/// 0.001 mm resolution can hold.
-pub const MAX_COORD_MM: f64 = 99_999.999 * 25.4;
+/// 0.001 mm resolution can hold; under G20, 9999.9999 inch.
+pub const MAX_COORD_MM: f64 = 99_999.999;
+pub const MAX_COORD_INCH: f64 = 9_999.9999;
+
+/// The most motion records one block may make (a canned cycle with K repeats, a G71 of tiny
+/// depth): past it the block alarms (NCS-E40), so the memory a block holds stays bounded by a
+/// constant (about 20 MB) whatever it expands to. Documented in docs/robustness.md.
+pub const MAX_MOTIONS_PER_BLOCK: usize = 100_000;
 
 /// Arc end-point radius tolerance, mm (assumed; FANUC's is a parameter): start and end radii
 /// may differ by this much before OVER TOLERANCE OF RADIUS.
@@ -40,12 +46,15 @@ pub struct Outcome {
     /// them came to less than 1 mm (0.1 inch): kept across blocks for the summary of NCS-W02.
     pub increment_words: u32,
     pub increment_words_small: u32,
+    /// Records made by the block being executed (kept or not).
+    emitted: usize,
 }
 
 impl Outcome {
     fn clear(&mut self) {
         self.records.clear();
         self.warnings.clear();
+        self.emitted = 0;
     }
 }
 
@@ -102,10 +111,15 @@ impl Step<'_> {
         self.emit_at(self.span, op);
     }
 
-    /// Emit an operation of an earlier block (a held-back thread run end).
+    /// Emit an operation of an earlier block (a held-back thread run end). Past
+    /// [`MAX_MOTIONS_PER_BLOCK`] nothing more is kept: the block then alarms.
     fn emit_at(&mut self, span: Span, op: Op) {
         if let Some(p) = op.end_point() {
             self.st.pos = p;
+        }
+        self.out.emitted += 1;
+        if self.out.emitted > MAX_MOTIONS_PER_BLOCK {
+            return;
         }
         if !self.out.discard_records {
             self.out.records.push(Record::new(span, op));
@@ -148,11 +162,12 @@ impl Step<'_> {
                 self.warn_increments(w, v);
             }
         }
+        let limit = if self.st.inch { MAX_COORD_INCH } else { MAX_COORD_MM };
+        if v.abs() > limit + 1e-9 {
+            return Err(self.out_of_range(w, v));
+        }
         if self.st.inch {
             v *= 25.4;
-        }
-        if v.abs() > MAX_COORD_MM {
-            return Err(self.out_of_range(w, v));
         }
         Ok(v)
     }
@@ -177,7 +192,11 @@ impl Step<'_> {
         self.alarm(
             Rule::ValueOutOfRange,
             w.span,
-            format!("{}: {} mm is beyond the controller's range (at most {MAX_COORD_MM:.3} mm)", w.text(), crate::alarm::shown(v, 3)),
+            if self.st.inch {
+                format!("{}: {} inch is beyond the controller's range (at most {MAX_COORD_INCH:.4} inch)", w.text(), crate::alarm::shown(v, 4))
+            } else {
+                format!("{}: {} mm is beyond the controller's range (at most {MAX_COORD_MM:.3} mm)", w.text(), crate::alarm::shown(v, 3))
+            },
         )
     }
 
@@ -334,7 +353,17 @@ impl Interpreter {
         let before = self.state.clone();
         let repair = self.switches.repair_position;
         let mut step = Step { profile: self.profile, params: &self.params, repair, span: block.span, st: &mut self.state, out };
-        if let Err(d) = run_block(&mut step, block, self.switches) {
+        let result = run_block(&mut step, block, self.switches).and_then(|()| {
+            if step.out.emitted > MAX_MOTIONS_PER_BLOCK {
+                return Err(step.alarm(
+                    Rule::MotionLimit,
+                    block.span,
+                    format!("this block makes more than {MAX_MOTIONS_PER_BLOCK} motions (K repeats, pecks or passes too many): ncsight stops here"),
+                ));
+            }
+            Ok(())
+        });
+        if let Err(d) = result {
             step.out.clear();
             self.state = before;
             return Err(d);
@@ -624,6 +653,10 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
         if w.value < 0.0 {
             return Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("{}: a feed cannot be negative", w.text())));
         }
+        if w.value > 0.0 && w.value < 0.0001 {
+            // Below the finest feed increment (0.0001 mm/rev or inch/rev): the control reads 0.
+            return Err(step.alarm(Rule::FeedZero, w.span, format!("{}: below the least feed increment 0.0001, the control reads it as F0", w.text())));
+        }
         let unit = if step.st.inch { 25.4 } else { 1.0 };
         step.st.feed = Some(w.value * unit);
     }
@@ -638,6 +671,11 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
             step.st.rpm_clamp = Some(w.value); // G50 S: maximum spindle speed (TDi help G96/97)
         } else {
             step.st.s_word = w.value;
+            let css = codes_css(&last_of).unwrap_or(step.st.css);
+            if !css && w.value > MAX_RPM {
+                let msg = format!("{}: above the spindle's maximum of {MAX_RPM} rpm (assumed for every profile): the spindle turns at {MAX_RPM} rpm", w.text());
+                step.warn(Rule::SpeedClamped, w.span, msg);
+            }
         }
     }
     let tool = match words.take(b'T') {
@@ -765,6 +803,15 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
     }
 
     finish_block(step, &words, &codes, after, switches)
+}
+
+/// Whether the block's own G codes switch constant surface speed on or off.
+fn codes_css(last_of: &[(Group, &Word, &GDef)]) -> Option<bool> {
+    last_of.iter().rev().find_map(|(_, _, g)| match g.function {
+        GFn::ConstantSurfaceSpeed => Some(true),
+        GFn::ConstantRpm => Some(false),
+        _ => None,
+    })
 }
 
 /// M codes that act after the motion, then the check that every word was used.

@@ -304,7 +304,7 @@ impl Interpreter {
             return Err(self.contour_alarm(Rule::ContourCommand, first.span, format!("{code}: the contour's first block N{} must move along {axis}, the axis {code} steps its depth on (help text note 2)", req.ns)));
         }
         let r = Roughing { kind: req.kind, start: req.start, contour: &contour, allowance: req.allowance, depth_mm: req.depth_mm, back_off_mm: req.back_off_mm, ns_rapid, type_two, tolerance_mm: if self.state.inch { 0.00254 } else { 0.001 } };
-        let rough = expand(&r, 100_000).map_err(|e| match e {
+        let rough = expand(&r, super::MAX_MOTIONS_PER_BLOCK).map_err(|e| match e {
             RoughError::NotMonotonic(axis) => {
                 let rule = if type_two { "type II roughing needs that along the cut axis" } else { "type I roughing needs that" };
                 let d = self.contour_alarm(
@@ -322,7 +322,7 @@ impl Interpreter {
                 req.span,
                 format!("{code}: the contour N{}..N{} has more than {MAX_POCKETS} pockets (help text type II, 2)", req.ns, req.nf),
             ),
-            RoughError::TooMany => self.contour_alarm(Rule::MotionLimit, req.span, format!("{code}: more than 100000 roughing passes (Δd too small)")),
+            RoughError::TooMany => self.contour_alarm(Rule::MotionLimit, req.span, format!("{code}: more than {} roughing moves in one cycle (Δd too small)", super::MAX_MOTIONS_PER_BLOCK)),
             RoughError::NotAPath => self.contour_alarm(Rule::ContourCommand, req.span, format!("{code}: the contour holds a move that is not a line or an arc")),
         })?;
         // The depth axis, and the allowance word and axis along the cut.

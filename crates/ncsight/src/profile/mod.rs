@@ -325,6 +325,15 @@ pub struct ParamDef {
     pub source: &'static str,
 }
 
+impl ParamDef {
+    /// The parameter screen takes a whole number: bits, counts, times in ms, angles in degrees
+    /// and lengths in increments (0.001 mm, 0.1 x lead); only lengths in mm and rates in mm/min
+    /// take decimals (FANUC's real-type parameters).
+    pub fn whole(&self) -> bool {
+        !matches!(self.unit, "mm" | "mm/min")
+    }
+}
+
 /// Which parameters the time model reads. Rates are in mm/min.
 #[derive(Debug, Clone, Copy)]
 pub struct TimeKeys {
@@ -541,6 +550,8 @@ pub struct Params {
 #[derive(Debug, Clone, PartialEq)]
 pub enum ParamError {
     Syntax(String),
+    NotFinite(String),
+    NotWhole { key: String, value: f64, unit: &'static str },
     Unknown(String),
     OutOfRange { key: String, value: f64, min: f64, max: f64, unit: &'static str },
 }
@@ -549,6 +560,8 @@ impl std::fmt::Display for ParamError {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match self {
             ParamError::Syntax(s) => write!(f, "--param {s}: expected N=V, N.B=V or NAME=V"),
+            ParamError::NotFinite(s) => write!(f, "--param {s}: the value is not a finite number"),
+            ParamError::NotWhole { key, value, unit } => write!(f, "parameter {key} = {value}: the parameter takes a whole number ({unit})"),
             ParamError::Unknown(s) => write!(f, "parameter {s} does not exist on this profile (see `ncsight machines`)"),
             ParamError::OutOfRange { key, value, min, max, unit } => {
                 write!(f, "parameter {key} = {value} is out of range {min}..{max} {unit}")
@@ -580,7 +593,7 @@ impl Params {
         let (k, v) = assignment.split_once('=').ok_or_else(|| ParamError::Syntax(assignment.into()))?;
         let value: f64 = v.trim().parse().map_err(|_| ParamError::Syntax(assignment.into()))?;
         if !value.is_finite() {
-            return Err(ParamError::Syntax(assignment.into()));
+            return Err(ParamError::NotFinite(assignment.into()));
         }
         let key = match ParamKey::parse(k) {
             Some(key) => key,
@@ -596,6 +609,9 @@ impl Params {
         let (i, def) = self.profile.param(key).ok_or_else(|| ParamError::Unknown(key.to_string()))?;
         if value < def.min || value > def.max {
             return Err(ParamError::OutOfRange { key: key.to_string(), value, min: def.min, max: def.max, unit: def.unit });
+        }
+        if def.whole() && value.fract() != 0.0 {
+            return Err(ParamError::NotWhole { key: key.to_string(), value, unit: def.unit });
         }
         self.values[i] = value;
         self.cache();
@@ -689,5 +705,10 @@ mod tests {
         assert!(matches!(ps.set_text("18.6=2"), Err(ParamError::OutOfRange { .. })));
         assert!(matches!(ps.set_text("9999=1"), Err(ParamError::Unknown(_))));
         assert!(matches!(ps.set_text("19"), Err(ParamError::Syntax(_))));
+        // Issue 15: an overflowing number is "not finite", a fraction of a whole-number parameter
+        // is refused.
+        assert!(matches!(ps.set_text("19=1e309"), Err(ParamError::NotFinite(_))));
+        assert!(matches!(ps.set_text("19=0.5"), Err(ParamError::NotWhole { .. })));
+        ps.set_text("19=5").unwrap();
     }
 }

@@ -14,7 +14,8 @@ pub struct ExprError {
 
 /// Evaluate the text between the outer brackets (without them).
 pub fn evaluate(text: &[u8]) -> Result<f64, ExprError> {
-    let mut p = Parser { s: text, i: 0, depth: 0 };
+    // The outer brackets, stripped by the caller, are the first level of the limit.
+    let mut p = Parser { s: text, i: 0, depth: 1 };
     let v = p.sum()?;
     p.skip_ws();
     if p.i != p.s.len() {

@@ -14,6 +14,10 @@ use crate::source::Span;
 /// broken file (a binary, a 100 kB line) to one clear alarm.
 pub const MAX_LINE_BYTES: usize = 4096;
 
+/// The most of one line a streaming caller keeps (the rest of a longer line is skipped): a
+/// line this long is reported as "more than" it.
+pub const MAX_KEPT_LINE_BYTES: usize = 64 * 1024;
+
 /// Most significant digits a numeric value may have (FANUC PS0003 "TOO MANY DIGIT": the
 /// controls take 8 digits; one more is accepted for CAM output that pads a trailing digit).
 pub const MAX_DIGITS: usize = 9;
@@ -220,7 +224,12 @@ impl Reader {
                 line_no,
                 0,
                 1,
-                format!("line of {} bytes: a block may be at most {MAX_LINE_BYTES} bytes long", s.len()),
+                if s.len() == MAX_KEPT_LINE_BYTES {
+                    // What a streaming caller keeps of a longer line: its length is not known.
+                    format!("line of at least {MAX_KEPT_LINE_BYTES} bytes: a block may be at most {MAX_LINE_BYTES} bytes long")
+                } else {
+                    format!("line of {} bytes: a block may be at most {MAX_LINE_BYTES} bytes long", s.len())
+                },
             )));
             return;
         }

@@ -137,14 +137,26 @@ impl Setup {
     /// Read a setup from its TOML text.
     pub fn from_toml(text: &str) -> Result<Setup, SetupError> {
         let s: Setup = toml::from_str(text).map_err(|e| SetupError(e.to_string()))?;
+        // Every value is checked: NaN or infinity would make the simulation answer wrongly and
+        // silently. Lengths are at most 100 m.
+        const MAX_MM: f64 = 100_000.0;
+        let length = |v: f64| v.is_finite() && v.abs() <= MAX_MM;
         if let Some(b) = s.stock {
+            if !(length(b.diameter_mm) && length(b.length_mm) && length(b.bore_mm) && length(b.front_z_mm)) {
+                return Err(SetupError(format!("stock: every length must be a finite number of at most {MAX_MM} mm")));
+            }
             if !(b.diameter_mm > 0.0 && b.length_mm > 0.0 && b.bore_mm >= 0.0 && b.bore_mm < b.diameter_mm) {
                 return Err(SetupError("stock: diameter and length must be more than 0, the bore less than the diameter".into()));
             }
         }
         for t in &s.tools {
-            if !(t.included_angle_deg > 0.0 && t.included_angle_deg < 180.0) || t.tip_radius_mm < 0.0 || t.tip_flat_mm < 0.0 {
-                return Err(SetupError(format!("tool {}: the included angle must be 0-180 degrees, radius and flat 0 or more", t.number)));
+            let lengths_ok = [t.tip_radius_mm, t.tip_flat_mm, t.diameter_mm].into_iter().all(|v| length(v) && v >= 0.0);
+            let angles_ok = [t.included_angle_deg, t.point_angle_deg].into_iter().all(|a| a.is_finite() && a > 0.0 && a < 180.0);
+            if !(lengths_ok && angles_ok) {
+                return Err(SetupError(format!(
+                    "tool {}: the included and point angles must be more than 0 and less than 180 degrees, the radius, flat and diameter finite, 0 or more",
+                    t.number
+                )));
             }
         }
         Ok(s)

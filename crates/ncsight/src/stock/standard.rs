@@ -58,6 +58,9 @@ pub fn parse(spec: &str) -> Result<Expected, String> {
             }
         }
         let (major, minor, pitch) = (major.ok_or_else(bad)?, minor.ok_or_else(bad)?, pitch.ok_or_else(bad)?);
+        if !(pitch > 0.0 && minor > 0.0 && major > minor) {
+            return Err(format!("--expect {spec}: the pitch must be more than 0 and the major diameter more than the minor, both more than 0"));
+        }
         return Ok(Expected { name: s.into(), major_mm: major, minor_mm: minor, pitch_mm: pitch });
     }
     if let Some(rest) = s.strip_prefix(['M', 'm']) {
@@ -106,5 +109,7 @@ mod tests {
         let e = parse("major=60,minor=56.3,pitch=3").unwrap();
         assert_eq!(e.minor_mm, 56.3);
         assert!(parse("M7").is_err() && parse("hello").is_err() && parse("M30x0").is_err());
+        // Issue 15: no thread of pitch 0, or with the minor above the major.
+        assert!(parse("major=60,minor=56.3,pitch=0").is_err() && parse("major=50,minor=56.3,pitch=3").is_err());
     }
 }
