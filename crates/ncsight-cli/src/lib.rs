@@ -370,6 +370,13 @@ impl<W: Write> Write for Tolerant<W> {
     }
 }
 
+/// The most records and diagnostics a report page keeps (its size and the browser's memory stay
+/// bounded whatever the programme expands to).
+const REPORT_MAX_RECORDS: usize = 100_000;
+const REPORT_MAX_DIAGNOSTICS: usize = 10_000;
+/// The most records the stock simulation takes (about 75 MB).
+const SIMULATE_MAX_RECORDS: usize = 500_000;
+
 /// Output buffer: large writes, few system calls.
 const OUTPUT_BUFFER_BYTES: usize = 256 * 1024;
 
@@ -477,6 +484,32 @@ fn check(files: &[String], m: &MachineArgs, format: &str, out: &mut dyn Write, e
     Ok(if unreadable { EXIT_USAGE } else if any_alarm { EXIT_ALARM } else { EXIT_OK })
 }
 
+/// Progress of long work on a terminal: after a second, "simulating: 37 %" on standard error,
+/// rewritten in place a few times a second; nothing when standard error is not a terminal.
+fn progress_on(err: &mut dyn Write) -> impl FnMut(usize, usize) + '_ {
+    use std::io::IsTerminal;
+    let terminal = io::stderr().is_terminal();
+    let start = std::time::Instant::now();
+    let mut last = start;
+    move |done, total| {
+        if !terminal || total == 0 {
+            return;
+        }
+        let now = std::time::Instant::now();
+        if now.duration_since(start).as_secs_f64() < 1.0 || now.duration_since(last).as_secs_f64() < 0.2 {
+            if done == total && now.duration_since(start).as_secs_f64() >= 1.0 {
+                let _ = write!(err, "\rsimulating: 100 %\n");
+            }
+            return;
+        }
+        last = now;
+        let _ = write!(err, "\rsimulating: {} %", done * 100 / total);
+        if done == total {
+            let _ = writeln!(err);
+        }
+    }
+}
+
 /// The job setup from `--setup` and `--stock`.
 fn job_setup(setup_file: Option<&str>, stock: Option<&str>) -> Result<ncsight::stock::Setup, Failure> {
     let mut job = match setup_file {
@@ -539,13 +572,35 @@ fn report(
     settings.push("assumptions: docs/guide.md and docs/commands/*.md".into());
     let mut program = Program::with_operator(params.clone(), switches, Mode::Run, opts);
     let (mut records, mut diags) = (Vec::new(), Vec::new());
+    // The page keeps at most REPORT_MAX_RECORDS motions and REPORT_MAX_DIAGNOSTICS
+    // diagnostics; the run goes on to the end for the time and the alarm, and the page says so.
+    let (mut all_records, mut all_diags) = (0usize, 0usize);
     drive(file, Box::new(io::Cursor::new(source.clone())), &mut program, &mut |e, _| {
         match e {
-            Event::Record(r) => records.push(r.clone()),
-            Event::Diagnostic(d) => diags.push(d.clone()),
+            Event::Record(r) => {
+                all_records += 1;
+                if records.len() < REPORT_MAX_RECORDS {
+                    records.push(r.clone());
+                }
+            }
+            Event::Diagnostic(d) => {
+                all_diags += 1;
+                if diags.len() < REPORT_MAX_DIAGNOSTICS {
+                    diags.push(d.clone());
+                }
+            }
         }
         Ok(())
     })?;
+    if all_records > records.len() {
+        settings.push(format!(
+            "drawn: the first {} of {all_records} records (the report's limit); the time and the alarms are those of the whole run",
+            records.len()
+        ));
+    }
+    if all_diags > diags.len() {
+        settings.push(format!("listed: the first {} of {all_diags} diagnostics (the report's limit)", diags.len()));
+    }
     let sim = if params.profile().is_lathe() && records.iter().any(|r| r.op.is_thread()) {
         ncsight::stock::measure::simulate(&records, &job, &ncsight::stock::measure::SimOptions::default()).ok()
     } else {
@@ -592,21 +647,26 @@ fn simulate(
     let mut program = Program::new(params, switches, Mode::Run);
     let shown = if file == "-" { "<stdin>" } else { file };
     let mut records = Vec::new();
+    let mut too_many = false;
     drive(file, input, &mut program, &mut |e, text| {
         match e {
+            Event::Record(_) if records.len() >= SIMULATE_MAX_RECORDS => too_many = true,
             Event::Record(r) => records.push(r.clone()),
             Event::Diagnostic(d) if d.is_alarm() => err.write_all(diag::render(shown, text, d, diag::Style::Full, &decoding).as_bytes())?,
             Event::Diagnostic(_) => {}
         }
         Ok(())
     })?;
+    if too_many {
+        return Err(usage(format!("the programme makes more than {SIMULATE_MAX_RECORDS} motions: the stock simulation takes at most that many")));
+    }
     if !lathe {
         let sim = ncsight::stock::measure::simulate_mill(&records, &job, opts.dz_mm).map_err(usage)?;
         let body = if format == "json" { simulate::mill_json(&sim) } else { simulate::mill_text(&sim) };
         out.write_all(body.as_bytes())?;
         return Ok(if program.status() == Status::Alarm { EXIT_ALARM } else { EXIT_OK });
     }
-    let sim = ncsight::stock::measure::simulate(&records, &job, &opts).map_err(usage)?;
+    let sim = ncsight::stock::measure::simulate_with(&records, &job, &opts, &mut progress_on(err)).map_err(usage)?;
     let body = if format == "json" { simulate::json(&sim.measurement) } else { simulate::text(&sim.measurement) };
     out.write_all(body.as_bytes())?;
     if let Some(path) = image {

@@ -126,6 +126,34 @@ pub fn simulate_mill(records: &[Record], setup: &Setup, cell_mm: Option<f64>) ->
 
 /// Run the records through the stock and measure.
 pub fn simulate(records: &[Record], setup: &Setup, opts: &SimOptions) -> Result<Simulation, String> {
+    simulate_with(records, setup, opts, &mut |_, _| {})
+}
+
+/// The most cell updates a lathe simulation may need (about a minute on two cores): past it the
+/// simulation refuses at once instead of running for hours (docs/commands/simulate.md).
+pub const MAX_CELL_UPDATES: f64 = 50e9;
+
+/// An upper bound of the cell updates the records make on a grid of `nz` x `ntheta` cells
+/// `dz` apart: every cutting record touches each row over its z extent (clipped to the bar).
+fn work_estimate(records: &[Record], bar_length_mm: f64, dz: f64, ntheta: usize) -> f64 {
+    records
+        .iter()
+        .map(|r| match r.op {
+            Op::Thread { from, to, .. } | Op::Feed { from, to, .. } | Op::Arc { from, to, .. } | Op::Rapid { from, to } => {
+                let span = match r.op {
+                    // An arc may bulge beyond its end points: its whole circle's extent.
+                    Op::Arc { center, .. } => 2.0 * center.dist(&from),
+                    _ => (to.z - from.z).abs(),
+                };
+                (span.min(bar_length_mm) / dz + 2.0) * ntheta as f64
+            }
+            _ => 0.0,
+        })
+        .sum()
+}
+
+/// [`simulate`] that reports its progress: `progress(done, total)` after each record.
+pub fn simulate_with(records: &[Record], setup: &Setup, opts: &SimOptions, progress: &mut dyn FnMut(usize, usize)) -> Result<Simulation, String> {
     // The tool of each record follows the T words.
     let mut tool_of = Vec::with_capacity(records.len());
     let mut tool = setup.tool(0);
@@ -154,12 +182,22 @@ pub fn simulate(records: &[Record], setup: &Setup, opts: &SimOptions) -> Result<
     if cells > 400e6 {
         return Err(format!("a grid of {cells:.0} cells is too large: coarsen --resolution"));
     }
+    let work = work_estimate(records, bar.length_mm, dz, ntheta);
+    if work > MAX_CELL_UPDATES {
+        return Err(format!(
+            "the simulation would need about {:.0} G cell updates, more than its limit of {:.0} G (about a minute): coarsen --resolution or simulate fewer passes",
+            work / 1e9,
+            MAX_CELL_UPDATES / 1e9
+        ));
+    }
     let mut stock = LatheStock::new(bar, internal, dz, ntheta);
     // Where the tool is before the first rapid is the machine's business, not the programme's
     // (the power-on position): motion up to the end of the first rapid is not cut.
     let first_rapid = records.iter().position(|r| matches!(r.op, Op::Rapid { .. })).unwrap_or(0);
-    for (r, (t, turning)) in records.iter().zip(&tool_of).skip(first_rapid + 1) {
+    let total = records.len();
+    for (k, (r, (t, turning))) in records.iter().zip(&tool_of).enumerate().skip(first_rapid + 1) {
         stock.apply(r, t, *turning);
+        progress(k + 1, total);
     }
     let mut m = measure(&stock, records, &tool_of.iter().map(|(t, _)| *t).collect::<Vec<_>>());
     if let Some(e) = &opts.expect {
