@@ -19,6 +19,21 @@ pub const EXIT_OK: i32 = 0;
 pub const EXIT_ALARM: i32 = 1;
 /// Exit status: usage or I/O error.
 pub const EXIT_USAGE: i32 = 2;
+/// Exit status of `simulate` and `report`: the programme ran to the end, and the stock
+/// simulation found a problem (a crash, a phase error, the chuck reached, a deviation from
+/// `--expect`).
+pub const EXIT_FINDINGS: i32 = 3;
+
+/// The exit status of a run whose stock simulation gave these findings.
+fn status_with_findings(alarm: bool, findings: &[ncsight::stock::Finding]) -> i32 {
+    if alarm {
+        EXIT_ALARM
+    } else if findings.iter().any(|f| f.is_problem()) {
+        EXIT_FINDINGS
+    } else {
+        EXIT_OK
+    }
+}
 
 #[derive(Parser, Debug)]
 #[command(name = "ncsight", version, about = "See what a CNC programme will do on a GSK, FANUC or YASNAC controller before the machine does it")]
@@ -601,13 +616,18 @@ fn report(
     if all_diags > diags.len() {
         settings.push(format!("listed: the first {} of {all_diags} diagnostics (the report's limit)", diags.len()));
     }
-    let sim = if params.profile().is_lathe() && records.iter().any(|r| r.op.is_thread()) {
-        ncsight::stock::measure::simulate(&records, &job, &ncsight::stock::measure::SimOptions::default()).ok()
+    // The thread section: simulated when the programme cuts a thread on a lathe; when it cannot
+    // be, the page says why (never "cuts no thread" for a thread it could not simulate).
+    let (sim, sim_error) = if params.profile().is_lathe() && records.iter().any(|r| r.op.is_thread()) {
+        match ncsight::stock::measure::simulate(&records, &job, &ncsight::stock::measure::SimOptions::default()) {
+            Ok(s) => (Some(s), None),
+            Err(e) => (None, Some(e)),
+        }
     } else {
-        None
+        (None, None)
     };
     let shown = if file == "-" { "<stdin>" } else { file };
-    let page = report::Report { file_name: shown, source: &source, params: &params, records: &records, diagnostics: &diags, sim: sim.as_ref(), settings };
+    let page = report::Report { file_name: shown, source: &source, params: &params, records: &records, diagnostics: &diags, sim: sim.as_ref(), sim_error: sim_error.as_deref(), settings };
     match output {
         Some(path) => {
             let mut w = output::LazyFile::new(path, &[file], 1 << 16).map_err(usage)?;
@@ -616,7 +636,7 @@ fn report(
         }
         None => page.write(out)?,
     }
-    Ok(if program.status() == Status::Alarm { EXIT_ALARM } else { EXIT_OK })
+    Ok(status_with_findings(program.status() == Status::Alarm, sim.as_ref().map(|s| &s.measurement.findings[..]).unwrap_or(&[])))
 }
 
 #[allow(clippy::too_many_arguments)]
@@ -640,6 +660,12 @@ fn simulate(
     let job = job_setup(setup_file, stock)?;
     if let Some(path) = image {
         output::LazyFile::new(path, &[file], 0).map_err(usage)?;
+        if !params.profile().is_lathe() {
+            return Err(usage(format!(
+                "--image draws the unrolled surface of a thread on a lathe; {} is a machining centre: the drilling simulation has no image (its holes are in the text or JSON output)",
+                params.profile().name
+            )));
+        }
     }
     let opts = simulate::options(resolution, expect).map_err(usage)?;
     let input = open(file)?;
@@ -664,7 +690,7 @@ fn simulate(
         let sim = ncsight::stock::measure::simulate_mill(&records, &job, opts.dz_mm).map_err(usage)?;
         let body = if format == "json" { simulate::mill_json(&sim) } else { simulate::mill_text(&sim) };
         out.write_all(body.as_bytes())?;
-        return Ok(if program.status() == Status::Alarm { EXIT_ALARM } else { EXIT_OK });
+        return Ok(status_with_findings(program.status() == Status::Alarm, &sim.findings));
     }
     let sim = ncsight::stock::measure::simulate_with(&records, &job, &opts, &mut progress_on(err)).map_err(usage)?;
     let body = if format == "json" { simulate::json(&sim.measurement) } else { simulate::text(&sim.measurement) };
@@ -674,7 +700,7 @@ fn simulate(
         simulate::image(&sim, &mut w)?;
         w.flush()?;
     }
-    Ok(if program.status() == Status::Alarm { EXIT_ALARM } else { EXIT_OK })
+    Ok(status_with_findings(program.status() == Status::Alarm, &sim.measurement.findings))
 }
 
 #[allow(clippy::too_many_arguments)]

@@ -27,6 +27,8 @@ pub struct Report<'a> {
     pub records: &'a [Record],
     pub diagnostics: &'a [Diagnostic],
     pub sim: Option<&'a Simulation>,
+    /// Why the thread could not be simulated, when it could not.
+    pub sim_error: Option<&'a str>,
     /// The operator's options and switches, described.
     pub settings: Vec<String>,
 }
@@ -203,7 +205,12 @@ impl Report<'_> {
                     let _ = write!(s, "\"unrolled\":\"data:image/png;base64,{}\",", base64(&png));
                 }
             }
-            None => s.push_str("\"sim\":null,"),
+            None => {
+                s.push_str("\"sim\":null,");
+                if let Some(e) = self.sim_error {
+                    let _ = write!(s, "\"sim_error\":{},", json_str(e));
+                }
+            }
         }
         let total = self.records.last().map(|r| r.t_s).unwrap_or(0.0);
         let _ = write!(s, "\"total\":{}}}", num(total, 4));

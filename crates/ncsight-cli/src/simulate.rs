@@ -3,10 +3,55 @@
 
 use crate::format::{jsonl::json_str, num};
 use ncsight::stock::measure::{Measurement, SimOptions, Simulation};
+use ncsight::stock::{Finding, ToolKind};
 use std::io::{self, Write};
 
 fn opt(v: Option<f64>, decimals: usize) -> String {
     v.map(|v| num(v, decimals)).unwrap_or_else(|| "null".into())
+}
+
+/// A finding as a JSON object: kind, line, message and, where known, x (a diameter on a lathe),
+/// y, z, spindle_deg and t.
+fn finding_json(f: &Finding) -> String {
+    let mut s = format!("{{\"kind\":\"{}\",\"line\":{},\"message\":{}", f.kind, f.line, json_str(&f.message));
+    if let Some(p) = &f.at {
+        s.push_str(&format!(",\"x\":{},\"y\":{},\"z\":{}", num(p.x_mm, 4), num(p.y_mm, 4), num(p.z_mm, 4)));
+        if let Some(a) = p.spindle_deg {
+            s.push_str(&format!(",\"spindle_deg\":{}", num(a, 3)));
+        }
+        s.push_str(&format!(",\"t\":{}", num(p.t_s, 3)));
+    }
+    s.push('}');
+    s
+}
+
+/// A finding for a person: kind, line, where and when, what.
+fn finding_text(f: &Finding, lathe: bool) -> String {
+    let mut at = String::new();
+    if let Some(p) = &f.at {
+        if lathe {
+            at = format!(" at X{} Z{}", num(p.x_mm, 3), num(p.z_mm, 3));
+        } else {
+            at = format!(" at X{} Y{} Z{}", num(p.x_mm, 3), num(p.y_mm, 3), num(p.z_mm, 3));
+        }
+        if let Some(a) = p.spindle_deg {
+            at.push_str(&format!(", spindle {} deg", num(a, 3)));
+        }
+        at.push_str(&format!(", t={} s", num(p.t_s, 3)));
+    }
+    format!("finding {:<14} line {}{at}: {}\n", f.kind, f.line, f.message)
+}
+
+/// The tools assumed where the setup has none, as the output says them.
+pub fn assumed_tools(m: &Measurement) -> Vec<String> {
+    m.assumed_tools
+        .iter()
+        .map(|(n, t)| match t.kind {
+            ToolKind::Thread => format!("T{n}: threading insert, {} degrees, sharp", num(t.included_angle_deg, 1)),
+            ToolKind::Drill => format!("T{n}: drill on the spindle axis (not cut in the lathe stock)"),
+            ToolKind::Turning => format!("T{n}: turning insert, {} degrees, nose radius {} mm", num(t.included_angle_deg, 1), num(t.tip_radius_mm, 3)),
+        })
+        .collect()
 }
 
 /// The measurement as one JSON object.
@@ -14,11 +59,12 @@ pub fn json(m: &Measurement) -> String {
     let findings: Vec<String> = m
         .findings
         .iter()
-        .map(|f| format!("{{\"kind\":\"{}\",\"line\":{},\"message\":{}}}", f.kind, f.line, json_str(&f.message)))
+        .map(finding_json)
         .collect();
     let flanks = m.flank_angles_deg.map(|(a, b)| format!("[{},{}]", num(a, 2), num(b, 2))).unwrap_or_else(|| "null".into());
     format!(
-        "{{\"stock_diameter_mm\":{},\"major_diameter_mm\":{},\"minor_diameter_mm\":{},\"depth_mm\":{},\"pitch_mm\":{},\"lead_mm\":{},\"hand\":{},\"starts\":{},\"start_spacing_deg\":{},\"flank_angles_deg\":{flanks},\"full_depth_length_mm\":{},\"runout_length_mm\":{},\"grid\":{{\"dz_mm\":{},\"dtheta_deg\":{},\"cell_updates\":{}}},\"findings\":[{}]}}\n",
+        "{{\"assumed_tools\":[{}],\"stock_diameter_mm\":{},\"major_diameter_mm\":{},\"minor_diameter_mm\":{},\"depth_mm\":{},\"pitch_mm\":{},\"lead_mm\":{},\"hand\":{},\"starts\":{},\"start_spacing_deg\":{},\"flank_angles_deg\":{flanks},\"full_depth_length_mm\":{},\"runout_length_mm\":{},\"grid\":{{\"dz_mm\":{},\"dtheta_deg\":{},\"cell_updates\":{}}},\"findings\":[{}]}}\n",
+        assumed_tools(m).iter().map(|t| json_str(t)).collect::<Vec<_>>().join(","),
         num(m.stock_diameter_mm, 4),
         opt(m.major_diameter_mm, 4),
         opt(m.minor_diameter_mm, 4),
@@ -47,7 +93,7 @@ pub fn mill_json(sim: &ncsight::stock::measure::MillSimulation) -> String {
     let findings: Vec<String> = sim
         .findings
         .iter()
-        .map(|f| format!("{{\"kind\":\"{}\",\"line\":{},\"message\":{}}}", f.kind, f.line, json_str(&f.message)))
+        .map(finding_json)
         .collect();
     format!("{{\"holes\":[{}],\"grid\":{{\"cell_mm\":{}}},\"findings\":[{}]}}\n", holes.join(","), num(sim.stock.cell_mm, 4), findings.join(","))
 }
@@ -59,7 +105,7 @@ pub fn mill_text(sim: &ncsight::stock::measure::MillSimulation) -> String {
         s.push_str(&format!("hole at X{} Y{}: depth {} mm, diameter {} mm\n", num(h.x, 3), num(h.y, 3), num(h.depth_mm, 3), num(h.diameter_mm, 3)));
     }
     for f in &sim.findings {
-        s.push_str(&format!("finding {:<14} line {}: {}\n", f.kind, f.line, f.message));
+        s.push_str(&finding_text(f, false));
     }
     s
 }
@@ -67,6 +113,13 @@ pub fn mill_text(sim: &ncsight::stock::measure::MillSimulation) -> String {
 /// The measurement for a person.
 pub fn text(m: &Measurement) -> String {
     let mut s = String::new();
+    // What was not simulated comes first: the measurement below does not include it.
+    for f in m.findings.iter().filter(|f| !f.is_problem()) {
+        s.push_str(&finding_text(f, true));
+    }
+    for t in assumed_tools(m) {
+        s.push_str(&format!("{:<22} {t}\n", "tool assumed"));
+    }
     let line = |s: &mut String, what: &str, v: Option<f64>, unit: &str| {
         s.push_str(&format!("{what:<22} {}\n", v.map(|v| format!("{} {unit}", num(v, 4))).unwrap_or_else(|| "-".into())));
     };
@@ -86,11 +139,11 @@ pub fn text(m: &Measurement) -> String {
     line(&mut s, "full-depth length", m.full_depth_length_mm, "mm");
     line(&mut s, "run-out length", m.runout_length_mm, "mm");
     s.push_str(&format!("{:<22} {} mm x {} deg, {} cell updates\n", "grid", num(m.dz_mm, 5), num(m.dtheta_deg, 4), m.cell_updates));
-    if m.findings.is_empty() {
+    if !m.findings.iter().any(|f| f.is_problem()) {
         s.push_str("findings               none\n");
     }
-    for f in &m.findings {
-        s.push_str(&format!("finding {:<14} line {}: {}\n", f.kind, f.line, f.message));
+    for f in m.findings.iter().filter(|f| f.is_problem()) {
+        s.push_str(&finding_text(f, true));
     }
     s
 }

@@ -219,3 +219,59 @@ fn report_and_simulate_are_bounded() {
     assert!(err.contains("G cell updates"), "{err}");
     assert!(t.elapsed().as_secs() < 30);
 }
+
+/// A G71/G70 part with a 2 mm chamfer before a G76 M24x2 thread measures the thread, not the
+/// chamfer; without a setup the turning tool is a turning insert and the drill at X0 a drill
+/// (no false crash), and the output says which tools were assumed.
+#[test]
+fn the_stock_simulation_measures_the_thread_only() {
+    let prog = "O0024\nT0101\nG99 G97 S800 M03\nG0 X32. Z2.\nG71 U1.5 R0.5\nG71 P10 Q20 U0.4 W0.1 F0.2\nN10 G0 X20.\nG1 Z0. F0.1\nX24. Z-2.\nZ-30.\nX28.\nN20 Z-40.\nG70 P10 Q20\nG0 X100. Z100.\nT0202\nG0 X0. Z5.\nG1 Z-10. F0.1\nG0 Z5.\nG0 X100. Z100.\nT0303\nG97 S500 M03\nG0 X30. Z5.\nG76 P021060 Q50 R0.05\nG76 X21.55 Z-26. P1227 Q400 F2.\nG0 X100. Z100.\nM30\n";
+    let p = tmp("m24.nc", prog.as_bytes());
+    let (code, out, err) = common::ncsight(&["simulate", p.to_str().unwrap(), "--machine", "gsk980tdi", "--stock", "32x60", "--expect", "M24x2", "--format", "json"]);
+    assert_eq!(code, 0, "{err}{out}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert!((v["minor_diameter_mm"].as_f64().unwrap() - 21.55).abs() <= 0.02, "{out}");
+    assert!((v["pitch_mm"].as_f64().unwrap() - 2.0).abs() <= 0.01, "{out}");
+    assert_eq!(v["findings"].as_array().unwrap().len(), 0, "{out}");
+    let tools = v["assumed_tools"].to_string();
+    assert!(tools.contains("T1: turning") && tools.contains("T2: drill") && tools.contains("T3: threading"), "{tools}");
+}
+
+/// Findings carry X, Z, the spindle angle where relevant, and the time; a crash after a thread
+/// that ends inside the stock says so; findings have their own exit status (3).
+#[test]
+fn findings_are_placed_and_change_the_exit_status() {
+    // G76 without a pull-out (r = 00) ends inside the bar: the rapid out of it cuts the stock.
+    let prog = "G97 S500 M03\nG0 X30. Z5.\nG76 P020060 Q50 R0.05\nG76 X21.55 Z-26. P1227 Q400 F2.\nG0 X100. Z100.\nM30\n";
+    let p = tmp("crash.nc", prog.as_bytes());
+    let (code, out, _) = common::ncsight(&["simulate", p.to_str().unwrap(), "--machine", "gsk980tdi", "--stock", "24x60", "--format", "json"]);
+    assert_eq!(code, 3, "{out}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    let f = &v["findings"][0];
+    assert_eq!(f["kind"], "crash");
+    assert!(f["x"].is_number() && f["z"].is_number() && f["t"].is_number(), "{f}");
+    assert!(f["message"].as_str().unwrap().contains("ends inside the stock"), "{f}");
+}
+
+/// `simulate --image` on a machining centre refuses clearly instead of writing nothing.
+#[test]
+fn simulate_image_on_a_mill_refuses() {
+    let p = tmp("mill.nc", b"G21 G17 G90 G0 X0. Y0. Z50.\nS500 M3\nG81 X10. Y10. Z-10. R2. F100.\nG80\nM30\n");
+    let png = p.with_extension("png");
+    let (code, _, err) = common::ncsight(&["simulate", p.to_str().unwrap(), "--machine", "fanuc0m", "--image", png.to_str().unwrap()]);
+    assert_eq!(code, 2);
+    assert!(err.contains("machining centre"), "{err}");
+}
+
+/// Arc threads (G32.2/G32.3 in G18) are cut; a face thread is a `not_simulated` finding shown
+/// first, never silence.
+#[test]
+fn arc_threads_are_cut_and_face_threads_are_said() {
+    let ex = common::root().join("examples/gsk988t_arc_thread.nc");
+    let (_, out, err) = common::ncsight(&["simulate", ex.to_str().unwrap(), "--machine", "gsk988t", "--stock", "40x60", "--format", "json"]);
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap_or_else(|e| panic!("{e}: {out}{err}"));
+    assert!(v["depth_mm"].as_f64().is_some_and(|d| d > 0.1), "the arc thread cuts a groove: {out}");
+    let face = tmp("face.nc", b"G97 S300 M03\nG0 X60. Z1.\nG32 X20. F2.\nG0 Z5.\nM30\n");
+    let (_, out, _) = common::ncsight(&["simulate", face.to_str().unwrap(), "--machine", "gsk980tdi", "--stock", "60x40"]);
+    assert!(out.starts_with("finding not_simulated"), "{out}");
+}

@@ -11,7 +11,8 @@ fn simulate_o0012_json_and_image() {
         "simulate", ex.to_str().unwrap(), "--machine", "gsk980tdi", "--stock", "60x80", "--expect", "M60x3",
         "--format", "json", "--image", png.to_str().unwrap(),
     ]);
-    assert_eq!(code, 0, "{err}");
+    // O0012's M60x3 is a deviation (its minor 56.9 mm is not M60x3's 56.32): exit status 3.
+    assert_eq!(code, 3, "{err}");
     let v: serde_json::Value = serde_json::from_str(&out).unwrap();
     for k in ["major_diameter_mm", "minor_diameter_mm", "pitch_mm", "lead_mm", "starts", "depth_mm"] {
         assert!(v[k].is_number(), "{k}: {out}");

@@ -19,6 +19,11 @@
   $("title").textContent = "ncsight report: " + D.file;
   $("subtitle").textContent = D.title + " (" + D.machine + "), cycle time " + fmt(D.total, 2) + " s";
   if (!D.lathe) document.body.classList.add("mill");
+  // What the stock simulation could not do is said first, never left out in silence.
+  const notes = [];
+  if (D.sim_error) notes.push("The thread could not be simulated on the stock: " + D.sim_error);
+  ((D.sim && D.sim.findings) || []).filter((f) => f.kind === "not_simulated").forEach((f) => notes.push("Not simulated (line " + f.line + "): " + f.message));
+  notes.forEach((n) => $("notices").appendChild(el("p", { class: "notice" }, n)));
   if (!D.lathe) $("diam-label").hidden = true;
 
   // ---- backplot -------------------------------------------------------------------------
@@ -245,7 +250,9 @@
     if (!(m.findings || []).length) fl.appendChild(el("li", {}, "no findings"));
     th.appendChild(fl);
   } else {
-    th.textContent = "The programme cuts no thread on a lathe: no stock simulation.";
+    th.textContent = D.sim_error
+      ? "The thread could not be simulated on the stock: " + D.sim_error
+      : "The programme cuts no thread on a lathe: no stock simulation.";
   }
 
   // ---- time breakdown ----------------------------------------------------------------

@@ -43,6 +43,34 @@ pub struct Finding {
     pub kind: &'static str,
     pub line: u32,
     pub message: String,
+    /// Where and when: the tool's position (X a diameter on a lathe), the spindle angle where
+    /// it matters (a thread), and the time from programme start.
+    pub at: Option<Place>,
+}
+
+/// Where a finding happened.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Place {
+    /// X as the controller shows it (a diameter on a lathe), Y, Z, mm.
+    pub x_mm: f64,
+    pub y_mm: f64,
+    pub z_mm: f64,
+    pub spindle_deg: Option<f64>,
+    pub t_s: f64,
+}
+
+impl Finding {
+    /// A finding of a record, placed at `p` (programme coordinates, X a radius on a lathe).
+    pub fn at(kind: &'static str, rec: &Record, p: Vec3, diameter: bool, spindle_deg: Option<f64>, message: String) -> Finding {
+        let x_mm = if diameter { 2.0 * p.x } else { p.x };
+        Finding { kind, line: rec.span.line, message, at: Some(Place { x_mm, y_mm: p.y, z_mm: p.z, spindle_deg, t_s: rec.t_s }) }
+    }
+
+    /// Whether the finding is a problem with the programme (crash, chuck, phase, deviation), as
+    /// opposed to a note on what was not simulated.
+    pub fn is_problem(&self) -> bool {
+        self.kind != "not_simulated"
+    }
 }
 
 /// The stock being cut.
@@ -56,6 +84,8 @@ pub struct LatheStock {
     pub findings: Vec<Finding>,
     /// Cells the tool visited (for the benchmark's figure).
     pub updates: u64,
+    /// Where the last thread record ended, if the record just applied was one.
+    last_thread_end: Option<Vec3>,
 }
 
 /// How much a rapid may touch the stock before it counts as a crash, mm.
@@ -66,7 +96,7 @@ impl LatheStock {
         let nz = ((bar.length_mm / dz_mm).ceil() as usize).max(1) + 1;
         let grid = Grid { z0_mm: bar.front_z_mm - (nz - 1) as f64 * dz_mm, dz_mm, nz, ntheta: ntheta.max(4) };
         let start = if internal { bar.bore_mm / 2.0 } else { bar.diameter_mm / 2.0 };
-        LatheStock { grid, bar, internal, r: vec![start as f32; nz * grid.ntheta], findings: Vec::new(), updates: 0 }
+        LatheStock { grid, bar, internal, r: vec![start as f32; nz * grid.ntheta], findings: Vec::new(), updates: 0, last_thread_end: None }
     }
 
     pub fn row(&self, j: usize) -> &[f32] {
@@ -166,26 +196,55 @@ impl LatheStock {
 
     /// Apply one record with the tool in the turret.
     pub fn apply(&mut self, rec: &Record, tool: &Tool, spindle_turning: bool) {
-        let line = rec.span.line;
+        let after_thread = self.last_thread_end.take();
+        if tool.kind == super::ToolKind::Drill {
+            // A drill on the spindle axis bores the part from its face: the height field of the
+            // outside does not hold that (docs/commands/simulate.md); its moves are not cut.
+            return;
+        }
         match rec.op {
             Op::Thread { from, to, lead_mm, long_axis, spindle_deg, rpm } => {
                 if long_axis != LongAxis::Z {
-                    self.findings.push(Finding {
-                        kind: "not_simulated",
-                        line,
-                        message: "a thread with X as its long axis (a face or steep taper thread) is not cut in the stock simulation".into(),
-                    });
+                    self.not_simulated(rec, from, Some(spindle_deg), "a thread with X as its long axis (a face or steep taper thread) is not cut in the stock simulation");
                     return;
                 }
-                self.chuck_check(&from, &to, line);
+                self.chuck_check(rec, &from, &to);
                 self.cut_thread(from, to, lead_mm, spindle_deg, rpm, tool);
+                self.last_thread_end = Some(to);
+            }
+            Op::ThreadArc { from, to, long_axis, lead_mm, spindle_deg, rpm, .. } => {
+                if long_axis != LongAxis::Z {
+                    self.not_simulated(rec, from, Some(spindle_deg), "an arc thread with X as its long axis (a face arc thread) is not cut in the stock simulation");
+                    return;
+                }
+                self.chuck_check(rec, &from, &to);
+                let g = crate::time::arc_geom_of(&rec.op).expect("a stored arc");
+                let (plane, dir) = match rec.op {
+                    Op::ThreadArc { plane, dir, .. } => (plane, dir),
+                    _ => unreachable!(),
+                };
+                // Sampled finely along the arc; each piece is cut as a thread of the same lead,
+                // its start angle where the spindle is when the tool gets there.
+                let len = crate::geom::arc_length(&from, &to, plane, &g);
+                let n = ((len / lead_mm.max(1e-6) * 8.0).ceil() as usize).clamp(8, 20_000);
+                let mut a = from;
+                let mut deg = spindle_deg;
+                for k in 1..=n {
+                    let b = crate::geom::arc_point(&from, &to, plane, dir, &g, k as f64 / n as f64);
+                    if b.z != a.z {
+                        self.cut_thread(a, b, lead_mm, deg, rpm, tool);
+                    }
+                    deg = crate::cycles::thread::phase_after(deg, (b.z - a.z).abs(), lead_mm);
+                    a = b;
+                }
+                self.last_thread_end = Some(to);
             }
             Op::Feed { from, to, .. } if spindle_turning => {
-                self.chuck_check(&from, &to, line);
+                self.chuck_check(rec, &from, &to);
                 self.sweep(&[from, to], tool);
             }
             Op::Arc { from, to, .. } if spindle_turning => {
-                self.chuck_check(&from, &to, line);
+                self.chuck_check(rec, &from, &to);
                 let g = crate::time::arc_geom_of(&rec.op).expect("a stored arc");
                 let (plane, dir) = match rec.op {
                     Op::Arc { plane, dir, .. } => (plane, dir),
@@ -197,28 +256,53 @@ impl LatheStock {
                 self.sweep(&pts, tool);
             }
             Op::Rapid { from, to } => {
+                // Where the rapid starts inside what is left of the stock, the thread's pull-out
+                // before it ended there.
+                let pull_out_inside = after_thread == Some(from) && self.inside(&from);
                 let cut = self.sweep(&[from, to], tool);
                 if cut > CRASH_MM {
-                    self.findings.push(Finding {
-                        kind: "crash",
-                        line,
-                        message: format!("a rapid move cuts {cut:.3} mm into the stock"),
-                    });
+                    let message = match after_thread {
+                        Some(_) if pull_out_inside => format!(
+                            "a rapid move cuts {cut:.3} mm into the stock: the thread before it ends inside the stock at X{:.3} Z{:.3} (its pull-out, if any, does not bring the tool out)",
+                            2.0 * from.x,
+                            from.z
+                        ),
+                        _ => format!("a rapid move cuts {cut:.3} mm into the stock"),
+                    };
+                    let f = Finding::at("crash", rec, from, true, None, message);
+                    self.findings.push(f);
                 }
             }
             _ => {}
         }
     }
 
-    fn chuck_check(&mut self, from: &Vec3, to: &Vec3, line: u32) {
+    /// Whether a point lies below the stock's surface as it is now (any angle).
+    fn inside(&self, p: &Vec3) -> bool {
+        let c = self.grid.cell(p.z);
+        if c < 0 || c >= self.grid.nz as isize {
+            return false;
+        }
+        let r = p.x as f32;
+        (0..self.grid.ntheta).any(|j| {
+            let v = self.row(j)[c as usize];
+            if self.internal { r > v + CRASH_MM as f32 } else { r < v - CRASH_MM as f32 }
+        })
+    }
+
+    fn not_simulated(&mut self, rec: &Record, at: Vec3, spindle_deg: Option<f64>, message: &str) {
+        if !self.findings.iter().any(|f| f.kind == "not_simulated" && f.line == rec.span.line) {
+            self.findings.push(Finding::at("not_simulated", rec, at, true, spindle_deg, message.into()));
+        }
+    }
+
+    fn chuck_check(&mut self, rec: &Record, from: &Vec3, to: &Vec3) {
         let far = self.bar.front_z_mm - self.bar.length_mm;
-        let z = from.z.min(to.z);
-        if z < far - 1e-9 && !self.findings.iter().any(|f| f.kind == "chuck" && f.line == line) {
-            self.findings.push(Finding {
-                kind: "chuck",
-                line,
-                message: format!("the tool reaches Z{z:.3}, past the end of the stock at Z{far:.3} (the chuck side)"),
-            });
+        let p = if from.z < to.z { *from } else { *to };
+        let line = rec.span.line;
+        if p.z < far - 1e-9 && !self.findings.iter().any(|f| f.kind == "chuck" && f.line == line) {
+            let msg = format!("the tool reaches Z{:.3}, past the end of the stock at Z{far:.3} (the chuck side)", p.z);
+            self.findings.push(Finding::at("chuck", rec, p, true, None, msg));
         }
     }
 

@@ -38,6 +38,8 @@ pub struct Measurement {
     pub full_depth_length_mm: Option<f64>,
     pub runout_length_mm: Option<f64>,
     pub findings: Vec<Finding>,
+    /// The tools the setup does not describe, as assumed from what they do (T number, tool).
+    pub assumed_tools: Vec<(u32, Tool)>,
     pub dz_mm: f64,
     pub dtheta_deg: f64,
     pub cell_updates: u64,
@@ -47,6 +49,51 @@ pub struct Measurement {
 pub struct Simulation {
     pub stock: LatheStock,
     pub measurement: Measurement,
+}
+
+/// The tools a setup lacks, from what each does (issue 15: a drill at X0 is no threading
+/// insert): one that cuts a thread is a sharp 60-degree threading insert; one that only feeds
+/// along Z on the spindle axis is a drill (not cut in the lathe stock); any other turns, an
+/// 80-degree insert with a 0.4 mm nose radius (docs/commands/simulate.md).
+fn assume_tools(records: &[Record], setup: &Setup) -> Vec<(u32, Tool)> {
+    #[derive(Clone, Copy, Default)]
+    struct Use {
+        threads: bool,
+        on_axis_feeds: bool,
+        other_cuts: bool,
+    }
+    let mut uses: Vec<(u32, Use)> = Vec::new();
+    let mut current = 0u32;
+    let idx = |n: u32, uses: &mut Vec<(u32, Use)>| match uses.iter().position(|(m, _)| *m == n) {
+        Some(i) => i,
+        None => {
+            uses.push((n, Use::default()));
+            uses.len() - 1
+        }
+    };
+    for r in records {
+        let i = idx(current, &mut uses);
+        match r.op {
+            Op::Tool { number, .. } => current = number,
+            Op::Thread { .. } | Op::ThreadArc { .. } => uses[i].1.threads = true,
+            Op::Feed { from, to, .. } if from.x.abs() < 1e-3 && to.x.abs() < 1e-3 && from.z != to.z => uses[i].1.on_axis_feeds = true,
+            Op::Feed { .. } | Op::Arc { .. } => uses[i].1.other_cuts = true,
+            _ => {}
+        }
+    }
+    uses.into_iter()
+        .filter(|(n, u)| !setup.tools.iter().any(|t| t.number == *n) && (u.threads || u.on_axis_feeds || u.other_cuts))
+        .map(|(n, u)| {
+            let tool = if u.threads {
+                Tool { number: n, ..Tool::default_thread() }
+            } else if u.on_axis_feeds && !u.other_cuts {
+                Tool { number: n, kind: super::ToolKind::Drill, diameter_mm: 10.0, ..Tool::default_thread() }
+            } else {
+                Tool { number: n, kind: super::ToolKind::Turning, included_angle_deg: 80.0, tip_radius_mm: 0.4, ..Tool::default_thread() }
+            };
+            (n, tool)
+        })
+        .collect()
 }
 
 /// The stock a thread programme implies when none is given: the deepest external cut plus twice
@@ -154,13 +201,16 @@ fn work_estimate(records: &[Record], bar_length_mm: f64, dz: f64, ntheta: usize)
 
 /// [`simulate`] that reports its progress: `progress(done, total)` after each record.
 pub fn simulate_with(records: &[Record], setup: &Setup, opts: &SimOptions, progress: &mut dyn FnMut(usize, usize)) -> Result<Simulation, String> {
-    // The tool of each record follows the T words.
+    // The tool of each record follows the T words; a tool the setup does not describe is
+    // assumed from what it does.
+    let assumed = assume_tools(records, setup);
+    let tool_for = |number: u32| assumed.iter().find(|(n, _)| *n == number).map(|(_, t)| *t).unwrap_or_else(|| setup.tool(number));
     let mut tool_of = Vec::with_capacity(records.len());
-    let mut tool = setup.tool(0);
+    let mut tool = tool_for(0);
     let mut turning = false;
     for r in records {
         match r.op {
-            Op::Tool { number, .. } => tool = setup.tool(number),
+            Op::Tool { number, .. } => tool = tool_for(number),
             Op::Spindle { rpm, .. } => turning = rpm != 0.0,
             _ => {}
         }
@@ -171,7 +221,10 @@ pub fn simulate_with(records: &[Record], setup: &Setup, opts: &SimOptions, progr
         Some(b) => b,
         None => return Err("no stock: give --stock DIAxLEN or a setup (the programme cuts no thread to infer it from)".into()),
     };
-    let max_lead = records.iter().filter_map(|r| if let Op::Thread { lead_mm, .. } = r.op { Some(lead_mm) } else { None }).fold(0.0, f64::max);
+    let max_lead = records
+        .iter()
+        .filter_map(|r| if let Op::Thread { lead_mm, .. } | Op::ThreadArc { lead_mm, .. } = r.op { Some(lead_mm) } else { None })
+        .fold(0.0, f64::max);
     let dz = opts.dz_mm.unwrap_or(if max_lead > 0.0 { (max_lead / 300.0).min(0.01) } else { 0.01 });
     let dtheta = opts.dtheta_deg.unwrap_or(0.5);
     if !(dz > 0.0 && dtheta > 0.0 && dtheta <= 90.0) {
@@ -200,23 +253,25 @@ pub fn simulate_with(records: &[Record], setup: &Setup, opts: &SimOptions, progr
         progress(k + 1, total);
     }
     let mut m = measure(&stock, records, &tool_of.iter().map(|(t, _)| *t).collect::<Vec<_>>());
+    m.assumed_tools = assumed;
     if let Some(e) = &opts.expect {
-        deviation(&mut m, e, dz);
+        deviation(&mut m, e, dz, records.iter().rev().find(|r| r.op.is_thread()));
     }
     m.findings.splice(0..0, stock.findings.iter().cloned());
     Ok(Simulation { stock, measurement: m })
 }
 
-fn deviation(m: &mut Measurement, e: &Expected, dz: f64) {
+fn deviation(m: &mut Measurement, e: &Expected, dz: f64, last_thread: Option<&Record>) {
+    // Placed at the thread's last pass (its line, end point and time).
+    let place = |kind, message: String| match last_thread {
+        Some(r) => Finding::at(kind, r, r.op.end_point().unwrap_or_default(), true, None, message),
+        None => Finding { kind, line: 0, message, at: None },
+    };
     let checks = [("major diameter", m.major_diameter_mm, e.major_mm, 2.0 * dz + 0.02), ("minor diameter", m.minor_diameter_mm, e.minor_mm, 2.0 * dz + 0.02), ("pitch", m.pitch_mm, e.pitch_mm, dz + 0.005)];
     for (what, got, want, tol) in checks {
         match got {
-            Some(g) if (g - want).abs() > tol => m.findings.push(Finding {
-                kind: "deviation",
-                line: 0,
-                message: format!("{what} {g:.3} mm, {} has {want:.3} mm ({:+.3} mm)", e.name, g - want),
-            }),
-            None => m.findings.push(Finding { kind: "deviation", line: 0, message: format!("no {what} could be measured to compare with {}", e.name) }),
+            Some(g) if (g - want).abs() > tol => m.findings.push(place("deviation", format!("{what} {g:.3} mm, {} has {want:.3} mm ({:+.3} mm)", e.name, g - want))),
+            None => m.findings.push(place("deviation", format!("no {what} could be measured to compare with {}", e.name))),
             _ => {}
         }
     }
@@ -262,7 +317,7 @@ fn measure(stock: &LatheStock, records: &[Record], tools: &[Tool]) -> Measuremen
     // The threaded region: where thread records ran.
     let (mut z_lo, mut z_hi) = (f64::MAX, f64::MIN);
     for r in records {
-        if let Op::Thread { from, to, .. } = r.op {
+        if let Op::Thread { from, to, .. } | Op::ThreadArc { from, to, .. } = r.op {
             z_lo = z_lo.min(from.z.min(to.z));
             z_hi = z_hi.max(from.z.max(to.z));
         }
@@ -275,25 +330,55 @@ fn measure(stock: &LatheStock, records: &[Record], tools: &[Tool]) -> Measuremen
     if i_lo >= i_hi {
         return m;
     }
-    // One pass in memory order, rows in parallel: the extremes, and the envelope (the deepest
-    // point around each z).
+    // One pass in memory order, rows in parallel: around each z the deepest point (the
+    // envelope) and the shallowest (the crest).
     let deeper = |a: f32, b: f32| if internal { a.max(b) } else { a.min(b) };
-    let empty = || (f32::MAX, f32::MIN, vec![if internal { f32::MIN } else { f32::MAX }; i_hi - i_lo + 1]);
-    let (lo, hi, envelope) = stock
+    let shallower = |a: f32, b: f32| if internal { a.min(b) } else { a.max(b) };
+    let n = i_hi - i_lo + 1;
+    let empty = || (vec![if internal { f32::MIN } else { f32::MAX }; n], vec![if internal { f32::MAX } else { f32::MIN }; n]);
+    let (envelope, crest) = stock
         .r
         .par_chunks(g.nz)
-        .fold(empty, |(mut lo, mut hi, mut env), row| {
-            for (e, &v) in env.iter_mut().zip(&row[i_lo..=i_hi]) {
-                lo = lo.min(v);
-                hi = hi.max(v);
+        .fold(empty, |(mut env, mut top), row| {
+            for ((e, t), &v) in env.iter_mut().zip(top.iter_mut()).zip(&row[i_lo..=i_hi]) {
                 *e = deeper(*e, v);
+                *t = shallower(*t, v);
             }
-            (lo, hi, env)
+            (env, top)
         })
-        .reduce(empty, |(lo_a, hi_a, mut env_a), (lo_b, hi_b, env_b)| {
+        .reduce(empty, |(mut env_a, mut top_a), (env_b, top_b)| {
             env_a.iter_mut().zip(&env_b).for_each(|(a, &b)| *a = deeper(*a, b));
-            (lo_a.min(lo_b), hi_a.max(hi_b), env_a)
+            top_a.iter_mut().zip(&top_b).for_each(|(a, &b)| *a = shallower(*a, b));
+            (env_a, top_a)
         });
+    // The thread is where the threading tool cut a full profile: the columns whose crest stands
+    // at the thread's crest. A lead-in chamfer, a neck or a relief the thread passes over has a
+    // lower crest and is not the thread (issue 15: a 2 mm chamfer made "minor 20 mm").
+    let top = crest.iter().copied().fold(if internal { f32::MAX } else { f32::MIN }, shallower);
+    let bottom = envelope.iter().copied().fold(if internal { f32::MIN } else { f32::MAX }, deeper);
+    let full = (top - bottom).abs();
+    let tol = (0.15 * full).max(2.0 * g.dz_mm as f32);
+    let at_crest: Vec<bool> = crest.iter().map(|&c| (c - top).abs() <= tol).collect();
+    // The longest run of such columns.
+    let (mut best, mut run_start) = ((0usize, 0usize), None);
+    for (k, &ok) in at_crest.iter().chain(std::iter::once(&false)).enumerate() {
+        match (ok, run_start) {
+            (true, None) => run_start = Some(k),
+            (false, Some(s)) => {
+                if k - s > best.1 - best.0 {
+                    best = (s, k);
+                }
+                run_start = None;
+            }
+            _ => {}
+        }
+    }
+    let (a, b) = if best.1 > best.0 + 1 { (best.0, best.1 - 1) } else { (0, n - 1) };
+    let (i_lo, i_hi) = (i_lo + a, i_lo + b);
+    let envelope: Vec<f32> = envelope[a..=b].to_vec();
+    let crest = &crest[a..=b];
+    let lo = envelope.iter().chain(crest).copied().fold(f32::MAX, f32::min);
+    let hi = envelope.iter().chain(crest).copied().fold(f32::MIN, f32::max);
     // External: the crest is the largest radius, the root the smallest; a bore the other way
     // round, and its major diameter is still the largest.
     let (major_r, minor_r) = (hi, lo);
@@ -435,14 +520,11 @@ fn phase_findings(records: &[Record], tools: &[Tool]) -> Vec<Finding> {
                 let half = (tool.included_angle_deg / 2.0).to_radians().tan();
                 let allowed = (from.x - f.x).abs() * half + 1e-3 * lead_mm + 1e-6;
                 if axial > allowed {
-                    out.push(Finding {
-                        kind: "phase",
-                        line: r.span.line,
-                        message: format!(
-                            "this pass is {off:.3} degrees ({axial:.4} mm along the thread) off the groove cut at line {}: it cuts a new groove",
-                            f.line
-                        ),
-                    });
+                    let msg = format!(
+                        "this pass is {off:.3} degrees ({axial:.4} mm along the thread) off the groove cut at line {}: it cuts a new groove",
+                        f.line
+                    );
+                    out.push(Finding::at("phase", r, from, true, Some(spindle_deg), msg));
                 }
             }
         }

@@ -81,7 +81,7 @@ impl MillStock {
         match rec.op {
             Op::Feed { from, to, .. } if (from.x - to.x).abs() < 1e-9 && (from.y - to.y).abs() < 1e-9 && to.z < from.z => {
                 if !turning {
-                    self.findings.push(Finding { kind: "crash", line: rec.span.line, message: "a feed into the stock with the spindle stopped".into() });
+                    self.findings.push(Finding::at("crash", rec, from, false, None, "a feed into the stock with the spindle stopped".into()));
                 }
                 self.plunge(&to, tool);
                 self.tips.push(to);
@@ -90,6 +90,7 @@ impl MillStock {
                 // Sample the rapid: anywhere below the material's top is a crash.
                 let n = ((from.dist(&to) / self.cell_mm).ceil() as usize).clamp(1, 200_000);
                 let mut worst = 0.0f64;
+                let mut worst_at = from;
                 for k in 0..=n {
                     let u = k as f64 / n as f64;
                     let p = Vec3::new(from.x + (to.x - from.x) * u, from.y + (to.y - from.y) * u, from.z + (to.z - from.z) * u);
@@ -97,12 +98,15 @@ impl MillStock {
                     let j = ((p.y - self.block.min_mm[1]) / self.cell_mm).floor();
                     if i >= 0.0 && j >= 0.0 && (i as usize) < self.nx && (j as usize) < self.ny {
                         let top = self.top[j as usize * self.nx + i as usize] as f64;
-                        worst = worst.max(top - p.z);
+                        if top - p.z > worst {
+                            worst = top - p.z;
+                            worst_at = p;
+                        }
                     }
                 }
                 // The grid sees a drilled cone a cell wide: up to a cell's size is not a crash.
                 if worst > 0.01 + self.cell_mm {
-                    self.findings.push(Finding { kind: "crash", line: rec.span.line, message: format!("a rapid move goes {worst:.3} mm into the stock") });
+                    self.findings.push(Finding::at("crash", rec, worst_at, false, None, format!("a rapid move goes {worst:.3} mm into the stock")));
                 }
             }
             _ => {}

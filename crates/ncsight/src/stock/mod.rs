@@ -7,6 +7,8 @@ pub mod measure;
 pub mod mill;
 pub mod standard;
 
+pub use lathe::{Finding, Place};
+
 use serde::Deserialize;
 
 /// The stock and the tools of a job (`--setup FILE`, TOML).
