@@ -1,4 +1,4 @@
-(Seed 004 example N50-N54. The manual says T, S and M for G92 come in earlier blocks: the first)
+(The YASNAC LX3 manual's G92 example N50-N54. The manual says T, S and M for G92 come in earlier blocks: the first)
 (block here is ncsight's addition. MOO in the OCR text is M00, MAA an unreadable M code: M30 here.)
 G97 S300 M03
 N50 G00 X80. Z80.8 M00 ;

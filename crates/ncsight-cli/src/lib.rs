@@ -206,7 +206,7 @@ enum Command {
         #[arg(short = 'o', long = "output")]
         output: Option<String>,
     },
-    /// Thread repair (GSK988T MDI screen, seed 001): the two blocks that re-cut a thread in the
+    /// Thread repair (the GSK988T manual's MDI repair screen): the two blocks that re-cut a thread in the
     /// groove of a recorded point.
     Repair {
         #[command(flatten)]
@@ -725,7 +725,7 @@ fn repair(
         } else {
             "has no thread repair"
         };
-        return Err(usage(format!("the thread-repair screen that writes G32.1 is a GSK988T function (seed 001); {} {how}", profile.name)));
+        return Err(usage(format!("the thread-repair screen that writes G32.1 is a GSK988T function (GSK988T manual); {} {how}", profile.name)));
     };
     let s = numbers(start, "--start", 2)?;
     let e = numbers(end, "--end", 2)?;
@@ -746,7 +746,7 @@ fn repair(
         return alarm(
             err,
             ncsight::Rule::RepairDisabled,
-            format!("thread repair is not enabled: parameter {enable} (RPTH) is 0 (seed 001 1.4); give --param {enable}=1"),
+            format!("thread repair is not enabled: parameter {enable} (RPTH) is 0 (GSK988T manual, thread repair 1.4); give --param {enable}=1"),
         );
     }
     let job = ncsight::repair::RepairJob {

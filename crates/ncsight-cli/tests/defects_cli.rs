@@ -275,3 +275,22 @@ fn arc_threads_are_cut_and_face_threads_are_said() {
     let (_, out, _) = common::ncsight(&["simulate", face.to_str().unwrap(), "--machine", "gsk980tdi", "--stock", "60x40"]);
     assert!(out.starts_with("finding not_simulated"), "{out}");
 }
+
+/// Every example runs to the end on its machine (the name before the first `_`), without alarm.
+#[test]
+fn every_example_runs() {
+    let dir = common::root().join("examples");
+    let mut n = 0;
+    for e in std::fs::read_dir(&dir).unwrap() {
+        let p = e.unwrap().path();
+        let name = p.file_name().unwrap().to_str().unwrap().to_string();
+        let machine = match name.split('_').next().unwrap() {
+            "yasnac" => "yasnac-lx3",
+            m => m,
+        };
+        let (code, _, err) = common::ncsight(&["check", p.to_str().unwrap(), "--machine", machine]);
+        assert_eq!(code, 0, "{name}: {err}");
+        n += 1;
+    }
+    assert!(n >= 8, "{n} examples");
+}

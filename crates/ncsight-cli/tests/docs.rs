@@ -8,7 +8,7 @@ use ncsight::Rule;
 fn alarm_table_lists_every_rule() {
     let mut s = String::from(
         "# Alarms and warnings\n\nEvery diagnostic has a stable code. On `fanuc0m` the FANUC alarm number is used where one is\n\
-known (../shared/reference/params_alarms.md); every other case, and every case on the GSK and YASNAC\n\
+known (docs/sources.md); every other case, and every case on the GSK and YASNAC\n\
 profiles (no numbered alarm list was found for them), uses the project code. This file is generated\n\
 from the code by `NCSIGHT_BLESS=1 cargo test --test docs`.\n\n\
 | project code | FANUC code | severity | title |\n|---|---|---|---|\n",

@@ -42,7 +42,7 @@ impl std::fmt::Display for RepairError {
                 let (scale, name) = if *long_axis == LongAxis::X { (2.0, "X") } else { (1.0, "Z") };
                 write!(
                     f,
-                    "the recorded point's {name}{} is not between the start {name}{} and the end {name}{} (seed 001 1.3 note 3)",
+                    "the recorded point's {name}{} is not between the start {name}{} and the end {name}{} (GSK988T manual, thread repair 1.3 note 3)",
                     recorded * scale,
                     from * scale,
                     to * scale

@@ -48,7 +48,7 @@ fn repeats(step: &mut Step, words: &mut Words) -> Result<u32, Diagnostic> {
                 return Err(step.alarm(
                     Rule::ValueOutOfRange,
                     w.span,
-                    format!("{}: the repeat count K is a whole number 0 to 9999 (seed 003)", w.text()),
+                    format!("{}: the repeat count K is a whole number 0 to 9999 (FANUC 0-M manual, canned cycles)", w.text()),
                 ));
             }
             Ok(w.value as u32)
@@ -454,7 +454,7 @@ pub(super) fn block(step: &mut Step, words: &mut Words, kind: DrillKind, enterin
         return Err(step.alarm(
             Rule::MissingWord,
             step.span,
-            format!("{code} needs {missing}: Z and R must be given when a cycle starts, also after G80 or a group 01 code (seed 003)"),
+            format!("{code} needs {missing}: Z and R must be given when a cycle starts, also after G80 or a group 01 code (FANUC 0-M manual, canned cycles)"),
         ));
     };
     if kind.needs_q() && d.q.unwrap_or(0.0) <= 0.0 {
@@ -483,7 +483,7 @@ pub(super) fn block(step: &mut Step, words: &mut Words, kind: DrillKind, enterin
     if matches!(kind, DrillKind::G74 | DrillKind::G84) {
         let (want, name) = if kind == DrillKind::G84 { (SpindleDir::Positive, "M03") } else { (SpindleDir::Negative, "M04") };
         if step.st.spindle != want {
-            let msg = format!("{code} taps with the spindle turning {name}-wise; it is not (seed 003: program {name} before the cycle)");
+            let msg = format!("{code} taps with the spindle turning {name}-wise; it is not (FANUC 0-M manual, canned cycles: program {name} before the cycle)");
             step.warn(Rule::TapDirection, step.span, msg);
         }
     }

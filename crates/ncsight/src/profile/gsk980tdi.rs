@@ -14,7 +14,7 @@ const TAPPING_M: &[super::MDef] = &[super::MDef { code: 29, function: super::MFn
 
 const EXTRA: &[GDef] = &[
     g(32, Group::Motion, GFn::Thread(ThreadCmd::Lead), "thread cutting: F lead or I threads per inch, J/K pull-out, Q start angle"),
-    g(92, Group::Motion, GFn::Thread(ThreadCmd::Cycle(CycleKind::Gsk)), "thread cutting cycle (seed 000)"),
+    g(92, Group::Motion, GFn::Thread(ThreadCmd::Cycle(CycleKind::Gsk)), "thread cutting cycle (GSK980TDi manual, G92)"),
     gp(32, 1, Group::Motion, LATER_THREAD, "rigid thread cutting (GSK980TDi form with C)"),
     gp(32, 2, Group::Motion, GFn::Thread(ThreadCmd::Arc(ArcDir::Cw)), "arc thread, clockwise"),
     gp(32, 3, Group::Motion, GFn::Thread(ThreadCmd::Arc(ArcDir::Ccw)), "arc thread, counter-clockwise"),
@@ -40,7 +40,7 @@ const PARAMS: &[ParamDef] = &[
         min: 0.0,
         max: 1.0,
         default: 0.0,
-        source: "seed 000, note 1",
+        source: "GSK980TDi manual, G92 note 1",
     },
     ParamDef {
         key: ParamKey::Number(19, None),
@@ -49,7 +49,7 @@ const PARAMS: &[ParamDef] = &[
         min: 0.0,
         max: 99.0,
         default: 10.0,
-        source: "seed 000, notes 2-3; range TAC p135; default assumed (not found): 1 lead",
+        source: "GSK980TDi manual, G92 notes 2-3; range TAC p135; default assumed (not found): 1 lead",
     },
     ParamDef {
         key: ParamKey::Number(22, None),
@@ -139,7 +139,7 @@ const PARAMS: &[ParamDef] = &[
         min: 0.0,
         max: 60000.0,
         default: 0.0,
-        source: "seed 000, note 8; TDi p151",
+        source: "GSK980TDi manual, G92 note 8; TDi p151",
     },
 ];
 

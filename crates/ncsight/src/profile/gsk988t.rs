@@ -12,10 +12,10 @@ const EXTRA: &[GDef] = &[
     g(76, Group::NonModal, LATER_G76, "compound thread cutting cycle"),
     g(32, Group::Motion, GFn::Thread(ThreadCmd::Lead), "thread cutting: F lead or I threads per inch, J/K pull-out, Q start angle"),
     g(92, Group::Motion, LATER_THREAD, "thread cutting cycle (the GSK988T manual's G92 page was not available)"),
-    gp(32, 1, Group::Motion, GFn::Thread(ThreadCmd::Rigid), "rigid thread cutting (seed 001)"),
-    gp(32, 2, Group::Motion, GFn::Thread(ThreadCmd::Arc(ArcDir::Cw)), "arc thread, clockwise (seed 002)"),
-    gp(32, 3, Group::Motion, GFn::Thread(ThreadCmd::Arc(ArcDir::Ccw)), "arc thread, counter-clockwise (seed 002)"),
-    gp(92, 1, Group::Motion, GFn::Thread(ThreadCmd::Cycle(CycleKind::GskRigid)), "rigid thread cutting cycle (seed 001)"),
+    gp(32, 1, Group::Motion, GFn::Thread(ThreadCmd::Rigid), "rigid thread cutting (GSK988T manual)"),
+    gp(32, 2, Group::Motion, GFn::Thread(ThreadCmd::Arc(ArcDir::Cw)), "arc thread, clockwise (GSK988T manual, G32.2/G32.3)"),
+    gp(32, 3, Group::Motion, GFn::Thread(ThreadCmd::Arc(ArcDir::Ccw)), "arc thread, counter-clockwise (GSK988T manual, G32.2/G32.3)"),
+    gp(92, 1, Group::Motion, GFn::Thread(ThreadCmd::Cycle(CycleKind::GskRigid)), "rigid thread cutting cycle (GSK988T manual)"),
 ];
 
 const PARAMS: &[ParamDef] = &[
@@ -26,7 +26,7 @@ const PARAMS: &[ParamDef] = &[
         min: 0.0,
         max: 60000.0,
         default: 5000.0,
-        source: "seed 001, G32.1 note 13; default assumed (not found)",
+        source: "GSK988T manual, G32.1 note 13; default assumed (not found)",
     },
     ParamDef {
         key: ParamKey::Number(1466, None),
@@ -35,7 +35,7 @@ const PARAMS: &[ParamDef] = &[
         min: 0.0,
         max: 60000.0,
         default: 3000.0,
-        source: "seed 001, G32.1 note 5; default assumed (not found)",
+        source: "GSK988T manual, G32.1 note 5; default assumed (not found)",
     },
     ParamDef {
         key: ParamKey::Number(1628, None),
@@ -44,7 +44,7 @@ const PARAMS: &[ParamDef] = &[
         min: 0.0,
         max: 4000.0,
         default: 50.0,
-        source: "seed 001, G32.1 note 5; default assumed (not found)",
+        source: "GSK988T manual, G32.1 note 5; default assumed (not found)",
     },
     ParamDef {
         key: ParamKey::Number(5130, None),
@@ -53,7 +53,7 @@ const PARAMS: &[ParamDef] = &[
         min: 0.0,
         max: 127.0,
         default: 10.0,
-        source: "seed 001, G92.1 note 1; range FANUC 0i-T (inferred); default assumed",
+        source: "GSK988T manual, G92.1 note 1; range FANUC 0i-T (inferred); default assumed",
     },
     ParamDef {
         key: ParamKey::Number(5131, None),
@@ -62,7 +62,7 @@ const PARAMS: &[ParamDef] = &[
         min: 0.0,
         max: 89.0,
         default: 0.0,
-        source: "seed 001, G92.1 note 1",
+        source: "GSK988T manual, G92.1 note 1",
     },
     ParamDef {
         key: ParamKey::Number(8135, Some(7)),
@@ -71,7 +71,7 @@ const PARAMS: &[ParamDef] = &[
         min: 0.0,
         max: 1.0,
         default: 0.0,
-        source: "seed 001, section 1.4",
+        source: "GSK988T manual, thread repair 1.4",
     },
 ];
 

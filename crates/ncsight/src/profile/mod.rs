@@ -379,7 +379,7 @@ pub const FANUC_INPUT: &[ParamDef] = &[ParamDef {
     min: 0.0,
     max: 1.0,
     default: 0.0,
-    source: "params_alarms.md, FANUC (inferred)",
+    source: "docs/sources.md, FANUC (inferred)",
 }];
 
 pub const SETTINGS: &[ParamDef] = &[

@@ -9,7 +9,7 @@ use crate::alarm::AlarmStyle;
 const EXTRA: &[GDef] = &[
     g(32, Group::Motion, LATER_THREAD, "thread cutting (not in the LX3 excerpt)"),
     g(76, Group::NonModal, LATER_G76, "compound thread cutting cycle"),
-    g(92, Group::Motion, GFn::Thread(ThreadCmd::Cycle(CycleKind::Yasnac)), "threading cycle: I taper, K flank infeed, F or E lead (seed 004)"),
+    g(92, Group::Motion, GFn::Thread(ThreadCmd::Cycle(CycleKind::Yasnac)), "threading cycle: I taper, K flank infeed, F or E lead (YASNAC LX3 manual, G92)"),
 ];
 
 const PARAMS: &[ParamDef] = &[
@@ -20,7 +20,7 @@ const PARAMS: &[ParamDef] = &[
         min: 0.0,
         max: 1.0,
         default: 0.0,
-        source: "seed 004, thread cutting hold",
+        source: "YASNAC LX3 manual, G92, thread cutting hold",
     },
     ParamDef {
         key: ParamKey::Setting("rapid_mm_min"),
