@@ -25,8 +25,8 @@ function report(programme, machine, extra = []) {
   try {
     execFileSync(bin, ["report", programme, "--machine", machine, "-o", out, ...extra], { stdio: "pipe" });
   } catch (e) {
-    // Exit 1 (an alarm) still writes the page.
-    if (e.status !== 1) throw e;
+    // Exit 1 (an alarm) and 3 (a finding of the stock simulation) still write the page.
+    if (e.status !== 1 && e.status !== 3) throw e;
   }
   return out;
 }
@@ -89,6 +89,31 @@ test("seed 000 O0012: four thread passes, the player, a source click, offline", 
   await page.screenshot({ path: join(artifacts, "report-o0012.png"), fullPage: true });
   // Nothing but the page itself (and its inline data) was requested.
   assert.deepEqual(requests.filter((u) => !u.startsWith("file://") && !u.startsWith("data:")), []);
+  await page.close();
+});
+
+test("what was not simulated is said at the top; GBK comments show as written", async () => {
+  // A face thread (X is its long axis) is not cut: a notice at the top, not silence.
+  const face = join(work, "face.nc");
+  writeFileSync(face, Buffer.concat([
+    Buffer.from("G97 S300 M03 (", "latin1"),
+    Buffer.from([0xc2, 0xdd, 0xce, 0xc6, 0xb5, 0xb6]), // GBK for the Chinese word "thread tool"
+    Buffer.from(")\nG0 X60. Z1.\nG32 X20. F2.\nG0 Z5.\nM30\n", "latin1"),
+  ]));
+  let page = (await open(report(face, "gsk980tdi", ["--stock", "60x40"]))).page;
+  const notices = await page.$$eval("#notices .notice", (n) => n.map((e) => e.textContent));
+  assert.equal(notices.length, 1);
+  assert.match(notices[0], /Not simulated \(line 3\): a thread with X as its long axis/);
+  assert.match(await page.textContent('.src[data-line="1"]'), /\(螺纹刀\)/);
+  await page.screenshot({ path: join(artifacts, "report-notice.png") });
+  await page.close();
+  // A thread too fine for the stock grid: the page says why it was not simulated.
+  const fine = join(work, "fine.nc");
+  writeFileSync(fine, "G97 S300 M03\nG0 X60. Z5.\nG32 Z-2000. F0.001\nG0 X70.\nM30\n");
+  page = (await open(report(fine, "gsk980tdi", ["--stock", "60x2100"]))).page;
+  assert.match(await page.textContent("#notices"), /could not be simulated on the stock: a grid of/);
+  assert.match(await page.textContent("#thread"), /could not be simulated/);
+  assert.doesNotMatch(await page.textContent("#thread"), /cuts no thread/);
   await page.close();
 });
 

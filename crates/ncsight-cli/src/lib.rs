@@ -387,7 +387,7 @@ impl<W: Write> Write for Tolerant<W> {
 
 /// The most records and diagnostics a report page keeps (its size and the browser's memory stay
 /// bounded whatever the programme expands to).
-const REPORT_MAX_RECORDS: usize = 100_000;
+const REPORT_MAX_RECORDS: usize = 200_000;
 const REPORT_MAX_DIAGNOSTICS: usize = 10_000;
 /// The most records the stock simulation takes (about 75 MB).
 const SIMULATE_MAX_RECORDS: usize = 500_000;
@@ -627,7 +627,7 @@ fn report(
         (None, None)
     };
     let shown = if file == "-" { "<stdin>" } else { file };
-    let page = report::Report { file_name: shown, source: &source, params: &params, records: &records, diagnostics: &diags, sim: sim.as_ref(), sim_error: sim_error.as_deref(), settings };
+    let page = report::Report { file_name: shown, source: &source, params: &params, records: &records, diagnostics: &diags, sim: sim.as_ref(), sim_error: sim_error.as_deref(), decoding: m.decoding()?, settings };
     match output {
         Some(path) => {
             let mut w = output::LazyFile::new(path, &[file], 1 << 16).map_err(usage)?;

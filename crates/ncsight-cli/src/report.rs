@@ -27,6 +27,8 @@ pub struct Report<'a> {
     pub records: &'a [Record],
     pub diagnostics: &'a [Diagnostic],
     pub sim: Option<&'a Simulation>,
+    /// How lines that are not UTF-8 are decoded.
+    pub decoding: crate::diag::Decoding,
     /// Why the thread could not be simulated, when it could not.
     pub sim_error: Option<&'a str>,
     /// The operator's options and switches, described.
@@ -67,9 +69,13 @@ impl Report<'_> {
         let profile = self.params.profile();
         let lathe = profile.is_lathe();
         let mut s = String::with_capacity(1 << 16);
-        let text = String::from_utf8_lossy(self.source);
-        let text = text.strip_prefix('\u{feff}').unwrap_or(&text);
-        let lines: Vec<String> = text.lines().map(json_str).collect();
+        // Each line as written: UTF-8, or GB18030 / the --encoding where it is not (GSK comments).
+        let source = self.source.strip_prefix(&[0xEF, 0xBB, 0xBF][..]).unwrap_or(self.source);
+        let lines: Vec<String> = source
+            .split(|&b| b == b'\n')
+            .map(|l| json_str(&self.decoding.decode(l.strip_suffix(b"\r").unwrap_or(l))))
+            .collect();
+        let lines = if source.ends_with(b"\n") { &lines[..lines.len() - 1] } else { &lines[..] };
         let _ = write!(
             s,
             "{{\"file\":{},\"machine\":{},\"title\":{},\"lathe\":{lathe},\"lines\":[{}],",
