@@ -30,29 +30,49 @@ impl Decoding {
         encoding_rs::Encoding::for_label(label.trim().as_bytes()).map(|e| Decoding { forced: Some(e) })
     }
 
-    /// One line's text.
-    pub fn decode(&self, raw: &[u8]) -> String {
-        if let Ok(s) = std::str::from_utf8(raw) {
-            return s.to_string();
+    /// The encoding of a line that is not UTF-8.
+    fn encoding_of(&self, raw: &[u8]) -> &'static encoding_rs::Encoding {
+        match self.forced {
+            Some(e) => e,
+            None if encoding_rs::GB18030.decode_without_bom_handling_and_without_replacement(raw).is_some() => encoding_rs::GB18030,
+            None => encoding_rs::WINDOWS_1252,
         }
-        if let Some(e) = self.forced {
-            return e.decode_without_bom_handling(raw).0.into_owned();
-        }
-        if let Some(s) = encoding_rs::GB18030.decode_without_bom_handling_and_without_replacement(raw) {
-            return s.into_owned();
-        }
-        encoding_rs::WINDOWS_1252.decode_without_bom_handling(raw).0.into_owned()
     }
 
-    /// The decoded text of `raw[..byte]`: how far a byte column is into the displayed line.
-    fn prefix_width(&self, raw: &[u8], byte: usize) -> usize {
-        // Decode the prefix alone: a byte column always starts a character of the line.
-        width(&self.decode(&raw[..byte.min(raw.len())]))
+    /// One line's text.
+    pub fn decode(&self, raw: &[u8]) -> String {
+        match std::str::from_utf8(raw) {
+            Ok(s) => s.to_string(),
+            Err(_) => self.encoding_of(raw).decode_without_bom_handling(raw).0.into_owned(),
+        }
+    }
+
+    /// The line's characters, each with the byte offset it starts at in the line (the whole line
+    /// decoded once, so that byte columns map to characters exactly).
+    fn chars(&self, raw: &[u8]) -> Vec<(usize, char)> {
+        if let Ok(s) = std::str::from_utf8(raw) {
+            return s.char_indices().collect();
+        }
+        let mut decoder = self.encoding_of(raw).new_decoder_without_bom_handling();
+        let mut out = Vec::with_capacity(raw.len());
+        let mut buf = String::with_capacity(64);
+        let mut start = 0;
+        for k in 0..=raw.len() {
+            buf.clear();
+            let (piece, last) = if k < raw.len() { (&raw[k..k + 1], false) } else { (&raw[..0], true) };
+            let _ = decoder.decode_to_string(piece, &mut buf, last);
+            if !buf.is_empty() {
+                out.extend(buf.chars().map(|c| (start.min(raw.len().saturating_sub(1)), c)));
+                start = k + 1;
+            }
+        }
+        out
     }
 }
 
-fn width(s: &str) -> usize {
-    s.chars().map(|c| if c == '\t' { 1 } else { c.width().unwrap_or(0) }).sum()
+/// The width of a character as shown (after [`printable`]).
+fn shown_width(c: char) -> usize {
+    if c.is_control() { 1 } else { c.width().unwrap_or(0) }
 }
 
 /// The line without its break and byte-order mark, at most 200 bytes, tabs as spaces.
@@ -73,9 +93,12 @@ fn printable(s: &str) -> String {
     s.chars().map(|c| if c.is_control() && c != '\t' { '\u{fffd}' } else if c == '\t' { ' ' } else { c }).collect()
 }
 
+/// At most this many characters of a line are shown.
+const SHOWN_CHARS: usize = 200;
+
 /// The text of a line for display (the report and the tests use it too).
 pub fn display_line(raw: &[u8], decoding: &Decoding) -> String {
-    printable(&decoding.decode(trimmed(raw))).chars().take(200).collect()
+    printable(&decoding.decode(trimmed(raw))).chars().take(SHOWN_CHARS).collect()
 }
 
 /// How diagnostics are printed.
@@ -96,14 +119,18 @@ pub fn render(file: &str, line_text: &[u8], d: &Diagnostic, style: Style, decodi
         return out;
     }
     let raw = trimmed(line_text);
+    let chars: Vec<(usize, char)> = decoding.chars(raw).into_iter().take(SHOWN_CHARS).collect();
     let shown = display_line(line_text, decoding);
     let start_byte = (d.span.col as usize).saturating_sub(1);
-    if !shown.is_empty() && start_byte <= raw.len() && start_byte < 200 {
+    // The byte just past the characters shown: a column beyond it is not underlined.
+    let shown_end = if chars.len() < SHOWN_CHARS { raw.len() } else { chars.last().map_or(0, |(o, _)| *o) };
+    if !shown.is_empty() && start_byte <= shown_end {
         let number = d.span.line.to_string();
         let pad = " ".repeat(number.len());
-        let end_byte = (start_byte + d.span.len.max(1) as usize).min(raw.len()).min(200).max(start_byte);
-        let lead = decoding.prefix_width(raw, start_byte);
-        let marks = decoding.prefix_width(raw, end_byte).saturating_sub(lead).max(1);
+        let end_byte = (start_byte + d.span.len.max(1) as usize).min(shown_end.max(start_byte + 1));
+        // Display columns: the widths of the characters before the span, and of those in it.
+        let lead: usize = chars.iter().filter(|(o, _)| *o < start_byte).map(|(_, c)| shown_width(*c)).sum();
+        let marks: usize = chars.iter().filter(|(o, _)| *o >= start_byte && *o < end_byte).map(|(_, c)| shown_width(*c)).sum::<usize>().max(1);
         out.push_str(&format!(" {number} | {shown}\n {pad} | {}{} {}\n", " ".repeat(lead), "^".repeat(marks), d.rule.title()));
     }
     if let Some(h) = &d.hint {
@@ -125,5 +152,31 @@ mod tests {
         assert_eq!(display_line(latin, &Decoding::by_label("latin1").unwrap()), "(FURAÇÃO)");
         // A NUL byte is never printed raw.
         assert_eq!(display_line(b"G0\0X1", &Decoding::default()), "G0\u{fffd}X1");
+    }
+
+    fn underline(raw: &[u8], col: u32, len: u32) -> String {
+        let d = ncsight::Diagnostic::new(ncsight::Rule::BadCharacter, ncsight::alarm::AlarmStyle::Project, ncsight::source::Span::new(1, col, len), "m");
+        let r = render("f", raw, &d, Style::Full, &Decoding::default());
+        r.lines().nth(2).unwrap_or_else(|| panic!("{r}")).to_string()
+    }
+
+    /// The underline stands under the word whatever precedes it: a control byte, GBK text, CJK
+    /// characters two columns wide.
+    #[test]
+    fn the_underline_is_under_the_word() {
+        // "(A\x01B) G0 X#1": '#' at byte 10 (column 11) shows at display column 10.
+        let u = underline(b"(A\x01B) G0 X#1", 11, 1);
+        assert_eq!(u.find('^'), Some(" 1 | ".len() + 10), "{u}");
+        // GBK "(\u{87ba}\u{7eb9}) Q5": Q at byte 7; the two characters take two columns each.
+        let u = underline(b"(\xC2\xDD\xCE\xC6) Q5", 8, 2);
+        assert_eq!(u.find('^'), Some(" 1 | ".len() + 7), "{u}");
+        assert_eq!(u.matches('^').count(), 2);
+        // A long UTF-8 comment cut at 200 characters: the underline stays within what is shown.
+        let mut long = b"G0 X1 (".to_vec();
+        for _ in 0..300 {
+            long.extend("\u{87ba}".as_bytes());
+        }
+        let u = underline(&long, 7, (long.len() - 6) as u32);
+        assert!(u.matches('^').count() <= 2 * 200, "{}", u.len());
     }
 }

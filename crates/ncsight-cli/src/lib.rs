@@ -618,7 +618,10 @@ fn report(
     }
     // The thread section: simulated when the programme cuts a thread on a lathe; when it cannot
     // be, the page says why (never "cuts no thread" for a thread it could not simulate).
-    let (sim, sim_error) = if params.profile().is_lathe() && records.iter().any(|r| r.op.is_thread()) {
+    let (sim, sim_error) = if all_records > records.len() {
+        // A simulation of part of the programme would measure the wrong thing.
+        (None, Some(format!("the programme makes {all_records} records, more than the report keeps: use ncsight simulate for the stock")))
+    } else if params.profile().is_lathe() && records.iter().any(|r| r.op.is_thread()) {
         match ncsight::stock::measure::simulate(&records, &job, &ncsight::stock::measure::SimOptions::default()) {
             Ok(s) => (Some(s), None),
             Err(e) => (None, Some(e)),

@@ -271,6 +271,9 @@ fn arc_threads_are_cut_and_face_threads_are_said() {
     let (_, out, err) = common::ncsight(&["simulate", ex.to_str().unwrap(), "--machine", "gsk988t", "--stock", "40x60", "--format", "json"]);
     let v: serde_json::Value = serde_json::from_str(&out).unwrap_or_else(|e| panic!("{e}: {out}{err}"));
     assert!(v["depth_mm"].as_f64().is_some_and(|d| d > 0.1), "the arc thread cuts a groove: {out}");
+    // Without a stock, the stock is inferred from the arc thread too.
+    let (_, _, err) = common::ncsight(&["simulate", ex.to_str().unwrap(), "--machine", "gsk988t"]);
+    assert!(!err.contains("no stock"), "{err}");
     let face = tmp("face.nc", b"G97 S300 M03\nG0 X60. Z1.\nG32 X20. F2.\nG0 Z5.\nM30\n");
     let (_, out, _) = common::ncsight(&["simulate", face.to_str().unwrap(), "--machine", "gsk980tdi", "--stock", "60x40"]);
     assert!(out.starts_with("finding not_simulated"), "{out}");

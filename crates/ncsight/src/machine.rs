@@ -218,11 +218,19 @@ impl Machine {
                 self.finish_record(r, dur, out);
             }
             Hold::Ignored => {
-                // The press is lost: the screen keeps showing RUN (GSK988T manual, G32.1 note 6).
-                let msg = format!(
-                    "FEED HOLD at {h} s was ignored: the thread is being cut (the control keeps running and does not remember the press; press it again once the thread is done)"
-                );
-                out(Event::Diagnostic(Diagnostic::new(Rule::HoldIgnored, self.style, r.span, msg)));
+                // Every press while the thread is cut is lost: the screen keeps showing RUN
+                // (GSK988T manual, G32.1 note 6).
+                let mut presses = vec![h];
+                while let Some(&next) = self.holds.first().filter(|t| **t < end) {
+                    presses.push(next);
+                    self.holds.remove(0);
+                }
+                for h in presses {
+                    let msg = format!(
+                        "FEED HOLD at {h} s was ignored: the thread is being cut (the control keeps running and does not remember the press; press it again once the thread is done)"
+                    );
+                    out(Event::Diagnostic(Diagnostic::new(Rule::HoldIgnored, self.style, r.span, msg)));
+                }
                 self.finish_record(r, dur, out);
             }
             Hold::ThreadCycle(th) => match th.style {

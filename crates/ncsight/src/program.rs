@@ -401,7 +401,7 @@ impl Core {
             profile.alarm_style,
             self.last_span,
             format!(
-                "{hidden} more lengths without a decimal point were read in least input increments ({all} in all, {small} of them under 1 mm); only the first {INCREMENT_WARNINGS_SHOWN} were shown"
+                "{hidden} more lengths without a decimal point were read in least input increments ({all} in all, {small} of them under 1 mm or 0.1 inch); only the first {INCREMENT_WARNINGS_SHOWN} were shown"
             ),
         );
         Some(match profile.calculator_input {

@@ -38,6 +38,7 @@ fn fanuc_0044_reference_return_in_a_canned_cycle() {
     assert_eq!((a.code, a.span.line), ("PS0044", 4));
     assert!(first_alarm("fanuc0m", &format!("{head}G80\nG91 G28 Z0.\nM30\n")).is_none());
     assert!(first_alarm("fanuc0m", &format!("{head}G80 G91 G28 Z0.\nM30\n")).is_none());
+    assert!(first_alarm("fanuc0m", &format!("{head}G00 G91 G28 Z0.\nM30\n")).is_none(), "a group 01 code cancels the cycle");
     // G30 (not simulated yet) in a cycle is 0044 too, outside one "not simulated yet".
     assert_eq!(first_alarm("fanuc0m", &format!("{head}G30 Z0.\nM30\n")).unwrap().code, "PS0044");
     assert_eq!(first_alarm("fanuc0m", "G30 Z0.\nM30\n").unwrap().code, "NCS-E38");
@@ -83,6 +84,9 @@ fn macro_statements_are_not_simulated_yet() {
             assert!(a.hint.as_deref().is_none_or(|h| !h.contains("letter O")), "{block}: {:?}", a.hint);
         }
     }
+    // Inside a block two letters side by side are a typing mistake, not a macro statement.
+    let a = first_alarm("fanuc0m", "G41 DO1 X10.\nM30\n").unwrap();
+    assert!(a.hint.as_deref().is_some_and(|h| h.contains("letter O")), "{a:?}");
 }
 
 /// The G71 monotonic check has a tolerance of one least input increment: a rounded corner
@@ -195,4 +199,20 @@ fn setup_values_are_validated() {
     ] {
         assert!(Setup::from_toml(bad).is_err(), "{bad}");
     }
+}
+
+/// A G73 whose passes over the contour would make more than the per-block limit alarms at once
+/// (NCS-E40), never drops moves in silence; a block-deleted ns block is no ns block.
+#[test]
+fn roughing_past_the_limit_alarms() {
+    let mut prog = String::from("G99 G97 S800 M03\nG0 X50. Z2.\nG73 U5. W0. R9999\nG73 P10 Q30 U0.2 W0.1 F0.2\nN10 G0 X20.\n");
+    for k in 1..=10 {
+        prog.push_str(&format!("G1 X{}. Z-{}.\n", 20 + k, 2 * k));
+    }
+    prog.push_str("N30 X50.\nM30\n");
+    assert_eq!(first_alarm("gsk980tdi", &prog).unwrap().code, "NCS-E40");
+    let switches = ncsight::Switches { block_delete: true, ..Default::default() };
+    let g73 = "G99 G97 S800 M03\nG0 X42. Z2.\nG73 U3. W0. R3\nG73 P10 Q20 U0.4 W0.1 F0.2\n/N10 G0 X42. Z2.\nG1 X20. Z0.\nZ-20.\nN20 X42. Z-25.\nM30\n";
+    let (_, d) = common::run_with("gsk980tdi", &[], switches, ncsight::Options::default(), g73);
+    assert!(d.iter().any(|d| d.is_alarm()), "{d:?}");
 }

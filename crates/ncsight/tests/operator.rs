@@ -348,3 +348,17 @@ fn seed_001_g32_1_note_5_the_pull_out_follows_1466_and_1628() {
     let t = pull_out_s(&["1466=600", "1628=50"]);
     assert!((t - (0.1 + 0.05)).abs() < 1e-9, "{t}");
 }
+
+/// Every press during a G32.1 thread is lost, not only the first (GSK988T manual, G32.1 note 6):
+/// two presses in the same thread, and the programme still runs on without a stop.
+#[test]
+fn seed_001_g32_1_note_6_every_press_in_the_thread_is_lost() {
+    let prog = "M14\nG00 X30 Z3\nG32.1 W-40 F2 S500\nG00 X55\nM15\nM30\n";
+    let plain = run("gsk988t", &[], Options::default(), prog);
+    let i = plain.iter().position(|r| r.op.kind() == "thread").unwrap();
+    let (a, b) = (plain[i - 1].t_s, plain[i].t_s);
+    let opts = Options { feed_hold_at: vec![a + (b - a) * 0.3, a + (b - a) * 0.6], ..Options::default() };
+    let (r, d) = run_diags("gsk988t", opts, prog);
+    assert!(stops(&r).is_empty(), "{:?}", stops(&r));
+    assert_eq!(d.iter().filter(|d| d.code == "NCS-W23").count(), 2);
+}

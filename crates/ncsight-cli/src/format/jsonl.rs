@@ -8,8 +8,7 @@ use std::fmt::Write as _;
 use std::io::{self, Write};
 
 pub struct Jsonl {
-    /// Which of X, Y, Z are shown: the machine's, and any other once a programme moved it.
-    axes: std::cell::Cell<[bool; 3]>,
+    axes: super::ShownAxes,
     x_scale: f64,
     /// The line being written, reused.
     text: String,
@@ -17,21 +16,13 @@ pub struct Jsonl {
 
 impl Jsonl {
     pub fn new(profile: &'static Profile) -> Jsonl {
-        let axes = ['X', 'Y', 'Z'].map(|a| profile.axes.contains(a));
-        Jsonl { axes: std::cell::Cell::new(axes), x_scale: if profile.diameter_x { 2.0 } else { 1.0 }, text: String::with_capacity(256) }
+        Jsonl { axes: super::ShownAxes::new(profile), x_scale: if profile.diameter_x { 2.0 } else { 1.0 }, text: String::with_capacity(256) }
     }
 
     fn point(&self, s: &mut String, p: &Vec3, prefix: &str) {
         for (axis, name) in ["x", "y", "z"].into_iter().enumerate() {
-            // An axis the profile does not list appears once a programme moves it (the GSK988T's
-            // arc threads in G17/G19 on a machine with a Y axis), and stays.
-            let mut shown = self.axes.get();
-            if !shown[axis] {
-                if p.axis(axis).abs() < 1e-9 {
-                    continue;
-                }
-                shown[axis] = true;
-                self.axes.set(shown);
+            if !self.axes.show(axis, p) {
+                continue;
             }
             let v = if axis == 0 { p.x * self.x_scale } else { p.axis(axis) };
             field(s, prefix, name);

@@ -29,6 +29,29 @@ pub fn by_name(name: &str, profile: &'static Profile) -> Option<Box<dyn Format>>
     }
 }
 
+/// Which of X, Y, Z a format shows: the machine's axes, and any other once a programme moves it
+/// (the GSK988T's arc threads in G17/G19 on a machine with a Y axis), from then on.
+pub struct ShownAxes(std::cell::Cell<[bool; 3]>);
+
+impl ShownAxes {
+    pub fn new(profile: &Profile) -> ShownAxes {
+        ShownAxes(std::cell::Cell::new(['X', 'Y', 'Z'].map(|a| profile.axes.contains(a))))
+    }
+
+    /// Whether axis 0..3 is shown at point `p`.
+    pub fn show(&self, axis: usize, p: &ncsight::Vec3) -> bool {
+        let mut shown = self.0.get();
+        if !shown[axis] {
+            if p.axis(axis).abs() < 1e-9 {
+                return false;
+            }
+            shown[axis] = true;
+            self.0.set(shown);
+        }
+        true
+    }
+}
+
 /// A number with at most `decimals` decimals, trailing zeros trimmed, never `-0`.
 pub fn num(v: f64, decimals: usize) -> String {
     let mut s = String::new();

@@ -11,8 +11,7 @@ pub struct Text {
     /// What the record does, then the whole line: reused.
     what: String,
     line: String,
-    /// Which of X, Y, Z are shown: the machine's, and any other once a programme moved it.
-    axes: std::cell::Cell<[bool; 3]>,
+    axes: super::ShownAxes,
 }
 
 fn dir_name(dir: ArcDir) -> &'static str {
@@ -21,20 +20,14 @@ fn dir_name(dir: ArcDir) -> &'static str {
 
 impl Text {
     pub fn new(profile: &'static Profile) -> Text {
-        let axes = ['X', 'Y', 'Z'].map(|a| profile.axes.contains(a));
-        Text { profile, what: String::with_capacity(128), line: String::with_capacity(160), axes: std::cell::Cell::new(axes) }
+        Text { profile, what: String::with_capacity(128), line: String::with_capacity(160), axes: super::ShownAxes::new(profile) }
     }
 
     fn point(&self, s: &mut String, p: &Vec3) {
         let mut first = true;
         for (axis, name) in ['X', 'Y', 'Z'].into_iter().enumerate() {
-            let mut shown = self.axes.get();
-            if !shown[axis] {
-                if p.axis(axis).abs() < 1e-9 {
-                    continue;
-                }
-                shown[axis] = true;
-                self.axes.set(shown);
+            if !self.axes.show(axis, p) {
+                continue;
             }
             if !first {
                 s.push(' ');

@@ -533,10 +533,14 @@ fn all_stretches(
 /// the ns move included, pass k (1-based) moved by the allowance plus `relief x (d - k) / (d - 1)`
 /// (the first pass Δi, Δk further out, the last on the allowance); a rapid from each pass's end
 /// to the next pass's start (A1 -> B1 -> C1 -> A2 ...), and from the last back to A.
-pub fn pattern(start: Vec3, contour: &[Op], allowance: Vec3, relief: Vec3, passes: u32) -> Result<Vec<Op>, RoughError> {
+pub fn pattern(start: Vec3, contour: &[Op], allowance: Vec3, relief: Vec3, passes: u32, limit: usize) -> Result<Vec<Op>, RoughError> {
     let mut ops = Vec::new();
     if contour.is_empty() || passes == 0 {
         return Ok(ops);
+    }
+    // The moves are known before any is made: more than `limit` is refused at once.
+    if (passes as usize).saturating_mul(contour.len() + 1) > limit {
+        return Err(RoughError::TooMany);
     }
     let mut pos = start;
     for k in 1..=passes {
@@ -609,7 +613,7 @@ mod tests {
             feed((10.0, 2.0), (20.0, -10.0)),
         ];
         // Three passes, relief (3, 0, 1), allowance (0.5, 0, 0): offsets 3.5/1, 2/0.5, 0.5/0.
-        let ops = pattern(Vec3::new(25.0, 0.0, 2.0), &contour, Vec3::new(0.5, 0.0, 0.0), Vec3::new(3.0, 0.0, 1.0), 3).unwrap();
+        let ops = pattern(Vec3::new(25.0, 0.0, 2.0), &contour, Vec3::new(0.5, 0.0, 0.0), Vec3::new(3.0, 0.0, 1.0), 3, 100_000).unwrap();
         let cut_ends: Vec<(f64, f64)> = ops.iter().filter_map(|o| if let Op::Feed { to, .. } = o { Some((to.x, to.z)) } else { None }).collect();
         assert_eq!(cut_ends, vec![(23.5, -9.0), (22.0, -9.5), (20.5, -10.0)]);
         assert_eq!(*ops.last().unwrap(), Op::Rapid { from: Vec3::new(20.5, 0.0, -10.0), to: Vec3::new(25.0, 0.0, 2.0) });

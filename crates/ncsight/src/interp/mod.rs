@@ -23,7 +23,7 @@ use words::Words;
 /// Largest |coordinate| accepted, mm: 99999.999 mm is the widest value an 8-digit word with
 /// 0.001 mm resolution can hold; under G20, 9999.9999 inch.
 pub const MAX_COORD_MM: f64 = 99_999.999;
-pub const MAX_COORD_INCH: f64 = 9_999.9999;
+pub const MAX_COORD_INCH: f64 = 9_999.999_9;
 
 /// The most motion records one block may make (a canned cycle with K repeats, a G71 of tiny
 /// depth): past it the block alarms (NCS-E40), so the memory a block holds stays bounded by a
@@ -47,7 +47,7 @@ pub struct Outcome {
     pub increment_words: u32,
     pub increment_words_small: u32,
     /// Records made by the block being executed (kept or not).
-    emitted: usize,
+    pub(crate) emitted: usize,
 }
 
 impl Outcome {
@@ -210,7 +210,8 @@ impl Step<'_> {
         let unit = if self.st.inch { 25.4 } else { 1.0 };
         let shown = crate::alarm::shown(f / unit, 4);
         let msg = if !self.st.per_rev && f < 10.0 {
-            let length = point(0.0).dist(&point(1.0));
+            // Along the path (an arc's length, not its chord).
+            let length: f64 = (0..16).map(|k| point(k as f64 / 16.0).dist(&point((k + 1) as f64 / 16.0))).sum();
             let minutes = length / f;
             format!(
                 "F{shown} under feed per minute is {} {}/min: this {} mm cut takes {}; feed per revolution (G99) was probably meant",
@@ -491,7 +492,9 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
         if matches!(g.function, GFn::ReferenceReturn | GFn::NotYetReference(_))
             && profile.reference_in_canned_cycle_alarm
             && step.st.drill.kind.is_some()
-            && !gs.iter().any(|(_, g)| g.function == GFn::CycleCancel)
+            // G80, or a group 01 code, in the same block cancels the cycle first (inferred: a
+            // group 01 code cancels a drilling cycle as G80 does, FANUC 0-M manual, 8.1.4).
+            && !gs.iter().any(|(_, g)| g.function == GFn::CycleCancel || g.group == Group::Motion)
         {
             // FANUC alarm 0044: cancel the drilling cycle (G80) before G27-G30.
             return Err(step.alarm(

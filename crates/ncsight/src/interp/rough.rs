@@ -210,13 +210,14 @@ impl Interpreter {
     /// count during roughing: help text note 7).
     ///
     /// Returns the ns block's move, the moves after it, and the warnings the blocks gave.
-    fn contour_moves(&self, code: &str, blocks: &[Block]) -> Result<(Op, Vec<Op>, Vec<Diagnostic>), Diagnostic> {
+    #[allow(clippy::type_complexity)]
+    fn contour_moves(&self, code: &str, blocks: &[Block]) -> Result<(Op, Vec<Op>, Vec<Diagnostic>, ContourNotes), Diagnostic> {
         let mut st = self.state.clone();
         let mut scratch = Outcome::default();
         // The motion mode and position after the ns block (a G00 to where the tool stands makes
         // no record).
         let mut after_ns = None;
-        for b in blocks {
+        for (k, b) in blocks.iter().enumerate() {
             if b.block_delete && self.switches.block_delete {
                 continue;
             }
@@ -237,7 +238,9 @@ impl Interpreter {
                 // G83/G87 note 3: no drilling cycle inside G71-G73.
                 return Err(self.contour_alarm(Rule::ContourCommand, b.span, format!("{code}: a contour block cannot run the drilling cycle {}", kind.code())));
             }
-            after_ns.get_or_insert((st.motion, st.pos));
+            if k == 0 {
+                after_ns = Some((st.motion, st.pos));
+            }
         }
         // Help text notes 1 and 2: the ns block makes one G00 or G01 move.
         let ns_span = blocks[0].span;
@@ -276,13 +279,19 @@ impl Interpreter {
         if moves.is_empty() {
             return Err(self.contour_alarm(Rule::ContourCommand, ns_span, format!("{code}: the contour has no move after its first block")));
         }
-        Ok((ns_move, moves, scratch.warnings))
+        let notes = ContourNotes { feed_warned: st.feed_warned, increment_words: scratch.increment_words, increment_words_small: scratch.increment_words_small };
+        Ok((ns_move, moves, scratch.warnings, notes))
     }
 
     /// Rough the collected contour (the records carry the G71/G72 block's span).
     fn rough_contour(&mut self, req: RoughRequest, blocks: &[Block], out: &mut Outcome) -> Result<(), Diagnostic> {
         let code = req.kind.code();
-        let (ns_move, rest, warnings) = self.contour_moves(code, blocks)?;
+        let (ns_move, rest, warnings, notes) = self.contour_moves(code, blocks)?;
+        // What the contour's blocks said stays said: an implausible F once, the lengths without a
+        // decimal point counted for the summary.
+        self.state.feed_warned = notes.feed_warned;
+        out.increment_words += notes.increment_words;
+        out.increment_words_small += notes.increment_words_small;
         let first = &blocks[0];
         let ns_rapid = matches!(ns_move, Op::Rapid { .. });
         let contour: Vec<Op> = std::iter::once(ns_move.clone()).chain(rest).collect();
@@ -290,8 +299,14 @@ impl Interpreter {
         out.warnings.extend(warnings.iter().cloned());
         let hint = warnings.first().map(|w| format!("{} (line {})", w.message, w.span.line));
         if let Some((relief, passes)) = req.pattern {
-            let ops = pattern(req.start, &contour, req.allowance, relief, passes)
-                .map_err(|_| self.contour_alarm(Rule::ContourCommand, req.span, format!("{code}: the contour holds a move that is not a line or an arc")))?;
+            let ops = pattern(req.start, &contour, req.allowance, relief, passes, super::MAX_MOTIONS_PER_BLOCK).map_err(|e| match e {
+                RoughError::TooMany => self.contour_alarm(
+                    Rule::MotionLimit,
+                    req.span,
+                    format!("{code}: {passes} passes over the contour make more than {} moves in one cycle", super::MAX_MOTIONS_PER_BLOCK),
+                ),
+                _ => self.contour_alarm(Rule::ContourCommand, req.span, format!("{code}: the contour holds a move that is not a line or an arc")),
+            })?;
             return self.emit_cycle(&req, ops, out);
         }
         let has = |letters: &[u8]| first.words.iter().any(|w| letters.contains(&w.letter));
@@ -344,7 +359,13 @@ impl Interpreter {
         let code = req.kind.code();
         let before = self.state.clone();
         let mut step = Step { profile: self.profile, params: &self.params, repair: None, span: req.span, st: &mut self.state, out };
-        let result = ops.into_iter().try_for_each(|op| step.emit_cut(code, op));
+        let result = ops.into_iter().try_for_each(|op| step.emit_cut(code, op)).and_then(|()| {
+            // The per-block limit (the cycle's moves come here, not through `execute_into`).
+            if step.out.emitted > super::MAX_MOTIONS_PER_BLOCK {
+                return Err(step.alarm(Rule::MotionLimit, req.span, format!("{code}: more than {} moves in one cycle", super::MAX_MOTIONS_PER_BLOCK)));
+            }
+            Ok(())
+        });
         if let Err(d) = result {
             out.clear();
             self.state = before;
@@ -384,6 +405,8 @@ impl Interpreter {
             out.records.append(&mut scratch.records);
             out.warnings.append(&mut scratch.warnings);
         }
+        out.increment_words += scratch.increment_words;
+        out.increment_words_small += scratch.increment_words_small;
         self.replaying = false;
         result?;
         // Back to the start point at rapid (the cycle's end, as G71 step 8).
@@ -408,4 +431,11 @@ pub(super) struct Contour {
     pub blocks: Vec<Block>,
     /// One of its blocks alarmed when the roughing cycle read it.
     pub failed: bool,
+}
+
+/// What reading a contour's blocks on a copy of the modal state leaves behind for the programme.
+pub(super) struct ContourNotes {
+    feed_warned: Option<f64>,
+    increment_words: u32,
+    increment_words_small: u32,
 }

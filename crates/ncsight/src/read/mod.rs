@@ -123,6 +123,17 @@ impl Line {
     }
 }
 
+/// The UTF-8 character at the start of `s`, if the bytes there are one.
+fn utf8_char(s: &[u8]) -> Option<char> {
+    let len = match s.first()? {
+        0xC2..=0xDF => 2,
+        0xE0..=0xEF => 3,
+        0xF0..=0xF4 => 4,
+        _ => return None,
+    };
+    std::str::from_utf8(s.get(..len)?).ok()?.chars().next()
+}
+
 /// A full-width character at the start of `s` (what a Chinese input method types for `;`, `(`,
 /// `,`, digits, letters), in UTF-8 or in GBK: how it looks, its ASCII twin, and its length in bytes.
 fn full_width(s: &[u8]) -> Option<(String, char, usize)> {
@@ -320,9 +331,13 @@ impl Reader {
                 }
                 _ if c.is_ascii_alphabetic() => {
                     block_start.get_or_insert(i);
-                    if let Some(d) = self.macro_statement(line_no, s, i) {
-                        out.blocks.push(Err(d));
-                        return;
+                    // A macro statement starts its block (after N); inside a block two letters
+                    // side by side are a typing mistake (`DO1` for `D01`), answered as such.
+                    if block.words.is_empty() {
+                        if let Some(d) = self.macro_statement(line_no, s, i) {
+                            out.blocks.push(Err(d));
+                            return;
+                        }
                     }
                     match self.word(line_no, s, i) {
                         Ok((w, next)) => {
@@ -396,6 +411,10 @@ impl Reader {
                         } else {
                             d
                         }
+                    } else if let Some(ch) = utf8_char(&s[i..]) {
+                        // A character of a UTF-8 text (Chinese notes between the blocks): named.
+                        self.diag(Rule::BadCharacter, line_no, i, ch.len_utf8(), format!("character '{ch}' is not allowed outside a comment"))
+                            .with_hint("text other than ASCII belongs inside ( ) comments")
                     } else {
                         self.diag(
                             Rule::BadCharacter,

@@ -212,7 +212,12 @@ impl LatheStock {
                 self.cut_thread(from, to, lead_mm, spindle_deg, rpm, tool);
                 self.last_thread_end = Some(to);
             }
-            Op::ThreadArc { from, to, long_axis, lead_mm, spindle_deg, rpm, .. } => {
+            Op::ThreadArc { from, to, long_axis, lead_mm, spindle_deg, rpm, plane, .. } => {
+                if plane != crate::motion::Plane::ZX {
+                    // G17/G19: the arc leaves the XZ plane the lathe stock is a section of.
+                    self.not_simulated(rec, from, Some(spindle_deg), "an arc thread outside the ZX plane (G17 or G19) is not cut in the stock simulation");
+                    return;
+                }
                 if long_axis != LongAxis::Z {
                     self.not_simulated(rec, from, Some(spindle_deg), "an arc thread with X as its long axis (a face arc thread) is not cut in the stock simulation");
                     return;

@@ -102,7 +102,7 @@ fn infer_bar(records: &[Record], internal: bool) -> Option<Bar> {
     let mut lead = 0.0f64;
     let (mut deepest, mut zmin, mut zmax) = (if internal { f64::MIN } else { f64::MAX }, f64::MAX, f64::MIN);
     for r in records {
-        if let Op::Thread { from, to, lead_mm, .. } = r.op {
+        if let Op::Thread { from, to, lead_mm, .. } | Op::ThreadArc { from, to, lead_mm, .. } = r.op {
             lead = lead.max(lead_mm);
             for p in [from, to] {
                 deepest = if internal { deepest.max(p.x) } else { deepest.min(p.x) };
@@ -186,10 +186,10 @@ fn work_estimate(records: &[Record], bar_length_mm: f64, dz: f64, ntheta: usize)
     records
         .iter()
         .map(|r| match r.op {
-            Op::Thread { from, to, .. } | Op::Feed { from, to, .. } | Op::Arc { from, to, .. } | Op::Rapid { from, to } => {
+            Op::Thread { from, to, .. } | Op::ThreadArc { from, to, .. } | Op::Feed { from, to, .. } | Op::Arc { from, to, .. } | Op::Rapid { from, to } => {
                 let span = match r.op {
                     // An arc may bulge beyond its end points: its whole circle's extent.
-                    Op::Arc { center, .. } => 2.0 * center.dist(&from),
+                    Op::Arc { center, .. } | Op::ThreadArc { center, .. } => 2.0 * center.dist(&from),
                     _ => (to.z - from.z).abs(),
                 };
                 (span.min(bar_length_mm) / dz + 2.0) * ntheta as f64
@@ -492,7 +492,7 @@ fn phase_findings(records: &[Record], tools: &[Tool]) -> Vec<Finding> {
     let mut out = Vec::new();
     let mut prev_end = None;
     for (r, tool) in records.iter().zip(tools) {
-        let Op::Thread { from, to, lead_mm, spindle_deg, rpm, .. } = r.op else {
+        let (Op::Thread { from, to, lead_mm, spindle_deg, rpm, .. } | Op::ThreadArc { from, to, lead_mm, spindle_deg, rpm, .. }) = r.op else {
             prev_end = None;
             continue;
         };
