@@ -101,7 +101,7 @@ impl Report<'_> {
             }
             let (from, to) = (r.op.start_point().unwrap(), r.op.end_point().unwrap());
             let mut pts = vec![self.pt(lathe, &from)];
-            if let (Op::Arc { plane, dir, .. } | Op::ThreadArc { plane, dir, .. }, Some(g)) = (&r.op, ncsight::time::arc_geom_of(&r.op)) {
+            if let (Op::Arc { plane, dir, .. } | Op::ThreadArc { plane, dir, .. }, Some(g)) = (&r.op, ncsight::geom::arc_geom_of(&r.op)) {
                 let n = if thin { 4 } else { (g.sweep_rad.to_degrees() / 5.0).ceil().clamp(4.0, 72.0) as usize };
                 for i in 1..n {
                     pts.push(self.pt(lathe, &ncsight::geom::arc_point(&from, &to, *plane, *dir, &g, i as f64 / n as f64)));

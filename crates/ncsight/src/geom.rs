@@ -1,6 +1,6 @@
 //! Plane-local geometry shared by every consumer: arcs from R or centre offsets, arc length.
 
-use crate::motion::{ArcDir, Plane, Vec3};
+use crate::motion::{ArcDir, Op, Plane, Vec3};
 use std::f64::consts::TAU;
 
 /// An arc resolved in its plane.
@@ -115,6 +115,16 @@ pub fn arc_point(from: &Vec3, to: &Vec3, plane: Plane, dir: ArcDir, g: &ArcGeom,
     p.set_axis(b, c.1 + g.radius * ang.sin());
     p.set_axis(n, from.axis(n) + f * (to.axis(n) - from.axis(n)));
     p
+}
+
+/// The geometry of an `Op::Arc` or `Op::ThreadArc` from its stored fields.
+pub fn arc_geom_of(op: &Op) -> Option<ArcGeom> {
+    match op {
+        Op::Arc { from, to, center, plane, dir, .. } | Op::ThreadArc { from, to, center, plane, dir, .. } => {
+            arc_from_center(*from, *to, *plane, *dir, *center, f64::INFINITY).ok()
+        }
+        _ => None,
+    }
 }
 
 #[cfg(test)]

@@ -5,8 +5,10 @@
 //! -> [`motion`] records with time from [`time`] -> consumers (formatters in the CLI crate).
 
 pub mod alarm;
+pub mod codes;
 pub mod cycles;
 pub mod dialect;
+pub mod event;
 pub mod geom;
 pub mod interp;
 pub mod machine;

@@ -21,8 +21,9 @@ use crate::cycles::thread::{phase_after, wrap_deg};
 use crate::geom;
 use crate::motion::{Hold, Op, Record, StopReason, ThreadHold, ThreadHoldStyle, Vec3};
 use crate::profile::Params;
-use crate::program::Event;
-use crate::time::{arc_geom_of, Overrides, TimeModel};
+use crate::event::Event;
+use crate::geom::arc_geom_of;
+use crate::time::{Overrides, TimeModel};
 
 /// What the operator does during the run.
 #[derive(Debug, Clone, Default, PartialEq)]

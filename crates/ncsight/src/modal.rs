@@ -158,10 +158,6 @@ pub struct Modal {
     pub rough_data: [Option<(f64, f64)>; 2],
     /// G73 relief Δi (radius), Δk and number of passes d from its first block.
     pub pattern_data: Option<(f64, f64, u32)>,
-    /// Set by a second G71/G72 block: collect the contour blocks that follow.
-    pub rough_request: Option<Box<crate::interp::RoughRequest>>,
-    /// Set by G70: run a stored contour.
-    pub finish_request: Option<crate::interp::FinishRequest>,
     /// G74 / G75 back-off e set by a first block (one value for both, as the parameter).
     pub peck_back_off_mm: Option<f64>,
     /// G90/G94 end point and taper of the last cycle block, for the blocks that repeat it.
@@ -208,8 +204,6 @@ impl Modal {
             motion: Motion::Rapid,
             rough_data: [None; 2],
             pattern_data: None,
-            rough_request: None,
-            finish_request: None,
             peck_back_off_mm: None,
             box_cycle: BoxMemory::default(),
             plane: if profile.kind == MachineKind::Lathe { Plane::ZX } else { Plane::XY },

@@ -11,7 +11,6 @@ use crate::alarm::{Diagnostic, Rule};
 use crate::dialect::Foreign;
 use crate::interp::{Interpreter, Outcome, Switches};
 use crate::machine::{Machine, Options};
-use crate::motion::Record;
 use crate::profile::Params;
 use crate::read::{Block, Line, Reader, Word};
 use crate::source::Span;
@@ -26,12 +25,7 @@ pub enum Mode {
     Check,
 }
 
-/// What the run produced, in programme order.
-#[derive(Debug, Clone, PartialEq)]
-pub enum Event {
-    Record(Record),
-    Diagnostic(Diagnostic),
-}
+pub use crate::event::Event;
 
 /// How the run ended (so far).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

@@ -175,7 +175,7 @@ impl TimeModel {
                 .fold(0.0, f64::max),
             Op::Feed { from, to, feed_mm_min } => trapezoid_s(from.dist(to), self.feed_speed(r, *feed_mm_min), self.accel_s(r)),
             Op::Arc { from, to, plane, feed_mm_min, .. } => {
-                let len = arc_geom_of(&r.op).map(|g| geom::arc_length(from, to, *plane, &g)).unwrap_or(0.0);
+                let len = geom::arc_geom_of(&r.op).map(|g| geom::arc_length(from, to, *plane, &g)).unwrap_or(0.0);
                 trapezoid_s(len, self.feed_speed(r, *feed_mm_min), self.feed_accel_s)
             }
             Op::Thread { from, to, lead_mm, long_axis, rpm, .. } | Op::ThreadArc { from, to, lead_mm, long_axis, rpm, .. } => {
@@ -187,16 +187,6 @@ impl TimeModel {
             Op::Dwell { seconds } => *seconds,
             Op::Spindle { .. } | Op::Tool { .. } | Op::Stop { .. } | Op::End { .. } => 0.0,
         }
-    }
-}
-
-/// The geometry of an `Op::Arc` or `Op::ThreadArc` from its stored fields.
-pub fn arc_geom_of(op: &Op) -> Option<geom::ArcGeom> {
-    match op {
-        Op::Arc { from, to, center, plane, dir, .. } | Op::ThreadArc { from, to, center, plane, dir, .. } => {
-            geom::arc_from_center(*from, *to, *plane, *dir, *center, f64::INFINITY).ok()
-        }
-        _ => None,
     }
 }
 

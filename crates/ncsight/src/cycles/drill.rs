@@ -10,106 +10,7 @@
 //! in the same local terms: `h` is their drilling axis, the R level is the start point, and R is
 //! the retract after each peck (help text G83/87).
 
-/// The cycle of a hole.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum DrillKind {
-    /// High-speed peck: feed Q, back d (parameter 531), again (seed 003 8.1.1).
-    G73,
-    /// Left-hand tapping: the spindle reverses at the bottom (8.1.2).
-    G74,
-    /// Fine boring: oriented stop and shift Q at the bottom, rapid out (8.1.3).
-    G76,
-    /// Drilling (8.1.5).
-    G81,
-    /// Drilling with a dwell at the bottom (8.1.6).
-    G82,
-    /// Peck drilling: back to R after each peck, down again to d above the last depth (8.1.7).
-    G83,
-    /// Right-hand tapping (8.1.8).
-    G84,
-    /// Boring, feed out to R (8.1.9).
-    G85,
-    /// Boring, spindle stop at the bottom, rapid out.
-    G86,
-    /// Back boring: from the R level below the hole up to Z.
-    G87,
-    /// Boring, dwell, spindle stop, manual retract.
-    G88,
-    /// Boring with a dwell, feed out to R.
-    G89,
-    /// GSK980TDi lathe G83: peck drilling along Z from the start point (help text G83/87).
-    FaceG83,
-    /// GSK980TDi lathe G87: peck drilling along X from the start point (help text G83/87).
-    SideG87,
-    /// FANUC 0-T lathe G83 without Q: drilling along Z from the R level, dwell, rapid out to the
-    /// initial level (docs/commands/g83_g87_lathe.md).
-    FanucFace,
-    /// FANUC 0-T lathe G87 without Q: the same along X.
-    FanucSide,
-    /// GSK980TDi G84: rigid tapping along Z from the start point (help text G84/88).
-    TapFace,
-    /// GSK980TDi G88: rigid tapping along X from the start point.
-    TapSide,
-}
-
-impl DrillKind {
-    pub fn code(self) -> &'static str {
-        match self {
-            DrillKind::G73 => "G73",
-            DrillKind::G74 => "G74",
-            DrillKind::G76 => "G76",
-            DrillKind::G81 => "G81",
-            DrillKind::G82 => "G82",
-            DrillKind::G83 => "G83",
-            DrillKind::G84 => "G84",
-            DrillKind::G85 => "G85",
-            DrillKind::G86 => "G86",
-            DrillKind::G87 => "G87",
-            DrillKind::G88 => "G88",
-            DrillKind::G89 => "G89",
-            DrillKind::FaceG83 | DrillKind::FanucFace => "G83",
-            DrillKind::SideG87 | DrillKind::FanucSide => "G87",
-            DrillKind::TapFace => "G84",
-            DrillKind::TapSide => "G88",
-        }
-    }
-
-    /// The cycle needs a peck depth Q (FANUC PS0045 otherwise).
-    pub fn needs_q(self) -> bool {
-        matches!(self, DrillKind::G73 | DrillKind::G83)
-    }
-
-    /// Q is the shift at the bottom.
-    pub fn shifts(self) -> bool {
-        matches!(self, DrillKind::G76 | DrillKind::G87)
-    }
-
-    /// A lathe cycle that drills from the start point (GSK980TDi G83/G87).
-    pub fn from_start(self) -> bool {
-        matches!(self, DrillKind::FaceG83 | DrillKind::SideG87)
-    }
-
-    /// A lathe cycle: it drills along Z (G83) or X (G87) of the lathe, not along a plane's normal.
-    pub fn on_lathe(self) -> bool {
-        matches!(self, DrillKind::FaceG83 | DrillKind::SideG87 | DrillKind::FanucFace | DrillKind::FanucSide | DrillKind::TapFace | DrillKind::TapSide)
-    }
-
-    /// The lathe cycles that drill along X.
-    pub fn along_x(self) -> bool {
-        matches!(self, DrillKind::SideG87 | DrillKind::FanucSide | DrillKind::TapSide)
-    }
-
-    /// GSK980TDi rigid tapping G84/G88: spindle-synchronised, not laid out by [`expand_each`].
-    pub fn rigid_tap(self) -> bool {
-        matches!(self, DrillKind::TapFace | DrillKind::TapSide)
-    }
-
-    /// A group 01 code that starts a lathe cycle of the GSK980TDi (G83, G87, G84, G88): it ends
-    /// the motion mode in force.
-    pub fn gsk_group01(self) -> bool {
-        self.from_start() || self.rigid_tap()
-    }
-}
+pub use crate::codes::DrillKind;
 
 /// A point in plane-local coordinates: (a, b, h).
 pub type Local = [f64; 3];
@@ -237,7 +138,7 @@ pub fn expand_each(h: &Hole, s: &mut dyn FnMut(Step)) {
     };
     match h.kind {
         DrillKind::G73 | DrillKind::G81 | DrillKind::G83 => s(Step::Rapid(p(ret))),
-        DrillKind::G82 | DrillKind::FanucFace | DrillKind::FanucSide => {
+        DrillKind::G82 | DrillKind::FaceFromR | DrillKind::SideFromR => {
             dwell(s);
             s(Step::Rapid(p(ret)));
         }

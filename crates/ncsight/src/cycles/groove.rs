@@ -9,33 +9,9 @@
 //! 6. if grooves remain, rapid along the step axis by (Δd + step), no further than Af, and 1;
 //! 7. else rapid along the step axis back to the start A.
 
+pub use crate::codes::PeckKind;
+
 use crate::motion::Vec3;
-
-/// Which cycle: which axis pecks.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum PeckKind {
-    /// G74: pecks along Z, steps along X.
-    Face,
-    /// G75: pecks along X, steps along Z.
-    Groove,
-}
-
-impl PeckKind {
-    pub fn code(self) -> &'static str {
-        match self {
-            PeckKind::Face => "G74",
-            PeckKind::Groove => "G75",
-        }
-    }
-
-    /// (peck axis, step axis) as `Vec3` indices.
-    pub fn axes(self) -> (usize, usize) {
-        match self {
-            PeckKind::Face => (2, 0),
-            PeckKind::Groove => (0, 2),
-        }
-    }
-}
 
 /// One cycle block, resolved (all lengths mm along the axes, positive).
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -18,37 +18,10 @@
 //! axis where the contour lies deeper than the level is cut, the first from A's side as in type
 //! I, each pocket entered over the ridge before it; then steps 6-8 as in type I.
 
+pub use crate::codes::RoughKind;
+
 use crate::geom;
 use crate::motion::{Op, Vec3};
-
-/// Which roughing.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum RoughKind {
-    /// G71: depth along X, cuts along Z.
-    Turning,
-    /// G72: depth along Z, cuts along X.
-    Facing,
-    /// G73: the whole contour again and again, each pass closer (pattern repeating).
-    Pattern,
-}
-
-impl RoughKind {
-    pub fn code(self) -> &'static str {
-        match self {
-            RoughKind::Turning => "G71",
-            RoughKind::Facing => "G72",
-            RoughKind::Pattern => "G73",
-        }
-    }
-
-    /// (level axis, cut axis) as `Vec3` indices (G73 has none; it answers as G71).
-    pub fn axes(self) -> (usize, usize) {
-        match self {
-            RoughKind::Turning | RoughKind::Pattern => (0, 2),
-            RoughKind::Facing => (2, 0),
-        }
-    }
-}
 
 /// One roughing block, resolved. The contour is the finishing path from A (the ns block's move
 /// first) as the interpreter produced it, not yet moved by the allowances.
@@ -172,7 +145,7 @@ fn polyline(contour: &[Op], chord_mm: f64) -> Vec<Vec3> {
                 if pts.is_empty() {
                     pts.push(*from);
                 }
-                if let Some(g) = crate::time::arc_geom_of(op) {
+                if let Some(g) = crate::geom::arc_geom_of(op) {
                     let n = ((geom::arc_length(from, to, *plane, &g) / chord_mm).ceil() as usize).clamp(8, 20_000);
                     for k in 1..=n {
                         pts.push(geom::arc_point(from, to, *plane, *dir, &g, k as f64 / n as f64));

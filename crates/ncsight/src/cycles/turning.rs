@@ -8,33 +8,9 @@
 //! 3. feed back along the step axis to A's level;
 //! 4. rapid along the cut axis back to A.
 
+pub use crate::codes::BoxKind;
+
 use crate::motion::{Op, Vec3};
-
-/// Which box.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum BoxKind {
-    /// G90: cuts along Z; R is the X difference (radius) of cut start minus cut end.
-    Turning,
-    /// G94: cuts along X; R is the Z difference of cut start minus cut end.
-    Facing,
-}
-
-impl BoxKind {
-    pub fn code(self) -> &'static str {
-        match self {
-            BoxKind::Turning => "G90",
-            BoxKind::Facing => "G94",
-        }
-    }
-
-    /// Index of the axis the tool steps along (X for G90, Z for G94) in `Vec3`.
-    pub fn step_axis(self) -> usize {
-        match self {
-            BoxKind::Turning => 0,
-            BoxKind::Facing => 2,
-        }
-    }
-}
 
 /// The four legs of one box, from the start `a` to the end point `c` with taper `taper_mm`
 /// (radius for G90); the cut (step 2) and the way back (step 3) are feeds that carry 0 (the

@@ -48,6 +48,10 @@ pub struct Outcome {
     pub increment_words_small: u32,
     /// Records made by the block being executed (kept or not).
     pub(crate) emitted: usize,
+    /// A second G71/G72/G73 block asks for the contour blocks that follow it to be collected.
+    rough_request: Option<Box<RoughRequest>>,
+    /// G70 asks for a stored contour to be run.
+    finish_request: Option<FinishRequest>,
 }
 
 impl Outcome {
@@ -55,6 +59,8 @@ impl Outcome {
         self.records.clear();
         self.warnings.clear();
         self.emitted = 0;
+        self.rough_request = None;
+        self.finish_request = None;
     }
 }
 
@@ -135,7 +141,7 @@ impl Step<'_> {
                 Op::Feed { from, to, feed_mm_min }
             }
             Op::Arc { from, to, center, plane, dir, .. } => {
-                let feed_mm_min = match crate::time::arc_geom_of(&op) {
+                let feed_mm_min = match crate::geom::arc_geom_of(&op) {
                     Some(g) => self.cutting_feed(what, &|u| geom::arc_point(&from, &to, plane, dir, &g, u))?,
                     None => self.cutting_feed(what, &|u| lerp(&from, &to, u))?,
                 };
@@ -374,7 +380,7 @@ impl Interpreter {
         if let Some(last) = step.out.records.iter_mut().rev().find(|r| r.span == block.span) {
             last.block_end = true;
         }
-        if let Some(req) = self.state.rough_request.take() {
+        if let Some(req) = out.rough_request.take() {
             if self.replaying {
                 self.state = before;
                 out.clear();
@@ -382,7 +388,7 @@ impl Interpreter {
             }
             self.collecting = Some((*req, Vec::new()));
         }
-        if let Some(req) = self.state.finish_request.take() {
+        if let Some(req) = out.finish_request.take() {
             if let Err(d) = self.finish_contour(req, out) {
                 self.state = before;
                 out.clear();
@@ -567,7 +573,7 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
                 // The GSK lathe's G83/G87 (and G84/G88) are group 01 codes: they end the motion
                 // mode in force (its thread and box-cycle memories with it); G80 then leaves G00
                 // (docs).
-                if kind.gsk_group01() {
+                if kind.ends_motion_mode() {
                     codes.motion = Some((w.span, Motion::Rapid));
                 }
             }
@@ -605,7 +611,7 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
         // A group 01 code cancels a drilling cycle as G80 does (seed 003 8.1.4); a GSK lathe
         // cycle restated keeps its data, another one starts afresh (its bottom is on another
         // axis).
-        if !codes.drill.is_some_and(|k| k.gsk_group01() && step.st.drill.kind == Some(k)) {
+        if !codes.drill.is_some_and(|k| k.ends_motion_mode() && step.st.drill.kind == Some(k)) {
             let before = step.st.drill;
             step.st.drill = Default::default();
             if codes.drill.is_some_and(|k| k.rigid_tap()) {

@@ -127,14 +127,14 @@ pub(super) fn block(step: &mut Step, words: &mut Words, kind: RoughKind) -> Resu
             step.warn(Rule::NotSimulated, w.span, msg);
         }
     }
-    step.st.rough_request = Some(Box::new(RoughRequest { kind, span: step.span, ns, nf, allowance, depth_mm, back_off_mm, pattern, start: step.st.pos }));
+    step.out.rough_request = Some(Box::new(RoughRequest { kind, span: step.span, ns, nf, allowance, depth_mm, back_off_mm, pattern, start: step.st.pos }));
     Ok(())
 }
 
 /// G70 P(ns) Q(nf).
 pub(super) fn finishing(step: &mut Step, words: &mut Words) -> Result<(), Diagnostic> {
     let (ns, nf) = p_and_q(step, words, "G70")?;
-    step.st.finish_request = Some(FinishRequest { span: step.span, ns, nf, start: step.st.pos });
+    step.out.finish_request = Some(FinishRequest { span: step.span, ns, nf, start: step.st.pos });
     Ok(())
 }
 
@@ -231,7 +231,7 @@ impl Interpreter {
             }
             let mut step = Step { profile: self.profile, params: &self.params, repair: None, span: b.span, st: &mut st, out: &mut scratch };
             run_block(&mut step, b, self.switches)?;
-            if st.rough_request.is_some() || st.finish_request.is_some() {
+            if scratch.rough_request.is_some() || scratch.finish_request.is_some() {
                 return Err(self.contour_alarm(Rule::ContourCommand, b.span, format!("{code}: a contour block cannot call a cycle itself")));
             }
             if let Some(kind) = st.drill.kind {

@@ -3,7 +3,7 @@
 use super::common::{self, g, m};
 use super::{SETTINGS, DRY_RUN, QPoint, ThreadRules, GDef, GFn, Group, IntegerLengths, MDef, MFn, MachineKind, ParamDef, ParamKey, Profile, TimeKeys};
 use crate::alarm::AlarmStyle;
-use crate::cycles::drill::DrillKind;
+use crate::codes::DrillKind;
 
 
 const G_CODES: &[GDef] = &[

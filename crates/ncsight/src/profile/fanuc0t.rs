@@ -10,7 +10,7 @@ use super::{FANUC_RATES, Compound,
     ThreadRules, TimeKeys, DRY_RUN, SETTINGS,
 };
 use crate::alarm::AlarmStyle;
-use crate::cycles::drill::DrillKind;
+use crate::codes::DrillKind;
 
 const EXTRA: &[GDef] = &[
     g(32, Group::Motion, GFn::Thread(ThreadCmd::Lead), "thread cutting: F lead, Q start angle"),
@@ -18,8 +18,8 @@ const EXTRA: &[GDef] = &[
     g(76, Group::NonModal, GFn::CompoundThread(Compound::G76), "compound thread cutting cycle, two blocks"),
     g(34, Group::Motion, LATER_THREAD, "variable-lead thread cutting"),
     g(80, Group::CannedCycle, GFn::CycleCancel, "cancel a drilling cycle (group 10 on the FANUC)"),
-    g(83, Group::CannedCycle, GFn::Drill(DrillKind::FanucFace), "face drilling cycle (the cycle without Q)"),
-    g(87, Group::CannedCycle, GFn::Drill(DrillKind::FanucSide), "side drilling cycle (the cycle without Q)"),
+    g(83, Group::CannedCycle, GFn::Drill(DrillKind::FaceFromR), "face drilling cycle (the cycle without Q)"),
+    g(87, Group::CannedCycle, GFn::Drill(DrillKind::SideFromR), "side drilling cycle (the cycle without Q)"),
 ];
 
 const PARAMS: &[ParamDef] = &[

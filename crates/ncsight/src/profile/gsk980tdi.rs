@@ -4,7 +4,7 @@ use super::common::{self, g, gp};
 use super::lathe_a::{self, LATER_THREAD};
 use super::{Compound, G76Keys, SETTINGS, DRY_RUN, CycleKind, QPoint, ThreadCmd, ThreadRules, GDef, GFn, Group, IntegerLengths, MachineKind, ParamDef, ParamKey, Profile, TimeKeys};
 use crate::alarm::AlarmStyle;
-use crate::cycles::drill::DrillKind;
+use crate::codes::DrillKind;
 use crate::motion::ArcDir;
 
 const LATER_DRILL: GFn = GFn::NotYet("the lathe boring cycles (G85, G89) are not simulated by ncsight yet: the help text has no page for them");

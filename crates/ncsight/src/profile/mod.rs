@@ -115,21 +115,21 @@ pub enum GFn {
     /// G80 on a mill: cancel the canned cycle.
     CycleCancel,
     /// A drilling canned cycle (FANUC 0-M group 09).
-    Drill(crate::cycles::drill::DrillKind),
+    Drill(crate::codes::DrillKind),
     /// A thread-cutting command (group 01).
     Thread(ThreadCmd),
     /// G76 compound thread cutting, or the GSK980TDi G78 with its infeed modes: the two-block
     /// form (group 00).
     CompoundThread(Compound),
     /// G71 / G72 roughing on the lathes (group 00, two blocks, the contour blocks after them).
-    Rough(crate::cycles::rough::RoughKind),
+    Rough(crate::codes::RoughKind),
     /// G70 finishing along a contour roughed before (group 00).
     Finish,
     /// G74 / G75 on the lathes: peck cutting along one axis, stepping along the other, two
     /// blocks (group 00).
-    PeckCycle(crate::cycles::groove::PeckKind),
+    PeckCycle(crate::codes::PeckKind),
     /// G90 / G94: the single turning and facing cycles of the lathes (group 01).
-    BoxCycle(crate::cycles::turning::BoxKind),
+    BoxCycle(crate::codes::BoxKind),
     /// Known to the controller, not yet simulated: an alarm that says so.
     NotYet(&'static str),
     /// A reference-point code (G27, G29, G30) known to the controller, not yet simulated: an

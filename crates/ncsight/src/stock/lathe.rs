@@ -223,7 +223,7 @@ impl LatheStock {
                     return;
                 }
                 self.chuck_check(rec, &from, &to);
-                let g = crate::time::arc_geom_of(&rec.op).expect("a stored arc");
+                let g = crate::geom::arc_geom_of(&rec.op).expect("a stored arc");
                 let (plane, dir) = match rec.op {
                     Op::ThreadArc { plane, dir, .. } => (plane, dir),
                     _ => unreachable!(),
@@ -250,7 +250,7 @@ impl LatheStock {
             }
             Op::Arc { from, to, .. } if spindle_turning => {
                 self.chuck_check(rec, &from, &to);
-                let g = crate::time::arc_geom_of(&rec.op).expect("a stored arc");
+                let g = crate::geom::arc_geom_of(&rec.op).expect("a stored arc");
                 let (plane, dir) = match rec.op {
                     Op::Arc { plane, dir, .. } => (plane, dir),
                     _ => unreachable!(),
