@@ -86,3 +86,27 @@ fn imports_point_down_the_flow() {
     }
     assert!(wrong.is_empty(), "imports that run back up the flow:\n{}", wrong.join("\n"));
 }
+#[test]
+fn interp_and_cycles_name_no_controller() {
+    let mut all = Vec::new();
+    files(&src().join("interp"), &mut all);
+    files(&src().join("cycles"), &mut all);
+    let names = ["gsk", "fanuc", "yasnac", "tdi", "988t", "980t", "lx3", "0-m", "0-t"];
+    let mut found = Vec::new();
+    for f in &all {
+        let text = std::fs::read_to_string(f).unwrap();
+        for (n, line) in code_lines(&text) {
+            // Messages may cite a manual by name (a string); identifiers and parameter numbers
+            // may not name a controller.
+            let code: String = line.split('"').step_by(2).collect::<Vec<_>>().join(" ");
+            let lower = code.to_ascii_lowercase();
+            if let Some(name) = names.iter().find(|w| lower.contains(*w)) {
+                found.push(format!("{}:{n}: {name}: {}", f.strip_prefix(src()).unwrap().display(), line.trim()));
+            }
+            if code.contains("ParamKey::Number(") {
+                found.push(format!("{}:{n}: a parameter number in the code: {}", f.strip_prefix(src()).unwrap().display(), line.trim()));
+            }
+        }
+    }
+    assert!(found.is_empty(), "controller names or parameter numbers in interp/ or cycles/ (make them profile data):\n{}", found.join("\n"));
+}

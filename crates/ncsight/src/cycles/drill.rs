@@ -305,7 +305,7 @@ mod tests {
     /// GSK G83 from Z2 to Z-3, Q1: J0 backs off R 0.3 (clamped at the start), J1 goes back to
     /// the start and down to 0.3 short of the depth; dwell, then back to the start.
     #[test]
-    fn gsk_lathe_pecks_from_the_start() {
+    fn lathe_pecks_from_the_start() {
         let mut h = hole(DrillKind::FaceG83);
         h.from = [1.0, 0.0, 2.0];
         h.at = [1.0, 0.0];

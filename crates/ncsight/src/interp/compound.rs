@@ -1,7 +1,7 @@
 //! G76 and G78 compound thread cutting (two blocks), G33 tapping and G34 variable lead (GSK980TDi help
 //! text; G76 also FANUC 0-T). The passes are the shared four-step cycle and pull-out.
 
-use super::thread::{chamfer_of, gsk_jk_pull_out};
+use super::thread::{chamfer_of, jk_pull_out};
 use super::words::Words;
 use super::{axis_target, Step};
 use crate::alarm::{Diagnostic, Rule};
@@ -201,7 +201,7 @@ fn cut(step: &mut Step, words: &mut Words, name: &str, kind: Compound, data: G78
         let cut_end = Vec3::new(end_x, a.y, c.z);
         let retract = (a.x - end_x).abs();
         let pull_out = if base.j.is_some() || base.k.is_some() {
-            gsk_jk_pull_out(step, base.j, base.k, base.pull_out_tenths, lead, outward)
+            jk_pull_out(step, base.j, base.k, base.pull_out_tenths, lead, outward)
         } else {
             let angle = step.profile.thread.g76.and_then(|k| k.pull_out_angle).map(|k| step.params.get(k)).unwrap_or(0.0);
             chamfer_of(base.pull_out_tenths, angle, lead, outward)

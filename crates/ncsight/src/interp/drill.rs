@@ -252,7 +252,7 @@ fn bottom_in_force(step: &Step, code: &str, along: usize) -> Result<(f64, bool),
 /// P, rapid back to the initial level; K repeats (a FANUC lathe manual's format, quoted in
 /// docs/commands/g83_g87_lathe.md). The data stays until G80 or a group 01 code. With Q, the peck
 /// drilling of these cycles is not simulated (no FANUC 0-T text for it here).
-fn fanuc_lathe_block(step: &mut Step, words: &mut Words, kind: DrillKind) -> Result<(), Diagnostic> {
+fn lathe_from_r_block(step: &mut Step, words: &mut Words, kind: DrillKind) -> Result<(), Diagnostic> {
     let code = kind.code();
     let (place, along) = lathe_axes(step, kind)?;
     if step.st.drill.kind != Some(kind) {
@@ -416,7 +416,7 @@ pub(super) fn block(step: &mut Step, words: &mut Words, kind: DrillKind, enterin
         return from_start_block(step, words, kind);
     }
     if kind.on_lathe() {
-        return fanuc_lathe_block(step, words, kind);
+        return lathe_from_r_block(step, words, kind);
     }
     let plane = step.st.plane;
     let (a, b, n) = plane.axes();
@@ -514,20 +514,25 @@ pub(super) fn block(step: &mut Step, words: &mut Words, kind: DrillKind, enterin
             ));
         }
     }
+    let rules = step.profile.drill;
+    let um = |key: Option<ParamKey>| key.map_or(0.0, |k| step.params.get(k) * 0.001);
     let d_mm = match kind {
-        DrillKind::G73 => step.params.get(ParamKey::Number(531, None)) * 0.001,
-        DrillKind::G83 => step.params.get(ParamKey::Number(532, None)) * 0.001,
+        DrillKind::G73 => um(rules.g73_retract_um),
+        DrillKind::G83 => um(rules.g83_clearance_um),
         _ => 0.0,
     };
-    // Parameter 2 bits 5 and 4: 00 +X, 01 -X, 10 +Y, 11 -Y (BEHAVIOUR.md); X is the plane's
+    // The shift bits (high, low): 00 +X, 01 -X, 10 +Y, 11 -Y (docs/guide.md); X is the plane's
     // first axis and Y its second (exact in G17).
-    let shift_dir = if kind.shifts() {
-        let b4 = step.params.get(ParamKey::Number(2, Some(4))) != 0.0;
-        let b5 = step.params.get(ParamKey::Number(2, Some(5))) != 0.0;
-        let sign = if b4 { -1.0 } else { 1.0 };
-        if b5 { [0.0, sign] } else { [sign, 0.0] }
-    } else {
-        [0.0; 2]
+    let shift_dir = match rules.shift_bits {
+        Some((low, high)) if kind.shifts() => {
+            let b4 = step.params.get(low) != 0.0;
+            let b5 = step.params.get(high) != 0.0;
+            let sign = if b4 { -1.0 } else { 1.0 };
+            if b5 { [0.0, sign] } else { [sign, 0.0] }
+        }
+        // A profile without the bits shifts along +X.
+        None if kind.shifts() => [1.0, 0.0],
+        _ => [0.0; 2],
     };
     for k in 0..repeats {
         if k > 0 && step.st.incremental {

@@ -10,7 +10,7 @@ use crate::cycles::thread::cycle::{expand_cycle, Cycle};
 use crate::cycles::thread::{expand, phase_after, wrap_deg, Pass, PassError, PullOut, PullOutMode};
 use crate::modal::{PassMemory, PendingBody, PendingThread, SpindleDir};
 use crate::motion::{ArcDir, Hold, LongAxis, Op, ThreadHold, ThreadHoldStyle, Vec3};
-use crate::profile::{CycleKind, IntegerLengths, ParamKey, QPoint, ThreadCmd, MAX_RPM};
+use crate::profile::{CycleRules, HoldRule, IntegerLengths, JkWords, ParamKey, PullOutRule, QPoint, ThreadCmd, MAX_RPM};
 use crate::read::Word;
 
 /// Largest lead of a straight thread (seed 001 F table: 0.001-500 mm; TDc p143: 0 < F <= 500).
@@ -22,10 +22,9 @@ pub(super) fn name(cmd: ThreadCmd) -> &'static str {
     match cmd {
         ThreadCmd::Lead => "G32",
         ThreadCmd::Rigid => "G32.1",
-        ThreadCmd::Cycle(CycleKind::Gsk | CycleKind::Yasnac | CycleKind::Fanuc) => "G92",
+        ThreadCmd::Cycle(rules) => rules.code,
         ThreadCmd::Tap => "G33",
         ThreadCmd::VariableLead => "G34",
-        ThreadCmd::Cycle(CycleKind::GskRigid | CycleKind::TdiRigid) => "G92.1",
         ThreadCmd::Arc(ArcDir::Cw) => "G32.2",
         ThreadCmd::Arc(ArcDir::Ccw) => "G32.3",
     }
@@ -33,7 +32,11 @@ pub(super) fn name(cmd: ThreadCmd) -> &'static str {
 
 /// Whether the command is a rigid (servo spindle, S-signed) one.
 pub(super) fn is_rigid(cmd: ThreadCmd) -> bool {
-    matches!(cmd, ThreadCmd::Rigid | ThreadCmd::Cycle(CycleKind::GskRigid | CycleKind::TdiRigid))
+    match cmd {
+        ThreadCmd::Rigid => true,
+        ThreadCmd::Cycle(rules) => rules.rigid,
+        _ => false,
+    }
 }
 
 /// Whether a block of `cmd` may continue a run held in `pending` (same family, seed 001 G32.1
@@ -303,7 +306,7 @@ impl Step<'_> {
 pub(super) fn block(step: &mut Step, words: &mut Words, cmd: ThreadCmd, explicit: bool, run_deg: Option<f64>) -> Result<(), Diagnostic> {
     match cmd {
         ThreadCmd::Lead | ThreadCmd::Rigid => straight(step, words, cmd, run_deg),
-        ThreadCmd::Cycle(kind) => cycle(step, words, kind, explicit),
+        ThreadCmd::Cycle(rules) => cycle(step, words, rules, explicit),
         ThreadCmd::Arc(dir) => arc(step, words, dir, run_deg),
         ThreadCmd::Tap => super::compound::tap(step, words),
         ThreadCmd::VariableLead => super::compound::variable_lead(step, words, run_deg),
@@ -438,13 +441,12 @@ fn arc(step: &mut Step, words: &mut Words, dir: ArcDir, run_deg: Option<f64>) ->
 }
 
 /// G92 (seed 000; seed 004 for the YASNAC) and G92.1 (seed 001 section 3).
-fn cycle(step: &mut Step, words: &mut Words, kind: CycleKind, explicit: bool) -> Result<(), Diagnostic> {
-    let cmd = ThreadCmd::Cycle(kind);
-    let gname = name(cmd);
+fn cycle(step: &mut Step, words: &mut Words, rules: &'static CycleRules, explicit: bool) -> Result<(), Diagnostic> {
+    let gname = rules.code;
     // GSK980TDi G92.1: "F > 0 right hand, F < 0 left hand": the spindle turns the other way.
     let mut hand = 1.0;
     let mut left_lead = None;
-    if kind == CycleKind::TdiRigid {
+    if rules.negative_f_left_hand {
         if let Some(w) = words.peek(b'F').filter(|w| w.value < 0.0) {
             hand = -1.0;
             let mut positive = *w;
@@ -452,33 +454,32 @@ fn cycle(step: &mut Step, words: &mut Words, kind: CycleKind, explicit: bool) ->
             words.take(b'F');
             let lead = step.lead_word(&positive);
             if lead > MAX_LEAD_MM {
-                return Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("{}: the lead of G92.1 must be at most {MAX_LEAD_MM} mm", w.text())));
+                return Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("{}: the lead of {gname} must be at most {MAX_LEAD_MM} mm", w.text())));
             }
             step.st.feed = Some(lead);
             step.st.thread.lead_mm = None;
             left_lead = Some(lead);
         }
     }
-    let lead = match (left_lead, kind) {
-        (Some(l), _) => l,
-        (None, CycleKind::Gsk | CycleKind::TdiRigid) => step.read_lead(words, gname, true, false, MAX_LEAD_MM)?,
-        (None, CycleKind::GskRigid | CycleKind::Fanuc) => step.read_lead(words, gname, false, false, MAX_LEAD_MM)?,
-        (None, CycleKind::Yasnac) => step.read_lead(words, gname, false, true, MAX_LEAD_MM)?,
+    let lead = match left_lead {
+        Some(l) => l,
+        None => step.read_lead(words, gname, rules.lead_i, rules.lead_e, MAX_LEAD_MM)?,
     };
-    let repair_word = if matches!(kind, CycleKind::Gsk | CycleKind::TdiRigid) { words.take(b'P') } else { None };
+    let repair_word = if rules.repair_p { words.take(b'P') } else { None };
     if let Some(w) = repair_word {
         let enabled = step.profile.thread.repair_enable.is_some_and(|k| step.params.get(k) != 0.0);
         let wants = !w.decimal && w.value == 1.0;
         if wants && !enabled {
             // Help note 1: with repair disabled, P1 is ignored.
-            let msg = format!("{}: ignored, thread repair is off (parameter No.174 bit 4 = 0)", w.text());
+            let key = step.profile.thread.repair_enable.map(|k| k.to_string()).unwrap_or_default();
+            let msg = format!("{}: ignored, thread repair is off (parameter {key} = 0)", w.text());
             step.warn(Rule::TextIgnored, w.span, msg);
         }
         // Help note 2: P other than 1 does no repair.
         step.st.thread.repair = wants && enabled;
     }
     // L: number of starts, 1-99, modal (seed 000; seed 001 G92.1).
-    if !matches!(kind, CycleKind::Yasnac | CycleKind::Fanuc) {
+    if rules.starts_l {
         if let Some(w) = words.take(b'L') {
             if w.decimal || !(1.0..=99.0).contains(&w.value) {
                 return Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("{}: the number of starts L is a whole number 1 to 99", w.text())));
@@ -487,40 +488,31 @@ fn cycle(step: &mut Step, words: &mut Words, kind: CycleKind, explicit: bool) ->
         }
     }
     let mut flank_mm = 0.0;
-    match kind {
-        CycleKind::Gsk => {
-            // Seed 000 note 10: negative J, K count as positive.
-            step.read_jk(words, gname, true, true)?;
-        }
-        CycleKind::GskRigid => {
-            // Seed 001 G92.1: J "cannot be less than zero"; K in G32.1's range (0 or more).
-            step.read_jk(words, gname, false, false)?;
-        }
-        CycleKind::TdiRigid | CycleKind::Fanuc => {}
-        CycleKind::Yasnac => {
-            // Seed 004 (4): K, with its sign, shifts this pass's start along Z (flank infeed).
-            if let Some(w) = words.take(b'K') {
-                flank_mm = step.length(w)?;
-            }
+    match rules.jk {
+        // Seed 000 note 10: negative J, K count as positive.
+        JkWords::SignIgnored => step.read_jk(words, gname, true, true).map(|_| ())?,
+        // Seed 001 G92.1: J "cannot be less than zero"; K in G32.1's range (0 or more).
+        JkWords::NonNegative => step.read_jk(words, gname, false, false).map(|_| ())?,
+        JkWords::None => {}
+    }
+    if rules.flank_k {
+        // Seed 004 (4): K, with its sign, shifts this pass's start along Z (flank infeed).
+        if let Some(w) = words.take(b'K') {
+            flank_mm = step.length(w)?;
         }
     }
-    if kind == CycleKind::Yasnac {
+    if rules.ts_before {
         if let Some(w) = [b'T', b'S'].iter().find_map(|l| words.peek(*l)) {
             // Seed 004 (5) a: T, S and M for G92 come in the blocks before the cycle.
-            let msg = format!("{}: the LX3 manual asks for T, S and M of a G92 cycle in the blocks before it", w.text());
+            let msg = format!("{}: the manual asks for T, S and M of a {gname} cycle in the blocks before it", w.text());
             step.warn(Rule::CycleWords, w.span, msg);
         }
     }
-    let q = if matches!(kind, CycleKind::GskRigid | CycleKind::Fanuc) { step.read_q(words, 0.001, false)? } else { None };
-    let rpm = match kind {
-        CycleKind::GskRigid => step.rigid_rpm(words, gname)?,
-        // Help note 6: the interpolation type needs the servo spindle in position mode.
-        CycleKind::TdiRigid => hand * step.rigid_rpm(words, gname)?,
-        _ => step.follow_rpm(gname)?,
-    };
-    // Taper: R on GSK, I on the YASNAC; radius, cut start minus cut end.
-    let taper_letter = if kind == CycleKind::Yasnac { b'I' } else { b'R' };
-    let taper_word = words.take(taper_letter);
+    let q = if rules.q_start { step.read_q(words, 0.001, false)? } else { None };
+    // Help note 6 (G92.1): the interpolation type needs the servo spindle in position mode.
+    let rpm = if rules.rigid { hand * step.rigid_rpm(words, gname)? } else { step.follow_rpm(gname)? };
+    // Taper: R on GSK and FANUC, I on the YASNAC; radius, cut start minus cut end.
+    let taper_word = words.take(rules.taper);
     let a = step.st.pos;
     let given_z = words.has(b'Z') || words.has(b'W');
     let given_x = words.has(b'X') || words.has(b'U');
@@ -555,7 +547,7 @@ fn cycle(step: &mut Step, words: &mut Words, kind: CycleKind, explicit: bool) ->
             format!("{gname}: the end point has the start point's Z, a face thread, which {gname} cannot cut (GSK980TDi manual, G92)"),
         ));
     }
-    if kind != CycleKind::Yasnac {
+    if rules.taper_limit {
         // Seed 000 / seed 001: when R and U differ in sign, |R| <= |U/2|.
         let u_radius = c.x - a.x;
         if taper != 0.0 && u_radius != 0.0 && taper.signum() != u_radius.signum() && taper.abs() > u_radius.abs() + 1e-9 {
@@ -579,14 +571,19 @@ fn cycle(step: &mut Step, words: &mut Words, kind: CycleKind, explicit: bool) ->
         let d = a.axis(s) - c.axis(s);
         if d != 0.0 { d.signum() } else if c.axis(s) < 0.0 { -1.0 } else { 1.0 }
     };
-    let pull_out = match kind {
-        CycleKind::Gsk => gsk_pull_out(step, lead, toward_start),
-        CycleKind::GskRigid => gsk_rigid_pull_out(step, lead, toward_start),
-        // FANUC 0-T: the chamfer of parameters 5130/5131 (no J/K words).
-        CycleKind::Fanuc => chamfer_pull_out(step, lead, toward_start, ParamKey::Number(5130, None), Some(ParamKey::Number(5131, None))),
+    let pull_out = match rules.pull_out {
+        // Seed 000 notes 2-7 and 10: J/K, No.19 for what is omitted.
+        PullOutRule::JkTenths(tenths) => {
+            let tenths = step.params.get(tenths);
+            jk_pull_out(step, step.st.thread.j, step.st.thread.k, tenths, lead, toward_start)
+        }
+        // Seed 001 G92.1 notes 1-6.
+        PullOutRule::JkChamfer { amount, angle } => jk_chamfer_pull_out(step, lead, toward_start, amount, angle),
+        // FANUC 0-T: the chamfer of its parameters (no J/K words).
+        PullOutRule::Chamfer { amount, angle } => chamfer_pull_out(step, lead, toward_start, amount, Some(angle)),
         // Seed 004 describes no thread chamfer for the LX3 G92; the GSK980TDi G92.1 stops feed
-        // axes and spindle together at the end point (help text, step 2): none.
-        CycleKind::Yasnac | CycleKind::TdiRigid => None,
+        // axes and spindle together at the end point (help text, step 2).
+        PullOutRule::None => None,
     };
     // Seed 001 G92.1 note 11, applied to G92 too (BEHAVIOUR.md): J at most the retract distance.
     let pull_out = pull_out.map(|mut p| {
@@ -615,17 +612,17 @@ fn cycle(step: &mut Step, words: &mut Words, kind: CycleKind, explicit: bool) ->
     let spec = Cycle { start: a, cut_start, cut_end: c, lead_mm: lead, rpm, starts: step.st.thread.starts, first_deg, pull_out };
     let ops = expand_cycle(&spec).map_err(|e| step.pass_error(gname, e))?;
     // The thread hold of the cycle (seed 000 note 1; seed 004; seed 001 G92.1 note 7).
-    let hold = match kind {
-        CycleKind::Gsk => {
-            let finish = step.params.get(ParamKey::Number(18, Some(6))) != 0.0;
+    let hold = match rules.hold {
+        HoldRule::PullOutOrFinish(bit) => {
+            let finish = step.params.get(bit) != 0.0;
             let (long, short) = pull_out.map(|p| (p.long_mm, p.short_mm)).unwrap_or((0.0, 0.0));
             let style = if finish { ThreadHoldStyle::FinishThenStop } else { ThreadHoldStyle::PullOutAndReturn };
             Hold::ThreadCycle(ThreadHold { style, start: a, pull_long_mm: long, pull_short_mm: short })
         }
-        CycleKind::Yasnac => {
+        HoldRule::ThreadUp(bit) => {
             // "Threading up": the LX3 excerpt gives no amount; one lead at 45 degrees, within the
             // retract distance (docs/commands/operator.md).
-            let stop_at_b = step.params.get(ParamKey::Number(6019, Some(7))) != 0.0;
+            let stop_at_b = step.params.get(bit) != 0.0;
             let style = if stop_at_b { ThreadHoldStyle::ThreadUpAndStop } else { ThreadHoldStyle::ThreadUpAndReturn };
             let up = lead.min(retract);
             Hold::ThreadCycle(ThreadHold { style, start: a, pull_long_mm: up, pull_short_mm: up })
@@ -633,9 +630,9 @@ fn cycle(step: &mut Step, words: &mut Words, kind: CycleKind, explicit: bool) ->
         // FANUC 0-T without the thread-cutting retract option: the thread finishes first
         // (assumption, docs/commands/operator.md).
         // GSK988T G92.1 note 7: a press during the thread does nothing (the cycle's rapids stop).
-        CycleKind::GskRigid => Hold::Ignored,
+        HoldRule::Ignored => Hold::Ignored,
         // GSK980TDi help text, G92.1 note 3: the thread is finished, then the run pauses.
-        CycleKind::TdiRigid | CycleKind::Fanuc => Hold::AfterRun,
+        HoldRule::AfterRun => Hold::AfterRun,
     };
     let mut last_start = None;
     for (k, op) in ops {
@@ -664,15 +661,8 @@ fn cycle(step: &mut Step, words: &mut Words, kind: CycleKind, explicit: bool) ->
     Ok(())
 }
 
-/// Seed 000 notes 2-7 and 10 (G92 on the GSK980TDi).
-fn gsk_pull_out(step: &Step, lead: f64, sign: f64) -> Option<PullOut> {
-    // No.19: pull-out width in 0.1 x lead.
-    let no19 = step.params.get(ParamKey::Number(19, None));
-    gsk_jk_pull_out(step, step.st.thread.j, step.st.thread.k, no19, lead, sign)
-}
-
 /// Seed 000's J/K rules with `tenths` (No.19, or G76's r) for what is omitted.
-pub(super) fn gsk_jk_pull_out(step: &Step, j: Option<f64>, k: Option<f64>, tenths: f64, lead: f64, sign: f64) -> Option<PullOut> {
+pub(super) fn jk_pull_out(step: &Step, j: Option<f64>, k: Option<f64>, tenths: f64, lead: f64, sign: f64) -> Option<PullOut> {
     let (j, k) = (j.map(f64::abs), k.map(f64::abs));
     let no19 = tenths * 0.1 * lead;
     let (long, short) = match (j, k) {
@@ -702,13 +692,13 @@ pub(super) fn chamfer_of(tenths: f64, angle_deg: f64, lead: f64, sign: f64) -> O
     (short > 0.0).then_some(PullOut { long_mm: long, short_mm: short, short_sign: sign, mode: PullOutMode::Ratio, after_end_feed: None })
 }
 
-/// Seed 001 G92.1 notes 1-6 (GSK988T).
-fn gsk_rigid_pull_out(step: &Step, lead: f64, sign: f64) -> Option<PullOut> {
+/// Seed 001 G92.1 notes 1-6 (GSK988T): J/K, the chamfer parameters for what is omitted.
+fn jk_chamfer_pull_out(step: &Step, lead: f64, sign: f64, amount: ParamKey, angle: ParamKey) -> Option<PullOut> {
     let (j, k) = (step.st.thread.j, step.st.thread.k);
-    let chamfer = step.params.get(ParamKey::Number(5130, None)) * 0.1 * lead;
+    let chamfer = step.params.get(amount) * 0.1 * lead;
     let after_end = |j: f64| PullOut { long_mm: 0.0, short_mm: j, short_sign: sign, mode: PullOutMode::Ratio, after_end_feed: Some(step.after_end_feed()) };
     let (long, short) = match (j, k) {
-        (None, None) => return chamfer_pull_out(step, lead, sign, ParamKey::Number(5130, None), Some(ParamKey::Number(5131, None))), // note 1
+        (None, None) => return chamfer_pull_out(step, lead, sign, amount, Some(angle)), // note 1
         (None, Some(k)) => (k, chamfer), // note 2
         (Some(j), _) if j == 0.0 => return None,   // notes 5 and 6
         (Some(j), None) => return Some(after_end(j)), // note 3

@@ -140,6 +140,11 @@ pub static PROFILE: Profile = Profile {
         feed_max: ParamKey::Number(527, None),
     },
     thread: ThreadRules { q_point: QPoint::Alarm, arc_q_unit_deg: 0.001, pull_out_speed: None, after_end_feed: None, pull_out_accel: None, repair_enable: None, g32_pull_out: false, g76: None },
+    drill: super::DrillRules {
+        g73_retract_um: Some(ParamKey::Number(531, None)),
+        g83_clearance_um: Some(ParamKey::Number(532, None)),
+        shift_bits: Some((ParamKey::Number(2, Some(4)), ParamKey::Number(2, Some(5)))),
+    },
     summary: "FANUC 0-M machining centre. G90/G91, G17 at power on. Lengths without a decimal point \
 are least input increments (X100 = 0.1 mm), F without a point is mm/min.",
 };

@@ -6,15 +6,36 @@
 use super::common::{self, g};
 use super::lathe_a::{self, LATER_THREAD};
 use super::{FANUC_RATES, Compound, 
-    CycleKind, G76Keys, GDef, GFn, Group, IntegerLengths, MachineKind, ParamDef, ParamKey, Profile, QPoint, ThreadCmd,
+    CycleRules, HoldRule, JkWords, PullOutRule, G76Keys, GDef, GFn, Group, IntegerLengths, MachineKind, ParamDef, ParamKey, Profile, QPoint, ThreadCmd,
     ThreadRules, TimeKeys, DRY_RUN, SETTINGS,
 };
 use crate::alarm::AlarmStyle;
 use crate::codes::DrillKind;
 
+/// G92 (FANUC 0i-T, inferred): R taper, F lead, Q start angle; the thread chamfer of parameters
+/// 5130/5131 (no J/K words); without the thread-cutting retract option FEED HOLD waits for the
+/// thread's end (docs/commands/operator.md).
+static G92: CycleRules = CycleRules {
+    code: "G92",
+    rigid: false,
+    negative_f_left_hand: false,
+    lead_i: false,
+    lead_e: false,
+    repair_p: false,
+    starts_l: false,
+    jk: JkWords::None,
+    flank_k: false,
+    ts_before: false,
+    q_start: true,
+    taper: b'R',
+    taper_limit: true,
+    pull_out: PullOutRule::Chamfer { amount: ParamKey::Number(5130, None), angle: ParamKey::Number(5131, None) },
+    hold: HoldRule::AfterRun,
+};
+
 const EXTRA: &[GDef] = &[
     g(32, Group::Motion, GFn::Thread(ThreadCmd::Lead), "thread cutting: F lead, Q start angle"),
-    g(92, Group::Motion, GFn::Thread(ThreadCmd::Cycle(CycleKind::Fanuc)), "thread cutting cycle: R taper, F lead, Q start angle"),
+    g(92, Group::Motion, GFn::Thread(ThreadCmd::Cycle(&G92)), "thread cutting cycle: R taper, F lead, Q start angle"),
     g(76, Group::NonModal, GFn::CompoundThread(Compound::G76), "compound thread cutting cycle, two blocks"),
     g(34, Group::Motion, LATER_THREAD, "variable-lead thread cutting"),
     g(80, Group::CannedCycle, GFn::CycleCancel, "cancel a drilling cycle (group 10 on the FANUC)"),
@@ -130,6 +151,7 @@ pub static PROFILE: Profile = Profile {
             pull_out_angle: Some(ParamKey::Number(5131, None)),
         }),
     },
+    drill: super::DrillRules::NONE,
     summary: "FANUC 0-T turning centre, G-code system A. X is a diameter, U/W incremental; lengths without \
 a decimal point are least input increments (X100 = 0.1 mm, X1 = 0.0001 inch under G20). Feed per \
 revolution (G99) at power on.",

@@ -2,7 +2,7 @@
 
 use super::common::{self, g, gp};
 use super::lathe_a::{self, LATER_THREAD};
-use super::{Compound, G76Keys, SETTINGS, DRY_RUN, CycleKind, QPoint, ThreadCmd, ThreadRules, GDef, GFn, Group, IntegerLengths, MachineKind, ParamDef, ParamKey, Profile, TimeKeys};
+use super::{Compound, G76Keys, SETTINGS, DRY_RUN, CycleRules, HoldRule, JkWords, PullOutRule, QPoint, ThreadCmd, ThreadRules, GDef, GFn, Group, IntegerLengths, MachineKind, ParamDef, ParamKey, Profile, TimeKeys};
 use crate::alarm::AlarmStyle;
 use crate::codes::DrillKind;
 use crate::motion::ArcDir;
@@ -12,16 +12,58 @@ const LATER_DRILL: GFn = GFn::NotYet("the lathe boring cycles (G85, G89) are not
 /// M29 S_: rigid tapping mode (help text G84/88).
 const TAPPING_M: &[super::MDef] = &[super::MDef { code: 29, function: super::MFn::RigidTapping, meaning: "rigid tapping mode: with S, before G84/G88" }];
 
+/// G92 (GSK980TDi manual, G92): R taper, F lead or I threads per inch, J/K pull-out with No.19
+/// for what is omitted (note 10: negative J, K count as positive), L starts, P1 repair; FEED HOLD
+/// by NO.0018 bit 6 (note 1).
+static G92: CycleRules = CycleRules {
+    code: "G92",
+    rigid: false,
+    negative_f_left_hand: false,
+    lead_i: true,
+    lead_e: false,
+    repair_p: true,
+    starts_l: true,
+    jk: JkWords::SignIgnored,
+    flank_k: false,
+    ts_before: false,
+    q_start: false,
+    taper: b'R',
+    taper_limit: true,
+    pull_out: PullOutRule::JkTenths(ParamKey::Number(19, None)),
+    hold: HoldRule::PullOutOrFinish(ParamKey::Number(18, Some(6))),
+};
+
+/// G92.1 (help text): R, F (negative: left hand) or I, L, P, S; no J, K, Q; the feed axes and
+/// the spindle stop together at the end point (no pull-out); FEED HOLD waits for the thread's
+/// end (note 3).
+static G92_1: CycleRules = CycleRules {
+    code: "G92.1",
+    rigid: true,
+    negative_f_left_hand: true,
+    lead_i: true,
+    lead_e: false,
+    repair_p: true,
+    starts_l: true,
+    jk: JkWords::None,
+    flank_k: false,
+    ts_before: false,
+    q_start: false,
+    taper: b'R',
+    taper_limit: true,
+    pull_out: PullOutRule::None,
+    hold: HoldRule::AfterRun,
+};
+
 const EXTRA: &[GDef] = &[
     g(32, Group::Motion, GFn::Thread(ThreadCmd::Lead), "thread cutting: F lead or I threads per inch, J/K pull-out, Q start angle"),
-    g(92, Group::Motion, GFn::Thread(ThreadCmd::Cycle(CycleKind::Gsk)), "thread cutting cycle (GSK980TDi manual, G92)"),
+    g(92, Group::Motion, GFn::Thread(ThreadCmd::Cycle(&G92)), "thread cutting cycle (GSK980TDi manual, G92)"),
     gp(32, 1, Group::Motion, LATER_THREAD, "rigid thread cutting (GSK980TDi form with C)"),
     gp(32, 2, Group::Motion, GFn::Thread(ThreadCmd::Arc(ArcDir::Cw)), "arc thread, clockwise"),
     gp(32, 3, Group::Motion, GFn::Thread(ThreadCmd::Arc(ArcDir::Ccw)), "arc thread, counter-clockwise"),
     g(76, Group::NonModal, GFn::CompoundThread(Compound::G76), "compound thread cutting cycle, two blocks"),
     g(33, Group::Motion, GFn::Thread(ThreadCmd::Tap), "tapping: in, spindle reversed, out (help text)"),
     g(34, Group::Motion, GFn::Thread(ThreadCmd::VariableLead), "variable-lead thread cutting"),
-    gp(92, 1, Group::Motion, GFn::Thread(ThreadCmd::Cycle(CycleKind::TdiRigid)), "rigid thread cutting cycle (help text: R F L P S)"),
+    gp(92, 1, Group::Motion, GFn::Thread(ThreadCmd::Cycle(&G92_1)), "rigid thread cutting cycle (help text: R F L P S)"),
     GDef { major: 80, minor: None, group: Group::Motion, function: GFn::CycleCancel, meaning: "cancel a drilling cycle" },
     GDef { major: 83, minor: None, group: Group::Motion, function: GFn::Drill(DrillKind::FaceG83), meaning: "end face peck drilling cycle" },
     GDef { major: 84, minor: None, group: Group::Motion, function: GFn::Drill(DrillKind::TapFace), meaning: "end face rigid tapping cycle (after M29 S_)" },
@@ -168,6 +210,7 @@ pub static PROFILE: Profile = Profile {
         feed_max: ParamKey::Number(27, None),
     },
     thread: ThreadRules { q_point: QPoint::Ignored, arc_q_unit_deg: 0.001, pull_out_speed: Some(ParamKey::Number(107, None)), after_end_feed: None, pull_out_accel: None, repair_enable: Some(ParamKey::Number(174, Some(4))), g32_pull_out: true, g76: Some(G76Keys { finishing: ParamKey::Number(57, None), pull_out: ParamKey::Number(19, None), angle: ParamKey::Number(58, None), dmin_um: ParamKey::Number(59, None), allowance: ParamKey::Number(60, None), allowance_to_mm: 1.0, pull_out_angle: None }) },
+    drill: super::DrillRules::NONE,
     summary: "GSK980TDi turning centre. X is a diameter, U/W incremental. Lengths without a decimal \
 point are millimetres (seed 000's O0012: Z-28, F3, J3 K1). Feed per minute (G98) at power on.",
 };

@@ -4,9 +4,30 @@
 
 use super::common::{self, g, gp};
 use super::lathe_a::{self, LATER_G76, LATER_THREAD};
-use super::{FANUC_RATES, SETTINGS, CycleKind, GFn, QPoint, ThreadCmd, ThreadRules, GDef, Group, IntegerLengths, MachineKind, ParamDef, ParamKey, Profile, TimeKeys};
+use super::{FANUC_RATES, SETTINGS, CycleRules, HoldRule, JkWords, PullOutRule, GFn, QPoint, ThreadCmd, ThreadRules, GDef, Group, IntegerLengths, MachineKind, ParamDef, ParamKey, Profile, TimeKeys};
 use crate::alarm::AlarmStyle;
 use crate::motion::ArcDir;
+
+/// G92.1 (GSK988T manual, G92.1): S, Q, L; J not below zero, K 0 or more; the pull-out of
+/// parameters 5130/5131 for what J/K omit (notes 1-6); FEED HOLD discarded during the thread
+/// (note 7).
+static G92_1: CycleRules = CycleRules {
+    code: "G92.1",
+    rigid: true,
+    negative_f_left_hand: false,
+    lead_i: false,
+    lead_e: false,
+    repair_p: false,
+    starts_l: true,
+    jk: JkWords::NonNegative,
+    flank_k: false,
+    ts_before: false,
+    q_start: true,
+    taper: b'R',
+    taper_limit: true,
+    pull_out: PullOutRule::JkChamfer { amount: ParamKey::Number(5130, None), angle: ParamKey::Number(5131, None) },
+    hold: HoldRule::Ignored,
+};
 
 const EXTRA: &[GDef] = &[
     g(76, Group::NonModal, LATER_G76, "compound thread cutting cycle"),
@@ -15,7 +36,7 @@ const EXTRA: &[GDef] = &[
     gp(32, 1, Group::Motion, GFn::Thread(ThreadCmd::Rigid), "rigid thread cutting (GSK988T manual)"),
     gp(32, 2, Group::Motion, GFn::Thread(ThreadCmd::Arc(ArcDir::Cw)), "arc thread, clockwise (GSK988T manual, G32.2/G32.3)"),
     gp(32, 3, Group::Motion, GFn::Thread(ThreadCmd::Arc(ArcDir::Ccw)), "arc thread, counter-clockwise (GSK988T manual, G32.2/G32.3)"),
-    gp(92, 1, Group::Motion, GFn::Thread(ThreadCmd::Cycle(CycleKind::GskRigid)), "rigid thread cutting cycle (GSK988T manual)"),
+    gp(92, 1, Group::Motion, GFn::Thread(ThreadCmd::Cycle(&G92_1)), "rigid thread cutting cycle (GSK988T manual)"),
 ];
 
 const PARAMS: &[ParamDef] = &[
@@ -102,6 +123,7 @@ pub static PROFILE: Profile = Profile {
         feed_max: ParamKey::Number(1422, None),
     },
     thread: ThreadRules { q_point: QPoint::Alarm, arc_q_unit_deg: 1.0, pull_out_speed: None, after_end_feed: Some(ParamKey::Number(1466, None)), pull_out_accel: Some(ParamKey::Number(1628, None)), repair_enable: Some(ParamKey::Number(8135, Some(7))), g32_pull_out: true, g76: None },
+    drill: super::DrillRules::NONE,
     summary: "GSK988T turning centre with a servo (CS) spindle: M14 position mode, M15 speed mode. \
 X is a diameter, U/W incremental; lengths without a decimal point are millimetres.",
 };

@@ -155,8 +155,8 @@ pub enum ThreadCmd {
     Lead,
     /// G32.1 rigid thread cutting on the GSK988T (seed 001 section 2).
     Rigid,
-    /// A four-step thread-cutting cycle.
-    Cycle(CycleKind),
+    /// A four-step thread-cutting cycle, with the rules of its controller's manual.
+    Cycle(&'static CycleRules),
     /// G32.2 (clockwise) and G32.3 (counter-clockwise) arc threads (seed 002).
     Arc(crate::motion::ArcDir),
     /// G33 on the GSK980TDi: tapping, in and out with the spindle reversed (help text).
@@ -165,20 +165,74 @@ pub enum ThreadCmd {
     VariableLead,
 }
 
-/// Which manual's four-step cycle.
+/// The rules of a four-step thread-cutting cycle (G92, G92.1) as a manual gives them: which
+/// words it takes, how it pulls out, what FEED HOLD does. A profile fills one in per cycle code;
+/// the interpreter asks it and never which controller it is.
+#[derive(Debug, PartialEq, Eq)]
+pub struct CycleRules {
+    /// The code as a message names it (`G92`, `G92.1`).
+    pub code: &'static str,
+    /// Spindle-synchronised (rigid): the spindle in position mode, its speed from S.
+    pub rigid: bool,
+    /// A negative F is a left-hand thread: the spindle turns the other way.
+    pub negative_f_left_hand: bool,
+    /// Besides F: I threads per inch, E a lead.
+    pub lead_i: bool,
+    pub lead_e: bool,
+    /// P1 repairs the thread (thread repair enabled by the profile's parameter).
+    pub repair_p: bool,
+    /// L: the number of starts, 1-99, modal.
+    pub starts_l: bool,
+    pub jk: JkWords,
+    /// K shifts this pass's start along Z with its sign (flank infeed).
+    pub flank_k: bool,
+    /// T and S belong in the blocks before the cycle: a warning when the cycle block has them.
+    pub ts_before: bool,
+    /// Q: the start angle in 0.001 degree.
+    pub q_start: bool,
+    /// The taper's address (`R` or `I`): radius, cut start minus cut end.
+    pub taper: u8,
+    /// The taper may not exceed |U/2| where it differs from U in sign.
+    pub taper_limit: bool,
+    pub pull_out: PullOutRule,
+    pub hold: HoldRule,
+}
+
+/// The J and K words of a cycle.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum CycleKind {
-    /// G92 on the GSK980TDi (seed 000): R taper, J/K pull-out with No.19 / No.107, L starts.
-    Gsk,
-    /// G92.1 on the GSK988T (seed 001 section 3): S, Q, L, pull-out by 5130/5131.
-    GskRigid,
-    /// G92 on the YASNAC LX3 (seed 004): I taper, K flank infeed, E lead.
-    Yasnac,
-    /// G92 on the FANUC 0-T: R taper, F lead, Q start angle, chamfer by 5130/5131.
-    Fanuc,
-    /// G92.1 on the GSK980TDi (help text): R, F (negative: left hand), L, P, S; no J, K, Q, and
-    /// the feed axes and the spindle stop together at the end point (no pull-out).
-    TdiRigid,
+pub enum JkWords {
+    None,
+    /// Negative J and K count as positive.
+    SignIgnored,
+    /// J and K are 0 or more.
+    NonNegative,
+}
+
+/// How a cycle's thread pulls out at its end.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum PullOutRule {
+    /// The feed axes and the spindle stop together at the end point.
+    None,
+    /// J and K, the parameter (in 0.1 x lead) for what is omitted.
+    JkTenths(ParamKey),
+    /// J and K, the chamfer parameters (amount in 0.1 x lead, angle) for what is omitted, a J
+    /// without K straight out after the end point.
+    JkChamfer { amount: ParamKey, angle: ParamKey },
+    /// The chamfer parameters only (no J/K words).
+    Chamfer { amount: ParamKey, angle: ParamKey },
+}
+
+/// What FEED HOLD does during the thread of a cycle.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum HoldRule {
+    /// Pull out at once and return to the start, or (the bit = 1) finish the thread first.
+    PullOutOrFinish(ParamKey),
+    /// Thread up at once and return to the start, or (the bit = 1) stop where threading up ends.
+    ThreadUp(ParamKey),
+    /// The press is discarded.
+    Ignored,
+    /// The thread and its pull-out are finished, then the stop.
+    AfterRun,
 }
 
 /// How a decimal point in the thread start angle Q is treated (BEHAVIOUR.md).
@@ -188,6 +242,23 @@ pub enum QPoint {
     Alarm,
     /// GSK980TDi: the point is ignored, `Q180.0` is 0.18 degrees (TDi p150); a warning says so.
     Ignored,
+}
+
+/// The parameters the drilling canned cycles read.
+#[derive(Debug, Clone, Copy)]
+pub struct DrillRules {
+    /// G73's retract d, in 0.001 mm (FANUC 0-M 531).
+    pub g73_retract_um: Option<ParamKey>,
+    /// G83's clearance d above the previous depth, in 0.001 mm (FANUC 0-M 532).
+    pub g83_clearance_um: Option<ParamKey>,
+    /// The G76/G87 shift direction bits (low, high): (high, low) 00 = +X, 01 = -X, 10 = +Y,
+    /// 11 = -Y (FANUC 0-M parameter 2 bits 4 and 5).
+    pub shift_bits: Option<(ParamKey, ParamKey)>,
+}
+
+impl DrillRules {
+    /// A profile without those cycles' parameters.
+    pub const NONE: DrillRules = DrillRules { g73_retract_um: None, g83_clearance_um: None, shift_bits: None };
 }
 
 /// Thread facts of a profile.
@@ -455,6 +526,7 @@ pub struct Profile {
     pub params: &'static [&'static [ParamDef]],
     pub time: TimeKeys,
     pub thread: ThreadRules,
+    pub drill: DrillRules,
     /// One paragraph for `ncsight machines`.
     pub summary: &'static str,
 }

@@ -3,13 +3,34 @@
 
 use super::common::{self, g};
 use super::lathe_a::{self, LATER_G76, LATER_THREAD};
-use super::{SETTINGS, DRY_RUN, CycleKind, GDef, GFn, Group, QPoint, ThreadCmd, ThreadRules, IntegerLengths, MachineKind, ParamDef, ParamKey, Profile, TimeKeys};
+use super::{SETTINGS, DRY_RUN, CycleRules, HoldRule, JkWords, PullOutRule, GDef, GFn, Group, QPoint, ThreadCmd, ThreadRules, IntegerLengths, MachineKind, ParamDef, ParamKey, Profile, TimeKeys};
 use crate::alarm::AlarmStyle;
+
+/// G92 (YASNAC LX3 manual, G92): I taper, F or E lead, K with its sign shifts the pass's start
+/// (flank infeed), T/S/M in the blocks before; no thread chamfer described; the thread-cutting
+/// hold threads up at once, returning to A or (#6019 D7 = 1) stopping at B.
+static G92: CycleRules = CycleRules {
+    code: "G92",
+    rigid: false,
+    negative_f_left_hand: false,
+    lead_i: false,
+    lead_e: true,
+    repair_p: false,
+    starts_l: false,
+    jk: JkWords::None,
+    flank_k: true,
+    ts_before: true,
+    q_start: false,
+    taper: b'I',
+    taper_limit: false,
+    pull_out: PullOutRule::None,
+    hold: HoldRule::ThreadUp(ParamKey::Number(6019, Some(7))),
+};
 
 const EXTRA: &[GDef] = &[
     g(32, Group::Motion, LATER_THREAD, "thread cutting (not in the LX3 excerpt)"),
     g(76, Group::NonModal, LATER_G76, "compound thread cutting cycle"),
-    g(92, Group::Motion, GFn::Thread(ThreadCmd::Cycle(CycleKind::Yasnac)), "threading cycle: I taper, K flank infeed, F or E lead (YASNAC LX3 manual, G92)"),
+    g(92, Group::Motion, GFn::Thread(ThreadCmd::Cycle(&G92)), "threading cycle: I taper, K flank infeed, F or E lead (YASNAC LX3 manual, G92)"),
 ];
 
 const PARAMS: &[ParamDef] = &[
@@ -67,6 +88,7 @@ pub static PROFILE: Profile = Profile {
         feed_max: ParamKey::Setting("feed_max_mm_min"),
     },
     thread: ThreadRules { q_point: QPoint::Ignored, arc_q_unit_deg: 0.001, pull_out_speed: None, after_end_feed: None, pull_out_accel: None, repair_enable: None, g32_pull_out: false, g76: None },
+    drill: super::DrillRules::NONE,
     summary: "YASNAC LX3 turning centre. X is a diameter, U/W incremental. Lengths without a decimal \
 point are least input increments (X100 = 0.1 mm); seed 004 writes every length with a point. \
 Feed per revolution at power on (assumed).",
