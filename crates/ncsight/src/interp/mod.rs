@@ -416,7 +416,8 @@ fn collect<'w>(
         w.letter == b'G'
             && !w.expr
             && w.value >= 0.0
-            && matches!(profile.g_code(w.code().0, w.code().1).map(|g| g.function), Some(GFn::NotYet(_) | GFn::NotYetReference(_)))
+            && w.is_code()
+        && matches!(profile.g_code(w.code().0, w.code().1).map(|g| g.function), Some(GFn::NotYet(_) | GFn::NotYetReference(_)))
     });
     for (i, w) in block.words.iter().enumerate() {
         let letter = w.letter;
@@ -431,6 +432,9 @@ fn collect<'w>(
             b'G' => {
                 if w.value < 0.0 || w.expr {
                     return Err(step.alarm(Rule::ImproperGCode, w.span, format!("{}: not a G code", w.text())));
+                }
+                if !w.is_code() {
+                    return Err(step.alarm(Rule::ImproperGCode, w.span, format!("{}: a G code has at most one digit after the point", w.text())));
                 }
                 let (major, minor) = w.code();
                 match profile.g_code(major, minor) {

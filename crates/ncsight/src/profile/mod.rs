@@ -489,7 +489,7 @@ pub const DRY_RUN_SETTING: ParamDef = ParamDef {
 pub const DRY_RUN: &[ParamDef] = &[DRY_RUN_SETTING];
 
 /// A controller profile.
-#[derive(Debug)]
+#[derive(Debug, Clone)]
 pub struct Profile {
     pub name: &'static str,
     pub title: &'static str,

@@ -49,6 +49,13 @@ impl Word {
         }
     }
 
+    /// Whether the value is a code as the controllers write them: a whole number, or one digit
+    /// after the point (`G32.1`). `G32.16` is not read as G32.2.
+    pub fn is_code(&self) -> bool {
+        let tenths = self.value.abs() * 10.0;
+        (tenths - tenths.round()).abs() < 1e-6
+    }
+
     /// The word as a person would write it, for messages.
     pub fn text(&self) -> String {
         let letter = self.letter as char;

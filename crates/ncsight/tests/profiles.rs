@@ -1,0 +1,31 @@
+//! A new profile is data: one `Profile` value (its tables, rules and parameters) and its
+//! registration. This test adds one outside the crate, a lathe that reuses the GSK980TDi's rule
+//! tables under another name, and runs the GSK980TDi manual's O0012 on it: the interpreter asks
+//! the profile and never which controller it is, so the records are the same.
+
+use ncsight::profile::{self, Params, Profile};
+use ncsight::{run_text, Event, Mode, Switches};
+
+fn records(profile: &'static Profile, text: &str) -> Vec<Event> {
+    run_text(Params::defaults(profile), Switches::default(), Mode::Run, text.as_bytes())
+}
+
+#[test]
+fn a_profile_defined_as_data_runs_o0012() {
+    let base = profile::by_name("gsk980tdi").unwrap();
+    let test_lathe: &'static Profile = Box::leak(Box::new(Profile { name: "test-lathe", title: "a test lathe with the GSK980TDi's rules", ..base.clone() }));
+    let o0012 = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../../examples/gsk980tdi_o0012.nc")).unwrap();
+    let ours = records(test_lathe, &o0012);
+    let theirs = records(base, &o0012);
+    assert_eq!(ours, theirs);
+    // Four passes of G92, each a thread with its pull-out, and no alarm.
+    let threads = ours.iter().filter(|e| matches!(e, Event::Record(r) if r.op.is_thread())).count();
+    assert_eq!(threads, 8, "four passes, each a thread and its pull-out");
+    assert!(!ours.iter().any(|e| matches!(e, Event::Diagnostic(d) if d.is_alarm())));
+    // Its parameters are its own: a parameter set on the test lathe changes its run only.
+    let mut params = Params::defaults(test_lathe);
+    params.set_text("rapid_accel_ms=300").unwrap();
+    let slower = run_text(params, Switches::default(), Mode::Run, o0012.as_bytes());
+    assert!(slower != theirs, "the setting changes the times");
+    assert_eq!(records(base, &o0012), theirs);
+}
