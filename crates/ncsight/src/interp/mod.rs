@@ -484,12 +484,32 @@ struct Codes {
     drill: Option<crate::cycles::drill::DrillKind>,
 }
 
+/// One block, in the order the controller executes it (the steps as grbl's `gc_execute_line`
+/// numbers them, for these controllers). Every step may alarm; the caller restores the modal
+/// state then, so a block that alarms changes nothing.
+///
+///  1. Collect the words: addresses the profile reads, each once; G and M codes from its tables.
+///  2. G codes: the last of a modal group counts; one-shot codes not mixed; a code not simulated
+///     yet, or G27-G30 in a drilling cycle, alarms.
+///  3. Modal codes take effect (plane, units, distance, feed mode, surface speed, compensation,
+///     return level, cycle cancel); the motion code and the drilling code are noted.
+///  4. What a new motion mode cancels: the rigid thread's J/K, the cycles' memories, a drilling
+///     cycle (as G80).
+///  5. A held-back thread run: this block continues it or it ends (with its pull-out).
+///  6. H and D words of the compensation codes.
+///  7. F, S (G50 S: the clamp), T (a tool record on a lathe).
+///  8. M codes that act before the motion: the spindle, its mode, rigid tapping, subprogrammes.
+///  9. A spindle record when the spindle's state changes.
+/// 10. The one-shot code (G04, G28, G50/G92, G70-G76, G74/G75), or else the motion of the
+///     mode in force: drilling cycle, thread, box cycle, G00-G03.
+/// 11. M codes that act after the motion (stops, ends), then every word must have been used.
 fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), Diagnostic> {
+    // 1. Collect the words.
     let mut words = Words::new(&block.words);
     let (gs, ms) = collect(step, block, &mut words)?;
     let profile = step.profile;
 
-    // --- G codes: the last of a group counts (GSK: TAC p65; FANUC the same); a warning says so.
+    // 2. G codes: the last of a group counts (GSK: TAC p65; FANUC the same); a warning says so.
     let mut last_of: Vec<(Group, &Word, &GDef)> = Vec::new();
     for (w, g) in &gs {
         if let Some(slot) = last_of.iter_mut().find(|(grp, _, _)| *grp == g.group && g.group != Group::NonModal) {
@@ -539,6 +559,7 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
         }
     }
 
+    // 3. Modal codes take effect; the motion and drilling codes are noted.
     let mut codes = Codes::default();
     for (_, w, g) in &last_of {
         let st = &mut step.st;
@@ -595,8 +616,8 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
             return Err(step.alarm(Rule::RigidTapOrder, step.span, "an axis move between M29 and G84/G88 (help text G84/88: none may come between them)"));
         }
     }
-    // A non-thread group 01 code cancels the thread J/K and the cycle memory (seed 001 G32.1
-    // note 1).
+    // 4. What a new motion mode cancels. A non-thread group 01 code cancels the thread J/K and
+    // the cycle memory (seed 001 G32.1 note 1).
     if let Some((_, m)) = codes.motion {
         if !matches!(m, Motion::Thread(_)) {
             // Seed 001 G32.1 note 1: a non-thread code cancels the rigid commands' J/K. Seed 000
@@ -633,7 +654,7 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
     let motion_now = codes.motion.map(|(_, m)| m).unwrap_or(step.st.motion);
     let axis_letters: &[u8] = if profile.incremental_addresses { b"XYZUVW" } else { b"XYZ" };
     let has_axis = axis_letters.iter().any(|l| words.has(*l));
-    // A held-back thread run end: does this block continue the run?
+    // 5. A held-back thread run end: does this block continue the run?
     let mut run_deg = None;
     if let Some(p) = step.st.thread.pending.take() {
         let goes_on = match motion_now {
@@ -649,7 +670,7 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
     }
     let rigid_thread = matches!(motion_now, Motion::Thread(cmd) if thread::is_rigid(cmd));
 
-    // Tool length compensation takes H (the offset number); D belongs to cutter compensation.
+    // 6. Tool length compensation takes H (the offset number); D belongs to cutter compensation.
     if last_of.iter().any(|(_, _, g)| g.function == GFn::LengthComp) {
         words.take(b'H');
     }
@@ -657,7 +678,7 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
         words.take(b'D');
     }
 
-    // --- F, S, T ---
+    // 7. F, S, T.
     let thread_block = matches!(motion_now, Motion::Thread(_)) && has_axis && codes.non_modal.is_none();
     // G84/G88's F is the tap's lead, signed by its hand (help text G84/88): the cycle reads it.
     let tap_block = codes.drill.or(step.st.drill.kind).is_some_and(|k| k.rigid_tap());
@@ -708,7 +729,7 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
         }
     }
 
-    // --- M codes that act before motion: spindle and its mode ---
+    // 8. M codes that act before motion: spindle and its mode.
     let mut after: Vec<(&Word, MFn)> = Vec::new();
     for (w, m) in &ms {
         match m {
@@ -746,7 +767,7 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
             },
         }
     }
-    // A spindle record when the spindle's state changes in a way the machine shows: a new
+    // 9. A spindle record when the spindle's state changes in a way the machine shows: a new
     // direction or mode, or a new speed while it turns.
     let spindle_after = (step.st.spindle, step.st.s_word, step.st.css, step.st.spindle_position_mode);
     let turning = step.st.spindle != SpindleDir::Stopped;
@@ -756,7 +777,7 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
         emit_spindle(step);
     }
 
-    // --- one-shot codes ---
+    // 10. The one-shot code, or the motion of the mode in force.
     // A one-shot code other than G04 ends the box cycles' remembered X, Z and R (FANUC 0-T).
     if matches!(codes.non_modal, Some((_, f)) if f != GFn::Dwell) {
         step.st.box_cycle = Default::default();
@@ -827,7 +848,7 @@ fn codes_css(last_of: &[(Group, &Word, &GDef)]) -> Option<bool> {
     })
 }
 
-/// M codes that act after the motion, then the check that every word was used.
+/// 11. M codes that act after the motion, then the check that every word was used.
 fn finish_block(step: &mut Step, words: &Words, codes: &Codes, after: Vec<(&Word, MFn)>, switches: Switches) -> Result<(), Diagnostic> {
     // A stop or an end after a held-back thread run end: the run ends first.
     if !after.is_empty() {
@@ -874,31 +895,31 @@ fn finish_block(step: &mut Step, words: &Words, codes: &Codes, after: Vec<(&Word
 }
 
 fn describe_command(step: &Step, codes: &Codes) -> String {
+    let name = |f: GFn| step.profile.name_of(f);
     let (_, m) = match codes.non_modal {
-        Some((_, GFn::Dwell)) => return "G04 (dwell)".into(),
-        Some((_, GFn::ReferenceReturn)) => return "G28 (reference return)".into(),
-        Some((_, GFn::LatheCoordinateSet)) => return "G50 (coordinate setting)".into(),
-        Some((_, GFn::MillCoordinateSet)) => return "G92 (coordinate setting)".into(),
-        Some((_, GFn::CompoundThread(Compound::G76))) => return "G76 (compound threading)".into(),
-        Some((_, GFn::CompoundThread(Compound::G78))) => return "G78 (compound threading with infeed modes)".into(),
+        Some((_, f @ GFn::Dwell)) => return format!("{} (dwell)", name(f)),
+        Some((_, f @ GFn::ReferenceReturn)) => return format!("{} (reference return)", name(f)),
+        Some((_, f @ (GFn::LatheCoordinateSet | GFn::MillCoordinateSet))) => return format!("{} (coordinate setting)", name(f)),
+        Some((_, f @ GFn::CompoundThread(Compound::G76))) => return format!("{} (compound threading)", name(f)),
+        Some((_, f @ GFn::CompoundThread(Compound::G78))) => return format!("{} (compound threading with infeed modes)", name(f)),
         Some((_, GFn::PeckCycle(kind))) => return format!("{} (peck cutting cycle)", kind.code()),
         Some((_, GFn::Rough(kind))) => return format!("{} (roughing cycle)", kind.code()),
-        Some((_, GFn::Finish)) => return "G70 (finishing cycle)".into(),
+        Some((_, f @ GFn::Finish)) => return format!("{} (finishing cycle)", name(f)),
         _ => ((), step.st.motion),
     };
     if let Some(kind) = step.st.drill.kind {
         return format!("{} (drilling cycle; the repeat count is K)", kind.code());
     }
-    let plane = match step.st.plane {
-        Plane::XY => "G17",
-        Plane::ZX => "G18",
-        Plane::YZ => "G19",
-    };
+    let plane = name(match step.st.plane {
+        Plane::XY => GFn::PlaneXY,
+        Plane::ZX => GFn::PlaneZX,
+        Plane::YZ => GFn::PlaneYZ,
+    });
     match m {
-        Motion::Rapid => "G00 (rapid positioning)".into(),
-        Motion::Linear => "G01 (linear interpolation)".into(),
-        Motion::ArcCw => format!("G02 in the {plane} plane"),
-        Motion::ArcCcw => format!("G03 in the {plane} plane"),
+        Motion::Rapid => format!("{} (rapid positioning)", name(GFn::Rapid)),
+        Motion::Linear => format!("{} (linear interpolation)", name(GFn::Linear)),
+        Motion::ArcCw => format!("{} in the {plane} plane", name(GFn::ArcCw)),
+        Motion::ArcCcw => format!("{} in the {plane} plane", name(GFn::ArcCcw)),
         Motion::Thread(cmd) => format!("{} (thread cutting)", thread::name(cmd)),
         Motion::Box(kind) => format!("{} (single turning/facing cycle)", kind.code()),
     }
@@ -978,7 +999,7 @@ fn motion(step: &mut Step, words: &mut Words) -> Result<(), Diagnostic> {
             }
         }
         Motion::Linear => {
-            let feed = step.cutting_feed("G01", &|u| lerp(&from, &target, u))?;
+            let feed = step.cutting_feed(step.profile.name_of(GFn::Linear), &|u| lerp(&from, &target, u))?;
             if target != from {
                 step.emit(Op::Feed { from, to: target, feed_mm_min: feed });
             }
@@ -1076,7 +1097,7 @@ fn resolve_arc(step: &mut Step, words: &mut Words, from: Vec3, to: Vec3, dir: Ar
 
 fn arc(step: &mut Step, words: &mut Words, from: Vec3, to: Vec3, dir: ArcDir) -> Result<(), Diagnostic> {
     let plane = step.st.plane;
-    let gname = if dir == ArcDir::Cw { "G02" } else { "G03" };
+    let gname = step.profile.name_of(if dir == ArcDir::Cw { GFn::ArcCw } else { GFn::ArcCcw });
     match resolve_arc(step, words, from, to, dir, gname)? {
         ArcOutcome::Arc(g) => {
             let feed = step.cutting_feed(gname, &|u| geom::arc_point(&from, &to, plane, dir, &g, u))?;

@@ -4,12 +4,26 @@
 
 use super::{GDef, GFn, Group, MDef, MFn};
 
+/// The names of the plain codes G00-G99, as the controllers' manuals write them.
+const NAMES: [&str; 100] = {
+    // One string of all the names, three bytes each (a const fn cannot format numbers).
+    const ALL: &str = "G00G01G02G03G04G05G06G07G08G09G10G11G12G13G14G15G16G17G18G19G20G21G22G23G24G25G26G27G28G29G30G31G32G33G34G35G36G37G38G39G40G41G42G43G44G45G46G47G48G49G50G51G52G53G54G55G56G57G58G59G60G61G62G63G64G65G66G67G68G69G70G71G72G73G74G75G76G77G78G79G80G81G82G83G84G85G86G87G88G89G90G91G92G93G94G95G96G97G98G99";
+    let mut names = [""; 100];
+    let mut i = 0;
+    while i < 100 {
+        names[i] = ALL.split_at(i * 3).1.split_at(3).0;
+        i += 1;
+    }
+    names
+};
+
 pub(super) const fn g(major: u32, group: Group, function: GFn, meaning: &'static str) -> GDef {
-    GDef { major, minor: None, group, function, meaning }
+    assert!(major < 100, "plain G codes are G00-G99");
+    GDef { major, minor: None, name: NAMES[major as usize], group, function, meaning }
 }
 
-pub(super) const fn gp(major: u32, minor: u32, group: Group, function: GFn, meaning: &'static str) -> GDef {
-    GDef { major, minor: Some(minor), group, function, meaning }
+pub(super) const fn gp(major: u32, minor: u32, name: &'static str, group: Group, function: GFn, meaning: &'static str) -> GDef {
+    GDef { major, minor: Some(minor), name, group, function, meaning }
 }
 
 pub(super) const fn m(code: u32, function: MFn, meaning: &'static str) -> MDef {

@@ -33,10 +33,10 @@ const EXTRA: &[GDef] = &[
     g(76, Group::NonModal, LATER_G76, "compound thread cutting cycle"),
     g(32, Group::Motion, GFn::Thread(ThreadCmd::Lead), "thread cutting: F lead or I threads per inch, J/K pull-out, Q start angle"),
     g(92, Group::Motion, LATER_THREAD, "thread cutting cycle (the GSK988T manual's G92 page was not available)"),
-    gp(32, 1, Group::Motion, GFn::Thread(ThreadCmd::Rigid), "rigid thread cutting (GSK988T manual)"),
-    gp(32, 2, Group::Motion, GFn::Thread(ThreadCmd::Arc(ArcDir::Cw)), "arc thread, clockwise (GSK988T manual, G32.2/G32.3)"),
-    gp(32, 3, Group::Motion, GFn::Thread(ThreadCmd::Arc(ArcDir::Ccw)), "arc thread, counter-clockwise (GSK988T manual, G32.2/G32.3)"),
-    gp(92, 1, Group::Motion, GFn::Thread(ThreadCmd::Cycle(&G92_1)), "rigid thread cutting cycle (GSK988T manual)"),
+    gp(32, 1, "G32.1", Group::Motion, GFn::Thread(ThreadCmd::Rigid), "rigid thread cutting (GSK988T manual)"),
+    gp(32, 2, "G32.2", Group::Motion, GFn::Thread(ThreadCmd::Arc(ArcDir::Cw)), "arc thread, clockwise (GSK988T manual, G32.2/G32.3)"),
+    gp(32, 3, "G32.3", Group::Motion, GFn::Thread(ThreadCmd::Arc(ArcDir::Ccw)), "arc thread, counter-clockwise (GSK988T manual, G32.2/G32.3)"),
+    gp(92, 1, "G92.1", Group::Motion, GFn::Thread(ThreadCmd::Cycle(&G92_1)), "rigid thread cutting cycle (GSK988T manual)"),
 ];
 
 const PARAMS: &[ParamDef] = &[

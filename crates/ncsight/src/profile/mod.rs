@@ -307,6 +307,8 @@ pub struct GDef {
     pub major: u32,
     /// The digit after the point for codes that have one (G32.1); `None` for plain codes.
     pub minor: Option<u32>,
+    /// The code as the manual writes it: `G04`, `G32.1`.
+    pub name: &'static str,
     pub group: Group,
     pub function: GFn,
     pub meaning: &'static str,
@@ -546,6 +548,12 @@ impl Profile {
         self.g_codes.iter().flat_map(|t| t.iter()).find(|g| g.major == major && g.minor == minor)
     }
 
+    /// The name of the code that does `f` (`G01` for linear interpolation), from the profile's
+    /// table; `?` if the profile has none (a mistake in a table, caught by the profile tests).
+    pub fn name_of(&self, f: GFn) -> &'static str {
+        self.g_codes.iter().flat_map(|t| t.iter()).find(|g| g.function == f).map_or("?", |g| g.name)
+    }
+
     pub fn m_code(&self, code: u32) -> Option<&'static MDef> {
         self.m_codes.iter().flat_map(|t| t.iter()).find(|m| m.code == code)
     }
@@ -749,6 +757,14 @@ mod tests {
                     g.major,
                     g.minor
                 );
+            }
+            // Every code's name is the one its numbers make.
+            for g in &all {
+                let want = match g.minor {
+                    Some(m) => format!("G{:02}.{m}", g.major),
+                    None => format!("G{:02}", g.major),
+                };
+                assert_eq!(g.name, want, "{}", p.name);
             }
             let ms: Vec<_> = p.m_codes.iter().flat_map(|t| t.iter()).collect();
             for (i, m) in ms.iter().enumerate() {
