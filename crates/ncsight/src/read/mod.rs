@@ -229,13 +229,25 @@ impl Reader {
                 break;
             }
         }
-        // A DOS end-of-file mark ends the text wherever it stands, even on a line that alarms
-        // (corpus: icnc__Delorensi_FASE2.txt).
-        if let Some(k) = s.iter().position(|&b| b == 0x1A) {
-            out.end_of_file = true;
-            out.warnings.push(self.diag(Rule::EndOfFileMark, line_no, k, 1, "byte 0x1A (DOS end-of-file mark): the text ends here"));
-            s = &s[..k];
+        self.read_blocks(line_no, s, out);
+        // A DOS end-of-file mark ends the text wherever it stands, even on a line whose reading
+        // stopped at an alarm before it (corpus: icnc__Delorensi_FASE2.txt). Only such a line is
+        // scanned again: the common line pays nothing.
+        if !out.end_of_file && out.blocks.last().is_some_and(|b| b.is_err()) {
+            if let Some(k) = s.iter().position(|&b| b == 0x1A) {
+                out.end_of_file = true;
+                out.warnings.push(self.eof_mark(line_no, k));
+            }
         }
+    }
+
+    fn eof_mark(&self, line_no: u32, col: usize) -> Diagnostic {
+        self.diag(Rule::EndOfFileMark, line_no, col, 1, "byte 0x1A (DOS end-of-file mark): the text ends here")
+    }
+
+    /// The blocks of a line without its break: stops at the first alarm, or at a DOS
+    /// end-of-file mark.
+    fn read_blocks(&self, line_no: u32, s: &[u8], out: &mut Line) {
         if s.len() > MAX_LINE_BYTES {
             out.blocks.push(Err(self.diag(
                 Rule::LineTooLong,
@@ -310,6 +322,12 @@ impl Reader {
                     block_start = None;
                     i += 1;
                 }
+                0x1A => {
+                    // DOS end-of-file mark (corpus: icnc__Delorensi_FASE2.txt).
+                    out.end_of_file = true;
+                    out.warnings.push(self.eof_mark(line_no, i));
+                    break;
+                }
                 b'/' if block_start.is_none() && block.words.is_empty() && !block.block_delete => {
                     block.block_delete = true;
                     block_start = Some(i);
@@ -340,7 +358,8 @@ impl Reader {
                     block_start.get_or_insert(i);
                     // A macro statement starts its block (after N); inside a block two letters
                     // side by side are a typing mistake (`DO1` for `D01`), answered as such.
-                    if block.words.is_empty() {
+                    // (A keyword is two letters or more: a plain word is rejected at once.)
+                    if block.words.is_empty() && s.get(i + 1).is_some_and(u8::is_ascii_alphabetic) {
                         if let Some(d) = self.macro_statement(line_no, s, i) {
                             out.blocks.push(Err(d));
                             return;
