@@ -56,6 +56,9 @@ pub struct Machine {
     last_thread_end: Option<Vec3>,
     reset: bool,
     last_span: crate::source::Span,
+    /// Records a thread hold makes the machine cut again, in order: a queue, not recursion, so
+    /// any number of presses runs in constant stack.
+    again: std::collections::VecDeque<Record>,
 }
 
 impl Machine {
@@ -75,6 +78,7 @@ impl Machine {
             last_thread_end: None,
             reset: false,
             last_span: Default::default(),
+            again: std::collections::VecDeque::new(),
         }
     }
 
@@ -142,13 +146,13 @@ impl Machine {
     /// Run a record, and the records a thread hold makes it cut again (a queue, not recursion:
     /// any number of presses runs in constant stack).
     fn run(&mut self, r: Record, out: &mut dyn FnMut(Event)) {
-        let mut queue = std::collections::VecDeque::from([r]);
-        while let Some(r) = queue.pop_front() {
-            self.run_one(r, &mut queue, out);
+        self.run_one(r, out);
+        while let Some(r) = self.again.pop_front() {
+            self.run_one(r, out);
         }
     }
 
-    fn run_one(&mut self, r: Record, queue: &mut std::collections::VecDeque<Record>, out: &mut dyn FnMut(Event)) {
+    fn run_one(&mut self, r: Record, out: &mut dyn FnMut(Event)) {
         if self.reset {
             return;
         }
@@ -240,7 +244,7 @@ impl Machine {
                     self.deferred = true;
                     self.finish_record(r, dur, out);
                 }
-                _ => self.thread_hold(r, th, start, dur, h.max(start), queue, out),
+                _ => self.thread_hold(r, th, start, dur, h.max(start), out),
             },
         }
     }
@@ -284,8 +288,7 @@ impl Machine {
 
     /// The G92 thread hold: pull out (thread up) at once from where the tool is, return to A
     /// (or stop where the pull-out ends), then cut the cycle again from its start.
-    #[allow(clippy::too_many_arguments)]
-    fn thread_hold(&mut self, r: Record, th: ThreadHold, start: f64, dur: f64, at: f64, queue: &mut std::collections::VecDeque<Record>, out: &mut dyn FnMut(Event)) {
+    fn thread_hold(&mut self, r: Record, th: ThreadHold, start: f64, dur: f64, at: f64, out: &mut dyn FnMut(Event)) {
         let span = r.span;
         let Op::Thread { from, to, lead_mm, long_axis, spindle_deg, rpm } = r.op else {
             self.finish_record(r, dur, out);
@@ -341,7 +344,7 @@ impl Machine {
         // CYCLE START: the interrupted cycle again from its start (seed 004: "restarts the current
         // processing from the beginning"), the same records, so the same groove.
         for rec in self.cycle_buf.iter().rev() {
-            queue.push_front(rec.clone());
+            self.again.push_front(rec.clone());
         }
     }
 }

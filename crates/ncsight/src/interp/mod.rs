@@ -209,10 +209,9 @@ impl Step<'_> {
     /// A word for the student (issue 15): a lathe feed per minute below 10 mm/min (`F0.2` under
     /// G98: a 22 mm cut takes nearly two hours) was meant per revolution; a feed per revolution
     /// above 10 mm/rev was meant per minute. Once per F value, with the numbers.
+    #[cold]
+    #[inline(never)]
     fn feed_plausible(&mut self, f: f64, point: &dyn Fn(f64) -> Vec3) {
-        if !self.profile.is_lathe() || self.st.feed_warned == Some(f) {
-            return;
-        }
         let unit = if self.st.inch { 25.4 } else { 1.0 };
         let shown = crate::alarm::shown(f / unit, 4);
         let msg = if !self.st.per_rev && f < 10.0 {
@@ -264,7 +263,11 @@ impl Step<'_> {
                 ))
             }
         };
-        self.feed_plausible(f, point);
+        // A lathe F that is implausible in its mode (the check inline, the message cold).
+        let implausible = if self.st.per_rev { f > 10.0 } else { f < 10.0 };
+        if implausible && self.profile.is_lathe() && self.st.feed_warned != Some(f) {
+            self.feed_plausible(f, point);
+        }
         let max = self.params.feed_max_mm_min();
         let feed_at = |rpm: f64| (f * rpm.abs()).min(max);
         let mut feed = f;
