@@ -91,6 +91,29 @@ pub struct Interpreter {
     replaying: bool,
 }
 
+/// What a message names: a code by its function (its name looked up in the profile's table only
+/// when a message needs it), or a name.
+#[derive(Clone, Copy)]
+enum What {
+    Code(GFn),
+    Name(&'static str),
+}
+
+impl What {
+    fn name(self, profile: &Profile) -> &'static str {
+        match self {
+            What::Code(f) => profile.name_of(f),
+            What::Name(n) => n,
+        }
+    }
+}
+
+impl From<&'static str> for What {
+    fn from(n: &'static str) -> What {
+        What::Name(n)
+    }
+}
+
 /// The working copy of one block's effects.
 struct Step<'a> {
     profile: &'static Profile,
@@ -134,7 +157,7 @@ impl Step<'_> {
 
     /// Emit a move a cycle laid out: a feed or an arc gets the feed in force for its points (F
     /// per revolution under G99, at the speed of its points under G96); anything else as it is.
-    fn emit_cut(&mut self, what: &str, op: Op) -> Result<(), Diagnostic> {
+    fn emit_cut(&mut self, what: &'static str, op: Op) -> Result<(), Diagnostic> {
         let op = match op {
             Op::Feed { from, to, .. } => {
                 let feed_mm_min = self.cutting_feed(what, &|u| lerp(&from, &to, u))?;
@@ -252,14 +275,15 @@ impl Step<'_> {
     /// the tool position at fraction `u` of the path length. With feed per revolution under G96
     /// the spindle speed changes along the move; the feed returned is then the mean one
     /// (length / time), the time integrated over the path (Simpson's rule, 64 intervals).
-    fn cutting_feed(&mut self, what: &str, point: &dyn Fn(f64) -> Vec3) -> Result<f64, Diagnostic> {
+    fn cutting_feed(&mut self, what: impl Into<What>, point: &dyn Fn(f64) -> Vec3) -> Result<f64, Diagnostic> {
+        let what: What = what.into();
         let f = match self.st.feed {
             Some(f) if f > 0.0 => f,
             _ => {
                 return Err(self.alarm(
                     Rule::FeedZero,
                     self.span,
-                    format!("{what} needs a feed: no F word greater than zero is in force"),
+                    format!("{} needs a feed: no F word greater than zero is in force", what.name(self.profile)),
                 ))
             }
         };
@@ -277,7 +301,7 @@ impl Step<'_> {
                 return Err(self.alarm(
                     Rule::SpindleStopped,
                     self.span,
-                    format!("{what}: feed per revolution (F{} mm/rev) with the spindle stopped or at S0", crate::alarm::shown(f, 4)),
+                    format!("{}: feed per revolution (F{} mm/rev) with the spindle stopped or at S0", what.name(self.profile), crate::alarm::shown(f, 4)),
                 ));
             }
             feed = f * rpm;
@@ -1002,7 +1026,7 @@ fn motion(step: &mut Step, words: &mut Words) -> Result<(), Diagnostic> {
             }
         }
         Motion::Linear => {
-            let feed = step.cutting_feed(step.profile.name_of(GFn::Linear), &|u| lerp(&from, &target, u))?;
+            let feed = step.cutting_feed(What::Code(GFn::Linear), &|u| lerp(&from, &target, u))?;
             if target != from {
                 step.emit(Op::Feed { from, to: target, feed_mm_min: feed });
             }
