@@ -216,3 +216,33 @@ fn roughing_past_the_limit_alarms() {
     let (_, d) = common::run_with("gsk980tdi", &[], switches, ncsight::Options::default(), g73);
     assert!(d.iter().any(|d| d.is_alarm()), "{d:?}");
 }
+
+/// The DOS end-of-file mark (0x1A) ends the text wherever it stands: inside a comment, after a
+/// tape mark, early on a line too long to read.
+#[test]
+fn the_end_of_file_mark_is_seen_everywhere() {
+    let eof = |text: &[u8]| {
+        let params = common::params("gsk980tdi", &[]);
+        let events = ncsight::run_text(params, ncsight::Switches::default(), ncsight::Mode::Check, text);
+        let diags: Vec<_> = events.iter().filter_map(|e| if let ncsight::Event::Diagnostic(d) = e { Some(d.clone()) } else { None }).collect();
+        diags
+    };
+    let d = eof(b"G0 X10 (A\x1A) G0 X#1\n");
+    assert!(d.iter().any(|d| d.code == "NCS-W06") && !d.iter().any(|d| d.is_alarm()), "{d:?}");
+    let d = eof(b"M30 (END\x1A)\nG0 X#1\n");
+    assert!(d.iter().any(|d| d.code == "NCS-W06") && !d.iter().any(|d| d.span.line == 2), "{d:?}");
+    let d = eof(b"G0 X10\nM30\n%\x1A\nG0 X#1\n");
+    assert!(d.iter().any(|d| d.code == "NCS-W06") && !d.iter().any(|d| d.span.line == 4), "{d:?}");
+    let mut long = b"G0 X10\x1A".to_vec();
+    long.extend(std::iter::repeat(b' ').take(5000));
+    long.extend(b"\nG0 X#1\n");
+    let d = eof(&long);
+    assert!(d.iter().any(|d| d.code == "NCS-W06") && !d.iter().any(|d| d.is_alarm()), "{d:?}");
+}
+
+/// The repair switch is named as the manual names it.
+#[test]
+fn repair_off_names_the_parameter_as_the_manual_does() {
+    let (_, d) = common::run_plain("gsk980tdi", &[], "G97 S300 M03\nG0 X30 Z5\nG92 X28 Z-20 F1.5 P1\nM30\n");
+    assert!(d.iter().any(|d| d.message.contains("parameter No.174 bit 4 = 0")), "{d:?}");
+}

@@ -1,9 +1,13 @@
 //! The flow in one direction (docs/ARCHITECTURE.md): every module of the core imports only the
-//! modules below it. The test reads every `crate::` path in the source (imports and inline
-//! paths alike) and fails on one that runs back up; and no file in interp/ or cycles/ names a
-//! controller in its code (profiles are data the interpreter asks; it never tests which
-//! controller it is).
+//! modules below it. The test reads the code of every source file (comments, strings and
+//! character literals taken out), follows every `crate::` path (grouped imports and names the
+//! crate root re-exports included) and every `super::` path to the module it names, and fails on
+//! one that runs back up. No macro is exported across modules (a macro call writes no path).
+//!
+//! And no file in interp/ or cycles/ names a controller in its code or writes a parameter
+//! number: profiles are data the interpreter asks; it never tests which controller it is.
 
+use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 
 /// The layers, bottom first. A module may use any module of a lower layer, and its own
@@ -27,6 +31,10 @@ fn layer(module: &str) -> usize {
     LAYERS.iter().position(|l| l.contains(&module)).unwrap_or_else(|| panic!("module {module} is in no layer: add it to LAYERS"))
 }
 
+fn src() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("src")
+}
+
 fn files(dir: &Path, out: &mut Vec<PathBuf>) {
     for e in std::fs::read_dir(dir).unwrap() {
         let p = e.unwrap().path();
@@ -38,75 +46,251 @@ fn files(dir: &Path, out: &mut Vec<PathBuf>) {
     }
 }
 
-/// The code of a file without its comments (line comments and doc comments).
-fn code_lines(text: &str) -> impl Iterator<Item = (usize, &str)> {
-    text.lines().enumerate().map(|(i, l)| {
-        let l = match l.find("//") {
-            Some(k) if !l[..k].contains('"') => &l[..k],
-            _ => l,
-        };
-        (i + 1, l)
-    })
+/// The code of a file with comments, string literals (kept as `""`) and character literals
+/// (kept as `' '`) taken out; newlines stay so that line numbers hold.
+fn code_of(text: &str) -> String {
+    let b = text.as_bytes();
+    let mut out = String::with_capacity(b.len());
+    let mut i = 0;
+    while i < b.len() {
+        let c = b[i];
+        if c == b'/' && b.get(i + 1) == Some(&b'/') {
+            while i < b.len() && b[i] != b'\n' {
+                i += 1;
+            }
+        } else if c == b'/' && b.get(i + 1) == Some(&b'*') {
+            i += 2;
+            while i + 1 < b.len() && !(b[i] == b'*' && b[i + 1] == b'/') {
+                if b[i] == b'\n' {
+                    out.push('\n');
+                }
+                i += 1;
+            }
+            i += 2;
+        } else if c == b'r' && (b.get(i + 1) == Some(&b'"') || (b.get(i + 1) == Some(&b'#') && !b[..i].last().is_some_and(|p| p.is_ascii_alphanumeric() || *p == b'_'))) {
+            // A raw string r"..." or r#"..."#.
+            let mut j = i + 1;
+            let mut hashes = 0;
+            while b.get(j) == Some(&b'#') {
+                hashes += 1;
+                j += 1;
+            }
+            if b.get(j) != Some(&b'"') {
+                out.push(c as char);
+                i += 1;
+                continue;
+            }
+            j += 1;
+            let close: Vec<u8> = std::iter::once(b'"').chain(std::iter::repeat(b'#').take(hashes)).collect();
+            while j < b.len() && !b[j..].starts_with(&close) {
+                if b[j] == b'\n' {
+                    out.push('\n');
+                }
+                j += 1;
+            }
+            out.push_str("\"\"");
+            i = j + close.len();
+        } else if c == b'"' {
+            i += 1;
+            while i < b.len() && b[i] != b'"' {
+                if b[i] == b'\\' {
+                    i += 1;
+                }
+                if b.get(i) == Some(&b'\n') {
+                    out.push('\n');
+                }
+                i += 1;
+            }
+            out.push_str("\"\"");
+            i += 1;
+        } else if c == b'\'' && (b.get(i + 2) == Some(&b'\'') || (b.get(i + 1) == Some(&b'\\') && b[i..].iter().skip(2).take(10).any(|x| *x == b'\''))) {
+            // A character literal ('a', '\n', '\u{..}'); a lifetime has no closing quote.
+            let mut j = i + 1;
+            if b[j] == b'\\' {
+                j += 1;
+                while j < b.len() && b[j] != b'\'' {
+                    j += 1;
+                }
+            } else {
+                j += 1;
+            }
+            out.push_str("' '");
+            i = j + 1;
+        } else {
+            out.push(c as char);
+            i += 1;
+        }
+    }
+    out
 }
 
-fn src() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("src")
-}
-
-/// The top-level module a source file belongs to.
-fn module_of(path: &Path) -> String {
+/// The module path of a source file: `interp/mod.rs` -> [interp], `cycles/thread/arc.rs` ->
+/// [cycles, thread, arc], `lib.rs` -> [].
+fn module_path(path: &Path) -> Vec<String> {
     let rel = path.strip_prefix(src()).unwrap();
-    let first = rel.components().next().unwrap().as_os_str().to_str().unwrap();
-    first.trim_end_matches(".rs").to_string()
+    let mut parts: Vec<String> = rel.components().map(|c| c.as_os_str().to_str().unwrap().trim_end_matches(".rs").to_string()).collect();
+    if parts.last().is_some_and(|p| p == "mod" || p == "lib") {
+        parts.pop();
+    }
+    parts
+}
+
+/// The names the crate root re-exports, each with the module it comes from (`pub use x::{A, B}`).
+fn root_exports() -> HashMap<String, String> {
+    let lib = code_of(&std::fs::read_to_string(src().join("lib.rs")).unwrap());
+    let mut map = HashMap::new();
+    for stmt in lib.split(';') {
+        let Some(rest) = stmt.trim().strip_prefix("pub use ") else { continue };
+        let module = rest.split("::").next().unwrap().trim().to_string();
+        let names = rest.rsplit("::").next().unwrap().trim_matches(|c| c == '{' || c == '}' || c == ' ');
+        for n in names.split(',') {
+            map.insert(n.trim().to_string(), module.clone());
+        }
+    }
+    map
+}
+
+fn ident(s: &str) -> &str {
+    let end = s.find(|c: char| !(c.is_ascii_alphanumeric() || c == '_')).unwrap_or(s.len());
+    &s[..end]
+}
+
+/// The top-level modules a `crate::` path names: `a::x` -> a; `{a::x, b}` -> a, b; a name the
+/// root re-exports -> its module.
+fn crate_targets(rest: &str, exports: &HashMap<String, String>) -> Vec<String> {
+    let rest = rest.trim_start();
+    if let Some(group) = rest.strip_prefix('{') {
+        // Up to the matching brace; items split at depth 0.
+        let mut depth = 1;
+        let mut items = vec![String::new()];
+        for c in group.chars() {
+            match c {
+                '{' => depth += 1,
+                '}' => {
+                    depth -= 1;
+                    if depth == 0 {
+                        break;
+                    }
+                }
+                ',' if depth == 1 => {
+                    items.push(String::new());
+                    continue;
+                }
+                _ => {}
+            }
+            items.last_mut().unwrap().push(c);
+        }
+        return items.iter().flat_map(|i| crate_targets(i, exports)).collect();
+    }
+    let name = ident(rest);
+    if name.is_empty() || name == "self" {
+        return Vec::new();
+    }
+    let is_module = rest[name.len()..].trim_start().starts_with("::") && name.chars().next().unwrap().is_ascii_lowercase();
+    match exports.get(name) {
+        Some(m) if !is_module => vec![m.clone()],
+        // A type the root does not export: the path was relative to an inline module (`mod
+        // tests`), which the compiler has checked; not a top-level module.
+        None if name.starts_with(|c: char| c.is_ascii_uppercase()) => Vec::new(),
+        _ => vec![name.to_string()],
+    }
 }
 
 #[test]
 fn imports_point_down_the_flow() {
     let mut all = Vec::new();
     files(&src(), &mut all);
+    let exports = root_exports();
     let mut wrong = Vec::new();
     for f in &all {
-        let me = module_of(f);
+        let path = module_path(f);
+        let Some(me) = path.first().cloned() else { continue };
         let mine = layer(&me);
-        let text = std::fs::read_to_string(f).unwrap();
-        for (n, line) in code_lines(&text) {
-            let mut rest = line;
-            while let Some(k) = rest.find("crate::") {
-                rest = &rest[k + "crate::".len()..];
-                let target: String = rest.chars().take_while(|c| c.is_ascii_alphanumeric() || *c == '_').collect();
-                // `crate::{a, b}` and re-exports at the root are names, not modules.
-                if target.is_empty() || target.chars().next().unwrap().is_ascii_uppercase() {
+        let code = code_of(&std::fs::read_to_string(f).unwrap());
+        let shown = f.strip_prefix(src()).unwrap().display().to_string();
+        assert!(!code.contains("macro_export") && !code.contains("macro_use"), "{shown}: a macro exported across modules writes no path the test can follow");
+        for (n, line) in code.lines().enumerate() {
+            let mut targets = Vec::new();
+            let mut at = 0;
+            while let Some(k) = line[at..].find("crate::") {
+                let start = at + k;
+                at = start + "crate::".len();
+                // `$crate::` in a macro, or a path like `ncsight_crate::`.
+                if line[..start].ends_with(|c: char| c.is_ascii_alphanumeric() || c == '_' || c == '$') {
                     continue;
                 }
-                if target != me && layer(&target) >= mine {
-                    wrong.push(format!("{}:{n}: {me} uses crate::{target}", f.strip_prefix(src()).unwrap().display()));
+                // A group may run over lines: take the rest of the file from here.
+                let offset = code.lines().take(n).map(|l| l.len() + 1).sum::<usize>() + at;
+                targets.extend(crate_targets(&code[offset..], &exports));
+            }
+            at = 0;
+            while let Some(k) = line[at..].find("super::") {
+                let start = at + k;
+                if line[..start].ends_with(|c: char| c.is_ascii_alphanumeric() || c == '_') || line[..start].ends_with("super::") {
+                    at = start + 1;
+                    continue;
+                }
+                let mut rest = &line[start..];
+                let mut ups = 0;
+                while let Some(r) = rest.strip_prefix("super::") {
+                    ups += 1;
+                    rest = r;
+                }
+                at = line.len() - rest.len();
+                // A file's own module is the last part of its path.
+                let base = path.len().saturating_sub(ups);
+                if base == 0 {
+                    let offset = code.lines().take(n).map(|l| l.len() + 1).sum::<usize>() + at;
+                    targets.extend(crate_targets(&code[offset..], &exports));
+                }
+            }
+            for t in targets {
+                if t != me && layer(&t) >= mine {
+                    wrong.push(format!("{shown}:{}: {me} uses {t}", n + 1));
                 }
             }
         }
     }
     assert!(wrong.is_empty(), "imports that run back up the flow:\n{}", wrong.join("\n"));
 }
+
 #[test]
 fn interp_and_cycles_name_no_controller() {
     let mut all = Vec::new();
     files(&src().join("interp"), &mut all);
     files(&src().join("cycles"), &mut all);
-    let names = ["gsk", "fanuc", "yasnac", "tdi", "988t", "980t", "lx3", "0-m", "0-t"];
+    let names = ["gsk", "fanuc", "yasnac", "tdi", "988t", "980t", "lx3"];
     let mut found = Vec::new();
     for f in &all {
-        let text = std::fs::read_to_string(f).unwrap();
-        for (n, line) in code_lines(&text) {
-            // Messages may cite a manual by name (a string); identifiers and parameter numbers
-            // may not name a controller.
-            let code: String = line.split('"').step_by(2).collect::<Vec<_>>().join(" ");
-            let lower = code.to_ascii_lowercase();
+        let code = code_of(&std::fs::read_to_string(f).unwrap());
+        let shown = f.strip_prefix(src()).unwrap().display().to_string();
+        for (n, line) in code.lines().enumerate() {
+            // Messages may cite a manual by name (strings are out of `code`); identifiers may
+            // not name a controller, the code may not test which one it runs, and a parameter
+            // number belongs in the profile's rules.
+            let lower = line.to_ascii_lowercase();
             if let Some(name) = names.iter().find(|w| lower.contains(*w)) {
-                found.push(format!("{}:{n}: {name}: {}", f.strip_prefix(src()).unwrap().display(), line.trim()));
+                found.push(format!("{shown}:{}: {name}: {}", n + 1, line.trim()));
             }
-            if code.contains("ParamKey::Number(") {
-                found.push(format!("{}:{n}: a parameter number in the code: {}", f.strip_prefix(src()).unwrap().display(), line.trim()));
+            if line.contains("Number(") {
+                found.push(format!("{shown}:{}: a parameter number in the code: {}", n + 1, line.trim()));
+            }
+            let compact: String = line.chars().filter(|c| !c.is_whitespace()).collect();
+            if compact.contains(".name==") || compact.contains(".title==") || compact.contains("matchstep.profile.name") || compact.contains("matchprofile.name") {
+                found.push(format!("{shown}:{}: a test of which controller this is: {}", n + 1, line.trim()));
             }
         }
     }
     assert!(found.is_empty(), "controller names or parameter numbers in interp/ or cycles/ (make them profile data):\n{}", found.join("\n"));
+}
+
+/// The test itself finds what it is meant to find.
+#[test]
+fn the_layer_reader_sees_through_groups_exports_and_super() {
+    let exports = root_exports();
+    assert_eq!(crate_targets("{interp::Interpreter, motion::Op}", &exports), vec!["interp", "motion"]);
+    assert_eq!(crate_targets("Machine;", &exports), vec!["machine"]);
+    assert_eq!(crate_targets("program::Program", &exports), vec!["program"]);
+    let code = code_of("let s = \"crate::interp\"; // crate::program\nuse crate::motion::Op; let c = '\"'; use crate::geom;");
+    assert!(!code.contains("interp") && !code.contains("program") && code.contains("crate::motion") && code.contains("crate::geom"), "{code}");
 }

@@ -471,7 +471,7 @@ fn cycle(step: &mut Step, words: &mut Words, rules: &'static CycleRules, explici
         let wants = !w.decimal && w.value == 1.0;
         if wants && !enabled {
             // Help note 1: with repair disabled, P1 is ignored.
-            let key = step.profile.thread.repair_enable.map(|k| k.to_string()).unwrap_or_default();
+            let key = step.profile.thread.repair_enable.map(|k| k.spoken()).unwrap_or_default();
             let msg = format!("{}: ignored, thread repair is off (parameter {key} = 0)", w.text());
             step.warn(Rule::TextIgnored, w.span, msg);
         }
@@ -504,7 +504,7 @@ fn cycle(step: &mut Step, words: &mut Words, rules: &'static CycleRules, explici
     if rules.ts_before {
         if let Some(w) = [b'T', b'S'].iter().find_map(|l| words.peek(*l)) {
             // Seed 004 (5) a: T, S and M for G92 come in the blocks before the cycle.
-            let msg = format!("{}: the manual asks for T, S and M of a {gname} cycle in the blocks before it", w.text());
+            let msg = format!("{}: the LX3 manual asks for T, S and M of a G92 cycle in the blocks before it", w.text());
             step.warn(Rule::CycleWords, w.span, msg);
         }
     }

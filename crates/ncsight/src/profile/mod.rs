@@ -364,6 +364,15 @@ impl std::fmt::Display for ParamKey {
 }
 
 impl ParamKey {
+    /// The key as a manual's text says it: `No.19`, `No.174 bit 4`.
+    pub fn spoken(&self) -> String {
+        match self {
+            ParamKey::Number(n, None) => format!("No.{n}"),
+            ParamKey::Number(n, Some(b)) => format!("No.{n} bit {b}"),
+            ParamKey::Setting(s) => s.to_string(),
+        }
+    }
+
     /// Parse `19`, `18.6`, `0018.6`, `8135.7` or a setting name.
     pub fn parse(text: &str) -> Option<ParamKey> {
         let t = text.trim();
@@ -765,6 +774,46 @@ mod tests {
                     None => format!("G{:02}", g.major),
                 };
                 assert_eq!(g.name, want, "{}", p.name);
+            }
+            // Every parameter a rule names exists on the profile (a profile defined as data must
+            // not fail at its first G92 or G73).
+            let mut keys: Vec<ParamKey> = Vec::new();
+            for g in &all {
+                if let GFn::Thread(ThreadCmd::Cycle(rules)) = g.function {
+                    match rules.pull_out {
+                        PullOutRule::JkTenths(k) => keys.push(k),
+                        PullOutRule::JkChamfer { amount, angle } | PullOutRule::Chamfer { amount, angle } => keys.extend([amount, angle]),
+                        PullOutRule::None => {}
+                    }
+                    if let HoldRule::PullOutOrFinish(k) | HoldRule::ThreadUp(k) = rules.hold {
+                        keys.push(k);
+                    }
+                    if rules.repair_p {
+                        assert!(p.thread.repair_enable.is_some(), "{}: {} repairs with P1 but has no repair switch", p.name, g.name);
+                    }
+                }
+                if let GFn::Drill(kind) = g.function {
+                    use crate::codes::DrillKind;
+                    let d = p.drill;
+                    match kind {
+                        DrillKind::G73 => keys.push(d.g73_retract_um.unwrap_or_else(|| panic!("{}: G73 without its retract parameter", p.name))),
+                        DrillKind::G83 => keys.push(d.g83_clearance_um.unwrap_or_else(|| panic!("{}: G83 without its clearance parameter", p.name))),
+                        DrillKind::G76 | DrillKind::G87 => {
+                            let (a, b) = d.shift_bits.unwrap_or_else(|| panic!("{}: {} without its shift bits", p.name, g.name));
+                            keys.extend([a, b]);
+                        }
+                        _ => {}
+                    }
+                }
+            }
+            let t = p.thread;
+            keys.extend([t.pull_out_speed, t.after_end_feed, t.pull_out_accel, t.repair_enable].into_iter().flatten());
+            for k in keys {
+                assert!(p.param(k).is_some(), "{}: a rule names parameter {k}, which the profile does not define", p.name);
+            }
+            // The codes the interpreter names by function are in every table.
+            for f in [GFn::Rapid, GFn::Linear, GFn::ArcCw, GFn::ArcCcw, GFn::PlaneXY, GFn::PlaneZX, GFn::PlaneYZ, GFn::Dwell, GFn::ReferenceReturn] {
+                assert_ne!(p.name_of(f), "?", "{}: no code for {f:?}", p.name);
             }
             let ms: Vec<_> = p.m_codes.iter().flat_map(|t| t.iter()).collect();
             for (i, m) in ms.iter().enumerate() {

@@ -88,6 +88,19 @@ pub struct LatheStock {
     last_thread_end: Option<Vec3>,
 }
 
+/// An arc record (`Arc` or `ThreadArc`) as points from its start to its end, in `pieces(its
+/// length)` equal steps.
+fn arc_samples(op: &Op, pieces: impl Fn(f64) -> usize) -> Vec<Vec3> {
+    let (Op::Arc { from, to, plane, dir, .. } | Op::ThreadArc { from, to, plane, dir, .. }) = *op else {
+        return Vec::new();
+    };
+    let Some(g) = crate::geom::arc_geom_of(op) else {
+        return vec![from, to];
+    };
+    let n = pieces(crate::geom::arc_length(&from, &to, plane, &g)).max(1);
+    (0..=n).map(|k| crate::geom::arc_point(&from, &to, plane, dir, &g, k as f64 / n as f64)).collect()
+}
+
 /// How much a rapid may touch the stock before it counts as a crash, mm.
 const CRASH_MM: f64 = 0.01;
 
@@ -223,24 +236,16 @@ impl LatheStock {
                     return;
                 }
                 self.chuck_check(rec, &from, &to);
-                let g = crate::geom::arc_geom_of(&rec.op).expect("a stored arc");
-                let (plane, dir) = match rec.op {
-                    Op::ThreadArc { plane, dir, .. } => (plane, dir),
-                    _ => unreachable!(),
-                };
                 // Sampled finely along the arc; each piece is cut as a thread of the same lead,
                 // its start angle where the spindle is when the tool gets there.
-                let len = crate::geom::arc_length(&from, &to, plane, &g);
-                let n = ((len / lead_mm.max(1e-6) * 8.0).ceil() as usize).clamp(8, 20_000);
-                let mut a = from;
+                let pts = arc_samples(&rec.op, |len| ((len / lead_mm.max(1e-6) * 8.0).ceil() as usize).clamp(8, 20_000));
                 let mut deg = spindle_deg;
-                for k in 1..=n {
-                    let b = crate::geom::arc_point(&from, &to, plane, dir, &g, k as f64 / n as f64);
+                for w in pts.windows(2) {
+                    let (a, b) = (w[0], w[1]);
                     if b.z != a.z {
                         self.cut_thread(a, b, lead_mm, deg, rpm, tool);
                     }
                     deg = crate::cycles::thread::phase_after(deg, (b.z - a.z).abs(), lead_mm);
-                    a = b;
                 }
                 self.last_thread_end = Some(to);
             }
@@ -250,14 +255,8 @@ impl LatheStock {
             }
             Op::Arc { from, to, .. } if spindle_turning => {
                 self.chuck_check(rec, &from, &to);
-                let g = crate::geom::arc_geom_of(&rec.op).expect("a stored arc");
-                let (plane, dir) = match rec.op {
-                    Op::Arc { plane, dir, .. } => (plane, dir),
-                    _ => unreachable!(),
-                };
-                let len = crate::geom::arc_length(&from, &to, plane, &g);
-                let n = ((len / (self.grid.dz_mm / 2.0)).ceil() as usize).clamp(2, 100_000);
-                let pts: Vec<Vec3> = (0..=n).map(|k| crate::geom::arc_point(&from, &to, plane, dir, &g, k as f64 / n as f64)).collect();
+                let half_cell = self.grid.dz_mm / 2.0;
+                let pts = arc_samples(&rec.op, |len| ((len / half_cell).ceil() as usize).clamp(2, 100_000));
                 self.sweep(&pts, tool);
             }
             Op::Rapid { from, to } => {
