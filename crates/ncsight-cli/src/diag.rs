@@ -11,17 +11,11 @@ use ncsight::{Diagnostic, Severity};
 use unicode_width::UnicodeWidthChar;
 
 /// How lines that are not UTF-8 are decoded.
-#[derive(Debug, Clone, Copy)]
+#[derive(Debug, Clone, Copy, Default)]
 pub struct Decoding {
     /// `None`: GB18030, then Windows-1252 (the default); `Some`: that encoding for every line
     /// that is not UTF-8.
     forced: Option<&'static encoding_rs::Encoding>,
-}
-
-impl Default for Decoding {
-    fn default() -> Decoding {
-        Decoding { forced: None }
-    }
 }
 
 impl Decoding {

@@ -189,7 +189,7 @@ fn usage_errors_name_the_rule() {
     let (code, _, err) = common::ncsight(&["simulate", prog, "--machine", "gsk980tdi", "--expect", "major=60,minor=56,pitch=0"]);
     assert!(code == 2 && err.contains("pitch"), "{err}");
     let mut long = b"G0 X1".to_vec();
-    long.extend(std::iter::repeat(b' ').take(200_000));
+    long.extend(std::iter::repeat_n(b' ', 200_000));
     long.extend(b"\nM30\n");
     let p = tmp("long.nc", &long);
     let (_, out, _) = common::ncsight(&["check", p.to_str().unwrap(), "--machine", "gsk980tdi", "--format", "short"]);

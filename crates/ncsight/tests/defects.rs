@@ -234,7 +234,7 @@ fn the_end_of_file_mark_is_seen_everywhere() {
     let d = eof(b"G0 X10\nM30\n%\x1A\nG0 X#1\n");
     assert!(d.iter().any(|d| d.code == "NCS-W06") && !d.iter().any(|d| d.span.line == 4), "{d:?}");
     let mut long = b"G0 X10\x1A".to_vec();
-    long.extend(std::iter::repeat(b' ').take(5000));
+    long.extend(std::iter::repeat_n(b' ', 5000));
     long.extend(b"\nG0 X#1\n");
     let d = eof(&long);
     assert!(d.iter().any(|d| d.code == "NCS-W06") && !d.iter().any(|d| d.is_alarm()), "{d:?}");
