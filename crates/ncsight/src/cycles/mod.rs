@@ -4,5 +4,6 @@
 pub mod drill;
 pub mod groove;
 pub mod rough;
+pub mod tap;
 pub mod thread;
 pub mod turning;

@@ -7,10 +7,11 @@ use super::{axis_target, Step};
 use crate::alarm::{Diagnostic, Rule};
 use crate::cycles::thread::compound::{infeed_shift_mm, pass_depths, Flank, Infeed, Schedule};
 use crate::cycles::thread::cycle::{expand_cycle, Cycle};
-use crate::cycles::thread::{phase_after, thread_op, wrap_deg};
+use crate::cycles::tap;
+use crate::cycles::thread::variable_lead::{self, VariableLeadError};
 use crate::modal::{G76Data, G78Data, SpindleDir};
 use crate::profile::Compound;
-use crate::motion::{Hold, LongAxis, Op, Vec3};
+use crate::motion::{Hold, Op, Vec3};
 use crate::read::Word;
 
 /// Lengths the manual gives in least input increments whatever the profile's decimal-point
@@ -256,17 +257,18 @@ pub(super) fn tap(step: &mut Step, words: &mut Words) -> Result<(), Diagnostic> 
     if bottom == a {
         return Ok(());
     }
-    let depth = (bottom.z - a.z).abs();
     let position_mode = step.st.spindle_position_mode;
     let first = step.out.records.len();
+    // Steps 2-4: M05 at the bottom, wait for the stop, turn the other way.
+    let reverse = [
+        Op::Spindle { rpm: 0.0, surface_m_min: None, position_mode, oriented: false },
+        Op::Spindle { rpm: -rpm, surface_m_min: None, position_mode, oriented: false },
+    ];
     for k in 0..starts {
         let deg = k as f64 * 360.0 / starts as f64;
-        step.emit(thread_op(a, bottom, lead, LongAxis::Z, deg, rpm));
-        // Steps 2-4: M05 at the bottom, wait for the stop, turn the other way.
-        step.emit(Op::Spindle { rpm: 0.0, surface_m_min: None, position_mode, oriented: false });
-        step.emit(Op::Spindle { rpm: -rpm, surface_m_min: None, position_mode, oriented: false });
-        let back_deg = wrap_deg(360.0 - phase_after(deg, depth, lead));
-        step.emit(thread_op(bottom, a, lead, LongAxis::Z, back_deg, -rpm));
+        for op in tap::stroke(a, bottom, lead, deg, rpm, &reverse) {
+            step.emit(op);
+        }
         // Step 6: M05.
         step.emit(Op::Spindle { rpm: 0.0, surface_m_min: None, position_mode, oriented: false });
     }
@@ -301,33 +303,19 @@ pub(super) fn variable_lead(step: &mut Step, words: &mut Words, run_deg: Option<
     if to == from {
         return Ok(());
     }
-    let long_axis = LongAxis::of(&from, &to);
-    let i = long_axis.index();
-    let length = (to.axis(i) - from.axis(i)).abs();
     let start_deg = run_deg.or(q.map(|(d, _)| d)).unwrap_or(0.0);
-    let mut done = 0.0;
-    let mut n = 0u32;
-    let mut at = from;
     let max = super::thread::MAX_LEAD_MM;
-    while done < length - 1e-12 {
-        // Lead during revolution n: F + R (n + 1/2); it must stay in (0, max] (help note 1).
-        let rev_lead = lead + change * (n as f64 + 0.5);
-        if !(rev_lead > 0.0 && lead + change * (n as f64 + 1.0) <= max + 1e-9 && lead + change * (n as f64 + 1.0) > 0.0) {
-            return Err(step.alarm(
-                Rule::ThreadData,
-                step.span,
-                format!("G34: after {n} revolutions the lead would leave 0 to {max} mm (F{} R{})", crate::alarm::shown(lead, 4), crate::alarm::shown(change, 4)),
-            ));
-        }
-        let travel = rev_lead.min(length - done);
-        done += travel;
-        let next = super::lerp(&from, &to, done / length);
-        step.emit(thread_op(at, next, rev_lead, long_axis, start_deg, rpm));
-        at = next;
-        n += 1;
-        if n as usize > super::MAX_MOTIONS_PER_BLOCK {
-            return Err(step.alarm(Rule::MotionLimit, step.span, format!("G34: more than {} revolutions in one block", super::MAX_MOTIONS_PER_BLOCK)));
-        }
+    let limit = super::MAX_MOTIONS_PER_BLOCK;
+    let ops = variable_lead::expand(from, to, lead, change, start_deg, rpm, max, limit).map_err(|e| match e {
+        VariableLeadError::LeadLeavesRange(n) => step.alarm(
+            Rule::ThreadData,
+            step.span,
+            format!("G34: after {n} revolutions the lead would leave 0 to {max} mm (F{} R{})", crate::alarm::shown(lead, 4), crate::alarm::shown(change, 4)),
+        ),
+        VariableLeadError::TooMany => step.alarm(Rule::MotionLimit, step.span, format!("G34: more than {limit} revolutions in one block")),
+    })?;
+    for op in ops {
+        step.emit(op);
     }
     Ok(())
 }

@@ -383,15 +383,12 @@ fn rigid_tap_block(step: &mut Step, words: &mut Words, kind: DrillKind) -> Resul
         if end == start {
             return Err(step.alarm(Rule::DrillLevels, step.span, format!("{code}: the hole bottom {axis_name} is where the tool starts: there is nothing to tap")));
         }
-        let long = crate::motion::LongAxis::of(&start, &end);
-        let depth = (bottom - start.axis(along)).abs();
         let tapping = step.out.records.len();
-        step.emit(crate::cycles::thread::thread_op(start, end, lead, long, 0.0, rpm_in));
-        if dwell_s > 0.0 {
-            step.emit(Op::Dwell { seconds: dwell_s });
+        let dwell = [Op::Dwell { seconds: dwell_s }];
+        let at_bottom: &[Op] = if dwell_s > 0.0 { &dwell } else { &[] };
+        for op in crate::cycles::tap::stroke(start, end, lead, 0.0, rpm_in, at_bottom) {
+            step.emit(op);
         }
-        let back_deg = crate::cycles::thread::wrap_deg(360.0 - crate::cycles::thread::phase_after(0.0, depth, lead));
-        step.emit(crate::cycles::thread::thread_op(end, start, lead, long, back_deg, -rpm_in));
         // Note 4: FEED HOLD and single block wait for the end of the tapping and its way out;
         // single block stops after each hole, K times for K repeats (docs/commands/operator.md).
         let recs = step.records_since(tapping);

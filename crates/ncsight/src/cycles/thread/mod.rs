@@ -12,6 +12,7 @@
 pub mod arc;
 pub mod compound;
 pub mod cycle;
+pub mod variable_lead;
 
 use crate::motion::{Op, Vec3};
 
