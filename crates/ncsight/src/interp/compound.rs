@@ -5,13 +5,13 @@ use super::thread::{chamfer_of, jk_pull_out};
 use super::words::Words;
 use super::{axis_target, Step};
 use crate::alarm::{Diagnostic, Rule};
-use crate::cycles::thread::compound::{infeed_shift_mm, pass_depths, Flank, Infeed, Schedule};
+use crate::cycles::thread::compound::{infeed_shift_mm, pass_depths, pass_line, Flank, Infeed, Schedule};
 use crate::cycles::thread::cycle::{expand_cycle, Cycle};
 use crate::cycles::tap;
 use crate::cycles::thread::variable_lead::{self, VariableLeadError};
 use crate::modal::{G76Data, G78Data, SpindleDir};
 use crate::profile::Compound;
-use crate::motion::{Hold, Op, Vec3};
+use crate::motion::{Hold, Op};
 use crate::read::Word;
 
 /// Lengths the manual gives in least input increments whatever the profile's decimal-point
@@ -194,13 +194,9 @@ fn cut(step: &mut Step, words: &mut Words, name: &str, kind: Compound, data: G78
     };
     step.feed_warning(name, lead, rpm);
     for (index, depth) in schedule.into_iter().enumerate() {
-        let end_x = c.x + outward * (height - depth);
         let shift = infeed_shift_mm(infeed, index, depth, height, base.angle_deg);
-        // On a taper the shifted start stays on the pass's cone.
-        let start_z = a.z + shift;
-        let cut_start = Vec3::new(end_x + taper * (c.z - start_z) / (c.z - a.z), a.y, start_z);
-        let cut_end = Vec3::new(end_x, a.y, c.z);
-        let retract = (a.x - end_x).abs();
+        let (cut_start, cut_end) = pass_line(a, c, taper, height, depth, shift);
+        let retract = (a.x - cut_end.x).abs();
         let pull_out = if base.j.is_some() || base.k.is_some() {
             jk_pull_out(step, base.j, base.k, base.pull_out_tenths, lead, outward)
         } else {

@@ -6,6 +6,8 @@
 //! at exactly `k - d`); then `m` finishing passes at the full depth k, the first removing the
 //! finishing allowance d.
 
+use crate::motion::Vec3;
+
 /// How the roughing depths grow.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Schedule {
@@ -97,6 +99,19 @@ pub fn pass_depths(schedule: Schedule, k: f64, first: f64, dmin: f64, allowance:
     }
     out.extend(std::iter::repeat(k).take(finishing as usize));
     Ok(out)
+}
+
+/// Where pass `depth_mm` of a compound cycle cuts: from the cycle's start `a` toward its end
+/// point `c` (the root at full depth `height_mm`), shifted `shift_mm` along Z by the infeed, on
+/// the cone of `taper_mm` (radius, cut start minus cut end). Deeper passes lie toward the root:
+/// at smaller X for an external thread (the start outside the root), larger for an internal one.
+pub fn pass_line(a: Vec3, c: Vec3, taper_mm: f64, height_mm: f64, depth_mm: f64, shift_mm: f64) -> (Vec3, Vec3) {
+    let outward = if a.x > c.x { 1.0 } else { -1.0 };
+    let end_x = c.x + outward * (height_mm - depth_mm);
+    let start_z = a.z + shift_mm;
+    // On a taper the shifted start stays on the pass's cone.
+    let cut_start = Vec3::new(end_x + taper_mm * (c.z - start_z) / (c.z - a.z), a.y, start_z);
+    (cut_start, Vec3::new(end_x, a.y, c.z))
 }
 
 #[cfg(test)]
