@@ -173,4 +173,33 @@ mod tests {
         let u = underline(&long, 7, (long.len() - 6) as u32);
         assert!(u.matches('^').count() <= 2 * 200, "{}", u.len());
     }
+
+    /// Any bytes, any span: rendering never panics, the underline never runs past the line shown.
+    #[test]
+    fn any_bytes_render() {
+        let mut seed = 0x2545_f491_4f6c_dd1du64;
+        let mut next = || {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            seed
+        };
+        for _ in 0..2000 {
+            let len = (next() % 300) as usize;
+            let raw: Vec<u8> = (0..len).map(|_| next() as u8).collect();
+            let col = (next() % 320) as u32 + 1;
+            let span = (next() % 50) as u32;
+            let d = ncsight::Diagnostic::new(ncsight::Rule::BadCharacter, ncsight::alarm::AlarmStyle::Project, ncsight::source::Span::new(1, col, span), "m");
+            for decoding in [Decoding::default(), Decoding::by_label("big5").unwrap()] {
+                let r = render("f", &raw, &d, Style::Full, &decoding);
+                let lines: Vec<&str> = r.lines().collect();
+                if lines.len() >= 3 {
+                    let shown: usize = lines[1].chars().map(shown_width).sum();
+                    let under: usize = lines[2].chars().map(shown_width).sum();
+                    let title = d.rule.title().len() + 1;
+                    assert!(under <= shown + title + 1, "{raw:?} {col} {span}\n{r}");
+                }
+            }
+        }
+    }
 }
