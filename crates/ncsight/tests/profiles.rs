@@ -14,6 +14,7 @@ fn records(profile: &'static Profile, text: &str) -> Vec<Event> {
 fn a_profile_defined_as_data_runs_o0012() {
     let base = profile::by_name("gsk980tdi").unwrap();
     let test_lathe: &'static Profile = Box::leak(Box::new(Profile { name: "test-lathe", title: "a test lathe with the GSK980TDi's rules", ..base.clone() }));
+    test_lathe.validate().unwrap();
     let o0012 = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../../examples/gsk980tdi_o0012.nc")).unwrap();
     let ours = records(test_lathe, &o0012);
     let theirs = records(base, &o0012);
@@ -28,4 +29,35 @@ fn a_profile_defined_as_data_runs_o0012() {
     let slower = run_text(params, Switches::default(), Mode::Run, o0012.as_bytes());
     assert!(slower != theirs, "the setting changes the times");
     assert_eq!(records(base, &o0012), theirs);
+}
+
+/// A profile whose data do not hold together is refused before it runs: a G92 whose rules name
+/// a parameter the profile does not define.
+#[test]
+fn a_profile_with_a_missing_parameter_is_refused() {
+    use ncsight::profile::{CycleRules, GDef, GFn, Group, HoldRule, JkWords, ParamKey, PullOutRule, ThreadCmd};
+    static RULES: CycleRules = CycleRules {
+        code: "G92",
+        rigid: false,
+        negative_f_left_hand: false,
+        lead_i: false,
+        lead_e: false,
+        repair_p: false,
+        starts_l: false,
+        jk: JkWords::None,
+        flank_k: false,
+        ts_before: false,
+        q_start: false,
+        taper: b'R',
+        taper_limit: true,
+        pull_out: PullOutRule::Chamfer { amount: ParamKey::Number(4242, None), angle: ParamKey::Number(4243, None) },
+        hold: HoldRule::AfterRun,
+    };
+    static G93: &[GDef] = &[GDef { major: 93, minor: None, name: "G93", group: Group::Motion, function: GFn::Thread(ThreadCmd::Cycle(&RULES)), meaning: "test" }];
+    let base = profile::by_name("fanuc0m").unwrap();
+    let mut codes: Vec<&'static [GDef]> = base.g_codes.to_vec();
+    codes.push(G93);
+    let broken: &'static Profile = Box::leak(Box::new(Profile { name: "broken", g_codes: Box::leak(codes.into_boxed_slice()), ..base.clone() }));
+    let e = broken.validate().unwrap_err();
+    assert!(e.contains("4242"), "{e}");
 }

@@ -553,6 +553,95 @@ pub fn by_name(name: &str) -> Option<&'static Profile> {
 }
 
 impl Profile {
+    /// Whether the profile's data hold together, so that a run never fails on a mistake in it:
+    /// parameter defaults in range, no code twice, each code's name its numbers, every
+    /// parameter a rule names defined, the drilling cycles' parameters where they are listed,
+    /// the codes the interpreter names by function present. Every built-in profile passes (a
+    /// test); a profile defined as data elsewhere should be checked with it first.
+    pub fn validate(&'static self) -> Result<(), String> {
+        let p = self;
+        let fail = |msg: String| Err(format!("profile {}: {msg}", p.name));
+        for d in p.all_params() {
+            if !(d.min <= d.default && d.default <= d.max) || d.source.is_empty() || d.meaning.is_empty() {
+                return fail(format!("parameter {}: default out of range, or no source or meaning", d.key));
+            }
+        }
+        let all: Vec<&GDef> = p.g_codes.iter().flat_map(|t| t.iter()).collect();
+        for (i, g) in all.iter().enumerate() {
+            if all[i + 1..].iter().any(|h| h.major == g.major && h.minor == g.minor) {
+                return fail(format!("{} twice", g.name));
+            }
+            let want = match g.minor {
+                Some(m) => format!("G{:02}.{m}", g.major),
+                None => format!("G{:02}", g.major),
+            };
+            if g.name != want {
+                return fail(format!("the code {want} is named {}", g.name));
+            }
+        }
+        let mut keys: Vec<ParamKey> = Vec::new();
+        for g in &all {
+            if let GFn::Thread(ThreadCmd::Cycle(rules)) = g.function {
+                match rules.pull_out {
+                    PullOutRule::JkTenths(k) => keys.push(k),
+                    PullOutRule::JkChamfer { amount, angle } | PullOutRule::Chamfer { amount, angle } => keys.extend([amount, angle]),
+                    PullOutRule::None => {}
+                }
+                if let HoldRule::PullOutOrFinish(k) | HoldRule::ThreadUp(k) = rules.hold {
+                    keys.push(k);
+                }
+                if rules.repair_p && p.thread.repair_enable.is_none() {
+                    return fail(format!("{} repairs with P1 but the profile has no repair switch", g.name));
+                }
+            }
+            if let GFn::CompoundThread(_) = g.function {
+                match p.thread.g76 {
+                    Some(k) => keys.extend([k.finishing, k.pull_out, k.angle, k.dmin_um, k.allowance].into_iter().chain(k.pull_out_angle)),
+                    None => return fail(format!("{} without its parameters (ThreadRules.g76)", g.name)),
+                }
+            }
+            if let GFn::Drill(kind) = g.function {
+                use crate::codes::DrillKind;
+                let d = p.drill;
+                let missing = match kind {
+                    DrillKind::G73 => d.g73_retract_um.map(|k| keys.push(k)).is_none(),
+                    DrillKind::G83 => d.g83_clearance_um.map(|k| keys.push(k)).is_none(),
+                    DrillKind::G76 | DrillKind::G87 => d.shift_bits.map(|(a, b)| keys.extend([a, b])).is_none(),
+                    _ => false,
+                };
+                if missing {
+                    return fail(format!("{} without its parameters (DrillRules)", g.name));
+                }
+            }
+        }
+        let t = p.thread;
+        keys.extend([t.pull_out_speed, t.after_end_feed, t.pull_out_accel, t.repair_enable].into_iter().flatten());
+        keys.extend(p.time.rapid);
+        keys.extend([p.time.feed_max, p.time.dry_run]);
+        keys.extend(p.calculator_input);
+        keys.extend(p.peck_back_off);
+        keys.extend(SETTINGS.iter().map(|d| d.key));
+        if let Some(k) = keys.into_iter().find(|k| p.param(*k).is_none()) {
+            return fail(format!("a rule names parameter {k}, which the profile does not define"));
+        }
+        for f in [GFn::Rapid, GFn::Linear, GFn::ArcCw, GFn::ArcCcw, GFn::PlaneXY, GFn::PlaneZX, GFn::PlaneYZ, GFn::Dwell, GFn::ReferenceReturn] {
+            if p.name_of(f) == "?" {
+                return fail(format!("no code for {f:?}"));
+            }
+        }
+        let ms: Vec<&MDef> = p.m_codes.iter().flat_map(|t| t.iter()).collect();
+        for (i, m) in ms.iter().enumerate() {
+            if ms[i + 1..].iter().any(|n| n.code == m.code) {
+                return fail(format!("M{} twice", m.code));
+            }
+        }
+        let params = Params::defaults(p);
+        if !((0..3).all(|a| params.rapid_mm_min(a) > 0.0) && params.feed_max_mm_min() > 0.0) {
+            return fail("the rapid rates and the feed limit must be more than 0".into());
+        }
+        Ok(())
+    }
+
     pub fn g_code(&self, major: u32, minor: Option<u32>) -> Option<&'static GDef> {
         self.g_codes.iter().flat_map(|t| t.iter()).find(|g| g.major == major && g.minor == minor)
     }
@@ -747,77 +836,8 @@ mod tests {
     #[test]
     fn every_profile_is_consistent() {
         for p in all() {
-            for d in p.all_params() {
-                assert!(d.min <= d.default && d.default <= d.max, "{} {}", p.name, d.key);
-                assert!(!d.source.is_empty() && !d.meaning.is_empty());
-            }
-            let params = Params::defaults(p);
-            for a in 0..3 {
-                assert!(params.rapid_mm_min(a) > 0.0);
-            }
-            assert!(params.feed_max_mm_min() > 0.0);
-            // No G code twice.
-            let all: Vec<_> = p.g_codes.iter().flat_map(|t| t.iter()).collect();
-            for (i, g) in all.iter().enumerate() {
-                assert!(
-                    !all[i + 1..].iter().any(|h| h.major == g.major && h.minor == g.minor),
-                    "{}: G{}.{:?} twice",
-                    p.name,
-                    g.major,
-                    g.minor
-                );
-            }
-            // Every code's name is the one its numbers make.
-            for g in &all {
-                let want = match g.minor {
-                    Some(m) => format!("G{:02}.{m}", g.major),
-                    None => format!("G{:02}", g.major),
-                };
-                assert_eq!(g.name, want, "{}", p.name);
-            }
-            // Every parameter a rule names exists on the profile (a profile defined as data must
-            // not fail at its first G92 or G73).
-            let mut keys: Vec<ParamKey> = Vec::new();
-            for g in &all {
-                if let GFn::Thread(ThreadCmd::Cycle(rules)) = g.function {
-                    match rules.pull_out {
-                        PullOutRule::JkTenths(k) => keys.push(k),
-                        PullOutRule::JkChamfer { amount, angle } | PullOutRule::Chamfer { amount, angle } => keys.extend([amount, angle]),
-                        PullOutRule::None => {}
-                    }
-                    if let HoldRule::PullOutOrFinish(k) | HoldRule::ThreadUp(k) = rules.hold {
-                        keys.push(k);
-                    }
-                    if rules.repair_p {
-                        assert!(p.thread.repair_enable.is_some(), "{}: {} repairs with P1 but has no repair switch", p.name, g.name);
-                    }
-                }
-                if let GFn::Drill(kind) = g.function {
-                    use crate::codes::DrillKind;
-                    let d = p.drill;
-                    match kind {
-                        DrillKind::G73 => keys.push(d.g73_retract_um.unwrap_or_else(|| panic!("{}: G73 without its retract parameter", p.name))),
-                        DrillKind::G83 => keys.push(d.g83_clearance_um.unwrap_or_else(|| panic!("{}: G83 without its clearance parameter", p.name))),
-                        DrillKind::G76 | DrillKind::G87 => {
-                            let (a, b) = d.shift_bits.unwrap_or_else(|| panic!("{}: {} without its shift bits", p.name, g.name));
-                            keys.extend([a, b]);
-                        }
-                        _ => {}
-                    }
-                }
-            }
-            let t = p.thread;
-            keys.extend([t.pull_out_speed, t.after_end_feed, t.pull_out_accel, t.repair_enable].into_iter().flatten());
-            for k in keys {
-                assert!(p.param(k).is_some(), "{}: a rule names parameter {k}, which the profile does not define", p.name);
-            }
-            // The codes the interpreter names by function are in every table.
-            for f in [GFn::Rapid, GFn::Linear, GFn::ArcCw, GFn::ArcCcw, GFn::PlaneXY, GFn::PlaneZX, GFn::PlaneYZ, GFn::Dwell, GFn::ReferenceReturn] {
-                assert_ne!(p.name_of(f), "?", "{}: no code for {f:?}", p.name);
-            }
-            let ms: Vec<_> = p.m_codes.iter().flat_map(|t| t.iter()).collect();
-            for (i, m) in ms.iter().enumerate() {
-                assert!(!ms[i + 1..].iter().any(|n| n.code == m.code), "{}: M{} twice", p.name, m.code);
+            if let Err(e) = p.validate() {
+                panic!("{e}");
             }
             assert!(by_name(p.name).is_some());
         }
