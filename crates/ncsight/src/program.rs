@@ -574,16 +574,52 @@ pub fn run_text(params: Params, switches: Switches, mode: Mode, text: &[u8]) -> 
 
 /// [`run_text`] with the operator's actions.
 pub fn run_text_with(params: Params, switches: Switches, mode: Mode, operator: Options, text: &[u8]) -> Vec<Event> {
-    let mut program = Program::with_operator(params, switches, mode, operator);
-    let mut events = Vec::new();
-    for line in text.split_inclusive(|&b| b == b'\n') {
-        program.feed_line(line, &mut |e| events.push(e));
-        if !program.wants_more() {
-            break;
+    events(Program::with_operator(params, switches, mode, operator), text).collect()
+}
+
+/// The events of a programme text, pulled one at a time by the consumer: a line is read only
+/// when the events of the lines before it have been taken, so a consumer that stops early (or
+/// reads a huge text lazily) holds one line's events at a time.
+pub fn events(program: Program, text: &[u8]) -> Events<'_> {
+    Events { program, lines: text.split_inclusive(|&b| b == b'\n'), queue: std::collections::VecDeque::new(), finished: false }
+}
+
+/// See [`events`].
+pub struct Events<'a> {
+    program: Program,
+    lines: std::slice::SplitInclusive<'a, u8, fn(&u8) -> bool>,
+    queue: std::collections::VecDeque<Event>,
+    finished: bool,
+}
+
+impl Events<'_> {
+    /// The programme being run (its status, its time so far).
+    pub fn program(&self) -> &Program {
+        &self.program
+    }
+}
+
+impl Iterator for Events<'_> {
+    type Item = Event;
+
+    fn next(&mut self) -> Option<Event> {
+        loop {
+            if let Some(e) = self.queue.pop_front() {
+                return Some(e);
+            }
+            if self.finished {
+                return None;
+            }
+            let Events { program, lines, queue, finished } = self;
+            match lines.next().filter(|_| program.wants_more()) {
+                Some(line) => program.feed_line(line, &mut |e| queue.push_back(e)),
+                None => {
+                    program.finish(&mut |e| queue.push_back(e));
+                    *finished = true;
+                }
+            }
         }
     }
-    program.finish(&mut |e| events.push(e));
-    events
 }
 
 #[cfg(test)]

@@ -97,3 +97,24 @@ fn a_100_kb_line_is_one_alarm() {
     assert_eq!(alarms[0].span.line, 2);
     assert!(alarms[0].message.contains("100000 bytes"));
 }
+
+/// The events are pulled by the consumer: taking the first few of a long programme reads only
+/// the lines they come from.
+#[test]
+fn events_are_pulled_line_by_line() {
+    let mut text = String::from("G21 G17 G90 G0 X0. Y0. Z10.\n");
+    for i in 0..100_000 {
+        text.push_str(&format!("G1 X{}. F500.\n", i % 100));
+    }
+    text.push_str("M30\n");
+    let params = Params::defaults(profile::by_name("fanuc0m").unwrap());
+    let program = ncsight::Program::new(params, Switches::default(), Mode::Run);
+    let mut events = ncsight::program::events(program, text.as_bytes());
+    let first: Vec<Event> = events.by_ref().take(3).collect();
+    assert_eq!(first.len(), 3);
+    // Three moves: about a second of machine time, not the whole programme's.
+    assert!(events.program().time_s() < 10.0, "{}", events.program().time_s());
+    assert_eq!(events.program().status(), ncsight::Status::Running);
+    let rest = events.count();
+    assert!(rest > 99_000);
+}
