@@ -552,6 +552,7 @@ fn report(
     err: &mut dyn Write,
 ) -> Result<i32, Failure> {
     let (params, switches) = setup(m, err)?;
+    let decoding = m.decoding()?;
     if let Some(path) = output {
         output::LazyFile::new(path, &[file], 0).map_err(usage)?;
     }
@@ -630,7 +631,7 @@ fn report(
         (None, None)
     };
     let shown = if file == "-" { "<stdin>" } else { file };
-    let page = report::Report { file_name: shown, source: &source, params: &params, records: &records, diagnostics: &diags, sim: sim.as_ref(), sim_error: sim_error.as_deref(), decoding: m.decoding()?, settings };
+    let page = report::Report { file_name: shown, source: &source, params: &params, records: &records, diagnostics: &diags, sim: sim.as_ref(), sim_error: sim_error.as_deref(), decoding, settings };
     match output {
         Some(path) => {
             let mut w = output::LazyFile::new(path, &[file], 1 << 16).map_err(usage)?;
