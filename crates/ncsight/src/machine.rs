@@ -343,6 +343,9 @@ impl Machine {
         }
         // CYCLE START: the interrupted cycle again from its start (seed 004: "restarts the current
         // processing from the beginning"), the same records, so the same groove.
+        // A hold during a restart restarts the cycle again: what was left of the earlier
+        // restart is not run (it would cut the rest of the cycle twice).
+        self.again.clear();
         for rec in self.cycle_buf.iter().rev() {
             self.again.push_front(rec.clone());
         }

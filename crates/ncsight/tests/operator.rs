@@ -362,3 +362,36 @@ fn seed_001_g32_1_note_6_every_press_in_the_thread_is_lost() {
     assert!(stops(&r).is_empty(), "{:?}", stops(&r));
     assert_eq!(d.iter().filter(|d| d.code == "NCS-W23").count(), 2);
 }
+
+/// Two FEED HOLDs in one G92 cycle, the second during the restarted cycle: the machine cuts the
+/// cycle once more from its start and never runs what was left of the first restart (the tool
+/// never jumps: every move starts where the one before ended).
+#[test]
+fn a_second_thread_hold_in_a_restarted_cycle_restarts_it_once() {
+    let plain = run("gsk980tdi", &[], Options::default(), O0012);
+    let i = plain.iter().position(|r| r.op.kind() == "thread").unwrap();
+    // The first press in the pull-out (the second thread record), the second in the thread of
+    // the restarted cycle.
+    let pull = (plain[i].t_s + plain[i + 1].t_s) / 2.0;
+    let first = run("gsk980tdi", &[], hold_at(pull), O0012);
+    // The restarted cycle's thread: the next thread record that starts at the cycle's Z5.
+    let k = first
+        .iter()
+        .enumerate()
+        .skip(i + 1)
+        .find(|(_, r)| matches!(r.op, Op::Thread { from, .. } if (from.z - 5.0).abs() < 1e-9))
+        .map(|(k, _)| k)
+        .unwrap();
+    let again = (first[k - 1].t_s + first[k].t_s) / 2.0;
+    let r = run("gsk980tdi", &[], Options { feed_hold_at: vec![pull, again], ..Options::default() }, O0012);
+    let mut at: Option<Vec3> = None;
+    for rec in &r {
+        if let (Some(p), Some(s)) = (at, rec.op.start_point()) {
+            assert!(p.dist(&s) < 1e-9, "a jump from {p:?} to {s:?} at {rec:?}");
+        }
+        if let Some(e) = rec.op.end_point() {
+            at = Some(e);
+        }
+    }
+    assert!(matches!(r.last().unwrap().op, Op::End { .. }));
+}
