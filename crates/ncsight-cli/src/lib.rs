@@ -409,18 +409,12 @@ fn run(
     let operator = operator.options()?;
     let profile = params.profile();
     let mut fmt = format::by_name(format, profile).ok_or_else(|| usage(format!("unknown format '{format}': choose text, jsonl or canon")))?;
-    if let Some(path) = output {
-        // Refused before anything is read or written.
-        output::LazyFile::new(path, &[file], 0).map_err(usage)?;
-    }
+    // Refused before anything is read; created only when there is something to write.
+    let mut file_out = output.map(|path| output::LazyFile::new(path, &[file], OUTPUT_BUFFER_BYTES)).transpose().map_err(usage)?;
     let input = open(file)?;
-    let mut file_out;
     let mut stdout_buf;
-    let writer: &mut dyn Write = match output {
-        Some(path) => {
-            file_out = output::LazyFile::new(path, &[file], OUTPUT_BUFFER_BYTES).map_err(usage)?;
-            &mut file_out
-        }
+    let writer: &mut dyn Write = match file_out.as_mut() {
+        Some(f) => f,
         None => {
             stdout_buf = Tolerant::new(io::BufWriter::with_capacity(OUTPUT_BUFFER_BYTES, Tolerant::new(out)));
             &mut stdout_buf
@@ -553,9 +547,7 @@ fn report(
 ) -> Result<i32, Failure> {
     let (params, switches) = setup(m, err)?;
     let decoding = m.decoding()?;
-    if let Some(path) = output {
-        output::LazyFile::new(path, &[file], 0).map_err(usage)?;
-    }
+    let file_out = output.map(|path| output::LazyFile::new(path, &[file], 1 << 16)).transpose().map_err(usage)?;
     let opts = operator.options()?;
     let job = job_setup(setup_file, stock)?;
     // The page shows the source, so the report reads the whole file (the run still streams).
@@ -632,9 +624,8 @@ fn report(
     };
     let shown = if file == "-" { "<stdin>" } else { file };
     let page = report::Report { file_name: shown, source: &source, params: &params, records: &records, diagnostics: &diags, sim: sim.as_ref(), sim_error: sim_error.as_deref(), decoding, settings };
-    match output {
-        Some(path) => {
-            let mut w = output::LazyFile::new(path, &[file], 1 << 16).map_err(usage)?;
+    match file_out {
+        Some(mut w) => {
             page.write(&mut w)?;
             w.flush()?;
         }
@@ -662,14 +653,12 @@ fn simulate(
     let (params, switches) = setup(m, err)?;
     let decoding = m.decoding()?;
     let job = job_setup(setup_file, stock)?;
-    if let Some(path) = image {
-        output::LazyFile::new(path, &[file], 0).map_err(usage)?;
-        if !params.profile().is_lathe() {
-            return Err(usage(format!(
-                "--image draws the unrolled surface of a thread on a lathe; {} is a machining centre: the drilling simulation has no image (its holes are in the text or JSON output)",
-                params.profile().name
-            )));
-        }
+    let image_out = image.map(|path| output::LazyFile::new(path, &[file], 1 << 16)).transpose().map_err(usage)?;
+    if image_out.is_some() && !params.profile().is_lathe() {
+        return Err(usage(format!(
+            "--image draws the unrolled surface of a thread on a lathe; {} is a machining centre: the drilling simulation has no image (its holes are in the text or JSON output)",
+            params.profile().name
+        )));
     }
     let opts = simulate::options(resolution, expect).map_err(usage)?;
     let input = open(file)?;
@@ -699,8 +688,7 @@ fn simulate(
     let sim = ncsight::stock::measure::simulate_with(&records, &job, &opts, &mut progress_on(err)).map_err(usage)?;
     let body = if format == "json" { simulate::json(&sim.measurement) } else { simulate::text(&sim.measurement) };
     out.write_all(body.as_bytes())?;
-    if let Some(path) = image {
-        let mut w = output::LazyFile::new(path, &[file], 1 << 16).map_err(usage)?;
+    if let Some(mut w) = image_out {
         simulate::image(&sim, &mut w)?;
         w.flush()?;
     }

@@ -81,7 +81,7 @@ fn code_of(text: &str) -> String {
                 continue;
             }
             j += 1;
-            let close: Vec<u8> = std::iter::once(b'"').chain(std::iter::repeat(b'#').take(hashes)).collect();
+            let close: Vec<u8> = std::iter::once(b'"').chain(std::iter::repeat_n(b'#', hashes)).collect();
             while j < b.len() && !b[j..].starts_with(&close) {
                 if b[j] == b'\n' {
                     out.push('\n');

@@ -237,7 +237,8 @@ impl Step<'_> {
     fn feed_plausible(&mut self, f: f64, point: &dyn Fn(f64) -> Vec3) {
         let unit = if self.st.inch { 25.4 } else { 1.0 };
         let shown = crate::alarm::shown(f / unit, 4);
-        let msg = if !self.st.per_rev && f < 10.0 {
+        // The caller has found F implausible in its mode.
+        let msg = if !self.st.per_rev {
             // Along the path (an arc's length, not its chord).
             let length: f64 = (0..16).map(|k| point(k as f64 / 16.0).dist(&point((k + 1) as f64 / 16.0))).sum();
             let minutes = length / f;
@@ -248,13 +249,11 @@ impl Step<'_> {
                 crate::alarm::shown(length, 3),
                 hours_minutes(minutes * 60.0)
             )
-        } else if self.st.per_rev && f > 10.0 {
+        } else {
             format!(
                 "F{shown} under feed per revolution is {shown} {}/rev, more than any cutting tool takes; feed per minute (G98 on these lathes) was probably meant",
                 if self.st.inch { "inch" } else { "mm" }
             )
-        } else {
-            return;
         };
         self.st.feed_warned = Some(f);
         self.warn(Rule::Implausible, self.span, msg);
@@ -438,17 +437,19 @@ fn collect<'w>(
     let mut gs = Vec::new();
     let mut ms = Vec::new();
     // A code not simulated yet answers for its block: its own words (G65's H, G10's L) are not
-    // judged by the rules of the codes that are.
-    let not_yet = block.words.iter().any(|w| {
-        w.letter == b'G'
-            && !w.expr
-            && w.value >= 0.0
-            && w.is_code()
-        && matches!(profile.g_code(w.code().0, w.code().1).map(|g| g.function), Some(GFn::NotYet(_) | GFn::NotYetReference(_)))
-    });
+    // judged by the rules of the codes that are. Looked at only when a letter is not read.
+    let not_yet = || {
+        block.words.iter().any(|w| {
+            w.letter == b'G'
+                && !w.expr
+                && w.value >= 0.0
+                && w.is_code()
+                && matches!(profile.g_code(w.code().0, w.code().1).map(|g| g.function), Some(GFn::NotYet(_) | GFn::NotYetReference(_)))
+        })
+    };
     for (i, w) in block.words.iter().enumerate() {
         let letter = w.letter;
-        if !profile.takes_address(letter) && !not_yet {
+        if !profile.takes_address(letter) && !not_yet() {
             return Err(step.alarm(
                 Rule::ImproperAddress,
                 w.span,
@@ -1068,7 +1069,9 @@ enum ArcOutcome {
 
 /// The arc a block's R or centre words describe, from `from` to `to` in the plane in force.
 /// R wins over I/J/K (TDi help G02/03 note 1; seed 002 note 4).
-fn resolve_arc(step: &mut Step, words: &mut Words, from: Vec3, to: Vec3, dir: ArcDir, gname: &str) -> Result<ArcOutcome, Diagnostic> {
+fn resolve_arc(step: &mut Step, words: &mut Words, from: Vec3, to: Vec3, dir: ArcDir, gname: impl Into<What>) -> Result<ArcOutcome, Diagnostic> {
+    // The name is looked up only when a message needs it.
+    let gname = gname.into();
     let plane = step.st.plane;
     let (a, b, _) = plane.axes();
     let letter_of = |axis: usize| [b'I', b'J', b'K'][axis];
@@ -1085,13 +1088,13 @@ fn resolve_arc(step: &mut Step, words: &mut Words, from: Vec3, to: Vec3, dir: Ar
         return match geom::arc_from_radius(from, to, plane, dir, r, ARC_TOLERANCE_MM) {
             Ok(g) => Ok(ArcOutcome::Arc(g)),
             Err(ArcError::ZeroArcWithR) => {
-                step.warn(Rule::ZeroArc, rw.span, format!("{gname} with {}: start and end coincide, a 0-degree arc (no motion)", rw.text()));
+                step.warn(Rule::ZeroArc, rw.span, format!("{} with {}: start and end coincide, a 0-degree arc (no motion)", gname.name(step.profile), rw.text()));
                 Ok(ArcOutcome::Zero)
             }
             Err(ArcError::RadiusTooSmall(r, half)) => Err(step.alarm(
                 Rule::RadiusTolerance,
                 rw.span,
-                format!("{gname} {}: radius {r:.4} mm is less than half the distance to the end point ({half:.4} mm)", rw.text()),
+                format!("{} {}: radius {r:.4} mm is less than half the distance to the end point ({half:.4} mm)", gname.name(step.profile), rw.text()),
             )),
             Err(e) => unreachable!("{e:?}"),
         };
@@ -1100,7 +1103,7 @@ fn resolve_arc(step: &mut Step, words: &mut Words, from: Vec3, to: Vec3, dir: Ar
         return Err(step.alarm(
             Rule::ArcDataMissing,
             step.span,
-            format!("{gname} needs R or the centre words {} and {} in this plane", la as char, lb as char),
+            format!("{} needs R or the centre words {} and {} in this plane", gname.name(step.profile), la as char, lb as char),
         ));
     }
     let mut center = from;
@@ -1116,7 +1119,7 @@ fn resolve_arc(step: &mut Step, words: &mut Words, from: Vec3, to: Vec3, dir: Ar
         Err(ArcError::RadiusMismatch(rs, re)) => Err(step.alarm(
             Rule::RadiusTolerance,
             step.span,
-            format!("{gname}: the end point is {re:.4} mm from the centre, the start point {rs:.4} mm (tolerance {ARC_TOLERANCE_MM} mm)"),
+            format!("{}: the end point is {re:.4} mm from the centre, the start point {rs:.4} mm (tolerance {ARC_TOLERANCE_MM} mm)", gname.name(step.profile)),
         )),
         Err(e) => unreachable!("{e:?}"),
     }
@@ -1124,7 +1127,7 @@ fn resolve_arc(step: &mut Step, words: &mut Words, from: Vec3, to: Vec3, dir: Ar
 
 fn arc(step: &mut Step, words: &mut Words, from: Vec3, to: Vec3, dir: ArcDir) -> Result<(), Diagnostic> {
     let plane = step.st.plane;
-    let gname = step.profile.name_of(if dir == ArcDir::Cw { GFn::ArcCw } else { GFn::ArcCcw });
+    let gname = What::Code(if dir == ArcDir::Cw { GFn::ArcCw } else { GFn::ArcCcw });
     match resolve_arc(step, words, from, to, dir, gname)? {
         ArcOutcome::Arc(g) => {
             let feed = step.cutting_feed(gname, &|u| geom::arc_point(&from, &to, plane, dir, &g, u))?;

@@ -153,11 +153,7 @@ fn full_width(s: &[u8]) -> Option<(String, char, usize)> {
     if s.len() >= 2 && s[0] == 0xA1 && s[1] == 0xA1 {
         return Some(("\u{3000}".into(), ' ', 2));
     }
-    let len = match s.first()? {
-        0xE0..=0xEF => 3,
-        _ => return None,
-    };
-    let c = std::str::from_utf8(s.get(..len)?).ok()?.chars().next()?;
+    let c = utf8_char(s)?;
     let twin = match c as u32 {
         0xFF01..=0xFF5E => char::from_u32(c as u32 - 0xFEE0)?,
         0x3000 => ' ',
@@ -165,7 +161,7 @@ fn full_width(s: &[u8]) -> Option<(String, char, usize)> {
         0x3002 => '.',
         _ => return None,
     };
-    Some((c.to_string(), twin, len))
+    Some((c.to_string(), twin, c.len_utf8()))
 }
 
 /// Reads lines. Holds only what a line needs.
