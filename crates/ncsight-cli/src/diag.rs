@@ -130,6 +130,12 @@ pub fn render(file: &str, line_text: &[u8], d: &Diagnostic, style: Style, decodi
     if let Some(h) = &d.hint {
         out.push_str(&format!("   = hint: {}\n", printable(h)));
     }
+    // Raised in a subprogramme: the calls that led there, innermost first.
+    for (i, c) in d.calls.iter().rev().enumerate() {
+        let whose = if i == 0 { "in a subprogramme called" } else { "    which was called" };
+        let place = if c.file != d.span.file && i == 0 { " of the calling file" } else { "" };
+        out.push_str(&format!("   = {whose} at line {}, column {}{place}\n", c.line, c.col));
+    }
     out
 }
 

@@ -3,7 +3,7 @@
 //! interpreting share the two cores a small machine has. Memory stays bounded: a few batches of
 //! at most `BATCH_BYTES` (plus one kept line) are in flight, and their buffers are reused.
 
-use ncsight::{Event, LineReader, Program, ReadBatch};
+use ncsight::{Event, LineReader, Program, ReadBatch, Request};
 use std::io::{self, BufRead};
 use std::ops::Range;
 use std::sync::mpsc;
@@ -19,6 +19,108 @@ const BATCH_LINES: usize = 2048;
 /// Batches read but not yet interpreted, at most.
 const BATCHES_IN_FLIGHT: usize = 4;
 
+/// A programme text the reading thread reads: a stream, and for a file a way back to any byte
+/// offset (a jump to an earlier block re-reads the file from there, so nothing is held whole).
+pub trait Text: BufRead + Send {
+    /// Go on reading from byte `offset`.
+    fn seek_to(&mut self, offset: u64) -> io::Result<()>;
+}
+
+impl Text for io::BufReader<std::fs::File> {
+    fn seek_to(&mut self, offset: u64) -> io::Result<()> {
+        io::Seek::seek(self, io::SeekFrom::Start(offset)).map(|_| ())
+    }
+}
+
+impl<T: AsRef<[u8]> + Send> Text for io::Cursor<T> {
+    fn seek_to(&mut self, offset: u64) -> io::Result<()> {
+        self.set_position(offset);
+        Ok(())
+    }
+}
+
+/// A text that can only be read once (a pipe): a jump back is refused with a clear error.
+pub struct Stream(pub Box<dyn BufRead + Send>);
+
+impl io::Read for Stream {
+    fn read(&mut self, buf: &mut [u8]) -> io::Result<usize> {
+        self.0.read(buf)
+    }
+}
+
+impl BufRead for Stream {
+    fn fill_buf(&mut self) -> io::Result<&[u8]> {
+        self.0.fill_buf()
+    }
+    fn consume(&mut self, n: usize) {
+        self.0.consume(n)
+    }
+}
+
+impl Text for Stream {
+    fn seek_to(&mut self, _: u64) -> io::Result<()> {
+        Err(io::Error::new(io::ErrorKind::Unsupported, "the programme jumps back (a subprogramme call or return), and a pipe cannot be read again: give the programme as a file"))
+    }
+}
+
+/// Where a called programme that the text lacks is looked for (`--subprogram-dir`).
+#[derive(Debug, Default)]
+pub struct Library {
+    pub dirs: Vec<std::path::PathBuf>,
+    /// Each file of the directories, with the programme numbers it holds (read once, when a
+    /// programme is first looked for by content).
+    contents: Option<Vec<(std::path::PathBuf, Vec<u32>)>>,
+}
+
+impl Library {
+    pub fn new(dirs: Vec<std::path::PathBuf>) -> Library {
+        Library { dirs, contents: None }
+    }
+
+    fn files(&self) -> Vec<std::path::PathBuf> {
+        let mut files: Vec<_> = self
+            .dirs
+            .iter()
+            .filter_map(|d| std::fs::read_dir(d).ok())
+            .flat_map(|rd| rd.filter_map(|e| e.ok()).map(|e| e.path()).filter(|p| p.is_file()).collect::<Vec<_>>())
+            .collect();
+        files.sort();
+        files
+    }
+
+    /// The file that holds programme O`number`: one named after it (`O1234`, `o1234.nc`, any
+    /// extension, any case, leading zeros or not), else one whose text holds it.
+    pub fn find(&mut self, number: u32, reader: &LineReader) -> Option<std::path::PathBuf> {
+        let named = |p: &std::path::PathBuf| {
+            let stem = p.file_stem().and_then(|s| s.to_str()).unwrap_or("");
+            let digits = stem.strip_prefix('O').or_else(|| stem.strip_prefix('o'));
+            digits.is_some_and(|d| !d.is_empty() && d.bytes().all(|b| b.is_ascii_digit()) && d.parse::<u32>().ok() == Some(number))
+        };
+        let files = self.files();
+        if let Some(p) = files.iter().find(|p| named(p)) {
+            return Some(p.clone());
+        }
+        let contents = self.contents.get_or_insert_with(|| {
+            files
+                .iter()
+                .map(|p| {
+                    let mut numbers = Vec::new();
+                    if let Ok(f) = std::fs::File::open(p) {
+                        let mut r = io::BufReader::new(f);
+                        let mut line = Vec::new();
+                        while r.read_until(b'\n', &mut line).is_ok_and(|n| n > 0) {
+                            reader.program_numbers(&line, &mut numbers);
+                            line.clear();
+                        }
+                    }
+                    (p.clone(), numbers)
+                })
+                .collect()
+        });
+        contents.iter().find(|(_, n)| n.contains(&number)).map(|(p, _)| p.clone())
+    }
+}
+
 /// Lines on their way from the reading thread to the interpreting one: their text (for the
 /// diagnostics) and what the reader made of them.
 #[derive(Default)]
@@ -27,6 +129,10 @@ struct Batch {
     /// Each line's text in `text`.
     ranges: Vec<Range<usize>>,
     read: ReadBatch,
+    /// Which seek these lines follow (lines of an earlier one are dropped).
+    generation: u32,
+    /// The text ends after these lines.
+    end: bool,
 }
 
 impl Batch {
@@ -34,18 +140,32 @@ impl Batch {
         self.text.clear();
         self.ranges.clear();
         self.read.clear();
+        self.end = false;
     }
 
     fn is_full(&self) -> bool {
         self.text.len() >= BATCH_BYTES || self.ranges.len() >= BATCH_LINES
     }
 
-    /// Read the text from `start` to the end as line `line_no`.
-    fn read_line(&mut self, reader: &LineReader, line_no: u32, start: usize) {
+    /// Read the text from `start` to the end as line `line_no`, `bytes` long in the input.
+    fn read_line(&mut self, reader: &LineReader, line_no: u32, start: usize, bytes: u64) {
         let range = start..self.text.len();
         self.read.push(reader, line_no, &self.text[range.clone()]);
+        if bytes != range.len() as u64 {
+            self.read.set_last_line_bytes(bytes);
+        }
         self.ranges.push(range);
     }
+}
+
+/// What the interpreting thread tells the reading one: read `file` (opening `path` the first
+/// time) from byte `offset`, the first line numbered `line`.
+struct Seek {
+    generation: u32,
+    file: u16,
+    path: Option<std::path::PathBuf>,
+    offset: u64,
+    line: u32,
 }
 
 /// An error reading the input (not writing the output): the caller names the file.
@@ -65,27 +185,90 @@ pub fn is_read_failure(e: &io::Error) -> bool {
     e.get_ref().is_some_and(|i| i.is::<ReadFailure>())
 }
 
-/// Feed `input` line by line into `program`; `on_event` gets each event with its line's text.
-/// Stops reading when the programme wants no more (an alarm in a run, the end of the text).
+/// The file an event's line is in: `None` for the file the run began with, else the name of
+/// the subprogramme file the library gave.
+pub type FileName<'a> = Option<&'a str>;
+
+/// Feed `input` line by line into `program`; `on_event` gets each event with its line's text
+/// and, for a line of another file, that file's name. Jumps (subprogramme calls and returns)
+/// re-read the input from an earlier place, or a file of `library`. Stops reading when the
+/// programme wants no more (an alarm in a run, the end of the text).
 pub fn drive(
-    input: Box<dyn BufRead + Send>,
+    input: Box<dyn Text>,
+    library: &mut Library,
     program: &mut Program,
-    on_event: &mut dyn FnMut(&Event, &[u8]) -> io::Result<()>,
+    on_event: &mut dyn FnMut(&Event, &[u8], FileName) -> io::Result<()>,
 ) -> io::Result<()> {
     let reader = program.line_reader();
+    let thread_reader = reader.clone();
     let (full_tx, full_rx) = mpsc::sync_channel::<io::Result<Batch>>(BATCHES_IN_FLIGHT);
     let (empty_tx, empty_rx) = mpsc::channel::<Batch>();
+    let (seek_tx, seek_rx) = mpsc::channel::<Seek>();
     let reading = std::thread::Builder::new()
         .name("ncsight-read".into())
-        .spawn(move || read_ahead(input, &reader, &full_tx, &empty_rx))?;
+        .spawn(move || read_ahead(input, &thread_reader, &full_tx, &empty_rx, &seek_rx))?;
     let mut pending: io::Result<()> = Ok(());
     let mut stopped = false;
     // The number of the line being fed (the reader counts the same way), and the text of the
     // last line fed once its batch is gone (for what the end of the input says about it).
     let mut line_no = 0u32;
     let mut last_text = Vec::new();
+    // The seek the batches must follow, the file being read and the names of the files opened.
+    let mut generation = 0u32;
+    let mut file = 0u16;
+    let mut names: Vec<String> = vec![String::new()];
+    let mut deliver = |e: Event, text: &[u8], names: &[String], pending: &mut io::Result<()>| {
+        let name = match &e {
+            Event::Diagnostic(d) if d.span.file > 0 => names.get(d.span.file as usize).map(String::as_str),
+            Event::Record(r) if r.span.file > 0 => names.get(r.span.file as usize).map(String::as_str),
+            _ => None,
+        };
+        if pending.is_ok() {
+            *pending = on_event(&e, text, name);
+        }
+    };
+    // Where the run asks to read next: the reading thread is told, and lines of the old place
+    // still on their way are dropped.
+    let mut follow = |request: Request, program: &mut Program, names: &mut Vec<String>, generation: &mut u32, file: &mut u16, line_no: &mut u32, pending: &mut io::Result<()>, deliver: &mut dyn FnMut(Event, &[u8], &[String], &mut io::Result<()>)| -> bool {
+        let mut request = Some(request);
+        while let Some(r) = request.take() {
+            match r {
+                Request::Seek(p) => {
+                    *generation += 1;
+                    let path = (p.file as usize >= names.len()).then(|| std::path::PathBuf::from(program.file_name(p.file)));
+                    if let Some(path) = &path {
+                        names.resize(p.file as usize + 1, String::new());
+                        names[p.file as usize] = path.display().to_string();
+                    }
+                    *file = p.file;
+                    *line_no = p.line.wrapping_sub(1);
+                    if seek_tx.send(Seek { generation: *generation, file: p.file, path, offset: p.offset, line: p.line }).is_err() {
+                        return false;
+                    }
+                }
+                Request::Find { number } => match library.find(number, &reader) {
+                    Some(path) => {
+                        program.open_file(path.display().to_string());
+                        request = program.take_request();
+                    }
+                    None => {
+                        let names_now = names.clone();
+                        program.no_file(&mut |e| deliver(e, b"", &names_now, pending));
+                        request = program.take_request();
+                    }
+                },
+            }
+        }
+        true
+    };
     'batches: for batch in full_rx.iter() {
         let mut batch = batch?;
+        if batch.generation != generation {
+            batch.clear();
+            let _ = empty_tx.send(batch);
+            continue;
+        }
+        let mut jumped = false;
         for (i, range) in batch.ranges.iter().enumerate() {
             if !program.wants_more() {
                 if let Some(r) = i.checked_sub(1).map(|k| batch.ranges[k].clone()) {
@@ -98,29 +281,41 @@ pub fn drive(
             line_no = line_no.wrapping_add(1);
             let line = &batch.text[range.clone()];
             let (ranges, text) = (&batch.ranges, &batch.text);
+            let here = (line_no, file);
             program.feed_from(&batch.read, i, &mut |e| {
                 // A diagnostic about an earlier line (a cycle that ends here) gets that line's
                 // text while the line is still in this batch, none once it is gone.
                 let text = match &e {
-                    Event::Diagnostic(d) if d.span.line != line_no => {
-                        let back = line_no.wrapping_sub(d.span.line) as usize;
+                    Event::Diagnostic(d) if d.span.file != here.1 => &b""[..],
+                    Event::Diagnostic(d) if d.span.line != here.0 => {
+                        let back = here.0.wrapping_sub(d.span.line) as usize;
                         match i.checked_sub(back) {
-                            Some(k) if d.span.line < line_no => &text[ranges[k].clone()],
+                            Some(k) if d.span.line < here.0 => &text[ranges[k].clone()],
                             _ => &b""[..],
                         }
                     }
                     _ => line,
                 };
-                if pending.is_ok() {
-                    pending = on_event(&e, text);
-                }
+                deliver(e, text, &names, &mut pending);
             });
             pending.as_ref().map_err(|e| io::Error::new(e.kind(), e.to_string()))?;
+            if let Some(r) = program.take_request() {
+                last_text.clear();
+                last_text.extend_from_slice(line);
+                if !follow(r, program, &mut names, &mut generation, &mut file, &mut line_no, &mut pending, &mut deliver) {
+                    break 'batches;
+                }
+                jumped = true;
+                break;
+            }
         }
-        if let Some(r) = batch.ranges.last() {
-            last_text.clear();
-            last_text.extend_from_slice(&batch.text[r.clone()]);
+        if !jumped {
+            if let Some(r) = batch.ranges.last() {
+                last_text.clear();
+                last_text.extend_from_slice(&batch.text[r.clone()]);
+            }
         }
+        let end = batch.end && !jumped;
         batch.clear();
         // The reader may have ended already; then the batch is simply dropped.
         let _ = empty_tx.send(batch);
@@ -128,42 +323,115 @@ pub fn drive(
             stopped = true;
             break;
         }
-    }
-    drop(full_rx);
-    if !stopped {
-        // The reader sent its last batch and returned; a panic there is a bug to pass on.
-        if let Err(p) = reading.join() {
-            std::panic::resume_unwind(p);
+        if end {
+            let names_now = names.clone();
+            let r = program.end_of_text(&mut |e| {
+                let text = match &e {
+                    Event::Diagnostic(d) if d.span.line == line_no => &last_text[..],
+                    _ => &b""[..],
+                };
+                deliver(e, text, &names_now, &mut pending)
+            });
+            match r {
+                Some(r) => {
+                    if !follow(r, program, &mut names, &mut generation, &mut file, &mut line_no, &mut pending, &mut deliver) {
+                        break;
+                    }
+                }
+                None => {
+                    drop(seek_tx);
+                    drop(full_rx);
+                    if let Err(p) = reading.join() {
+                        std::panic::resume_unwind(p);
+                    }
+                    return pending;
+                }
+            }
         }
     }
-    // Otherwise the reader ends at its next send (the channel is closed); it is not waited for,
-    // as it may be waiting for input that never comes (a terminal, a pipe left open).
-    program.finish(&mut |e| {
+    drop(full_rx);
+    drop(seek_tx);
+    let _ = stopped;
+    // The reader ends at its next send or wait (the channels are closed); it is not waited
+    // for, as it may be waiting for input that never comes (a terminal, a pipe left open).
+    let names_now = names.clone();
+    let mut request = program.end_of_text(&mut |e| {
         let text = match &e {
             Event::Diagnostic(d) if d.span.line == line_no => &last_text[..],
             _ => &b""[..],
         };
-        if pending.is_ok() {
-            pending = on_event(&e, text);
-        }
+        deliver(e, text, &names_now, &mut pending)
     });
+    // Nothing more is read: a run that still asks to read elsewhere ends here.
+    while request.is_some() {
+        request = program.end_of_text(&mut |e| deliver(e, b"", &names_now, &mut pending));
+    }
     pending
 }
 
-/// The reading thread: lines into batches, until the input ends or nobody listens.
+/// The reading thread: lines into batches, until the input ends or nobody listens; at the end
+/// of a text it waits for a seek (a jump back, a subprogramme in another file).
 fn read_ahead(
-    mut input: Box<dyn BufRead + Send>,
+    input: Box<dyn Text>,
     reader: &LineReader,
     full: &mpsc::SyncSender<io::Result<Batch>>,
     empty: &mpsc::Receiver<Batch>,
+    seeks: &mpsc::Receiver<Seek>,
 ) {
+    let mut texts: Vec<Option<Box<dyn Text>>> = vec![Some(input)];
+    let mut current = 0usize;
+    let mut generation = 0u32;
     let mut batch = Batch::default();
     let mut line_no = 0u32;
-    // Where the line being gathered starts in the batch text; the rest of an over-long line is
-    // being skipped.
+    // Where the line being gathered starts in the batch text, how long it is in the input; the
+    // rest of an over-long line is being skipped.
     let mut start = 0usize;
+    let mut line_bytes = 0u64;
     let mut skipping = false;
+    let mut at_end = false;
     loop {
+        // A seek: the lines gathered for the old place are dropped.
+        let seek = if at_end { seeks.recv().ok() } else { seeks.try_recv().ok() };
+        if at_end && seek.is_none() {
+            return;
+        }
+        if let Some(s) = seek {
+            // Only the latest seek counts.
+            let mut s = s;
+            while let Ok(later) = seeks.try_recv() {
+                s = later;
+            }
+            generation = s.generation;
+            batch.clear();
+            batch.generation = generation;
+            (start, line_bytes, skipping, at_end) = (0, 0, false, false);
+            line_no = s.line.wrapping_sub(1);
+            let i = s.file as usize;
+            if texts.len() <= i {
+                texts.resize_with(i + 1, || None);
+            }
+            if texts[i].is_none() {
+                if let Some(path) = &s.path {
+                    match std::fs::File::open(path) {
+                        Ok(f) => texts[i] = Some(Box::new(io::BufReader::with_capacity(1 << 16, f))),
+                        Err(e) => {
+                            let _ = full.send(Err(io::Error::new(e.kind(), ReadFailure(io::Error::new(e.kind(), format!("{}: {e}", path.display()))))));
+                            return;
+                        }
+                    }
+                }
+            }
+            current = i;
+            let result = match texts[i].as_mut() {
+                Some(t) => t.seek_to(s.offset),
+                None => Err(io::Error::new(io::ErrorKind::NotFound, "no such file")),
+            };
+            if let Err(e) = result {
+                let _ = full.send(Err(io::Error::new(e.kind(), ReadFailure(e))));
+                return;
+            }
+        }
+        let Some(input) = texts[current].as_mut() else { return };
         let buf = match input.fill_buf() {
             Ok(b) => b,
             Err(e) if e.kind() == io::ErrorKind::Interrupted => continue,
@@ -171,27 +439,34 @@ fn read_ahead(
                 // The lines read before the error are interpreted first.
                 if !batch.ranges.is_empty() {
                     batch.text.truncate(start);
-                    let _ = full.send(Ok(batch));
+                    let next = Batch { generation, ..Batch::default() };
+                    let _ = full.send(Ok(std::mem::replace(&mut batch, next)));
                 }
                 let _ = full.send(Err(io::Error::new(e.kind(), ReadFailure(e))));
                 return;
             }
         };
         if buf.is_empty() {
-            if batch.text.len() > start && !skipping {
+            if batch.text.len() > start {
                 line_no = line_no.wrapping_add(1);
-                batch.read_line(reader, line_no, start);
+                batch.read_line(reader, line_no, start, line_bytes);
             }
-            if !batch.ranges.is_empty() {
-                let _ = full.send(Ok(batch));
+            batch.end = true;
+            let mut next = empty.try_recv().unwrap_or_default();
+            next.clear();
+            next.generation = generation;
+            if full.send(Ok(std::mem::replace(&mut batch, next))).is_err() {
+                return;
             }
-            return;
+            (start, line_bytes, skipping, at_end) = (0, 0, false, true);
+            continue;
         }
         let (piece, complete) = match buf.iter().position(|&b| b == b'\n') {
             Some(k) => (&buf[..=k], true),
             None => (buf, false),
         };
         let used = piece.len();
+        line_bytes += used as u64;
         // The buffer is used up: the next read may wait (a terminal, a pipe), so the lines
         // read so far go now.
         let drained = used == buf.len();
@@ -199,12 +474,22 @@ fn read_ahead(
             let room = MAX_KEPT_LINE_BYTES - (batch.text.len() - start);
             batch.text.extend_from_slice(&piece[..used.min(room)]);
             if complete || batch.text.len() - start == MAX_KEPT_LINE_BYTES {
-                line_no = line_no.wrapping_add(1);
-                batch.read_line(reader, line_no, start);
+                if complete {
+                    line_no = line_no.wrapping_add(1);
+                    batch.read_line(reader, line_no, start, line_bytes);
+                    line_bytes = 0;
+                }
                 skipping = !complete;
-                start = batch.text.len();
+                if complete {
+                    start = batch.text.len();
+                }
             }
         } else if complete {
+            // The end of an over-long line: its start is read now, with its whole length.
+            line_no = line_no.wrapping_add(1);
+            batch.read_line(reader, line_no, start, line_bytes);
+            start = batch.text.len();
+            line_bytes = 0;
             skipping = false;
         }
         input.consume(used);
@@ -212,6 +497,7 @@ fn read_ahead(
             // The line being gathered, if any, moves on to the next batch.
             let mut next = empty.try_recv().unwrap_or_default();
             next.clear();
+            next.generation = generation;
             next.text.extend_from_slice(&batch.text[start..]);
             batch.text.truncate(start);
             if full.send(Ok(std::mem::replace(&mut batch, next))).is_err() {
@@ -235,7 +521,7 @@ mod tests {
     fn events_of(input: Box<dyn BufRead + Send>, mode: Mode) -> (Vec<Event>, Vec<Vec<u8>>) {
         let mut p = program(mode);
         let (mut events, mut texts) = (Vec::new(), Vec::new());
-        drive(input, &mut p, &mut |e, text| {
+        drive(Box::new(Stream(input)), &mut Library::default(), &mut p, &mut |e, text, _| {
             events.push(e.clone());
             texts.push(text.to_vec());
             Ok(())
@@ -289,7 +575,7 @@ mod tests {
         }
         let mut p = program(Mode::Check);
         let mut alarms = Vec::new();
-        let r = drive(Box::new(io::BufReader::new(Broken(Some(b"G0 X1. Q5\nG0 X2".to_vec())))), &mut p, &mut |e, _| {
+        let r = drive(Box::new(Stream(Box::new(io::BufReader::new(Broken(Some(b"G0 X1. Q5\nG0 X2".to_vec())))))), &mut Library::default(), &mut p, &mut |e, _, _| {
             if let Event::Diagnostic(d) = e {
                 alarms.push(d.span.line);
             }
@@ -309,7 +595,7 @@ mod tests {
         let text = "G99 M03 S500\nG00 X50. Z2.\nG71 U2. R0.5\nG71 P10 Q20 U0 W0 F0.2\nN10 G00 X20. Z2.\nG01 X40. Z-10.\nZ-15.\nN20 X30. Z-20.\nM30\n";
         let mut p = Program::new(Params::defaults(profile::by_name("gsk980tdi").unwrap()), Switches::default(), Mode::Check);
         let mut seen = Vec::new();
-        drive(Box::new(io::Cursor::new(text.as_bytes().to_vec())), &mut p, &mut |e, t| {
+        drive(Box::new(io::Cursor::new(text.as_bytes().to_vec())), &mut Library::default(), &mut p, &mut |e, t, _| {
             if let Event::Diagnostic(d) = e {
                 seen.push((d.span.line, String::from_utf8_lossy(t).into_owned()));
             }

@@ -11,7 +11,7 @@ pub mod simulate;
 use clap::{Parser, Subcommand};
 use ncsight::profile::{self, Params, Profile};
 use ncsight::{Event, Mode, Program, Severity, Status, Switches};
-use std::io::{self, BufRead, BufReader, Read, Write};
+use std::io::{self, BufReader, Read, Write};
 
 /// Exit status: ran to the end / clean.
 pub const EXIT_OK: i32 = 0;
@@ -64,9 +64,49 @@ struct MachineArgs {
     /// editors save them, else Windows-1252): gbk, gb18030, big5, shift_jis, latin1, ...
     #[arg(long, value_name = "NAME")]
     encoding: Option<String>,
+    /// The main programme, when it is not the first programme in the file (O1234 or 1234).
+    #[arg(long, value_name = "O1234")]
+    main: Option<String>,
+    /// A directory where a called programme the file lacks is looked for (repeatable): a file
+    /// named after its number (O1234, o1234.nc, ...), else a file that holds it.
+    #[arg(long = "subprogram-dir", value_name = "DIR")]
+    subprogram_dirs: Vec<std::path::PathBuf>,
+    /// A called programme that no file holds is skipped with a warning (builder macros live
+    /// in the machine), instead of the controller's alarm.
+    #[arg(long)]
+    skip_missing_subprograms: bool,
+    /// The runaway guard: blocks executed again after jumps back (subprogramme repeats), at
+    /// most, before the run stops with NCS-E63.
+    #[arg(long, value_name = "N")]
+    max_blocks: Option<u64>,
 }
 
 impl MachineArgs {
+    /// How programmes that call programmes run, and where called ones are looked for.
+    fn calls(&self) -> Result<(ncsight::CallOptions, feed::Library), Failure> {
+        let main = match &self.main {
+            None => None,
+            Some(t) => {
+                let digits = t.strip_prefix(['O', 'o']).unwrap_or(t);
+                match digits.parse::<u32>() {
+                    Ok(n) if !digits.is_empty() && digits.bytes().all(|b| b.is_ascii_digit()) && n <= 99_999_999 => Some(n),
+                    _ => return Err(usage(format!("--main {t}: expected a programme number such as O1234"))),
+                }
+            }
+        };
+        for d in &self.subprogram_dirs {
+            if !d.is_dir() {
+                return Err(usage(format!("--subprogram-dir {}: not a directory", d.display())));
+            }
+        }
+        let options = ncsight::CallOptions {
+            main,
+            skip_missing: self.skip_missing_subprograms,
+            max_repeated_blocks: self.max_blocks.unwrap_or(ncsight::program::MAX_REPEATED_BLOCKS),
+        };
+        Ok((options, feed::Library::new(self.subprogram_dirs.clone())))
+    }
+
     fn decoding(&self) -> Result<diag::Decoding, Failure> {
         match &self.encoding {
             None => Ok(diag::Decoding::default()),
@@ -323,9 +363,9 @@ fn setup(m: &MachineArgs, err: &mut dyn Write) -> Result<(Params, Switches), Fai
     Ok((params, Switches { block_delete: m.block_delete, optional_stop: m.optional_stop, repair_position }))
 }
 
-fn open(file: &str) -> Result<Box<dyn BufRead + Send>, Failure> {
+fn open(file: &str) -> Result<Box<dyn feed::Text>, Failure> {
     if file == "-" {
-        return Ok(Box::new(BufReader::new(io::stdin())));
+        return Ok(Box::new(feed::Stream(Box::new(BufReader::new(io::stdin())))));
     }
     if std::fs::metadata(file).is_ok_and(|m| m.is_dir()) {
         return Err(usage(format!("cannot read {file}: it is a directory, not a programme file")));
@@ -337,11 +377,12 @@ fn open(file: &str) -> Result<Box<dyn BufRead + Send>, Failure> {
 /// [`feed::drive`] with an error in reading the input named by its file.
 fn drive(
     file: &str,
-    input: Box<dyn BufRead + Send>,
+    input: Box<dyn feed::Text>,
+    library: &mut feed::Library,
     program: &mut Program,
-    on_event: &mut dyn FnMut(&Event, &[u8]) -> io::Result<()>,
+    on_event: &mut dyn FnMut(&Event, &[u8], feed::FileName) -> io::Result<()>,
 ) -> Result<(), Failure> {
-    feed::drive(input, program, on_event).map_err(|e| if feed::is_read_failure(&e) { usage(format!("cannot read {file}: {e}")) } else { Failure::Io(e) })
+    feed::drive(input, library, program, on_event).map_err(|e| if feed::is_read_failure(&e) { usage(format!("cannot read {file}: {e}")) } else { Failure::Io(e) })
 }
 
 /// A writer whose reader went away (`ncsight check big.nc | head -1`): the rest is dropped
@@ -421,19 +462,21 @@ fn run(
         }
     };
     let mut program = Program::with_operator(params, switches, Mode::Run, operator);
+    let (calls, mut library) = m.calls()?;
+    program.set_call_options(calls);
     let carries = fmt.carries_diagnostics();
     let shown = if file == "-" { "<stdin>" } else { file };
     let mut err = Tolerant::new(err);
-    drive(file, input, &mut program, &mut |e, text| {
+    drive(file, input, &mut library, &mut program, &mut |e, text, name| {
         if let Event::Diagnostic(d) = e {
             if !carries || d.severity() == Severity::Alarm {
-                err.write_all(diag::render(shown, text, d, diag::Style::Full, &decoding).as_bytes())?;
+                err.write_all(diag::render(name.unwrap_or(shown), text, d, diag::Style::Full, &decoding).as_bytes())?;
             }
             if !carries {
                 return Ok(());
             }
         }
-        fmt.event(e, writer)
+        fmt.event(e, name, writer)
     })?;
     writer.flush()?;
     Ok(if program.status() == Status::Alarm { EXIT_ALARM } else { EXIT_OK })
@@ -464,10 +507,13 @@ fn check(files: &[String], m: &MachineArgs, format: &str, out: &mut dyn Write, e
             Err(e) => return Err(e),
         };
         let mut program = Program::diagnostics_only(params.clone(), switches);
+        let (calls, mut library) = m.calls()?;
+        program.set_call_options(calls);
         let (mut alarms, mut warnings) = (0usize, 0usize);
-        let result = drive(file, input, &mut program, &mut |e, text| {
+        let result = drive(file, input, &mut library, &mut program, &mut |e, text, name| {
             if let Event::Diagnostic(d) = e {
                 if d.is_alarm() { alarms += 1 } else { warnings += 1 }
+                let shown = name.unwrap_or(shown);
                 match style {
                     Some(style) => w.write_all(diag::render(shown, text, d, style, &decoding).as_bytes())?,
                     None => w.write_all(format::jsonl::diagnostic_line(shown, d).as_bytes())?,
@@ -579,11 +625,13 @@ fn report(
     settings.push(format!("feed override {} %, rapid override {} %", opts.overrides.feed_pct, opts.overrides.rapid_pct));
     settings.push("assumptions: docs/guide.md and docs/commands/*.md".into());
     let mut program = Program::with_operator(params.clone(), switches, Mode::Run, opts);
+    let (calls, mut library) = m.calls()?;
+    program.set_call_options(calls);
     let (mut records, mut diags) = (Vec::new(), Vec::new());
     // The page keeps at most REPORT_MAX_RECORDS motions and REPORT_MAX_DIAGNOSTICS
     // diagnostics; the run goes on to the end for the time and the alarm, and the page says so.
     let (mut all_records, mut all_diags) = (0usize, 0usize);
-    drive(file, Box::new(io::Cursor::new(source.clone())), &mut program, &mut |e, _| {
+    drive(file, Box::new(io::Cursor::new(source.clone())), &mut library, &mut program, &mut |e, _, _| {
         match e {
             Event::Record(r) => {
                 all_records += 1;
@@ -664,14 +712,16 @@ fn simulate(
     let input = open(file)?;
     let lathe = params.profile().is_lathe();
     let mut program = Program::new(params, switches, Mode::Run);
+    let (calls, mut library) = m.calls()?;
+    program.set_call_options(calls);
     let shown = if file == "-" { "<stdin>" } else { file };
     let mut records = Vec::new();
     let mut too_many = false;
-    drive(file, input, &mut program, &mut |e, text| {
+    drive(file, input, &mut library, &mut program, &mut |e, text, name| {
         match e {
             Event::Record(_) if records.len() >= SIMULATE_MAX_RECORDS => too_many = true,
             Event::Record(r) => records.push(r.clone()),
-            Event::Diagnostic(d) if d.is_alarm() => err.write_all(diag::render(shown, text, d, diag::Style::Full, &decoding).as_bytes())?,
+            Event::Diagnostic(d) if d.is_alarm() => err.write_all(diag::render(name.unwrap_or(shown), text, d, diag::Style::Full, &decoding).as_bytes())?,
             Event::Diagnostic(_) => {}
         }
         Ok(())

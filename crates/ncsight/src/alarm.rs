@@ -73,6 +73,10 @@ rules! {
     PlaneMismatch => Alarm, "NCS-E56", None, "CYCLE NOT AVAILABLE IN THIS PLANE";
     RigidTapOrder => Alarm, "NCS-E57", None, "RIGID TAPPING: M29 S_ FIRST, THEN G84/G88";
     ReferenceInCannedCycle => Alarm, "NCS-E58", Some("PS0044"), "G27-G30 NOT ALLOWED IN FIXED CYC";
+    // FANUC 0 numbering (MACRO.md section 9: the 0i-F reuses 076-078 with other meanings).
+    AddressPMissing => Alarm, "NCS-E59", Some("PS0076"), "ADDRESS P NOT DEFINED";
+    CallNesting => Alarm, "NCS-E60", Some("PS0077"), "SUB PROGRAM NESTING ERROR";
+    NumberNotFound => Alarm, "NCS-E61", Some("PS0078"), "NUMBER NOT FOUND";
     // --- project rules (no controller number known) ---
     BadCharacter => Alarm, "NCS-E30", None, "CHARACTER NOT ALLOWED";
     LineTooLong => Alarm, "NCS-E31", None, "BLOCK TOO LONG";
@@ -96,6 +100,8 @@ rules! {
     RepairNoPosition => Alarm, "NCS-E50", None, "NO REPAIR POSITION RECORDED";
     ThreadData => Alarm, "NCS-E51", None, "ILLEGAL THREAD CYCLE DATA";
     ForeignDialect => Alarm, "NCS-E52", None, "PROGRAMME FOR ANOTHER CONTROL";
+    NoReturn => Alarm, "NCS-E62", None, "SUBPROGRAMME ENDS WITHOUT M99";
+    Runaway => Alarm, "NCS-E63", None, "TOO MANY BLOCKS EXECUTED";
     // --- warnings ---
     SameGroupTwice => Warning, "NCS-W01", None, "TWO G CODES OF ONE GROUP: THE LAST ONE COUNTS";
     IntegerLength => Warning, "NCS-W02", None, "LENGTH WITHOUT DECIMAL POINT";
@@ -123,6 +129,7 @@ rules! {
     AllowanceNotCut => Warning, "NCS-W24", None, "FINISHING ALLOWANCE NEVER CUT";
     Implausible => Warning, "NCS-W25", None, "IMPLAUSIBLE VALUE";
     SpeedClamped => Warning, "NCS-W26", None, "SPINDLE SPEED ABOVE THE MAXIMUM: CLAMPED";
+    CallSkipped => Warning, "NCS-W27", None, "SUBPROGRAMME NOT FOUND: CALL SKIPPED";
 }
 
 impl Rule {
@@ -167,11 +174,13 @@ pub struct Diagnostic {
     pub message: String,
     /// A likely cause, for typing mistakes (`GO` with a letter O).
     pub hint: Option<String>,
+    /// Raised inside a subprogramme: the calling blocks (M98), outermost first.
+    pub calls: Vec<Span>,
 }
 
 impl Diagnostic {
     pub fn new(rule: Rule, style: AlarmStyle, span: Span, message: impl Into<String>) -> Diagnostic {
-        Diagnostic { rule, code: rule.code(style), span, message: message.into(), hint: None }
+        Diagnostic { rule, code: rule.code(style), span, message: message.into(), hint: None, calls: Vec::new() }
     }
 
     pub fn with_hint(mut self, hint: impl Into<String>) -> Diagnostic {

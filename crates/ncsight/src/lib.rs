@@ -27,4 +27,4 @@ pub use interp::{Interpreter, Switches};
 pub use machine::{Machine, Options};
 pub use motion::{Op, Record, Vec3};
 pub use profile::{Params, Profile};
-pub use program::{run_text, run_text_with, Event, LineReader, Mode, Program, ReadBatch, Status};
+pub use program::{events, events_with_library, run_text, run_text_with, CallOptions, Event, LineReader, Mode, Place, Program, ReadBatch, Request, Status};

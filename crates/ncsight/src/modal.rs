@@ -25,6 +25,7 @@ pub enum Motion {
 #[derive(Debug, Clone, PartialEq)]
 pub struct PendingThread {
     pub span: Span,
+    pub n: Option<u32>,
     pub body: PendingBody,
     /// A block that gave J/K itself ends the run (seed 001 G32.1 note 1).
     pub ends_run: bool,

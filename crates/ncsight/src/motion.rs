@@ -292,6 +292,10 @@ pub enum ThreadHoldStyle {
 pub struct Record {
     /// The block that produced it.
     pub span: Span,
+    /// Its sequence number, where it has one (`N50` -> 50).
+    pub n: Option<u32>,
+    /// How many subprogramme calls deep the block ran (0 in the main programme).
+    pub call_depth: u8,
     /// Seconds from programme start at the end of this record (the operator machine's time
     /// model; 0 until it has run).
     pub t_s: f64,
@@ -317,6 +321,6 @@ impl Record {
             _ => Hold::Stop,
         };
         let override_free = op.is_thread();
-        Record { span, t_s: 0.0, op, block_end: false, hold, cycle: None, override_free, accel_s: None }
+        Record { span, n: None, call_depth: 0, t_s: 0.0, op, block_end: false, hold, cycle: None, override_free, accel_s: None }
     }
 }

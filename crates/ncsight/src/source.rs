@@ -11,20 +11,23 @@ pub struct Span {
     pub col: u32,
     /// Length in bytes (at least 1 for anything a person must see underlined).
     pub len: u32,
+    /// Which file holds the line: 0 is the file the run began with; a subprogramme found in
+    /// another file gets the number its driver gave it (`Program::open_file`).
+    pub file: u16,
 }
 
 impl Span {
     pub fn new(line: u32, col: u32, len: u32) -> Span {
-        Span { line, col, len }
+        Span { line, col, len, file: 0 }
     }
 
     /// The smallest span covering both (same line assumed; otherwise `self`).
     pub fn to(self, other: Span) -> Span {
-        if other.line != self.line {
+        if other.line != self.line || other.file != self.file {
             return self;
         }
         let start = self.col.min(other.col);
         let end = (self.col + self.len).max(other.col + other.len);
-        Span { line: self.line, col: start, len: end - start }
+        Span { col: start, len: end - start, ..self }
     }
 }

@@ -126,7 +126,7 @@ impl Format for Canon {
         false
     }
 
-    fn event(&mut self, e: &Event, w: &mut dyn Write) -> io::Result<()> {
+    fn event(&mut self, e: &Event, _file: Option<&str>, w: &mut dyn Write) -> io::Result<()> {
         let Event::Record(r) = e else { return Ok(()) };
         let mut s = std::mem::take(&mut self.text);
         s.clear();

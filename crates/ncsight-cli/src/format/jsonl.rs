@@ -85,6 +85,22 @@ fn dir_field(s: &mut String, dir: ArcDir) {
     s.push_str(if dir == ArcDir::Cw { ",\"dir\":\"cw\"" } else { ",\"dir\":\"ccw\"" });
 }
 
+/// The calling blocks of a diagnostic raised in a subprogramme: `"calls":[{"line":..,"col":..},..]`,
+/// outermost first (the file of each is the file of the call, shown by `file` where it differs).
+fn calls_field(s: &mut String, calls: &[ncsight::source::Span]) {
+    if calls.is_empty() {
+        return;
+    }
+    s.push_str(",\"calls\":[");
+    for (i, c) in calls.iter().enumerate() {
+        if i > 0 {
+            s.push(',');
+        }
+        let _ = write!(s, "{{\"line\":{},\"col\":{}}}", c.line, c.col);
+    }
+    s.push(']');
+}
+
 /// One diagnostic as `check --format jsonl` writes it (INTERFACE.md, "check --format jsonl"):
 /// file, line, col, severity, code, message and the hint where there is one.
 pub fn diagnostic_line(file: &str, d: &ncsight::Diagnostic) -> String {
@@ -100,16 +116,25 @@ pub fn diagnostic_line(file: &str, d: &ncsight::Diagnostic) -> String {
         s.push_str(",\"hint\":");
         push_json_str(&mut s, h);
     }
+    calls_field(&mut s, &d.calls);
     s.push_str("}\n");
     s
 }
 
 impl Jsonl {
-    fn line(&self, e: &Event, s: &mut String) {
+    fn line(&self, e: &Event, file: Option<&str>, s: &mut String) {
+        let file_field = |s: &mut String| {
+            if let Some(f) = file {
+                s.push_str(",\"file\":");
+                push_json_str(s, f);
+            }
+        };
         match e {
             Event::Diagnostic(d) => {
                 let kind = if d.severity() == Severity::Alarm { "alarm" } else { "warning" };
-                let _ = write!(s, "{{\"line\":{},\"kind\":\"{kind}\",\"code\":", d.span.line);
+                let _ = write!(s, "{{\"line\":{}", d.span.line);
+                file_field(s);
+                let _ = write!(s, ",\"kind\":\"{kind}\",\"code\":");
                 push_json_str(s, d.code);
                 s.push_str(",\"message\":");
                 push_json_str(s, &d.message);
@@ -118,10 +143,13 @@ impl Jsonl {
                     s.push_str(",\"hint\":");
                     push_json_str(s, h);
                 }
+                calls_field(s, &d.calls);
                 s.push('}');
             }
             Event::Record(r) => {
-                let _ = write!(s, "{{\"line\":{},\"kind\":\"{}\"", r.span.line, r.op.kind());
+                let _ = write!(s, "{{\"line\":{}", r.span.line);
+                file_field(s);
+                let _ = write!(s, ",\"kind\":\"{}\"", r.op.kind());
                 match &r.op {
                     Op::Rapid { to, .. } => self.point(s, to, ""),
                     Op::Feed { to, feed_mm_min, .. } => {
@@ -169,6 +197,10 @@ impl Jsonl {
                     }
                 }
                 num_field(s, "t", r.t_s, 6);
+                if let Some(n) = r.n {
+                    let _ = write!(s, ",\"n\":{n}");
+                }
+                let _ = write!(s, ",\"call_depth\":{}", r.call_depth);
                 s.push('}');
             }
         }
@@ -181,10 +213,10 @@ impl Format for Jsonl {
         true
     }
 
-    fn event(&mut self, e: &Event, w: &mut dyn Write) -> io::Result<()> {
+    fn event(&mut self, e: &Event, file: Option<&str>, w: &mut dyn Write) -> io::Result<()> {
         let mut s = std::mem::take(&mut self.text);
         s.clear();
-        self.line(e, &mut s);
+        self.line(e, file, &mut s);
         let written = w.write_all(s.as_bytes());
         self.text = s;
         written

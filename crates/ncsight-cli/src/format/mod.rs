@@ -14,7 +14,9 @@ use std::io::{self, Write};
 
 /// A consumer that renders events to a writer.
 pub trait Format {
-    fn event(&mut self, e: &Event, w: &mut dyn Write) -> io::Result<()>;
+    /// One event; `file` names the file of its line when that is not the file the run began
+    /// with (a subprogramme from `--subprogram-dir`).
+    fn event(&mut self, e: &Event, file: Option<&str>, w: &mut dyn Write) -> io::Result<()>;
     /// Whether diagnostics are part of this format's output (otherwise they go to stderr).
     fn carries_diagnostics(&self) -> bool;
 }

@@ -115,13 +115,20 @@ impl Format for Text {
         false
     }
 
-    fn event(&mut self, e: &Event, w: &mut dyn Write) -> io::Result<()> {
+    fn event(&mut self, e: &Event, file: Option<&str>, w: &mut dyn Write) -> io::Result<()> {
         let Event::Record(r) = e else { return Ok(()) };
         let (mut what, mut line) = (std::mem::take(&mut self.what), std::mem::take(&mut self.line));
         what.clear();
         line.clear();
         self.what(&r.op, &mut what);
-        let _ = write!(line, "{:>6}  {:<8} {:<60} t=", r.span.line, r.op.kind(), what);
+        match file {
+            Some(f) => {
+                let _ = write!(line, "{f}:{}  {:<8} {:<60} t=", r.span.line, r.op.kind(), what);
+            }
+            None => {
+                let _ = write!(line, "{:>6}  {:<8} {:<60} t=", r.span.line, r.op.kind(), what);
+            }
+        }
         push_num(&mut line, r.t_s, 3);
         line.push('\n');
         let written = w.write_all(line.as_bytes());

@@ -2,10 +2,12 @@
 //! block), against a profile and its parameters. It turns a block into records of the canonical
 //! stream and warnings, or into one alarm that leaves the modal state untouched.
 
+mod call;
 mod compound;
 mod drill;
 mod groove;
 mod rough;
+pub use call::{Flow, MAX_PROGRAM_NUMBER};
 pub use rough::{FinishRequest, RoughRequest};
 mod thread;
 mod turning;
@@ -52,6 +54,8 @@ pub struct Outcome {
     rough_request: Option<Box<RoughRequest>>,
     /// G70 asks for a stored contour to be run.
     finish_request: Option<FinishRequest>,
+    /// M98 or M99: the jump the block asks for, after its records.
+    pub flow: Option<Flow>,
 }
 
 impl Outcome {
@@ -61,6 +65,7 @@ impl Outcome {
         self.emitted = 0;
         self.rough_request = None;
         self.finish_request = None;
+        self.flow = None;
     }
 }
 
@@ -121,6 +126,8 @@ struct Step<'a> {
     /// The recorded thread repair position, if any.
     repair: Option<crate::repair::Recorded>,
     span: Span,
+    /// The block's sequence number, for its records.
+    n: Option<u32>,
     /// The interpreter's modal state, changed in place (restored from a copy on an alarm).
     st: &'a mut Modal,
     out: &'a mut Outcome,
@@ -137,12 +144,12 @@ impl Step<'_> {
     }
 
     fn emit(&mut self, op: Op) {
-        self.emit_at(self.span, op);
+        self.emit_at(self.span, self.n, op);
     }
 
     /// Emit an operation of an earlier block (a held-back thread run end). Past
     /// [`MAX_MOTIONS_PER_BLOCK`] nothing more is kept: the block then alarms.
-    fn emit_at(&mut self, span: Span, op: Op) {
+    fn emit_at(&mut self, span: Span, n: Option<u32>, op: Op) {
         if let Some(p) = op.end_point() {
             self.st.pos = p;
         }
@@ -151,7 +158,9 @@ impl Step<'_> {
             return;
         }
         if !self.out.discard_records {
-            self.out.records.push(Record::new(span, op));
+            let mut r = Record::new(span, op);
+            r.n = n;
+            self.out.records.push(r);
         }
     }
 
@@ -360,7 +369,7 @@ impl Interpreter {
             return;
         }
         let repair = self.switches.repair_position;
-        let mut step = Step { profile: self.profile, params: &self.params, repair, span: Span::default(), st: &mut self.state, out };
+        let mut step = Step { profile: self.profile, params: &self.params, repair, span: Span::default(), n: None, st: &mut self.state, out };
         if let Some(p) = step.st.thread.pending.take() {
             thread::flush(&mut step, *p, true);
         }
@@ -385,7 +394,7 @@ impl Interpreter {
         }
         let before = self.state.clone();
         let repair = self.switches.repair_position;
-        let mut step = Step { profile: self.profile, params: &self.params, repair, span: block.span, st: &mut self.state, out };
+        let mut step = Step { profile: self.profile, params: &self.params, repair, span: block.span, n: block.sequence, st: &mut self.state, out };
         let result = run_block(&mut step, block, self.switches).and_then(|()| {
             if step.out.emitted > MAX_MOTIONS_PER_BLOCK {
                 return Err(step.alarm(
@@ -395,6 +404,17 @@ impl Interpreter {
                 ));
             }
             Ok(())
+        });
+        let result = result.and_then(|()| match step.out.flow {
+            // GSK980TDi help text, G71 note 4 (G72, G73 likewise): no subprogramme call or
+            // return in the contour blocks ns to nf.
+            Some(Flow::Call { span, .. } | Flow::Return { span, .. }) if self.replaying => Err(Diagnostic::new(
+                Rule::ContourCommand,
+                self.profile.alarm_style,
+                span,
+                "M98 and M99 may not be used in the contour blocks ns to nf (GSK980TDi manual, G71 note 4)",
+            )),
+            _ => Ok(()),
         });
         if let Err(d) = result {
             step.out.clear();
@@ -759,6 +779,7 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
 
     // 8. M codes that act before motion: spindle and its mode.
     let mut after: Vec<(&Word, MFn)> = Vec::new();
+    let mut flow = None;
     for (w, m) in &ms {
         match m {
             None => step.warn(
@@ -788,13 +809,20 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
                     step.st.drill.tap_waiting = true;
                 }
                 MFn::Auxiliary => {}
+                // The words of a call or a return are read now; the jump comes after the motion.
                 MFn::SubprogramCall => {
-                    return Err(step.alarm(Rule::NotSupported, w.span, format!("{}: subprogramme calls are not simulated by ncsight yet", w.text())));
+                    flow = Some(call::call(step, &mut words, w)?);
+                    after.push((w, m.function));
+                }
+                MFn::SubprogramReturn => {
+                    flow = Some(call::ret(step, &mut words, w)?);
+                    after.push((w, m.function));
                 }
                 f => after.push((w, f)),
             },
         }
     }
+    step.out.flow = flow;
     // 9. A spindle record when the spindle's state changes in a way the machine shows: a new
     // direction or mode, or a new speed while it turns.
     let spindle_after = (step.st.spindle, step.st.s_word, step.st.css, step.st.spindle_position_mode);
@@ -900,17 +928,12 @@ fn finish_block(step: &mut Step, words: &Words, codes: &Codes, after: Vec<(&Word
                 let number = step.st.tool;
                 step.emit(Op::Tool { number, offset: None });
             }
-            MFn::ProgramEnd | MFn::SubprogramReturn => {
-                if f == MFn::SubprogramReturn {
-                    step.warn(
-                        Rule::ProgramLoops,
-                        w.span,
-                        "M99 in the main programme: the controller starts it again from the top; the simulation ends here",
-                    );
-                }
+            MFn::ProgramEnd => {
                 step.st.ended = true;
                 step.emit(Op::End { code: w.value as u32 });
             }
+            // The jump itself is the programme driver's (`Outcome::flow`).
+            MFn::SubprogramCall | MFn::SubprogramReturn => {}
             _ => unreachable!("handled before motion"),
         }
     }

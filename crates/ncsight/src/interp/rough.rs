@@ -20,6 +20,7 @@ use crate::source::Span;
 pub struct RoughRequest {
     pub kind: RoughKind,
     pub span: Span,
+    pub n: Option<u32>,
     pub ns: u32,
     pub nf: u32,
     /// (Δu/2, 0, Δw): the finishing allowances as a move.
@@ -35,6 +36,7 @@ pub struct RoughRequest {
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct FinishRequest {
     pub span: Span,
+    pub n: Option<u32>,
     pub ns: u32,
     pub nf: u32,
     pub start: Vec3,
@@ -127,14 +129,14 @@ pub(super) fn block(step: &mut Step, words: &mut Words, kind: RoughKind) -> Resu
             step.warn(Rule::NotSimulated, w.span, msg);
         }
     }
-    step.out.rough_request = Some(Box::new(RoughRequest { kind, span: step.span, ns, nf, allowance, depth_mm, back_off_mm, pattern, start: step.st.pos }));
+    step.out.rough_request = Some(Box::new(RoughRequest { kind, span: step.span, n: step.n, ns, nf, allowance, depth_mm, back_off_mm, pattern, start: step.st.pos }));
     Ok(())
 }
 
 /// G70 P(ns) Q(nf).
 pub(super) fn finishing(step: &mut Step, words: &mut Words) -> Result<(), Diagnostic> {
     let (ns, nf) = p_and_q(step, words, "G70")?;
-    step.out.finish_request = Some(FinishRequest { span: step.span, ns, nf, start: step.st.pos });
+    step.out.finish_request = Some(FinishRequest { span: step.span, n: step.n, ns, nf, start: step.st.pos });
     Ok(())
 }
 
@@ -229,7 +231,7 @@ impl Interpreter {
             if let Some(g) = drilling {
                 return Err(self.contour_alarm(Rule::ContourCommand, b.span, format!("{code}: a contour block cannot run the drilling cycle G{}", g.major)));
             }
-            let mut step = Step { profile: self.profile, params: &self.params, repair: None, span: b.span, st: &mut st, out: &mut scratch };
+            let mut step = Step { profile: self.profile, params: &self.params, repair: None, span: b.span, n: b.sequence, st: &mut st, out: &mut scratch };
             run_block(&mut step, b, self.switches)?;
             if scratch.rough_request.is_some() || scratch.finish_request.is_some() {
                 return Err(self.contour_alarm(Rule::ContourCommand, b.span, format!("{code}: a contour block cannot call a cycle itself")));
@@ -358,7 +360,7 @@ impl Interpreter {
     fn emit_cycle(&mut self, req: &RoughRequest, ops: Vec<Op>, out: &mut Outcome) -> Result<(), Diagnostic> {
         let code = req.kind.code();
         let before = self.state.clone();
-        let mut step = Step { profile: self.profile, params: &self.params, repair: None, span: req.span, st: &mut self.state, out };
+        let mut step = Step { profile: self.profile, params: &self.params, repair: None, span: req.span, n: req.n, st: &mut self.state, out };
         let result = ops.into_iter().try_for_each(|op| step.emit_cut(code, op)).and_then(|()| {
             // The per-block limit (the cycle's moves come here, not through `execute_into`).
             if step.out.emitted > super::MAX_MOTIONS_PER_BLOCK {
@@ -413,7 +415,9 @@ impl Interpreter {
         let from = self.state.pos;
         if from != req.start {
             self.state.pos = req.start;
-            out.records.push(crate::motion::Record::new(req.span, Op::Rapid { from, to: req.start }));
+            let mut r = crate::motion::Record::new(req.span, Op::Rapid { from, to: req.start });
+            r.n = req.n;
+            out.records.push(r);
         }
         // Single block stops after the whole G70.
         if let Some(last) = out.records.last_mut() {

@@ -381,7 +381,7 @@ fn straight(step: &mut Step, words: &mut Words, cmd: ThreadCmd, run_deg: Option<
     let ends_run = rigid && (j_given || k_given) && (j.unwrap_or(0.0) != 0.0 || k.unwrap_or(0.0) != 0.0);
     let end_deg = phase_after(start_deg, length, lead);
     step.st.pos = target;
-    step.st.thread.pending = Some(Box::new(PendingThread { span: step.span, body: PendingBody::Straight(pass), ends_run, rigid, end_deg }));
+    step.st.thread.pending = Some(Box::new(PendingThread { span: step.span, n: step.n, body: PendingBody::Straight(pass), ends_run, rigid, end_deg }));
     Ok(())
 }
 
@@ -432,6 +432,7 @@ fn arc(step: &mut Step, words: &mut Words, dir: ArcDir, run_deg: Option<f64>) ->
     step.st.pos = to;
     step.st.thread.pending = Some(Box::new(PendingThread {
         span: step.span,
+        n: step.n,
         body: PendingBody::Arc(op),
         ends_run: false,
         rigid: false,
@@ -722,11 +723,11 @@ pub(super) fn flush(step: &mut Step, p: PendingThread, run_ends: bool) {
             // The pull-out length was checked when the block was read.
             if let Ok((ops, _)) = expand(&pass) {
                 for op in ops {
-                    step.emit_at(p.span, op);
+                    step.emit_at(p.span, p.n, op);
                 }
             }
         }
-        PendingBody::Arc(op) => step.emit_at(p.span, op),
+        PendingBody::Arc(op) => step.emit_at(p.span, p.n, op),
     }
     // Single block stops after the last block of a run only (seed 001 G32.1 note 7; TDi help G32
     // note 4). The perpendicular pull-out after a G32.1 end is part of the thread for the hold.

@@ -211,6 +211,12 @@ pub static PROFILE: Profile = Profile {
     },
     thread: ThreadRules { q_point: QPoint::Ignored, arc_q_unit_deg: 0.001, pull_out_speed: Some(ParamKey::Number(107, None)), after_end_feed: None, pull_out_accel: None, repair_enable: Some(ParamKey::Number(174, Some(4))), g32_pull_out: true, g76: Some(G76Keys { finishing: ParamKey::Number(57, None), pull_out: ParamKey::Number(19, None), angle: ParamKey::Number(58, None), dmin_um: ParamKey::Number(59, None), allowance: ParamKey::Number(60, None), allowance_to_mm: 1.0, pull_out_angle: None }) },
     drill: super::DrillRules::NONE,
+    calls: super::CallRules {
+        max_count: 9999,
+        l_count: false,
+        max_depth: 4,
+        source: "GSK980TDi help text, M98 (count 1-9999, number 0000-9999; no L); nesting depth not stated, four as for G65 (inferred)",
+    },
     summary: "GSK980TDi turning centre. X is a diameter, U/W incremental. Lengths without a decimal \
 point are millimetres (seed 000's O0012: Z-28, F3, J3 K1). Feed per minute (G98) at power on.",
 };

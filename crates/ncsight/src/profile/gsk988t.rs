@@ -124,6 +124,12 @@ pub static PROFILE: Profile = Profile {
     },
     thread: ThreadRules { q_point: QPoint::Alarm, arc_q_unit_deg: 1.0, pull_out_speed: None, after_end_feed: Some(ParamKey::Number(1466, None)), pull_out_accel: Some(ParamKey::Number(1628, None)), repair_enable: Some(ParamKey::Number(8135, Some(7))), g32_pull_out: true, g76: None },
     drill: super::DrillRules::NONE,
+    calls: super::CallRules {
+        max_count: 9999,
+        l_count: false,
+        max_depth: 4,
+        source: "inferred from the GSK980TDi help text, M98 (count 1-9999, no L; four levels)",
+    },
     summary: "GSK988T turning centre with a servo (CS) spindle: M14 position mode, M15 speed mode. \
 X is a diameter, U/W incremental; lengths without a decimal point are millimetres.",
 };

@@ -261,6 +261,30 @@ impl DrillRules {
     pub const NONE: DrillRules = DrillRules { g73_retract_um: None, g83_clearance_um: None, shift_bits: None };
 }
 
+/// How the controller calls subprogrammes (M98) and returns from them (M99).
+#[derive(Debug, Clone, Copy)]
+pub struct CallRules {
+    /// The largest repeat count of `M98 P<count><number>` (the digits above the last four).
+    pub max_count: u32,
+    /// M98 also takes `L` as the repeat count; P is then the programme number alone.
+    pub l_count: bool,
+    /// Subprogramme calls may nest this many levels (the main programme's call is level 1).
+    pub max_depth: u8,
+    /// The manual this comes from, and what was inferred.
+    pub source: &'static str,
+}
+
+impl CallRules {
+    /// FANUC 0 and its compatibles: `M98 P<count 1-999><number>` or `M98 P<number> L<count>`,
+    /// four levels (FANUC 0i-TB/MB operator's manual 12.3; the L form is the FANUC 0-M's own).
+    pub const FANUC: CallRules = CallRules {
+        max_count: 999,
+        l_count: true,
+        max_depth: 4,
+        source: "FANUC 0i-TB/MB operator's manual 12.3 (count 1-999, four levels); M98 P_ L_ as on the FANUC 0-M (inferred for the lathe)",
+    };
+}
+
 /// Thread facts of a profile.
 #[derive(Debug, Clone, Copy)]
 pub struct ThreadRules {
@@ -538,6 +562,7 @@ pub struct Profile {
     pub time: TimeKeys,
     pub thread: ThreadRules,
     pub drill: DrillRules,
+    pub calls: CallRules,
     /// One paragraph for `ncsight machines`.
     pub summary: &'static str,
 }

@@ -89,6 +89,11 @@ pub static PROFILE: Profile = Profile {
     },
     thread: ThreadRules { q_point: QPoint::Ignored, arc_q_unit_deg: 0.001, pull_out_speed: None, after_end_feed: None, pull_out_accel: None, repair_enable: None, g32_pull_out: false, g76: None },
     drill: super::DrillRules::NONE,
+    calls: super::CallRules {
+        l_count: true,
+        source: "inferred: as FANUC (no YASNAC LX3 text on M98 was at hand)",
+        ..super::CallRules::FANUC
+    },
     summary: "YASNAC LX3 turning centre. X is a diameter, U/W incremental. Lengths without a decimal \
 point are least input increments (X100 = 0.1 mm); seed 004 writes every length with a point. \
 Feed per revolution at power on (assumed).",

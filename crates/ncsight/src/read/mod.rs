@@ -355,6 +355,7 @@ impl Reader {
                             return;
                         }
                     }
+                    let word_start = i;
                     match self.word(line_no, s, i) {
                         Ok((w, next)) => {
                             i = next;
@@ -365,6 +366,14 @@ impl Reader {
                                 }
                                 b'O' if block.program.is_none() && block.words.is_empty() => {
                                     block.program = Some(w.value as u32)
+                                }
+                                // An O word after other words starts the next programme on the
+                                // same line (`M99O0810`, a FANUC 0i punch): the block ends before it.
+                                b'O' if !w.decimal && !w.expr => {
+                                    let next_block = out.new_block();
+                                    finish(std::mem::replace(&mut block, next_block), block_start, word_start, out);
+                                    block.program = Some(w.value as u32);
+                                    block_start = Some(word_start);
                                 }
                                 _ => block.words.push(w),
                             }

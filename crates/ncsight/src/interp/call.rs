@@ -1,0 +1,75 @@
+//! M98 and M99: the words of a subprogramme call and return. The block asks for the jump
+//! ([`Flow`]); the programme driver finds the programme, keeps the call stack and its limits.
+
+use super::words::Words;
+use super::Step;
+use crate::alarm::{Diagnostic, Rule};
+use crate::read::Word;
+use crate::source::Span;
+
+/// The largest programme number (four digits: GSK980TDi help text, M98; FANUC O1-O9999).
+pub const MAX_PROGRAM_NUMBER: u32 = 9999;
+
+/// A jump a block asks the programme driver for, after its motion (the move first, then the
+/// call or the return: MACRO.md section 11, inferred).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Flow {
+    /// M98: run programme O`number` `count` times, then go on after the calling block.
+    Call { number: u32, count: u32, span: Span },
+    /// M99: back to the caller, to its block N`sequence` when P gives one (GSK980TDi help text,
+    /// M99); in a main programme, the programme starts again.
+    Return { sequence: Option<u32>, span: Span },
+}
+
+/// A whole number written without a decimal point, in `0..=max`.
+fn whole(step: &Step, w: &Word, what: &str, max: u32) -> Result<u32, Diagnostic> {
+    if w.decimal || w.expr {
+        return Err(step.alarm(Rule::IllegalDecimalPoint, w.span, format!("{}: {what} is a whole number without a decimal point", w.text())));
+    }
+    if w.value < 0.0 || w.value > f64::from(max) {
+        return Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("{}: {what} is 0 to {max}", w.text())));
+    }
+    Ok(w.value as u32)
+}
+
+/// `M98 P<count><number>` (the last four digits the number, those above them the count), or
+/// `M98 P<number> L<count>` where the profile takes L.
+pub(super) fn call(step: &Step, words: &mut Words, m: &Word) -> Result<Flow, Diagnostic> {
+    let rules = step.profile.calls;
+    let Some(p) = words.take(b'P') else {
+        // FANUC 0 alarm 076; the GSK980TDi help text gives M98 only with P.
+        return Err(step.alarm(Rule::AddressPMissing, m.span, format!("{}: the subprogramme to call is not given (P)", m.text())));
+    };
+    let span = m.span.to(p.span);
+    let l = words.peek(b'L');
+    let (number, count) = match l {
+        Some(l) if rules.l_count => {
+            words.take(b'L');
+            let number = whole(step, p, "the programme number P (with L)", MAX_PROGRAM_NUMBER)?;
+            let count = whole(step, l, "the repeat count L", rules.max_count)?;
+            (number, count)
+        }
+        Some(l) => {
+            let name = step.profile.name;
+            return Err(step
+                .alarm(Rule::ImproperAddress, l.span, format!("{}: M98 on {name} takes no L: the repeat count is written in P, before the four digits of the programme number", l.text()))
+                .with_hint(format!("write M98 P{}{:04} for {} calls of O{:04}", l.value, p.value, l.value, p.value)));
+        }
+        None => {
+            let max = rules.max_count * 10_000 + MAX_PROGRAM_NUMBER;
+            let value = whole(step, p, "M98 P (the repeat count, then the four digits of the programme number)", max)?;
+            (value % 10_000, value / 10_000)
+        }
+    };
+    // A count of 0 calls once, as no count does (MACRO.md section 2, inferred).
+    Ok(Flow::Call { number, count: count.max(1), span })
+}
+
+/// `M99` or `M99 P<sequence number>`.
+pub(super) fn ret(step: &Step, words: &mut Words, m: &Word) -> Result<Flow, Diagnostic> {
+    let sequence = match words.take(b'P') {
+        Some(p) => Some(whole(step, p, "M99 P (the sequence number to return to)", 99_999)?),
+        None => None,
+    };
+    Ok(Flow::Return { sequence, span: m.span })
+}

@@ -1,0 +1,171 @@
+//! The block source's memory of where things are: the place of every block a jump may go to,
+//! the programmes seen (their O blocks), the subprogramme calls in progress, and the search a
+//! jump makes when its target has not been read yet.
+//!
+//! The text itself stays with the driver (a file re-read from byte offsets, a slice): a jump is
+//! a request to feed lines from another place, so a programme without backward jumps streams
+//! as before and memory holds places, never text.
+
+use crate::source::Span;
+use std::collections::HashMap;
+
+/// Where a block starts: its file, the byte offset and number of its line, and its place among
+/// the blocks of the line.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct Place {
+    pub file: u16,
+    pub offset: u64,
+    pub line: u32,
+    pub block: u16,
+}
+
+impl Place {
+    /// The start of a file.
+    pub fn start_of(file: u16) -> Place {
+        Place { file, offset: 0, line: 1, block: 0 }
+    }
+}
+
+/// What a run asks its driver for when it must read elsewhere.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Request {
+    /// Feed the lines of `file` from byte `offset` on, the first of them numbered `line` (its
+    /// blocks before `block` are passed over by the run).
+    Seek(Place),
+    /// Programme O`number` is in no file read so far: the driver opens one that holds it
+    /// ([`super::Program::open_file`]) or says there is none ([`super::Program::no_file`]).
+    Find { number: u32 },
+}
+
+/// At most this many programmes' places are kept (far more than any controller's memory holds);
+/// past it a programme is found by reading again.
+const MAX_PROGRAMS_INDEXED: usize = 100_000;
+/// Sequence numbers found by searches, kept to find them at once the next time; the table is
+/// emptied when full, so memory stays bounded whatever a programme jumps to.
+const MAX_SEQUENCES_INDEXED: usize = 65_536;
+
+/// A subprogramme call in progress.
+#[derive(Debug, Clone, Copy)]
+pub(super) struct Frame {
+    pub number: u32,
+    /// The place of its O block (known once found).
+    pub start: Option<Place>,
+    /// The block after the calling one.
+    pub back: Place,
+    /// Runs left after this one (M98 P3... calls three times).
+    pub remaining: u32,
+    /// The calling block.
+    pub call: Span,
+}
+
+/// What a search looks for.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(super) enum Target {
+    /// O`n`: a called programme, or the main one named by the caller.
+    Program(u32),
+    /// N`n` in the running programme (M99 P).
+    Sequence(u32),
+}
+
+/// A jump whose target has not been read yet: the blocks are read, not executed, until it is
+/// found. A controller searches forward, then from the top (MACRO.md section 6).
+#[derive(Debug, Clone, Copy)]
+pub(super) struct Search {
+    pub target: Target,
+    /// Where it began: met again after going round, the target is not there.
+    pub from: Place,
+    /// Where its scope starts (the file for a programme, the programme for a sequence number).
+    pub scope: Place,
+    /// It has gone back to the start of its scope.
+    pub wrapped: bool,
+    /// It reads its file once from the start, without going round (a file the driver opened
+    /// for it, the main programme the caller named).
+    pub once: bool,
+    /// The block that asked for the jump.
+    pub asked_by: Span,
+    /// Where the run goes on if the target is not found and the run does not stop there (a
+    /// check, a skipped call).
+    pub resume: Option<Place>,
+}
+
+/// The calls, the index and the search of one run.
+#[derive(Debug, Default)]
+pub(super) struct Calls {
+    pub frames: Vec<Frame>,
+    /// The O number of the main programme (the first in the file, or the one the caller named)
+    /// and where it starts.
+    pub main: Option<(Option<u32>, Place)>,
+    /// (file, number) -> the place of its O block.
+    programs: HashMap<(u16, u32), Place>,
+    /// (programme start, N) -> the place of its block.
+    sequences: HashMap<(u16, u64, u32), Place>,
+    pub search: Option<Search>,
+    /// The driver's next move, when the run must read elsewhere.
+    pub request: Option<Request>,
+    /// Files the driver opened, by number (file 0 is the one the run began with).
+    pub files: Vec<String>,
+    /// How far each file has been read (byte offset): a block executed before it runs again.
+    read_to: Vec<u64>,
+    /// Blocks executed again after a jump back (the runaway guard counts these).
+    pub repeated_blocks: u64,
+}
+
+impl Calls {
+    /// Calls begun (a call whose programme is still being looked for does not count).
+    pub fn depth(&self) -> usize {
+        self.frames.iter().filter(|f| f.start.is_some()).count()
+    }
+
+    /// The programme running now and where it starts: the innermost call's, or the main one.
+    pub fn running(&self) -> Option<(Option<u32>, Place)> {
+        match self.frames.last() {
+            Some(f) => f.start.map(|s| (Some(f.number), s)),
+            None => self.main,
+        }
+    }
+
+    pub fn note_program(&mut self, number: u32, place: Place) {
+        if self.programs.len() < MAX_PROGRAMS_INDEXED {
+            self.programs.entry((place.file, number)).or_insert(place);
+        }
+    }
+
+    /// Where programme O`number` was seen: in `file` first, then in any file.
+    pub fn program(&self, file: u16, number: u32) -> Option<Place> {
+        self.programs.get(&(file, number)).copied().or_else(|| {
+            // Few files are ever open: the other files' entries are looked for one by one.
+            (0..self.files.len().max(1) as u16).filter(|f| *f != file).find_map(|f| self.programs.get(&(f, number)).copied())
+        })
+    }
+
+    pub fn note_sequence(&mut self, scope: Place, number: u32, place: Place) {
+        if self.sequences.len() >= MAX_SEQUENCES_INDEXED {
+            self.sequences.clear();
+        }
+        self.sequences.insert((scope.file, scope.offset, number), place);
+    }
+
+    pub fn sequence(&self, scope: Place, number: u32) -> Option<Place> {
+        self.sequences.get(&(scope.file, scope.offset, number)).copied()
+    }
+
+    /// Whether a line of `file` at `offset` has been executed before (a jump came back).
+    pub fn was_read(&self, file: u16, offset: u64) -> bool {
+        self.read_to.get(file as usize).is_some_and(|r| offset < *r)
+    }
+
+    /// Blocks of `file` up to byte `end` have been executed.
+    pub fn mark_read(&mut self, file: u16, end: u64) {
+        let i = file as usize;
+        if self.read_to.len() <= i {
+            self.read_to.resize(i + 1, 0);
+        }
+        self.read_to[i] = self.read_to[i].max(end);
+    }
+
+    /// The call chain of a block at the current depth, outermost first.
+    pub fn chain(&self) -> Vec<Span> {
+        // A call whose programme is still being looked for has not begun.
+        self.frames.iter().filter(|f| f.start.is_some()).map(|f| f.call).collect()
+    }
+}

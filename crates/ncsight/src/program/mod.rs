@@ -1,0 +1,1186 @@
+//! A programme run: lines in, events out, one line at a time, so that nothing holds the
+//! programme or its motion in memory. The caller owns all I/O.
+//!
+//! Two modes, as the interface specifies:
+//! - `Mode::Run` stops at the first alarm, exactly as the controller does (the alarm is the last
+//!   event), and stops reading at the programme end.
+//! - `Mode::Check` reports every problem: a block that alarms is left out (the modal state stays as
+//!   it was) and reading goes on; blocks after the programme end are still read for their syntax.
+
+mod calls;
+
+use crate::alarm::{Diagnostic, Rule};
+use crate::dialect::Foreign;
+use crate::interp::{Flow, Interpreter, Outcome, Switches};
+use crate::machine::{Machine, Options};
+use crate::motion::{Op, Record};
+use crate::profile::Params;
+use crate::read::{Block, Line, Reader, Word};
+use crate::source::Span;
+use calls::{Calls, Frame, Search, Target};
+pub use calls::{Place, Request};
+
+/// Blocks executed again after a jump back (a subprogramme's second run, a loop) before a run
+/// is taken for one that never ends, unless the caller sets another limit.
+pub const MAX_REPEATED_BLOCKS: u64 = 10_000_000;
+
+/// How a run treats programmes that call programmes.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct CallOptions {
+    /// The main programme's O number, when it is not the first programme of the text.
+    pub main: Option<u32>,
+    /// A called programme that no file holds is skipped with a warning instead of the
+    /// controller's alarm (builder macros live in the machine, not the file).
+    pub skip_missing: bool,
+    /// The runaway guard: blocks executed again after jumps back, at most.
+    pub max_repeated_blocks: u64,
+}
+
+impl Default for CallOptions {
+    fn default() -> CallOptions {
+        CallOptions { main: None, skip_missing: false, max_repeated_blocks: MAX_REPEATED_BLOCKS }
+    }
+}
+
+/// How many "length without a decimal point" warnings (NCS-W02) are shown one by one; the rest
+/// are summed up in one warning at the end.
+pub const INCREMENT_WARNINGS_SHOWN: u32 = 3;
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Mode {
+    Run,
+    Check,
+}
+
+pub use crate::event::Event;
+
+/// How the run ended (so far).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Status {
+    /// Still reading.
+    Running,
+    /// M02/M30 (or M99 in a main programme) was executed.
+    Ended,
+    /// Stopped on an alarm (run mode).
+    Alarm,
+}
+
+pub struct Program {
+    core: Core,
+    machine: Machine,
+    /// The block a batch's packed blocks are set into, one after the other.
+    block: Block,
+}
+
+/// Everything but the operator machine: reading and interpreting, with buffers reused from line
+/// to line so that the steady state allocates nothing.
+struct Core {
+    reader: LineReader,
+    interp: Interpreter,
+    mode: Mode,
+    line_no: u32,
+    status: Status,
+    eof: bool,
+    warned_after_end: bool,
+    alarms: usize,
+    /// Span of the last block read (for the end-of-input warning).
+    last_span: Span,
+    /// NCS-W02 warnings passed on so far; past [`INCREMENT_WARNINGS_SHOWN`] they are counted
+    /// and summed up at the end.
+    increment_warnings: u32,
+    read: ReadLine,
+    outcome: Outcome,
+    /// The file of the line being interpreted, the byte offsets where it and the next line
+    /// begin, and the place on it of the next block.
+    file: u16,
+    line_offset: u64,
+    next_offset: u64,
+    block_index: u16,
+    /// Blocks of the line before this one are passed over (a jump into the middle of a line);
+    /// `skip_next` is for the first line after a jump.
+    skip_to: u16,
+    skip_next: u16,
+    /// The line is read again (after a jump back).
+    again: bool,
+    /// The sequence number of the block being executed (for its records).
+    block_n: Option<u32>,
+    /// A block has been executed (before the main programme's first O, if any).
+    executed_any: bool,
+    calls: Calls,
+    call_options: CallOptions,
+}
+
+/// One line read, not yet interpreted: the reader's blocks and the look for another control's
+/// language.
+#[derive(Debug, Default)]
+struct ReadLine {
+    line_no: u32,
+    line: Line,
+    foreign: Option<Foreign>,
+    /// The line's length in bytes (for the span of a foreign-language answer).
+    len: usize,
+}
+
+/// Reads lines for a [`Program`]; cheap to clone and to send to a thread. Reading needs nothing
+/// of the modal state, so a caller may read lines on one thread into a [`ReadBatch`] while the
+/// programme interprets earlier ones on another (the command line does).
+#[derive(Debug, Clone)]
+pub struct LineReader {
+    reader: Reader,
+}
+
+impl LineReader {
+    /// The programme numbers (O blocks) on one line, in order: what a driver looks for in
+    /// its other files when a called programme is not in the text.
+    pub fn program_numbers(&self, raw: &[u8], out: &mut Vec<u32>) {
+        // Only lines with an O or ':' can hold one.
+        if !raw.iter().any(|b| matches!(b, b'O' | b'o' | b':')) {
+            return;
+        }
+        let mut line = Line::default();
+        self.reader.read_line_into(1, raw, &mut line);
+        out.extend(line.blocks.iter().filter_map(|b| b.as_ref().ok().and_then(|b| b.program)));
+    }
+
+    /// Read line `line_no` (1-based, with or without its line break) into `out`, reusing its
+    /// allocations.
+    fn read(&self, line_no: u32, raw: &[u8], out: &mut ReadLine) {
+        out.line_no = line_no;
+        out.len = raw.len();
+        // Another control's programme gets one answer, not a cascade of alarms (issue 10). Its
+        // signs come early or carry `$ @ = <`; only such lines are looked at.
+        out.foreign = None;
+        if line_no <= 100 || raw.iter().any(|b| matches!(b, b'$' | b'@' | b'=' | b'<')) {
+            out.foreign = crate::dialect::sniff(raw);
+        }
+        if out.foreign.is_none() {
+            self.reader.read_line_into(line_no, raw, &mut out.line);
+        }
+    }
+}
+
+/// Lines read ahead, packed: the blocks of all lines in one array and their words in another,
+/// so that a batch handed to another thread is a few buffers read front to back (issue 9: the
+/// interpreting thread then streams them instead of chasing one small allocation per block).
+/// The buffers are kept by [`ReadBatch::clear`] for the next batch.
+#[derive(Debug, Default)]
+pub struct ReadBatch {
+    lines: Vec<PackedLine>,
+    blocks: Vec<PackedBlock>,
+    words: Vec<Word>,
+    /// The rare parts: the reader's alarms and line warnings, and comment texts.
+    diagnostics: Vec<Diagnostic>,
+    comments: Vec<Vec<String>>,
+    /// The reader's line buffers.
+    scratch: ReadLine,
+}
+
+#[derive(Debug, Clone, Copy)]
+struct PackedLine {
+    line_no: u32,
+    len: usize,
+    /// The line's length in the text, its break included (more than `len` when the driver
+    /// kept only the start of an over-long line).
+    bytes: u64,
+    foreign: Option<Foreign>,
+    /// Index ranges into the batch's blocks and diagnostics (the line's warnings).
+    blocks: (u32, u32),
+    warnings: (u32, u32),
+    end_of_file: bool,
+}
+
+#[derive(Debug, Clone, Copy)]
+struct PackedBlock {
+    /// The block could not be read: this diagnostic (an index) is its alarm.
+    error: Option<u32>,
+    span: Span,
+    block_delete: bool,
+    sequence: Option<u32>,
+    program: Option<u32>,
+    words: (u32, u32),
+    comments: Option<u32>,
+}
+
+/// The next index of a batch buffer (a batch holds far fewer than 2^32 of anything).
+fn index<T>(v: &[T]) -> u32 {
+    u32::try_from(v.len()).expect("a batch holds fewer than 2^32 items")
+}
+
+impl ReadBatch {
+    /// Lines held.
+    pub fn len(&self) -> usize {
+        self.lines.len()
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.lines.is_empty()
+    }
+
+    /// Empty it for the next batch, keeping the buffers.
+    pub fn clear(&mut self) {
+        self.lines.clear();
+        self.blocks.clear();
+        self.words.clear();
+        self.diagnostics.clear();
+        self.comments.clear();
+    }
+
+    /// Read line `line_no` (1-based, with or without its line break) and append it.
+    pub fn push(&mut self, reader: &LineReader, line_no: u32, raw: &[u8]) {
+        reader.read(line_no, raw, &mut self.scratch);
+        let r = &self.scratch;
+        let first_block = index(&self.blocks);
+        let first_warning = index(&self.diagnostics);
+        self.diagnostics.extend(r.line.warnings.iter().cloned());
+        let warnings = (first_warning, index(&self.diagnostics));
+        for item in &r.line.blocks {
+            let packed = match item {
+                Err(d) => {
+                    self.diagnostics.push(d.clone());
+                    PackedBlock {
+                        error: Some(index(&self.diagnostics) - 1),
+                        span: d.span,
+                        block_delete: false,
+                        sequence: None,
+                        program: None,
+                        words: (0, 0),
+                        comments: None,
+                    }
+                }
+                Ok(b) => {
+                    let first_word = index(&self.words);
+                    self.words.extend_from_slice(&b.words);
+                    let comments = (!b.comments.is_empty()).then(|| {
+                        self.comments.push(b.comments.clone());
+                        index(&self.comments) - 1
+                    });
+                    PackedBlock {
+                        error: None,
+                        span: b.span,
+                        block_delete: b.block_delete,
+                        sequence: b.sequence,
+                        program: b.program,
+                        words: (first_word, index(&self.words)),
+                        comments,
+                    }
+                }
+            };
+            self.blocks.push(packed);
+        }
+        self.lines.push(PackedLine {
+            line_no,
+            len: r.len,
+            bytes: raw.len() as u64,
+            foreign: r.foreign,
+            blocks: (first_block, index(&self.blocks)),
+            warnings,
+            end_of_file: r.line.end_of_file,
+        });
+    }
+
+    /// The last line pushed is `bytes` long in the text, its break included: the driver kept
+    /// only its start (an over-long line).
+    pub fn set_last_line_bytes(&mut self, bytes: u64) {
+        if let Some(l) = self.lines.last_mut() {
+            l.bytes = bytes;
+        }
+    }
+
+    /// Block `pb` of this batch into `b`, reusing its allocations.
+    fn fill(&self, pb: &PackedBlock, b: &mut Block) {
+        b.span = pb.span;
+        b.block_delete = pb.block_delete;
+        b.sequence = pb.sequence;
+        b.program = pb.program;
+        b.words.clear();
+        // Word by word: blocks hold a few words, too few for a copy call to pay.
+        for w in &self.words[pb.words.0 as usize..pb.words.1 as usize] {
+            b.words.push(*w);
+        }
+        match pb.comments {
+            Some(c) => b.comments.clone_from(&self.comments[c as usize]),
+            None => b.comments.clear(),
+        }
+    }
+}
+
+impl Program {
+    pub fn new(params: Params, switches: Switches, mode: Mode) -> Program {
+        Program::with_operator(params, switches, mode, Options::default())
+    }
+
+    /// A run with the operator's actions (single block, feed hold, reset, dry run, overrides).
+    pub fn with_operator(params: Params, switches: Switches, mode: Mode, operator: Options) -> Program {
+        let style = params.profile().alarm_style;
+        Program {
+            machine: Machine::new(&params, operator),
+            block: Block::default(),
+            core: Core {
+                reader: LineReader { reader: Reader::new(style) },
+                interp: Interpreter::new(params, switches),
+                mode,
+                line_no: 0,
+                status: Status::Running,
+                eof: false,
+                warned_after_end: false,
+                alarms: 0,
+                last_span: Span::new(1, 1, 1),
+                increment_warnings: 0,
+                read: ReadLine::default(),
+                outcome: Outcome::default(),
+                file: 0,
+                line_offset: 0,
+                next_offset: 0,
+                block_index: 0,
+                skip_to: 0,
+                skip_next: 0,
+                again: false,
+                block_n: None,
+                executed_any: false,
+                calls: Calls::default(),
+                call_options: CallOptions::default(),
+            },
+        }
+    }
+
+    /// Check mode that passes on only the diagnostics: records are neither timed nor passed on
+    /// (the same diagnostics as [`Mode::Check`], without the time model's work).
+    pub fn diagnostics_only(params: Params, switches: Switches) -> Program {
+        let mut p = Program::new(params, switches, Mode::Check);
+        p.core.outcome.discard_records = true;
+        p
+    }
+
+    pub fn interpreter(&self) -> &Interpreter {
+        &self.core.interp
+    }
+
+    /// How programmes that call programmes are run; given before the first line. With a main
+    /// programme named, the run begins by looking for it.
+    pub fn set_call_options(&mut self, options: CallOptions) {
+        let c = &mut self.core;
+        c.call_options = options;
+        if let Some(number) = options.main {
+            let start = Place::start_of(0);
+            c.calls.search = Some(Search { target: Target::Program(number), from: start, scope: start, wrapped: true, once: true, asked_by: Span::new(1, 1, 1), resume: None });
+        }
+    }
+
+    /// Where the run must read next, when it is not the next line: after a line, or at the end
+    /// of a text ([`Program::end_of_text`]). The driver feeds the lines from there on.
+    pub fn take_request(&mut self) -> Option<Request> {
+        self.core.calls.request.take()
+    }
+
+    /// The answer to [`Request::Find`]: the file called `name` holds the programme. Its
+    /// number for spans and places is returned; the run asks to read it from its start.
+    pub fn open_file(&mut self, name: impl Into<String>) -> u16 {
+        let c = &mut self.core;
+        if c.calls.files.is_empty() {
+            c.calls.files.push(String::new());
+        }
+        let file = u16::try_from(c.calls.files.len()).unwrap_or(u16::MAX);
+        c.calls.files.push(name.into());
+        let start = Place::start_of(file);
+        if let Some(s) = &mut c.calls.search {
+            *s = Search { from: start, scope: start, wrapped: true, once: true, ..*s };
+        }
+        c.seek(start);
+        file
+    }
+
+    /// The answer to [`Request::Find`]: no file holds the programme.
+    pub fn no_file(&mut self, sink: &mut dyn FnMut(Event)) {
+        let Program { core, machine, .. } = self;
+        let (chain, file) = (core.calls.chain(), core.file);
+        core.not_found(&mut |e| stamped(e, &chain, file, machine, sink));
+    }
+
+    /// The name a driver gave file `file` ([`Program::open_file`]); "" for the first file.
+    pub fn file_name(&self, file: u16) -> &str {
+        self.core.calls.files.get(file as usize).map(String::as_str).unwrap_or("")
+    }
+
+    /// The text being fed has ended. The run may go on elsewhere (a search going back to the
+    /// top, a called programme in another file): then the request is returned and the driver
+    /// feeds from there. Otherwise the run is finished ([`Program::finish`]).
+    pub fn end_of_text(&mut self, sink: &mut dyn FnMut(Event)) -> Option<Request> {
+        let stopped = self.core.status == Status::Alarm || self.machine.is_reset() || self.core.eof && self.core.calls.search.is_none();
+        if !stopped {
+            let Program { core, machine, .. } = self;
+            let (chain, file, depth) = (core.calls.chain(), core.file, core.calls.depth());
+            let sink = &mut |e| stamped(e, &chain, file, machine, sink);
+            if core.calls.search.is_some() {
+                core.search_ends(sink);
+            } else if depth > 0 && core.status == Status::Running {
+                let span = core.last_span;
+                core.text_ends(span, sink);
+            }
+            if let Some(r) = core.calls.request.take() {
+                return Some(r);
+            }
+        }
+        self.finish(sink);
+        None
+    }
+
+    pub fn status(&self) -> Status {
+        self.core.status
+    }
+
+    /// Alarms reported so far.
+    pub fn alarm_count(&self) -> usize {
+        self.core.alarms
+    }
+
+    /// Whether more lines can change anything.
+    pub fn wants_more(&self) -> bool {
+        let c = &self.core;
+        !c.eof && !self.machine.is_reset() && (c.mode == Mode::Check || c.status == Status::Running)
+    }
+
+    /// Seconds from programme start so far (the cycle time once the input has ended).
+    pub fn time_s(&self) -> f64 {
+        self.machine.time_s()
+    }
+
+    /// Feed the next line (with or without its line break).
+    pub fn feed_line(&mut self, raw: &[u8], sink: &mut dyn FnMut(Event)) {
+        if !self.wants_more() {
+            self.core.line_no = self.core.line_no.wrapping_add(1);
+            self.core.next_offset += raw.len() as u64;
+            return;
+        }
+        let mut read = std::mem::take(&mut self.core.read);
+        self.core.reader.read(self.core.line_no.wrapping_add(1), raw, &mut read);
+        self.feed_read(&mut read, sink);
+        self.core.read = read;
+    }
+
+    /// A reader for the lines of this programme (see [`ReadBatch`]).
+    pub fn line_reader(&self) -> LineReader {
+        self.core.reader.clone()
+    }
+
+    /// Feed line `i` of a batch read ahead by [`ReadBatch::push`]. Lines must come in order,
+    /// each once, across batches.
+    pub fn feed_from(&mut self, batch: &ReadBatch, i: usize, sink: &mut dyn FnMut(Event)) {
+        let l = batch.lines[i];
+        debug_assert_eq!(l.line_no, self.core.line_no.wrapping_add(1), "lines fed out of order");
+        self.core.line_no = l.line_no;
+        self.core.start_line(l.bytes);
+        if !self.wants_more() {
+            return;
+        }
+        let Program { core, machine, block } = self;
+        if core.calls.depth() > 0 || core.file > 0 {
+            let (chain, file) = (core.calls.chain(), core.file);
+            core.interpret_packed(batch, &l, block, &mut |e| stamped(e, &chain, file, machine, sink));
+        } else if core.records() {
+            core.interpret_packed(batch, &l, block, &mut |e| machine.push(e, sink));
+        } else {
+            core.interpret_packed(batch, &l, block, sink);
+        }
+    }
+
+    fn feed_read(&mut self, read: &mut ReadLine, sink: &mut dyn FnMut(Event)) {
+        debug_assert_eq!(read.line_no, self.core.line_no.wrapping_add(1), "lines fed out of order");
+        self.core.line_no = read.line_no;
+        self.core.start_line(read.len as u64);
+        if !self.wants_more() {
+            return;
+        }
+        let Program { core, machine, .. } = self;
+        if core.calls.depth() > 0 || core.file > 0 {
+            let (chain, file) = (core.calls.chain(), core.file);
+            core.interpret_read(read, &mut |e| stamped(e, &chain, file, machine, sink));
+        } else if core.records() {
+            core.interpret_read(read, &mut |e| machine.push(e, sink));
+        } else {
+            core.interpret_read(read, sink);
+        }
+    }
+
+    /// The input has ended. Without M02/M30 the controller would wait at the last block; say so.
+    pub fn finish(&mut self, sink: &mut dyn FnMut(Event)) {
+        let c = &mut self.core;
+        let mut events = Vec::new();
+        if c.status != Status::Alarm && !self.machine.is_reset() {
+            c.flush_pending(&mut |e| events.push(e));
+        }
+        // A G71/G72 whose contour never closed: its blocks were read but nothing ran them.
+        let stopped = c.status == Status::Alarm || self.machine.is_reset();
+        if let Some(d) = c.interp.unfinished_contour().filter(|_| !stopped) {
+            c.alarms += 1;
+            if c.mode == Mode::Run {
+                c.status = Status::Alarm;
+            }
+            events.push(Event::Diagnostic(d));
+        }
+        if let Some(d) = c.increment_summary() {
+            events.push(Event::Diagnostic(d));
+        }
+        if c.status == Status::Running && !self.machine.is_reset() {
+            let d = Diagnostic::new(
+                Rule::NoProgramEnd,
+                c.interp.profile().alarm_style,
+                c.last_span,
+                "the programme has no end (M02 or M30): the controller stops after the last block",
+            );
+            events.push(Event::Diagnostic(d));
+        }
+        if !c.records() {
+            events.into_iter().for_each(sink);
+            return;
+        }
+        for e in events {
+            self.machine.push(e, sink);
+        }
+        self.machine.finish(sink);
+    }
+}
+
+impl Core {
+    /// The NCS-W02 warnings not shown one by one, in one warning; when most lengths written
+    /// without a decimal point would be under 1 mm, a hint that the programme was probably
+    /// written for calculator-type input.
+    fn increment_summary(&self) -> Option<Diagnostic> {
+        let hidden = self.increment_warnings.checked_sub(INCREMENT_WARNINGS_SHOWN).filter(|n| *n > 0)?;
+        let profile = self.interp.profile();
+        let (all, small) = (self.outcome.increment_words, self.outcome.increment_words_small);
+        let d = Diagnostic::new(
+            Rule::IntegerLength,
+            profile.alarm_style,
+            self.last_span,
+            format!(
+                "{hidden} more lengths without a decimal point were read in least input increments ({all} in all, {small} of them under 1 mm or 0.1 inch); only the first {INCREMENT_WARNINGS_SHOWN} were shown"
+            ),
+        );
+        Some(match profile.calculator_input {
+            Some(key) if small * 2 > all => d.with_hint(format!(
+                "whole numbers this small look like millimetres: if the programme was written for a control set for calculator-type input, run it with --param {key}=1"
+            )),
+            _ => d,
+        })
+    }
+
+    /// Records are passed on (through the machine); not in a diagnostics-only check, whose
+    /// interpreter keeps none.
+    fn records(&self) -> bool {
+        !self.outcome.discard_records
+    }
+
+    /// Interpret one line read; the events are untimed.
+    fn interpret_read(&mut self, read: &mut ReadLine, sink: &mut dyn FnMut(Event)) {
+        let line = &mut read.line;
+        if self.begin_line(read.foreign, read.len, line.warnings.drain(..), line.end_of_file, sink) {
+            for item in &line.blocks {
+                if !self.interpret_item(item.as_ref(), sink) {
+                    return;
+                }
+            }
+        }
+    }
+
+    /// The start of a line: another control's language ends the run; the line's warnings; a DOS
+    /// end-of-file mark. Whether the line's blocks are to be interpreted.
+    fn begin_line(
+        &mut self,
+        foreign: Option<Foreign>,
+        len: usize,
+        warnings: impl Iterator<Item = Diagnostic>,
+        end_of_file: bool,
+        sink: &mut dyn FnMut(Event),
+    ) -> bool {
+        if let Some(f) = foreign {
+            let profile = self.interp.profile();
+            let d = Diagnostic::new(
+                Rule::ForeignDialect,
+                profile.alarm_style,
+                Span::new(self.line_no, 1, len.clamp(1, 80) as u32),
+                format!("this looks like {}, not a programme for {} ({}): its words mean other things there, so ncsight stops here", f.name(), profile.name, profile.title),
+            )
+            .with_hint("run it on the profile of the control it was written for");
+            self.alarm(d, sink);
+            // Both modes stop: reading on would only repeat the same answer.
+            self.status = Status::Alarm;
+            self.eof = true;
+            return false;
+        }
+        // A line's own warnings once: not again after a jump back, not while a search passes.
+        if !self.again && self.calls.search.is_none() {
+            for w in warnings {
+                sink(Event::Diagnostic(w));
+            }
+        }
+        if end_of_file {
+            self.eof = true;
+        }
+        true
+    }
+
+    /// A line of a batch, its blocks set one by one into a block kept for reuse.
+    fn interpret_packed(&mut self, batch: &ReadBatch, l: &PackedLine, block: &mut Block, sink: &mut dyn FnMut(Event)) {
+        let warnings = batch.diagnostics[l.warnings.0 as usize..l.warnings.1 as usize].iter().cloned();
+        if !self.begin_line(l.foreign, l.len, warnings, l.end_of_file, sink) {
+            return;
+        }
+        for pb in &batch.blocks[l.blocks.0 as usize..l.blocks.1 as usize] {
+            let go_on = match pb.error {
+                Some(k) => self.interpret_item(Err(&batch.diagnostics[k as usize]), sink),
+                None => {
+                    batch.fill(pb, block);
+                    self.interpret_item(Ok(block), sink)
+                }
+            };
+            if !go_on {
+                break;
+            }
+        }
+    }
+
+    /// One block of a line, or the alarm the reader made of it. Whether the rest of the line is
+    /// to be interpreted (a run stops at its first alarm, at the programme end and at a jump).
+    fn interpret_item(&mut self, item: Result<&Block, &Diagnostic>, sink: &mut dyn FnMut(Event)) -> bool {
+        let k = self.block_index;
+        self.block_index = self.block_index.saturating_add(1);
+        if k < self.skip_to {
+            return true;
+        }
+        let place = Place { file: self.file, offset: self.line_offset, line: self.line_no, block: k };
+        if self.calls.search.is_some() {
+            match self.search_step(item.ok(), place, sink) {
+                Searched::Passed => return true,
+                Searched::Stop => return false,
+                Searched::Found => {}
+            }
+        }
+        let block = match item {
+            Ok(b) => b,
+            Err(d) => {
+                self.flush_pending(sink);
+                self.alarm(d.clone(), sink);
+                return self.mode != Mode::Run;
+            }
+        };
+        if block.is_empty() {
+            return true;
+        }
+        self.last_span = block.span;
+        if let Some(n) = block.program {
+            self.calls.note_program(n, place);
+        }
+        if self.status == Status::Ended {
+            if !self.warned_after_end {
+                self.warned_after_end = true;
+                let d = Diagnostic::new(
+                    Rule::AfterEnd,
+                    self.interp.profile().alarm_style,
+                    block.span,
+                    "this block comes after the programme end (M02/M30) and is not executed; later blocks are only read",
+                );
+                sink(Event::Diagnostic(d));
+            }
+            return true;
+        }
+        if let Some(n) = block.program {
+            match self.calls.running() {
+                // The first programme of the text is the main one.
+                None if self.calls.depth() == 0 && !self.executed_any => self.calls.main = Some((Some(n), place)),
+                // The running programme's own O block.
+                Some((_, start)) if start == place => {}
+                // Another programme begins: the running one's text has ended.
+                _ => return self.text_ends(block.span, sink),
+            }
+            if block.words.is_empty() {
+                return true;
+            }
+        }
+        self.calls.mark_read(self.file, self.next_offset);
+        if !self.executed_any {
+            self.executed_any = true;
+            if self.calls.main.is_none() {
+                self.calls.main = Some((None, Place::start_of(self.file)));
+            }
+        }
+        if self.again {
+            // The runaway guard (MACRO.md section 6: a loop may never end on the machine).
+            self.calls.repeated_blocks += 1;
+            let max = self.call_options.max_repeated_blocks;
+            if self.calls.repeated_blocks > max {
+                let d = Diagnostic::new(
+                    Rule::Runaway,
+                    self.interp.profile().alarm_style,
+                    block.span,
+                    format!("more than {max} blocks were executed again after jumps back: the programme probably never ends, so ncsight stops here"),
+                )
+                .with_hint("a programme that really runs this long can be run with a higher --max-blocks");
+                self.flush_pending(sink);
+                self.alarm(d, sink);
+                self.status = Status::Alarm;
+                self.eof = true;
+                return false;
+            }
+        }
+        self.block_n = block.sequence;
+        match self.interp.execute_into(block, &mut self.outcome) {
+            Ok(()) => {
+                let flow = self.outcome.flow.take();
+                self.pass_on(sink);
+                if self.interp.state().ended {
+                    self.status = Status::Ended;
+                    if self.mode == Mode::Run {
+                        return false;
+                    }
+                }
+                if let Some(flow) = flow {
+                    return self.jump(flow, place, sink);
+                }
+            }
+            Err(d) => {
+                // The thread being cut when the next block alarms is finished first.
+                self.flush_pending(sink);
+                self.alarm(d, sink);
+                if self.mode == Mode::Run {
+                    return false;
+                }
+                // A programme end inside an unfinished contour still ends the programme.
+                if self.interp.state().ended {
+                    self.status = Status::Ended;
+                }
+            }
+        }
+        true
+    }
+
+    /// A new line of `bytes` bytes (its break included) begins where the last one ended.
+    fn start_line(&mut self, bytes: u64) {
+        self.line_offset = self.next_offset;
+        self.next_offset += bytes;
+        self.block_index = 0;
+        self.skip_to = std::mem::take(&mut self.skip_next);
+        self.again = self.calls.was_read(self.file, self.line_offset);
+    }
+
+    /// Ask the driver to go on from `to`.
+    fn seek(&mut self, to: Place) {
+        self.calls.request = Some(crate::program::Request::Seek(to));
+        self.file = to.file;
+        self.next_offset = to.offset;
+        self.line_no = to.line.wrapping_sub(1);
+        self.skip_next = to.block;
+    }
+
+    /// M98 or M99 after the block's records. Whether the rest of the line is interpreted.
+    fn jump(&mut self, flow: Flow, place: Place, sink: &mut dyn FnMut(Event)) -> bool {
+        let profile = self.interp.profile();
+        let next = Place { block: place.block.saturating_add(1), ..place };
+        match flow {
+            Flow::Call { number, count, mut span } => {
+                span.file = self.file;
+                let max = profile.calls.max_depth;
+                if self.calls.depth() >= max as usize {
+                    // FANUC 0 alarm 077 (FANUC 0i-TB/MB operator's manual 12.3: four levels).
+                    let d = Diagnostic::new(
+                        Rule::CallNesting,
+                        profile.alarm_style,
+                        span,
+                        format!("O{number:04} would be the {}th nested subprogramme call: {} allows {max} levels", max + 1, profile.name),
+                    );
+                    self.alarm(d, sink);
+                    return self.mode != Mode::Run;
+                }
+                let start = self.calls.program(self.file, number);
+                self.calls.frames.push(Frame { number, start, back: next, remaining: count - 1, call: span });
+                match start {
+                    Some(p) => {
+                        self.seek(p);
+                        false
+                    }
+                    None => {
+                        // Not read yet: the blocks that follow are read (not executed) until it is
+                        // found, then the file from its top, then the driver's other files.
+                        let scope = Place::start_of(self.file);
+                        self.calls.search = Some(Search { target: Target::Program(number), from: next, scope, wrapped: false, once: false, asked_by: span, resume: Some(next) });
+                        true
+                    }
+                }
+            }
+            Flow::Return { sequence, span } => {
+                let Some(frame) = self.calls.frames.last_mut() else {
+                    // M99 in the main programme (GSK980TDi help text, M99: it runs again).
+                    let d = Diagnostic::new(
+                        Rule::ProgramLoops,
+                        profile.alarm_style,
+                        span,
+                        "M99 in the main programme: the controller starts it again from the top; the simulation ends here",
+                    );
+                    sink(Event::Diagnostic(d));
+                    let mut end = Record::new(span, Op::End { code: 99 });
+                    end.n = self.block_n;
+                    end.block_end = true;
+                    if self.records() {
+                        sink(Event::Record(end));
+                    }
+                    self.status = Status::Ended;
+                    return self.mode != Mode::Run;
+                };
+                if sequence.is_none() && frame.remaining > 0 {
+                    frame.remaining -= 1;
+                    let start = frame.start.unwrap_or(place);
+                    self.seek(start);
+                    return false;
+                }
+                let frame = self.calls.frames.pop().expect("a frame was just seen");
+                match sequence {
+                    None => self.seek(frame.back),
+                    Some(n) => {
+                        // M99 P: to block N of the caller (GSK980TDi help text, M99), looked for
+                        // from the calling block on, then from the caller's start.
+                        let scope = self.calls.running().map(|(_, s)| s).unwrap_or(Place::start_of(frame.back.file));
+                        match self.calls.sequence(scope, n) {
+                            Some(p) => self.seek(p),
+                            None => {
+                                self.calls.search = Some(Search { target: Target::Sequence(n), from: frame.back, scope, wrapped: false, once: false, asked_by: span, resume: Some(frame.back) });
+                                self.seek(frame.back);
+                            }
+                        }
+                    }
+                }
+                false
+            }
+        }
+    }
+
+    /// A block read while a jump looks for its target.
+    fn search_step(&mut self, block: Option<&Block>, place: Place, sink: &mut dyn FnMut(Event)) -> Searched {
+        let s = self.calls.search.expect("searching");
+        if s.wrapped && !s.once && place.file == s.from.file && (place.offset, place.block) >= (s.from.offset, s.from.block) {
+            // Round once: it is not in this file.
+            self.search_ends(sink);
+            return Searched::Stop;
+        }
+        let Some(b) = block else { return Searched::Passed };
+        if let Some(n) = b.program {
+            self.calls.note_program(n, place);
+        }
+        match s.target {
+            Target::Program(n) if b.program == Some(n) => {
+                self.calls.search = None;
+                match self.calls.frames.last_mut() {
+                    Some(f) if f.start.is_none() => f.start = Some(place),
+                    // The main programme the caller named.
+                    _ => self.calls.main = Some((Some(n), place)),
+                }
+                Searched::Found
+            }
+            Target::Sequence(_) if b.program.is_some() && place != s.scope => {
+                // The programme's text ends at the next programme's O.
+                self.search_ends(sink);
+                Searched::Stop
+            }
+            Target::Sequence(n) if b.sequence == Some(n) => {
+                self.calls.search = None;
+                self.calls.note_sequence(s.scope, n, place);
+                Searched::Found
+            }
+            _ => Searched::Passed,
+        }
+    }
+
+    /// A search has read to the end of its scope: back to the scope's start once, then (for a
+    /// programme) the driver's other files, then it fails.
+    fn search_ends(&mut self, sink: &mut dyn FnMut(Event)) {
+        let Some(s) = self.calls.search.as_mut() else { return };
+        if !s.wrapped && !s.once {
+            s.wrapped = true;
+            let scope = s.scope;
+            self.seek(scope);
+            return;
+        }
+        match s.target {
+            Target::Program(number) if !s.once => self.calls.request = Some(Request::Find { number }),
+            _ => self.not_found(sink),
+        }
+    }
+
+    /// The target is nowhere: the controller's alarm (FANUC 0 alarm 078), or with
+    /// `skip_missing` a warning and the call does nothing.
+    fn not_found(&mut self, sink: &mut dyn FnMut(Event)) {
+        let Some(s) = self.calls.search.take() else { return };
+        let profile = self.interp.profile();
+        let calling = matches!(s.target, Target::Program(_)) && self.calls.frames.last().is_some_and(|f| f.start.is_none());
+        let (message, hint) = match s.target {
+            Target::Program(n) if calling => (
+                format!("O{n:04}: the called programme is in no file read (the programme's own file, the subprogramme directories)"),
+                "give the directory that holds it with --subprogram-dir, or run with --skip-missing-subprograms",
+            ),
+            Target::Program(n) => (format!("O{n:04}: the main programme named is not in the file"), "name a programme the file holds with --main"),
+            Target::Sequence(n) => (format!("N{n}: M99 P returns to a block with this sequence number, and the calling programme has none"), "the N of M99 P must be in the calling programme"),
+        };
+        if calling && self.call_options.skip_missing {
+            let d = Diagnostic::new(Rule::CallSkipped, profile.alarm_style, s.asked_by, format!("{message}: the call is skipped (--skip-missing-subprograms)"));
+            sink(Event::Diagnostic(d));
+            self.calls.frames.pop();
+            if let Some(p) = s.resume {
+                self.seek(p);
+            }
+            return;
+        }
+        let d = Diagnostic::new(Rule::NumberNotFound, profile.alarm_style, s.asked_by, message).with_hint(hint);
+        self.flush_pending(sink);
+        self.alarm(d, sink);
+        if calling {
+            self.calls.frames.pop();
+        }
+        match s.resume {
+            // A check goes on after the block that asked.
+            Some(p) if self.mode == Mode::Check => self.seek(p),
+            _ => {
+                self.status = Status::Alarm;
+                self.eof = true;
+            }
+        }
+    }
+
+    /// The running programme's text ends (another programme's O, the end of the text) at
+    /// `span`. Whether the rest of the line is interpreted.
+    fn text_ends(&mut self, span: Span, sink: &mut dyn FnMut(Event)) -> bool {
+        let profile = self.interp.profile();
+        self.flush_pending(sink);
+        match self.calls.frames.pop() {
+            None => {
+                let d = Diagnostic::new(
+                    Rule::NoProgramEnd,
+                    profile.alarm_style,
+                    span,
+                    "the main programme has no end (M02 or M30) before the next programme begins: the controller stops after its last block",
+                );
+                sink(Event::Diagnostic(d));
+                self.status = Status::Ended;
+                self.mode != Mode::Run
+            }
+            Some(frame) => {
+                // No manual says what a controller does here (MACRO.md section 1, inferred): an
+                // alarm; a check goes on as if M99 had been there.
+                let d = Diagnostic::new(Rule::NoReturn, profile.alarm_style, span, format!("O{:04} ends here without M99: a subprogramme returns with M99", frame.number));
+                self.alarm(d, sink);
+                if self.mode == Mode::Check {
+                    self.seek(frame.back);
+                }
+                false
+            }
+        }
+    }
+
+    /// The warnings and (if wanted) the records of the outcome buffer, in that order.
+    fn pass_on(&mut self, sink: &mut dyn FnMut(Event)) {
+        if !self.outcome.warnings.is_empty() {
+            for w in self.outcome.warnings.drain(..) {
+                if w.rule == Rule::IntegerLength {
+                    self.increment_warnings += 1;
+                    if self.increment_warnings > INCREMENT_WARNINGS_SHOWN {
+                        continue;
+                    }
+                }
+                sink(Event::Diagnostic(w));
+            }
+        }
+        if self.records() && !self.outcome.records.is_empty() {
+            for r in self.outcome.records.drain(..) {
+                sink(Event::Record(r));
+            }
+        }
+    }
+
+    fn flush_pending(&mut self, sink: &mut dyn FnMut(Event)) {
+        self.interp.flush_pending_into(&mut self.outcome);
+        self.outcome.warnings.clear(); // a flush reports its records only
+        self.pass_on(sink);
+    }
+
+    fn alarm(&mut self, d: Diagnostic, sink: &mut dyn FnMut(Event)) {
+        self.alarms += 1;
+        if self.mode == Mode::Run {
+            self.status = Status::Alarm;
+        }
+        sink(Event::Diagnostic(d));
+    }
+}
+
+/// What a search made of a block.
+enum Searched {
+    /// Not the target: read on.
+    Passed,
+    /// The target: it is executed.
+    Found,
+    /// The search moved elsewhere or failed: the rest of the line is not read.
+    Stop,
+}
+
+/// An event of a block in a called programme or another file: its file and depth set, the
+/// call chain on its diagnostics; then on to the machine (records) or the sink.
+fn stamped(mut e: Event, chain: &[Span], file: u16, machine: &mut Machine, sink: &mut dyn FnMut(Event)) {
+    match &mut e {
+        Event::Record(r) => {
+            r.span.file = file;
+            r.call_depth = chain.len().min(u8::MAX as usize) as u8;
+        }
+        Event::Diagnostic(d) => {
+            d.span.file = file;
+            if d.calls.is_empty() {
+                d.calls.extend_from_slice(chain);
+            }
+        }
+    }
+    machine.push(e, sink);
+}
+
+/// Run a whole text (tests and small inputs): every event in order.
+pub fn run_text(params: Params, switches: Switches, mode: Mode, text: &[u8]) -> Vec<Event> {
+    run_text_with(params, switches, mode, Options::default(), text)
+}
+
+/// [`run_text`] with the operator's actions.
+pub fn run_text_with(params: Params, switches: Switches, mode: Mode, operator: Options, text: &[u8]) -> Vec<Event> {
+    events(Program::with_operator(params, switches, mode, operator), text).collect()
+}
+
+/// The events of a programme text, pulled one at a time by the consumer: a line is read only
+/// when the events of the lines before it have been taken, so a consumer that stops early (or
+/// reads a huge text lazily) holds one line's events at a time. Jumps go back and forth in the
+/// text; a called programme the text lacks is an alarm (see [`events_with_library`]).
+pub fn events(program: Program, text: &[u8]) -> Events<'_> {
+    events_with_library(program, text, Vec::new())
+}
+
+/// [`events`] with other texts, by name, where a called programme the text lacks is looked for
+/// (what `--subprogram-dir` gives the command line).
+pub fn events_with_library<'a>(program: Program, text: &'a [u8], library: Vec<(String, &'a [u8])>) -> Events<'a> {
+    Events { program, texts: vec![text], library, opened: Vec::new(), at: (0, 0), queue: std::collections::VecDeque::new(), finished: false }
+}
+
+/// See [`events`].
+pub struct Events<'a> {
+    program: Program,
+    /// The texts being read, by file number (0: the main text).
+    texts: Vec<&'a [u8]>,
+    library: Vec<(String, &'a [u8])>,
+    /// The library texts opened so far.
+    opened: Vec<usize>,
+    /// The text and the byte offset of the next line.
+    at: (usize, usize),
+    queue: std::collections::VecDeque<Event>,
+    finished: bool,
+}
+
+impl Events<'_> {
+    /// The programme being run (its status, its time so far).
+    pub fn program(&self) -> &Program {
+        &self.program
+    }
+
+    /// Where the run asks to read next, taken from the programme.
+    fn follow(&mut self, request: Request) {
+        match request {
+            Request::Seek(p) => self.at = (p.file as usize, p.offset as usize),
+            Request::Find { number } => {
+                let reader = self.program.line_reader();
+                let mut numbers = Vec::new();
+                let holds = |text: &[u8], numbers: &mut Vec<u32>| {
+                    text.split_inclusive(|&b| b == b'\n').any(|l| {
+                        numbers.clear();
+                        reader.program_numbers(l, numbers);
+                        numbers.contains(&number)
+                    })
+                };
+                let found = (0..self.library.len()).find(|i| !self.opened.contains(i) && holds(self.library[*i].1, &mut numbers));
+                match found {
+                    Some(i) => {
+                        self.opened.push(i);
+                        let file = self.program.open_file(self.library[i].0.clone());
+                        if self.texts.len() <= file as usize {
+                            self.texts.resize(file as usize + 1, &[]);
+                        }
+                        self.texts[file as usize] = self.library[i].1;
+                    }
+                    None => {
+                        let Events { program, queue, .. } = self;
+                        program.no_file(&mut |e| queue.push_back(e));
+                    }
+                }
+            }
+        }
+    }
+}
+
+impl Iterator for Events<'_> {
+    type Item = Event;
+
+    fn next(&mut self) -> Option<Event> {
+        loop {
+            if let Some(e) = self.queue.pop_front() {
+                return Some(e);
+            }
+            if self.finished {
+                return None;
+            }
+            if let Some(r) = self.program.take_request() {
+                self.follow(r);
+                continue;
+            }
+            let (file, offset) = self.at;
+            let text = self.texts.get(file).copied().unwrap_or(&[]);
+            let rest = text.get(offset..).unwrap_or(&[]);
+            let Events { program, queue, .. } = self;
+            if rest.is_empty() || !program.wants_more() {
+                match program.end_of_text(&mut |e| queue.push_back(e)) {
+                    Some(r) => self.follow(r),
+                    None => self.finished = true,
+                }
+                continue;
+            }
+            let len = rest.iter().position(|&b| b == b'\n').map_or(rest.len(), |k| k + 1);
+            program.feed_line(&rest[..len], &mut |e| queue.push_back(e));
+            self.at.1 += len;
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::profile;
+
+    /// Lines fed through a packed batch give the events that feeding them one by one gives:
+    /// reader alarms, line warnings, comments, several blocks on a line, block delete, N and O
+    /// numbers, an unclosed comment, text after `%`, a BOM, a DOS end-of-file mark.
+    #[test]
+    fn a_batch_feeds_as_lines_do() {
+        let text: &[u8] = b"\xEF\xBB\xBF% tape\nO0012 (PART 12)\nN10 G00 X10. Z2. ; (tool) ; N11 G01 Z-5. F0.1\n/N12 X1\nG0 X#1\nX-4.5.Z0.\n(open comment\nG0 X1 (FURA\x80AO) Z1\nGO X0.\nN20 G4 P100\n\nM30\nG0 X5\n\x1A\nG0 X9\n";
+        for machine in ["gsk980tdi", "fanuc0t", "fanuc0m"] {
+            for mode in [Mode::Run, Mode::Check] {
+                let params = || Params::defaults(profile::by_name(machine).unwrap());
+                let expected = run_text(params(), Switches::default(), mode, text);
+                let mut program = Program::new(params(), Switches::default(), mode);
+                let reader = program.line_reader();
+                let mut batch = ReadBatch::default();
+                let lines: Vec<&[u8]> = text.split_inclusive(|&b| b == b'\n').collect();
+                let mut events = Vec::new();
+                // Two batches, the second reusing the first one's buffers.
+                for part in lines.chunks(7) {
+                    batch.clear();
+                    let first = program.core.line_no;
+                    for (k, l) in part.iter().enumerate() {
+                        batch.push(&reader, first + 1 + k as u32, l);
+                    }
+                    for i in 0..batch.len() {
+                        program.feed_from(&batch, i, &mut |e| events.push(e));
+                    }
+                }
+                program.finish(&mut |e| events.push(e));
+                assert_eq!(events, expected, "{machine} {mode:?}");
+            }
+        }
+    }
+}

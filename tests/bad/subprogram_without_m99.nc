@@ -1,0 +1,8 @@
+(expect NCS-E62 line 7 col 1 on gsk980tdi)
+O0001
+M98 P0100
+M30
+O0100
+G00 U2
+O0200
+M99
