@@ -5,7 +5,7 @@
 #![no_main]
 use libfuzzer_sys::fuzz_target;
 use ncsight::profile::{self, Params};
-use ncsight::{run_text, Event, Mode, Program, ReadBatch, Switches};
+use ncsight::{run_text, Event, Mode, Program, ReadBatch, Request, Switches};
 
 fuzz_target!(|data: &[u8]| {
     let Some((&pick, text)) = data.split_first() else { return };
@@ -33,20 +33,44 @@ fuzz_target!(|data: &[u8]| {
         k += 1;
     };
     let lines: Vec<&[u8]> = text.split_inclusive(|&b| b == b'\n').collect();
-    let mut line_no = 0u32;
-    for part in lines.chunks(per_batch) {
-        if !program.wants_more() {
-            break;
+    // The next line to batch (0-based); a jump (a subprogramme call or return) moves it.
+    let mut next = 0usize;
+    loop {
+        while next < lines.len() && program.wants_more() {
+            batch.clear();
+            let first = next;
+            for l in &lines[first..(first + per_batch).min(lines.len())] {
+                next += 1;
+                batch.push(&reader, next as u32, l);
+            }
+            for i in 0..batch.len() {
+                program.feed_from(&batch, i, &mut same);
+                if let Some(r) = program.take_request() {
+                    next = follow(&mut program, r, &mut same);
+                    break;
+                }
+            }
         }
-        batch.clear();
-        for l in part {
-            line_no += 1;
-            batch.push(&reader, line_no, l);
-        }
-        for i in 0..batch.len() {
-            program.feed_from(&batch, i, &mut same);
+        match program.end_of_text(&mut same) {
+            Some(r) => next = follow(&mut program, r, &mut same),
+            None => break,
         }
     }
-    program.finish(&mut same);
     assert_eq!(k, events.len());
 });
+
+/// Where the run asks to read next, as a line index: a seek in the one text, or no other file.
+fn follow(program: &mut Program, mut r: Request, same: &mut dyn FnMut(Event)) -> usize {
+    loop {
+        match r {
+            Request::Seek(p) => return p.line.saturating_sub(1) as usize,
+            Request::Find { .. } => {
+                program.no_file(same);
+                match program.take_request() {
+                    Some(next) => r = next,
+                    None => return usize::MAX,
+                }
+            }
+        }
+    }
+}
