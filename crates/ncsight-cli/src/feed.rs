@@ -63,6 +63,37 @@ impl Text for Stream {
     }
 }
 
+/// Line `line` (1-based) of the file at `path` into `out` (at most [`MAX_KEPT_LINE_BYTES`] of
+/// it); left empty when the file cannot be read or is shorter.
+pub fn line_of(path: &std::path::Path, line: u32, out: &mut Vec<u8>) {
+    out.clear();
+    let Ok(f) = std::fs::File::open(path) else { return };
+    let mut r = io::BufReader::new(f);
+    let mut n = 0u32;
+    loop {
+        let buf = match r.fill_buf() {
+            Ok(b) if !b.is_empty() => b,
+            _ => return,
+        };
+        let (piece, complete) = match buf.iter().position(|&b| b == b'\n') {
+            Some(k) => (&buf[..=k], true),
+            None => (buf, false),
+        };
+        let used = piece.len();
+        if n + 1 == line {
+            let room = MAX_KEPT_LINE_BYTES.saturating_sub(out.len());
+            out.extend_from_slice(&piece[..used.min(room)]);
+        }
+        r.consume(used);
+        if complete {
+            n += 1;
+            if n == line {
+                return;
+            }
+        }
+    }
+}
+
 /// Where a called programme that the text lacks is looked for (`--subprogram-dir`).
 #[derive(Debug, Default)]
 pub struct Library {
@@ -555,6 +586,38 @@ mod tests {
                     }
                 }
             }
+        }
+    }
+
+    /// Jumps through the threaded feed (a file re-read from byte offsets, batches of an old
+    /// place dropped) give what the core's own pull iterator gives: calls forward and back
+    /// across many batches, repeats, a search that goes round the file, M99 P, a programme
+    /// that no file holds, in a run and a check.
+    #[test]
+    fn jumps_give_what_the_pull_iterator_gives() {
+        let mut text = String::from("O0001\nG21 G17 G90 G00 X0. Y0. Z10.\nM98 P0030100\n");
+        for i in 0..6_000 {
+            text.push_str(&format!("G01 X{}. Y{}. F900.\n", i % 50, i % 7));
+        }
+        text.push_str("M98 P0020200\nM98 P0300\nG00 X7.\nN77 M98 P0400\nM30\nO0100\nG91 G00 Z-0.5\nG90\nM98 P0200\nM99\n");
+        text.push_str("O0200\nG01 X3. F300.\nM99\nO0300\nG00 Y4.\nM99 P77\n");
+        for mode in [Mode::Run, Mode::Check] {
+            let expected: Vec<Event> = {
+                let mut p = program(mode);
+                p.set_call_options(ncsight::CallOptions::default());
+                ncsight::events(p, text.as_bytes()).collect()
+            };
+            // The run stops at O0400 (in no file): FANUC 0 alarm 078; a check goes on.
+            assert!(expected.iter().any(|e| matches!(e, Event::Diagnostic(d) if d.code == "PS0078")));
+            let mut p = program(mode);
+            let mut events = Vec::new();
+            drive(Box::new(io::Cursor::new(text.clone().into_bytes())), &mut Library::default(), &mut p, &mut |e, _, _| {
+                events.push(e.clone());
+                Ok(())
+            })
+            .unwrap();
+            assert_eq!(events.len(), expected.len(), "{mode:?}");
+            assert!(events == expected, "{mode:?}");
         }
     }
 

@@ -382,6 +382,20 @@ fn drive(
     program: &mut Program,
     on_event: &mut dyn FnMut(&Event, &[u8], feed::FileName) -> io::Result<()>,
 ) -> Result<(), Failure> {
+    // A diagnostic about a line no longer at hand (one read before a jump, one in another
+    // file) gets its text read again from the file; standard input cannot be.
+    let mut again = Vec::new();
+    let on_event = &mut |e: &Event, text: &[u8], name: feed::FileName| {
+        let path = name.unwrap_or(file);
+        match e {
+            Event::Diagnostic(d) if text.is_empty() && d.span.line > 0 && path != "-" => {
+                again.clear();
+                feed::line_of(std::path::Path::new(path), d.span.line, &mut again);
+                on_event(e, &again, name)
+            }
+            _ => on_event(e, text, name),
+        }
+    };
     feed::drive(input, library, program, on_event).map_err(|e| if feed::is_read_failure(&e) { usage(format!("cannot read {file}: {e}")) } else { Failure::Io(e) })
 }
 

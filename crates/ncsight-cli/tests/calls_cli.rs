@@ -1,0 +1,108 @@
+//! Programmes that call programmes, on the command line: --subprogram-dir, --main,
+//! --skip-missing-subprograms, --max-blocks, what JSONL and check show of a call, and a
+//! programme on standard input that jumps back.
+
+mod common;
+
+use std::io::Write;
+use std::process::{Command, Stdio};
+
+/// A fresh directory under the target directory for one test's files.
+fn scratch(name: &str) -> std::path::PathBuf {
+    let d = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join(name);
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+const MAIN: &str = "O0001\nG21 G17 G90 G00 X0. Y0. Z10.\nM98 P0020200\nG00 X5.\nM30\n";
+
+#[test]
+fn a_programme_from_a_subprogram_dir() {
+    let d = scratch("subdir");
+    let lib = d.join("lib");
+    std::fs::create_dir_all(&lib).unwrap();
+    std::fs::write(d.join("main.nc"), MAIN).unwrap();
+    // Found by its name (o0200.txt: any case, any extension).
+    std::fs::write(lib.join("o0200.txt"), "%\nO0200 (POCKET)\nG91 G00 Y1.\nG90 M99\n%\n").unwrap();
+    let main = d.join("main.nc");
+    let (code, out, err) = common::ncsight(&["run", main.to_str().unwrap(), "-m", "fanuc0m", "--format", "jsonl", "--subprogram-dir", lib.to_str().unwrap()]);
+    assert_eq!(code, 0, "{err}");
+    let lines: Vec<&str> = out.lines().collect();
+    // Rapid, two runs of Y+1 in the other file at depth 1, X5, M30.
+    assert_eq!(lines.len(), 5, "{out}");
+    let file = lib.join("o0200.txt");
+    assert!(lines[1].contains(&format!("\"line\":3,\"file\":\"{}\"", file.display())) && lines[1].contains("\"y\":1,") && lines[1].contains("\"call_depth\":1"), "{}", lines[1]);
+    assert!(lines[2].contains("\"y\":2,"), "{}", lines[2]);
+    assert!(lines[3].contains("\"call_depth\":0") && !lines[3].contains("\"file\""), "{}", lines[3]);
+    // Found by its content when no file is named after it.
+    std::fs::rename(lib.join("o0200.txt"), lib.join("pockets.nc")).unwrap();
+    let (code, out2, _) = common::ncsight(&["run", main.to_str().unwrap(), "-m", "fanuc0m", "--format", "jsonl", "--subprogram-dir", lib.to_str().unwrap()]);
+    assert_eq!((code, out2.lines().count()), (0, 5), "{out2}");
+    // Without the directory: FANUC 0 alarm 078 at the call.
+    let (code, _, err) = common::ncsight(&["run", main.to_str().unwrap(), "-m", "fanuc0m"]);
+    assert_eq!(code, 1);
+    assert!(err.contains("main.nc:3:1: alarm[PS0078]: O0200"), "{err}");
+    // Skipped: a warning, and the run goes on.
+    let (code, out, _) = common::ncsight(&["run", main.to_str().unwrap(), "-m", "fanuc0m", "--format", "jsonl", "--skip-missing-subprograms"]);
+    assert_eq!(code, 0);
+    assert!(out.contains("\"code\":\"NCS-W27\""), "{out}");
+}
+
+/// An alarm inside a subprogramme: check names its file and line and the call that led there.
+#[test]
+fn check_shows_the_call_chain() {
+    let d = scratch("chain");
+    std::fs::write(d.join("main.nc"), "O0001\nG90 G00 X0. Y0. Z10.\nM98 P0100\nM30\nO0100\nG00 Q1.\nM99\n").unwrap();
+    let main = d.join("main.nc");
+    let (code, out, _) = common::ncsight(&["check", main.to_str().unwrap(), "-m", "fanuc0m"]);
+    assert_eq!(code, 1);
+    assert!(out.contains("main.nc:6:5: alarm[NCS-E35]"), "{out}");
+    assert!(out.contains("= in a subprogramme called at line 3, column 1"), "{out}");
+    let (_, out, _) = common::ncsight(&["check", main.to_str().unwrap(), "-m", "fanuc0m", "--format", "jsonl"]);
+    assert!(out.contains("\"calls\":[{\"line\":3,\"col\":1}]"), "{out}");
+}
+
+#[test]
+fn main_and_max_blocks() {
+    let d = scratch("main");
+    std::fs::write(d.join("two.nc"), "O0100\nG91 G00 X1.\nG90 M99\nO0200\nG90 G00 X0. Y0. Z10.\nM98 P9990100\nM30\n").unwrap();
+    let f = d.join("two.nc");
+    let (code, out, err) = common::ncsight(&["run", f.to_str().unwrap(), "-m", "fanuc0m", "--main", "O0200", "--format", "jsonl"]);
+    assert_eq!(code, 0, "{err}");
+    // The rapid of O0200, 999 moves of O0100, the end.
+    assert_eq!(out.lines().count(), 1 + 999 + 1);
+    let (code, _, err) = common::ncsight(&["run", f.to_str().unwrap(), "-m", "fanuc0m", "--main", "O0200", "--max-blocks", "100"]);
+    assert_eq!(code, 1);
+    assert!(err.contains("NCS-E63") && err.contains("more than 100 blocks"), "{err}");
+    let (code, _, err) = common::ncsight(&["run", f.to_str().unwrap(), "-m", "fanuc0m", "--main", "X12"]);
+    assert_eq!(code, 2, "{err}");
+    assert!(err.contains("--main X12"), "{err}");
+    let (code, _, err) = common::ncsight(&["run", f.to_str().unwrap(), "-m", "fanuc0m", "--subprogram-dir", "/no/such/dir"]);
+    assert_eq!(code, 2, "{err}");
+}
+
+/// Standard input: a programme that only reads forward runs; one that jumps back through a
+/// pipe gets a clear error (a file can be read again, a pipe cannot).
+#[test]
+fn standard_input_and_jumps() {
+    let run = |text: &str| {
+        let mut child = Command::new(env!("CARGO_BIN_EXE_ncsight"))
+            .args(["run", "-", "-m", "fanuc0m"])
+            .stdin(Stdio::piped())
+            .stdout(Stdio::piped())
+            .stderr(Stdio::piped())
+            .spawn()
+            .unwrap();
+        child.stdin.take().unwrap().write_all(text.as_bytes()).unwrap();
+        let o = child.wait_with_output().unwrap();
+        (o.status.code().unwrap(), String::from_utf8_lossy(&o.stdout).into_owned(), String::from_utf8_lossy(&o.stderr).into_owned())
+    };
+    // O0100 is called once and comes after M30: the search reads on, the return goes back.
+    let (code, _, err) = run("G90 G00 X0. Y0. Z1.\nM98 P0100\nM30\nO0100\nG00 X1.\nM99\n");
+    assert_eq!(code, 2, "{err}");
+    assert!(err.contains("a pipe cannot be read again: give the programme as a file"), "{err}");
+    let (code, out, err) = run("G90 G00 X0. Y0. Z1.\nG00 X2.\nM30\n");
+    assert_eq!(code, 0, "{err}");
+    assert_eq!(out.lines().count(), 3);
+}
