@@ -19,47 +19,37 @@ const BATCH_LINES: usize = 2048;
 /// Batches read but not yet interpreted, at most.
 const BATCHES_IN_FLIGHT: usize = 4;
 
-/// A programme text the reading thread reads: a stream, and for a file a way back to any byte
-/// offset (a jump to an earlier block re-reads the file from there, so nothing is held whole).
-pub trait Text: BufRead + Send {
-    /// Go on reading from byte `offset`.
-    fn seek_to(&mut self, offset: u64) -> io::Result<()>;
+/// Where a programme text comes from.
+pub enum Input {
+    /// A file: read ahead on a second thread while the programme only goes forward, read
+    /// again through a page cache once it jumps back (nothing is held whole).
+    File(std::path::PathBuf),
+    /// A text already in memory (the report reads it whole).
+    Memory(std::sync::Arc<Vec<u8>>),
+    /// A stream such as a pipe: read once, so a jump back is refused with a clear error.
+    Stream(Box<dyn BufRead + Send>),
 }
 
-impl Text for io::BufReader<std::fs::File> {
-    fn seek_to(&mut self, offset: u64) -> io::Result<()> {
-        io::Seek::seek(self, io::SeekFrom::Start(offset)).map(|_| ())
+impl Input {
+    /// The stream the reading thread reads, and what the page cache reads a jump from.
+    fn split(self) -> io::Result<(Box<dyn BufRead + Send>, Source)> {
+        Ok(match self {
+            Input::File(path) => {
+                let f = std::fs::File::open(&path)?;
+                (Box::new(io::BufReader::with_capacity(1 << 16, f)), Source::Path(path))
+            }
+            Input::Memory(text) => (Box::new(io::Cursor::new(ArcText(text.clone()))), Source::Memory(text)),
+            Input::Stream(r) => (r, Source::Once),
+        })
     }
 }
 
-impl<T: AsRef<[u8]> + Send> Text for io::Cursor<T> {
-    fn seek_to(&mut self, offset: u64) -> io::Result<()> {
-        self.set_position(offset);
-        Ok(())
-    }
-}
+/// A shared text as a cursor's buffer.
+struct ArcText(std::sync::Arc<Vec<u8>>);
 
-/// A text that can only be read once (a pipe): a jump back is refused with a clear error.
-pub struct Stream(pub Box<dyn BufRead + Send>);
-
-impl io::Read for Stream {
-    fn read(&mut self, buf: &mut [u8]) -> io::Result<usize> {
-        self.0.read(buf)
-    }
-}
-
-impl BufRead for Stream {
-    fn fill_buf(&mut self) -> io::Result<&[u8]> {
-        self.0.fill_buf()
-    }
-    fn consume(&mut self, n: usize) {
-        self.0.consume(n)
-    }
-}
-
-impl Text for Stream {
-    fn seek_to(&mut self, _: u64) -> io::Result<()> {
-        Err(io::Error::new(io::ErrorKind::Unsupported, "the programme jumps back (a subprogramme call or return), and a pipe cannot be read again: give the programme as a file"))
+impl AsRef<[u8]> for ArcText {
+    fn as_ref(&self) -> &[u8] {
+        &self.0
     }
 }
 
@@ -160,10 +150,6 @@ struct Batch {
     /// Each line's text in `text`.
     ranges: Vec<Range<usize>>,
     read: ReadBatch,
-    /// Which seek these lines follow (lines of an earlier one are dropped).
-    generation: u32,
-    /// The text ends after these lines.
-    end: bool,
 }
 
 impl Batch {
@@ -171,7 +157,6 @@ impl Batch {
         self.text.clear();
         self.ranges.clear();
         self.read.clear();
-        self.end = false;
     }
 
     fn is_full(&self) -> bool {
@@ -187,16 +172,6 @@ impl Batch {
         }
         self.ranges.push(range);
     }
-}
-
-/// What the interpreting thread tells the reading one: read `file` (opening `path` the first
-/// time) from byte `offset`, the first line numbered `line`.
-struct Seek {
-    generation: u32,
-    file: u16,
-    path: Option<std::path::PathBuf>,
-    offset: u64,
-    line: u32,
 }
 
 /// An error reading the input (not writing the output): the caller names the file.
@@ -221,85 +196,47 @@ pub fn is_read_failure(e: &io::Error) -> bool {
 pub type FileName<'a> = Option<&'a str>;
 
 /// Feed `input` line by line into `program`; `on_event` gets each event with its line's text
-/// and, for a line of another file, that file's name. Jumps (subprogramme calls and returns)
-/// re-read the input from an earlier place, or a file of `library`. Stops reading when the
-/// programme wants no more (an alarm in a run, the end of the text).
+/// and, for a line of another file, that file's name. A programme that only reads forward is
+/// read ahead on a second thread; once it jumps (a subprogramme call or return) its lines are
+/// read from byte offsets through a page cache, and from the files of `library`. Stops reading
+/// when the programme wants no more (an alarm in a run, the end of the text).
 pub fn drive(
-    input: Box<dyn Text>,
+    input: Input,
     library: &mut Library,
     program: &mut Program,
     on_event: &mut dyn FnMut(&Event, &[u8], FileName) -> io::Result<()>,
 ) -> io::Result<()> {
+    let (stream, source) = input.split().map_err(|e| io::Error::new(e.kind(), ReadFailure(e)))?;
+    let mut pending: io::Result<()> = Ok(());
+    let Some(request) = stream_forward(stream, program, &mut |e, text| {
+        if pending.is_ok() {
+            pending = on_event(&e, text, None);
+        }
+    })?
+    else {
+        return pending;
+    };
+    pending?;
+    let mut pages = Pages::new(source);
+    follow_jumps(request, &mut pages, library, program, on_event)
+}
+
+/// The forward phase: lines read ahead on a second thread. Returns the run's first request to
+/// read elsewhere, if it makes one (the run is then not finished).
+fn stream_forward(input: Box<dyn BufRead + Send>, program: &mut Program, on_event: &mut dyn FnMut(Event, &[u8])) -> io::Result<Option<Request>> {
     let reader = program.line_reader();
-    let thread_reader = reader.clone();
     let (full_tx, full_rx) = mpsc::sync_channel::<io::Result<Batch>>(BATCHES_IN_FLIGHT);
     let (empty_tx, empty_rx) = mpsc::channel::<Batch>();
-    let (seek_tx, seek_rx) = mpsc::channel::<Seek>();
     let reading = std::thread::Builder::new()
         .name("ncsight-read".into())
-        .spawn(move || read_ahead(input, &thread_reader, &full_tx, &empty_rx, &seek_rx))?;
-    let mut pending: io::Result<()> = Ok(());
+        .spawn(move || read_ahead(input, &reader, &full_tx, &empty_rx))?;
     let mut stopped = false;
     // The number of the line being fed (the reader counts the same way), and the text of the
     // last line fed once its batch is gone (for what the end of the input says about it).
     let mut line_no = 0u32;
     let mut last_text = Vec::new();
-    // The seek the batches must follow, the file being read and the names of the files opened.
-    let mut generation = 0u32;
-    let mut file = 0u16;
-    let mut names: Vec<String> = vec![String::new()];
-    let mut deliver = |e: Event, text: &[u8], names: &[String], pending: &mut io::Result<()>| {
-        let name = match &e {
-            Event::Diagnostic(d) if d.span.file > 0 => names.get(d.span.file as usize).map(String::as_str),
-            Event::Record(r) if r.span.file > 0 => names.get(r.span.file as usize).map(String::as_str),
-            _ => None,
-        };
-        if pending.is_ok() {
-            *pending = on_event(&e, text, name);
-        }
-    };
-    // Where the run asks to read next: the reading thread is told, and lines of the old place
-    // still on their way are dropped.
-    let mut follow = |request: Request, program: &mut Program, names: &mut Vec<String>, generation: &mut u32, file: &mut u16, line_no: &mut u32, pending: &mut io::Result<()>, deliver: &mut dyn FnMut(Event, &[u8], &[String], &mut io::Result<()>)| -> bool {
-        let mut request = Some(request);
-        while let Some(r) = request.take() {
-            match r {
-                Request::Seek(p) => {
-                    *generation += 1;
-                    let path = (p.file as usize >= names.len()).then(|| std::path::PathBuf::from(program.file_name(p.file)));
-                    if let Some(path) = &path {
-                        names.resize(p.file as usize + 1, String::new());
-                        names[p.file as usize] = path.display().to_string();
-                    }
-                    *file = p.file;
-                    *line_no = p.line.wrapping_sub(1);
-                    if seek_tx.send(Seek { generation: *generation, file: p.file, path, offset: p.offset, line: p.line }).is_err() {
-                        return false;
-                    }
-                }
-                Request::Find { number } => match library.find(number, &reader) {
-                    Some(path) => {
-                        program.open_file(path.display().to_string());
-                        request = program.take_request();
-                    }
-                    None => {
-                        let names_now = names.clone();
-                        program.no_file(&mut |e| deliver(e, b"", &names_now, pending));
-                        request = program.take_request();
-                    }
-                },
-            }
-        }
-        true
-    };
     'batches: for batch in full_rx.iter() {
         let mut batch = batch?;
-        if batch.generation != generation {
-            batch.clear();
-            let _ = empty_tx.send(batch);
-            continue;
-        }
-        let mut jumped = false;
         for (i, range) in batch.ranges.iter().enumerate() {
             if !program.wants_more() {
                 if let Some(r) = i.checked_sub(1).map(|k| batch.ranges[k].clone()) {
@@ -312,41 +249,30 @@ pub fn drive(
             line_no = line_no.wrapping_add(1);
             let line = &batch.text[range.clone()];
             let (ranges, text) = (&batch.ranges, &batch.text);
-            let here = (line_no, file);
             program.feed_from(&batch.read, i, &mut |e| {
                 // A diagnostic about an earlier line (a cycle that ends here) gets that line's
                 // text while the line is still in this batch, none once it is gone.
                 let text = match &e {
-                    Event::Diagnostic(d) if d.span.file != here.1 => &b""[..],
-                    Event::Diagnostic(d) if d.span.line != here.0 => {
-                        let back = here.0.wrapping_sub(d.span.line) as usize;
+                    Event::Diagnostic(d) if d.span.line != line_no => {
+                        let back = line_no.wrapping_sub(d.span.line) as usize;
                         match i.checked_sub(back) {
-                            Some(k) if d.span.line < here.0 => &text[ranges[k].clone()],
+                            Some(k) if d.span.line < line_no => &text[ranges[k].clone()],
                             _ => &b""[..],
                         }
                     }
                     _ => line,
                 };
-                deliver(e, text, &names, &mut pending);
+                on_event(e, text);
             });
-            pending.as_ref().map_err(|e| io::Error::new(e.kind(), e.to_string()))?;
             if let Some(r) = program.take_request() {
-                last_text.clear();
-                last_text.extend_from_slice(line);
-                if !follow(r, program, &mut names, &mut generation, &mut file, &mut line_no, &mut pending, &mut deliver) {
-                    break 'batches;
-                }
-                jumped = true;
-                break;
+                // The reader ends at its next send (the channel is closed).
+                return Ok(Some(r));
             }
         }
-        if !jumped {
-            if let Some(r) = batch.ranges.last() {
-                last_text.clear();
-                last_text.extend_from_slice(&batch.text[r.clone()]);
-            }
+        if let Some(r) = batch.ranges.last() {
+            last_text.clear();
+            last_text.extend_from_slice(&batch.text[r.clone()]);
         }
-        let end = batch.end && !jumped;
         batch.clear();
         // The reader may have ended already; then the batch is simply dropped.
         let _ = empty_tx.send(batch);
@@ -354,64 +280,229 @@ pub fn drive(
             stopped = true;
             break;
         }
-        if end {
-            let names_now = names.clone();
-            let r = program.end_of_text(&mut |e| {
-                let text = match &e {
-                    Event::Diagnostic(d) if d.span.line == line_no => &last_text[..],
-                    _ => &b""[..],
-                };
-                deliver(e, text, &names_now, &mut pending)
-            });
+    }
+    drop(full_rx);
+    if !stopped {
+        // The reader sent its last batch and returned; a panic there is a bug to pass on.
+        if let Err(p) = reading.join() {
+            std::panic::resume_unwind(p);
+        }
+    }
+    // Otherwise the reader ends at its next send (the channel is closed); it is not waited for,
+    // as it may be waiting for input that never comes (a terminal, a pipe left open).
+    Ok(program.end_of_text(&mut |e| {
+        let text = match &e {
+            Event::Diagnostic(d) if d.span.line == line_no => &last_text[..],
+            _ => &b""[..],
+        };
+        on_event(e, text);
+    }))
+}
+
+/// The jumping phase: the run says where to read, lines come from the page cache.
+fn follow_jumps(
+    first: Request,
+    pages: &mut Pages,
+    library: &mut Library,
+    program: &mut Program,
+    on_event: &mut dyn FnMut(&Event, &[u8], FileName) -> io::Result<()>,
+) -> io::Result<()> {
+    let reader = program.line_reader();
+    let mut names: Vec<String> = vec![String::new()];
+    let mut pending: io::Result<()> = Ok(());
+    let mut at = (0u16, 0u64);
+    let mut request = Some(first);
+    let mut line = Vec::new();
+    let mut again = Vec::new();
+    let mut deliver = |e: Event, text: &[u8], names: &[String], pages: &Pages, pending: &mut io::Result<()>| {
+        let file = match &e {
+            Event::Diagnostic(d) => d.span.file,
+            Event::Record(r) => r.span.file,
+        };
+        let name = (file > 0).then(|| names.get(file as usize).map(String::as_str)).flatten();
+        // A diagnostic about a line no longer at hand (one read before the jump) gets its
+        // text read again.
+        let text = match &e {
+            Event::Diagnostic(d) if text.is_empty() && d.span.line > 0 => {
+                pages.numbered_line(d.span.file, d.span.line, &mut again);
+                &again[..]
+            }
+            _ => text,
+        };
+        if pending.is_ok() {
+            *pending = on_event(&e, text, name);
+        }
+    };
+    loop {
+        while let Some(r) = request.take() {
             match r {
-                Some(r) => {
-                    if !follow(r, program, &mut names, &mut generation, &mut file, &mut line_no, &mut pending, &mut deliver) {
-                        break;
+                Request::Seek(p) => {
+                    if p.file as usize >= names.len() {
+                        let name = program.file_name(p.file).to_string();
+                        pages.open(p.file, std::path::PathBuf::from(&name))?;
+                        names.resize(p.file as usize + 1, String::new());
+                        names[p.file as usize] = name;
                     }
+                    at = (p.file, p.offset);
                 }
-                None => {
-                    drop(seek_tx);
-                    drop(full_rx);
-                    if let Err(p) = reading.join() {
-                        std::panic::resume_unwind(p);
+                Request::Find { number } => {
+                    match library.find(number, &reader) {
+                        Some(path) => {
+                            program.open_file(path.display().to_string());
+                        }
+                        None => program.no_file(&mut |e| deliver(e, b"", &names, pages, &mut pending)),
                     }
+                    request = program.take_request();
+                }
+            }
+        }
+        pending.as_ref().map_err(|e| io::Error::new(e.kind(), e.to_string()))?;
+        let bytes = if program.wants_more() { pages.line(at.0, at.1, &mut line)? } else { None };
+        match bytes {
+            Some(bytes) => {
+                program.feed_line_of(&line, bytes, &mut |e| deliver(e, &line, &names, pages, &mut pending));
+                at.1 += bytes;
+                request = program.take_request();
+            }
+            None => {
+                request = program.end_of_text(&mut |e| deliver(e, b"", &names, pages, &mut pending));
+                if request.is_none() {
                     return pending;
                 }
             }
         }
     }
-    drop(full_rx);
-    drop(seek_tx);
-    let _ = stopped;
-    // The reader ends at its next send or wait (the channels are closed); it is not waited
-    // for, as it may be waiting for input that never comes (a terminal, a pipe left open).
-    let names_now = names.clone();
-    let mut request = program.end_of_text(&mut |e| {
-        let text = match &e {
-            Event::Diagnostic(d) if d.span.line == line_no => &last_text[..],
-            _ => &b""[..],
-        };
-        deliver(e, text, &names_now, &mut pending)
-    });
-    // Nothing more is read: a run that still asks to read elsewhere ends here.
-    while request.is_some() {
-        request = program.end_of_text(&mut |e| deliver(e, b"", &names_now, &mut pending));
-    }
-    pending
 }
 
-/// The reading thread: lines into batches, until the input ends or nobody listens; at the end
-/// of a text it waits for a seek (a jump back, a subprogramme in another file).
+/// A text read again from byte offsets once the run jumps: fixed pages of each file, the least
+/// recently used dropped past [`MAX_PAGES`], so memory stays bounded whatever the file's size.
+struct Pages {
+    files: Vec<Source>,
+    pages: Vec<Page>,
+    clock: u64,
+}
+
+/// What a jump is read from.
+enum Source {
+    Path(std::path::PathBuf),
+    Memory(std::sync::Arc<Vec<u8>>),
+    /// Read once (a pipe).
+    Once,
+}
+
+struct Page {
+    file: u16,
+    index: u64,
+    used: u64,
+    bytes: Vec<u8>,
+}
+
+const PAGE_BYTES: u64 = 64 * 1024;
+const MAX_PAGES: usize = 64;
+
+impl Pages {
+    fn new(main: Source) -> Pages {
+        Pages { files: vec![main], pages: Vec::new(), clock: 0 }
+    }
+
+    fn open(&mut self, file: u16, path: std::path::PathBuf) -> io::Result<()> {
+        let i = file as usize;
+        while self.files.len() <= i {
+            self.files.push(Source::Once);
+        }
+        std::fs::metadata(&path).map_err(|e| io::Error::new(e.kind(), ReadFailure(io::Error::new(e.kind(), format!("{}: {e}", path.display())))))?;
+        self.files[i] = Source::Path(path);
+        Ok(())
+    }
+
+    /// The bytes of page `index` of `file` (shorter at the end of the file, empty past it).
+    fn page(&mut self, file: u16, index: u64) -> io::Result<&[u8]> {
+        self.clock += 1;
+        let clock = self.clock;
+        if let Some(k) = self.pages.iter().position(|p| p.file == file && p.index == index) {
+            self.pages[k].used = clock;
+            return Ok(&self.pages[k].bytes);
+        }
+        let mut bytes = Vec::new();
+        match &self.files[file as usize] {
+            Source::Memory(text) => {
+                let start = (index * PAGE_BYTES).min(text.len() as u64) as usize;
+                let end = (start + PAGE_BYTES as usize).min(text.len());
+                bytes.extend_from_slice(&text[start..end]);
+            }
+            Source::Path(path) => {
+                use std::io::{Read, Seek};
+                let mut f = std::fs::File::open(path).map_err(|e| io::Error::new(e.kind(), ReadFailure(e)))?;
+                f.seek(io::SeekFrom::Start(index * PAGE_BYTES)).map_err(|e| io::Error::new(e.kind(), ReadFailure(e)))?;
+                f.take(PAGE_BYTES).read_to_end(&mut bytes).map_err(|e| io::Error::new(e.kind(), ReadFailure(e)))?;
+            }
+            Source::Once => {
+                let e = io::Error::new(
+                    io::ErrorKind::Unsupported,
+                    "the programme jumps back (a subprogramme call or return), and a pipe cannot be read again: give the programme as a file",
+                );
+                return Err(io::Error::new(e.kind(), ReadFailure(e)));
+            }
+        }
+        let page = Page { file, index, used: clock, bytes };
+        let k = if self.pages.len() < MAX_PAGES {
+            self.pages.push(page);
+            self.pages.len() - 1
+        } else {
+            let k = self.pages.iter().enumerate().min_by_key(|(_, p)| p.used).map_or(0, |(k, _)| k);
+            self.pages[k] = page;
+            k
+        };
+        Ok(&self.pages[k].bytes)
+    }
+
+    /// Line `line` (1-based) of `file` into `out` (empty when there is none to read).
+    fn numbered_line(&self, file: u16, line: u32, out: &mut Vec<u8>) {
+        out.clear();
+        match self.files.get(file as usize) {
+            Some(Source::Path(p)) => line_of(p, line, out),
+            Some(Source::Memory(text)) => {
+                if let Some(l) = text.split_inclusive(|&b| b == b'\n').nth(line as usize - 1) {
+                    out.extend_from_slice(&l[..l.len().min(MAX_KEPT_LINE_BYTES)]);
+                }
+            }
+            _ => {}
+        }
+    }
+
+    /// The line of `file` that starts at byte `offset` into `out` (at most
+    /// [`MAX_KEPT_LINE_BYTES`] of it, with its break), and its whole length; `None` at the end.
+    fn line(&mut self, file: u16, offset: u64, out: &mut Vec<u8>) -> io::Result<Option<u64>> {
+        out.clear();
+        let mut at = offset;
+        loop {
+            let (index, within) = (at / PAGE_BYTES, (at % PAGE_BYTES) as usize);
+            let page = self.page(file, index)?;
+            if within >= page.len() {
+                return Ok((at > offset).then_some(at - offset));
+            }
+            let rest = &page[within..];
+            let (piece, complete) = match rest.iter().position(|&b| b == b'\n') {
+                Some(k) => (&rest[..=k], true),
+                None => (rest, false),
+            };
+            let room = MAX_KEPT_LINE_BYTES.saturating_sub(out.len());
+            out.extend_from_slice(&piece[..piece.len().min(room)]);
+            at += piece.len() as u64;
+            if complete {
+                return Ok(Some(at - offset));
+            }
+        }
+    }
+}
+
+/// The reading thread: lines into batches, until the input ends or nobody listens.
 fn read_ahead(
-    input: Box<dyn Text>,
+    mut input: Box<dyn BufRead + Send>,
     reader: &LineReader,
     full: &mpsc::SyncSender<io::Result<Batch>>,
     empty: &mpsc::Receiver<Batch>,
-    seeks: &mpsc::Receiver<Seek>,
 ) {
-    let mut texts: Vec<Option<Box<dyn Text>>> = vec![Some(input)];
-    let mut current = 0usize;
-    let mut generation = 0u32;
     let mut batch = Batch::default();
     let mut line_no = 0u32;
     // Where the line being gathered starts in the batch text, how long it is in the input; the
@@ -419,50 +510,7 @@ fn read_ahead(
     let mut start = 0usize;
     let mut line_bytes = 0u64;
     let mut skipping = false;
-    let mut at_end = false;
     loop {
-        // A seek: the lines gathered for the old place are dropped.
-        let seek = if at_end { seeks.recv().ok() } else { seeks.try_recv().ok() };
-        if at_end && seek.is_none() {
-            return;
-        }
-        if let Some(s) = seek {
-            // Only the latest seek counts.
-            let mut s = s;
-            while let Ok(later) = seeks.try_recv() {
-                s = later;
-            }
-            generation = s.generation;
-            batch.clear();
-            batch.generation = generation;
-            (start, line_bytes, skipping, at_end) = (0, 0, false, false);
-            line_no = s.line.wrapping_sub(1);
-            let i = s.file as usize;
-            if texts.len() <= i {
-                texts.resize_with(i + 1, || None);
-            }
-            if texts[i].is_none() {
-                if let Some(path) = &s.path {
-                    match std::fs::File::open(path) {
-                        Ok(f) => texts[i] = Some(Box::new(io::BufReader::with_capacity(1 << 16, f))),
-                        Err(e) => {
-                            let _ = full.send(Err(io::Error::new(e.kind(), ReadFailure(io::Error::new(e.kind(), format!("{}: {e}", path.display()))))));
-                            return;
-                        }
-                    }
-                }
-            }
-            current = i;
-            let result = match texts[i].as_mut() {
-                Some(t) => t.seek_to(s.offset),
-                None => Err(io::Error::new(io::ErrorKind::NotFound, "no such file")),
-            };
-            if let Err(e) = result {
-                let _ = full.send(Err(io::Error::new(e.kind(), ReadFailure(e))));
-                return;
-            }
-        }
-        let Some(input) = texts[current].as_mut() else { return };
         let buf = match input.fill_buf() {
             Ok(b) => b,
             Err(e) if e.kind() == io::ErrorKind::Interrupted => continue,
@@ -470,8 +518,7 @@ fn read_ahead(
                 // The lines read before the error are interpreted first.
                 if !batch.ranges.is_empty() {
                     batch.text.truncate(start);
-                    let next = Batch { generation, ..Batch::default() };
-                    let _ = full.send(Ok(std::mem::replace(&mut batch, next)));
+                    let _ = full.send(Ok(batch));
                 }
                 let _ = full.send(Err(io::Error::new(e.kind(), ReadFailure(e))));
                 return;
@@ -482,15 +529,10 @@ fn read_ahead(
                 line_no = line_no.wrapping_add(1);
                 batch.read_line(reader, line_no, start, line_bytes);
             }
-            batch.end = true;
-            let mut next = empty.try_recv().unwrap_or_default();
-            next.clear();
-            next.generation = generation;
-            if full.send(Ok(std::mem::replace(&mut batch, next))).is_err() {
-                return;
+            if !batch.ranges.is_empty() {
+                let _ = full.send(Ok(batch));
             }
-            (start, line_bytes, skipping, at_end) = (0, 0, false, true);
-            continue;
+            return;
         }
         let (piece, complete) = match buf.iter().position(|&b| b == b'\n') {
             Some(k) => (&buf[..=k], true),
@@ -504,19 +546,10 @@ fn read_ahead(
         if !skipping {
             let room = MAX_KEPT_LINE_BYTES - (batch.text.len() - start);
             batch.text.extend_from_slice(&piece[..used.min(room)]);
-            if complete || batch.text.len() - start == MAX_KEPT_LINE_BYTES {
-                if complete {
-                    line_no = line_no.wrapping_add(1);
-                    batch.read_line(reader, line_no, start, line_bytes);
-                    line_bytes = 0;
-                }
-                skipping = !complete;
-                if complete {
-                    start = batch.text.len();
-                }
-            }
-        } else if complete {
-            // The end of an over-long line: its start is read now, with its whole length.
+            skipping = !complete && batch.text.len() - start == MAX_KEPT_LINE_BYTES;
+        }
+        if complete {
+            // The line is read with its whole length (the start of an over-long one is kept).
             line_no = line_no.wrapping_add(1);
             batch.read_line(reader, line_no, start, line_bytes);
             start = batch.text.len();
@@ -528,7 +561,6 @@ fn read_ahead(
             // The line being gathered, if any, moves on to the next batch.
             let mut next = empty.try_recv().unwrap_or_default();
             next.clear();
-            next.generation = generation;
             next.text.extend_from_slice(&batch.text[start..]);
             batch.text.truncate(start);
             if full.send(Ok(std::mem::replace(&mut batch, next))).is_err() {
@@ -552,7 +584,7 @@ mod tests {
     fn events_of(input: Box<dyn BufRead + Send>, mode: Mode) -> (Vec<Event>, Vec<Vec<u8>>) {
         let mut p = program(mode);
         let (mut events, mut texts) = (Vec::new(), Vec::new());
-        drive(Box::new(Stream(input)), &mut Library::default(), &mut p, &mut |e, text, _| {
+        drive(Input::Stream(input), &mut Library::default(), &mut p, &mut |e, text, _| {
             events.push(e.clone());
             texts.push(text.to_vec());
             Ok(())
@@ -611,7 +643,7 @@ mod tests {
             assert!(expected.iter().any(|e| matches!(e, Event::Diagnostic(d) if d.code == "PS0078")));
             let mut p = program(mode);
             let mut events = Vec::new();
-            drive(Box::new(io::Cursor::new(text.clone().into_bytes())), &mut Library::default(), &mut p, &mut |e, _, _| {
+            drive(Input::Memory(std::sync::Arc::new(text.clone().into_bytes())), &mut Library::default(), &mut p, &mut |e, _, _| {
                 events.push(e.clone());
                 Ok(())
             })
@@ -638,7 +670,7 @@ mod tests {
         }
         let mut p = program(Mode::Check);
         let mut alarms = Vec::new();
-        let r = drive(Box::new(Stream(Box::new(io::BufReader::new(Broken(Some(b"G0 X1. Q5\nG0 X2".to_vec())))))), &mut Library::default(), &mut p, &mut |e, _, _| {
+        let r = drive(Input::Stream(Box::new(io::BufReader::new(Broken(Some(b"G0 X1. Q5\nG0 X2".to_vec()))))), &mut Library::default(), &mut p, &mut |e, _, _| {
             if let Event::Diagnostic(d) = e {
                 alarms.push(d.span.line);
             }
@@ -658,7 +690,7 @@ mod tests {
         let text = "G99 M03 S500\nG00 X50. Z2.\nG71 U2. R0.5\nG71 P10 Q20 U0 W0 F0.2\nN10 G00 X20. Z2.\nG01 X40. Z-10.\nZ-15.\nN20 X30. Z-20.\nM30\n";
         let mut p = Program::new(Params::defaults(profile::by_name("gsk980tdi").unwrap()), Switches::default(), Mode::Check);
         let mut seen = Vec::new();
-        drive(Box::new(io::Cursor::new(text.as_bytes().to_vec())), &mut Library::default(), &mut p, &mut |e, t, _| {
+        drive(Input::Memory(std::sync::Arc::new(text.as_bytes().to_vec())), &mut Library::default(), &mut p, &mut |e, t, _| {
             if let Event::Diagnostic(d) = e {
                 seen.push((d.span.line, String::from_utf8_lossy(t).into_owned()));
             }

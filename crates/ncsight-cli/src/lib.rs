@@ -363,39 +363,25 @@ fn setup(m: &MachineArgs, err: &mut dyn Write) -> Result<(Params, Switches), Fai
     Ok((params, Switches { block_delete: m.block_delete, optional_stop: m.optional_stop, repair_position }))
 }
 
-fn open(file: &str) -> Result<Box<dyn feed::Text>, Failure> {
+fn open(file: &str) -> Result<feed::Input, Failure> {
     if file == "-" {
-        return Ok(Box::new(feed::Stream(Box::new(BufReader::new(io::stdin())))));
+        return Ok(feed::Input::Stream(Box::new(BufReader::new(io::stdin()))));
     }
     if std::fs::metadata(file).is_ok_and(|m| m.is_dir()) {
         return Err(usage(format!("cannot read {file}: it is a directory, not a programme file")));
     }
-    let f = std::fs::File::open(file).map_err(|e| usage(format!("cannot read {file}: {e}")))?;
-    Ok(Box::new(BufReader::with_capacity(1 << 16, f)))
+    std::fs::File::open(file).map_err(|e| usage(format!("cannot read {file}: {e}")))?;
+    Ok(feed::Input::File(file.into()))
 }
 
 /// [`feed::drive`] with an error in reading the input named by its file.
 fn drive(
     file: &str,
-    input: Box<dyn feed::Text>,
+    input: feed::Input,
     library: &mut feed::Library,
     program: &mut Program,
     on_event: &mut dyn FnMut(&Event, &[u8], feed::FileName) -> io::Result<()>,
 ) -> Result<(), Failure> {
-    // A diagnostic about a line no longer at hand (one read before a jump, one in another
-    // file) gets its text read again from the file; standard input cannot be.
-    let mut again = Vec::new();
-    let on_event = &mut |e: &Event, text: &[u8], name: feed::FileName| {
-        let path = name.unwrap_or(file);
-        match e {
-            Event::Diagnostic(d) if text.is_empty() && d.span.line > 0 && path != "-" => {
-                again.clear();
-                feed::line_of(std::path::Path::new(path), d.span.line, &mut again);
-                on_event(e, &again, name)
-            }
-            _ => on_event(e, text, name),
-        }
-    };
     feed::drive(input, library, program, on_event).map_err(|e| if feed::is_read_failure(&e) { usage(format!("cannot read {file}: {e}")) } else { Failure::Io(e) })
 }
 
@@ -645,7 +631,7 @@ fn report(
     // The page keeps at most REPORT_MAX_RECORDS motions and REPORT_MAX_DIAGNOSTICS
     // diagnostics; the run goes on to the end for the time and the alarm, and the page says so.
     let (mut all_records, mut all_diags) = (0usize, 0usize);
-    drive(file, Box::new(io::Cursor::new(source.clone())), &mut library, &mut program, &mut |e, _, _| {
+    drive(file, feed::Input::Memory(std::sync::Arc::new(source.clone())), &mut library, &mut program, &mut |e, _, _| {
         match e {
             Event::Record(r) => {
                 all_records += 1;

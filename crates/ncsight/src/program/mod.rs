@@ -22,7 +22,7 @@ pub use calls::{Place, Request};
 
 /// Blocks executed again after a jump back (a subprogramme's second run, a loop) before a run
 /// is taken for one that never ends, unless the caller sets another limit.
-pub const MAX_REPEATED_BLOCKS: u64 = 10_000_000;
+pub const MAX_REPEATED_BLOCKS: u64 = 5_000_000;
 
 /// How a run treats programmes that call programmes.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -446,14 +446,20 @@ impl Program {
 
     /// Feed the next line (with or without its line break).
     pub fn feed_line(&mut self, raw: &[u8], sink: &mut dyn FnMut(Event)) {
+        self.feed_line_of(raw, raw.len() as u64, sink);
+    }
+
+    /// Feed the next line, `bytes` long in the text with its break, of which the caller kept
+    /// `raw` (the start of an over-long line): byte offsets stay true for jumps.
+    pub fn feed_line_of(&mut self, raw: &[u8], bytes: u64, sink: &mut dyn FnMut(Event)) {
         if !self.wants_more() {
             self.core.line_no = self.core.line_no.wrapping_add(1);
-            self.core.next_offset += raw.len() as u64;
+            self.core.next_offset += bytes;
             return;
         }
         let mut read = std::mem::take(&mut self.core.read);
         self.core.reader.read(self.core.line_no.wrapping_add(1), raw, &mut read);
-        self.feed_read(&mut read, sink);
+        self.feed_read(&mut read, bytes, sink);
         self.core.read = read;
     }
 
@@ -483,10 +489,10 @@ impl Program {
         }
     }
 
-    fn feed_read(&mut self, read: &mut ReadLine, sink: &mut dyn FnMut(Event)) {
+    fn feed_read(&mut self, read: &mut ReadLine, bytes: u64, sink: &mut dyn FnMut(Event)) {
         debug_assert_eq!(read.line_no, self.core.line_no.wrapping_add(1), "lines fed out of order");
         self.core.line_no = read.line_no;
-        self.core.start_line(read.len as u64);
+        self.core.start_line(bytes);
         if !self.wants_more() {
             return;
         }
