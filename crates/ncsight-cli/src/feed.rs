@@ -314,7 +314,9 @@ fn follow_jumps(
     let mut request = Some(first);
     let mut line = Vec::new();
     let mut again = Vec::new();
-    let mut deliver = |e: Event, text: &[u8], names: &[String], pages: &Pages, pending: &mut io::Result<()>| {
+    // The file and number of the line being fed (a seek sets them).
+    let mut here = (0u16, 0u32);
+    let mut deliver = |e: Event, text: &[u8], here: (u16, u32), names: &[String], pages: &Pages, pending: &mut io::Result<()>| {
         let file = match &e {
             Event::Diagnostic(d) => d.span.file,
             Event::Record(r) => r.span.file,
@@ -323,7 +325,7 @@ fn follow_jumps(
         // A diagnostic about a line no longer at hand (one read before the jump) gets its
         // text read again.
         let text = match &e {
-            Event::Diagnostic(d) if text.is_empty() && d.span.line > 0 => {
+            Event::Diagnostic(d) if (d.span.file, d.span.line) != here && d.span.line > 0 => {
                 pages.numbered_line(d.span.file, d.span.line, &mut again);
                 &again[..]
             }
@@ -344,13 +346,14 @@ fn follow_jumps(
                         names[p.file as usize] = name;
                     }
                     at = (p.file, p.offset);
+                    here = (p.file, p.line.wrapping_sub(1));
                 }
                 Request::Find { number } => {
                     match library.find(number, &reader) {
                         Some(path) => {
                             program.open_file(path.display().to_string());
                         }
-                        None => program.no_file(&mut |e| deliver(e, b"", &names, pages, &mut pending)),
+                        None => program.no_file(&mut |e| deliver(e, b"", (u16::MAX, 0), &names, pages, &mut pending)),
                     }
                     request = program.take_request();
                 }
@@ -360,12 +363,13 @@ fn follow_jumps(
         let bytes = if program.wants_more() { pages.line(at.0, at.1, &mut line)? } else { None };
         match bytes {
             Some(bytes) => {
-                program.feed_line_of(&line, bytes, &mut |e| deliver(e, &line, &names, pages, &mut pending));
+                here.1 = here.1.wrapping_add(1);
+                program.feed_line_of(&line, bytes, &mut |e| deliver(e, &line, here, &names, pages, &mut pending));
                 at.1 += bytes;
                 request = program.take_request();
             }
             None => {
-                request = program.end_of_text(&mut |e| deliver(e, b"", &names, pages, &mut pending));
+                request = program.end_of_text(&mut |e| deliver(e, b"", (u16::MAX, 0), &names, pages, &mut pending));
                 if request.is_none() {
                     return pending;
                 }
