@@ -9,8 +9,9 @@ pub struct Span {
     pub line: u32,
     /// 1-based byte column of the first byte.
     pub col: u32,
-    /// Length in bytes (at least 1 for anything a person must see underlined).
-    pub len: u32,
+    /// Length in bytes (at least 1 for anything a person must see underlined); a block is at
+    /// most 4096 bytes long, so 16 bits hold it (the span stays 12 bytes: every word has one).
+    pub len: u16,
     /// Which file holds the line: 0 is the file the run began with; a subprogramme found in
     /// another file gets the number its driver gave it (`Program::open_file`).
     pub file: u16,
@@ -18,7 +19,7 @@ pub struct Span {
 
 impl Span {
     pub fn new(line: u32, col: u32, len: u32) -> Span {
-        Span { line, col, len, file: 0 }
+        Span { line, col, len: len.min(u32::from(u16::MAX)) as u16, file: 0 }
     }
 
     /// The smallest span covering both (same line assumed; otherwise `self`).
@@ -27,7 +28,7 @@ impl Span {
             return self;
         }
         let start = self.col.min(other.col);
-        let end = (self.col + self.len).max(other.col + other.len);
-        Span { col: start, len: end - start, ..self }
+        let end = (self.col + u32::from(self.len)).max(other.col + u32::from(other.len));
+        Span { col: start, len: (end - start).min(u32::from(u16::MAX)) as u16, ..self }
     }
 }

@@ -702,7 +702,6 @@ impl Core {
                 return true;
             }
         }
-        self.calls.mark_read(self.file, self.next_offset);
         if !self.executed_any {
             self.executed_any = true;
             if self.calls.main.is_none() {
@@ -766,6 +765,10 @@ impl Core {
         self.block_index = 0;
         self.skip_to = std::mem::take(&mut self.skip_next);
         self.again = self.calls.was_read(self.file, self.line_offset);
+        // A line read by a search is not executed: it counts as read when run.
+        if self.calls.search.is_none() {
+            self.calls.mark_read(self.file, self.next_offset);
+        }
     }
 
     /// Ask the driver to go on from `to`.
