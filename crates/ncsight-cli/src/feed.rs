@@ -84,6 +84,20 @@ pub fn line_of(path: &std::path::Path, line: u32, out: &mut Vec<u8>) {
     }
 }
 
+/// Line `line` (1-based) of a text into `out` (empty when it cannot be read again).
+fn numbered_line(source: &Source, line: u32, out: &mut Vec<u8>) {
+    out.clear();
+    match source {
+        Source::Path(p) => line_of(p, line, out),
+        Source::Memory(text) => {
+            if let Some(l) = text.split_inclusive(|&b| b == b'\n').nth((line as usize).saturating_sub(1)) {
+                out.extend_from_slice(&l[..l.len().min(MAX_KEPT_LINE_BYTES)]);
+            }
+        }
+        Source::Once => {}
+    }
+}
+
 /// Where a called programme that the text lacks is looked for (`--subprogram-dir`).
 #[derive(Debug, Default)]
 pub struct Library {
@@ -208,7 +222,7 @@ pub fn drive(
 ) -> io::Result<()> {
     let (stream, source) = input.split().map_err(|e| io::Error::new(e.kind(), ReadFailure(e)))?;
     let mut pending: io::Result<()> = Ok(());
-    let Some(request) = stream_forward(stream, program, &mut |e, text| {
+    let Some(request) = stream_forward(stream, &source, program, &mut |e, text| {
         if pending.is_ok() {
             pending = on_event(&e, text, None);
         }
@@ -223,7 +237,7 @@ pub fn drive(
 
 /// The forward phase: lines read ahead on a second thread. Returns the run's first request to
 /// read elsewhere, if it makes one (the run is then not finished).
-fn stream_forward(input: Box<dyn BufRead + Send>, program: &mut Program, on_event: &mut dyn FnMut(Event, &[u8])) -> io::Result<Option<Request>> {
+fn stream_forward(input: Box<dyn BufRead + Send>, source: &Source, program: &mut Program, on_event: &mut dyn FnMut(Event, &[u8])) -> io::Result<Option<Request>> {
     let reader = program.line_reader();
     let (full_tx, full_rx) = mpsc::sync_channel::<io::Result<Batch>>(BATCHES_IN_FLIGHT);
     let (empty_tx, empty_rx) = mpsc::channel::<Batch>();
@@ -290,9 +304,16 @@ fn stream_forward(input: Box<dyn BufRead + Send>, program: &mut Program, on_even
     }
     // Otherwise the reader ends at its next send (the channel is closed); it is not waited for,
     // as it may be waiting for input that never comes (a terminal, a pipe left open).
+    // An alarm the end of the text raises about an earlier line (a WHILE without END, a
+    // search that found nothing) gets that line's text read again.
+    let mut again = Vec::new();
     Ok(program.end_of_text(&mut |e| {
         let text = match &e {
             Event::Diagnostic(d) if d.span.line == line_no => &last_text[..],
+            Event::Diagnostic(d) if d.is_alarm() && d.span.line > 0 => {
+                numbered_line(source, d.span.line, &mut again);
+                &again[..]
+            }
             _ => &b""[..],
         };
         on_event(e, text);
@@ -463,14 +484,8 @@ impl Pages {
     /// Line `line` (1-based) of `file` into `out` (empty when there is none to read).
     fn numbered_line(&self, file: u16, line: u32, out: &mut Vec<u8>) {
         out.clear();
-        match self.files.get(file as usize) {
-            Some(Source::Path(p)) => line_of(p, line, out),
-            Some(Source::Memory(text)) => {
-                if let Some(l) = text.split_inclusive(|&b| b == b'\n').nth(line as usize - 1) {
-                    out.extend_from_slice(&l[..l.len().min(MAX_KEPT_LINE_BYTES)]);
-                }
-            }
-            _ => {}
+        if let Some(source) = self.files.get(file as usize) {
+            numbered_line(source, line, out);
         }
     }
 

@@ -77,6 +77,19 @@ rules! {
     AddressPMissing => Alarm, "NCS-E59", Some("PS0076"), "ADDRESS P NOT DEFINED";
     CallNesting => Alarm, "NCS-E60", Some("PS0077"), "SUB PROGRAM NESTING ERROR";
     NumberNotFound => Alarm, "NCS-E61", Some("PS0078"), "NUMBER NOT FOUND";
+    // Custom macro B, FANUC 0 numbering (MACRO.md section 9; the texts are the old list's).
+    MacroOverflow => Alarm, "NCS-E64", Some("PS0111"), "CALCULATED DATA OVERFLOW";
+    DivideByZero => Alarm, "NCS-E65", Some("PS0112"), "DIVIDED BY ZERO";
+    MacroFormat => Alarm, "NCS-E66", Some("PS0114"), "FORMAT ERROR IN MACRO";
+    IllegalVariable => Alarm, "NCS-E67", Some("PS0115"), "ILLEGAL VARIABLE NUMBER";
+    WriteProtected => Alarm, "NCS-E68", Some("PS0116"), "WRITE PROTECTED VARIABLE";
+    BracketNesting => Alarm, "NCS-E69", Some("PS0118"), "PARENTHESIS NESTING ERROR";
+    MacroArgument => Alarm, "NCS-E70", Some("PS0119"), "ILLEGAL ARGUMENT";
+    MissingEnd => Alarm, "NCS-E71", Some("PS0124"), "MISSING END STATEMENT";
+    LoopNumber => Alarm, "NCS-E72", Some("PS0126"), "ILLEGAL LOOP NUMBER";
+    MacroSequence => Alarm, "NCS-E73", Some("PS0128"), "ILLEGAL MACRO SEQUENCE NUMBER";
+    ArgumentAddress => Alarm, "NCS-E74", Some("PS0129"), "ILLEGAL ARGUMENT ADDRESS";
+    UserAlarm => Alarm, "NCS-E75", Some("PS3000"), "USER ALARM (#3000)";
     // --- project rules (no controller number known) ---
     BadCharacter => Alarm, "NCS-E30", None, "CHARACTER NOT ALLOWED";
     LineTooLong => Alarm, "NCS-E31", None, "BLOCK TOO LONG";

@@ -350,6 +350,10 @@ impl Interpreter {
         &self.params
     }
 
+    pub fn switches(&self) -> Switches {
+        self.switches
+    }
+
     pub fn state(&self) -> &Modal {
         &self.state
     }
@@ -584,6 +588,11 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
         if let GFn::NotYet(why) | GFn::NotYetReference(why) = g.function {
             return Err(step.alarm(Rule::NotSupported, w.span, format!("{} ({}): {why}", w.text(), g.meaning)));
         }
+        // The programme runs G65 before a block reaches the interpreter: one that comes here is
+        // inside a G70-G73 contour (GSK980TDi help text, G71 note 4: no calls there).
+        if g.function == GFn::MacroCall {
+            return Err(step.alarm(Rule::ContourCommand, w.span, format!("{}: a macro call may not be used in the contour blocks ns to nf", w.text())));
+        }
     }
     let non_modal: Vec<_> = last_of.iter().filter(|(g, _, _)| *g == Group::NonModal).collect();
     if non_modal.len() > 1 {
@@ -653,7 +662,7 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
             GFn::Dwell | GFn::ReferenceReturn | GFn::LatheCoordinateSet | GFn::MillCoordinateSet | GFn::CompoundThread(_) | GFn::PeckCycle(_) | GFn::Rough(_) | GFn::Finish => {
                 codes.non_modal = Some((w.span, g.function))
             }
-            GFn::NotYet(_) | GFn::NotYetReference(_) => unreachable!("rejected above"),
+            GFn::NotYet(_) | GFn::NotYetReference(_) | GFn::MacroCall => unreachable!("rejected above"),
         }
     }
     // Help text G84/88: no axis move between M29 and the G84/G88 block (a dwell's X is a time).

@@ -217,6 +217,12 @@ pub static PROFILE: Profile = Profile {
         max_depth: 4,
         source: "GSK980TDi help text, M98 (count 1-9999, number 0000-9999; no L); nesting depth not stated, four as for G65 (inferred)",
     },
+    macros: super::MacroRules {
+        p_first: true,
+        macro_a: true,
+        source: "GSK980TDi help text, G65 (P right after G65; macro A with H); five bracket levels as FANUC (inferred)",
+        ..super::MacroRules::FANUC
+    },
     summary: "GSK980TDi turning centre. X is a diameter, U/W incremental. Lengths without a decimal \
 point are millimetres (seed 000's O0012: Z-28, F3, J3 K1). Feed per minute (G98) at power on.",
 };

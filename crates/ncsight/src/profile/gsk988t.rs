@@ -130,6 +130,11 @@ pub static PROFILE: Profile = Profile {
         max_depth: 4,
         source: "inferred from the GSK980TDi help text, M98 (count 1-9999, no L; four levels)",
     },
+    macros: super::MacroRules {
+        p_first: true,
+        source: "inferred from the GSK980TDi help text, G65 (P right after G65); five bracket levels as FANUC (inferred)",
+        ..super::MacroRules::FANUC
+    },
     summary: "GSK988T turning centre with a servo (CS) spindle: M14 position mode, M15 speed mode. \
 X is a diameter, U/W incremental; lengths without a decimal point are millimetres.",
 };

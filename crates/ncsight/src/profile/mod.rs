@@ -132,6 +132,9 @@ pub enum GFn {
     BoxCycle(crate::codes::BoxKind),
     /// Known to the controller, not yet simulated: an alarm that says so.
     NotYet(&'static str),
+    /// G65: a custom macro call, run by the programme (not the interpreter) with a new level of
+    /// local variables.
+    MacroCall,
     /// A reference-point code (G27, G29, G30) known to the controller, not yet simulated: an
     /// alarm that says so, after the rules that every reference-point code follows (FANUC 0044).
     NotYetReference(&'static str),
@@ -282,6 +285,28 @@ impl CallRules {
         l_count: true,
         max_depth: 4,
         source: "FANUC 0i-TB/MB operator's manual 12.3 (count 1-999, four levels); M98 P_ L_ as on the FANUC 0-M (inferred for the lathe)",
+    };
+}
+
+/// Custom macro B as the controller has it.
+#[derive(Debug, Clone, Copy)]
+pub struct MacroRules {
+    /// Brackets nest at most this deep, a function's included (FANUC alarm 118: five).
+    pub max_brackets: u8,
+    /// G65 is followed directly by P (or H) (GSK980TDi help text, G65).
+    pub p_first: bool,
+    /// `G65 H..` is the controller's macro A (GSK980TDi), not simulated yet; elsewhere H is an
+    /// argument (#11).
+    pub macro_a: bool,
+    pub source: &'static str,
+}
+
+impl MacroRules {
+    pub const FANUC: MacroRules = MacroRules {
+        max_brackets: 5,
+        p_first: false,
+        macro_a: false,
+        source: "FANUC Series 16/18 operator's manual for lathe (brackets: five levels, alarm 118); FANUC Series 16i (G65 arguments)",
     };
 }
 
@@ -563,6 +588,7 @@ pub struct Profile {
     pub thread: ThreadRules,
     pub drill: DrillRules,
     pub calls: CallRules,
+    pub macros: MacroRules,
     /// One paragraph for `ncsight machines`.
     pub summary: &'static str,
 }

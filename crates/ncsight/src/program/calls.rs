@@ -56,6 +56,16 @@ pub(super) struct Frame {
     pub remaining: u32,
     /// The calling block.
     pub call: Span,
+    /// A G65 call: it has its own level of local variables.
+    pub macro_call: bool,
+}
+
+/// A WHILE loop being run: its DO number, the place of its WHILE block, the call depth.
+#[derive(Debug, Clone, Copy)]
+pub(super) struct Loop {
+    pub label: u32,
+    pub place: Place,
+    pub depth: usize,
 }
 
 /// What a search looks for.
@@ -65,6 +75,10 @@ pub(super) enum Target {
     Program(u32),
     /// N`n` in the running programme (M99 P).
     Sequence(u32),
+    /// N`n` in the running programme (GOTO).
+    Goto(u32),
+    /// The `END m` of a WHILE whose condition does not hold.
+    LoopEnd(u32),
 }
 
 /// A jump whose target has not been read yet: the blocks are read, not executed, until it is
@@ -92,6 +106,8 @@ pub(super) struct Search {
 #[derive(Debug, Default)]
 pub(super) struct Calls {
     pub frames: Vec<Frame>,
+    /// WHILE loops being run, innermost last.
+    pub loops: Vec<Loop>,
     /// The O number of the main programme (the first in the file, or the one the caller named)
     /// and where it starts.
     pub main: Option<(Option<u32>, Place)>,

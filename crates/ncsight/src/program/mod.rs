@@ -8,6 +8,7 @@
 //!   it was) and reading goes on; blocks after the programme end are still read for their syntax.
 
 mod calls;
+mod macros;
 
 use crate::alarm::{Diagnostic, Rule};
 use crate::dialect::Foreign;
@@ -17,7 +18,8 @@ use crate::motion::{Op, Record};
 use crate::profile::Params;
 use crate::read::{Block, Line, Reader, Word};
 use crate::source::Span;
-use calls::{Calls, Frame, Search, Target};
+use calls::{Calls, Frame, Loop, Search, Target};
+use crate::read::{Stmt, Then};
 pub use calls::{Place, Request};
 
 /// Blocks executed again after a jump back (a subprogramme's second run, a loop) before a run
@@ -102,12 +104,19 @@ struct Core {
     skip_next: u16,
     /// The line is read again (after a jump back).
     again: bool,
+    reported: Reported,
     /// The sequence number of the block being executed (for its records).
     block_n: Option<u32>,
     /// A block has been executed (before the main programme's first O, if any).
     executed_any: bool,
     calls: Calls,
     call_options: CallOptions,
+    /// Custom macro B: the variables, the block a macro block's words are evaluated into, the
+    /// machine time (for #3001/#3002) and the last sequence number read (#4114).
+    vars: macros::Variables,
+    evaluated: Block,
+    clock_s: f64,
+    last_n: Option<u32>,
 }
 
 /// One line read, not yet interpreted: the reader's blocks and the look for another control's
@@ -171,6 +180,8 @@ pub struct ReadBatch {
     /// The rare parts: the reader's alarms and line warnings, and comment texts.
     diagnostics: Vec<Diagnostic>,
     comments: Vec<Vec<String>>,
+    /// Macro blocks (custom macro B), rare.
+    macros: Vec<Box<crate::read::MacroBlock>>,
     /// The reader's line buffers.
     scratch: ReadLine,
 }
@@ -199,6 +210,7 @@ struct PackedBlock {
     program: Option<u32>,
     words: (u32, u32),
     comments: Option<u32>,
+    macro_block: Option<u32>,
 }
 
 /// The next index of a batch buffer (a batch holds far fewer than 2^32 of anything).
@@ -223,6 +235,7 @@ impl ReadBatch {
         self.words.clear();
         self.diagnostics.clear();
         self.comments.clear();
+        self.macros.clear();
     }
 
     /// Read line `line_no` (1-based, with or without its line break) and append it.
@@ -245,6 +258,7 @@ impl ReadBatch {
                         program: None,
                         words: (0, 0),
                         comments: None,
+                        macro_block: None,
                     }
                 }
                 Ok(b) => {
@@ -254,6 +268,10 @@ impl ReadBatch {
                         self.comments.push(b.comments.clone());
                         index(&self.comments) - 1
                     });
+                    let macro_block = b.macro_block.as_ref().map(|m| {
+                        self.macros.push(m.clone());
+                        index(&self.macros) - 1
+                    });
                     PackedBlock {
                         error: None,
                         span: b.span,
@@ -262,6 +280,7 @@ impl ReadBatch {
                         program: b.program,
                         words: (first_word, index(&self.words)),
                         comments,
+                        macro_block,
                     }
                 }
             };
@@ -301,6 +320,7 @@ impl ReadBatch {
             Some(c) => b.comments.clone_from(&self.comments[c as usize]),
             None => b.comments.clear(),
         }
+        b.macro_block = pb.macro_block.map(|k| self.macros[k as usize].clone());
     }
 }
 
@@ -335,10 +355,15 @@ impl Program {
                 skip_to: 0,
                 skip_next: 0,
                 again: false,
+                reported: Reported::default(),
                 block_n: None,
                 executed_any: false,
                 calls: Calls::default(),
                 call_options: CallOptions::default(),
+                vars: macros::Variables::default(),
+                evaluated: Block::default(),
+                clock_s: 0.0,
+                last_n: None,
             },
         }
     }
@@ -474,6 +499,7 @@ impl Program {
         let l = batch.lines[i];
         debug_assert_eq!(l.line_no, self.core.line_no.wrapping_add(1), "lines fed out of order");
         self.core.line_no = l.line_no;
+        self.core.clock_s = self.machine.time_s();
         self.core.start_line(l.bytes);
         if !self.wants_more() {
             return;
@@ -492,6 +518,7 @@ impl Program {
     fn feed_read(&mut self, read: &mut ReadLine, bytes: u64, sink: &mut dyn FnMut(Event)) {
         debug_assert_eq!(read.line_no, self.core.line_no.wrapping_add(1), "lines fed out of order");
         self.core.line_no = read.line_no;
+        self.core.clock_s = self.machine.time_s();
         self.core.start_line(bytes);
         if !self.wants_more() {
             return;
@@ -727,6 +754,198 @@ impl Core {
                 return false;
             }
         }
+        if block.sequence.is_some() {
+            self.last_n = block.sequence;
+        }
+        if let Some(m) = block.macro_block.as_deref() {
+            if block.block_delete && self.interp.switches().block_delete {
+                return true;
+            }
+            let words = match &m.stmt {
+                Stmt::Words(words) => words,
+                stmt => return self.statement(&m.arena, stmt, block, place, sink),
+            };
+            // The words' values from the variables: an NC block to run.
+            let mut evaluated = std::mem::take(&mut self.evaluated);
+            evaluated.span = block.span;
+            evaluated.block_delete = block.block_delete;
+            evaluated.sequence = block.sequence;
+            evaluated.program = None;
+            evaluated.words.clear();
+            evaluated.comments.clone_from(&block.comments);
+            let inch = self.interp.state().inch;
+            let mut failed = None;
+            if let Err(d) = self.check_brackets(&m.arena, block.span) {
+                failed = Some(d);
+            }
+            for w in words {
+                if failed.is_some() {
+                    break;
+                }
+                let mut reading = self.reading();
+                match macros::evaluate_word(&m.arena, w, &mut reading, inch) {
+                    Ok(Some(word)) => evaluated.words.push(word),
+                    Ok(None) => {}
+                    Err(e) => failed = Some(macros::expr_alarm(self.interp.profile().alarm_style, w.span, &e)),
+                }
+            }
+            let go_on = match failed {
+                Some(d) => self.fail(d, sink),
+                None => self.execute(&evaluated, place, sink),
+            };
+            self.evaluated = evaluated;
+            return go_on;
+        }
+        self.execute(block, place, sink)
+    }
+
+    /// The variables as a block reads them.
+    fn reading(&self) -> macros::Reading<'_> {
+        macros::Reading {
+            vars: &self.vars,
+            modal: self.interp.state(),
+            profile: self.interp.profile(),
+            clock_s: self.clock_s,
+            program: self.calls.running().and_then(|(n, _)| n),
+            last_n: self.last_n,
+        }
+    }
+
+    /// Brackets nested deeper than the profile allows: FANUC alarm 118 (five levels, function
+    /// brackets included: FANUC Series 16/18 operator's manual for lathe, custom macro).
+    fn check_brackets(&self, arena: &crate::read::expr::Arena, span: Span) -> Result<(), Diagnostic> {
+        let profile = self.interp.profile();
+        let max = profile.macros.max_brackets;
+        if arena.depth > max {
+            return Err(Diagnostic::new(Rule::BracketNesting, profile.alarm_style, span, format!("brackets nested {} deep: {} allows {max}", arena.depth, profile.name)));
+        }
+        Ok(())
+    }
+
+    /// An alarm of the block being run; whether the rest of the line is interpreted.
+    fn fail(&mut self, d: Diagnostic, sink: &mut dyn FnMut(Event)) -> bool {
+        self.flush_pending(sink);
+        self.alarm(d, sink);
+        self.mode != Mode::Run
+    }
+
+    /// Evaluate a tree of the block at `span`, its failure the controller's alarm.
+    fn value(&self, arena: &crate::read::expr::Arena, root: u32, span: Span) -> Result<crate::read::expr::Value, Diagnostic> {
+        let mut reading = self.reading();
+        crate::read::expr::eval(arena, root, &mut reading).map_err(|e| macros::expr_alarm(self.interp.profile().alarm_style, span, &e))
+    }
+
+    /// A macro statement: an assignment, IF, WHILE, END, GOTO. Whether the rest of the line is
+    /// interpreted.
+    fn statement(&mut self, arena: &crate::read::expr::Arena, stmt: &Stmt, block: &Block, place: Place, sink: &mut dyn FnMut(Event)) -> bool {
+        if let Err(d) = self.check_brackets(arena, block.span) {
+            return self.fail(d, sink);
+        }
+        let next = Place { block: place.block.saturating_add(1), ..place };
+        let result = (|| -> Result<bool, Diagnostic> {
+            let profile = self.interp.profile();
+            match stmt {
+                Stmt::Words(_) => unreachable!("words are run as an NC block"),
+                Stmt::Assign { var, value } => self.assign(arena, *var, *value, block),
+                Stmt::If { cond, then } => {
+                    if !macros::holds(self.value(arena, *cond, block.span)?) {
+                        return Ok(true);
+                    }
+                    match then {
+                        Then::Goto(t) => self.goto(arena, *t, block.span, next),
+                        Then::Assign { var, value } => self.assign(arena, *var, *value, block),
+                    }
+                }
+                Stmt::While { cond, label } => {
+                    // DO m: m is 1, 2 or 3 (GSK980TDi help text, WHILE; FANUC alarm 126).
+                    if !(1..=3).contains(label) {
+                        return Err(Diagnostic::new(Rule::LoopNumber, profile.alarm_style, block.span, format!("DO{label}: the loop number is 1, 2 or 3")));
+                    }
+                    let depth = self.calls.depth();
+                    let top_here = self.calls.loops.last().is_some_and(|l| l.place == place);
+                    if macros::holds(self.value(arena, *cond, block.span)?) {
+                        if !top_here {
+                            if self.calls.loops.iter().filter(|l| l.depth == depth).count() >= 3 {
+                                return Err(Diagnostic::new(Rule::LoopNumber, profile.alarm_style, block.span, "WHILE loops nest at most three deep".to_string()));
+                            }
+                            self.calls.loops.push(Loop { label: *label, place, depth });
+                        }
+                        return Ok(true);
+                    }
+                    if top_here {
+                        self.calls.loops.pop();
+                    }
+                    // Past the matching END m.
+                    let scope = self.calls.running().map_or(Place::start_of(self.file), |(_, s)| s);
+                    self.calls.search = Some(Search { target: Target::LoopEnd(*label), from: next, scope, wrapped: true, once: true, asked_by: block.span, resume: None });
+                    Ok(true)
+                }
+                Stmt::End { label } => {
+                    let depth = self.calls.depth();
+                    match self.calls.loops.last() {
+                        Some(l) if l.label == *label && l.depth == depth => {
+                            let back = l.place;
+                            self.seek(back);
+                            Ok(false)
+                        }
+                        _ => Err(Diagnostic::new(Rule::MissingEnd, profile.alarm_style, block.span, format!("END {label}: no WHILE [..] DO {label} is running"))),
+                    }
+                }
+                Stmt::Goto { target } => self.goto(arena, *target, block.span, next),
+            }
+        })();
+        match result {
+            Ok(go_on) => go_on,
+            Err(d) => self.fail(d, sink),
+        }
+    }
+
+    /// `#i = value`; `#3000 = n` is the user's alarm.
+    fn assign(&mut self, arena: &crate::read::expr::Arena, var: u32, value: u32, block: &Block) -> Result<bool, Diagnostic> {
+        let profile = self.interp.profile();
+        let number = crate::read::expr::variable_number(self.value(arena, var, block.span)?).map_err(|e| macros::expr_alarm(profile.alarm_style, block.span, &e))?;
+        let v = self.value(arena, value, block.span)?;
+        if number == 3000 {
+            // The user's alarm: 3000 + n with the comment's text (FANUC 0i; MACRO.md section 8).
+            let n = v.unwrap_or(0.0).round() as i64;
+            let text = block.comments.first().map(|c| format!(" ({})", c.trim())).unwrap_or_default();
+            return Err(Diagnostic::new(Rule::UserAlarm, profile.alarm_style, block.span, format!("user alarm {}{text}: #3000 = {n}", 3000 + n)));
+        }
+        self.vars.write(number, v, self.clock_s).map_err(|(rule, msg)| Diagnostic::new(rule, profile.alarm_style, block.span, msg))?;
+        Ok(true)
+    }
+
+    /// GOTO n: to block N`n` of the running programme, looked for forward, then from its top.
+    fn goto(&mut self, arena: &crate::read::expr::Arena, target: u32, span: Span, next: Place) -> Result<bool, Diagnostic> {
+        let profile = self.interp.profile();
+        let v = self.value(arena, target, span)?;
+        let n = v.map(f64::round).unwrap_or(-1.0);
+        // FANUC 0 alarm 128: the target is 1 to 9999 (99999 where N has five digits).
+        if !(1.0..=99_999.0).contains(&n) {
+            return Err(Diagnostic::new(Rule::MacroSequence, profile.alarm_style, span, format!("GOTO {}: the sequence number is 1 to 99999", v.map_or("vacant".into(), |v| v.to_string()))));
+        }
+        let n = n as u32;
+        let scope = self.calls.running().map_or(Place::start_of(self.file), |(_, s)| s);
+        match self.calls.sequence(scope, n) {
+            Some(p) => {
+                self.seek(p);
+                Ok(false)
+            }
+            None => {
+                self.calls.search = Some(Search { target: Target::Goto(n), from: next, scope, wrapped: false, once: false, asked_by: span, resume: Some(next) });
+                Ok(true)
+            }
+        }
+    }
+
+    /// Run an NC block (read, or evaluated from a macro block).
+    fn execute(&mut self, block: &Block, place: Place, sink: &mut dyn FnMut(Event)) -> bool {
+        if block.words.iter().any(|w| w.letter == b'G' && w.value == 65.0) && self.interp.profile().g_code(65, None).is_some_and(|g| g.function == crate::profile::GFn::MacroCall) {
+            return match self.macro_call(block, place, sink) {
+                Ok(go_on) => go_on,
+                Err(d) => self.fail(d, sink),
+            };
+        }
         self.block_n = block.sequence;
         match self.interp.execute_into(block, &mut self.outcome) {
             Ok(()) => {
@@ -780,6 +999,141 @@ impl Core {
         self.skip_next = to.block;
     }
 
+    /// Call programme O`number` `count` times, back to `back`; `locals` for a G65 call (a new
+    /// level of local variables). Whether the rest of the line is interpreted.
+    fn call(&mut self, number: u32, count: u32, span: Span, back: Place, locals: Option<macros::Locals>) -> Result<bool, Diagnostic> {
+        let profile = self.interp.profile();
+        let macro_call = locals.is_some();
+        let max = profile.calls.max_depth;
+        // M98 and G65 nest separately, four levels each (FANUC Series 16i operator's manual,
+        // custom macro; GSK980TDi help text, G65).
+        let depth = self.calls.frames.iter().filter(|f| f.start.is_some() && f.macro_call == macro_call).count();
+        if depth >= max as usize {
+            // FANUC 0 alarm 077 (FANUC 0i-TB/MB operator's manual 12.3: four levels).
+            let what = if macro_call { "macro call (G65)" } else { "subprogramme call" };
+            return Err(Diagnostic::new(
+                Rule::CallNesting,
+                profile.alarm_style,
+                span,
+                format!("O{number:04} would be the {}th nested {what}: {} allows {max} levels", max + 1, profile.name),
+            ));
+        }
+        if let Some(l) = locals {
+            self.vars.levels.push(l);
+        }
+        let start = self.calls.program(self.file, number);
+        self.calls.frames.push(Frame { number, start, back, remaining: count.max(1) - 1, call: span, macro_call });
+        match start {
+            Some(p) => {
+                self.seek(p);
+                Ok(false)
+            }
+            None => {
+                // Not read yet: the blocks that follow are read (not executed) until it is found,
+                // then the file from its top, then the driver's other files.
+                let scope = Place::start_of(self.file);
+                self.calls.search = Some(Search { target: Target::Program(number), from: back, scope, wrapped: false, once: false, asked_by: span, resume: Some(back) });
+                Ok(true)
+            }
+        }
+    }
+
+    /// A call has ended (its M99, a failed search): its local level and its loops go.
+    fn left(&mut self, frame: &Frame) {
+        if frame.macro_call && self.vars.levels.len() > 1 {
+            self.vars.levels.pop();
+        }
+        let depth = self.calls.depth();
+        self.calls.loops.retain(|l| l.depth <= depth);
+    }
+
+    /// G65 P_ L_ <arguments>: a macro call with a new level of local variables set from the
+    /// arguments (FANUC Series 16i operator's manual, custom macro; GSK980TDi help text, G65).
+    fn macro_call(&mut self, block: &Block, place: Place, _sink: &mut dyn FnMut(Event)) -> Result<bool, Diagnostic> {
+        let profile = self.interp.profile();
+        let style = profile.alarm_style;
+        let g65 = block.words.iter().position(|w| w.letter == b'G' && w.value == 65.0).expect("a G65 block");
+        let at = block.words[g65].span;
+        if block.words.iter().any(|w| w.letter == b'H') && profile.macros.macro_a {
+            return Err(Diagnostic::new(Rule::NotSupported, style, at, "G65 H (macro A: G65 Hm P#i Q#j R#k) is not simulated by ncsight yet".to_string()));
+        }
+        // GSK: G65 is followed directly by P (GSK980TDi help text, G65).
+        if profile.macros.p_first && block.words.get(g65 + 1).is_some_and(|w| w.letter != b'P') {
+            let w = block.words[g65 + 1];
+            return Err(Diagnostic::new(Rule::MacroFormat, style, w.span, format!("{}: on {} the programme number P comes right after G65", w.text(), profile.name)));
+        }
+        let mut number = None;
+        let mut count = 1u32;
+        let mut locals: macros::Locals = [None; 33];
+        // Argument specification I, and II's repeated I J K (the later wins: FANUC Series 16i).
+        let (mut i_seen, mut j_seen, mut k_seen) = (0usize, 0usize, 0usize);
+        let lii = self.interp.params().integer_lengths() == crate::profile::IntegerLengths::LeastIncrement;
+        let increment = if self.interp.state().inch { 1e-4 } else { 1e-3 };
+        for (k, w) in block.words.iter().enumerate() {
+            if k == g65 {
+                continue;
+            }
+            let slot = match w.letter {
+                b'P' => {
+                    if w.value < 0.0 || w.value.fract() != 0.0 || w.value > 9999.0 {
+                        return Err(Diagnostic::new(Rule::ValueOutOfRange, style, w.span, format!("{}: the macro's programme number is 1 to 9999", w.text())));
+                    }
+                    number = Some(w.value as u32);
+                    continue;
+                }
+                b'L' => {
+                    if w.value < 1.0 || w.value.fract() != 0.0 || w.value > 9999.0 {
+                        return Err(Diagnostic::new(Rule::ValueOutOfRange, style, w.span, format!("{}: the repeat count L is 1 to 9999", w.text())));
+                    }
+                    count = w.value as u32;
+                    continue;
+                }
+                // FANUC 0 alarm 129: G is not an argument.
+                b'G' => return Err(Diagnostic::new(Rule::ArgumentAddress, style, w.span, format!("{}: G cannot be a G65 argument", w.text()))),
+                b'N' | b'O' => return Err(Diagnostic::new(Rule::ArgumentAddress, style, w.span, format!("{}: {} is not a G65 argument", w.text(), w.letter as char))),
+                b'I' => {
+                    i_seen += 1;
+                    4 + 3 * (i_seen - 1)
+                }
+                b'J' => {
+                    j_seen += 1;
+                    5 + 3 * (j_seen - 1)
+                }
+                b'K' => {
+                    k_seen += 1;
+                    6 + 3 * (k_seen - 1)
+                }
+                // Specification I: A#1 B#2 C#3 D#7 E#8 F#9 H#11 M#13 Q#17 R#18 S#19 T#20 U#21
+                // V#22 W#23 X#24 Y#25 Z#26 (GSK980TDi help text, G65; FANUC Series 16i).
+                b'A' => 1,
+                b'B' => 2,
+                b'C' => 3,
+                b'D' => 7,
+                b'E' => 8,
+                b'F' => 9,
+                b'H' => 11,
+                b'M' => 13,
+                l @ b'Q'..=b'Z' => 17 + (l - b'Q') as usize,
+                _ => return Err(Diagnostic::new(Rule::ArgumentAddress, style, w.span, format!("{}: {} is not a G65 argument", w.text(), w.letter as char))),
+            };
+            if slot > 33 {
+                return Err(Diagnostic::new(Rule::ArgumentAddress, style, w.span, format!("{}: more than ten I J K sets", w.text())));
+            }
+            // A value written without a point is in least input increments where the profile
+            // reads lengths so (FANUC Series 16i: G65 P9 X10 gives #24 = 0.010); M S T pass as
+            // written (inferred).
+            let v = if !w.decimal && lii && !matches!(w.letter, b'M' | b'S' | b'T') { w.value * increment } else { w.value };
+            locals[slot - 1] = Some(v);
+        }
+        let Some(number) = number else {
+            return Err(Diagnostic::new(Rule::AddressPMissing, style, at, "G65: the macro to call is not given (P)".to_string()));
+        };
+        let next = Place { block: place.block.saturating_add(1), ..place };
+        let mut span = block.span;
+        span.file = self.file;
+        self.call(number, count, span, next, Some(locals))
+    }
+
     /// M98 or M99 after the block's records. Whether the rest of the line is interpreted.
     fn jump(&mut self, flow: Flow, place: Place, sink: &mut dyn FnMut(Event)) -> bool {
         let profile = self.interp.profile();
@@ -787,31 +1141,11 @@ impl Core {
         match flow {
             Flow::Call { number, count, mut span } => {
                 span.file = self.file;
-                let max = profile.calls.max_depth;
-                if self.calls.depth() >= max as usize {
-                    // FANUC 0 alarm 077 (FANUC 0i-TB/MB operator's manual 12.3: four levels).
-                    let d = Diagnostic::new(
-                        Rule::CallNesting,
-                        profile.alarm_style,
-                        span,
-                        format!("O{number:04} would be the {}th nested subprogramme call: {} allows {max} levels", max + 1, profile.name),
-                    );
-                    self.alarm(d, sink);
-                    return self.mode != Mode::Run;
-                }
-                let start = self.calls.program(self.file, number);
-                self.calls.frames.push(Frame { number, start, back: next, remaining: count - 1, call: span });
-                match start {
-                    Some(p) => {
-                        self.seek(p);
-                        false
-                    }
-                    None => {
-                        // Not read yet: the blocks that follow are read (not executed) until it is
-                        // found, then the file from its top, then the driver's other files.
-                        let scope = Place::start_of(self.file);
-                        self.calls.search = Some(Search { target: Target::Program(number), from: next, scope, wrapped: false, once: false, asked_by: span, resume: Some(next) });
-                        true
+                match self.call(number, count, span, next, None) {
+                    Ok(go_on) => go_on,
+                    Err(d) => {
+                        self.alarm(d, sink);
+                        self.mode != Mode::Run
                     }
                 }
             }
@@ -841,6 +1175,7 @@ impl Core {
                     return false;
                 }
                 let frame = self.calls.frames.pop().expect("a frame was just seen");
+                self.left(&frame);
                 match sequence {
                     None => self.seek(frame.back),
                     Some(n) => {
@@ -883,15 +1218,20 @@ impl Core {
                 }
                 Searched::Found
             }
-            Target::Sequence(_) if b.program.is_some() && place != s.scope => {
+            Target::Sequence(_) | Target::Goto(_) | Target::LoopEnd(_) if b.program.is_some() && place != s.scope => {
                 // The programme's text ends at the next programme's O.
                 self.search_ends(sink);
                 Searched::Stop
             }
-            Target::Sequence(n) if b.sequence == Some(n) => {
+            Target::Sequence(n) | Target::Goto(n) if b.sequence == Some(n) => {
                 self.calls.search = None;
                 self.calls.note_sequence(s.scope, n, place);
                 Searched::Found
+            }
+            // The END of a loop not run: the search ends past it.
+            Target::LoopEnd(label) if b.macro_block.as_ref().is_some_and(|m| m.stmt == Stmt::End { label }) => {
+                self.calls.search = None;
+                Searched::Passed
             }
             _ => Searched::Passed,
         }
@@ -926,21 +1266,33 @@ impl Core {
             ),
             Target::Program(n) => (format!("O{n:04}: the main programme named is not in the file"), "name a programme the file holds with --main"),
             Target::Sequence(n) => (format!("N{n}: M99 P returns to a block with this sequence number, and the calling programme has none"), "the N of M99 P must be in the calling programme"),
+            Target::Goto(n) => (format!("GOTO {n}: the programme has no block N{n}"), "the N of GOTO must be in the same programme"),
+            Target::LoopEnd(m) => (format!("WHILE [..] DO{m}: no END{m} follows in the programme"), "each WHILE [..] DOm ends with ENDm"),
         };
         if calling && self.call_options.skip_missing {
             let d = Diagnostic::new(Rule::CallSkipped, profile.alarm_style, s.asked_by, format!("{message}: the call is skipped (--skip-missing-subprograms)"));
             sink(Event::Diagnostic(d));
-            self.calls.frames.pop();
+            if let Some(f) = self.calls.frames.pop() {
+                self.left(&f);
+            }
             if let Some(p) = s.resume {
                 self.seek(p);
             }
             return;
         }
-        let d = Diagnostic::new(Rule::NumberNotFound, profile.alarm_style, s.asked_by, message).with_hint(hint);
+        // FANUC 0: 078 for a programme or M99's N, 128 for GOTO's, 124 for a missing END.
+        let rule = match s.target {
+            Target::Goto(_) => Rule::MacroSequence,
+            Target::LoopEnd(_) => Rule::MissingEnd,
+            _ => Rule::NumberNotFound,
+        };
+        let d = Diagnostic::new(rule, profile.alarm_style, s.asked_by, message).with_hint(hint);
         self.flush_pending(sink);
         self.alarm(d, sink);
         if calling {
-            self.calls.frames.pop();
+            if let Some(f) = self.calls.frames.pop() {
+                self.left(&f);
+            }
         }
         match s.resume {
             // A check goes on after the block that asked.
@@ -957,7 +1309,11 @@ impl Core {
     fn text_ends(&mut self, span: Span, sink: &mut dyn FnMut(Event)) -> bool {
         let profile = self.interp.profile();
         self.flush_pending(sink);
-        match self.calls.frames.pop() {
+        let popped = self.calls.frames.pop();
+        if let Some(f) = &popped {
+            self.left(f);
+        }
+        match popped {
             None => {
                 let d = Diagnostic::new(
                     Rule::NoProgramEnd,
@@ -986,6 +1342,10 @@ impl Core {
     fn pass_on(&mut self, sink: &mut dyn FnMut(Event)) {
         if !self.outcome.warnings.is_empty() {
             for w in self.outcome.warnings.drain(..) {
+                // Once per place: a block run again does not repeat its warnings.
+                if !self.reported.first(&w) && self.again {
+                    continue;
+                }
                 if w.rule == Rule::IntegerLength {
                     self.increment_warnings += 1;
                     if self.increment_warnings > INCREMENT_WARNINGS_SHOWN {
@@ -1009,11 +1369,34 @@ impl Core {
     }
 
     fn alarm(&mut self, d: Diagnostic, sink: &mut dyn FnMut(Event)) {
+        // A check gives an alarm of a block run again once (a run stops at its first anyway).
+        if !self.reported.first(&d) && self.again && self.mode == Mode::Check {
+            return;
+        }
         self.alarms += 1;
         if self.mode == Mode::Run {
             self.status = Status::Alarm;
         }
         sink(Event::Diagnostic(d));
+    }
+}
+
+/// Diagnostics already given, by place and code: a block run again (each run of a
+/// subprogramme, each turn of a loop) does not repeat them. Bounded: emptied when full.
+#[derive(Debug, Default)]
+struct Reported {
+    seen: std::collections::HashSet<(u16, u32, u32, &'static str)>,
+}
+
+impl Reported {
+    const MAX: usize = 100_000;
+
+    /// Whether `d` is new (and note it).
+    fn first(&mut self, d: &Diagnostic) -> bool {
+        if self.seen.len() >= Self::MAX {
+            self.seen.clear();
+        }
+        self.seen.insert((d.span.file, d.span.line, d.span.col, d.code))
     }
 }
 

@@ -6,6 +6,9 @@
 //! `[expr]` values. It knows nothing of a controller's G codes: that is the interpreter's job.
 
 pub mod expr;
+pub mod macro_block;
+
+pub use macro_block::{MacroBlock, MacroWord, Stmt, Then};
 
 use crate::alarm::{AlarmStyle, Diagnostic, Rule};
 use crate::source::Span;
@@ -21,6 +24,24 @@ pub const MAX_KEPT_LINE_BYTES: usize = 64 * 1024;
 /// Most significant digits a numeric value may have (FANUC PS0003 "TOO MANY DIGIT": the
 /// controls take 8 digits; one more is accepted for CAM output that pads a trailing digit).
 pub const MAX_DIGITS: usize = 9;
+
+/// Whether a line has a `#` outside its comments (a macro variable).
+fn has_variable(s: &[u8]) -> bool {
+    // One memchr first: most lines have no '#' at all.
+    if !s.contains(&b'#') {
+        return false;
+    }
+    let mut in_comment = false;
+    for &b in s {
+        match b {
+            b'(' => in_comment = true,
+            b')' => in_comment = false,
+            b'#' if !in_comment => return true,
+            _ => {}
+        }
+    }
+    false
+}
 
 /// One address with its value, e.g. `X-12.5` or `F[25.4/10]`.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -86,11 +107,14 @@ pub struct Block {
     pub words: Vec<Word>,
     /// Comment texts (without the parentheses), lossily decoded.
     pub comments: Vec<String>,
+    /// A custom macro block: a statement, or words whose values the variables give (then
+    /// `words` is empty until the programme evaluates them).
+    pub macro_block: Option<Box<MacroBlock>>,
 }
 
 impl Block {
     pub fn is_empty(&self) -> bool {
-        self.words.is_empty() && self.sequence.is_none() && self.program.is_none()
+        self.words.is_empty() && self.sequence.is_none() && self.program.is_none() && self.macro_block.is_none()
     }
 }
 
@@ -183,27 +207,6 @@ impl Reader {
         Diagnostic::new(rule, self.style, Span::new(line, col as u32 + 1, len.max(1) as u32), msg)
     }
 
-    /// A custom macro statement (`IF [..] GOTO n`, `WHILE [..] DO m`, `END m`, `GOTO n`, the
-    /// output statements) starting at `i`: the letters form a keyword, not an address and its
-    /// value. Until macros are simulated such a block gets one clear alarm instead of a
-    /// misleading one about its first letter.
-    fn macro_statement(&self, line_no: u32, s: &[u8], i: usize) -> Option<Diagnostic> {
-        const KEYWORDS: [&[u8]; 10] = [b"IF", b"WHILE", b"GOTO", b"END", b"DO", b"POPEN", b"PCLOS", b"DPRNT", b"BPRNT", b"SETVN"];
-        let run = s[i..].iter().take_while(|c| c.is_ascii_alphabetic()).count();
-        let word = &s[i..i + run];
-        let keyword = KEYWORDS.iter().find(|k| k.eq_ignore_ascii_case(word))?;
-        let end = s[i..].iter().position(|&c| c == b';' || c == b'(').map_or(s.len(), |k| i + k);
-        let text = String::from_utf8_lossy(&s[i..end]);
-        let d = self.diag(
-            Rule::NotSupported,
-            line_no,
-            i,
-            end - i,
-            format!("{}: custom macro statements ({}) are not simulated by ncsight yet", text.trim_end(), String::from_utf8_lossy(keyword)),
-        );
-        Some(d.with_hint("custom macro B (IF, WHILE, GOTO, # variables) is planned; until then the programme stops here"))
-    }
-
     /// Read one line (its line break may be included). `line_no` is 1-based.
     pub fn read_line(&self, line_no: u32, raw: &[u8]) -> Line {
         let mut out = Line::default();
@@ -275,6 +278,11 @@ impl Reader {
                     "text after the '%' tape mark is ignored",
                 ));
             }
+            return;
+        }
+        // A line with a variable: its blocks are macro blocks, evaluated when they run.
+        if has_variable(&s[i..]) {
+            self.read_macro_blocks(line_no, s, i, out);
             return;
         }
         let mut block = out.new_block();
@@ -349,11 +357,16 @@ impl Reader {
                     // A macro statement starts its block (after N); inside a block two letters
                     // side by side are a typing mistake (`DO1` for `D01`), answered as such.
                     // (A keyword is two letters or more: a plain word is rejected at once.)
-                    if block.words.is_empty() && s.get(i + 1).is_some_and(u8::is_ascii_alphabetic) {
-                        if let Some(d) = self.macro_statement(line_no, s, i) {
+                    if block.words.is_empty() && s.get(i + 1).is_some_and(u8::is_ascii_alphabetic) && macro_block::is_statement(&s[i..]) {
+                        let end = s[i..].iter().position(|&b| b == b';').map_or(s.len(), |k| i + k);
+                        let body_end = s[..end].iter().rposition(|b| !is_blank(*b)).map_or(i + 1, |k| (k + 1).max(i + 1));
+                        if let Err(d) = self.read_macro(line_no, s, i, body_end, &mut block) {
                             out.blocks.push(Err(d));
                             return;
                         }
+                        block_end = body_end;
+                        i = end;
+                        continue;
                     }
                     let word_start = i;
                     match self.word(line_no, s, i) {
@@ -401,8 +414,6 @@ impl Reader {
                             ),
                         )
                         .with_hint("a letter such as G was probably left out")
-                    } else if c == b'#' {
-                        self.diag(Rule::NotSupported, line_no, i, 1, "custom macro variables (#) are not simulated by ncsight yet")
                     } else if c.is_ascii_control() {
                         self.diag(
                             Rule::BadCharacter,
@@ -505,14 +516,6 @@ impl Reader {
                     ),
                 )),
             };
-        }
-        if i < s.len() && s[i] == b'#' {
-            return Err(Diagnostic::new(
-                Rule::NotSupported,
-                self.style,
-                span_to(i + 1),
-                format!("{}#: custom macro variables are not simulated by ncsight yet", letter as char),
-            ));
         }
         let num_start = i;
         let mut negative = false;

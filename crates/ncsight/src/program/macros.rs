@@ -1,0 +1,184 @@
+//! Custom macro B when a block runs: the variables (local levels, common, system), a macro
+//! block's words evaluated into an NC block, and the values of statements. The jumps (GOTO,
+//! WHILE/END, G65's call) are the programme's, through the block source.
+
+use crate::alarm::{AlarmStyle, Diagnostic, Rule};
+use crate::modal::{Modal, Motion};
+use crate::motion::Plane;
+use crate::profile::{GFn, Profile};
+use crate::read::expr::{self, Arena, ErrorKind, ExprError, Value};
+use crate::read::{MacroWord, Word};
+use crate::source::Span;
+
+/// Local variables #1-#33 of one level.
+pub(super) type Locals = [Value; 33];
+
+/// Common variables kept: #100-#199 and #500-#999 (the FANUC option's ranges, MACRO.md section
+/// 3: the large set avoids false alarms on real programmes; GSK988T manual, macro variables).
+const COMMON: [(i64, i64); 2] = [(100, 199), (500, 999)];
+
+/// The variables of a run.
+#[derive(Debug)]
+pub(super) struct Variables {
+    /// Level 0 is the main programme's; each G65 call adds one.
+    pub levels: Vec<Locals>,
+    common: Vec<Value>,
+    /// #3001 and #3002 may be set; the clocks then count from there.
+    clock_ms_offset: f64,
+    clock_h_offset: f64,
+}
+
+impl Default for Variables {
+    fn default() -> Variables {
+        Variables { levels: vec![[None; 33]], common: vec![None; 1000], clock_ms_offset: 0.0, clock_h_offset: 0.0 }
+    }
+}
+
+/// What a block reads the variables with: the modal state and the clock for system variables.
+pub(super) struct Reading<'a> {
+    pub vars: &'a Variables,
+    pub modal: &'a Modal,
+    pub profile: &'static Profile,
+    /// Seconds of machine time so far.
+    pub clock_s: f64,
+    /// The running programme's O number and the last sequence number read.
+    pub program: Option<u32>,
+    pub last_n: Option<u32>,
+}
+
+fn no_such(number: i64, why: &str) -> ExprError {
+    ExprError { at: 0, message: format!("#{number}: {why}"), kind: ErrorKind::Variable }
+}
+
+/// A G code's number as the profile's table names the function (`G01` -> 1, `G32.1` -> 32.1).
+fn code_of(profile: &Profile, f: GFn) -> Option<f64> {
+    profile.name_of(f).strip_prefix('G').and_then(|n| n.parse::<f64>().ok())
+}
+
+impl expr::Variables for Reading<'_> {
+    fn read(&mut self, number: i64) -> Result<Value, ExprError> {
+        let m = self.modal;
+        let axis = |i: usize| {
+            let v = m.pos.axis(i);
+            // A diameter X reads as a diameter (MACRO.md section 8, inferred).
+            Some(if i == 0 && self.profile.diameter_x { v * 2.0 } else { v })
+        };
+        Ok(match number {
+            0 => None,
+            1..=33 => self.vars.levels.last().map_or(None, |l| l[number as usize - 1]),
+            n if COMMON.iter().any(|(a, b)| (*a..=*b).contains(&n)) => self.vars.common[n as usize],
+            3000 => None,
+            3001 => Some((self.clock_s * 1000.0 - self.vars.clock_ms_offset).max(0.0).floor()),
+            3002 => Some(self.clock_s / 3600.0 - self.vars.clock_h_offset),
+            // Modal information (FANUC #4001-#4022, #4107-#4120).
+            4001 => match m.motion {
+                Motion::Rapid => code_of(self.profile, GFn::Rapid),
+                Motion::Linear => code_of(self.profile, GFn::Linear),
+                Motion::ArcCw => code_of(self.profile, GFn::ArcCw),
+                Motion::ArcCcw => code_of(self.profile, GFn::ArcCcw),
+                _ => return Err(no_such(number, "the group 01 code of a thread or box cycle is not given by ncsight yet")),
+            },
+            4002 => code_of(
+                self.profile,
+                match m.plane {
+                    Plane::XY => GFn::PlaneXY,
+                    Plane::ZX => GFn::PlaneZX,
+                    Plane::YZ => GFn::PlaneYZ,
+                },
+            ),
+            4003 => code_of(self.profile, if m.incremental { GFn::Incremental } else { GFn::Absolute }),
+            4006 => code_of(self.profile, if m.inch { GFn::Inch } else { GFn::Metric }),
+            4109 => m.feed,
+            4114 => self.last_n.map(f64::from),
+            4115 => self.program.map(f64::from),
+            4119 => Some(m.s_word),
+            4120 => Some(f64::from(m.tool)),
+            // Positions: the block end point, the machine and the current position. Without a
+            // setup (work and tool offsets) the three are the same (MACRO.md section 8).
+            5001..=5003 => axis((number - 5001) as usize),
+            5021..=5023 => axis((number - 5021) as usize),
+            5041..=5043 => axis((number - 5041) as usize),
+            _ => return Err(no_such(number, "no such variable on this control, or a system variable ncsight does not simulate yet")),
+        })
+    }
+}
+
+impl Variables {
+    /// Set variable `number`. #3000 is the caller's (a user alarm).
+    pub fn write(&mut self, number: i64, value: Value, clock_s: f64) -> Result<(), (Rule, String)> {
+        match number {
+            0 => Err((Rule::WriteProtected, "#0 is always vacant and cannot be set".into())),
+            1..=33 => {
+                if let Some(l) = self.levels.last_mut() {
+                    l[number as usize - 1] = value;
+                }
+                Ok(())
+            }
+            n if COMMON.iter().any(|(a, b)| (*a..=*b).contains(&n)) => {
+                self.common[n as usize] = value;
+                Ok(())
+            }
+            3001 => {
+                self.clock_ms_offset = clock_s * 1000.0 - value.unwrap_or(0.0);
+                Ok(())
+            }
+            3002 => {
+                self.clock_h_offset = clock_s / 3600.0 - value.unwrap_or(0.0);
+                Ok(())
+            }
+            4001..=4120 | 5001..=5100 => Err((Rule::WriteProtected, format!("#{number} is a system variable that can only be read"))),
+            n => Err((Rule::IllegalVariable, format!("#{n}: no such variable (locals #1-#33, common #100-#199 and #500-#999)"))),
+        }
+    }
+}
+
+/// The alarm an expression's failure is, with the controller's number.
+pub(super) fn expr_alarm(style: AlarmStyle, span: Span, e: &ExprError) -> Diagnostic {
+    let rule = match e.kind {
+        ErrorKind::Format => Rule::MacroFormat,
+        ErrorKind::DivideByZero => Rule::DivideByZero,
+        ErrorKind::Argument => Rule::MacroArgument,
+        ErrorKind::Overflow => Rule::MacroOverflow,
+        ErrorKind::Nesting => Rule::BracketNesting,
+        ErrorKind::Variable => Rule::IllegalVariable,
+    };
+    Diagnostic::new(rule, style, span, e.message.clone())
+}
+
+/// Letters whose value is a whole number (codes, numbers, counts): a value from a variable is
+/// rounded (`M#1` with 1.6 is M2: NCT manual, FANUC-compatible).
+fn whole_address(letter: u8) -> bool {
+    matches!(letter, b'M' | b'T' | b'H' | b'D' | b'L' | b'N' | b'O' | b'P' | b'S')
+}
+
+/// A word of an NC block in a macro, evaluated: `None` when it disappears (a bare vacant
+/// variable, MACRO.md section 4.2). A value from a variable has a decimal point and is rounded
+/// to the address's least increment (MACRO.md section 4.4).
+pub(super) fn evaluate_word(arena: &Arena, w: &MacroWord, reading: &mut Reading, inch: bool) -> Result<Option<Word>, ExprError> {
+    let v = expr::eval(arena, w.node, reading)?;
+    let Some(v) = v else {
+        if arena.bare_variable(w.node) {
+            return Ok(None);
+        }
+        return Ok(Some(Word { letter: w.letter, value: 0.0, decimal: true, expr: false, span: w.span }));
+    };
+    if !w.decimal || arena.constant(w.node) && !w.decimal {
+        // A constant as written: the interpreter reads it as any word.
+        return Ok(Some(Word { letter: w.letter, value: v, decimal: false, expr: false, span: w.span }));
+    }
+    let (value, decimal) = match w.letter {
+        b'G' => ((v * 10.0).round() / 10.0, (v * 10.0).round() % 10.0 != 0.0),
+        l if whole_address(l) && !arena.constant(w.node) => (v.round(), false),
+        b'F' => (v, true),
+        _ => {
+            let step = if inch { 1e4 } else { 1e3 };
+            ((v * step).round() / step, true)
+        }
+    };
+    Ok(Some(Word { letter: w.letter, value, decimal, expr: false, span: w.span }))
+}
+
+/// Whether a condition holds: a value other than 0 (vacant does not).
+pub(super) fn holds(v: Value) -> bool {
+    v.is_some_and(|x| x != 0.0)
+}
