@@ -1,0 +1,191 @@
+//! Custom macro B: variables, vacancy, expressions, IF/WHILE/GOTO, G65 and the system
+//! variables, each expected value worked out by hand in its comment (MACRO.md sections 3-9).
+
+use ncsight::motion::Op;
+use ncsight::profile::{self, Params};
+use ncsight::{events, Event, Mode, Program, Switches};
+
+fn run_mode(machine: &str, mode: Mode, text: &str) -> Vec<Event> {
+    let program = Program::new(Params::defaults(profile::by_name(machine).unwrap()), Switches::default(), mode);
+    events(program, text.as_bytes()).collect()
+}
+
+/// The end points of the moves, and the codes of the diagnostics, in order.
+fn trace(machine: &str, text: &str) -> Vec<String> {
+    run_mode(machine, Mode::Run, text)
+        .iter()
+        .filter_map(|e| match e {
+            Event::Record(r) => match &r.op {
+                Op::Rapid { to, .. } | Op::Feed { to, .. } => Some(format!("{}:{},{},{}", r.span.line, to.x, to.y, to.z)),
+                _ => None,
+            },
+            Event::Diagnostic(d) => Some(d.code.to_string()),
+        })
+        .collect()
+}
+
+fn t(v: &[&str]) -> Vec<String> {
+    v.iter().map(|s| s.to_string()).collect()
+}
+
+/// (The first move of these programmes, to X0 Y0 Z0 from there, has no length: no record.)
+/// A value from a variable has a decimal point: `#1=100; X#1` is 100 mm on FANUC, where `X100`
+/// is 0.1 mm (MACRO.md section 4.4). A vacant bare variable makes its word disappear: `Y#5`
+/// is not written, Y stays. Arithmetic on vacant gives 0: `Z[#5+2]` is Z2.
+#[test]
+fn values_from_variables_and_vacant_words() {
+    let text = "G21 G90 G00 X0. Y7. Z0.\n#1 = 100\nG00 X#1 Y#5 Z[#5+2]\nG00 X100\nM30\n";
+    // X100 without a point is 0.1 mm, with warning NCS-W02.
+    assert_eq!(trace("fanuc0m", text), t(&["1:0,7,0", "3:100,7,2", "NCS-W02", "4:0.1,7,2"]));
+    // -#1 with #1 vacant disappears too (inferred); X-#1 with #1 = 4 is X-4.
+    assert_eq!(trace("fanuc0m", "G90 G00 X1. Y1. Z1.\nX-#1 Y2.\n#1=4\nX-#1\nM30\n"), t(&["1:1,1,1", "2:1,2,1", "4:-4,2,1"]));
+    // A value is rounded to the least increment: 500.123678 -> X500.124.
+    assert_eq!(trace("fanuc0m", "G90 G00 X0 Y0 Z0\n#1=500.123678\nX#1\nM30\n"), t(&["3:500.124,0,0"]));
+}
+
+/// FIX toward zero, FUP away from zero, ROUND half away from zero, on negative values too
+/// (MACRO.md section 5): FIX[-1.7] = -1, FUP[-1.2] = -2, ROUND[-2.5] = -3, ROUND[2.4] = 2.
+#[test]
+fn rounding_functions_on_negative_values() {
+    let text = "G90 G00 X0 Y0 Z0\n#1 = FIX[-1.7]\n#2 = FUP[-1.2]\n#3 = ROUND[-2.5]\n#4 = ROUND[2.4]\nG00 X#1 Y#2 Z#3\nX#4\nM30\n";
+    assert_eq!(trace("fanuc0m", text), t(&["6:-1,-2,-3", "7:2,-2,-3"]));
+    // Every function once: SIN[30] = 0.5, COS[60] = 0.5, TAN[45] = 1, ASIN[1] = 90,
+    // ACOS[0] = 90, ATAN[1]/[1] = 45, SQRT[16] = 4, ABS[-3] = 3, LN[1] = 0, EXP[0] = 1,
+    // BCD[12] = 18 (0x12), BIN[18] = 12; the sum is 0.5+0.5+1+90+90+45+4+3+0+1+18+12 = 265.
+    let text = "G90 G00 X0 Y0 Z0\n#1 = SIN[30]+COS[60]+TAN[45]+ASIN[1]+ACOS[0]+ATAN[1]/[1]+SQRT[16]+ABS[-3]+LN[1]+EXP[0]+BCD[12]+BIN[18]\nX#1\nM30\n";
+    assert_eq!(trace("fanuc0m", text), t(&["3:265,0,0"]));
+}
+
+/// WHILE nests (DO1 holding DO2): the inner body runs 2 x 3 = 6 times, X counting 1..6.
+#[test]
+fn while_loops_nest() {
+    let text = "G90 G00 X0 Y0 Z0\n#1 = 0\n#3 = 0\nWHILE [#1 LT 2] DO1\n#2 = 0\nWHILE [#2 LT 3] DO2\n#3 = #3 + 1\nG00 X#3\n#2 = #2 + 1\nEND2\n#1 = #1 + 1\nEND1\nG00 Y9.\nM30\n";
+    let moves = trace("fanuc0m", text);
+    assert_eq!(moves, t(&["8:1,0,0", "8:2,0,0", "8:3,0,0", "8:4,0,0", "8:5,0,0", "8:6,0,0", "13:6,9,0"]));
+    // A WHILE whose condition does not hold at once: its body is passed over.
+    assert_eq!(trace("fanuc0m", "G90 G00 X0 Y0 Z0\nWHILE [1 EQ 2] DO1\nG00 X5.\nEND1\nG00 Y1.\nM30\n"), t(&["5:0,1,0"]));
+}
+
+/// GOTO with a computed target, forward and back; IF THEN; IF GOTO.
+#[test]
+fn computed_goto_and_if() {
+    // #1 = 2: GOTO [#1*10] goes to N20 (X2 is passed over); N20 counts #2 up to 3 through
+    // IF [..] GOTO 20 backwards, moving Y 1, 2, 3; then IF [..] THEN sets #3 = 7 -> Z7.
+    let text = "G90 G00 X0 Y0 Z0\n#1 = 2\n#2 = 0\nGOTO [#1*10]\nN10 G00 X2.\nN20 #2 = #2 + 1\nG00 Y#2\nIF [#2 LT 3] GOTO 20\nIF [#2 EQ 3] THEN #3 = 7\nG00 Z#3\nM30\n";
+    assert_eq!(trace("fanuc0m", text), t(&["7:0,1,0", "7:0,2,0", "7:0,3,0", "10:0,3,7"]));
+}
+
+/// G65 gives the macro a new level of locals set from its arguments; M98 shares the caller's
+/// (F16i manual; MACRO.md section 2). After G65 returns, the caller's #1 is as it was.
+#[test]
+fn g65_has_its_own_locals_and_m98_shares_them() {
+    // Main: #1 = 5. G65 P100 A7. -> in O0100 #1 = 7 -> X7, and it sets #1 = 99 (its own).
+    // Back in main, X#1 is X5. M98 P200: O0200 sees #1 = 5 -> Y5, sets #1 = 6 -> main X6.
+    let text = "O0001\nG90 G00 X0 Y0 Z0\n#1 = 5\nG65 P100 A7.\nG00 X#1\nM98 P200\nG00 X#1\nM30\nO0100\nG00 X#1\n#1 = 99\nM99\nO0200\nG00 Y#1\n#1 = 6\nM99\n";
+    assert_eq!(trace("fanuc0m", text), t(&["10:7,0,0", "5:5,0,0", "14:5,5,0", "7:6,5,0"]));
+}
+
+/// Arguments: specification I (A B C D ... Z) and II (repeated I J K: #4-#6, #7-#9, ...), the
+/// later wins when both name one variable; a value without a point is in least input
+/// increments on FANUC (X10 -> #24 = 0.010), in millimetres on the GSK980TDi.
+#[test]
+fn g65_arguments() {
+    // I1. J2. K3. I4. J5. K6.: #4=1 #5=2 #6=3 #7=4 #8=5 #9=6. D9. names #7 after: #7 = 9.
+    let text = "O0001\nG90 G00 X0 Y0 Z0\nG65 P100 I1. J2. K3. I4. J5. K6. D9. X10\nM30\nO0100\nG00 X[#4+#5+#6] Y[#7+#8+#9] Z[#24*1000]\nM99\n";
+    // X = 1+2+3 = 6; Y = 9+5+6 = 20; Z = 0.010 * 1000 = 10.
+    assert_eq!(trace("fanuc0m", text), t(&["6:6,20,10"]));
+    // GSK980TDi: P comes right after G65; X10 is 10 mm, so #24 = 10 and W-#24 goes back 10.
+    let gsk = "O0001\nG00 X20. Z0.\nG65 P100 X10 Z4.\nM30\nO0100\nG00 U#24 W#26\nM99\n";
+    let e = run_mode("gsk980tdi", Mode::Run, gsk);
+    let moves: Vec<(f64, f64)> = e.iter().filter_map(|e| match e { Event::Record(r) => match &r.op { Op::Rapid { to, .. } => Some((to.x * 2.0, to.z)), _ => None }, _ => None }).collect();
+    assert_eq!(moves, vec![(20.0, 0.0), (30.0, 4.0)]);
+    // L repeats the call: O0100 adds 1 to X three times.
+    let text = "O0001\nG90 G00 X0 Y0 Z0\nG65 P100 L3 A1.\nM30\nO0100\n#100 = #100 + #1\nG00 X#100\nM99\n";
+    assert_eq!(trace("fanuc0m", text), t(&["7:1,0,0", "7:2,0,0", "7:3,0,0"]));
+}
+
+/// Four G65 calls nest; the fifth is alarm 077, counted apart from M98's four.
+#[test]
+fn g65_nesting() {
+    let mut text = String::from("O9000\nG65 P1 A1.\nM30\n");
+    for k in 1..=5 {
+        text.push_str(&format!("O{k:04}\nG65 P{} A1.\nM99\n", k + 1));
+    }
+    text.push_str("O0006\nM99\n");
+    let e = trace("fanuc0m", &text);
+    assert_eq!(e.last().map(String::as_str), Some("PS0077"), "{e:?}");
+}
+
+/// #5001-#5003 after a move, and #5041 inside a canned cycle's programme: the position the
+/// tool is at (no offsets without a setup). After G81 at X10 Y10 with G98 from Z30, the tool is
+/// back at the initial level Z30.
+#[test]
+fn position_variables() {
+    let text = "G21 G17 G90 G00 X12.5 Y-3. Z30.\n#1 = #5001\n#2 = #5002\n#3 = #5003\nG00 X[#1+#2] Y#3\nG98 G81 X10. Y10. Z-5. R2. F100.\nG80\n#4 = #5041\n#5 = #5043\nG00 X[#4*2] Y#5\nM30\n";
+    let e = trace("fanuc0m", text);
+    // X = 12.5 - 3 = 9.5, Y = 30; after the hole: #4 = 10, #5 = 30 -> X20 Y30.
+    assert_eq!(e.first().map(String::as_str), Some("1:12.5,-3,30"));
+    assert_eq!(e[1], "5:9.5,30,30");
+    assert_eq!(e.last().map(String::as_str), Some("10:20,30,30"), "{e:?}");
+    // A lathe reads X as a diameter.
+    let lathe = "G00 X40. Z2.\n#1 = #5001\nG00 X[#1-10]\nM30\n";
+    let e = run_mode("gsk980tdi", Mode::Run, lathe);
+    let x: Vec<f64> = e.iter().filter_map(|e| match e { Event::Record(r) => match &r.op { Op::Rapid { to, .. } => Some(to.x * 2.0), _ => None }, _ => None }).collect();
+    assert_eq!(x, vec![40.0, 30.0]);
+}
+
+/// #3000 stops with the user's alarm 3000 + n and the comment's text; #3001 counts the run's
+/// milliseconds (10 mm at the rapid rate takes about 0.1 s, so it is between 50 and 500).
+#[test]
+fn user_alarm_and_clock() {
+    let e = run_mode("fanuc0m", Mode::Run, "#3000 = 7 (SPINDLE NOT READY)\nM30\n");
+    let Some(Event::Diagnostic(d)) = e.last() else { panic!() };
+    assert_eq!(d.code, "PS3000");
+    assert!(d.message.contains("3007") && d.message.contains("SPINDLE NOT READY"), "{}", d.message);
+    let text = "G90 G00 X0 Y0 Z0\nG00 X10.\n#1 = #3001\nG00 Y#1\nM30\n";
+    let y: Vec<f64> = run_mode("fanuc0m", Mode::Run, text).iter().filter_map(|e| match e { Event::Record(r) => r.op.end_point().map(|p| p.y), _ => None }).collect();
+    assert!(y.last().is_some_and(|y| *y > 50.0 && *y < 500.0), "{y:?}");
+}
+
+/// #4001-#4120: the modal codes as the profile names them, F, S, T.
+#[test]
+fn modal_information() {
+    let text = "G90 G17 G00 X0 Y0 Z0\nG01 X1. F250. S1200 M03\n#1 = #4001\n#2 = #4003\n#3 = #4109\nG00 X#1 Y#2 Z[#3/100]\nM30\n";
+    // G01 -> 1, G90 -> 90, F250 -> Z2.5.
+    assert_eq!(trace("fanuc0m", text).last().map(String::as_str), Some("6:1,90,2.5"));
+}
+
+/// A programme with macros and the same moves written out give the same records.
+#[test]
+fn macros_give_what_their_expansion_gives() {
+    for (n, step) in [(3, 2.5), (5, 1.25), (1, 10.0)] {
+        let text = format!(
+            "G21 G90 G00 X0 Y0 Z5.\n#1 = 0\nWHILE [#1 LT {n}] DO1\nG01 X[#1*{step}] Y[SIN[#1*30]*10] F300.\nG00 Z[5-#1]\n#1 = #1 + 1\nEND1\nM30\n"
+        );
+        let mut flat = String::from("G21 G90 G00 X0 Y0 Z5.\n");
+        for i in 0..n {
+            let y = ((i as f64 * 30.0).to_radians().sin() * 10.0 * 1000.0).round() / 1000.0;
+            flat.push_str(&format!("G01 X{:.3} Y{y:.3} F300.\nG00 Z{:.3}\n", i as f64 * step, 5.0 - i as f64));
+        }
+        flat.push_str("M30\n");
+        let records = |text: &str| -> Vec<String> {
+            run_mode("fanuc0m", Mode::Run, text)
+                .into_iter()
+                .map(|e| match e {
+                    Event::Record(r) => format!("{:?} {:.6}", r.op, r.t_s),
+                    Event::Diagnostic(d) => panic!("{d:?}"),
+                })
+                .collect()
+        };
+        assert_eq!(records(&text), records(&flat), "n = {n}");
+    }
+}
+
+/// A check goes on past a macro alarm and reports each once, even in a loop.
+#[test]
+fn a_check_reports_a_loop_alarm_once() {
+    let text = "#1 = 0\nWHILE [#1 LT 5] DO1\n#2 = 1 / 0\n#1 = #1 + 1\nEND1\nM30\n";
+    let e = run_mode("fanuc0m", Mode::Check, text);
+    let alarms: Vec<&str> = e.iter().filter_map(|e| match e { Event::Diagnostic(d) if d.is_alarm() => Some(d.code), _ => None }).collect();
+    assert_eq!(alarms, vec!["PS0112"]);
+}
