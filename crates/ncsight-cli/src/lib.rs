@@ -79,6 +79,9 @@ struct MachineArgs {
     /// most, before the run stops with NCS-E63.
     #[arg(long, value_name = "N")]
     max_blocks: Option<u64>,
+    /// A common macro variable as set at the machine before the run (repeatable): 500=1.5.
+    #[arg(long = "var", value_name = "N=V", allow_hyphen_values = true)]
+    vars: Vec<String>,
 }
 
 impl MachineArgs {
@@ -105,6 +108,20 @@ impl MachineArgs {
             max_repeated_blocks: self.max_blocks.unwrap_or(ncsight::program::MAX_REPEATED_BLOCKS),
         };
         Ok((options, feed::Library::new(self.subprogram_dirs.clone())))
+    }
+
+    /// The run's calls and variables as the arguments give them, set on `program`.
+    fn prepare(&self, program: &mut Program) -> Result<feed::Library, Failure> {
+        let (options, library) = self.calls()?;
+        program.set_call_options(options);
+        for v in &self.vars {
+            let parsed = v.split_once('=').and_then(|(n, x)| Some((n.trim().trim_start_matches('#').parse::<i64>().ok()?, x.trim().parse::<f64>().ok()?)));
+            let Some((n, x)) = parsed else {
+                return Err(usage(format!("--var {v}: expected N=V, e.g. 500=1.5")));
+            };
+            program.set_variable(n, x).map_err(|e| usage(format!("--var {v}: {e}")))?;
+        }
+        Ok(library)
     }
 
     fn decoding(&self) -> Result<diag::Decoding, Failure> {
@@ -462,8 +479,7 @@ fn run(
         }
     };
     let mut program = Program::with_operator(params, switches, Mode::Run, operator);
-    let (calls, mut library) = m.calls()?;
-    program.set_call_options(calls);
+    let mut library = m.prepare(&mut program)?;
     let carries = fmt.carries_diagnostics();
     let shown = if file == "-" { "<stdin>" } else { file };
     let mut err = Tolerant::new(err);
@@ -507,8 +523,7 @@ fn check(files: &[String], m: &MachineArgs, format: &str, out: &mut dyn Write, e
             Err(e) => return Err(e),
         };
         let mut program = Program::diagnostics_only(params.clone(), switches);
-        let (calls, mut library) = m.calls()?;
-        program.set_call_options(calls);
+        let mut library = m.prepare(&mut program)?;
         let (mut alarms, mut warnings) = (0usize, 0usize);
         let result = drive(file, input, &mut library, &mut program, &mut |e, text, name| {
             if let Event::Diagnostic(d) = e {
@@ -625,8 +640,7 @@ fn report(
     settings.push(format!("feed override {} %, rapid override {} %", opts.overrides.feed_pct, opts.overrides.rapid_pct));
     settings.push("assumptions: docs/guide.md and docs/commands/*.md".into());
     let mut program = Program::with_operator(params.clone(), switches, Mode::Run, opts);
-    let (calls, mut library) = m.calls()?;
-    program.set_call_options(calls);
+    let mut library = m.prepare(&mut program)?;
     let (mut records, mut diags) = (Vec::new(), Vec::new());
     // The page keeps at most REPORT_MAX_RECORDS motions and REPORT_MAX_DIAGNOSTICS
     // diagnostics; the run goes on to the end for the time and the alarm, and the page says so.
@@ -712,8 +726,7 @@ fn simulate(
     let input = open(file)?;
     let lathe = params.profile().is_lathe();
     let mut program = Program::new(params, switches, Mode::Run);
-    let (calls, mut library) = m.calls()?;
-    program.set_call_options(calls);
+    let mut library = m.prepare(&mut program)?;
     let shown = if file == "-" { "<stdin>" } else { file };
     let mut records = Vec::new();
     let mut too_many = false;

@@ -391,6 +391,15 @@ impl Program {
         }
     }
 
+    /// Set a common variable before the run, as the operator set it at the machine (#500-#999
+    /// keep their values through power off; #100-#199 too until a reset).
+    pub fn set_variable(&mut self, number: i64, value: f64) -> Result<(), String> {
+        if !value.is_finite() || !(100..=999).contains(&number) {
+            return Err(format!("#{number}={value}: only common variables #100-#199 and #500-#999 can be given, with a finite value"));
+        }
+        self.core.vars.write(number, Some(value), 0.0).map_err(|(_, msg)| msg)
+    }
+
     /// Where the run must read next, when it is not the next line: after a line, or at the end
     /// of a text ([`Program::end_of_text`]). The driver feeds the lines from there on.
     pub fn take_request(&mut self) -> Option<Request> {
