@@ -189,3 +189,20 @@ fn a_check_reports_a_loop_alarm_once() {
     let alarms: Vec<&str> = e.iter().filter_map(|e| match e { Event::Diagnostic(d) if d.is_alarm() => Some(d.code), _ => None }).collect();
     assert_eq!(alarms, vec!["PS0112"]);
 }
+
+/// G66 declares a modal call and calls nothing itself; each later block with a move calls the
+/// macro after its move (its own moves do not call it again); G67 ends it. Here O9200 drills:
+/// Z down to #26 and back up, after the rapids to X10 and X20 but not after G67's X30.
+#[test]
+fn g66_calls_after_each_move() {
+    let text = "O0001\nG90 G00 X0 Y0 Z5.\nG66 P9200 Z-2.\nG00 X10.\nX20.\nG67\nX30.\nM30\nO9200\nG01 Z#26 F100.\nG00 Z5.\nM99\n";
+    assert_eq!(
+        trace("fanuc0m", text),
+        t(&["2:0,0,5", "4:10,0,5", "10:10,0,-2", "11:10,0,5", "5:20,0,5", "10:20,0,-2", "11:20,0,5", "7:30,0,5"])
+    );
+    // GSK: a G65 cancels G66 (GSK980TDi help text, G66): after it, W-1 calls nothing.
+    let gsk = "O0001\nG00 X10. Z5.\nG66 P9200 A1.\nG00 W-1\nG65 P9300\nG00 W-1\nM30\nO9200\nG00 U#1\nM99\nO9300\nM99\n";
+    let e = run_mode("gsk980tdi", Mode::Run, gsk);
+    let lines: Vec<u32> = e.iter().filter_map(|e| match e { Event::Record(r) if matches!(r.op, Op::Rapid { .. }) => Some(r.span.line), _ => None }).collect();
+    assert_eq!(lines, vec![2, 4, 9, 6]);
+}

@@ -590,7 +590,7 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
         }
         // The programme runs G65 before a block reaches the interpreter: one that comes here is
         // inside a G70-G73 contour (GSK980TDi help text, G71 note 4: no calls there).
-        if g.function == GFn::MacroCall {
+        if matches!(g.function, GFn::MacroCall | GFn::ModalMacroCall | GFn::ModalMacroCancel) {
             return Err(step.alarm(Rule::ContourCommand, w.span, format!("{}: a macro call may not be used in the contour blocks ns to nf", w.text())));
         }
     }
@@ -662,7 +662,7 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
             GFn::Dwell | GFn::ReferenceReturn | GFn::LatheCoordinateSet | GFn::MillCoordinateSet | GFn::CompoundThread(_) | GFn::PeckCycle(_) | GFn::Rough(_) | GFn::Finish => {
                 codes.non_modal = Some((w.span, g.function))
             }
-            GFn::NotYet(_) | GFn::NotYetReference(_) | GFn::MacroCall => unreachable!("rejected above"),
+            GFn::NotYet(_) | GFn::NotYetReference(_) | GFn::MacroCall | GFn::ModalMacroCall | GFn::ModalMacroCancel => unreachable!("rejected above"),
         }
     }
     // Help text G84/88: no axis move between M29 and the G84/G88 block (a dwell's X is a time).

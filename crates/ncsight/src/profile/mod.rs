@@ -135,6 +135,10 @@ pub enum GFn {
     /// G65: a custom macro call, run by the programme (not the interpreter) with a new level of
     /// local variables.
     MacroCall,
+    /// G66: the macro is called after each later block with a move, until G67 (run by the
+    /// programme, as G65).
+    ModalMacroCall,
+    ModalMacroCancel,
     /// A reference-point code (G27, G29, G30) known to the controller, not yet simulated: an
     /// alarm that says so, after the rules that every reference-point code follows (FANUC 0044).
     NotYetReference(&'static str),
@@ -298,6 +302,8 @@ pub struct MacroRules {
     /// `G65 H..` is the controller's macro A (GSK980TDi), not simulated yet; elsewhere H is an
     /// argument (#11).
     pub macro_a: bool,
+    /// A G65 cancels a G66 modal call (GSK980TDi help text, G66; FANUC: not, inferred).
+    pub g65_cancels_g66: bool,
     pub source: &'static str,
 }
 
@@ -306,6 +312,7 @@ impl MacroRules {
         max_brackets: 5,
         p_first: false,
         macro_a: false,
+        g65_cancels_g66: false,
         source: "FANUC Series 16/18 operator's manual for lathe (brackets: five levels, alarm 118); FANUC Series 16i (G65 arguments)",
     };
 }

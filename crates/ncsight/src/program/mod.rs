@@ -117,6 +117,18 @@ struct Core {
     evaluated: Block,
     clock_s: f64,
     last_n: Option<u32>,
+    /// G66 in force: the macro called after each block with a move.
+    modal_call: Option<ModalCall>,
+}
+
+/// A G66 modal call: the macro, its count and arguments, the call depth it was given at.
+#[derive(Debug, Clone, Copy)]
+struct ModalCall {
+    number: u32,
+    count: u32,
+    locals: macros::Locals,
+    depth: usize,
+    span: Span,
 }
 
 /// One line read, not yet interpreted: the reader's blocks and the look for another control's
@@ -364,6 +376,7 @@ impl Program {
                 evaluated: Block::default(),
                 clock_s: 0.0,
                 last_n: None,
+                modal_call: None,
             },
         }
     }
@@ -949,12 +962,67 @@ impl Core {
 
     /// Run an NC block (read, or evaluated from a macro block).
     fn execute(&mut self, block: &Block, place: Place, sink: &mut dyn FnMut(Event)) -> bool {
-        if block.words.iter().any(|w| w.letter == b'G' && w.value == 65.0) && self.interp.profile().g_code(65, None).is_some_and(|g| g.function == crate::profile::GFn::MacroCall) {
-            return match self.macro_call(block, place, sink) {
-                Ok(go_on) => go_on,
-                Err(d) => self.fail(d, sink),
-            };
+        use crate::profile::GFn;
+        let profile = self.interp.profile();
+        // G65, G66, G67: run here, not by the interpreter.
+        let macro_code = block.words.iter().enumerate().find_map(|(k, w)| {
+            let code = (w.letter == b'G' && w.value.fract() == 0.0 && (65.0..=67.0).contains(&w.value)).then_some(w.value as u32)?;
+            let f = profile.g_code(code, None)?.function;
+            matches!(f, GFn::MacroCall | GFn::ModalMacroCall | GFn::ModalMacroCancel).then_some((k, f))
+        });
+        match macro_code {
+            Some((k, GFn::MacroCall)) => {
+                if profile.macros.g65_cancels_g66 {
+                    self.modal_call = None;
+                }
+                let next = Place { block: place.block.saturating_add(1), ..place };
+                let result = self.macro_arguments(block, k).and_then(|(number, count, locals)| {
+                    let mut span = block.span;
+                    span.file = self.file;
+                    self.call(number, count, span, next, Some(locals))
+                });
+                return result.unwrap_or_else(|d| self.fail(d, sink));
+            }
+            Some((k, GFn::ModalMacroCall)) => {
+                // G66 declares the call; the blocks with a move that follow make it (GSK980TDi help
+                // text, G66; FANUC Series 16i).
+                return match self.macro_arguments(block, k) {
+                    Ok((number, count, locals)) => {
+                        let mut span = block.span;
+                        span.file = self.file;
+                        self.modal_call = Some(ModalCall { number, count, locals, depth: self.calls.depth(), span });
+                        true
+                    }
+                    Err(d) => self.fail(d, sink),
+                };
+            }
+            Some((k, _)) => {
+                // G67: the modal call ends; the block's other words run as a block of their own.
+                self.modal_call = None;
+                if block.words.len() == 1 {
+                    return true;
+                }
+                let mut rest = block.clone();
+                rest.words.remove(k);
+                return self.execute(&rest, place, sink);
+            }
+            None => {}
         }
+        let modal_call = self.modal_call.filter(|m| m.depth == self.calls.depth() && block.words.iter().any(|w| matches!(w.letter, b'X' | b'Y' | b'Z' | b'U' | b'V' | b'W')));
+        let go_on = self.execute_nc(block, place, sink);
+        match modal_call {
+            // After a block with a move, the G66 macro is called (its moves do not call it again:
+            // it runs a level deeper).
+            Some(m) if go_on && self.calls.request.is_none() && self.calls.search.is_none() && self.status == Status::Running => {
+                let next = Place { block: place.block.saturating_add(1), ..place };
+                self.call(m.number, m.count, m.span, next, Some(m.locals)).unwrap_or_else(|d| self.fail(d, sink))
+            }
+            _ => go_on,
+        }
+    }
+
+    /// An NC block through the interpreter, then its M98/M99.
+    fn execute_nc(&mut self, block: &Block, place: Place, sink: &mut dyn FnMut(Event)) -> bool {
         self.block_n = block.sequence;
         match self.interp.execute_into(block, &mut self.outcome) {
             Ok(()) => {
@@ -1056,20 +1124,21 @@ impl Core {
         self.calls.loops.retain(|l| l.depth <= depth);
     }
 
-    /// G65 P_ L_ <arguments>: a macro call with a new level of local variables set from the
-    /// arguments (FANUC Series 16i operator's manual, custom macro; GSK980TDi help text, G65).
-    fn macro_call(&mut self, block: &Block, place: Place, _sink: &mut dyn FnMut(Event)) -> Result<bool, Diagnostic> {
+    /// The programme, count and locals of `G65 P_ L_ <arguments>` (or G66): a new level of
+    /// local variables set from the arguments (FANUC Series 16i operator's manual, custom macro;
+    /// GSK980TDi help text, G65).
+    fn macro_arguments(&self, block: &Block, g65: usize) -> Result<(u32, u32, macros::Locals), Diagnostic> {
         let profile = self.interp.profile();
         let style = profile.alarm_style;
-        let g65 = block.words.iter().position(|w| w.letter == b'G' && w.value == 65.0).expect("a G65 block");
         let at = block.words[g65].span;
+        let code = block.words[g65].text();
         if block.words.iter().any(|w| w.letter == b'H') && profile.macros.macro_a {
-            return Err(Diagnostic::new(Rule::NotSupported, style, at, "G65 H (macro A: G65 Hm P#i Q#j R#k) is not simulated by ncsight yet".to_string()));
+            return Err(Diagnostic::new(Rule::NotSupported, style, at, format!("{code} H (macro A: G65 Hm P#i Q#j R#k) is not simulated by ncsight yet")));
         }
         // GSK: G65 is followed directly by P (GSK980TDi help text, G65).
         if profile.macros.p_first && block.words.get(g65 + 1).is_some_and(|w| w.letter != b'P') {
             let w = block.words[g65 + 1];
-            return Err(Diagnostic::new(Rule::MacroFormat, style, w.span, format!("{}: on {} the programme number P comes right after G65", w.text(), profile.name)));
+            return Err(Diagnostic::new(Rule::MacroFormat, style, w.span, format!("{}: on {} the programme number P comes right after {code}", w.text(), profile.name)));
         }
         let mut number = None;
         let mut count = 1u32;
@@ -1098,8 +1167,8 @@ impl Core {
                     continue;
                 }
                 // FANUC 0 alarm 129: G is not an argument.
-                b'G' => return Err(Diagnostic::new(Rule::ArgumentAddress, style, w.span, format!("{}: G cannot be a G65 argument", w.text()))),
-                b'N' | b'O' => return Err(Diagnostic::new(Rule::ArgumentAddress, style, w.span, format!("{}: {} is not a G65 argument", w.text(), w.letter as char))),
+                b'G' => return Err(Diagnostic::new(Rule::ArgumentAddress, style, w.span, format!("{}: G cannot be a {code} argument", w.text()))),
+                b'N' | b'O' => return Err(Diagnostic::new(Rule::ArgumentAddress, style, w.span, format!("{}: {} is not a {code} argument", w.text(), w.letter as char))),
                 b'I' => {
                     i_seen += 1;
                     4 + 3 * (i_seen - 1)
@@ -1123,7 +1192,7 @@ impl Core {
                 b'H' => 11,
                 b'M' => 13,
                 l @ b'Q'..=b'Z' => 17 + (l - b'Q') as usize,
-                _ => return Err(Diagnostic::new(Rule::ArgumentAddress, style, w.span, format!("{}: {} is not a G65 argument", w.text(), w.letter as char))),
+                _ => return Err(Diagnostic::new(Rule::ArgumentAddress, style, w.span, format!("{}: {} is not a {code} argument", w.text(), w.letter as char))),
             };
             if slot > 33 {
                 return Err(Diagnostic::new(Rule::ArgumentAddress, style, w.span, format!("{}: more than ten I J K sets", w.text())));
@@ -1135,12 +1204,9 @@ impl Core {
             locals[slot - 1] = Some(v);
         }
         let Some(number) = number else {
-            return Err(Diagnostic::new(Rule::AddressPMissing, style, at, "G65: the macro to call is not given (P)".to_string()));
+            return Err(Diagnostic::new(Rule::AddressPMissing, style, at, format!("{code}: the macro to call is not given (P)")));
         };
-        let next = Place { block: place.block.saturating_add(1), ..place };
-        let mut span = block.span;
-        span.file = self.file;
-        self.call(number, count, span, next, Some(locals))
+        Ok((number, count, locals))
     }
 
     /// M98 or M99 after the block's records. Whether the rest of the line is interpreted.
