@@ -254,3 +254,27 @@ fn calls_give_what_their_expansion_gives() {
         }
     }
 }
+
+/// Found by review: a call forward to a subprogramme after M30 does not make the rest of the
+/// main programme count as run again (its line warnings still come, the runaway guard does not
+/// count it); a second programme in a library file already opened is found; a backward jump in
+/// a text that ends with a DOS end-of-file mark goes back.
+#[test]
+fn review_fixes() {
+    let text = "O0001\nG90 G00 X0. Y0. Z1.\nM98 P0100\nG00 X1. (unclosed\nM30\nO0100\nM99\n";
+    let e = run("fanuc0m", text);
+    assert!(trace(&e).contains(&"4:NCS-W03".to_string()), "{:?}", trace(&e));
+    let mut main = String::from("O0001\nG90 G00 X0. Y0. Z1.\nM98 P0100\n");
+    for i in 0..50 {
+        main.push_str(&format!("G00 X{i}.\n"));
+    }
+    main.push_str("M30\nO0100\nM99\n");
+    let options = CallOptions { max_repeated_blocks: 10, ..CallOptions::default() };
+    let e = run_with("fanuc0m", Mode::Run, options, &main, &[]);
+    assert!(e.iter().all(|e| !matches!(e, Event::Diagnostic(d) if d.is_alarm())), "{:?}", trace(&e));
+    let lib = [("subs.nc", "O0100\nG91 G00 X1.\nG90 M99\nO0200\nG91 G00 Y1.\nG90 M99\n")];
+    let e = run_with("fanuc0m", Mode::Run, CallOptions::default(), "G90 G00 X0. Y0. Z1.\nM98 P0100\nM98 P0200\nM30\n", &lib);
+    assert_eq!(trace(&e), t(&["1:rapid:0,0,1@0", "2:rapid:1,0,1@1", "5:rapid:1,1,1@1", "4:end@0"]));
+    let e = run("fanuc0m", "G90 G00 X0. Y0. Z1.\n#1 = 0\nN10 #1 = #1 + 1\nG00 X#1\nIF [#1 LT 3] GOTO 10\nM30\n\x1A");
+    assert_eq!(trace(&e).iter().filter(|s| s.contains("rapid")).count(), 4, "{:?}", trace(&e));
+}

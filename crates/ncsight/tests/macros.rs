@@ -206,3 +206,34 @@ fn g66_calls_after_each_move() {
     let lines: Vec<u32> = e.iter().filter_map(|e| match e { Event::Record(r) if matches!(r.op, Op::Rapid { .. }) => Some(r.span.line), _ => None }).collect();
     assert_eq!(lines, vec![2, 4, 9, 6]);
 }
+
+/// Found by review: a G65 argument from a variable passes as it is (D#1 with #1 = 2.5 is #7 =
+/// 2.5, not rounded nor scaled); H and F without a point are not scaled (H5 is #11 = 5);
+/// ROUND in an address rounds to the least increment (X[ROUND[#1]+ROUND[#2]] = X3.581);
+/// a GOTO out of a WHILE does not leave the loop in the way of an outer END.
+#[test]
+fn review_fixes() {
+    let text = "O0001\nG90 G00 X0 Y0 Z0\n#1 = 2.5\nG65 P100 D#1 H5 F150\nM30\nO0100\nG00 X#7 Y#11 Z#9\nM99\n";
+    assert_eq!(trace("fanuc0m", text).last().map(String::as_str), Some("7:2.5,5,150"));
+    let text = "G90 G00 X0 Y0 Z0\n#1 = 1.2345\n#2 = 2.3456\nG00 X[ROUND[#1]+ROUND[#2]]\n#3 = ROUND[#1]+ROUND[#2]\nY#3\nM30\n";
+    assert_eq!(trace("fanuc0m", text), t(&["4:3.581,0,0", "6:3.581,3,0"]));
+    let text = "G90 G00 X0 Y0 Z0\n#1 = 0\nWHILE [#1 LT 3] DO1\n#1 = #1 + 1\nWHILE [1 EQ 1] DO2\nGOTO 10\nEND2\nN10 G00 X#1\nEND1\nM30\n";
+    assert_eq!(trace("fanuc0m", text), t(&["8:1,0,0", "8:2,0,0", "8:3,0,0"]));
+}
+
+/// Found by review: a G65 block with block delete on is passed over; on the GSK980TDi `G65 P H`
+/// is macro B with H an argument (#11), only `G65 H..` is macro A.
+#[test]
+fn review_fixes_block_delete_and_macro_a() {
+    let program = |switches: Switches| {
+        let p = Program::new(Params::defaults(profile::by_name("fanuc0m").unwrap()), switches, Mode::Run);
+        events(p, b"O0001\nG90 G00 X0 Y0 Z0\n/G65 P100 A1.\nM30\nO0100\nG00 X#1\nM99\n".as_slice()).filter(|e| matches!(e, Event::Record(r) if matches!(r.op, Op::Rapid { .. }))).count()
+    };
+    assert_eq!(program(Switches { block_delete: true, ..Switches::default() }), 0);
+    assert_eq!(program(Switches::default()), 1);
+    let gsk = "O0001\nG00 X0 Z0\nG65 P100 H3.\nM30\nO0100\nG00 W#11\nM99\n";
+    let e = run_mode("gsk980tdi", Mode::Run, gsk);
+    assert!(e.iter().all(|e| !matches!(e, Event::Diagnostic(d) if d.is_alarm())), "{e:?}");
+    let e = run_mode("gsk980tdi", Mode::Run, "G65 H01 P#100 Q5\nM30\n");
+    assert!(matches!(e.last(), Some(Event::Diagnostic(d)) if d.code == "NCS-E38"));
+}

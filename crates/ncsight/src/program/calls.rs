@@ -40,6 +40,8 @@ pub enum Request {
 /// At most this many programmes' places are kept (far more than any controller's memory holds);
 /// past it a programme is found by reading again.
 const MAX_PROGRAMS_INDEXED: usize = 100_000;
+/// Executed stretches of a file kept apart, at most (then merged into one).
+const MAX_READ_INTERVALS: usize = 4096;
 /// Sequence numbers found by searches, kept to find them at once the next time; the table is
 /// emptied when full, so memory stays bounded whatever a programme jumps to.
 const MAX_SEQUENCES_INDEXED: usize = 65_536;
@@ -120,8 +122,8 @@ pub(super) struct Calls {
     pub request: Option<Request>,
     /// Files the driver opened, by number (file 0 is the one the run began with).
     pub files: Vec<String>,
-    /// How far each file has been read (byte offset): a block executed before it runs again.
-    read_to: Vec<u64>,
+    /// The stretches of each file executed so far: a block in one runs again.
+    read: Vec<Vec<(u64, u64)>>,
     /// Blocks executed again after a jump back (the runaway guard counts these).
     pub repeated_blocks: u64,
 }
@@ -167,21 +169,72 @@ impl Calls {
 
     /// Whether a line of `file` at `offset` has been executed before (a jump came back).
     pub fn was_read(&self, file: u16, offset: u64) -> bool {
-        self.read_to.get(file as usize).is_some_and(|r| offset < *r)
+        let Some(v) = self.read.get(file as usize) else { return false };
+        let k = v.partition_point(|(a, _)| *a <= offset);
+        k > 0 && offset < v[k - 1].1
     }
 
-    /// Blocks of `file` up to byte `end` have been executed.
-    pub fn mark_read(&mut self, file: u16, end: u64) {
+    /// The line of `file` from `start` to `end` has been executed: the executed stretches of
+    /// each file are kept as sorted, merged intervals (a call forward to a subprogramme after
+    /// M30 does not mark the rest of the main programme as run). Bounded: past
+    /// [`MAX_READ_INTERVALS`] stretches they are merged into one (over-counting the guard a
+    /// little, never missing a loop).
+    pub fn mark_read(&mut self, file: u16, start: u64, end: u64) {
         let i = file as usize;
-        if self.read_to.len() <= i {
-            self.read_to.resize(i + 1, 0);
+        if self.read.len() <= i {
+            self.read.resize_with(i + 1, Vec::new);
         }
-        self.read_to[i] = self.read_to[i].max(end);
+        let v = &mut self.read[i];
+        // The common case: the next line after the last stretch.
+        if let Some(last) = v.last_mut() {
+            if last.0 <= start && start <= last.1 {
+                last.1 = last.1.max(end);
+                return;
+            }
+        }
+        let k = v.partition_point(|(a, _)| *a <= start);
+        if k > 0 && start <= v[k - 1].1 {
+            v[k - 1].1 = v[k - 1].1.max(end);
+        } else {
+            v.insert(k, (start, end));
+        }
+        // Merge what the grown stretch now reaches.
+        let j = if k > 0 && v[k - 1].0 <= start { k - 1 } else { k };
+        while j + 1 < v.len() && v[j + 1].0 <= v[j].1 {
+            v[j].1 = v[j].1.max(v[j + 1].1);
+            v.remove(j + 1);
+        }
+        if v.len() > MAX_READ_INTERVALS {
+            let whole = (v[0].0, v[v.len() - 1].1);
+            v.clear();
+            v.push(whole);
+        }
     }
 
     /// The call chain of a block at the current depth, outermost first.
     pub fn chain(&self) -> Vec<Span> {
         // A call whose programme is still being looked for has not begun.
         self.frames.iter().filter(|f| f.start.is_some()).map(|f| f.call).collect()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn executed_stretches_merge() {
+        let mut c = Calls::default();
+        c.mark_read(0, 0, 10);
+        c.mark_read(0, 10, 20);
+        c.mark_read(0, 100, 120);
+        assert!(c.was_read(0, 5) && c.was_read(0, 19) && !c.was_read(0, 20) && !c.was_read(0, 50) && c.was_read(0, 110));
+        // A stretch between the two joins them.
+        c.mark_read(0, 20, 100);
+        assert_eq!(c.read[0], vec![(0, 120)]);
+        c.mark_read(0, 200, 210);
+        c.mark_read(0, 150, 160);
+        assert_eq!(c.read[0], vec![(0, 120), (150, 160), (200, 210)]);
+        assert!(!c.was_read(1, 0) && !c.was_read(0, 170));
     }
 }

@@ -154,26 +154,31 @@ fn whole_address(letter: u8) -> bool {
 /// A word of an NC block in a macro, evaluated: `None` when it disappears (a bare vacant
 /// variable, MACRO.md section 4.2). A value from a variable has a decimal point and is rounded
 /// to the address's least increment (MACRO.md section 4.4).
-pub(super) fn evaluate_word(arena: &Arena, w: &MacroWord, reading: &mut Reading, inch: bool) -> Result<Option<Word>, ExprError> {
-    let v = expr::eval(arena, w.node, reading)?;
+///
+/// `arguments`: the block is a G65/G66 call, whose words are the macro's arguments: a value
+/// from a variable passes as it is (no rounding to a whole number, no scaling).
+pub(super) fn evaluate_word(arena: &Arena, w: &MacroWord, reading: &mut Reading, inch: bool, arguments: bool) -> Result<Option<Word>, ExprError> {
+    let increment = if inch { 1e-4 } else { 1e-3 };
+    let length = !matches!(w.letter, b'G' | b'F') && !whole_address(w.letter);
+    let v = expr::eval_rounding(arena, w.node, reading, if length && !arguments { increment } else { 1.0 })?;
     let Some(v) = v else {
         if arena.bare_variable(w.node) {
             return Ok(None);
         }
         return Ok(Some(Word { letter: w.letter, value: 0.0, decimal: true, expr: false, span: w.span }));
     };
-    if !w.decimal || arena.constant(w.node) && !w.decimal {
+    if !w.decimal {
         // A constant as written: the interpreter reads it as any word.
         return Ok(Some(Word { letter: w.letter, value: v, decimal: false, expr: false, span: w.span }));
+    }
+    if arguments && w.letter != b'G' {
+        return Ok(Some(Word { letter: w.letter, value: v, decimal: true, expr: false, span: w.span }));
     }
     let (value, decimal) = match w.letter {
         b'G' => ((v * 10.0).round() / 10.0, (v * 10.0).round() % 10.0 != 0.0),
         l if whole_address(l) && !arena.constant(w.node) => (v.round(), false),
         b'F' => (v, true),
-        _ => {
-            let step = if inch { 1e4 } else { 1e3 };
-            ((v * step).round() / step, true)
-        }
+        _ => ((v / increment).round() * increment, true),
     };
     Ok(Some(Word { letter: w.letter, value, decimal, expr: false, span: w.span }))
 }

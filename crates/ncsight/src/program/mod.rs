@@ -452,7 +452,7 @@ impl Program {
     /// top, a called programme in another file): then the request is returned and the driver
     /// feeds from there. Otherwise the run is finished ([`Program::finish`]).
     pub fn end_of_text(&mut self, sink: &mut dyn FnMut(Event)) -> Option<Request> {
-        let stopped = self.core.status == Status::Alarm || self.machine.is_reset() || self.core.eof && self.core.calls.search.is_none();
+        let stopped = self.core.status == Status::Alarm || self.machine.is_reset();
         if !stopped {
             let Program { core, machine, .. } = self;
             let (chain, file, depth) = (core.calls.chain(), core.file, core.calls.depth());
@@ -796,6 +796,8 @@ impl Core {
             evaluated.words.clear();
             evaluated.comments.clone_from(&block.comments);
             let inch = self.interp.state().inch;
+            // A G65/G66 block's words are arguments: values pass as they are.
+            let arguments = words.iter().any(|w| w.letter == b'G' && matches!(m.arena.nodes.get(w.node as usize), Some(crate::read::expr::Node::Num(v)) if *v == 65.0 || *v == 66.0));
             let mut failed = None;
             if let Err(d) = self.check_brackets(&m.arena, block.span) {
                 failed = Some(d);
@@ -805,7 +807,7 @@ impl Core {
                     break;
                 }
                 let mut reading = self.reading();
-                match macros::evaluate_word(&m.arena, w, &mut reading, inch) {
+                match macros::evaluate_word(&m.arena, w, &mut reading, inch, arguments) {
                     Ok(Some(word)) => evaluated.words.push(word),
                     Ok(None) => {}
                     Err(e) => failed = Some(macros::expr_alarm(self.interp.profile().alarm_style, w.span, &e)),
@@ -884,7 +886,12 @@ impl Core {
                         return Err(Diagnostic::new(Rule::LoopNumber, profile.alarm_style, block.span, format!("DO{label}: the loop number is 1, 2 or 3")));
                     }
                     let depth = self.calls.depth();
-                    let top_here = self.calls.loops.last().is_some_and(|l| l.place == place);
+                    // This WHILE's loop, if it is running: loops above it were left by a GOTO.
+                    let own = self.calls.loops.iter().rposition(|l| l.place == place && l.depth == depth);
+                    if let Some(k) = own {
+                        self.calls.loops.truncate(k + 1);
+                    }
+                    let top_here = own.is_some();
                     if macros::holds(self.value(arena, *cond, block.span)?) {
                         if !top_here {
                             if self.calls.loops.iter().filter(|l| l.depth == depth).count() >= 3 {
@@ -904,9 +911,11 @@ impl Core {
                 }
                 Stmt::End { label } => {
                     let depth = self.calls.depth();
-                    match self.calls.loops.last() {
-                        Some(l) if l.label == *label && l.depth == depth => {
-                            let back = l.place;
+                    // The nearest running loop of this number; loops above it were left by a GOTO.
+                    match self.calls.loops.iter().rposition(|l| l.label == *label && l.depth == depth) {
+                        Some(k) => {
+                            self.calls.loops.truncate(k + 1);
+                            let back = self.calls.loops[k].place;
                             self.seek(back);
                             Ok(false)
                         }
@@ -964,6 +973,9 @@ impl Core {
     fn execute(&mut self, block: &Block, place: Place, sink: &mut dyn FnMut(Event)) -> bool {
         use crate::profile::GFn;
         let profile = self.interp.profile();
+        if block.block_delete && self.interp.switches().block_delete {
+            return true;
+        }
         // G65, G66, G67: run here, not by the interpreter.
         let macro_code = block.words.iter().enumerate().find_map(|(k, w)| {
             let code = (w.letter == b'G' && w.value.fract() == 0.0 && (65.0..=67.0).contains(&w.value)).then_some(w.value as u32)?;
@@ -1063,12 +1075,16 @@ impl Core {
         self.again = self.calls.was_read(self.file, self.line_offset);
         // A line read by a search is not executed: it counts as read when run.
         if self.calls.search.is_none() {
-            self.calls.mark_read(self.file, self.next_offset);
+            self.calls.mark_read(self.file, self.line_offset, self.next_offset);
         }
     }
 
     /// Ask the driver to go on from `to`.
     fn seek(&mut self, to: Place) {
+        // A text that ended (a DOS end-of-file mark) is read again from the place.
+        if self.status != Status::Alarm {
+            self.eof = false;
+        }
         self.calls.request = Some(crate::program::Request::Seek(to));
         self.file = to.file;
         self.next_offset = to.offset;
@@ -1132,7 +1148,7 @@ impl Core {
         let style = profile.alarm_style;
         let at = block.words[g65].span;
         let code = block.words[g65].text();
-        if block.words.iter().any(|w| w.letter == b'H') && profile.macros.macro_a {
+        if profile.macros.macro_a && block.words.get(g65 + 1).is_some_and(|w| w.letter == b'H') {
             return Err(Diagnostic::new(Rule::NotSupported, style, at, format!("{code} H (macro A: G65 Hm P#i Q#j R#k) is not simulated by ncsight yet")));
         }
         // GSK: G65 is followed directly by P (GSK980TDi help text, G65).
@@ -1198,9 +1214,9 @@ impl Core {
                 return Err(Diagnostic::new(Rule::ArgumentAddress, style, w.span, format!("{}: more than ten I J K sets", w.text())));
             }
             // A value written without a point is in least input increments where the profile
-            // reads lengths so (FANUC Series 16i: G65 P9 X10 gives #24 = 0.010); M S T pass as
-            // written (inferred).
-            let v = if !w.decimal && lii && !matches!(w.letter, b'M' | b'S' | b'T') { w.value * increment } else { w.value };
+            // reads lengths so (FANUC Series 16i: G65 P9 X10 gives #24 = 0.010); the whole-number
+            // addresses M S T H D and the feed F pass as written (inferred).
+            let v = if !w.decimal && lii && !matches!(w.letter, b'M' | b'S' | b'T' | b'H' | b'D' | b'F') { w.value * increment } else { w.value };
             locals[slot - 1] = Some(v);
         }
         let Some(number) = number else {
@@ -1524,7 +1540,7 @@ pub fn events(program: Program, text: &[u8]) -> Events<'_> {
 /// [`events`] with other texts, by name, where a called programme the text lacks is looked for
 /// (what `--subprogram-dir` gives the command line).
 pub fn events_with_library<'a>(program: Program, text: &'a [u8], library: Vec<(String, &'a [u8])>) -> Events<'a> {
-    Events { program, texts: vec![text], library, opened: Vec::new(), at: (0, 0), queue: std::collections::VecDeque::new(), finished: false }
+    Events { program, texts: vec![text], library, at: (0, 0), queue: std::collections::VecDeque::new(), finished: false }
 }
 
 /// See [`events`].
@@ -1533,8 +1549,6 @@ pub struct Events<'a> {
     /// The texts being read, by file number (0: the main text).
     texts: Vec<&'a [u8]>,
     library: Vec<(String, &'a [u8])>,
-    /// The library texts opened so far.
-    opened: Vec<usize>,
     /// The text and the byte offset of the next line.
     at: (usize, usize),
     queue: std::collections::VecDeque<Event>,
@@ -1561,10 +1575,11 @@ impl Events<'_> {
                         numbers.contains(&number)
                     })
                 };
-                let found = (0..self.library.len()).find(|i| !self.opened.contains(i) && holds(self.library[*i].1, &mut numbers));
+                // A file opened before is looked in again: its search stopped at the programme it
+                // was opened for, so a later one in it was not noted.
+                let found = (0..self.library.len()).find(|i| holds(self.library[*i].1, &mut numbers));
                 match found {
                     Some(i) => {
-                        self.opened.push(i);
                         let file = self.program.open_file(self.library[i].0.clone());
                         if self.texts.len() <= file as usize {
                             self.texts.resize(file as usize + 1, &[]);

@@ -185,6 +185,13 @@ fn whole(v: f64) -> i64 {
 /// Evaluate the tree at `root`. Arithmetic treats vacant as 0; a bare variable keeps its
 /// vacancy; EQ and NE tell vacant from 0, GT GE LT LE do not (MACRO.md section 4).
 pub fn eval(arena: &Arena, root: u32, vars: &mut dyn Variables) -> Result<Value, ExprError> {
+    eval_rounding(arena, root, vars, 1.0)
+}
+
+/// [`eval`] in an NC address: ROUND rounds to the address's least increment `round_step`
+/// (FANUC's own example `X[ROUND[#1]+ROUND[#2]]`, as the HAAS manual copies it).
+pub fn eval_rounding(arena: &Arena, root: u32, vars: &mut dyn Variables, round_step: f64) -> Result<Value, ExprError> {
+    let eval = |arena: &Arena, n: u32, vars: &mut dyn Variables| eval_rounding(arena, n, vars, round_step);
     let num = |v: Value| v.unwrap_or(0.0);
     let v = match arena.nodes[root as usize] {
         Node::Num(v) => Some(v),
@@ -259,7 +266,7 @@ pub fn eval(arena: &Arena, root: u32, vars: &mut dyn Variables) -> Result<Value,
                 }
                 Func::Abs => x.abs(),
                 // Half away from zero: ROUND[-1.5] = -2 (MACRO.md section 5).
-                Func::Round => x.round(),
+                Func::Round => (x / round_step).round() * round_step,
                 // Toward zero and away from zero: FIX[-1.2] = -1, FUP[-1.2] = -2.
                 Func::Fix => x.trunc(),
                 Func::Fup => {
