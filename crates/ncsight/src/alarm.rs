@@ -143,6 +143,7 @@ rules! {
     Implausible => Warning, "NCS-W25", None, "IMPLAUSIBLE VALUE";
     SpeedClamped => Warning, "NCS-W26", None, "SPINDLE SPEED ABOVE THE MAXIMUM: CLAMPED";
     CallSkipped => Warning, "NCS-W27", None, "SUBPROGRAMME NOT FOUND: CALL SKIPPED";
+    ThenOmitted => Warning, "NCS-W28", None, "IF WITHOUT THEN";
 }
 
 impl Rule {

@@ -237,3 +237,13 @@ fn review_fixes_block_delete_and_macro_a() {
     let e = run_mode("gsk980tdi", Mode::Run, "G65 H01 P#100 Q5\nM30\n");
     assert!(matches!(e.last(), Some(Event::Diagnostic(d)) if d.code == "NCS-E38"));
 }
+
+/// `IF [..] #i = ..` without THEN: taken as THEN on the FANUC profiles with warning NCS-W28
+/// (once, though the block runs three times), alarm 114 elsewhere.
+#[test]
+fn if_without_then() {
+    let text = "#1 = 0\nN5 #1 = #1 + 1\nIF [#1 GT 0] #2 = #1 * 10\nIF [#1 LT 3] GOTO 5\nG90 G00 X#2 Y0 Z0\nM30\n";
+    assert_eq!(trace("fanuc0m", text), t(&["NCS-W28", "5:30,0,0"]));
+    let e = run_mode("gsk980tdi", Mode::Run, "#1 = 1\nIF [#1 GT 0] #2 = 5\nM30\n");
+    assert!(matches!(e.last(), Some(Event::Diagnostic(d)) if d.code == "NCS-E66"), "{e:?}");
+}

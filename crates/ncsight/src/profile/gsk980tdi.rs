@@ -220,6 +220,7 @@ pub static PROFILE: Profile = Profile {
     macros: super::MacroRules {
         p_first: true,
         g65_cancels_g66: true,
+        if_without_then: false,
         macro_a: true,
         source: "GSK980TDi help text, G65 (P right after G65; macro A with H); five bracket levels as FANUC (inferred)",
         ..super::MacroRules::FANUC

@@ -133,6 +133,7 @@ pub static PROFILE: Profile = Profile {
     macros: super::MacroRules {
         p_first: true,
         g65_cancels_g66: true,
+        if_without_then: false,
         source: "inferred from the GSK980TDi help text, G65 (P right after G65); five bracket levels as FANUC (inferred)",
         ..super::MacroRules::FANUC
     },

@@ -304,6 +304,9 @@ pub struct MacroRules {
     pub macro_a: bool,
     /// A G65 cancels a G66 modal call (GSK980TDi help text, G66; FANUC: not, inferred).
     pub g65_cancels_g66: bool,
+    /// `IF [..] #i = ..` without THEN is taken as THEN (a FANUC 0i programme relies on it), with
+    /// warning NCS-W28; elsewhere it is alarm 114 (MACRO.md section 6, inferred).
+    pub if_without_then: bool,
     pub source: &'static str,
 }
 
@@ -313,6 +316,7 @@ impl MacroRules {
         p_first: false,
         macro_a: false,
         g65_cancels_g66: false,
+        if_without_then: true,
         source: "FANUC Series 16/18 operator's manual for lathe (brackets: five levels, alarm 118); FANUC Series 16i (G65 arguments)",
     };
 }

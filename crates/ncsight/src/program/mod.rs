@@ -866,18 +866,29 @@ impl Core {
             return self.fail(d, sink);
         }
         let next = Place { block: place.block.saturating_add(1), ..place };
+        let mut sink_warning = None;
         let result = (|| -> Result<bool, Diagnostic> {
             let profile = self.interp.profile();
             match stmt {
                 Stmt::Words(_) => unreachable!("words are run as an NC block"),
                 Stmt::Assign { var, value } => self.assign(arena, *var, *value, block),
                 Stmt::If { cond, then } => {
+                    if let Then::Assign { written: false, .. } = then {
+                        // IF [..] #i = .. without THEN: a FANUC 0i takes it (a real programme
+                        // relies on it), the others are not known to (MACRO.md section 6).
+                        if !profile.macros.if_without_then {
+                            return Err(Diagnostic::new(Rule::MacroFormat, profile.alarm_style, block.span, "IF [..] #i = ..: THEN is missing (IF [..] THEN #i = ..)".to_string()));
+                        }
+                        if self.reported.first(&Diagnostic::new(Rule::ThenOmitted, profile.alarm_style, block.span, String::new())) {
+                            sink_warning = Some(Diagnostic::new(Rule::ThenOmitted, profile.alarm_style, block.span, "IF [..] #i = .. without THEN: read as IF [..] THEN #i = .., as a FANUC 0i takes it".to_string()));
+                        }
+                    }
                     if !macros::holds(self.value(arena, *cond, block.span)?) {
                         return Ok(true);
                     }
                     match then {
                         Then::Goto(t) => self.goto(arena, *t, block.span, next),
-                        Then::Assign { var, value } => self.assign(arena, *var, *value, block),
+                        Then::Assign { var, value, .. } => self.assign(arena, *var, *value, block),
                     }
                 }
                 Stmt::While { cond, label } => {
@@ -925,6 +936,9 @@ impl Core {
                 Stmt::Goto { target } => self.goto(arena, *target, block.span, next),
             }
         })();
+        if let Some(w) = sink_warning {
+            sink(Event::Diagnostic(w));
+        }
         match result {
             Ok(go_on) => go_on,
             Err(d) => self.fail(d, sink),

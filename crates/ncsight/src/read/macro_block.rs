@@ -29,7 +29,8 @@ pub enum Stmt {
 #[derive(Debug, Clone, PartialEq)]
 pub enum Then {
     Goto(u32),
-    Assign { var: u32, value: u32 },
+    /// `written`: THEN was written (a real FANUC 0i programme leaves it out).
+    Assign { var: u32, value: u32, written: bool },
 }
 
 /// One word of an NC block in a macro: its letter, the tree of its value, whether it was written
@@ -267,12 +268,13 @@ impl Reader {
                         i += 4;
                         skip_ws(&mut i);
                         let (var, value) = assignment(&mut arena, i)?;
-                        Then::Assign { var, value }
+                        Then::Assign { var, value, written: true }
                     } else if c.get(i) == Some(&b'#') {
                         // `IF[#609GT0]#712=#609`: THEN left out, as a real FANUC 0i programme
-                        // does (the SK7420 punch); read as THEN (MACRO.md section 6, inferred).
+                        // does (the SK7420 punch); the profile says whether that is read as THEN
+                        // (MACRO.md section 6, inferred).
                         let (var, value) = assignment(&mut arena, i)?;
-                        Then::Assign { var, value }
+                        Then::Assign { var, value, written: false }
                     } else {
                         return Err(Diagnostic::new(Rule::MacroFormat, self.style, span_at(at(i), at(c.len())), format!("{whole}: IF [..] is followed by GOTO n or THEN #i = ...")));
                     };
