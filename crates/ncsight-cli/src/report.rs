@@ -112,7 +112,7 @@ impl Report<'_> {
                 s.push(',');
             }
             first = false;
-            let _ = write!(s, "{{\"k\":\"{k}\",\"l\":{},\"t0\":{},\"t1\":{},\"p\":[{}]", r.span.line, num(t0, 4), num(r.t_s, 4), pts.join(","));
+            let _ = write!(s, "{{\"k\":\"{k}\",\"l\":{},\"t0\":{},\"t1\":{},\"p\":[{}]", source_line(r.span), num(t0, 4), num(r.t_s, 4), pts.join(","));
             if let Op::Thread { lead_mm, spindle_deg, rpm, long_axis, .. } | Op::ThreadArc { lead_mm, spindle_deg, rpm, long_axis, .. } = r.op {
                 let continues = prev_thread_end == Some(from);
                 if !continues {
@@ -158,7 +158,7 @@ impl Report<'_> {
                     Op::End { code } => format!("\"end\",\"code\":{code}"),
                     _ => return None,
                 };
-                Some(format!("{{\"k\":{what},\"l\":{},\"t\":{}}}", r.span.line, num(r.t_s, 4)))
+                Some(format!("{{\"k\":{what},\"l\":{},\"t\":{}}}", source_line(r.span), num(r.t_s, 4)))
             })
             .collect();
         s.push_str(&evs.join(","));
@@ -170,7 +170,7 @@ impl Report<'_> {
                 let sev = if d.severity() == Severity::Alarm { "alarm" } else { "warning" };
                 format!(
                     "{{\"l\":{},\"c\":{},\"code\":{},\"sev\":\"{sev}\",\"msg\":{}{}}}",
-                    d.span.line,
+                    source_line(d.span),
                     d.span.col,
                     json_str(d.code),
                     json_str(&d.message),
@@ -265,4 +265,10 @@ mod tests {
         assert_eq!(script_safe("\"</script><img>\""), "\"\\u003c/script\\u003e\\u003cimg\\u003e\"");
         assert_eq!(esc_html("<a href=\"x\">&"), "&lt;a href=&quot;x&quot;&gt;&amp;");
     }
+}
+
+/// The line of the page's source a record or a diagnostic belongs to; 0 (none) for one from a
+/// subprogramme in another file (`--subprogram-dir`), whose text the page does not hold.
+fn source_line(span: ncsight::source::Span) -> u32 {
+    if span.file == 0 { span.line } else { 0 }
 }

@@ -25,18 +25,21 @@ pub const MAX_KEPT_LINE_BYTES: usize = 64 * 1024;
 /// controls take 8 digits; one more is accepted for CAM output that pads a trailing digit).
 pub const MAX_DIGITS: usize = 9;
 
-/// Whether a line has a `#` outside its comments (a macro variable).
+/// Whether a line has a `#` outside its comments (a macro variable), or a ROUND, which inside an
+/// address rounds to the address's least increment and so is evaluated when the block runs.
 fn has_variable(s: &[u8]) -> bool {
-    // One memchr first: most lines have no '#' at all.
-    if !s.contains(&b'#') {
+    // One memchr first: most lines have neither '#' nor '['.
+    let hash = s.contains(&b'#');
+    if !hash && !s.contains(&b'[') {
         return false;
     }
     let mut in_comment = false;
-    for &b in s {
+    for (i, &b) in s.iter().enumerate() {
         match b {
             b'(' => in_comment = true,
             b')' => in_comment = false,
             b'#' if !in_comment => return true,
+            b'R' | b'r' if !in_comment && !hash && s.get(i..i + 5).is_some_and(|w| w.eq_ignore_ascii_case(b"ROUND")) => return true,
             _ => {}
         }
     }
