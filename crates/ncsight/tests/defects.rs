@@ -59,7 +59,6 @@ fn codes_of_the_manual_are_not_simulated_yet_not_unknown() {
         ("fanuc0t", "G53 X0 Z0"),
         ("fanuc0t", "G84 Z-10. F1."),
         ("fanuc0t", "G30 U0 W0"),
-        ("gsk980tdi", "G65 H01 P100 Q10"),
         ("gsk980tdi", "G31 W-10 F100"),
         ("gsk988t", "G12.1"),
         ("yasnac-lx3", "G30 U0 W0"),

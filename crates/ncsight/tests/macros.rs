@@ -234,8 +234,23 @@ fn review_fixes_block_delete_and_macro_a() {
     let gsk = "O0001\nG00 X0 Z0\nG65 P100 H3.\nM30\nO0100\nG00 W#11\nM99\n";
     let e = run_mode("gsk980tdi", Mode::Run, gsk);
     assert!(e.iter().all(|e| !matches!(e, Event::Diagnostic(d) if d.is_alarm())), "{e:?}");
-    let e = run_mode("gsk980tdi", Mode::Run, "G65 H01 P#100 Q5\nM30\n");
-    assert!(matches!(e.last(), Some(Event::Diagnostic(d)) if d.code == "NCS-E38"));
+}
+
+/// The GSK980TDi's macro A, `G65 Hm P#i Q#j R#k` (GSK980TDi manual, G65 H list), by hand:
+/// #100 = 5; #101 = 5 + 3 = 8; #102 = 8 x 2 = 16; #103 = 10 SIN[30] = 5; #104 = ATAN[1/1] = 45;
+/// #102 = 16 x 3 / 4 = 12; U#102 moves X by 12 (diameter), W#103 Z by 5; H81 jumps to N50
+/// because #100 = 5 (W99 passed over); H99 P7 is the user's alarm 507.
+#[test]
+fn gsk_macro_a() {
+    let text = "G00 X20. Z0.\nG65 H01 P#100 Q5\nG65 H02 P#101 Q#100 R3\nG65 H04 P#102 Q#101 R2\nG65 H31 P#103 Q10 R30\nG65 H34 P#104 Q1 R1\nG65 H26 P#102 Q3 R4\nG00 U#102 W#103\nG65 H81 P50 Q#100 R5\nG00 W99\nN50 G00 W#104\nG65 H99 P7 (DOOR OPEN)\nM30\n";
+    let e = run_mode("gsk980tdi", Mode::Run, text);
+    let moves: Vec<(f64, f64)> = e.iter().filter_map(|e| match e { Event::Record(r) => match &r.op { Op::Rapid { to, .. } => Some((to.x * 2.0, (to.z * 1000.0).round() / 1000.0)), _ => None }, _ => None }).collect();
+    assert_eq!(moves, vec![(20.0, 0.0), (32.0, 5.0), (32.0, 50.0)]);
+    let Some(Event::Diagnostic(d)) = e.last() else { panic!() };
+    assert!(d.code == "NCS-E75" && d.message.contains("507") && d.message.contains("DOOR OPEN"), "{d:?}");
+    // P without # where a variable is meant.
+    let e = run_mode("gsk980tdi", Mode::Run, "G65 H01 P100 Q10\nM30\n");
+    assert!(matches!(e.last(), Some(Event::Diagnostic(d)) if d.code == "NCS-E66"), "{e:?}");
 }
 
 /// `IF [..] #i = ..` without THEN: taken as THEN on the FANUC profiles with warning NCS-W28

@@ -787,6 +787,18 @@ impl Core {
                 Stmt::Words(words) => words,
                 stmt => return self.statement(&m.arena, stmt, block, place, sink),
             };
+            let constant = |w: &crate::read::MacroWord| match m.arena.nodes.get(w.node as usize) {
+                Some(crate::read::expr::Node::Num(v)) => Some(*v),
+                _ => None,
+            };
+            // GSK980TDi macro A: G65 Hm P#i Q#j R#k.
+            if self.interp.profile().macros.macro_a && words.len() >= 2 && words[0].letter == b'G' && constant(&words[0]) == Some(65.0) && words[1].letter == b'H' {
+                let next = Place { block: place.block.saturating_add(1), ..place };
+                return match self.macro_a(&m.arena, words, block, next) {
+                    Ok(go_on) => go_on,
+                    Err(d) => self.fail(d, sink),
+                };
+            }
             // The words' values from the variables: an NC block to run.
             let mut evaluated = std::mem::take(&mut self.evaluated);
             evaluated.span = block.span;
@@ -960,6 +972,111 @@ impl Core {
         Ok(true)
     }
 
+    /// The GSK980TDi's macro A, `G65 Hm P#i Q#j R#k` (GSK980TDi manual, G65 H list): #i is set
+    /// from #j and #k (variables or constants) by operation m; H80-H86 jump to N(P), H99 is the
+    /// user's alarm 500+P. Where the table's entries were lost (H27, H82-H86, H24/H25 names)
+    /// FANUC macro A's are used (inferred).
+    fn macro_a(&mut self, arena: &crate::read::expr::Arena, words: &[crate::read::MacroWord], block: &Block, next: Place) -> Result<bool, Diagnostic> {
+        use crate::read::expr::{eval, Func, Node};
+        let profile = self.interp.profile();
+        let style = profile.alarm_style;
+        let find = |l: u8| words.iter().find(|w| w.letter == l);
+        let h_word = find(b'H').expect("an H word");
+        let h = self.value(arena, h_word.node, h_word.span)?.unwrap_or(-1.0);
+        if let Some(w) = words.iter().find(|w| !matches!(w.letter, b'G' | b'H' | b'P' | b'Q' | b'R')) {
+            return Err(Diagnostic::new(Rule::MacroFormat, style, w.span, format!("{}: G65 H (macro A) takes H, P, Q and R only", w.letter as char)));
+        }
+        let operand = |this: &Self, l: u8| -> Result<f64, Diagnostic> {
+            match find(l) {
+                Some(w) => Ok(this.value(arena, w.node, w.span)?.unwrap_or(0.0)),
+                None => Ok(0.0),
+            }
+        };
+        let (j, k) = (operand(self, b'Q')?, operand(self, b'R')?);
+        let Some(p) = find(b'P') else {
+            return Err(Diagnostic::new(Rule::AddressPMissing, style, h_word.span, "G65 H: P is missing (the result #i, or the sequence number)".to_string()));
+        };
+        let h = h.round() as i64;
+        // The jumps and the alarm take P as a number.
+        if matches!(h, 80..=86 | 99) {
+            let n = self.value(arena, p.node, p.span)?.unwrap_or(0.0);
+            let jump = match h {
+                80 => true,
+                81 => j == k,
+                82 => j != k,
+                83 => j > k,
+                84 => j < k,
+                85 => j >= k,
+                86 => j <= k,
+                _ => {
+                    let text = block.comments.first().map(|c| format!(" ({})", c.trim())).unwrap_or_default();
+                    return Err(Diagnostic::new(Rule::UserAlarm, style, block.span, format!("user alarm {}{text}: G65 H99 P{n}", 500 + n.round() as i64)));
+                }
+            };
+            if !jump {
+                return Ok(true);
+            }
+            let mut t = crate::read::expr::Arena::default();
+            t.nodes.push(Node::Num(n));
+            return self.goto(&t, 0, block.span, next);
+        }
+        // P#i: the variable the result goes to.
+        let Some(Node::Var(number)) = arena.nodes.get(p.node as usize).copied() else {
+            return Err(Diagnostic::new(Rule::MacroFormat, style, p.span, "G65 H: P names the result variable, written P#i".to_string()));
+        };
+        let i = crate::read::expr::variable_number(self.value(arena, number, p.span)?).map_err(|e| macros::expr_alarm(style, p.span, &e))?;
+        let old = {
+            let mut reading = self.reading();
+            let mut a = crate::read::expr::Arena::default();
+            a.nodes.push(Node::Num(i as f64));
+            a.nodes.push(Node::Var(0));
+            eval(&a, 1, &mut reading).map_err(|e| macros::expr_alarm(style, p.span, &e))?.unwrap_or(0.0)
+        };
+        let func = |f: Func, x: f64| -> Result<f64, Diagnostic> {
+            let mut a = crate::read::expr::Arena::default();
+            a.nodes.push(Node::Num(x));
+            a.nodes.push(Node::Call(f, 0));
+            Ok(eval(&a, 1, &mut crate::read::expr::NoVariables).map_err(|e| macros::expr_alarm(style, block.span, &e))?.unwrap_or(0.0))
+        };
+        let divide = |a: f64, b: f64| if b == 0.0 { Err(Diagnostic::new(Rule::DivideByZero, style, block.span, "G65 H: division by zero".to_string())) } else { Ok(a / b) };
+        let whole = |v: f64| v.round() as i64;
+        let v = match h {
+            1 => j,
+            2 => j + k,
+            3 => j - k,
+            4 => j * k,
+            5 => divide(j, k)?,
+            11 => (whole(j) | whole(k)) as f64,
+            12 => (whole(j) & whole(k)) as f64,
+            13 => (whole(j) ^ whole(k)) as f64,
+            21 => func(Func::Sqrt, j)?,
+            22 => j.abs(),
+            23 => {
+                if k == 0.0 {
+                    return Err(Diagnostic::new(Rule::DivideByZero, style, block.span, "G65 H23: remainder of a division by zero".to_string()));
+                }
+                j % k
+            }
+            24 => func(Func::Bin, j)?,
+            25 => func(Func::Bcd, j)?,
+            26 => divide(old * j, k)?,
+            27 => (j * j + k * k).sqrt(),
+            31 => j * j_trig(k, f64::sin),
+            32 => j * j_trig(k, f64::cos),
+            33 => j * func(Func::Tan, k)?,
+            34 => {
+                let deg = j.atan2(k).to_degrees();
+                if deg < 0.0 { deg + 360.0 } else { deg }
+            }
+            _ => return Err(Diagnostic::new(Rule::MacroFormat, style, h_word.span, format!("H{h}: no such macro A operation (H01-H05, H11-H13, H21-H27, H31-H34, H80-H86, H99)"))),
+        };
+        if !v.is_finite() {
+            return Err(Diagnostic::new(Rule::MacroOverflow, style, block.span, "G65 H: the value is not a finite number".to_string()));
+        }
+        self.vars.write(i, Some(v), self.clock_s).map_err(|(rule, msg)| Diagnostic::new(rule, style, p.span, msg))?;
+        Ok(true)
+    }
+
     /// GOTO n: to block N`n` of the running programme, looked for forward, then from its top.
     fn goto(&mut self, arena: &crate::read::expr::Arena, target: u32, span: Span, next: Place) -> Result<bool, Diagnostic> {
         let profile = self.interp.profile();
@@ -997,6 +1114,19 @@ impl Core {
             matches!(f, GFn::MacroCall | GFn::ModalMacroCall | GFn::ModalMacroCancel).then_some((k, f))
         });
         match macro_code {
+            Some((k, GFn::MacroCall)) if profile.macros.macro_a && block.words.get(k + 1).is_some_and(|w| w.letter == b'H') => {
+                // Macro A with constants only (`G65 H80 P50`, `G65 H99 P7`): as trees of numbers.
+                let mut arena = crate::read::expr::Arena::default();
+                let words: Vec<crate::read::MacroWord> = block.words[k..]
+                    .iter()
+                    .map(|w| {
+                        arena.nodes.push(crate::read::expr::Node::Num(w.value));
+                        crate::read::MacroWord { letter: w.letter, node: (arena.nodes.len() - 1) as u32, decimal: w.decimal, constant: !w.decimal, span: w.span }
+                    })
+                    .collect();
+                let next = Place { block: place.block.saturating_add(1), ..place };
+                return self.macro_a(&arena, &words, block, next).unwrap_or_else(|d| self.fail(d, sink));
+            }
             Some((k, GFn::MacroCall)) => {
                 if profile.macros.g65_cancels_g66 {
                     self.modal_call = None;
@@ -1163,7 +1293,7 @@ impl Core {
         let at = block.words[g65].span;
         let code = block.words[g65].text();
         if profile.macros.macro_a && block.words.get(g65 + 1).is_some_and(|w| w.letter == b'H') {
-            return Err(Diagnostic::new(Rule::NotSupported, style, at, format!("{code} H (macro A: G65 Hm P#i Q#j R#k) is not simulated by ncsight yet")));
+            return Err(Diagnostic::new(Rule::MacroFormat, style, at, format!("{code} H (macro A): write G65 Hm P#i Q#j R#k, the result variable with #")));
         }
         // GSK: G65 is followed directly by P (GSK980TDi help text, G65).
         if profile.macros.p_first && block.words.get(g65 + 1).is_some_and(|w| w.letter != b'P') {
@@ -1503,6 +1633,11 @@ impl Reported {
         }
         self.seen.insert((d.span.file, d.span.line, d.span.col, d.code))
     }
+}
+
+/// `f` of an angle in degrees.
+fn j_trig(deg: f64, f: fn(f64) -> f64) -> f64 {
+    f(deg.to_radians())
 }
 
 /// What a search made of a block.
