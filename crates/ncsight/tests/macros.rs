@@ -262,3 +262,37 @@ fn if_without_then() {
     let e = run_mode("gsk980tdi", Mode::Run, "#1 = 1\nIF [#1 GT 0] #2 = 5\nM30\n");
     assert!(matches!(e.last(), Some(Event::Diagnostic(d)) if d.code == "NCS-E66"), "{e:?}");
 }
+
+/// Calls a machine builder sets up by parameter (FANUC 6050-6089): with 6050 = 100, G100 X5.
+/// calls O9010 with X as #24; with 6071 = 88, M88 calls O9001 as M98 (after the block's move);
+/// inside O9010 a G100 is an ordinary code (here an alarm: G100 is no G code). GSK980TDi: M9123
+/// calls O9123. With no such parameter set, M88 is a machine-specific M code (NCS-W05).
+#[test]
+fn builder_calls_by_parameter() {
+    let params = |pairs: &[(&str, f64)]| {
+        let mut p = Params::defaults(profile::by_name("fanuc0m").unwrap());
+        for (k, v) in pairs {
+            p.set_text(&format!("{k}={v}")).unwrap();
+        }
+        p
+    };
+    let text = "O0001\nG90 G00 X0 Y0 Z0\nG100 X5.\nG00 Y1. M88\nM30\nO9010\nG00 X#24\nM99\nO9001\nG00 Z2.\nM99\n";
+    let run = |p: Params| -> Vec<String> {
+        events(Program::new(p, Switches::default(), Mode::Run), text.as_bytes())
+            .filter_map(|e| match e {
+                Event::Record(r) => match r.op {
+                    Op::Rapid { to, .. } => Some(format!("{}:{},{},{}@{}", r.span.line, to.x, to.y, to.z, r.call_depth)),
+                    _ => None,
+                },
+                Event::Diagnostic(d) => Some(d.code.to_string()),
+            })
+            .collect()
+    };
+    assert_eq!(run(params(&[("6050", 100.0), ("6071", 88.0)])), t(&["7:5,0,0@1", "4:5,1,0@0", "10:5,1,2@1"]));
+    let plain = run(params(&[]));
+    assert_eq!(plain.first().map(String::as_str), Some("PS0010"), "{plain:?}");
+    let gsk = "O0001\nG00 X10. Z0.\nM9123\nM30\nO9123\nG00 W-2.\nM99\n";
+    let e = run_mode("gsk980tdi", Mode::Run, gsk);
+    let z: Vec<f64> = e.iter().filter_map(|e| match e { Event::Record(r) => match &r.op { Op::Rapid { to, .. } => Some(to.z), _ => None }, _ => None }).collect();
+    assert_eq!(z, vec![0.0, -2.0]);
+}

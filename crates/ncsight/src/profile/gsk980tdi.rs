@@ -203,7 +203,7 @@ pub static PROFILE: Profile = Profile {
     peck_back_off: Some(ParamKey::Number(56, None)),
     g_codes: &[common::G_CODES, lathe_a::G_CODES, EXTRA, super::later::GSK980TDI],
     m_codes: &[common::M_CODES, lathe_a::M_CODES, lathe_a::GSK_M_CODES, TAPPING_M],
-    params: &[PARAMS, DRY_RUN, SETTINGS],
+    params: &[PARAMS, DRY_RUN, super::builder::GSK980TDI, SETTINGS],
     time: TimeKeys {
         rapid: [ParamKey::Number(22, None), ParamKey::Number(22, None), ParamKey::Number(22, None)],
         dry_run: ParamKey::Setting("dry_run_mm_min"),
@@ -215,6 +215,7 @@ pub static PROFILE: Profile = Profile {
         max_count: 9999,
         l_count: false,
         max_depth: 4,
+        builder: super::BuilderCalls { g_macro: Some((86, 9010, 10)), m9000: true, ..super::BuilderCalls::NONE },
         source: "GSK980TDi help text, M98 (count 1-9999, number 0000-9999; no L); nesting depth not stated, four as for G65 (inferred)",
     },
     macros: super::MacroRules {

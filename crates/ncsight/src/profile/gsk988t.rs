@@ -128,6 +128,7 @@ pub static PROFILE: Profile = Profile {
         max_count: 9999,
         l_count: false,
         max_depth: 4,
+        builder: super::BuilderCalls::NONE,
         source: "inferred from the GSK980TDi help text, M98 (count 1-9999, no L; four levels)",
     },
     macros: super::MacroRules {

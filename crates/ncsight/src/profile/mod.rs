@@ -6,6 +6,7 @@
 //! Profiles are data (`gsk980tdi.rs`, `gsk988t.rs`, `fanuc0m.rs`, `yasnac_lx3.rs`); the G-code
 //! tables that several lathes share live in `lathe_a.rs`.
 
+mod builder;
 mod common;
 mod fanuc0m;
 mod fanuc0t;
@@ -277,8 +278,35 @@ pub struct CallRules {
     pub l_count: bool,
     /// Subprogramme calls may nest this many levels (the main programme's call is level 1).
     pub max_depth: u8,
+    /// Calls a machine builder sets up by parameter.
+    pub builder: BuilderCalls,
     /// The manual this comes from, and what was inferred.
     pub source: &'static str,
+}
+
+/// G and M codes that call the machine's macro programmes, by parameter: the first of ten (or
+/// nine) parameters and the programme the first calls.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct BuilderCalls {
+    /// G codes called as G65 (FANUC 6050-6059 -> O9010-O9019).
+    pub g_macro: Option<(u32, u32, u32)>,
+    /// M codes called as M98 (FANUC 6071-6079 -> O9001-O9009).
+    pub m_subprogram: Option<(u32, u32, u32)>,
+    /// M codes called as G65 (FANUC 6080-6089 -> O9020-O9029).
+    pub m_macro: Option<(u32, u32, u32)>,
+    /// M9000-M9999 call O9000-O9999 (GSK980TDi help text, M9000-9999).
+    pub m9000: bool,
+}
+
+impl BuilderCalls {
+    /// No such calls known (no manual text at hand).
+    pub const NONE: BuilderCalls = BuilderCalls { g_macro: None, m_subprogram: None, m_macro: None, m9000: false };
+    pub const FANUC: BuilderCalls = BuilderCalls { g_macro: Some((6050, 9010, 10)), m_subprogram: Some((6071, 9001, 9)), m_macro: Some((6080, 9020, 10)), m9000: false };
+
+    /// The parameters the calls read.
+    pub fn keys(&self) -> impl Iterator<Item = ParamKey> + '_ {
+        [self.g_macro, self.m_subprogram, self.m_macro].into_iter().flatten().flat_map(|(first, _, n)| (first..first + n).map(|k| ParamKey::Number(k, None)))
+    }
 }
 
 impl CallRules {
@@ -288,6 +316,7 @@ impl CallRules {
         max_count: 999,
         l_count: true,
         max_depth: 4,
+        builder: BuilderCalls::FANUC,
         source: "FANUC 0i-TB/MB operator's manual 12.3 (count 1-999, four levels); M98 P_ L_ as on the FANUC 0-M (inferred for the lathe)",
     };
 }
@@ -682,6 +711,7 @@ impl Profile {
         keys.extend([p.time.feed_max, p.time.dry_run]);
         keys.extend(p.calculator_input);
         keys.extend(p.peck_back_off);
+        keys.extend(p.calls.builder.keys());
         keys.extend(SETTINGS.iter().map(|d| d.key));
         if let Some(k) = keys.into_iter().find(|k| p.param(*k).is_none()) {
             return fail(format!("a rule names parameter {k}, which the profile does not define"));

@@ -91,6 +91,7 @@ pub static PROFILE: Profile = Profile {
     drill: super::DrillRules::NONE,
     calls: super::CallRules {
         l_count: true,
+        builder: super::BuilderCalls::NONE,
         source: "inferred: as FANUC (no YASNAC LX3 text on M98 was at hand)",
         ..super::CallRules::FANUC
     },

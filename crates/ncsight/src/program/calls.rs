@@ -60,6 +60,8 @@ pub(super) struct Frame {
     pub call: Span,
     /// A G65 call: it has its own level of local variables.
     pub macro_call: bool,
+    /// Made by a code the parameters set up (inside it, such codes are ordinary ones).
+    pub builder: bool,
 }
 
 /// A WHILE loop being run: its DO number, the place of its WHILE block, the call depth.

@@ -119,6 +119,10 @@ struct Core {
     last_n: Option<u32>,
     /// G66 in force: the macro called after each block with a move.
     modal_call: Option<ModalCall>,
+    /// Codes that call the machine's macros, by parameter: (letter, code, programme, as G65).
+    builder_codes: Vec<(u8, u32, u32, bool)>,
+    /// The next call is made by such a code.
+    builder_call: bool,
 }
 
 /// A G66 modal call: the macro, its count and arguments, the call depth it was given at.
@@ -344,7 +348,8 @@ impl Program {
     /// A run with the operator's actions (single block, feed hold, reset, dry run, overrides).
     pub fn with_operator(params: Params, switches: Switches, mode: Mode, operator: Options) -> Program {
         let style = params.profile().alarm_style;
-        Program {
+        let builder_codes = Program::builder_codes(&params);
+        let mut program = Program {
             machine: Machine::new(&params, operator),
             block: Block::default(),
             core: Core {
@@ -377,8 +382,30 @@ impl Program {
                 clock_s: 0.0,
                 last_n: None,
                 modal_call: None,
+                builder_codes: Vec::new(),
+                builder_call: false,
             },
+        };
+        program.core.builder_codes = builder_codes;
+        program
+    }
+
+    /// The codes the parameters make calls of the machine's macros (FANUC 6050-6089; GSK980TDi
+    /// No.86-95), read once: parameters do not change during a run.
+    fn builder_codes(params: &Params) -> Vec<(u8, u32, u32, bool)> {
+        let b = params.profile().calls.builder;
+        let mut out = Vec::new();
+        for (letter, rule, as_macro) in [(b'G', b.g_macro, true), (b'M', b.m_subprogram, false), (b'M', b.m_macro, true)] {
+            if let Some((first, program, n)) = rule {
+                for i in 0..n {
+                    let code = params.get(crate::profile::ParamKey::Number(first + i, None));
+                    if code > 0.0 {
+                        out.push((letter, code as u32, program + i, as_macro));
+                    }
+                }
+            }
         }
+        out
     }
 
     /// Check mode that passes on only the diagnostics: records are neither timed nor passed on
@@ -1107,6 +1134,56 @@ impl Core {
         if block.block_delete && self.interp.switches().block_delete {
             return true;
         }
+        // A code the parameters make a call of the machine's macro (not inside such a macro:
+        // there the code is an ordinary one).
+        if (!self.builder_codes.is_empty() || profile.calls.builder.m9000) && !self.calls.frames.iter().any(|f| f.builder) {
+            let found = block.words.iter().enumerate().find_map(|(k, w)| {
+                if !matches!(w.letter, b'G' | b'M') || w.value.fract() != 0.0 || w.value < 0.0 {
+                    return None;
+                }
+                let code = w.value as u32;
+                if w.letter == b'M' && profile.calls.builder.m9000 && (9000..=9999).contains(&code) {
+                    // GSK980TDi help text, M9000-9999: M9123 calls O9123.
+                    return Some((k, code, false));
+                }
+                self.builder_codes.iter().find(|(l, c, _, _)| *l == w.letter && *c == code).map(|(_, _, program, as_macro)| (k, *program, *as_macro))
+            });
+            if let Some((k, number, as_macro)) = found {
+                let next = Place { block: place.block.saturating_add(1), ..place };
+                let mut span = block.span;
+                span.file = self.file;
+                let result = if as_macro {
+                    // As G65 P<programme> with the block's other words as arguments.
+                    let mut call = block.clone();
+                    let at = call.words[k].span;
+                    let trigger = call.words[k].text();
+                    call.words.remove(k);
+                    // G65 has no P argument: a P in the block is said to be ignored (no manual
+                    // says what the machine does with it; inferred).
+                    if let Some(pw) = call.words.iter().find(|w| w.letter == b'P') {
+                        let d = Diagnostic::new(Rule::TextIgnored, profile.alarm_style, pw.span, format!("{}: the macro call by {trigger} takes no P argument (G65 has none): ignored", pw.text()));
+                        sink(Event::Diagnostic(d));
+                    }
+                    call.words.retain(|w| w.letter != b'P');
+                    call.words.insert(0, Word { letter: b'G', value: 65.0, decimal: false, expr: false, span: at });
+                    call.words.insert(1, Word { letter: b'P', value: f64::from(number), decimal: false, expr: false, span: at });
+                    self.macro_arguments(&call, 0).and_then(|(number, count, locals)| {
+                        self.builder_call = true;
+                        self.call(number, count, span, next, Some(locals))
+                    })
+                } else {
+                    // As M98: the block's other words first, then the call.
+                    let mut rest = block.clone();
+                    rest.words.remove(k);
+                    if !rest.words.is_empty() && !self.execute_nc(&rest, place, sink) {
+                        return false;
+                    }
+                    self.builder_call = true;
+                    self.call(number, 1, span, next, None)
+                };
+                return result.unwrap_or_else(|d| self.fail(d, sink));
+            }
+        }
         // G65, G66, G67: run here, not by the interpreter.
         let macro_code = block.words.iter().enumerate().find_map(|(k, w)| {
             let code = (w.letter == b'G' && w.value.fract() == 0.0 && (65.0..=67.0).contains(&w.value)).then_some(w.value as u32)?;
@@ -1241,6 +1318,7 @@ impl Core {
     fn call(&mut self, number: u32, count: u32, span: Span, back: Place, locals: Option<macros::Locals>) -> Result<bool, Diagnostic> {
         let profile = self.interp.profile();
         let macro_call = locals.is_some();
+        let builder = std::mem::take(&mut self.builder_call);
         let max = profile.calls.max_depth;
         // M98 and G65 nest separately, four levels each (FANUC Series 16i operator's manual,
         // custom macro; GSK980TDi help text, G65).
@@ -1259,7 +1337,7 @@ impl Core {
             self.vars.levels.push(l);
         }
         let start = self.calls.program(self.file, number);
-        self.calls.frames.push(Frame { number, start, back, remaining: count.max(1) - 1, call: span, macro_call });
+        self.calls.frames.push(Frame { number, start, back, remaining: count.max(1) - 1, call: span, macro_call, builder });
         match start {
             Some(p) => {
                 self.seek(p);
