@@ -296,3 +296,11 @@ fn builder_calls_by_parameter() {
     let z: Vec<f64> = e.iter().filter_map(|e| match e { Event::Record(r) => match &r.op { Op::Rapid { to, .. } => Some(to.z), _ => None }, _ => None }).collect();
     assert_eq!(z, vec![0.0, -2.0]);
 }
+
+/// #4005 (feed mode), #4010 (return level on a mill), #3901 (parts, settable), #5004 (no fourth
+/// axis: vacant, so Y#5004 disappears).
+#[test]
+fn more_system_variables() {
+    let text = "G90 G95 G99 G00 X0 Y0 Z0\n#1 = #4005\n#2 = #4010\n#3901 = #3901 + 1\nG00 X#1 Y#2 Z#3901\nY#5004\nM30\n";
+    assert_eq!(trace("fanuc0m", text), t(&["5:95,99,1"]));
+}

@@ -26,11 +26,14 @@ pub(super) struct Variables {
     /// #3001 and #3002 may be set; the clocks then count from there.
     clock_ms_offset: f64,
     clock_h_offset: f64,
+    /// #3901 parts machined, #3902 parts required (0 at the start of a run: ncsight does not
+    /// count parts across runs).
+    parts: [f64; 2],
 }
 
 impl Default for Variables {
     fn default() -> Variables {
-        Variables { levels: vec![[None; 33]], common: vec![None; 1000], clock_ms_offset: 0.0, clock_h_offset: 0.0 }
+        Variables { levels: vec![[None; 33]], common: vec![None; 1000], clock_ms_offset: 0.0, clock_h_offset: 0.0, parts: [0.0; 2] }
     }
 }
 
@@ -70,6 +73,7 @@ impl expr::Variables for Reading<'_> {
             3000 => None,
             3001 => Some((self.clock_s * 1000.0 - self.vars.clock_ms_offset).max(0.0).floor()),
             3002 => Some(self.clock_s / 3600.0 - self.vars.clock_h_offset),
+            3901 | 3902 => Some(self.vars.parts[(number - 3901) as usize]),
             // Modal information (FANUC #4001-#4022, #4107-#4120).
             4001 => match m.motion {
                 Motion::Rapid => code_of(self.profile, GFn::Rapid),
@@ -87,7 +91,9 @@ impl expr::Variables for Reading<'_> {
                 },
             ),
             4003 => code_of(self.profile, if m.incremental { GFn::Incremental } else { GFn::Absolute }),
+            4005 => code_of(self.profile, if m.per_rev { GFn::FeedPerRevolution } else { GFn::FeedPerMinute }),
             4006 => code_of(self.profile, if m.inch { GFn::Inch } else { GFn::Metric }),
+            4010 if !self.profile.is_lathe() => code_of(self.profile, if m.return_initial { GFn::ReturnInitial } else { GFn::ReturnR }),
             4109 => m.feed,
             4114 => self.last_n.map(f64::from),
             4115 => self.program.map(f64::from),
@@ -96,6 +102,8 @@ impl expr::Variables for Reading<'_> {
             // Positions: the block end point, the machine and the current position. Without a
             // setup (work and tool offsets) the three are the same (MACRO.md section 8).
             5001..=5003 => axis((number - 5001) as usize),
+            // A fourth to sixth axis the profile does not have: vacant.
+            5004..=5006 | 5024..=5026 | 5044..=5046 => None,
             5021..=5023 => axis((number - 5021) as usize),
             5041..=5043 => axis((number - 5041) as usize),
             _ => return Err(no_such(number, "no such variable on this control, or a system variable ncsight does not simulate yet")),
@@ -124,6 +132,10 @@ impl Variables {
             }
             3002 => {
                 self.clock_h_offset = clock_s / 3600.0 - value.unwrap_or(0.0);
+                Ok(())
+            }
+            3901 | 3902 => {
+                self.parts[(number - 3901) as usize] = value.unwrap_or(0.0);
                 Ok(())
             }
             4001..=4120 | 5001..=5100 => Err((Rule::WriteProtected, format!("#{number} is a system variable that can only be read"))),
