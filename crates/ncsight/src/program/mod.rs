@@ -104,6 +104,9 @@ struct Core {
     skip_next: u16,
     /// The line is read again (after a jump back).
     again: bool,
+    /// No jump or search yet: lines run in order from the start, up to `linear_end`.
+    linear: bool,
+    linear_end: u64,
     reported: Reported,
     /// The sequence number of the block being executed (for its records).
     block_n: Option<u32>,
@@ -372,6 +375,8 @@ impl Program {
                 skip_to: 0,
                 skip_next: 0,
                 again: false,
+                linear: true,
+                linear_end: 0,
                 reported: Reported::default(),
                 block_n: None,
                 executed_any: false,
@@ -427,6 +432,7 @@ impl Program {
         c.call_options = options;
         if let Some(number) = options.main {
             let start = Place::start_of(0);
+            c.leave_linear();
             c.calls.search = Some(Search { target: Target::Program(number), from: start, scope: start, wrapped: true, once: true, asked_by: Span::new(1, 1, 1), resume: None });
         }
     }
@@ -956,6 +962,7 @@ impl Core {
                     }
                     // Past the matching END m.
                     let scope = self.calls.running().map_or(Place::start_of(self.file), |(_, s)| s);
+                    self.leave_linear();
                     self.calls.search = Some(Search { target: Target::LoopEnd(*label), from: next, scope, wrapped: true, once: true, asked_by: block.span, resume: None });
                     Ok(true)
                 }
@@ -1121,6 +1128,7 @@ impl Core {
                 Ok(false)
             }
             None => {
+                self.leave_linear();
                 self.calls.search = Some(Search { target: Target::Goto(n), from: next, scope, wrapped: false, once: false, asked_by: span, resume: Some(next) });
                 Ok(true)
             }
@@ -1134,9 +1142,19 @@ impl Core {
         if block.block_delete && self.interp.switches().block_delete {
             return true;
         }
+        // One look at the words: most blocks hold no G65-G67 and no code that calls a macro.
+        let builders = !self.builder_codes.is_empty() || profile.calls.builder.m9000;
+        let special = block.words.iter().any(|w| match w.letter {
+            b'G' => (65.0..=67.0).contains(&w.value) || builders,
+            b'M' => builders,
+            _ => false,
+        });
+        if !special && self.modal_call.is_none() {
+            return self.execute_nc(block, place, sink);
+        }
         // A code the parameters make a call of the machine's macro (not inside such a macro:
         // there the code is an ordinary one).
-        if (!self.builder_codes.is_empty() || profile.calls.builder.m9000) && !self.calls.frames.iter().any(|f| f.builder) {
+        if builders && !self.calls.frames.iter().any(|f| f.builder) {
             let found = block.words.iter().enumerate().find_map(|(k, w)| {
                 if !matches!(w.letter, b'G' | b'M') || w.value.fract() != 0.0 || w.value < 0.0 {
                     return None;
@@ -1293,6 +1311,11 @@ impl Core {
         self.next_offset += bytes;
         self.block_index = 0;
         self.skip_to = std::mem::take(&mut self.skip_next);
+        if self.linear {
+            // Nothing has jumped yet: every line is new, and what ran is [0, here).
+            self.linear_end = self.next_offset;
+            return;
+        }
         self.again = self.calls.was_read(self.file, self.line_offset);
         // A line read by a search is not executed: it counts as read when run.
         if self.calls.search.is_none() {
@@ -1300,8 +1323,20 @@ impl Core {
         }
     }
 
+    /// The first jump or search: from now on the executed stretches are kept one by one (until
+    /// then they are the text from its start, read in order).
+    fn leave_linear(&mut self) {
+        if self.linear {
+            self.linear = false;
+            if self.linear_end > 0 {
+                self.calls.mark_read(0, 0, self.linear_end);
+            }
+        }
+    }
+
     /// Ask the driver to go on from `to`.
     fn seek(&mut self, to: Place) {
+        self.leave_linear();
         // A text that ended (a DOS end-of-file mark) is read again from the place.
         if self.status != Status::Alarm {
             self.eof = false;
@@ -1347,6 +1382,7 @@ impl Core {
                 // Not read yet: the blocks that follow are read (not executed) until it is found,
                 // then the file from its top, then the driver's other files.
                 let scope = Place::start_of(self.file);
+                self.leave_linear();
                 self.calls.search = Some(Search { target: Target::Program(number), from: back, scope, wrapped: false, once: false, asked_by: span, resume: Some(back) });
                 Ok(true)
             }
@@ -1498,6 +1534,7 @@ impl Core {
                         match self.calls.sequence(scope, n) {
                             Some(p) => self.seek(p),
                             None => {
+                                self.leave_linear();
                                 self.calls.search = Some(Search { target: Target::Sequence(n), from: frame.back, scope, wrapped: false, once: false, asked_by: span, resume: Some(frame.back) });
                                 self.seek(frame.back);
                             }

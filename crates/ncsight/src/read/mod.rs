@@ -25,21 +25,21 @@ pub const MAX_KEPT_LINE_BYTES: usize = 64 * 1024;
 /// controls take 8 digits; one more is accepted for CAM output that pads a trailing digit).
 pub const MAX_DIGITS: usize = 9;
 
-/// Whether a line has a `#` outside its comments (a macro variable), or a ROUND, which inside an
-/// address rounds to the address's least increment and so is evaluated when the block runs.
+/// The reader's note to itself that a word holds ROUND (see `read_line_into`).
+const ROUND_LATER: &str = "ROUND in an address is evaluated when the block runs";
+
+/// Whether a line has a `#` outside its comments (a macro variable).
 fn has_variable(s: &[u8]) -> bool {
-    // One memchr first: most lines have neither '#' nor '['.
-    let hash = s.contains(&b'#');
-    if !hash && !s.contains(&b'[') {
+    // One memchr first: most lines have no '#'.
+    if !s.contains(&b'#') {
         return false;
     }
     let mut in_comment = false;
-    for (i, &b) in s.iter().enumerate() {
+    for &b in s {
         match b {
             b'(' => in_comment = true,
             b')' => in_comment = false,
             b'#' if !in_comment => return true,
-            b'R' | b'r' if !in_comment && !hash && s.get(i..i + 5).is_some_and(|w| w.eq_ignore_ascii_case(b"ROUND")) => return true,
             _ => {}
         }
     }
@@ -138,8 +138,8 @@ pub struct Line {
 }
 
 impl Line {
-    /// Empty it for the next line, keeping the allocations.
-    pub(crate) fn reset(&mut self) {
+    /// Drop the blocks read, keeping their word lists for reuse.
+    fn clear_blocks(&mut self) {
         while let Some(item) = self.blocks.pop() {
             if let Ok(b) = item {
                 let mut words = b.words;
@@ -147,6 +147,11 @@ impl Line {
                 self.spare.push(words);
             }
         }
+    }
+
+    /// Empty it for the next line, keeping the allocations.
+    pub(crate) fn reset(&mut self) {
+        self.clear_blocks();
         self.warnings.clear();
         self.tape_mark = false;
         self.end_of_file = false;
@@ -234,13 +239,21 @@ impl Reader {
         // A DOS end-of-file mark ends the text wherever it stands: inside a comment, after a
         // tape mark, on a line that alarms (corpus: icnc__Delorensi_FASE2.txt). `contains` on
         // bytes is a memchr, one fast scan of the line.
-        if s.contains(&0x1A) {
+        // One scan for the two rare bytes: the DOS end-of-file mark and a macro variable.
+        let marks = memchr::memchr2(0x1A, b'#', s).is_some();
+        if marks && s.contains(&0x1A) {
             let k = s.iter().position(|&b| b == 0x1A).unwrap_or(s.len());
             out.end_of_file = true;
             out.warnings.push(self.eof_mark(line_no, k));
             s = &s[..k];
         }
-        self.read_blocks(line_no, s, out);
+        self.read_blocks(line_no, s, out, marks);
+        // A word with ROUND: the whole line as macro blocks.
+        if out.blocks.last().is_some_and(|b| matches!(b, Err(d) if d.message == ROUND_LATER)) {
+            out.clear_blocks();
+            let start = s.iter().take_while(|c| is_blank(**c)).count();
+            self.read_macro_blocks(line_no, s, start, out);
+        }
     }
 
     fn eof_mark(&self, line_no: u32, col: usize) -> Diagnostic {
@@ -249,7 +262,7 @@ impl Reader {
 
     /// The blocks of a line without its break and without what follows an end-of-file mark:
     /// stops at the first alarm.
-    fn read_blocks(&self, line_no: u32, s: &[u8], out: &mut Line) {
+    fn read_blocks(&self, line_no: u32, s: &[u8], out: &mut Line, marks: bool) {
         if s.len() > MAX_LINE_BYTES {
             out.blocks.push(Err(self.diag(
                 Rule::LineTooLong,
@@ -284,7 +297,7 @@ impl Reader {
             return;
         }
         // A line with a variable: its blocks are macro blocks, evaluated when they run.
-        if has_variable(&s[i..]) {
+        if marks && has_variable(&s[i..]) {
             self.read_macro_blocks(line_no, s, i, out);
             return;
         }
@@ -504,6 +517,11 @@ impl Reader {
                     span_to(s.len()),
                     format!("{}[: the expression has no closing ']'", letter as char),
                 ));
+            }
+            // ROUND inside an address rounds to the address's least increment, which depends
+            // on G20/G21: such a line is read as a macro line and evaluated when it runs.
+            if s[i + 1..j].windows(5).any(|w| w.eq_ignore_ascii_case(b"ROUND")) {
+                return Err(Diagnostic::new(Rule::Expression, self.style, span_to(j + 1), ROUND_LATER));
             }
             return match expr::evaluate(&s[i + 1..j]) {
                 Ok(v) => Ok((Word { letter, value: v, decimal: true, expr: true, span: span_to(j + 1) }, j + 1)),
