@@ -278,3 +278,23 @@ fn review_fixes() {
     let e = run("fanuc0m", "G90 G00 X0. Y0. Z1.\n#1 = 0\nN10 #1 = #1 + 1\nG00 X#1\nIF [#1 LT 3] GOTO 10\nM30\n\x1A");
     assert_eq!(trace(&e).iter().filter(|s| s.contains("rapid")).count(), 4, "{:?}", trace(&e));
 }
+
+/// A loop whose body searches in vain (a check goes on past GOTO's alarm, round and round):
+/// the blocks a search reads again count for the runaway guard too, so it stops (the fuzzer
+/// found a 12-second case before they counted). A first forward search does not count: a long
+/// main programme calling a subprogramme after M30 is not a runaway.
+#[test]
+fn searches_count_for_the_runaway_guard() {
+    let text = "#1 = 0\nWHILE [1 EQ 1] DO1\nGOTO 99\nEND1\nM30\n";
+    let options = CallOptions { max_repeated_blocks: 1_000, ..CallOptions::default() };
+    let e = run_with("fanuc0m", Mode::Check, options, text, &[]);
+    let codes: Vec<&str> = e.iter().filter_map(|e| match e { Event::Diagnostic(d) if d.is_alarm() => Some(d.code), _ => None }).collect();
+    assert_eq!(codes, vec!["PS0128", "NCS-E63"]);
+    let mut main = String::from("O0001\nM98 P0100\n");
+    for i in 0..3_000 {
+        main.push_str(&format!("G00 X{}.\n", i % 7));
+    }
+    main.push_str("M30\nO0100\nM99\n");
+    let e = run_with("fanuc0m", Mode::Run, options, &main, &[]);
+    assert!(e.iter().all(|e| !matches!(e, Event::Diagnostic(d) if d.is_alarm())), "{:?}", trace(&e).last());
+}

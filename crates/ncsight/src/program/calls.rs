@@ -126,6 +126,9 @@ pub(super) struct Calls {
     pub files: Vec<String>,
     /// The stretches of each file executed so far: a block in one runs again.
     read: Vec<Vec<(u64, u64)>>,
+    /// How far each file has been read in any way (executed or searched): a search that reads
+    /// a line again counts for the runaway guard.
+    seen_to: Vec<u64>,
     /// Blocks executed again after a jump back (the runaway guard counts these).
     pub repeated_blocks: u64,
 }
@@ -211,6 +214,17 @@ impl Calls {
             v.clear();
             v.push(whole);
         }
+    }
+
+    /// A line of `file` from `start` to `end` is read: whether it had been read before.
+    pub fn seen(&mut self, file: u16, start: u64, end: u64) -> bool {
+        let i = file as usize;
+        if self.seen_to.len() <= i {
+            self.seen_to.resize(i + 1, 0);
+        }
+        let before = start < self.seen_to[i];
+        self.seen_to[i] = self.seen_to[i].max(end);
+        before
     }
 
     /// The call chain of a block at the current depth, outermost first.

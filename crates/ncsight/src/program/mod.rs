@@ -104,6 +104,8 @@ struct Core {
     skip_next: u16,
     /// The line is read again (after a jump back).
     again: bool,
+    /// A search reads the line again.
+    searched_again: bool,
     /// No jump or search yet: lines run in order from the start, up to `linear_end`.
     linear: bool,
     linear_end: u64,
@@ -375,6 +377,7 @@ impl Program {
                 skip_to: 0,
                 skip_next: 0,
                 again: false,
+                searched_again: false,
                 linear: true,
                 linear_end: 0,
                 reported: Reported::default(),
@@ -737,6 +740,9 @@ impl Core {
         }
         let place = Place { file: self.file, offset: self.line_offset, line: self.line_no, block: k };
         if self.calls.search.is_some() {
+            if self.searched_again && !self.guard(item.map_or_else(|d| d.span, |b| b.span), sink) {
+                return false;
+            }
             match self.search_step(item.ok(), place, sink) {
                 Searched::Passed => return true,
                 Searched::Stop => return false,
@@ -790,24 +796,8 @@ impl Core {
                 self.calls.main = Some((None, Place::start_of(self.file)));
             }
         }
-        if self.again {
-            // The runaway guard (MACRO.md section 6: a loop may never end on the machine).
-            self.calls.repeated_blocks += 1;
-            let max = self.call_options.max_repeated_blocks;
-            if self.calls.repeated_blocks > max {
-                let d = Diagnostic::new(
-                    Rule::Runaway,
-                    self.interp.profile().alarm_style,
-                    block.span,
-                    format!("more than {max} blocks were executed again after jumps back: the programme probably never ends, so ncsight stops here"),
-                )
-                .with_hint("a programme that really runs this long can be run with a higher --max-blocks");
-                self.flush_pending(sink);
-                self.alarm(d, sink);
-                self.status = Status::Alarm;
-                self.eof = true;
-                return false;
-            }
+        if self.again && !self.guard(block.span, sink) {
+            return false;
         }
         if block.sequence.is_some() {
             self.last_n = block.sequence;
@@ -1317,6 +1307,7 @@ impl Core {
             return;
         }
         self.again = self.calls.was_read(self.file, self.line_offset);
+        self.searched_again = self.calls.seen(self.file, self.line_offset, self.next_offset) && self.calls.search.is_some();
         // A line read by a search is not executed: it counts as read when run.
         if self.calls.search.is_none() {
             self.calls.mark_read(self.file, self.line_offset, self.next_offset);
@@ -1330,8 +1321,33 @@ impl Core {
             self.linear = false;
             if self.linear_end > 0 {
                 self.calls.mark_read(0, 0, self.linear_end);
+                self.calls.seen(0, 0, self.linear_end);
             }
         }
+    }
+
+    /// The runaway guard (MACRO.md section 6: a loop may never end on the machine): blocks
+    /// executed again, and blocks a search reads again, past the limit stop the run. Whether
+    /// the run goes on.
+    fn guard(&mut self, span: Span, sink: &mut dyn FnMut(Event)) -> bool {
+        self.calls.repeated_blocks += 1;
+        let max = self.call_options.max_repeated_blocks;
+        if self.calls.repeated_blocks <= max {
+            return true;
+        }
+        let d = Diagnostic::new(
+            Rule::Runaway,
+            self.interp.profile().alarm_style,
+            span,
+            format!("more than {max} blocks were executed or searched again after jumps back: the programme probably never ends, so ncsight stops here"),
+        )
+        .with_hint("a programme that really runs this long can be run with a higher --max-blocks");
+        self.calls.search = None;
+        self.flush_pending(sink);
+        self.alarm(d, sink);
+        self.status = Status::Alarm;
+        self.eof = true;
+        false
     }
 
     /// Ask the driver to go on from `to`.
