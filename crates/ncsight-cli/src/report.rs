@@ -170,10 +170,10 @@ impl Report<'_> {
                 let sev = if d.severity() == Severity::Alarm { "alarm" } else { "warning" };
                 format!(
                     "{{\"l\":{},\"c\":{},\"code\":{},\"sev\":\"{sev}\",\"msg\":{}{}}}",
-                    source_line(d.span),
+                    if d.span.file == 0 { d.span.line } else { d.calls.first().map_or(0, |c| c.line) },
                     d.span.col,
                     json_str(d.code),
-                    json_str(&d.message),
+                    json_str(&with_calls(d)),
                     d.hint.as_ref().map(|h| format!(",\"hint\":{}", json_str(h))).unwrap_or_default()
                 )
             })
@@ -271,4 +271,15 @@ mod tests {
 /// subprogramme in another file (`--subprogram-dir`), whose text the page does not hold.
 fn source_line(span: ncsight::source::Span) -> u32 {
     if span.file == 0 { span.line } else { 0 }
+}
+
+/// A diagnostic's message with the calls that led to it, when raised in a subprogramme (the page
+/// lists it under the line of the outermost call when it lies in another file).
+fn with_calls(d: &ncsight::Diagnostic) -> String {
+    if d.calls.is_empty() {
+        return d.message.clone();
+    }
+    let chain: Vec<String> = d.calls.iter().rev().map(|c| format!("line {}", c.line)).collect();
+    let place = if d.span.file == 0 { String::new() } else { format!(" (line {} of another file)", d.span.line) };
+    format!("{}{place} - in a subprogramme called at {}", d.message, chain.join(", called at "))
 }

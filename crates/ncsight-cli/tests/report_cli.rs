@@ -25,3 +25,18 @@ fn report_is_self_contained_and_escapes_programme_text() {
     }
     let _ = std::fs::remove_dir_all(dir);
 }
+
+/// An alarm inside a subprogramme: the page's message names the call that led there.
+#[test]
+fn report_shows_the_call_chain() {
+    let dir = std::env::temp_dir().join(format!("ncsight-report-calls-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let prog = dir.join("calls.nc");
+    std::fs::write(&prog, "O0001\nG90 G00 X0. Y0. Z10.\nM98 P0100\nM30\nO0100\nG00 Q1.\nM99\n").unwrap();
+    let out = dir.join("r.html");
+    let (code, _, err) = common::ncsight(&["report", prog.to_str().unwrap(), "--machine", "fanuc0m", "-o", out.to_str().unwrap()]);
+    assert_eq!(code, 1, "{err}");
+    let html = std::fs::read_to_string(&out).unwrap();
+    assert!(html.contains("in a subprogramme called at line 3"), "the call chain is on the page");
+    let _ = std::fs::remove_dir_all(dir);
+}
