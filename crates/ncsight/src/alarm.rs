@@ -188,13 +188,15 @@ pub struct Diagnostic {
     pub message: String,
     /// A likely cause, for typing mistakes (`GO` with a letter O).
     pub hint: Option<String>,
-    /// Raised inside a subprogramme: the calling blocks (M98), outermost first.
-    pub calls: Vec<Span>,
+    /// Raised inside a subprogramme: the calling blocks (M98), outermost first. A boxed slice
+    /// (two words, no allocation when empty): diagnostics sit beside every block the reader
+    /// makes, so their size counts.
+    pub calls: Box<[Span]>,
 }
 
 impl Diagnostic {
     pub fn new(rule: Rule, style: AlarmStyle, span: Span, message: impl Into<String>) -> Diagnostic {
-        Diagnostic { rule, code: rule.code(style), span, message: message.into(), hint: None, calls: Vec::new() }
+        Diagnostic { rule, code: rule.code(style), span, message: message.into(), hint: None, calls: Box::default() }
     }
 
     pub fn with_hint(mut self, hint: impl Into<String>) -> Diagnostic {

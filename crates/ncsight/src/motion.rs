@@ -315,12 +315,18 @@ pub struct Record {
 impl Record {
     /// A record with the default operator rules of its kind.
     pub fn new(span: Span, op: Op) -> Record {
+        Record::of_block(span, None, op)
+    }
+
+    /// [`Record::new`] of a block with sequence number `n`.
+    #[inline]
+    pub fn of_block(span: Span, n: Option<u32>, op: Op) -> Record {
         let hold = match op {
             Op::Dwell { .. } => Hold::AfterRecord,
             Op::Thread { .. } | Op::ThreadArc { .. } => Hold::AfterRun,
             _ => Hold::Stop,
         };
         let override_free = op.is_thread();
-        Record { span, n: None, call_depth: 0, t_s: 0.0, op, block_end: false, hold, cycle: None, override_free, accel_s: None }
+        Record { span, n, call_depth: 0, t_s: 0.0, op, block_end: false, hold, cycle: None, override_free, accel_s: None }
     }
 }

@@ -158,9 +158,7 @@ impl Step<'_> {
             return;
         }
         if !self.out.discard_records {
-            let mut r = Record::new(span, op);
-            r.n = n;
-            self.out.records.push(r);
+            self.out.records.push(Record::of_block(span, n, op));
         }
     }
 

@@ -1791,8 +1791,8 @@ fn stamped(mut e: Event, chain: &[Span], file: u16, machine: &mut Machine, sink:
         }
         Event::Diagnostic(d) => {
             d.span.file = file;
-            if d.calls.is_empty() {
-                d.calls.extend_from_slice(chain);
+            if d.calls.is_empty() && !chain.is_empty() {
+                d.calls = chain.into();
             }
         }
     }
