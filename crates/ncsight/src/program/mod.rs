@@ -1049,13 +1049,7 @@ impl Core {
             return Err(Diagnostic::new(Rule::MacroFormat, style, p.span, "G65 H: P names the result variable, written P#i".to_string()));
         };
         let i = crate::read::expr::variable_number(self.value(arena, number, p.span)?).map_err(|e| macros::expr_alarm(style, p.span, &e))?;
-        let old = {
-            let mut reading = self.reading();
-            let mut a = crate::read::expr::Arena::default();
-            a.nodes.push(Node::Num(i as f64));
-            a.nodes.push(Node::Var(0));
-            eval(&a, 1, &mut reading).map_err(|e| macros::expr_alarm(style, p.span, &e))?.unwrap_or(0.0)
-        };
+        let old = crate::read::expr::Variables::read(&mut self.reading(), i).map_err(|e| macros::expr_alarm(style, p.span, &e))?.unwrap_or(0.0);
         let func = |f: Func, x: f64| -> Result<f64, Diagnostic> {
             let mut a = crate::read::expr::Arena::default();
             a.nodes.push(Node::Num(x));
@@ -1085,8 +1079,8 @@ impl Core {
             25 => func(Func::Bcd, j)?,
             26 => divide(old * j, k)?,
             27 => (j * j + k * k).sqrt(),
-            31 => j * j_trig(k, f64::sin),
-            32 => j * j_trig(k, f64::cos),
+            31 => j * func(Func::Sin, k)?,
+            32 => j * func(Func::Cos, k)?,
             33 => j * func(Func::Tan, k)?,
             34 => {
                 let deg = j.atan2(k).to_degrees();
@@ -1764,11 +1758,6 @@ impl Reported {
         }
         self.seen.insert((d.span.file, d.span.line, d.span.col, d.code))
     }
-}
-
-/// `f` of an angle in degrees.
-fn j_trig(deg: f64, f: fn(f64) -> f64) -> f64 {
-    f(deg.to_radians())
 }
 
 /// What a search made of a block.

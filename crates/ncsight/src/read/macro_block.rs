@@ -208,25 +208,9 @@ impl Reader {
             if c.get(*i) != Some(&b'[') {
                 return Err(Diagnostic::new(Rule::MacroFormat, self.style, span_at(at(*i), at(*i) + 1), format!("{whole}: {key} takes a condition in brackets: {key} [#1 GT 0]")));
             }
-            // The matching bracket.
-            let mut depth = 0usize;
-            let mut j = *i;
-            while j < c.len() {
-                match c[j] {
-                    b'[' => depth += 1,
-                    b']' => {
-                        depth -= 1;
-                        if depth == 0 {
-                            break;
-                        }
-                    }
-                    _ => {}
-                }
-                j += 1;
-            }
-            if j >= c.len() {
+            let Some(j) = super::matching_bracket(c, *i) else {
                 return Err(Diagnostic::new(Rule::MacroFormat, self.style, span_at(at(*i), at(c.len())), format!("{whole}: the condition has no closing ']'")));
-            }
+            };
             let root = expr::parse(&c[*i + 1..j], arena, true, true).map_err(|e| self.macro_error(line, at(*i + 1), &e, &whole))?;
             *i = j + 1;
             Ok(root)

@@ -25,6 +25,24 @@ pub const MAX_KEPT_LINE_BYTES: usize = 64 * 1024;
 /// controls take 8 digits; one more is accepted for CAM output that pads a trailing digit).
 pub const MAX_DIGITS: usize = 9;
 
+/// The index of the `]` that closes the `[` at `open`, if the text closes it.
+pub(crate) fn matching_bracket(s: &[u8], open: usize) -> Option<usize> {
+    let mut depth = 0usize;
+    for (j, &b) in s.iter().enumerate().skip(open) {
+        match b {
+            b'[' => depth += 1,
+            b']' => {
+                depth -= 1;
+                if depth == 0 {
+                    return Some(j);
+                }
+            }
+            _ => {}
+        }
+    }
+    None
+}
+
 /// The reader's note to itself that a word holds ROUND (see `read_line_into`).
 const ROUND_LATER: &str = "ROUND in an address is evaluated when the block runs";
 
@@ -494,22 +512,7 @@ impl Reader {
         }
         let span_to = |end: usize| Span::new(line, at as u32 + 1, (end - at).max(1) as u32);
         if i < s.len() && s[i] == b'[' {
-            // Find the matching bracket.
-            let mut depth = 0usize;
-            let mut j = i;
-            while j < s.len() {
-                match s[j] {
-                    b'[' => depth += 1,
-                    b']' => {
-                        depth -= 1;
-                        if depth == 0 {
-                            break;
-                        }
-                    }
-                    _ => {}
-                }
-                j += 1;
-            }
+            let j = matching_bracket(s, i).unwrap_or(s.len());
             if j >= s.len() {
                 return Err(Diagnostic::new(
                     Rule::Expression,
