@@ -224,7 +224,7 @@ pub fn drive(
     let mut pending: io::Result<()> = Ok(());
     let Some(request) = stream_forward(stream, &source, program, &mut |e, text| {
         if pending.is_ok() {
-            pending = on_event(&e, text, None);
+            pending = on_event(e, text, None);
         }
     })?
     else {
@@ -237,7 +237,7 @@ pub fn drive(
 
 /// The forward phase: lines read ahead on a second thread. Returns the run's first request to
 /// read elsewhere, if it makes one (the run is then not finished).
-fn stream_forward(input: Box<dyn BufRead + Send>, source: &Source, program: &mut Program, on_event: &mut dyn FnMut(Event, &[u8])) -> io::Result<Option<Request>> {
+fn stream_forward(input: Box<dyn BufRead + Send>, source: &Source, program: &mut Program, on_event: &mut dyn FnMut(&Event, &[u8])) -> io::Result<Option<Request>> {
     let reader = program.line_reader();
     let (full_tx, full_rx) = mpsc::sync_channel::<io::Result<Batch>>(BATCHES_IN_FLIGHT);
     let (empty_tx, empty_rx) = mpsc::channel::<Batch>();
@@ -276,7 +276,7 @@ fn stream_forward(input: Box<dyn BufRead + Send>, source: &Source, program: &mut
                     }
                     _ => line,
                 };
-                on_event(e, text);
+                on_event(&e, text);
             });
             if let Some(r) = program.take_request() {
                 // The reader ends at its next send (the channel is closed).
@@ -316,7 +316,7 @@ fn stream_forward(input: Box<dyn BufRead + Send>, source: &Source, program: &mut
             }
             _ => &b""[..],
         };
-        on_event(e, text);
+        on_event(&e, text);
     }))
 }
 

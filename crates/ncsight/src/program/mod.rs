@@ -126,6 +126,9 @@ struct Core {
     modal_call: Option<ModalCall>,
     /// Codes that call the machine's macros, by parameter: (letter, code, programme, as G65).
     builder_codes: Vec<(u8, u32, u32, bool)>,
+    /// Some G or M code calls a macro of the machine's (parameters, or the profile's M9000
+    /// range): every block's G and M words are looked at.
+    builders: bool,
     /// The next call is made by such a code.
     builder_call: bool,
 }
@@ -391,9 +394,11 @@ impl Program {
                 last_n: None,
                 modal_call: None,
                 builder_codes: Vec::new(),
+                builders: false,
                 builder_call: false,
             },
         };
+        program.core.builders = !builder_codes.is_empty() || program.core.interp.profile().calls.builder.m9000;
         program.core.builder_codes = builder_codes;
         program
     }
@@ -664,7 +669,7 @@ impl Core {
     /// Interpret one line read; the events are untimed.
     fn interpret_read(&mut self, read: &mut ReadLine, sink: &mut dyn FnMut(Event)) {
         let line = &mut read.line;
-        if self.begin_line(read.foreign, read.len, line.warnings.drain(..), line.end_of_file, sink) {
+        if self.begin_line(read.foreign, read.len, &line.warnings, line.end_of_file, sink) {
             for item in &line.blocks {
                 if !self.interpret_item(item.as_ref(), sink) {
                     return;
@@ -675,14 +680,7 @@ impl Core {
 
     /// The start of a line: another control's language ends the run; the line's warnings; a DOS
     /// end-of-file mark. Whether the line's blocks are to be interpreted.
-    fn begin_line(
-        &mut self,
-        foreign: Option<Foreign>,
-        len: usize,
-        warnings: impl Iterator<Item = Diagnostic>,
-        end_of_file: bool,
-        sink: &mut dyn FnMut(Event),
-    ) -> bool {
+    fn begin_line(&mut self, foreign: Option<Foreign>, len: usize, warnings: &[Diagnostic], end_of_file: bool, sink: &mut dyn FnMut(Event)) -> bool {
         if let Some(f) = foreign {
             let profile = self.interp.profile();
             let d = Diagnostic::new(
@@ -699,9 +697,9 @@ impl Core {
             return false;
         }
         // A line's own warnings once: not again after a jump back, not while a search passes.
-        if !self.again && self.calls.search.is_none() {
+        if !warnings.is_empty() && !self.again && self.calls.search.is_none() {
             for w in warnings {
-                sink(Event::Diagnostic(w));
+                sink(Event::Diagnostic(w.clone()));
             }
         }
         if end_of_file {
@@ -712,8 +710,9 @@ impl Core {
 
     /// A line of a batch, its blocks set one by one into a block kept for reuse.
     fn interpret_packed(&mut self, batch: &ReadBatch, l: &PackedLine, block: &mut Block, sink: &mut dyn FnMut(Event)) {
-        let warnings = batch.diagnostics[l.warnings.0 as usize..l.warnings.1 as usize].iter().cloned();
-        if !self.begin_line(l.foreign, l.len, warnings, l.end_of_file, sink) {
+        let warnings = &batch.diagnostics[l.warnings.0 as usize..l.warnings.1 as usize];
+        let plain = l.foreign.is_none() && warnings.is_empty() && !l.end_of_file;
+        if !plain && !self.begin_line(l.foreign, l.len, warnings, l.end_of_file, sink) {
             return;
         }
         for pb in &batch.blocks[l.blocks.0 as usize..l.blocks.1 as usize] {
@@ -803,59 +802,66 @@ impl Core {
             self.last_n = block.sequence;
         }
         if let Some(m) = block.macro_block.as_deref() {
-            if block.block_delete && self.interp.switches().block_delete {
-                return true;
-            }
-            let words = match &m.stmt {
-                Stmt::Words(words) => words,
-                stmt => return self.statement(&m.arena, stmt, block, place, sink),
-            };
-            let constant = |w: &crate::read::MacroWord| match m.arena.nodes.get(w.node as usize) {
-                Some(crate::read::expr::Node::Num(v)) => Some(*v),
-                _ => None,
-            };
-            // GSK980TDi macro A: G65 Hm P#i Q#j R#k.
-            if self.interp.profile().macros.macro_a && words.len() >= 2 && words[0].letter == b'G' && constant(&words[0]) == Some(65.0) && words[1].letter == b'H' {
-                let next = Place { block: place.block.saturating_add(1), ..place };
-                return match self.macro_a(&m.arena, words, block, next) {
-                    Ok(go_on) => go_on,
-                    Err(d) => self.fail(d, sink),
-                };
-            }
-            // The words' values from the variables: an NC block to run.
-            let mut evaluated = std::mem::take(&mut self.evaluated);
-            evaluated.span = block.span;
-            evaluated.block_delete = block.block_delete;
-            evaluated.sequence = block.sequence;
-            evaluated.program = None;
-            evaluated.words.clear();
-            evaluated.comments.clone_from(&block.comments);
-            let inch = self.interp.state().inch;
-            // A G65/G66 block's words are arguments: values pass as they are.
-            let arguments = words.iter().any(|w| w.letter == b'G' && matches!(m.arena.nodes.get(w.node as usize), Some(crate::read::expr::Node::Num(v)) if *v == 65.0 || *v == 66.0));
-            let mut failed = None;
-            if let Err(d) = self.check_brackets(&m.arena, block.span) {
-                failed = Some(d);
-            }
-            for w in words {
-                if failed.is_some() {
-                    break;
-                }
-                let mut reading = self.reading();
-                match macros::evaluate_word(&m.arena, w, &mut reading, inch, arguments) {
-                    Ok(Some(word)) => evaluated.words.push(word),
-                    Ok(None) => {}
-                    Err(e) => failed = Some(macros::expr_alarm(self.interp.profile().alarm_style, w.span, &e)),
-                }
-            }
-            let go_on = match failed {
-                Some(d) => self.fail(d, sink),
-                None => self.execute(&evaluated, place, sink),
-            };
-            self.evaluated = evaluated;
-            return go_on;
+            return self.macro_item(m, block, place, sink);
         }
         self.execute(block, place, sink)
+    }
+
+    /// A macro block: a statement, or words whose values come from the variables. Whether the
+    /// rest of the line is interpreted. (Out of line: most blocks are plain NC blocks.)
+    #[inline(never)]
+    fn macro_item(&mut self, m: &crate::read::MacroBlock, block: &Block, place: Place, sink: &mut dyn FnMut(Event)) -> bool {
+        if block.block_delete && self.interp.switches().block_delete {
+            return true;
+        }
+        let words = match &m.stmt {
+            Stmt::Words(words) => words,
+            stmt => return self.statement(&m.arena, stmt, block, place, sink),
+        };
+        let constant = |w: &crate::read::MacroWord| match m.arena.nodes.get(w.node as usize) {
+            Some(crate::read::expr::Node::Num(v)) => Some(*v),
+            _ => None,
+        };
+        // GSK980TDi macro A: G65 Hm P#i Q#j R#k.
+        if self.interp.profile().macros.macro_a && words.len() >= 2 && words[0].letter == b'G' && constant(&words[0]) == Some(65.0) && words[1].letter == b'H' {
+            let next = Place { block: place.block.saturating_add(1), ..place };
+            return match self.macro_a(&m.arena, words, block, next) {
+                Ok(go_on) => go_on,
+                Err(d) => self.fail(d, sink),
+            };
+        }
+        // The words' values from the variables: an NC block to run.
+        let mut evaluated = std::mem::take(&mut self.evaluated);
+        evaluated.span = block.span;
+        evaluated.block_delete = block.block_delete;
+        evaluated.sequence = block.sequence;
+        evaluated.program = None;
+        evaluated.words.clear();
+        evaluated.comments.clone_from(&block.comments);
+        let inch = self.interp.state().inch;
+        // A G65/G66 block's words are arguments: values pass as they are.
+        let arguments = words.iter().any(|w| w.letter == b'G' && matches!(m.arena.nodes.get(w.node as usize), Some(crate::read::expr::Node::Num(v)) if *v == 65.0 || *v == 66.0));
+        let mut failed = None;
+        if let Err(d) = self.check_brackets(&m.arena, block.span) {
+            failed = Some(d);
+        }
+        for w in words {
+            if failed.is_some() {
+                break;
+            }
+            let mut reading = self.reading();
+            match macros::evaluate_word(&m.arena, w, &mut reading, inch, arguments) {
+                Ok(Some(word)) => evaluated.words.push(word),
+                Ok(None) => {}
+                Err(e) => failed = Some(macros::expr_alarm(self.interp.profile().alarm_style, w.span, &e)),
+            }
+        }
+        let go_on = match failed {
+            Some(d) => self.fail(d, sink),
+            None => self.execute(&evaluated, place, sink),
+        };
+        self.evaluated = evaluated;
+        return go_on;
     }
 
     /// The variables as a block reads them.
@@ -1120,22 +1126,34 @@ impl Core {
     }
 
     /// Run an NC block (read, or evaluated from a macro block).
+    #[inline(always)]
     fn execute(&mut self, block: &Block, place: Place, sink: &mut dyn FnMut(Event)) -> bool {
-        use crate::profile::GFn;
-        let profile = self.interp.profile();
         if block.block_delete && self.interp.switches().block_delete {
             return true;
         }
         // One look at the words: most blocks hold no G65-G67 and no code that calls a macro.
-        let builders = !self.builder_codes.is_empty() || profile.calls.builder.m9000;
-        let special = block.words.iter().any(|w| match w.letter {
-            b'G' => (65.0..=67.0).contains(&w.value) || builders,
-            b'M' => builders,
-            _ => false,
-        });
-        if !special && self.modal_call.is_none() {
+        let builders = self.builders;
+        let mut special = self.modal_call.is_some();
+        for w in &block.words {
+            special |= match w.letter {
+                b'G' => builders || (65.0..=67.0).contains(&w.value),
+                b'M' => builders,
+                _ => false,
+            };
+        }
+        if !special {
             return self.execute_nc(block, place, sink);
         }
+        self.execute_calling(block, place, sink)
+    }
+
+    /// A block that may call a macro: G65-G67, a code the parameters make a call, a move under
+    /// G66.
+    #[inline(never)]
+    fn execute_calling(&mut self, block: &Block, place: Place, sink: &mut dyn FnMut(Event)) -> bool {
+        use crate::profile::GFn;
+        let profile = self.interp.profile();
+        let builders = self.builders;
         // A code the parameters make a call of the machine's macro (not inside such a macro:
         // there the code is an ordinary one).
         if builders && !self.calls.frames.iter().any(|f| f.builder) {
@@ -1257,6 +1275,7 @@ impl Core {
     }
 
     /// An NC block through the interpreter, then its M98/M99.
+    #[inline(always)]
     fn execute_nc(&mut self, block: &Block, place: Place, sink: &mut dyn FnMut(Event)) -> bool {
         self.block_n = block.sequence;
         match self.interp.execute_into(block, &mut self.outcome) {
