@@ -298,3 +298,22 @@ fn searches_count_for_the_runaway_guard() {
     let e = run_with("fanuc0m", Mode::Run, options, &main, &[]);
     assert!(e.iter().all(|e| !matches!(e, Event::Diagnostic(d) if d.is_alarm())), "{:?}", trace(&e).last());
 }
+
+/// `%` closes the record (MACRO.md section 1, inferred): the text after the closing `%` is not
+/// read, the first `%` only opens it. Line 6 (after the closing mark on line 5) gives neither a
+/// move nor the after-the-end warning; without M30 the run ends at the mark with the
+/// no-programme-end warning (NCS-W.. at the last block). A subprogramme that reaches the
+/// closing mark without M99 alarms as at the end of the text (NCS-E62); a programme after the
+/// mark is still found by a call (the search reads on).
+#[test]
+fn the_closing_percent_ends_the_text() {
+    let ended = run("fanuc0m", "%\nO0001\nG21 G90 G00 X1. Y0. Z0.\nM30\n%\nG00 X5.\n");
+    assert_eq!(trace(&ended), t(&["3:rapid:1,0,0@0", "4:end@0"]));
+    let open = run("fanuc0m", "%\nG21 G90 G00 X1. Y0. Z0.\n%\nG00 X5.\nM30\n");
+    let no_end = ncsight::Rule::NoProgramEnd.code(profile::by_name("fanuc0m").unwrap().alarm_style);
+    assert_eq!(trace(&open), t(&["2:rapid:1,0,0@0", &format!("2:{no_end}")]));
+    let no_return = run("fanuc0m", "%\nO0001\nG21 G90 G00 X0. Y0. Z0.\nM98 P100\nM30\nO0100\nG00 X1.\n%\nG00 X9.\nM99\n");
+    assert_eq!(trace(&no_return), t(&["7:rapid:1,0,0@1", "8:NCS-E62"]));
+    let after = run("fanuc0m", "%\nO0001\nG21 G90 G00 X0. Y0. Z0.\nM98 P100\nM30\n%\n%\nO0100\nG00 X1.\nM99\n%\n");
+    assert_eq!(trace(&after), t(&["9:rapid:1,0,0@1", "5:end@0"]));
+}

@@ -304,3 +304,41 @@ fn more_system_variables() {
     let text = "G90 G95 G99 G00 X0 Y0 Z0\n#1 = #4005\n#2 = #4010\n#3901 = #3901 + 1\nG00 X#1 Y#2 Z#3901\nY#5004\nM30\n";
     assert_eq!(trace("fanuc0m", text), t(&["5:95,99,1"]));
 }
+
+/// Single block and macro statements (MACRO.md section 6): a FANUC stops only after NC blocks
+/// unless 6000#5 SBM is 1; then also after `#3 = 5.` (line 3) and the IF (line 4). The GSK980TDi
+/// has no such parameter (not found in its help text): NC blocks only.
+#[test]
+fn single_block_stops_at_macro_statements_with_sbm() {
+    use ncsight::motion::StopReason;
+    let text = "G21 G90 G00 X0. Y0. Z0.\nG00 X1.\n#3 = 5.\nIF [#3 GT 2] THEN #4 = 1.\nG00 X#3\nM30\n";
+    let lathe = "G00 X0. Z0.\nG00 X1.\n#3 = 5.\nIF [#3 GT 2] THEN #4 = 1.\nG00 X#3\nM30\n";
+    let stops = |machine: &str, sbm: Option<f64>| -> Vec<u32> {
+        let text = if machine == "fanuc0m" { text } else { lathe };
+        let mut params = Params::defaults(profile::by_name(machine).unwrap());
+        if let Some(v) = sbm {
+            params.set(profile::ParamKey::Number(6000, Some(5)), v).unwrap();
+        }
+        let operator = ncsight::Options { single_block: true, ..ncsight::Options::default() };
+        ncsight::run_text_with(params, Switches::default(), Mode::Run, operator, text.as_bytes())
+            .iter()
+            .filter_map(|e| match e {
+                Event::Record(r) if r.op == (Op::Stop { reason: StopReason::SingleBlock }) => Some(r.span.line),
+                _ => None,
+            })
+            .collect()
+    };
+    assert_eq!(stops("fanuc0m", None), [2, 5, 6]);
+    assert_eq!(stops("fanuc0m", Some(0.0)), [2, 5, 6]);
+    assert_eq!(stops("fanuc0m", Some(1.0)), [2, 3, 4, 5, 6]);
+    assert_eq!(stops("fanuc0t", Some(1.0)), [2, 3, 4, 5, 6]);
+    assert_eq!(stops("gsk980tdi", None), [2, 5, 6]);
+    // Without single block, SBM changes nothing.
+    let params = {
+        let mut p = Params::defaults(profile::by_name("fanuc0m").unwrap());
+        p.set(profile::ParamKey::Number(6000, Some(5)), 1.0).unwrap();
+        p
+    };
+    let events = ncsight::run_text(params, Switches::default(), Mode::Run, text.as_bytes());
+    assert!(!events.iter().any(|e| matches!(e, Event::Record(r) if matches!(r.op, Op::Stop { .. }))));
+}

@@ -135,6 +135,7 @@ pub static PROFILE: Profile = Profile {
         p_first: true,
         g65_cancels_g66: true,
         if_without_then: false,
+        single_block_param: None,
         source: "inferred from the GSK980TDi help text, G65 (P right after G65); five bracket levels as FANUC (inferred)",
         ..super::MacroRules::FANUC
     },

@@ -336,6 +336,10 @@ pub struct MacroRules {
     /// `IF [..] #i = ..` without THEN is taken as THEN (a FANUC 0i programme relies on it), with
     /// warning NCS-W28; elsewhere it is alarm 114 (MACRO.md section 6, inferred).
     pub if_without_then: bool,
+    /// The parameter that makes single block stop after a macro statement as well (FANUC 6000#5
+    /// SBM; MACRO.md section 6). Without one, or with it 0, single block stops only after NC
+    /// blocks.
+    pub single_block_param: Option<ParamKey>,
     pub source: &'static str,
 }
 
@@ -346,6 +350,7 @@ impl MacroRules {
         macro_a: false,
         g65_cancels_g66: false,
         if_without_then: true,
+        single_block_param: Some(ParamKey::Number(6000, Some(5))),
         source: "FANUC Series 16/18 operator's manual for lathe (brackets: five levels, alarm 118); FANUC Series 16i (G65 arguments)",
     };
 }
@@ -551,6 +556,18 @@ pub const FANUC_INPUT: &[ParamDef] = &[ParamDef {
     max: 1.0,
     default: 0.0,
     source: "docs/sources.md, FANUC (inferred)",
+}];
+
+/// FANUC custom macro: 6000#5 SBM (MACRO.md section 6; FANUC 0i parameter manual, inferred for
+/// the FANUC 0).
+pub const FANUC_MACRO: &[ParamDef] = &[ParamDef {
+    key: ParamKey::Number(6000, Some(5)),
+    meaning: "SBM: 1 = single block stops after each macro statement (assignment, IF, GOTO, WHILE, END) too; 0 = only after NC blocks",
+    unit: "bit",
+    min: 0.0,
+    max: 1.0,
+    default: 0.0,
+    source: "FANUC 0i parameter manual, 6000#5 SBM (inferred for the FANUC 0)",
 }];
 
 pub const SETTINGS: &[ParamDef] = &[

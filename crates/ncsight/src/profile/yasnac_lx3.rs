@@ -95,7 +95,7 @@ pub static PROFILE: Profile = Profile {
         source: "inferred: as FANUC (no YASNAC LX3 text on M98 was at hand)",
         ..super::CallRules::FANUC
     },
-    macros: super::MacroRules { if_without_then: false, source: "inferred: as FANUC (YASNAC LX3 manual 2.8.23 gives the variables only)", ..super::MacroRules::FANUC },
+    macros: super::MacroRules { if_without_then: false, single_block_param: None, source: "inferred: as FANUC (YASNAC LX3 manual 2.8.23 gives the variables only)", ..super::MacroRules::FANUC },
     summary: "YASNAC LX3 turning centre. X is a diameter, U/W incremental. Lengths without a decimal \
 point are least input increments (X100 = 0.1 mm); seed 004 writes every length with a point. \
 Feed per revolution at power on (assumed).",

@@ -129,6 +129,8 @@ struct Core {
     /// Some G or M code calls a macro of the machine's (parameters, or the profile's M9000
     /// range): every block's G and M words are looked at.
     builders: bool,
+    /// Single block is on and the parameters make it stop after macro statements too.
+    statement_stops: bool,
     /// The next call is made by such a code.
     builder_call: bool,
 }
@@ -222,6 +224,8 @@ struct PackedLine {
     blocks: (u32, u32),
     warnings: (u32, u32),
     end_of_file: bool,
+    /// The line is a `%` tape mark.
+    tape_mark: bool,
 }
 
 #[derive(Debug, Clone, Copy)]
@@ -318,6 +322,7 @@ impl ReadBatch {
             blocks: (first_block, index(&self.blocks)),
             warnings,
             end_of_file: r.line.end_of_file,
+            tape_mark: r.line.tape_mark,
         });
     }
 
@@ -357,6 +362,8 @@ impl Program {
     pub fn with_operator(params: Params, switches: Switches, mode: Mode, operator: Options) -> Program {
         let style = params.profile().alarm_style;
         let builder_codes = Program::builder_codes(&params);
+        // FANUC 6000#5 SBM: single block stops after macro statements too (MACRO.md section 6).
+        let statement_stops = operator.single_block && params.profile().macros.single_block_param.is_some_and(|k| params.get(k) == 1.0);
         let mut program = Program {
             machine: Machine::new(&params, operator),
             block: Block::default(),
@@ -396,6 +403,7 @@ impl Program {
                 builder_codes: Vec::new(),
                 builders: false,
                 builder_call: false,
+                statement_stops,
             },
         };
         program.core.builders = !builder_codes.is_empty() || program.core.interp.profile().calls.builder.m9000;
@@ -669,7 +677,7 @@ impl Core {
     /// Interpret one line read; the events are untimed.
     fn interpret_read(&mut self, read: &mut ReadLine, sink: &mut dyn FnMut(Event)) {
         let line = &mut read.line;
-        if self.begin_line(read.foreign, read.len, &line.warnings, line.end_of_file, sink) {
+        if self.begin_line(read.foreign, read.len, &line.warnings, line.end_of_file, line.tape_mark, sink) {
             for item in &line.blocks {
                 if !self.interpret_item(item.as_ref(), sink) {
                     return;
@@ -680,7 +688,7 @@ impl Core {
 
     /// The start of a line: another control's language ends the run; the line's warnings; a DOS
     /// end-of-file mark. Whether the line's blocks are to be interpreted.
-    fn begin_line(&mut self, foreign: Option<Foreign>, len: usize, warnings: &[Diagnostic], end_of_file: bool, sink: &mut dyn FnMut(Event)) -> bool {
+    fn begin_line(&mut self, foreign: Option<Foreign>, len: usize, warnings: &[Diagnostic], end_of_file: bool, tape_mark: bool, sink: &mut dyn FnMut(Event)) -> bool {
         if let Some(f) = foreign {
             let profile = self.interp.profile();
             let d = Diagnostic::new(
@@ -705,14 +713,27 @@ impl Core {
         if end_of_file {
             self.eof = true;
         }
+        // A `%` after the first block closes the record: the text after it is not read
+        // (MACRO.md section 1, inferred). The one before is the record's start. A search for a
+        // programme or a sequence number reads on past it (the controller's memory holds every
+        // programme of the file; inferred).
+        if tape_mark && self.executed_any && self.calls.search.is_none() {
+            let span = Span { file: self.file, ..Span::new(self.line_no, 1, 1) };
+            if self.calls.depth() > 0 && self.status == Status::Running {
+                self.text_ends(span, sink);
+            } else {
+                self.eof = true;
+            }
+            return false;
+        }
         true
     }
 
     /// A line of a batch, its blocks set one by one into a block kept for reuse.
     fn interpret_packed(&mut self, batch: &ReadBatch, l: &PackedLine, block: &mut Block, sink: &mut dyn FnMut(Event)) {
         let warnings = &batch.diagnostics[l.warnings.0 as usize..l.warnings.1 as usize];
-        let plain = l.foreign.is_none() && warnings.is_empty() && !l.end_of_file;
-        if !plain && !self.begin_line(l.foreign, l.len, warnings, l.end_of_file, sink) {
+        let plain = l.foreign.is_none() && warnings.is_empty() && !l.end_of_file && !l.tape_mark;
+        if !plain && !self.begin_line(l.foreign, l.len, warnings, l.end_of_file, l.tape_mark, sink) {
             return;
         }
         for pb in &batch.blocks[l.blocks.0 as usize..l.blocks.1 as usize] {
@@ -982,7 +1003,13 @@ impl Core {
             sink(Event::Diagnostic(w));
         }
         match result {
-            Ok(go_on) => go_on,
+            Ok(go_on) => {
+                if self.statement_stops && self.records() {
+                    let stop = crate::motion::Op::Stop { reason: crate::motion::StopReason::SingleBlock };
+                    sink(Event::Record(crate::motion::Record::of_block(block.span, block.sequence, stop)));
+                }
+                go_on
+            }
             Err(d) => self.fail(d, sink),
         }
     }
