@@ -194,6 +194,23 @@ pub struct Modal {
     pub drill: DrillData,
     /// M02/M30 reached.
     pub ended: bool,
+    /// The last code commanded in each modal group since power on, ten times its number
+    /// (G41 -> 410, G32.1 -> 321; 0: none yet), indexed by `Group as usize`: what #4001-#4022
+    /// read for the groups ncsight accepts without modelling (G43/G49, G54-G59, G61/G64, the
+    /// side of G41/G42).
+    pub group_codes: [u16; crate::profile::Group::COUNT],
+    /// The last B, D, E, H and M words (#4102, #4107, #4108, #4111, #4113).
+    pub last_words: LastWords,
+}
+
+/// Words a macro reads back as modal information (FANUC #4102-#4113).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct LastWords {
+    pub b: Option<f64>,
+    pub d: Option<f64>,
+    pub e: Option<f64>,
+    pub h: Option<f64>,
+    pub m: Option<f64>,
 }
 
 impl Modal {
@@ -237,6 +254,8 @@ impl Modal {
             },
             drill: DrillData::default(),
             ended: false,
+            group_codes: [0; crate::profile::Group::COUNT],
+            last_words: LastWords::default(),
         }
     }
 

@@ -616,8 +616,23 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
 
     // 3. Modal codes take effect; the motion and drilling codes are noted.
     let mut codes = Codes::default();
+    // The words a macro reads back (#4102-#4113) and each group's code (#4001-#4022).
+    for w in &block.words {
+        let last = &mut step.st.last_words;
+        match w.letter {
+            b'B' => last.b = Some(w.value),
+            b'D' => last.d = Some(w.value),
+            b'E' => last.e = Some(w.value),
+            b'H' => last.h = Some(w.value),
+            b'M' => last.m = Some(w.value),
+            _ => {}
+        }
+    }
     for (_, w, g) in &last_of {
         let st = &mut step.st;
+        if g.group != Group::NonModal {
+            st.group_codes[g.group as usize] = (w.value * 10.0).round() as u16;
+        }
         match g.function {
             GFn::Rapid => codes.motion = Some((w.span, Motion::Rapid)),
             GFn::Linear => codes.motion = Some((w.span, Motion::Linear)),

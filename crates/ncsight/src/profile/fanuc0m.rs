@@ -146,7 +146,7 @@ pub static PROFILE: Profile = Profile {
         shift_bits: Some((ParamKey::Number(2, Some(4)), ParamKey::Number(2, Some(5)))),
     },
     calls: super::CallRules::FANUC,
-    macros: super::MacroRules::FANUC,
+    macros: super::MacroRules { group_numbers: super::FANUC_M_GROUPS, ..super::MacroRules::FANUC },
     summary: "FANUC 0-M machining centre. G90/G91, G17 at power on. Lengths without a decimal point \
 are least input increments (X100 = 0.1 mm), F without a point is mm/min.",
 };

@@ -75,6 +75,56 @@ pub enum Group {
     SpindleCheck,
 }
 
+impl Group {
+    /// How many groups there are (for tables indexed by `group as usize`).
+    pub const COUNT: usize = Group::SpindleCheck as usize + 1;
+}
+
+/// FANUC's numbers of the modal groups, which #4001-#4022 read (#4000 + the group number; the
+/// G-code lists of the FANUC 0i-MC and 0i-TC operator's manuals, inferred for the FANUC 0;
+/// MACRO.md section 8).
+pub const FANUC_M_GROUPS: &[(u8, Group)] = &[
+    (1, Group::Motion),
+    (2, Group::Plane),
+    (3, Group::Distance),
+    (4, Group::StrokeCheck),
+    (5, Group::FeedMode),
+    (6, Group::Units),
+    (7, Group::CutterComp),
+    (8, Group::LengthComp),
+    (9, Group::CannedCycle),
+    (10, Group::ReturnLevel),
+    (11, Group::Scaling),
+    (12, Group::MacroCall),
+    (13, Group::SpindleSpeedMode),
+    (14, Group::WorkOffset),
+    (15, Group::PathMode),
+    (16, Group::Rotation),
+    (17, Group::Polar),
+];
+
+/// The lathe's numbering (G-code system A; FANUC 0i-TC list, inferred for the FANUC 0-T and,
+/// without a list of their own, for the GSK and YASNAC lathes).
+pub const FANUC_T_GROUPS: &[(u8, Group)] = &[
+    (1, Group::Motion),
+    (2, Group::SpindleSpeedMode),
+    (3, Group::Distance),
+    (4, Group::StrokeCheck),
+    (5, Group::FeedMode),
+    (6, Group::Units),
+    (7, Group::CutterComp),
+    (8, Group::SpindleCheck),
+    (10, Group::CannedCycle),
+    (11, Group::ReturnLevel),
+    (12, Group::MacroCall),
+    (14, Group::WorkOffset),
+    (15, Group::PathMode),
+    (16, Group::Plane),
+    (17, Group::Polar2),
+    (18, Group::Rotation),
+    (21, Group::Polar),
+];
+
 /// What a G code does, as far as the interpreter is concerned.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum GFn {
@@ -340,6 +390,8 @@ pub struct MacroRules {
     /// SBM; MACRO.md section 6). Without one, or with it 0, single block stops only after NC
     /// blocks.
     pub single_block_param: Option<ParamKey>,
+    /// The group numbers #4001-#4022 read (`FANUC_M_GROUPS`, `FANUC_T_GROUPS`).
+    pub group_numbers: &'static [(u8, Group)],
     pub source: &'static str,
 }
 
@@ -351,6 +403,7 @@ impl MacroRules {
         g65_cancels_g66: false,
         if_without_then: true,
         single_block_param: Some(ParamKey::Number(6000, Some(5))),
+        group_numbers: FANUC_T_GROUPS,
         source: "FANUC Series 16/18 operator's manual for lathe (brackets: five levels, alarm 118); FANUC Series 16i (G65 arguments)",
     };
 }

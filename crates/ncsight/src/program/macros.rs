@@ -5,7 +5,7 @@
 use crate::alarm::{AlarmStyle, Diagnostic, Rule};
 use crate::modal::{Modal, Motion};
 use crate::motion::Plane;
-use crate::profile::{GFn, Profile};
+use crate::profile::{GFn, Group, Profile};
 use crate::read::expr::{self, Arena, ErrorKind, ExprError, Value};
 use crate::read::{MacroWord, Word};
 use crate::source::Span;
@@ -47,6 +47,8 @@ pub(super) struct Reading<'a> {
     /// The running programme's O number and the last sequence number read.
     pub program: Option<u32>,
     pub last_n: Option<u32>,
+    /// A G66 modal call is in force (group 12: G66, else G67).
+    pub modal_call: bool,
 }
 
 fn no_such(number: i64, why: &str) -> ExprError {
@@ -56,6 +58,60 @@ fn no_such(number: i64, why: &str) -> ExprError {
 /// A G code's number as the profile's table names the function (`G01` -> 1, `G32.1` -> 32.1).
 fn code_of(profile: &Profile, f: GFn) -> Option<f64> {
     profile.name_of(f).strip_prefix('G').and_then(|n| n.parse::<f64>().ok())
+}
+
+/// The groups ncsight accepts without modelling, and their codes at power on (the codes the
+/// FANUC G-code lists mark as set at power on; inferred where a parameter may change it).
+const POWER_ON: [(Group, f64); 4] = [(Group::CutterComp, 40.0), (Group::LengthComp, 49.0), (Group::WorkOffset, 54.0), (Group::PathMode, 64.0)];
+
+impl Reading<'_> {
+    /// #4001-#4022: the code in force in FANUC group `number - 4000`, as the profile numbers
+    /// its groups (#4000 + the group number; MACRO.md section 8).
+    fn group_code(&self, number: i64) -> Result<Value, ExprError> {
+        let (m, p) = (self.modal, self.profile);
+        let group = p.macros.group_numbers.iter().find(|(n, _)| i64::from(*n) + 4000 == number).map(|(_, g)| *g);
+        let Some(group) = group.filter(|g| p.g_codes.iter().flat_map(|t| t.iter()).any(|d| d.group == *g)) else {
+            return Err(no_such(number, &format!("{} has no G-code group {} (or ncsight does not know its codes)", p.name, number - 4000)));
+        };
+        let drill_code = m.drill.kind.map(|k| GFn::Drill(k)).filter(|f| p.g_codes.iter().flat_map(|t| t.iter()).any(|d| d.function == *f && d.group == group));
+        let f = match group {
+            // A lathe's drilling cycle is a group 01 code on the GSK profiles.
+            Group::Motion | Group::CannedCycle if drill_code.is_some() => drill_code,
+            Group::Motion => Some(match m.motion {
+                Motion::Rapid => GFn::Rapid,
+                Motion::Linear => GFn::Linear,
+                Motion::ArcCw => GFn::ArcCw,
+                Motion::ArcCcw => GFn::ArcCcw,
+                Motion::Thread(cmd) => GFn::Thread(cmd),
+                Motion::Box(kind) => GFn::BoxCycle(kind),
+            }),
+            Group::CannedCycle => Some(GFn::CycleCancel),
+            Group::Plane => Some(match m.plane {
+                Plane::XY => GFn::PlaneXY,
+                Plane::ZX => GFn::PlaneZX,
+                Plane::YZ => GFn::PlaneYZ,
+            }),
+            Group::Distance => Some(if m.incremental { GFn::Incremental } else { GFn::Absolute }),
+            Group::FeedMode => Some(if m.per_rev { GFn::FeedPerRevolution } else { GFn::FeedPerMinute }),
+            Group::Units => Some(if m.inch { GFn::Inch } else { GFn::Metric }),
+            Group::SpindleSpeedMode => Some(if m.css { GFn::ConstantSurfaceSpeed } else { GFn::ConstantRpm }),
+            Group::ReturnLevel => Some(if m.return_initial { GFn::ReturnInitial } else { GFn::ReturnR }),
+            Group::MacroCall => Some(if self.modal_call { GFn::ModalMacroCall } else { GFn::ModalMacroCancel }),
+            _ => None,
+        };
+        if let Some(f) = f {
+            // A group whose codes the profile lists as not simulated yet (G96/G97 on the mill).
+            return code_of(p, f).map(Some).ok_or_else(|| no_such(number, "the codes of this group are not simulated by ncsight yet"));
+        }
+        // The last code commanded in the group, else its power-on code.
+        match m.group_codes[group as usize] {
+            0 => match POWER_ON.iter().find(|(g, _)| *g == group) {
+                Some((_, code)) => Ok(Some(*code)),
+                None => Err(no_such(number, "the code in force in this group is not simulated by ncsight yet")),
+            },
+            code => Ok(Some(f64::from(code) / 10.0)),
+        }
+    }
 }
 
 impl expr::Variables for Reading<'_> {
@@ -74,26 +130,13 @@ impl expr::Variables for Reading<'_> {
             3001 => Some((self.clock_s * 1000.0 - self.vars.clock_ms_offset).max(0.0).floor()),
             3002 => Some(self.clock_s / 3600.0 - self.vars.clock_h_offset),
             3901 | 3902 => Some(self.vars.parts[(number - 3901) as usize]),
-            // Modal information (FANUC #4001-#4022, #4107-#4120).
-            4001 => match m.motion {
-                Motion::Rapid => code_of(self.profile, GFn::Rapid),
-                Motion::Linear => code_of(self.profile, GFn::Linear),
-                Motion::ArcCw => code_of(self.profile, GFn::ArcCw),
-                Motion::ArcCcw => code_of(self.profile, GFn::ArcCcw),
-                _ => return Err(no_such(number, "the group 01 code of a thread or box cycle is not given by ncsight yet")),
-            },
-            4002 => code_of(
-                self.profile,
-                match m.plane {
-                    Plane::XY => GFn::PlaneXY,
-                    Plane::ZX => GFn::PlaneZX,
-                    Plane::YZ => GFn::PlaneYZ,
-                },
-            ),
-            4003 => code_of(self.profile, if m.incremental { GFn::Incremental } else { GFn::Absolute }),
-            4005 => code_of(self.profile, if m.per_rev { GFn::FeedPerRevolution } else { GFn::FeedPerMinute }),
-            4006 => code_of(self.profile, if m.inch { GFn::Inch } else { GFn::Metric }),
-            4010 if !self.profile.is_lathe() => code_of(self.profile, if m.return_initial { GFn::ReturnInitial } else { GFn::ReturnR }),
+            // Modal information (FANUC #4001-#4022, #4102-#4120).
+            4001..=4022 => return self.group_code(number),
+            4102 => m.last_words.b,
+            4107 => m.last_words.d,
+            4108 => m.last_words.e,
+            4111 => m.last_words.h,
+            4113 => m.last_words.m,
             4109 => m.feed,
             4114 => self.last_n.map(f64::from),
             4115 => self.program.map(f64::from),

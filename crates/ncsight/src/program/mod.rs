@@ -894,6 +894,7 @@ impl Core {
             clock_s: self.clock_s,
             program: self.calls.running().and_then(|(n, _)| n),
             last_n: self.last_n,
+            modal_call: self.modal_call.is_some(),
         }
     }
 
