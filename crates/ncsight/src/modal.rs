@@ -22,7 +22,7 @@ pub enum Motion {
 /// The last block of a run of continuous thread blocks, held back until the next block shows
 /// whether the run goes on (then no pull-out and no wait for the one-revolution signal) or
 /// ends (then the pull-out in force is made). Seed 001 G32.1 note 1; TDi help G32 notes 1-2.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub struct PendingThread {
     pub span: Span,
     pub n: Option<u32>,
@@ -35,7 +35,7 @@ pub struct PendingThread {
     pub end_deg: f64,
 }
 
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub enum PendingBody {
     /// A straight pass; its pull-out is made only if the run ends here.
     Straight(Pass),
@@ -90,7 +90,7 @@ pub struct BoxMemory {
 }
 
 /// Thread words and memories that last from block to block.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ThreadState {
     /// Lead in force (F, I or E of a thread block), mm.
     pub lead_mm: Option<f64>,
@@ -106,16 +106,16 @@ pub struct ThreadState {
     pub rigid_rpm: Option<f64>,
     /// Boxed, as are the other large rarely-set parts: the modal state is copied for every block
     /// (atomic blocks), so it is kept small.
-    pub pending: Option<Box<PendingThread>>,
+    pub pending: Option<PendingThread>,
     pub memory: Option<PassMemory>,
     /// Four-step cycles started so far (each start of each block), to tell them apart.
     pub cycles: u32,
     /// G92 P1 / G92.1 P1 repair in force (P1 in the first block is enough: help note 4).
     pub repair: bool,
     /// G76 data set by its first block for the rest of the run (it rewrites the parameters).
-    pub g76: Option<Box<G76Data>>,
+    pub g76: Option<G76Data>,
     /// G78 data set by its first block (GSK980TDi), kept apart from G76's.
-    pub g78: Option<Box<G78Data>>,
+    pub g78: Option<G78Data>,
 }
 
 /// Hole data that stays from block to block while a drilling cycle is in force (seed 003): the
@@ -151,7 +151,7 @@ pub enum SpindleDir {
     Negative,
 }
 
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Modal {
     /// The feed (mm/min or mm/rev) an implausibility warning was last given for: once per value.
     pub feed_warned: Option<f64>,

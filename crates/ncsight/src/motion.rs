@@ -161,7 +161,7 @@ impl StopReason {
 }
 
 /// One operation of the stream.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Op {
     /// Positioning. `rates_mm_min` are the per-axis rates used (each axis at its own rate).
     Rapid { from: Vec3, to: Vec3 },

@@ -52,13 +52,13 @@ fn params_data(step: &Step) -> G76Data {
 fn data_in_force(step: &Step, kind: Compound) -> G78Data {
     match kind {
         Compound::G76 => {
-            let base = step.st.thread.g76.as_deref().copied().unwrap_or_else(|| params_data(step));
+            let base = step.st.thread.g76.unwrap_or_else(|| params_data(step));
             // The flank is chosen from the cut direction in `cut`.
             G78Data { base, schedule: Schedule::Decreasing, infeed: Infeed::Along(Flank::PlusZ), starts: 1 }
         }
         // A G76 first block rewrote the parameters G78 falls back on (No.57, 19, 58-60).
-        Compound::G78 => step.st.thread.g78.as_deref().copied().unwrap_or_else(|| G78Data {
-            base: step.st.thread.g76.as_deref().copied().unwrap_or_else(|| params_data(step)),
+        Compound::G78 => step.st.thread.g78.unwrap_or_else(|| G78Data {
+            base: step.st.thread.g76.unwrap_or_else(|| params_data(step)),
             schedule: Schedule::Decreasing,
             infeed: Infeed::Radial,
             starts: 1,
@@ -147,9 +147,9 @@ pub(super) fn compound(step: &mut Step, words: &mut Words, kind: Compound) -> Re
                 step.warn(Rule::NotSimulated, w.span, msg);
             }
         }
-        step.st.thread.g78 = Some(Box::new(data));
+        step.st.thread.g78 = Some(data);
     } else {
-        step.st.thread.g76 = Some(Box::new(data.base));
+        step.st.thread.g76 = Some(data.base);
     }
     Ok(())
 }

@@ -373,7 +373,7 @@ impl Interpreter {
         let repair = self.switches.repair_position;
         let mut step = Step { profile: self.profile, params: &self.params, repair, span: Span::default(), n: None, st: &mut self.state, out };
         if let Some(p) = step.st.thread.pending.take() {
-            thread::flush(&mut step, *p, true);
+            thread::flush(&mut step, p, true);
         }
     }
 
@@ -394,7 +394,7 @@ impl Interpreter {
         if self.collecting.is_some() {
             return self.collect_contour(block, out);
         }
-        let before = self.state.clone();
+        let before = self.state;
         let repair = self.switches.repair_position;
         let mut step = Step { profile: self.profile, params: &self.params, repair, span: block.span, n: block.sequence, st: &mut self.state, out };
         let result = run_block(&mut step, block, self.switches).and_then(|()| {
@@ -736,7 +736,7 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
         if goes_on {
             run_deg = Some(p.end_deg);
         }
-        thread::flush(step, *p, !goes_on);
+        thread::flush(step, p, !goes_on);
     }
     let rigid_thread = matches!(motion_now, Motion::Thread(cmd) if thread::is_rigid(cmd));
 
@@ -931,7 +931,7 @@ fn finish_block(step: &mut Step, words: &Words, codes: &Codes, after: Vec<(&Word
     // A stop or an end after a held-back thread run end: the run ends first.
     if !after.is_empty() {
         if let Some(p) = step.st.thread.pending.take() {
-            thread::flush(step, *p, true);
+            thread::flush(step, p, true);
         }
     }
     for (w, f) in after {

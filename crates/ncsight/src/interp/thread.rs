@@ -381,7 +381,7 @@ fn straight(step: &mut Step, words: &mut Words, cmd: ThreadCmd, run_deg: Option<
     let ends_run = rigid && (j_given || k_given) && (j.unwrap_or(0.0) != 0.0 || k.unwrap_or(0.0) != 0.0);
     let end_deg = phase_after(start_deg, length, lead);
     step.st.pos = target;
-    step.st.thread.pending = Some(Box::new(PendingThread { span: step.span, n: step.n, body: PendingBody::Straight(pass), ends_run, rigid, end_deg }));
+    step.st.thread.pending = Some(PendingThread { span: step.span, n: step.n, body: PendingBody::Straight(pass), ends_run, rigid, end_deg });
     Ok(())
 }
 
@@ -430,14 +430,14 @@ fn arc(step: &mut Step, words: &mut Words, dir: ArcDir, run_deg: Option<f64>) ->
     let long_travel = (to.axis(i) - from.axis(i)).abs();
     let op = Op::ThreadArc { from, to, center: g.center, plane, dir, lead_mm: lead, long_axis, spindle_deg: wrap_deg(start_deg), rpm };
     step.st.pos = to;
-    step.st.thread.pending = Some(Box::new(PendingThread {
+    step.st.thread.pending = Some(PendingThread {
         span: step.span,
         n: step.n,
         body: PendingBody::Arc(op),
         ends_run: false,
         rigid: false,
         end_deg: phase_after(start_deg, long_travel, lead),
-    }));
+    });
     Ok(())
 }
 

@@ -42,7 +42,7 @@ pub struct PullOut {
 }
 
 /// One pass of spindle-synchronised motion and what follows it.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Pass {
     pub from: Vec3,
     pub to: Vec3,
