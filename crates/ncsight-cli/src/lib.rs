@@ -79,7 +79,8 @@ struct MachineArgs {
     /// most, before the run stops with NCS-E63.
     #[arg(long, value_name = "N")]
     max_blocks: Option<u64>,
-    /// A common macro variable as set at the machine before the run (repeatable): 500=1.5.
+    /// A common macro variable as set at the machine before the run, or an input signal of the
+    /// machine (#1000-#1015, #1032) (repeatable): 500=1.5, 1002=1.
     #[arg(long = "var", value_name = "N=V", allow_hyphen_values = true)]
     vars: Vec<String>,
 }

@@ -372,3 +372,41 @@ fn modal_information_by_group_number() {
     let gsk: Vec<String> = lathe_moves("gsk980tdi").into_iter().filter(|s| s.contains(':')).collect();
     assert_eq!(gsk, t(&["4:46,0,97", "5:9,0,98", "7:0.5,0,8"]));
 }
+
+/// Interface signals: an input (#1000-#1015, #1032) is what the machine's switches give, which
+/// ncsight cannot know: alarm 115 unless the user gives it (`--var 1002=1`, here
+/// `set_variable`); a programme cannot write one (116). Outputs #1100-#1115 start off and read
+/// back what was written; #1132 is the 16 at once (#1100 the lowest bit): #1101 = 1 and #1103
+/// = 1 make #1132 = 2 + 8 = 10; writing #1132 = 5 sets #1100 and #1102.
+#[test]
+fn interface_signals() {
+    let run_vars = |vars: &[(i64, f64)], text: &str| -> Vec<String> {
+        let mut program = Program::new(Params::defaults(profile::by_name("fanuc0m").unwrap()), Switches::default(), Mode::Run);
+        for (n, v) in vars {
+            program.set_variable(*n, *v).unwrap();
+        }
+        events(program, text.as_bytes())
+            .filter_map(|e| match e {
+                Event::Record(r) => match r.op {
+                    Op::Rapid { to, .. } => Some(format!("{}:{},{},{}", r.span.line, to.x, to.y, to.z)),
+                    _ => None,
+                },
+                Event::Diagnostic(d) => Some(format!("{}:{}", d.span.line, d.code)),
+            })
+            .collect()
+    };
+    let read = "G21 G90 G00 X0 Y0 Z0\nG00 X#1002 Y#1032 Z1.\nM30\n";
+    assert_eq!(run_vars(&[], read), t(&["2:PS0115"]));
+    // #1032 from the 16 bits when each was given: only #1002 = 1 -> 4.
+    let all: Vec<(i64, f64)> = (1000..=1015).map(|n| (n, if n == 1002 { 1.0 } else { 0.0 })).collect();
+    assert_eq!(run_vars(&all, read), t(&["2:1,4,1"]));
+    assert_eq!(run_vars(&[(1002, 1.0), (1032, 7.0)], read), t(&["2:1,7,1"]));
+    assert_eq!(run_vars(&[], "G00 X0 Y0 Z0\n#1002 = 1\nM30\n"), t(&["2:PS0116"]));
+    let outputs = "G21 G90 G00 X0 Y0 Z0\nG00 X#1101 Y#1132 Z1.\n#1101 = 1\n#1103 = 1\nG00 X#1101 Y#1132\n#1132 = 5\nG00 X#1100 Y#1101 Z#1102\nM30\n";
+    assert_eq!(run_vars(&[], outputs), t(&["2:0,0,1", "5:1,10,1", "7:1,0,1"]));
+    assert_eq!(run_vars(&[], "G00 X0 Y0 Z0\n#1100 = 2\nM30\n"), t(&["2:PS0115"]));
+    // The operator's values are checked: a signal is 0 or 1.
+    let mut program = Program::new(Params::defaults(profile::by_name("fanuc0m").unwrap()), Switches::default(), Mode::Run);
+    assert!(program.set_variable(1002, 2.0).is_err());
+    assert!(program.set_variable(1100, 1.0).is_err());
+}

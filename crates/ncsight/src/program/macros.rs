@@ -29,11 +29,32 @@ pub(super) struct Variables {
     /// #3901 parts machined, #3902 parts required (0 at the start of a run: ncsight does not
     /// count parts across runs).
     parts: [f64; 2],
+    /// The machine's interface signals: inputs #1000-#1015 as the user gave them (`--var`),
+    /// the 16 at once in #1032; outputs #1100-#1115 (#1132 all 16), off at the start.
+    inputs: [Value; 16],
+    input_word: Value,
+    outputs: [bool; 16],
 }
+
+/// Interface signals (FANUC custom macro B; inferred for the GSK and YASNAC profiles, whose
+/// texts at hand list no numbers; MACRO.md section 3 "system: #1000 up").
+const INPUTS: std::ops::RangeInclusive<i64> = 1000..=1015;
+const INPUT_WORD: i64 = 1032;
+const OUTPUTS: std::ops::RangeInclusive<i64> = 1100..=1115;
+const OUTPUT_WORD: i64 = 1132;
 
 impl Default for Variables {
     fn default() -> Variables {
-        Variables { levels: vec![[None; 33]], common: vec![None; 1000], clock_ms_offset: 0.0, clock_h_offset: 0.0, parts: [0.0; 2] }
+        Variables {
+            levels: vec![[None; 33]],
+            common: vec![None; 1000],
+            clock_ms_offset: 0.0,
+            clock_h_offset: 0.0,
+            parts: [0.0; 2],
+            inputs: [None; 16],
+            input_word: None,
+            outputs: [false; 16],
+        }
     }
 }
 
@@ -130,6 +151,9 @@ impl expr::Variables for Reading<'_> {
             3001 => Some((self.clock_s * 1000.0 - self.vars.clock_ms_offset).max(0.0).floor()),
             3002 => Some(self.clock_s / 3600.0 - self.vars.clock_h_offset),
             3901 | 3902 => Some(self.vars.parts[(number - 3901) as usize]),
+            n if INPUTS.contains(&n) || n == INPUT_WORD => return self.vars.input(n),
+            n if OUTPUTS.contains(&n) => Some(f64::from(u8::from(self.vars.outputs[(n - 1100) as usize]))),
+            OUTPUT_WORD => Some(self.vars.outputs.iter().rev().fold(0.0, |w, on| w * 2.0 + f64::from(u8::from(*on)))),
             // Modal information (FANUC #4001-#4022, #4102-#4120).
             4001..=4022 => return self.group_code(number),
             4102 => m.last_words.b,
@@ -155,6 +179,36 @@ impl expr::Variables for Reading<'_> {
 }
 
 impl Variables {
+    /// Set an input signal before the run (`--var 1002=1`): what the machine's switches and
+    /// sensors would give.
+    pub fn set_input(&mut self, number: i64, value: f64) -> Result<(), String> {
+        if INPUTS.contains(&number) {
+            if value != 0.0 && value != 1.0 {
+                return Err(format!("#{number}={value}: an input signal is 0 or 1"));
+            }
+            self.inputs[(number - 1000) as usize] = Some(value);
+        } else if number == INPUT_WORD {
+            if value.fract() != 0.0 || !(0.0..=65_535.0).contains(&value) {
+                return Err(format!("#1032={value}: the 16 input signals are a whole number 0 to 65535"));
+            }
+            self.input_word = Some(value);
+        } else {
+            return Err(format!("#{number} is not an input signal (#1000-#1015, #1032)"));
+        }
+        Ok(())
+    }
+
+    /// An input signal: as given, #1032 from #1000-#1015 when each was given. One nobody gave
+    /// is alarm 115 with a hint, never a guessed 0.
+    fn input(&self, number: i64) -> Result<Value, ExprError> {
+        let given = if number == INPUT_WORD {
+            self.input_word.or_else(|| self.inputs.iter().rev().try_fold(0.0, |w, b| b.map(|b| w * 2.0 + b)))
+        } else {
+            self.inputs[(number - 1000) as usize]
+        };
+        given.map(Some).ok_or_else(|| no_such(number, &format!("an input signal of the machine, which ncsight cannot know: give it with --var {number}=1 (or 0)")))
+    }
+
     /// Set variable `number`. #3000 is the caller's (a user alarm).
     pub fn write(&mut self, number: i64, value: Value, clock_s: f64) -> Result<(), (Rule, String)> {
         match number {
@@ -181,6 +235,26 @@ impl Variables {
                 self.parts[(number - 3901) as usize] = value.unwrap_or(0.0);
                 Ok(())
             }
+            // An output signal is 0 or 1; vacant counts as 0 (FANUC custom macro B, inferred).
+            n if OUTPUTS.contains(&n) => {
+                let v = value.unwrap_or(0.0);
+                if v != 0.0 && v != 1.0 {
+                    return Err((Rule::IllegalVariable, format!("#{n} = {v}: an output signal is 0 or 1")));
+                }
+                self.outputs[(n - 1100) as usize] = v == 1.0;
+                Ok(())
+            }
+            OUTPUT_WORD => {
+                let v = value.unwrap_or(0.0);
+                if v.fract() != 0.0 || !(0.0..=65_535.0).contains(&v) {
+                    return Err((Rule::IllegalVariable, format!("#1132 = {v}: the 16 output signals are a whole number 0 to 65535")));
+                }
+                for (k, out) in self.outputs.iter_mut().enumerate() {
+                    *out = (v as u32 >> k) & 1 == 1;
+                }
+                Ok(())
+            }
+            n if INPUTS.contains(&n) || n == INPUT_WORD => Err((Rule::WriteProtected, format!("#{n} is an input signal of the machine: a programme can only read it"))),
             4001..=4120 | 5001..=5100 => Err((Rule::WriteProtected, format!("#{number} is a system variable that can only be read"))),
             n => Err((Rule::IllegalVariable, format!("#{n}: no such variable (locals #1-#33, common #100-#199 and #500-#999)"))),
         }

@@ -454,10 +454,14 @@ impl Program {
     }
 
     /// Set a common variable before the run, as the operator set it at the machine (#500-#999
-    /// keep their values through power off; #100-#199 too until a reset).
+    /// keep their values through power off; #100-#199 too until a reset), or an input signal
+    /// of the machine (#1000-#1015, #1032).
     pub fn set_variable(&mut self, number: i64, value: f64) -> Result<(), String> {
+        if value.is_finite() && ((1000..=1015).contains(&number) || number == 1032) {
+            return self.core.vars.set_input(number, value);
+        }
         if !value.is_finite() || !(100..=999).contains(&number) {
-            return Err(format!("#{number}={value}: only common variables #100-#199 and #500-#999 can be given, with a finite value"));
+            return Err(format!("#{number}={value}: only common variables #100-#199 and #500-#999 and the input signals #1000-#1015 and #1032 can be given, with a finite value"));
         }
         self.core.vars.write(number, Some(value), 0.0).map_err(|(_, msg)| msg)
     }
