@@ -11,6 +11,11 @@ fn machine_for(name: &str) -> &'static str {
     if FANUC_LATHE.iter().any(|p| name.starts_with(p)) {
         return "fanuc0t";
     }
+    // A FANUC 0i thread grinder (X, Z, C) written with G90/G91 and G92 as a coordinate preset:
+    // the FANUC 0-M's G-code system is the nearest (its C axis waits for issue 19).
+    if name.starts_with("sk7420-fanuc__") {
+        return "fanuc0m";
+    }
     const MILL: &[&str] = &[
         "printhor-asyncgcode__example3_nist_cycle_test.gcode",
         "enier-cnc__1006.nc",
@@ -57,5 +62,34 @@ fn corpus_checks_give_clear_answers() {
         let args: Vec<&str> = ["run", f.to_str().unwrap(), "--machine", machine, "--format", "jsonl"].into_iter().chain(params.iter().copied()).collect();
         let (code, _, err) = common::ncsight(&args);
         assert!(code == 0 || code == 1, "{name}: run exit {code}: {err}");
+    }
+}
+
+/// Files of many programmes whose first one calls none of the others: each programme a shop
+/// runs is checked as the main one (`--main`), so the macros and calls in them are read and
+/// run as far as their content allows (tests/corpus/<file>.O<n>.check; why each stops is in
+/// tests/corpus/README.md).
+#[test]
+fn corpus_programme_libraries_run_from_each_entry() {
+    const ENTRIES: &[(&str, &str, &[&str])] = &[
+        // The grinding machine's MAIN, its axis test loops (endless on the machine: the runaway
+        // guard, set low to keep the test quick), tool setting and the grinding cycle.
+        ("sk7420-fanuc__ALL-PROG.TXT", "0100", &[]),
+        ("sk7420-fanuc__ALL-PROG.TXT", "0800", &["--max-blocks", "20000"]),
+        ("sk7420-fanuc__ALL-PROG.TXT", "8100", &[]),
+        ("sk7420-fanuc__ALL-PROG.TXT", "8200", &[]),
+    ];
+    let corpus = common::shared().join("corpus");
+    let out_dir = common::root().join("tests/corpus");
+    for (name, main, extra) in ENTRIES {
+        let f = corpus.join(name);
+        let machine = machine_for(name);
+        let shown = format!("corpus/{name}");
+        let args: Vec<&str> = ["check", f.to_str().unwrap(), "--machine", machine, "--main", main].into_iter().chain(extra.iter().copied()).collect();
+        let (code, out, err) = common::ncsight(&args);
+        assert!(code == 0 || code == 1, "{name} O{main}: exit {code}: {err}");
+        let out = out.replace(f.to_str().unwrap(), &shown);
+        let shown_args: String = extra.iter().map(|a| format!(" {a}")).collect();
+        common::expect_file(&out_dir.join(format!("{name}.O{main}.check")), &format!("$ ncsight check {shown} --machine {machine} --main {main}{shown_args}\n{out}"));
     }
 }

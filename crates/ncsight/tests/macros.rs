@@ -410,3 +410,15 @@ fn interface_signals() {
     assert!(program.set_variable(1002, 2.0).is_err());
     assert!(program.set_variable(1100, 1.0).is_err());
 }
+
+/// On a lathe the controlled axes are X and Z: #5001 is X (a diameter), #5002 Z, #5003 vacant
+/// (no third axis); #5021/#5022 and #5041/#5042 likewise. After `G00 X40. Z-3.`: X[#5001/2] is
+/// X20, Z[#5002*2] is Z-6; `U#5003` with #5003 vacant disappears; #5122 (handle interruption
+/// of Z) is 0.
+#[test]
+fn lathe_positions_are_x_then_z() {
+    let text = "G00 X40. Z-3.\n#1 = #5001\n#2 = #5022\nG00 X[#1/2] Z[#2*2] U#5003\nG00 X[#5041*2] Z[#5042+#5122-1]\nM30\n";
+    // Line 5: #5041 is the diameter 20, so X40 (radius 20); Z -6 + 0 - 1.
+    let moves: Vec<String> = trace("fanuc0t", text);
+    assert_eq!(moves, t(&["1:20,0,-3", "4:10,0,-6", "5:20,0,-7"]));
+}

@@ -86,6 +86,11 @@ fn code_of(profile: &Profile, f: GFn) -> Option<f64> {
 const POWER_ON: [(Group, f64); 4] = [(Group::CutterComp, 40.0), (Group::LengthComp, 49.0), (Group::WorkOffset, 54.0), (Group::PathMode, 64.0)];
 
 impl Reading<'_> {
+    /// The profile's controlled axes in their order, as indices of a position (x 0, y 1, z 2).
+    fn controlled_axes(&self) -> &'static [usize] {
+        if self.profile.is_lathe() { &[0, 2] } else { &[0, 1, 2] }
+    }
+
     /// #4001-#4022: the code in force in FANUC group `number - 4000`, as the profile numbers
     /// its groups (#4000 + the group number; MACRO.md section 8).
     fn group_code(&self, number: i64) -> Result<Value, ExprError> {
@@ -168,11 +173,15 @@ impl expr::Variables for Reading<'_> {
             4120 => Some(f64::from(m.tool)),
             // Positions: the block end point, the machine and the current position. Without a
             // setup (work and tool offsets) the three are the same (MACRO.md section 8).
-            5001..=5003 => axis((number - 5001) as usize),
-            // A fourth to sixth axis the profile does not have: vacant.
-            5004..=5006 | 5024..=5026 | 5044..=5046 => None,
-            5021..=5023 => axis((number - 5021) as usize),
-            5041..=5043 => axis((number - 5041) as usize),
+            // The controlled axes in their order: X Y Z on the mill, X Z on a lathe (#5002 is a
+            // lathe's Z, as SK7420's `#681=#5022(Current Z ...)` reads it). An axis the profile
+            // does not have is vacant.
+            5001..=5006 | 5021..=5026 | 5041..=5046 => {
+                let k = ((number - 5001) % 20) as usize;
+                self.controlled_axes().get(k).and_then(|a| axis(*a))
+            }
+            // The manual handle interruption (FANUC #5121-#5125): none in a simulation.
+            5121..=5126 => self.controlled_axes().get((number - 5121) as usize).map(|_| 0.0),
             _ => return Err(no_such(number, "no such variable on this control, or a system variable ncsight does not simulate yet")),
         })
     }
@@ -255,7 +264,7 @@ impl Variables {
                 Ok(())
             }
             n if INPUTS.contains(&n) || n == INPUT_WORD => Err((Rule::WriteProtected, format!("#{n} is an input signal of the machine: a programme can only read it"))),
-            4001..=4120 | 5001..=5100 => Err((Rule::WriteProtected, format!("#{number} is a system variable that can only be read"))),
+            4001..=4120 | 5001..=5140 => Err((Rule::WriteProtected, format!("#{number} is a system variable that can only be read"))),
             n => Err((Rule::IllegalVariable, format!("#{n}: no such variable (locals #1-#33, common #100-#199 and #500-#999)"))),
         }
     }
@@ -271,7 +280,13 @@ pub(super) fn expr_alarm(style: AlarmStyle, span: Span, e: &ExprError) -> Diagno
         ErrorKind::Nesting => Rule::BracketNesting,
         ErrorKind::Variable => Rule::IllegalVariable,
     };
-    Diagnostic::new(rule, style, span, e.message.clone())
+    let d = Diagnostic::new(rule, style, span, e.message.clone());
+    match e.kind {
+        // Most often a setting the programme expects the machine to hold (a vacant variable
+        // reads as 0 in arithmetic).
+        ErrorKind::DivideByZero => d.with_hint("a vacant variable counts as 0: a value kept at the machine (#500-#999) is given with --var N=V"),
+        _ => d,
+    }
 }
 
 /// Letters whose value is a whole number (codes, numbers, counts): a value from a variable is
