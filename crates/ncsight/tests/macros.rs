@@ -422,3 +422,120 @@ fn lathe_positions_are_x_then_z() {
     let moves: Vec<String> = trace("fanuc0t", text);
     assert_eq!(moves, t(&["1:20,0,-3", "4:10,0,-6", "5:20,0,-7"]));
 }
+
+mod expansion {
+    //! The property behind every macro construct: a programme written with variables, loops,
+    //! G65 calls and M98 repeats gives the same records (operations and times) as the same
+    //! moves written out as numbers. Values are whole micrometres, so the 0.001 mm rounding of
+    //! a variable's value in an address gives back the literal exactly.
+    use super::*;
+    use proptest::prelude::*;
+
+    /// Each record as the outputs show it (six decimals: an incremental move adds in binary
+    /// floating point, so 0.521 - 3.490 is -2.9690000000000003, which every output writes as
+    /// -2.969), each diagnostic by its code.
+    fn records(machine: &str, text: &str) -> Vec<String> {
+        run_mode(machine, Mode::Run, text)
+            .into_iter()
+            .map(|e| match e {
+                Event::Record(r) => {
+                    let to = r.op.end_point().map(|p| format!("{:.6} {:.6} {:.6}", p.x, p.y, p.z)).unwrap_or_default();
+                    let feed = match r.op {
+                        Op::Feed { feed_mm_min, .. } => format!(" F{feed_mm_min:.6}"),
+                        _ => String::new(),
+                    };
+                    format!("{} {to}{feed} t={:.6}", r.op.kind(), r.t_s)
+                }
+                Event::Diagnostic(d) => format!("{} {}", d.code, d.message),
+            })
+            .collect()
+    }
+
+    fn mm(um: i64) -> String {
+        format!("{:.3}", um as f64 / 1000.0)
+    }
+
+    /// One pattern repeated `n` times: moves to base + i * step (X, Y) and a feed at depth z.
+    #[derive(Debug, Clone)]
+    struct Pattern {
+        n: i64,
+        base_um: (i64, i64),
+        step_um: (i64, i64),
+        z_um: i64,
+        feed: i64,
+    }
+
+    fn pattern() -> impl Strategy<Value = Pattern> {
+        (1i64..6, (-50_000i64..50_000, -50_000i64..50_000), (-20_000i64..20_000, -20_000i64..20_000), -30_000i64..-1, 50i64..2000)
+            .prop_map(|(n, base_um, step_um, z_um, feed)| Pattern { n, base_um, step_um, z_um, feed })
+    }
+
+    /// The moves written out.
+    fn flat(p: &Pattern) -> String {
+        let mut s = String::new();
+        for i in 0..p.n {
+            let (x, y) = (p.base_um.0 + i * p.step_um.0, p.base_um.1 + i * p.step_um.1);
+            s.push_str(&format!("G00 X{} Y{} Z5.\nG01 Z{} F{}.\nG00 Z5.\n", mm(x), mm(y), mm(p.z_um), p.feed));
+        }
+        s
+    }
+
+    /// The moves of a WHILE loop over #1, the values computed from #2-#6.
+    fn with_while(p: &Pattern) -> String {
+        format!(
+            "#2 = {}\n#3 = {}\n#4 = {}\n#5 = {}\n#6 = {}\n#1 = 0\nWHILE [#1 LT {}] DO1\nG00 X[#2 + #1 * #4] Y[#3 + #1 * #5] Z5.\nG01 Z#6 F{}.\nG00 Z5.\n#1 = #1 + 1\nEND1\n",
+            mm(p.base_um.0),
+            mm(p.base_um.1),
+            mm(p.step_um.0),
+            mm(p.step_um.1),
+            mm(p.z_um),
+            p.n,
+            p.feed
+        )
+    }
+
+    /// A G65 call whose arguments (A B I J K, then C the count) a macro after M30 reads as
+    /// locals #1 #2 #4 #5 #6 #3, with an IF GOTO loop.
+    fn with_g65(p: &Pattern) -> (String, String) {
+        let call = format!("G65 P9100 A{} B{} I{} J{} K{} C{}.\n", mm(p.base_um.0), mm(p.base_um.1), mm(p.step_um.0), mm(p.step_um.1), mm(p.z_um), p.n);
+        let body = format!(
+            "O9100\n#10 = 0\nN10 G00 X[#1 + #10 * #4] Y[#2 + #10 * #5] Z5.\nG01 Z#6 F{}.\nG00 Z5.\n#10 = #10 + 1\nIF [#10 LT #3] GOTO10\nM99\n",
+            p.feed
+        );
+        (call, body)
+    }
+
+    /// M98 repeating an incremental step n times, from the base point.
+    fn with_m98(p: &Pattern) -> (String, String) {
+        let call = format!(
+            "G00 X{} Y{} Z5.\nG01 Z{} F{}.\nG00 Z5.\nM98 P{:04}0200\n",
+            mm(p.base_um.0),
+            mm(p.base_um.1),
+            mm(p.z_um),
+            p.feed,
+            p.n - 1
+        );
+        let body = format!("O0200\nG91 G00 X{} Y{}\nG90 G01 Z{} F{}.\nG00 Z5.\nM99\n", mm(p.step_um.0), mm(p.step_um.1), mm(p.z_um), p.feed);
+        (call, body)
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig { cases: 120, .. ProptestConfig::default() })]
+
+        #[test]
+        fn macros_and_calls_give_what_their_expansion_gives(p in pattern()) {
+            let head = "G21 G17 G90 G00 X0. Y0. Z5.\n";
+            let expected = records("fanuc0m", &format!("{head}{}M30\n", flat(&p)));
+            prop_assert!(expected.iter().all(|r| !r.starts_with("NCS-E") && !r.starts_with("PS")), "{expected:?}");
+            prop_assert_eq!(&records("fanuc0m", &format!("{head}{}M30\n", with_while(&p))), &expected);
+            let (call, body) = with_g65(&p);
+            prop_assert_eq!(&records("fanuc0m", &format!("{head}{call}M30\n{body}")), &expected);
+            // M98 P<count><number> with a count of 0 calls once: the first point is written
+            // out, so n = 1 needs no call at all.
+            if p.n > 1 {
+                let (call, body) = with_m98(&p);
+                prop_assert_eq!(&records("fanuc0m", &format!("{head}{call}M30\n{body}")), &expected);
+            }
+        }
+    }
+}

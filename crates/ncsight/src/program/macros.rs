@@ -322,7 +322,7 @@ pub(super) fn evaluate_word(arena: &Arena, w: &MacroWord, reading: &mut Reading,
         b'G' => ((v * 10.0).round() / 10.0, (v * 10.0).round() % 10.0 != 0.0),
         l if whole_address(l) && !arena.constant(w.node) => (v.round(), false),
         b'F' => (v, true),
-        _ => ((v / increment).round() * increment, true),
+        _ => (expr::round_to_step(v, increment), true),
     };
     Ok(Some(Word { letter: w.letter, value, decimal, expr: false, span: w.span }))
 }

@@ -188,6 +188,14 @@ pub fn eval(arena: &Arena, root: u32, vars: &mut dyn Variables) -> Result<Value,
     eval_rounding(arena, root, vars, 1.0)
 }
 
+/// `x` rounded to a whole number of `step` (1, 0.001 or 0.0001), half away from zero, as the
+/// nearest double to that decimal: 24.2660000001 to 0.001 gives the same value as `24.266`
+/// written out (a multiple of 0.001 times 0.001 would not).
+pub fn round_to_step(x: f64, step: f64) -> f64 {
+    let per = (1.0 / step).round();
+    (x * per).round() / per
+}
+
 /// [`eval`] in an NC address: ROUND rounds to the address's least increment `round_step`
 /// (FANUC's own example `X[ROUND[#1]+ROUND[#2]]`, as the HAAS manual copies it).
 pub fn eval_rounding(arena: &Arena, root: u32, vars: &mut dyn Variables, round_step: f64) -> Result<Value, ExprError> {
@@ -266,7 +274,7 @@ pub fn eval_rounding(arena: &Arena, root: u32, vars: &mut dyn Variables, round_s
                 }
                 Func::Abs => x.abs(),
                 // Half away from zero: ROUND[-1.5] = -2 (MACRO.md section 5).
-                Func::Round => (x / round_step).round() * round_step,
+                Func::Round => round_to_step(x, round_step),
                 // Toward zero and away from zero: FIX[-1.2] = -1, FUP[-1.2] = -2.
                 Func::Fix => x.trunc(),
                 Func::Fup => {
