@@ -2,14 +2,13 @@
 //! formats and diagnostics. `main.rs` only calls [`main_with`].
 
 pub mod diag;
-mod feed;
-pub mod format;
+pub use ncsight_io::{feed, format};
 mod output;
 pub mod report;
 pub mod simulate;
 
 use clap::{Parser, Subcommand};
-use ncsight::profile::{self, Params, Profile};
+use ncsight::profile::{self, Params};
 use ncsight::{Event, Mode, Program, Severity, Status, Switches};
 use std::io::{self, BufReader, Read, Write};
 
@@ -86,43 +85,25 @@ struct MachineArgs {
 }
 
 impl MachineArgs {
-    /// How programmes that call programmes run, and where called ones are looked for.
-    fn calls(&self) -> Result<(ncsight::CallOptions, feed::Library), Failure> {
-        let main = match &self.main {
-            None => None,
-            Some(t) => {
-                let digits = t.strip_prefix(['O', 'o']).unwrap_or(t);
-                match digits.parse::<u32>() {
-                    Ok(n) if !digits.is_empty() && digits.bytes().all(|b| b.is_ascii_digit()) && n <= 99_999_999 => Some(n),
-                    _ => return Err(usage(format!("--main {t}: expected a programme number such as O1234"))),
-                }
-            }
-        };
-        for d in &self.subprogram_dirs {
-            if !d.is_dir() {
-                return Err(usage(format!("--subprogram-dir {}: not a directory", d.display())));
-            }
+    /// The run these arguments describe (the machine resolved by [`setup`]).
+    fn job(&self, machine: &str) -> ncsight_io::Job {
+        ncsight_io::Job {
+            machine: machine.to_string(),
+            params: self.params.clone(),
+            switches: Switches { block_delete: self.block_delete, optional_stop: self.optional_stop, repair_position: None },
+            operator: ncsight::Options::default(),
+            main: self.main.clone(),
+            subprogram_dirs: self.subprogram_dirs.clone(),
+            skip_missing_subprograms: self.skip_missing_subprograms,
+            max_blocks: self.max_blocks,
+            vars: self.vars.clone(),
         }
-        let options = ncsight::CallOptions {
-            main,
-            skip_missing: self.skip_missing_subprograms,
-            max_repeated_blocks: self.max_blocks.unwrap_or(ncsight::program::MAX_REPEATED_BLOCKS),
-        };
-        Ok((options, feed::Library::new(self.subprogram_dirs.clone())))
     }
 
     /// The run's calls and variables as the arguments give them, set on `program`.
     fn prepare(&self, program: &mut Program) -> Result<feed::Library, Failure> {
-        let (options, library) = self.calls()?;
-        program.set_call_options(options);
-        for v in &self.vars {
-            let parsed = v.split_once('=').and_then(|(n, x)| Some((n.trim().trim_start_matches('#').parse::<i64>().ok()?, x.trim().parse::<f64>().ok()?)));
-            let Some((n, x)) = parsed else {
-                return Err(usage(format!("--var {v}: expected N=V, e.g. 500=1.5")));
-            };
-            program.set_variable(n, x).map_err(|e| usage(format!("--var {v}: {e}")))?;
-        }
-        Ok(library)
+        let machine = program.profile().name;
+        Ok(self.job(machine).prepare(program)?)
     }
 
     fn decoding(&self) -> Result<diag::Decoding, Failure> {
@@ -354,12 +335,21 @@ impl From<io::Error> for Failure {
     }
 }
 
+impl From<ncsight_io::JobError> for Failure {
+    fn from(e: ncsight_io::JobError) -> Failure {
+        match e {
+            ncsight_io::JobError::Usage(m) => Failure::Usage(m),
+            ncsight_io::JobError::Io(e) => Failure::Io(e),
+        }
+    }
+}
+
 fn usage(msg: impl Into<String>) -> Failure {
     Failure::Usage(msg.into())
 }
 
 fn names() -> String {
-    profile::all().iter().map(|p| p.name).collect::<Vec<_>>().join(", ")
+    ncsight_io::machine_names()
 }
 
 /// The profile and parameters the arguments name.
@@ -371,12 +361,7 @@ fn setup(m: &MachineArgs, err: &mut dyn Write) -> Result<(Params, Switches), Fai
             "gsk980tdi".to_string()
         }
     };
-    let profile: &'static Profile =
-        profile::by_name(&name).ok_or_else(|| usage(format!("unknown machine '{name}': choose one of {}", names())))?;
-    let mut params = Params::defaults(profile);
-    for p in &m.params {
-        params.set_text(p).map_err(|e| usage(format!("{} ({})", e, profile.name)))?;
-    }
+    let params = m.job(&name).parameters()?;
     let repair_position = m.repair_position.as_deref().map(|t| recorded(t, "--repair-position")).transpose()?;
     Ok((params, Switches { block_delete: m.block_delete, optional_stop: m.optional_stop, repair_position }))
 }

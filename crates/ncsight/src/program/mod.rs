@@ -544,6 +544,11 @@ impl Program {
         self.machine.time_s()
     }
 
+    /// The controller profile the programme runs on.
+    pub fn profile(&self) -> &'static crate::profile::Profile {
+        self.core.interp.profile()
+    }
+
     /// Feed the next line (with or without its line break).
     pub fn feed_line(&mut self, raw: &[u8], sink: &mut dyn FnMut(Event)) {
         self.feed_line_of(raw, raw.len() as u64, sink);

@@ -1,0 +1,166 @@
+//! A run as its caller describes it (the command line's options, the Python package's
+//! arguments): the controller, parameter overrides, switches, where called programmes are, the
+//! variables set at the machine. One place turns that into a [`Program`], so every front end
+//! refuses the same mistakes with the same words.
+
+use crate::feed::{self, FileName, Input, Library};
+use crate::format::{self, Format};
+use ncsight::machine::Options;
+use ncsight::profile::{self, Params, Profile};
+use ncsight::{CallOptions, Event, Mode, Program, Status, Switches};
+use std::io;
+use std::path::PathBuf;
+
+/// What a run needs besides its text.
+#[derive(Debug, Clone, Default)]
+pub struct Job {
+    /// The profile's name (`gsk980tdi`, `fanuc0m`, ...).
+    pub machine: String,
+    /// Parameter overrides as the manual numbers them: `N=V`, or `N.B=V` for a bit.
+    pub params: Vec<String>,
+    pub switches: Switches,
+    /// The operator's actions (single block, feed hold, overrides); a run only.
+    pub operator: Options,
+    /// The main programme when it is not the first in the text (`O1234` or `1234`).
+    pub main: Option<String>,
+    /// Where a called programme the text lacks is looked for.
+    pub subprogram_dirs: Vec<PathBuf>,
+    /// A called programme nobody holds is a warning, not the controller's alarm.
+    pub skip_missing_subprograms: bool,
+    /// The runaway guard's limit (blocks executed again after jumps back).
+    pub max_blocks: Option<u64>,
+    /// Variables set at the machine before the run: `N=V` (#100-#199, #500-#999, the input
+    /// signals #1000-#1015 and #1032).
+    pub vars: Vec<String>,
+}
+
+/// Why a job cannot run: a mistake in how it was asked for (unknown machine, bad parameter,
+/// unreadable file), or an error writing its output.
+#[derive(Debug)]
+pub enum JobError {
+    Usage(String),
+    Io(io::Error),
+}
+
+impl std::fmt::Display for JobError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            JobError::Usage(m) => f.write_str(m),
+            JobError::Io(e) => write!(f, "{e}"),
+        }
+    }
+}
+
+impl From<io::Error> for JobError {
+    fn from(e: io::Error) -> JobError {
+        JobError::Io(e)
+    }
+}
+
+fn usage(m: impl Into<String>) -> JobError {
+    JobError::Usage(m.into())
+}
+
+/// The profiles' names, for messages.
+pub fn machine_names() -> String {
+    profile::all().iter().map(|p| p.name).collect::<Vec<_>>().join(", ")
+}
+
+impl Job {
+    /// A job on `machine` with everything else as it is at power on.
+    pub fn on(machine: &str) -> Job {
+        Job { machine: machine.to_string(), ..Job::default() }
+    }
+
+    pub fn profile(&self) -> Result<&'static Profile, JobError> {
+        profile::by_name(&self.machine).ok_or_else(|| usage(format!("unknown machine '{}': choose one of {}", self.machine, machine_names())))
+    }
+
+    /// The profile's parameters with the overrides applied.
+    pub fn parameters(&self) -> Result<Params, JobError> {
+        let profile = self.profile()?;
+        let mut params = Params::defaults(profile);
+        for p in &self.params {
+            params.set_text(p).map_err(|e| usage(format!("{} ({})", e, profile.name)))?;
+        }
+        Ok(params)
+    }
+
+    /// How programmes that call programmes run, and where called ones are looked for.
+    pub fn calls(&self) -> Result<(CallOptions, Library), JobError> {
+        let main = match &self.main {
+            None => None,
+            Some(t) => {
+                let digits = t.strip_prefix(['O', 'o']).unwrap_or(t);
+                match digits.parse::<u32>() {
+                    Ok(n) if !digits.is_empty() && digits.bytes().all(|b| b.is_ascii_digit()) && n <= 99_999_999 => Some(n),
+                    _ => return Err(usage(format!("--main {t}: expected a programme number such as O1234"))),
+                }
+            }
+        };
+        for d in &self.subprogram_dirs {
+            if !d.is_dir() {
+                return Err(usage(format!("--subprogram-dir {}: not a directory", d.display())));
+            }
+        }
+        let options = CallOptions {
+            main,
+            skip_missing: self.skip_missing_subprograms,
+            max_repeated_blocks: self.max_blocks.unwrap_or(ncsight::program::MAX_REPEATED_BLOCKS),
+        };
+        Ok((options, Library::new(self.subprogram_dirs.clone())))
+    }
+
+    /// The run's calls and variables set on `program`; the library of called programmes.
+    pub fn prepare(&self, program: &mut Program) -> Result<Library, JobError> {
+        let (options, library) = self.calls()?;
+        program.set_call_options(options);
+        for v in &self.vars {
+            let parsed = v.split_once('=').and_then(|(n, x)| Some((n.trim().trim_start_matches('#').parse::<i64>().ok()?, x.trim().parse::<f64>().ok()?)));
+            let Some((n, x)) = parsed else {
+                return Err(usage(format!("--var {v}: expected N=V, e.g. 500=1.5")));
+            };
+            program.set_variable(n, x).map_err(|e| usage(format!("--var {v}: {e}")))?;
+        }
+        Ok(library)
+    }
+
+    /// The programme for a run (records through the operator machine) or a check
+    /// (diagnostics only), with its library.
+    pub fn program(&self, mode: Mode) -> Result<(Program, Library), JobError> {
+        let params = self.parameters()?;
+        let mut program = match mode {
+            Mode::Run => Program::with_operator(params, self.switches, Mode::Run, self.operator.clone()),
+            Mode::Check => Program::diagnostics_only(params, self.switches),
+        };
+        let library = self.prepare(&mut program)?;
+        Ok((program, library))
+    }
+
+    /// Run `input` and write it as JSONL lines: a run gives its records and diagnostics as
+    /// `run --format jsonl` writes them; a check its diagnostics as `check --format jsonl`,
+    /// each naming the file `name` (or the subprogramme file it comes from). Returns how the
+    /// programme ended.
+    pub fn jsonl(&self, input: Input, mode: Mode, name: &str, on_line: &mut dyn FnMut(&str) -> io::Result<()>) -> Result<Status, JobError> {
+        let (mut program, mut library) = self.program(mode)?;
+        let mut jsonl = format::Jsonl::new(self.profile()?);
+        let mut line = Vec::with_capacity(256);
+        let mut on_event = |e: &Event, _: &[u8], file: FileName| -> io::Result<()> {
+            line.clear();
+            match mode {
+                Mode::Run => jsonl.event(e, file, &mut line)?,
+                Mode::Check => match e {
+                    Event::Diagnostic(d) => line.extend_from_slice(format::jsonl::diagnostic_line(file.unwrap_or(name), d).as_bytes()),
+                    Event::Record(_) => return Ok(()),
+                },
+            }
+            // One object per line; the formatter ends each with a line break.
+            for l in line.split(|b| *b == b'\n').filter(|l| !l.is_empty()) {
+                on_line(std::str::from_utf8(l).map_err(|e| io::Error::new(io::ErrorKind::InvalidData, e))?)?;
+            }
+            Ok(())
+        };
+        feed::drive(input, &mut library, &mut program, &mut on_event).map_err(|e| if feed::is_read_failure(&e) { usage(format!("cannot read {name}: {e}")) } else { JobError::Io(e) })?;
+        Ok(program.status())
+    }
+}

@@ -1,0 +1,10 @@
+//! Between the core and its front ends (the command line, the Python package): programme text
+//! fed to a [`ncsight::Program`] from files, memory or streams (`feed`), the events written as
+//! text, JSONL or canonical calls (`format`), and a run described as its caller asks for it
+//! (`Job`). Nothing here knows which front end calls it.
+
+pub mod feed;
+pub mod format;
+mod job;
+
+pub use job::{machine_names, Job, JobError};
