@@ -1,0 +1,192 @@
+"""ncsight: see what a CNC programme will do before the machine does it.
+
+The engine is ncsight's Rust core, run as the controller would run the programme (GSK980TDi,
+GSK988T, FANUC 0-T and 0-M, YASNAC LX3): every motion, pull-out, spindle phase and alarm.
+Records and diagnostics are dicts with exactly the fields of ``ncsight run --format jsonl``
+and ``ncsight check --format jsonl`` (see docs/python.md in the repository).
+
+An alarm in the programme is a record (``kind == "alarm"``), not an exception; a mistake in
+how a run is asked for (unknown machine, bad parameter, unreadable file) raises ``ValueError``.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+from typing import Any, Dict, Iterable, Iterator, List, Mapping, Optional, Sequence, Union
+
+from . import _ncsight
+
+__all__ = ["run", "check", "iter_run", "iter_check", "machines", "to_arrays", "__version__"]
+__version__: str = _ncsight.__version__
+
+Text = Union[str, bytes]
+Params = Union[Mapping[str, float], Iterable[str], None]
+PathLike = Union[str, "os.PathLike[str]"]
+
+
+def machines() -> List[str]:
+    """The controller profiles: ``gsk980tdi``, ``gsk988t``, ``fanuc0t``, ``fanuc0m``, ``yasnac-lx3``."""
+    return list(_ncsight.machines())
+
+
+def _params(params: Params) -> List[str]:
+    """Parameter overrides as the command line takes them: ``{"18.6": 1}`` or ``["18.6=1"]``."""
+    if params is None:
+        return []
+    if isinstance(params, Mapping):
+        return [f"{k}={_number(v)}" for k, v in params.items()]
+    if isinstance(params, (str, bytes)):
+        raise ValueError("params: a mapping such as {'19': 10} or a list such as ['19=10']")
+    return [str(p) for p in params]
+
+
+def _number(v: Any) -> str:
+    if isinstance(v, bool) or not isinstance(v, (int, float)):
+        raise ValueError(f"a parameter's value is a number, not {v!r}")
+    return repr(float(v)) if isinstance(v, float) else str(v)
+
+
+def _variables(variables: Optional[Mapping[int, float]]) -> List[str]:
+    if not variables:
+        return []
+    return [f"{int(k)}={_number(v)}" for k, v in variables.items()]
+
+
+def _options(
+    machine: str,
+    params: Params,
+    setup: Any,
+    main: Optional[Union[int, str]],
+    subprogram_dirs: Optional[Sequence[PathLike]],
+    skip_missing_subprograms: bool,
+    max_blocks: Optional[int],
+    variables: Optional[Mapping[int, float]],
+    block_delete: bool,
+    optional_stop: bool,
+) -> Dict[str, Any]:
+    if setup is not None:
+        # INTERFACE.md: until a piece is built, using it is a clear error.
+        raise ValueError("setup: the machine setup file (work offsets, tools) is not simulated by ncsight yet; run without it")
+    if not isinstance(machine, str):
+        raise ValueError(f"machine: one of {', '.join(machines())}")
+    return dict(
+        params=_params(params),
+        main=None if main is None else str(main),
+        subprogram_dirs=[os.fspath(d) for d in (subprogram_dirs or [])],
+        skip_missing_subprograms=bool(skip_missing_subprograms),
+        max_blocks=max_blocks,
+        variables=_variables(variables),
+        block_delete=bool(block_delete),
+        optional_stop=bool(optional_stop),
+    )
+
+
+def run(
+    text: Text,
+    machine: str,
+    params: Params = None,
+    setup: Any = None,
+    *,
+    main: Optional[Union[int, str]] = None,
+    subprogram_dirs: Optional[Sequence[PathLike]] = None,
+    skip_missing_subprograms: bool = False,
+    max_blocks: Optional[int] = None,
+    variables: Optional[Mapping[int, float]] = None,
+    block_delete: bool = False,
+    optional_stop: bool = False,
+) -> List[Dict[str, Any]]:
+    """Run a programme's text on ``machine``: its records and diagnostics, in order, as
+    ``ncsight run --format jsonl`` gives them. ``text`` is a str, or bytes as read from a file
+    (GBK comments and all)."""
+    opts = _options(machine, params, setup, main, subprogram_dirs, skip_missing_subprograms, max_blocks, variables, block_delete, optional_stop)
+    lines, _ = _ncsight.jsonl_lines(machine, "run", "<text>", text=text, **opts)
+    return [json.loads(line) for line in lines]
+
+
+def check(
+    text: Text,
+    machine: str,
+    params: Params = None,
+    setup: Any = None,
+    *,
+    name: str = "<text>",
+    main: Optional[Union[int, str]] = None,
+    subprogram_dirs: Optional[Sequence[PathLike]] = None,
+    skip_missing_subprograms: bool = False,
+    max_blocks: Optional[int] = None,
+    variables: Optional[Mapping[int, float]] = None,
+    block_delete: bool = False,
+    optional_stop: bool = False,
+) -> List[Dict[str, Any]]:
+    """Check a programme's text on ``machine``: its diagnostics as ``ncsight check --format
+    jsonl`` gives them (``name`` is their ``file``)."""
+    opts = _options(machine, params, setup, main, subprogram_dirs, skip_missing_subprograms, max_blocks, variables, block_delete, optional_stop)
+    lines, _ = _ncsight.jsonl_lines(machine, "check", name, text=text, **opts)
+    return [json.loads(line) for line in lines]
+
+
+def _stream(mode: str, source: Union[Text, PathLike], machine: str, name: Optional[str], opts: Dict[str, Any]) -> Iterator[Dict[str, Any]]:
+    if isinstance(source, (str, bytes)) and not isinstance(source, os.PathLike):
+        stream = _ncsight.LineStream(machine, mode, name or "<text>", text=source, **opts)
+    else:
+        path = os.fspath(source)
+        stream = _ncsight.LineStream(machine, mode, name or path, path=path, **opts)
+    return (json.loads(line) for line in stream)
+
+
+def iter_run(
+    source: Union[Text, PathLike],
+    machine: str,
+    params: Params = None,
+    setup: Any = None,
+    *,
+    main: Optional[Union[int, str]] = None,
+    subprogram_dirs: Optional[Sequence[PathLike]] = None,
+    skip_missing_subprograms: bool = False,
+    max_blocks: Optional[int] = None,
+    variables: Optional[Mapping[int, float]] = None,
+    block_delete: bool = False,
+    optional_stop: bool = False,
+) -> Iterator[Dict[str, Any]]:
+    """Like :func:`run`, one record at a time while the programme runs on another thread, in
+    bounded memory. ``source`` is the text (str or bytes) or a path (``pathlib.Path``): a file
+    is read as it runs, and jumps back read it again, so a programme of any size fits."""
+    opts = _options(machine, params, setup, main, subprogram_dirs, skip_missing_subprograms, max_blocks, variables, block_delete, optional_stop)
+    return _stream("run", source, machine, None, opts)
+
+
+def iter_check(
+    source: Union[Text, PathLike],
+    machine: str,
+    params: Params = None,
+    setup: Any = None,
+    *,
+    name: Optional[str] = None,
+    main: Optional[Union[int, str]] = None,
+    subprogram_dirs: Optional[Sequence[PathLike]] = None,
+    skip_missing_subprograms: bool = False,
+    max_blocks: Optional[int] = None,
+    variables: Optional[Mapping[int, float]] = None,
+    block_delete: bool = False,
+    optional_stop: bool = False,
+) -> Iterator[Dict[str, Any]]:
+    """Like :func:`check`, one diagnostic at a time; a path is read as the check goes."""
+    opts = _options(machine, params, setup, main, subprogram_dirs, skip_missing_subprograms, max_blocks, variables, block_delete, optional_stop)
+    return _stream("check", source, machine, name, opts)
+
+
+_ARRAY_FIELDS = ("line", "t", "x", "y", "z")
+
+
+def to_arrays(records: Iterable[Mapping[str, Any]]) -> Dict[str, Any]:
+    """The motion records (rapid, feed, arc, thread, thread_arc) as NumPy arrays: ``kind``
+    (str), ``line``, ``t`` (s at the record's end), ``x``, ``y``, ``z`` (its end point; an axis
+    a record does not name is 0, as JSONL leaves it out). Needs numpy."""
+    import numpy as np  # optional dependency: pip install numpy
+
+    moves = [r for r in records if r.get("kind") in ("rapid", "feed", "arc", "thread", "thread_arc")]
+    out: Dict[str, Any] = {"kind": np.array([r["kind"] for r in moves], dtype=str)}
+    for f in _ARRAY_FIELDS:
+        out[f] = np.array([float(r.get(f, 0.0)) for r in moves], dtype=np.float64)
+    return out

@@ -1,0 +1,143 @@
+"""The Python package against the command line: the same records and diagnostics, field for
+field, on every golden programme and every bad programme of the repository.
+
+Run from the repository's root after installing the package (README, "Python"):
+    NCSIGHT_BIN=target/release/ncsight python -m pytest crates/ncsight-py/tests
+"""
+
+import json
+import os
+import pathlib
+import subprocess
+
+import pytest
+
+import ncsight
+
+ROOT = pathlib.Path(__file__).resolve().parents[3]
+BIN = os.environ.get("NCSIGHT_BIN", str(ROOT / "target" / "release" / "ncsight"))
+GOLDEN = sorted(p for p in (ROOT / "tests" / "golden").iterdir() if (p / "input.nc").exists())
+BAD = sorted((ROOT / "tests" / "bad").glob("*.nc"))
+
+
+def golden_args(case):
+    """The machine and parameters of a golden case (its `args` file: --machine M --param K=V)."""
+    words = (case / "args").read_text().split() if (case / "args").exists() else []
+    machine, params = "gsk980tdi", []
+    for flag, value in zip(words[::2], words[1::2]):
+        if flag == "--machine":
+            machine = value
+        elif flag == "--param":
+            params.append(value)
+        else:
+            raise AssertionError(f"{case.name}: unexpected argument {flag}")
+    return machine, params
+
+
+def cli(*args):
+    out = subprocess.run([BIN, *args], capture_output=True, check=False)
+    assert out.returncode in (0, 1), out.stderr.decode()
+    return [json.loads(line) for line in out.stdout.decode().splitlines() if line.strip()]
+
+
+def test_the_cli_is_there():
+    assert pathlib.Path(BIN).exists(), f"build the command line first (cargo build --release): {BIN}"
+
+
+@pytest.mark.parametrize("case", GOLDEN, ids=[c.name for c in GOLDEN])
+def test_run_gives_the_cli_records(case):
+    machine, params = golden_args(case)
+    text = (case / "input.nc").read_bytes()
+    records = ncsight.run(text, machine, params=params)
+    expected = [json.loads(l) for l in (case / "expected.jsonl").read_text().splitlines() if l.strip()]
+    assert records == expected
+    # The same from the file, streamed.
+    assert list(ncsight.iter_run(case / "input.nc", machine, params=params)) == expected
+
+
+@pytest.mark.parametrize("case", GOLDEN, ids=[c.name for c in GOLDEN])
+def test_check_gives_the_cli_diagnostics(case):
+    machine, params = golden_args(case)
+    path = str(case / "input.nc")
+    args = ["check", path, "--machine", machine, "--format", "jsonl"]
+    for p in params:
+        args += ["--param", p]
+    expected = cli(*args)
+    assert ncsight.check((case / "input.nc").read_bytes(), machine, params=params, name=path) == expected
+    assert list(ncsight.iter_check(pathlib.Path(path), machine, params=params)) == expected
+
+
+@pytest.mark.parametrize("bad", BAD, ids=[b.name for b in BAD])
+def test_an_alarm_is_a_record(bad):
+    first = bad.read_bytes().split(b"\n", 1)[0].decode()
+    spec = first.strip().strip("()").split()
+    code, line, col, machine = spec[1], int(spec[3]), int(spec[5]), spec[7]
+    records = ncsight.run(bad.read_bytes(), machine)
+    assert records == cli("run", str(bad), "--machine", machine, "--format", "jsonl")
+    last = records[-1]
+    assert (last["kind"], last["code"], last["line"], last["col"]) == ("alarm", code, line, col)
+
+
+def test_machines():
+    assert ncsight.machines() == ["gsk980tdi", "gsk988t", "fanuc0t", "fanuc0m", "yasnac-lx3"] or set(ncsight.machines()) == {
+        "gsk980tdi",
+        "gsk988t",
+        "fanuc0t",
+        "fanuc0m",
+        "yasnac-lx3",
+    }
+
+
+def test_example_of_the_readme():
+    text = (ROOT / "examples" / "gsk980tdi_o0012.nc").read_text(encoding="utf-8", errors="replace")
+    records = ncsight.run(text, "gsk980tdi")
+    assert len(records) > 0
+    assert records == cli("run", str(ROOT / "examples" / "gsk980tdi_o0012.nc"), "--machine", "gsk980tdi", "--format", "jsonl")
+
+
+def test_usage_errors_raise_value_error():
+    with pytest.raises(ValueError, match="unknown machine 'haas'"):
+        ncsight.run("G00 X0\n", "haas")
+    with pytest.raises(ValueError, match="parameter"):
+        ncsight.run("G00 X0\n", "gsk980tdi", params={"99999": 1})
+    with pytest.raises(ValueError, match="setup"):
+        ncsight.run("G00 X0\n", "gsk980tdi", setup="setup.toml")
+    with pytest.raises(ValueError, match="cannot read"):
+        list(ncsight.iter_run(pathlib.Path("/nonexistent/o1.nc"), "gsk980tdi"))
+
+
+def test_options_as_on_the_command_line(tmp_path):
+    sub = tmp_path / "O0100.nc"
+    sub.write_text("O0100\nG91 G01 X1. F100.\nG90 M99\n")
+    text = "O0001\nG21 G17 G90 G00 X0. Y0. Z10.\nM98 P0030100\n#500 = #500 + 1\nG00 X#500\nM30\n"
+    records = ncsight.run(text, "fanuc0m", subprogram_dirs=[tmp_path], variables={500: 4})
+    feeds = [r for r in records if r["kind"] == "feed"]
+    assert [r["x"] for r in feeds] == [1, 2, 3]
+    assert all(r["file"] == str(sub) for r in feeds)
+    assert [r["x"] for r in records if r["kind"] == "rapid"][-1] == 5
+    missing = ncsight.run(text, "fanuc0m", skip_missing_subprograms=True)
+    assert any(r.get("code") == "NCS-W27" for r in missing)
+
+
+def test_a_big_programme_streams(tmp_path):
+    big = tmp_path / "holes.nc"
+    with big.open("w") as f:
+        f.write("G21 G17 G90 G00 X0. Y0. Z10.\nF500.\nG98 G81 X1. Y1. Z-5. R2.\n")
+        for i in range(20000):
+            f.write(f"X{1 + i % 100}. Y{1 + i // 100}.\n")
+        f.write("G80\nM30\n")
+    n = 0
+    for r in ncsight.iter_run(big, "fanuc0m"):
+        n += 1
+        if n == 10:
+            break
+    assert n == 10
+    assert sum(1 for _ in ncsight.iter_run(big, "fanuc0m")) > 20000
+
+
+def test_to_arrays():
+    np = pytest.importorskip("numpy")
+    records = ncsight.run("G21 G90 G00 X1. Y2. Z3.\nG01 X4. F100.\nM30\n", "fanuc0m")
+    a = ncsight.to_arrays(records)
+    assert list(a["kind"]) == ["rapid", "feed"]
+    assert np.allclose(a["x"], [1.0, 4.0]) and np.allclose(a["z"], [3.0, 3.0])
