@@ -192,6 +192,20 @@ enum Command {
         #[command(flatten)]
         operator: OperatorArgs,
     },
+    /// Write the programme as it runs on the machine as plain moves for a controller that lacks
+    /// its cycles: LinuxCNC (G0-G3, G4, G33 threads) or grbl (G0-G3, G4).
+    Expand {
+        /// Programme file, or - for standard input.
+        file: String,
+        #[command(flatten)]
+        machine: MachineArgs,
+        /// The controller the moves are written for: linuxcnc or grbl.
+        #[arg(long = "to", value_name = "linuxcnc|grbl")]
+        to: String,
+        /// Write the programme to this file instead of standard output.
+        #[arg(short = 'o', long = "output")]
+        output: Option<String>,
+    },
     /// Report every alarm and warning with file:line:column; run nothing.
     Check {
         /// Programme files, or - for standard input.
@@ -299,6 +313,7 @@ pub fn main_with(args: impl IntoIterator<Item = std::ffi::OsString>, out: &mut d
     let result = match cli.command {
         Command::Run { file, machine, format, output, operator } => run(&file, &machine, &operator, &format, output.as_deref(), out, err),
         Command::Check { files, machine, format } => check(&files, &machine, &format, out, err),
+        Command::Expand { file, machine, to, output } => expand(&file, &machine, &to, output.as_deref(), out, err),
         Command::Machines { machine } => machines(machine.as_deref(), out),
         Command::Simulate { file, machine, setup: setup_file, stock, expect, format, image, resolution } => {
             simulate(&file, &machine, setup_file.as_deref(), stock.as_deref(), expect.as_deref(), &format, image.as_deref(), resolution.as_deref(), out, err)
@@ -449,10 +464,32 @@ fn run(
     err: &mut dyn Write,
 ) -> Result<i32, Failure> {
     let (params, switches) = setup(m, err)?;
-    let decoding = m.decoding()?;
     let operator = operator.options()?;
-    let profile = params.profile();
-    let mut fmt = format::by_name(format, profile).ok_or_else(|| usage(format!("unknown format '{format}': choose text, jsonl or canon")))?;
+    let mut fmt = format::by_name(format, params.profile()).ok_or_else(|| usage(format!("unknown format '{format}': choose text, jsonl or canon")))?;
+    let program = Program::with_operator(params, switches, Mode::Run, operator);
+    run_into(file, m, program, fmt.as_mut(), output, out, err)
+}
+
+/// `ncsight expand`: the run written as plain moves for `to` (docs/commands/expand.md).
+fn expand(file: &str, m: &MachineArgs, to: &str, output: Option<&str>, out: &mut dyn Write, err: &mut dyn Write) -> Result<i32, Failure> {
+    let target = format::expand::Target::by_name(to).ok_or_else(|| usage(format!("--to {to}: choose linuxcnc or grbl")))?;
+    let (params, switches) = setup(m, err)?;
+    let shown = if file == "-" { "<stdin>" } else { file };
+    let mut fmt = format::expand::Expand::new(params.profile(), target, shown);
+    let program = Program::new(params, switches, Mode::Run);
+    let status = run_into(file, m, program, &mut fmt, output, out, err)?;
+    let decoding = m.decoding()?;
+    for d in fmt.take_notes() {
+        err.write_all(diag::render(shown, b"", &d, diag::Style::Full, &decoding).as_bytes())?;
+    }
+    Ok(status)
+}
+
+/// Run `program` on `file` and write its events through `fmt` to `output` (or `out`); alarms,
+/// and diagnostics the format does not carry, go to `err`. A record the format refuses
+/// ([`format::expand::Refused`]) is an alarm there, and the run stops.
+fn run_into(file: &str, m: &MachineArgs, mut program: Program, fmt: &mut dyn format::Format, output: Option<&str>, out: &mut dyn Write, err: &mut dyn Write) -> Result<i32, Failure> {
+    let decoding = m.decoding()?;
     // Refused before anything is read; created only when there is something to write.
     let mut file_out = output.map(|path| output::LazyFile::new(path, &[file], OUTPUT_BUFFER_BYTES)).transpose().map_err(usage)?;
     let input = open(file)?;
@@ -464,12 +501,12 @@ fn run(
             &mut stdout_buf
         }
     };
-    let mut program = Program::with_operator(params, switches, Mode::Run, operator);
     let mut library = m.prepare(&mut program)?;
     let carries = fmt.carries_diagnostics();
     let shown = if file == "-" { "<stdin>" } else { file };
     let mut err = Tolerant::new(err);
-    drive(file, input, &mut library, &mut program, &mut |e, text, name| {
+    let mut refused = false;
+    let result = drive(file, input, &mut library, &mut program, &mut |e, text, name| {
         if let Event::Diagnostic(d) = e {
             if !carries || d.severity() == Severity::Alarm {
                 err.write_all(diag::render(name.unwrap_or(shown), text, d, diag::Style::Full, &decoding).as_bytes())?;
@@ -478,10 +515,18 @@ fn run(
                 return Ok(());
             }
         }
-        fmt.event(e, name, writer)
-    })?;
+        fmt.event(e, name, writer).inspect_err(|e| {
+            if let Some(d) = format::expand::Refused::of(e) {
+                refused = true;
+                let _ = err.write_all(diag::render(name.unwrap_or(shown), text, d, diag::Style::Full, &decoding).as_bytes());
+            }
+        })
+    });
     writer.flush()?;
-    Ok(if program.status() == Status::Alarm { EXIT_ALARM } else { EXIT_OK })
+    match result {
+        Err(Failure::Io(_)) if refused => Ok(EXIT_ALARM),
+        r => r.map(|()| if program.status() == Status::Alarm { EXIT_ALARM } else { EXIT_OK }),
+    }
 }
 
 fn check(files: &[String], m: &MachineArgs, format: &str, out: &mut dyn Write, err: &mut dyn Write) -> Result<i32, Failure> {

@@ -56,3 +56,48 @@ pub fn expect_file(path: &Path, actual: &str) {
         );
     }
 }
+
+/// The motion calls of a canonical-call text (ncsight's `--format canon` or `rs274 -g`):
+/// STRAIGHT_TRAVERSE, STRAIGHT_FEED, ARC_FEED and DWELL with their numbers; a straight move to
+/// where the last one ended (rs274 prints some, ncsight leaves them out) is dropped.
+pub fn motion_calls(text: &str) -> Vec<(String, Vec<f64>)> {
+    let mut last: Option<Vec<f64>> = None;
+    let mut out = Vec::new();
+    for (name, nums) in parse_calls(text) {
+        if name.starts_with("STRAIGHT_") {
+            if last.as_ref() == Some(&nums) {
+                continue;
+            }
+            last = Some(nums.clone());
+        } else if name == "ARC_FEED" {
+            last = None;
+        }
+        out.push((name, nums));
+    }
+    out
+}
+
+pub fn parse_calls(text: &str) -> Vec<(String, Vec<f64>)> {
+    text.lines()
+        .filter(|l| ["STRAIGHT_TRAVERSE(", "STRAIGHT_FEED(", "ARC_FEED(", "DWELL("].iter().any(|p| l.starts_with(p)))
+        .map(|l| {
+            let (name, rest) = l.split_once('(').unwrap();
+            let nums = rest.trim_end_matches(')').split(',').map(|n| n.trim().parse::<f64>().unwrap()).collect();
+            (name.to_string(), nums)
+        })
+        .collect()
+}
+
+/// Two lists of motion calls are the same, each number within 0.0002 (the four decimals of
+/// the canonical text); the number of calls compared.
+pub fn same_calls(what: &str, ours: &[(String, Vec<f64>)], theirs: &[(String, Vec<f64>)]) -> usize {
+    assert_eq!(ours.len(), theirs.len(), "{what}: {} calls vs rs274's {}", ours.len(), theirs.len());
+    for (i, ((n1, v1), (n2, v2))) in ours.iter().zip(theirs).enumerate() {
+        assert_eq!(n1, n2, "{what} call {}", i + 1);
+        assert_eq!(v1.len(), v2.len(), "{what} call {}", i + 1);
+        for (a, b) in v1.iter().zip(v2) {
+            assert!((a - b).abs() <= 2e-4, "{what} call {}: {n1} {v1:?} vs rs274 {v2:?}", i + 1);
+        }
+    }
+    ours.len()
+}

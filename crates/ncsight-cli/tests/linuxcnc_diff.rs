@@ -11,34 +11,6 @@
 
 mod common;
 
-fn motion_calls(text: &str) -> Vec<(String, Vec<f64>)> {
-    let mut last: Option<Vec<f64>> = None;
-    let mut out = Vec::new();
-    for (name, nums) in parse_calls(text) {
-        if name.starts_with("STRAIGHT_") {
-            if last.as_ref() == Some(&nums) {
-                continue;
-            }
-            last = Some(nums.clone());
-        } else if name == "ARC_FEED" {
-            last = None;
-        }
-        out.push((name, nums));
-    }
-    out
-}
-
-fn parse_calls(text: &str) -> Vec<(String, Vec<f64>)> {
-    text.lines()
-        .filter(|l| ["STRAIGHT_TRAVERSE(", "STRAIGHT_FEED(", "ARC_FEED(", "DWELL("].iter().any(|p| l.starts_with(p)))
-        .map(|l| {
-            let (name, rest) = l.split_once('(').unwrap();
-            let nums = rest.trim_end_matches(')').split(',').map(|n| n.trim().parse::<f64>().unwrap()).collect();
-            (name.to_string(), nums)
-        })
-        .collect()
-}
-
 #[test]
 fn canon_matches_rs274_traces() {
     let dir = common::root().join("tests/linuxcnc/cases");
@@ -65,17 +37,10 @@ fn canon_matches_rs274_traces() {
             "532=254",
         ]);
         assert_eq!(code, 0, "{}: {err}", ngc.display());
-        let ours = motion_calls(&out);
-        let theirs = motion_calls(&expected);
+        let ours = common::motion_calls(&out);
+        let theirs = common::motion_calls(&expected);
         assert_eq!(ours.len(), theirs.len(), "{}: {} calls vs rs274's {}\n{out}", ngc.display(), ours.len(), theirs.len());
-        for (i, ((n1, v1), (n2, v2))) in ours.iter().zip(&theirs).enumerate() {
-            assert_eq!(n1, n2, "{} call {}", ngc.display(), i + 1);
-            assert_eq!(v1.len(), v2.len(), "{} call {}", ngc.display(), i + 1);
-            for (a, b) in v1.iter().zip(v2) {
-                assert!((a - b).abs() <= 2e-4, "{} call {}: {n1} {v1:?} vs rs274 {v2:?}", ngc.display(), i + 1);
-            }
-            compared += 1;
-        }
+        compared += common::same_calls(&ngc.display().to_string(), &ours, &theirs);
     }
     assert!(compared > 5000, "only {compared} calls compared");
 }

@@ -19,29 +19,41 @@ fn to_py(e: JobError) -> PyErr {
     }
 }
 
-/// The job the keyword arguments describe.
-#[allow(clippy::too_many_arguments)]
-fn job(
-    machine: &str,
-    params: Vec<String>,
-    main: Option<String>,
-    subprogram_dirs: Vec<PathBuf>,
-    skip_missing_subprograms: bool,
-    max_blocks: Option<u64>,
-    variables: Vec<String>,
-    block_delete: bool,
-    optional_stop: bool,
-) -> Job {
-    Job {
-        machine: machine.to_string(),
-        params,
-        switches: ncsight::Switches { block_delete, optional_stop, repair_position: None },
-        operator: ncsight::Options::default(),
-        main,
-        subprogram_dirs,
-        skip_missing_subprograms,
-        max_blocks,
-        vars: variables,
+/// How a run is asked for: the machine and the command line's options, built once by the
+/// Python half (`ncsight._options`).
+#[pyclass(frozen)]
+struct Options {
+    job: Job,
+}
+
+#[pymethods]
+impl Options {
+    #[new]
+    #[pyo3(signature = (machine, params=Vec::new(), main=None, subprogram_dirs=Vec::new(), skip_missing_subprograms=false, max_blocks=None, variables=Vec::new(), block_delete=false, optional_stop=false))]
+    #[allow(clippy::too_many_arguments)]
+    fn new(
+        machine: &str,
+        params: Vec<String>,
+        main: Option<String>,
+        subprogram_dirs: Vec<PathBuf>,
+        skip_missing_subprograms: bool,
+        max_blocks: Option<u64>,
+        variables: Vec<String>,
+        block_delete: bool,
+        optional_stop: bool,
+    ) -> Options {
+        let job = Job {
+            machine: machine.to_string(),
+            params,
+            switches: ncsight::Switches { block_delete, optional_stop, repair_position: None },
+            operator: ncsight::Options::default(),
+            main,
+            subprogram_dirs,
+            skip_missing_subprograms,
+            max_blocks,
+            vars: variables,
+        };
+        Options { job }
     }
 }
 
@@ -90,29 +102,14 @@ fn source(text: Option<&Bound<'_, PyAny>>, path: Option<PathBuf>) -> PyResult<So
     }
 }
 
-/// The whole run as JSONL lines (the GIL is released while it runs).
+/// The whole run as JSONL lines (the GIL is released while it runs), and whether it ended in
+/// an alarm.
 #[pyfunction]
-#[pyo3(signature = (machine, mode, name, text=None, path=None, params=Vec::new(), main=None, subprogram_dirs=Vec::new(), skip_missing_subprograms=false, max_blocks=None, variables=Vec::new(), block_delete=false, optional_stop=false))]
-#[allow(clippy::too_many_arguments)]
-fn jsonl_lines(
-    py: Python<'_>,
-    machine: &str,
-    mode: &str,
-    name: &str,
-    text: Option<&Bound<'_, PyAny>>,
-    path: Option<PathBuf>,
-    params: Vec<String>,
-    main: Option<String>,
-    subprogram_dirs: Vec<PathBuf>,
-    skip_missing_subprograms: bool,
-    max_blocks: Option<u64>,
-    variables: Vec<String>,
-    block_delete: bool,
-    optional_stop: bool,
-) -> PyResult<(Vec<String>, bool)> {
+#[pyo3(signature = (options, mode, name, text=None, path=None))]
+fn jsonl_lines(py: Python<'_>, options: &Options, mode: &str, name: &str, text: Option<&Bound<'_, PyAny>>, path: Option<PathBuf>) -> PyResult<(Vec<String>, bool)> {
     let mode = mode_of(mode)?;
     let src = source(text, path)?;
-    let job = job(machine, params, main, subprogram_dirs, skip_missing_subprograms, max_blocks, variables, block_delete, optional_stop);
+    let job = &options.job;
     py.allow_threads(move || {
         let mut lines = Vec::new();
         let status = job.jsonl(src.input(), mode, name, &mut |l| {
@@ -136,26 +133,11 @@ const IN_FLIGHT: usize = 4096;
 #[pymethods]
 impl LineStream {
     #[new]
-    #[pyo3(signature = (machine, mode, name, text=None, path=None, params=Vec::new(), main=None, subprogram_dirs=Vec::new(), skip_missing_subprograms=false, max_blocks=None, variables=Vec::new(), block_delete=false, optional_stop=false))]
-    #[allow(clippy::too_many_arguments)]
-    fn new(
-        machine: &str,
-        mode: &str,
-        name: String,
-        text: Option<&Bound<'_, PyAny>>,
-        path: Option<PathBuf>,
-        params: Vec<String>,
-        main: Option<String>,
-        subprogram_dirs: Vec<PathBuf>,
-        skip_missing_subprograms: bool,
-        max_blocks: Option<u64>,
-        variables: Vec<String>,
-        block_delete: bool,
-        optional_stop: bool,
-    ) -> PyResult<LineStream> {
+    #[pyo3(signature = (options, mode, name, text=None, path=None))]
+    fn new(options: &Options, mode: &str, name: String, text: Option<&Bound<'_, PyAny>>, path: Option<PathBuf>) -> PyResult<LineStream> {
         let mode = mode_of(mode)?;
         let src = source(text, path)?;
-        let job = job(machine, params, main, subprogram_dirs, skip_missing_subprograms, max_blocks, variables, block_delete, optional_stop);
+        let job = options.job.clone();
         // A usage mistake is raised here, not on the first line.
         job.program(mode).map_err(to_py)?;
         let (tx, rx) = mpsc::sync_channel(IN_FLIGHT);
@@ -210,6 +192,7 @@ fn _ncsight(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(jsonl_lines, m)?)?;
     m.add_function(wrap_pyfunction!(machines, m)?)?;
     m.add_class::<LineStream>()?;
+    m.add_class::<Options>()?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())
 }

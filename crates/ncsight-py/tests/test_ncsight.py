@@ -102,6 +102,10 @@ def test_usage_errors_raise_value_error():
         ncsight.run("G00 X0\n", "gsk980tdi", params={"99999": 1})
     with pytest.raises(ValueError, match="setup"):
         ncsight.run("G00 X0\n", "gsk980tdi", setup="setup.toml")
+    with pytest.raises(TypeError, match="unexpected keyword argument 'subprogram_dir'"):
+        ncsight.run("G00 X0\n", "gsk980tdi", subprogram_dir="/tmp")
+    with pytest.raises(ValueError, match="--main O12x"):
+        ncsight.run("G00 X0\n", "gsk980tdi", main="O12x")
     with pytest.raises(ValueError, match="cannot read"):
         list(ncsight.iter_run(pathlib.Path("/nonexistent/o1.nc"), "gsk980tdi"))
 

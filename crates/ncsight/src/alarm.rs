@@ -115,6 +115,7 @@ rules! {
     ForeignDialect => Alarm, "NCS-E52", None, "PROGRAMME FOR ANOTHER CONTROL";
     NoReturn => Alarm, "NCS-E62", None, "SUBPROGRAMME ENDS WITHOUT M99";
     Runaway => Alarm, "NCS-E63", None, "TOO MANY BLOCKS EXECUTED";
+    NotExpandable => Alarm, "NCS-E76", None, "THE TARGET CONTROLLER CANNOT DO THIS";
     // --- warnings ---
     SameGroupTwice => Warning, "NCS-W01", None, "TWO G CODES OF ONE GROUP: THE LAST ONE COUNTS";
     IntegerLength => Warning, "NCS-W02", None, "LENGTH WITHOUT DECIMAL POINT";
@@ -144,6 +145,7 @@ rules! {
     SpeedClamped => Warning, "NCS-W26", None, "SPINDLE SPEED ABOVE THE MAXIMUM: CLAMPED";
     CallSkipped => Warning, "NCS-W27", None, "SUBPROGRAMME NOT FOUND: CALL SKIPPED";
     ThenOmitted => Warning, "NCS-W28", None, "IF WITHOUT THEN";
+    ExpandApproximate => Warning, "NCS-W29", None, "EXPANDED APPROXIMATELY FOR THE TARGET";
 }
 
 impl Rule {

@@ -1,6 +1,7 @@
 //! Output formats: consumers of the event stream. Each writes as events arrive.
 
 mod canon;
+pub mod expand;
 pub mod jsonl;
 mod text;
 

@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import json
 import os
-from typing import Any, Dict, Iterable, Iterator, List, Mapping, Optional, Sequence, Union
+from typing import Any, Dict, Iterable, Iterator, List, Mapping, Optional, Union
 
 from . import _ncsight
 
@@ -53,127 +53,69 @@ def _variables(variables: Optional[Mapping[int, float]]) -> List[str]:
     return [f"{int(k)}={_number(v)}" for k, v in variables.items()]
 
 
-def _options(
-    machine: str,
-    params: Params,
-    setup: Any,
-    main: Optional[Union[int, str]],
-    subprogram_dirs: Optional[Sequence[PathLike]],
-    skip_missing_subprograms: bool,
-    max_blocks: Optional[int],
-    variables: Optional[Mapping[int, float]],
-    block_delete: bool,
-    optional_stop: bool,
-) -> Dict[str, Any]:
+_OPTIONS = ("main", "subprogram_dirs", "skip_missing_subprograms", "max_blocks", "variables", "block_delete", "optional_stop")
+
+
+def _options(caller: str, machine: str, params: Params, setup: Any, options: Mapping[str, Any]) -> Any:
+    """The run as the native half takes it; the keyword options are those of the command line
+    (see the stub, ``__init__.pyi``, for their types)."""
+    unknown = sorted(set(options) - set(_OPTIONS))
+    if unknown:
+        raise TypeError(f"{caller}() got an unexpected keyword argument {unknown[0]!r} (options: {', '.join(_OPTIONS)})")
     if setup is not None:
         # INTERFACE.md: until a piece is built, using it is a clear error.
         raise ValueError("setup: the machine setup file (work offsets, tools) is not simulated by ncsight yet; run without it")
     if not isinstance(machine, str):
         raise ValueError(f"machine: one of {', '.join(machines())}")
-    return dict(
+    main = options.get("main")
+    max_blocks = options.get("max_blocks")
+    return _ncsight.Options(
+        machine,
         params=_params(params),
         main=None if main is None else str(main),
-        subprogram_dirs=[os.fspath(d) for d in (subprogram_dirs or [])],
-        skip_missing_subprograms=bool(skip_missing_subprograms),
-        max_blocks=max_blocks,
-        variables=_variables(variables),
-        block_delete=bool(block_delete),
-        optional_stop=bool(optional_stop),
+        subprogram_dirs=[os.fspath(d) for d in (options.get("subprogram_dirs") or [])],
+        skip_missing_subprograms=bool(options.get("skip_missing_subprograms", False)),
+        max_blocks=None if max_blocks is None else int(max_blocks),
+        variables=_variables(options.get("variables")),
+        block_delete=bool(options.get("block_delete", False)),
+        optional_stop=bool(options.get("optional_stop", False)),
     )
 
 
-def run(
-    text: Text,
-    machine: str,
-    params: Params = None,
-    setup: Any = None,
-    *,
-    main: Optional[Union[int, str]] = None,
-    subprogram_dirs: Optional[Sequence[PathLike]] = None,
-    skip_missing_subprograms: bool = False,
-    max_blocks: Optional[int] = None,
-    variables: Optional[Mapping[int, float]] = None,
-    block_delete: bool = False,
-    optional_stop: bool = False,
-) -> List[Dict[str, Any]]:
+def run(text: Text, machine: str, params: Params = None, setup: Any = None, **options: Any) -> List[Dict[str, Any]]:
     """Run a programme's text on ``machine``: its records and diagnostics, in order, as
     ``ncsight run --format jsonl`` gives them. ``text`` is a str, or bytes as read from a file
     (GBK comments and all)."""
-    opts = _options(machine, params, setup, main, subprogram_dirs, skip_missing_subprograms, max_blocks, variables, block_delete, optional_stop)
-    lines, _ = _ncsight.jsonl_lines(machine, "run", "<text>", text=text, **opts)
+    lines, _ = _ncsight.jsonl_lines(_options("run", machine, params, setup, options), "run", "<text>", text=text)
     return [json.loads(line) for line in lines]
 
 
-def check(
-    text: Text,
-    machine: str,
-    params: Params = None,
-    setup: Any = None,
-    *,
-    name: str = "<text>",
-    main: Optional[Union[int, str]] = None,
-    subprogram_dirs: Optional[Sequence[PathLike]] = None,
-    skip_missing_subprograms: bool = False,
-    max_blocks: Optional[int] = None,
-    variables: Optional[Mapping[int, float]] = None,
-    block_delete: bool = False,
-    optional_stop: bool = False,
-) -> List[Dict[str, Any]]:
+def check(text: Text, machine: str, params: Params = None, setup: Any = None, *, name: str = "<text>", **options: Any) -> List[Dict[str, Any]]:
     """Check a programme's text on ``machine``: its diagnostics as ``ncsight check --format
     jsonl`` gives them (``name`` is their ``file``)."""
-    opts = _options(machine, params, setup, main, subprogram_dirs, skip_missing_subprograms, max_blocks, variables, block_delete, optional_stop)
-    lines, _ = _ncsight.jsonl_lines(machine, "check", name, text=text, **opts)
+    lines, _ = _ncsight.jsonl_lines(_options("check", machine, params, setup, options), "check", name, text=text)
     return [json.loads(line) for line in lines]
 
 
-def _stream(mode: str, source: Union[Text, PathLike], machine: str, name: Optional[str], opts: Dict[str, Any]) -> Iterator[Dict[str, Any]]:
+def _stream(mode: str, source: Union[Text, PathLike], name: Optional[str], opts: Any) -> Iterator[Dict[str, Any]]:
     if isinstance(source, (str, bytes)) and not isinstance(source, os.PathLike):
-        stream = _ncsight.LineStream(machine, mode, name or "<text>", text=source, **opts)
+        stream = _ncsight.LineStream(opts, mode, name or "<text>", text=source)
     else:
         path = os.fspath(source)
-        stream = _ncsight.LineStream(machine, mode, name or path, path=path, **opts)
+        stream = _ncsight.LineStream(opts, mode, name or path, path=path)
     return (json.loads(line) for line in stream)
 
 
-def iter_run(
-    source: Union[Text, PathLike],
-    machine: str,
-    params: Params = None,
-    setup: Any = None,
-    *,
-    main: Optional[Union[int, str]] = None,
-    subprogram_dirs: Optional[Sequence[PathLike]] = None,
-    skip_missing_subprograms: bool = False,
-    max_blocks: Optional[int] = None,
-    variables: Optional[Mapping[int, float]] = None,
-    block_delete: bool = False,
-    optional_stop: bool = False,
-) -> Iterator[Dict[str, Any]]:
+def iter_run(source: Union[Text, PathLike], machine: str, params: Params = None, setup: Any = None, **options: Any) -> Iterator[Dict[str, Any]]:
     """Like :func:`run`, one record at a time while the programme runs on another thread, in
     bounded memory. ``source`` is the text (str or bytes) or a path (``pathlib.Path``): a file
     is read as it runs, and jumps back read it again, so a programme of any size fits."""
-    opts = _options(machine, params, setup, main, subprogram_dirs, skip_missing_subprograms, max_blocks, variables, block_delete, optional_stop)
-    return _stream("run", source, machine, None, opts)
+    return _stream("run", source, None, _options("iter_run", machine, params, setup, options))
 
 
-def iter_check(
-    source: Union[Text, PathLike],
-    machine: str,
-    params: Params = None,
-    setup: Any = None,
-    *,
-    name: Optional[str] = None,
-    main: Optional[Union[int, str]] = None,
-    subprogram_dirs: Optional[Sequence[PathLike]] = None,
-    skip_missing_subprograms: bool = False,
-    max_blocks: Optional[int] = None,
-    variables: Optional[Mapping[int, float]] = None,
-    block_delete: bool = False,
-    optional_stop: bool = False,
-) -> Iterator[Dict[str, Any]]:
+def iter_check(source: Union[Text, PathLike], machine: str, params: Params = None, setup: Any = None, *, name: Optional[str] = None, **options: Any) -> Iterator[Dict[str, Any]]:
     """Like :func:`check`, one diagnostic at a time; a path is read as the check goes."""
-    opts = _options(machine, params, setup, main, subprogram_dirs, skip_missing_subprograms, max_blocks, variables, block_delete, optional_stop)
-    return _stream("check", source, machine, name, opts)
+    return _stream("check", source, name, _options("iter_check", machine, params, setup, options))
 
 
 _ARRAY_FIELDS = ("line", "t", "x", "y", "z")

@@ -4,31 +4,10 @@ from typing import Iterator, List, Optional, Sequence, Tuple, Union
 
 __version__: str
 
-def machines() -> List[str]: ...
-def jsonl_lines(
-    machine: str,
-    mode: str,
-    name: str,
-    text: Optional[Union[str, bytes]] = None,
-    path: Optional[Union[str, PathLike[str]]] = None,
-    params: Sequence[str] = ...,
-    main: Optional[str] = None,
-    subprogram_dirs: Sequence[Union[str, PathLike[str]]] = ...,
-    skip_missing_subprograms: bool = False,
-    max_blocks: Optional[int] = None,
-    variables: Sequence[str] = ...,
-    block_delete: bool = False,
-    optional_stop: bool = False,
-) -> Tuple[List[str], bool]: ...
-
-class LineStream(Iterator[str]):
+class Options:
     def __init__(
         self,
         machine: str,
-        mode: str,
-        name: str,
-        text: Optional[Union[str, bytes]] = None,
-        path: Optional[Union[str, PathLike[str]]] = None,
         params: Sequence[str] = ...,
         main: Optional[str] = None,
         subprogram_dirs: Sequence[Union[str, PathLike[str]]] = ...,
@@ -38,5 +17,11 @@ class LineStream(Iterator[str]):
         block_delete: bool = False,
         optional_stop: bool = False,
     ) -> None: ...
+
+def machines() -> List[str]: ...
+def jsonl_lines(options: Options, mode: str, name: str, text: Optional[Union[str, bytes]] = None, path: Optional[Union[str, PathLike[str]]] = None) -> Tuple[List[str], bool]: ...
+
+class LineStream(Iterator[str]):
+    def __init__(self, options: Options, mode: str, name: str, text: Optional[Union[str, bytes]] = None, path: Optional[Union[str, PathLike[str]]] = None) -> None: ...
     def __iter__(self) -> "LineStream": ...
     def __next__(self) -> str: ...
