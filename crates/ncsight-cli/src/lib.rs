@@ -477,12 +477,7 @@ fn expand(file: &str, m: &MachineArgs, to: &str, output: Option<&str>, out: &mut
     let shown = if file == "-" { "<stdin>" } else { file };
     let mut fmt = format::expand::Expand::new(params.profile(), target, shown);
     let program = Program::new(params, switches, Mode::Run);
-    let status = run_into(file, m, program, &mut fmt, output, out, err)?;
-    let decoding = m.decoding()?;
-    for d in fmt.take_notes() {
-        err.write_all(diag::render(shown, b"", &d, diag::Style::Full, &decoding).as_bytes())?;
-    }
-    Ok(status)
+    run_into(file, m, program, &mut fmt, output, out, err)
 }
 
 /// Run `program` on `file` and write its events through `fmt` to `output` (or `out`); alarms,
@@ -515,13 +510,27 @@ fn run_into(file: &str, m: &MachineArgs, mut program: Program, fmt: &mut dyn for
                 return Ok(());
             }
         }
-        fmt.event(e, name, writer).inspect_err(|e| {
+        let written = fmt.event(e, name, writer).inspect_err(|e| {
             if let Some(d) = format::expand::Refused::of(e) {
                 refused = true;
                 let _ = err.write_all(diag::render(name.unwrap_or(shown), text, d, diag::Style::Full, &decoding).as_bytes());
             }
-        })
+        });
+        for d in fmt.take_notes() {
+            err.write_all(diag::render(name.unwrap_or(shown), text, &d, diag::Style::Full, &decoding).as_bytes())?;
+        }
+        written
     });
+    let why = if refused {
+        Some("the target cannot do the block above: the expansion stops here")
+    } else if program.status() == Status::Alarm {
+        Some("the programme stops here with an alarm on its controller")
+    } else {
+        None
+    };
+    if result.is_ok() || refused {
+        fmt.finish(why, writer)?;
+    }
     writer.flush()?;
     match result {
         Err(Failure::Io(_)) if refused => Ok(EXIT_ALARM),

@@ -69,7 +69,7 @@ fn linuxcnc_reads_the_expansion_back_as_the_original_moves() {
         }
         assert!(!err.contains("NCS-E76"), "{name}: {err}");
         assert!(text.starts_with("(expanded by ncsight from"), "{name}: {text}");
-        assert!(text.lines().filter(|l| !l.starts_with('(')).all(|l| !l.contains("G92") && !l.contains("G76") && !l.contains("G81")), "{name}: a cycle left in\n{text}");
+        assert!(text.lines().filter(|l| !l.starts_with('(')).all(|l| !l.contains("G76") && !l.contains("G81") && !l.contains("G71")), "{name}: a cycle left in\n{text}");
         let Some(rs274) = rs274 else { continue };
         let ngc = tmp.join(format!("{name}.ngc"));
         std::fs::write(&ngc, &text).unwrap();
@@ -78,14 +78,45 @@ fn linuxcnc_reads_the_expansion_back_as_the_original_moves() {
         // rs274 prefixes each call with a count and the N column: keep what follows.
         let theirs_text: String = theirs_text.lines().map(|l| l.trim_start().split_once("N..... ").map_or(l, |(_, r)| r)).collect::<Vec<_>>().join("\n");
         let stderr = String::from_utf8_lossy(&out.stderr);
+        assert!(out.status.success(), "{name}: rs274 refused the expansion: {}\n{theirs_text}", stderr.trim());
         let what = format!("{name} (rs274 said: {})", stderr.trim());
-        compared += common::same_calls(&what, &common::motion_calls(&canon), &common::motion_calls(&theirs_text));
+        let (mut ours, mut theirs) = (common::motion_calls(&canon), common::motion_calls(&rigid_taps_as_feeds(&theirs_text)));
+        if text.contains("G33.1") {
+            // LinuxCNC's G33.1 reverses at the bottom at once: a dwell there is left out (NCS-W29).
+            ours.retain(|(n, _)| n != "DWELL");
+            theirs.retain(|(n, _)| n != "DWELL");
+        }
+        compared += common::same_calls(&what, &ours, &theirs);
         files += 1;
     }
     let _ = std::fs::remove_dir_all(&tmp);
     if rs274.is_some() {
         assert!(files >= 20 && compared > 500, "only {files} programmes, {compared} calls compared");
     }
+}
+
+/// rs274's `RIGID_TAP(x, y, z)` (a G33.1 stroke) as the two feeds it makes: to the bottom and
+/// back to where it began, as ncsight's canonical text writes a tapping stroke.
+fn rigid_taps_as_feeds(text: &str) -> String {
+    let mut out = String::new();
+    let mut at = String::from("0.0000, 0.0000, 0.0000");
+    for line in text.lines() {
+        if let Some(rest) = line.strip_prefix("RIGID_TAP(") {
+            let nums: Vec<&str> = rest.trim_end_matches(')').split(',').map(str::trim).collect();
+            out.push_str(&format!("STRAIGHT_FEED({}, {}, {}, 0.0000, 0.0000, 0.0000)\n", nums[0], nums[1], nums[2]));
+            out.push_str(&format!("STRAIGHT_FEED({at}, 0.0000, 0.0000, 0.0000)\n"));
+            continue;
+        }
+        if line.starts_with("STRAIGHT_") || line.starts_with("ARC_FEED(") {
+            let args: Vec<&str> = line.split_once('(').map_or("", |(_, r)| r).trim_end_matches(')').split(',').map(str::trim).collect();
+            if line.starts_with("STRAIGHT_") && args.len() >= 3 {
+                at = format!("{}, {}, {}", args[0], args[1], args[2]);
+            }
+        }
+        out.push_str(line);
+        out.push('\n');
+    }
+    out
 }
 
 /// grbl 1.1's G and M codes and words (its documentation's list of supported commands).
@@ -190,5 +221,45 @@ fn expand_says_what_it_cannot_do() {
             "M30",
         ]
     );
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// A coordinate shift (G50 on the FANUC 0-T) in mid-programme: the moves after it are in the
+/// shifted coordinates, so the expansion shifts the target the same way (`G92 X0 Z0` where the
+/// tool stands), and LinuxCNC then moves as ncsight says. A programme without M30 gets one,
+/// with a comment, so the target does not stop on a missing end.
+#[test]
+fn a_coordinate_shift_is_carried_over() {
+    let dir = std::env::temp_dir().join(format!("ncsight-expand-shift-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let f = dir.join("g50.nc");
+    std::fs::write(&f, "G00 X40. Z10. S500 M03\nG50 X0 Z0\nG01 X10. Z-5. F0.2\nG00 X20.\n").unwrap();
+    let (code, text, err) = common::ncsight(&["expand", f.to_str().unwrap(), "--machine", "fanuc0t", "--to", "linuxcnc"]);
+    assert_eq!(code, 0, "{err}");
+    let body: Vec<&str> = text.lines().skip(3).collect();
+    assert_eq!(
+        body,
+        [
+            "(line 1)",
+            "S500 M3",
+            "G0 X20 Z10",
+            "(line 3)",
+            "G92 X0 Z0 (the programme's coordinates were shifted here)",
+            "G1 X5 Z-5 F100",
+            "(line 4)",
+            "G0 X10 Z-5",
+            "(the programme has no M02 or M30: its controller stops after its last block)",
+            "M30",
+        ]
+    );
+    if let Some(rs274) = rs274() {
+        let ngc = dir.join("g50.ngc");
+        std::fs::write(&ngc, &text).unwrap();
+        let out = std::process::Command::new(rs274).arg("-g").arg(&ngc).output().unwrap();
+        assert!(out.status.success());
+        let theirs: String = String::from_utf8_lossy(&out.stdout).lines().map(|l| l.trim_start().split_once("N..... ").map_or(l, |(_, r)| r)).collect::<Vec<_>>().join("\n");
+        let (_, canon, _) = common::ncsight(&["run", f.to_str().unwrap(), "--machine", "fanuc0t", "--format", "canon"]);
+        common::same_calls("g50", &common::motion_calls(&canon), &common::motion_calls(&theirs));
+    }
     let _ = std::fs::remove_dir_all(&dir);
 }

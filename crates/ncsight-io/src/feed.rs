@@ -226,6 +226,7 @@ pub fn drive(
         if pending.is_ok() {
             pending = on_event(e, text, None);
         }
+        pending.is_ok()
     })?
     else {
         return pending;
@@ -237,7 +238,9 @@ pub fn drive(
 
 /// The forward phase: lines read ahead on a second thread. Returns the run's first request to
 /// read elsewhere, if it makes one (the run is then not finished).
-fn stream_forward(input: Box<dyn BufRead + Send>, source: &Source, program: &mut Program, on_event: &mut dyn FnMut(&Event, &[u8])) -> io::Result<Option<Request>> {
+/// `on_event` says whether its consumer wants more: once it does not (a reader that went away,
+/// a record the output cannot take), the run stops at the end of that line.
+fn stream_forward(input: Box<dyn BufRead + Send>, source: &Source, program: &mut Program, on_event: &mut dyn FnMut(&Event, &[u8]) -> bool) -> io::Result<Option<Request>> {
     let reader = program.line_reader();
     let (full_tx, full_rx) = mpsc::sync_channel::<io::Result<Batch>>(BATCHES_IN_FLIGHT);
     let (empty_tx, empty_rx) = mpsc::channel::<Batch>();
@@ -263,6 +266,7 @@ fn stream_forward(input: Box<dyn BufRead + Send>, source: &Source, program: &mut
             line_no = line_no.wrapping_add(1);
             let line = &batch.text[range.clone()];
             let (ranges, text) = (&batch.ranges, &batch.text);
+            let mut consumer_gone = false;
             program.feed_from(&batch.read, i, &mut |e| {
                 // A diagnostic about an earlier line (a cycle that ends here) gets that line's
                 // text while the line is still in this batch, none once it is gone.
@@ -276,8 +280,12 @@ fn stream_forward(input: Box<dyn BufRead + Send>, source: &Source, program: &mut
                     }
                     _ => line,
                 };
-                on_event(&e, text);
+                consumer_gone |= !on_event(&e, text);
             });
+            if consumer_gone {
+                stopped = true;
+                break 'batches;
+            }
             if let Some(r) = program.take_request() {
                 // The reader ends at its next send (the channel is closed).
                 return Ok(Some(r));

@@ -8,6 +8,7 @@ use ncsight_io::feed::Input;
 use ncsight_io::{Job, JobError};
 use pyo3::exceptions::{PyOSError, PyValueError};
 use pyo3::prelude::*;
+use pyo3::types::{PyByteArray, PyBytes, PyString};
 use std::path::PathBuf;
 use std::sync::mpsc;
 use std::sync::Arc;
@@ -83,10 +84,13 @@ impl Source {
 fn source(text: Option<&Bound<'_, PyAny>>, path: Option<PathBuf>) -> PyResult<Source> {
     match (text, path) {
         (Some(t), None) => {
-            if let Ok(s) = t.extract::<String>() {
-                Ok(Source::Text(s.into_bytes()))
-            } else if let Ok(b) = t.extract::<Vec<u8>>() {
-                Ok(Source::Text(b))
+            if let Ok(s) = t.downcast::<PyString>() {
+                Ok(Source::Text(s.to_cow()?.as_bytes().to_vec()))
+            } else if let Ok(b) = t.downcast::<PyBytes>() {
+                // One copy of the buffer (not element by element).
+                Ok(Source::Text(b.as_bytes().to_vec()))
+            } else if let Ok(b) = t.downcast::<PyByteArray>() {
+                Ok(Source::Text(b.to_vec()))
             } else {
                 Err(PyValueError::new_err("the programme text is a str or bytes"))
             }
@@ -130,6 +134,9 @@ struct LineStream {
 
 const IN_FLIGHT: usize = 4096;
 
+/// The run thread's last line: the run ended (a channel that closes without it was broken).
+const END: &str = "\u{0}end";
+
 #[pymethods]
 impl LineStream {
     #[new]
@@ -144,13 +151,22 @@ impl LineStream {
         std::thread::Builder::new()
             .name("ncsight-run".into())
             .spawn(move || {
-                let result = job.jsonl(src.input(), mode, &name, &mut |l| {
-                    // The reader went away (the iterator was dropped): stop the run.
-                    tx.send(Ok(l.to_string())).map_err(|_| std::io::Error::new(std::io::ErrorKind::BrokenPipe, "closed"))
-                });
-                if let Err(e) = result {
-                    let _ = tx.send(Err(e));
-                }
+                let run = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+                    job.jsonl(src.input(), mode, &name, &mut |l| {
+                        // The reader went away (the iterator was dropped): stop the run.
+                        tx.send(Ok(l.to_string())).map_err(|_| std::io::Error::new(std::io::ErrorKind::BrokenPipe, "closed"))
+                    })
+                }));
+                let result = match run {
+                    Ok(r) => r,
+                    // A bug in ncsight: said, never taken for the end of the programme.
+                    Err(_) => Err(JobError::Io(std::io::Error::other("ncsight stopped on an internal error (a panic); please report the programme"))),
+                };
+                let end = match result {
+                    Ok(_) => Ok(END.to_string()),
+                    Err(e) => Err(e),
+                };
+                let _ = tx.send(end);
             })
             .map_err(|e| PyOSError::new_err(e.to_string()))?;
         Ok(LineStream { lines: Some(std::sync::Mutex::new(rx)) })
@@ -164,6 +180,10 @@ impl LineStream {
         let Some(rx) = &self.lines else { return Ok(None) };
         // Only this iterator takes from the channel: the lock is never contended.
         match py.allow_threads(|| rx.lock().map_err(|_| mpsc::RecvError).and_then(|r| r.recv())) {
+            Ok(Ok(line)) if line == END => {
+                self.lines = None;
+                Ok(None)
+            }
             Ok(Ok(line)) => Ok(Some(line)),
             Ok(Err(JobError::Io(e))) if e.kind() == std::io::ErrorKind::BrokenPipe => {
                 self.lines = None;
@@ -175,7 +195,7 @@ impl LineStream {
             }
             Err(_) => {
                 self.lines = None;
-                Ok(None)
+                Err(PyOSError::new_err("ncsight's run thread ended without finishing the programme"))
             }
         }
     }

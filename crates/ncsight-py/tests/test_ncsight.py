@@ -106,6 +106,15 @@ def test_usage_errors_raise_value_error():
         ncsight.run("G00 X0\n", "gsk980tdi", subprogram_dir="/tmp")
     with pytest.raises(ValueError, match="--main O12x"):
         ncsight.run("G00 X0\n", "gsk980tdi", main="O12x")
+    for bad in (-1, 1.5, True):
+        with pytest.raises(ValueError, match="max_blocks"):
+            ncsight.run("G00 X0\n", "gsk980tdi", max_blocks=bad)
+    with pytest.raises(ValueError, match="variables"):
+        ncsight.run("G00 X0\n", "fanuc0m", variables=[(500, 1)])
+    with pytest.raises(ValueError, match="name"):
+        ncsight.check("G00 X0\n", "fanuc0m", name=3)
+    with pytest.raises(ValueError, match="str or bytes"):
+        ncsight.run([71, 48], "fanuc0m")
     with pytest.raises(ValueError, match="cannot read"):
         list(ncsight.iter_run(pathlib.Path("/nonexistent/o1.nc"), "gsk980tdi"))
 
@@ -121,6 +130,13 @@ def test_options_as_on_the_command_line(tmp_path):
     assert [r["x"] for r in records if r["kind"] == "rapid"][-1] == 5
     missing = ncsight.run(text, "fanuc0m", skip_missing_subprograms=True)
     assert any(r.get("code") == "NCS-W27" for r in missing)
+
+
+def test_bytes_and_bytearray_are_text():
+    text = b"G21 G90 G00 X1. Y2. Z3.\nM30\n"
+    assert ncsight.run(text, "fanuc0m") == ncsight.run(bytearray(text), "fanuc0m") == ncsight.run(text.decode(), "fanuc0m")
+    # A str is always text, never a path.
+    assert list(ncsight.iter_run("G00 X1. Y2. Z3.\nM30\n", "fanuc0m"))[0]["kind"] == "rapid"
 
 
 def test_a_big_programme_streams(tmp_path):

@@ -20,6 +20,16 @@ pub trait Format {
     fn event(&mut self, e: &Event, file: Option<&str>, w: &mut dyn Write) -> io::Result<()>;
     /// Whether diagnostics are part of this format's output (otherwise they go to stderr).
     fn carries_diagnostics(&self) -> bool;
+    /// Warnings the format itself has about the events so far (what its target cannot express
+    /// exactly), to be shown with the line being run. None for most formats.
+    fn take_notes(&mut self) -> Vec<ncsight::Diagnostic> {
+        Vec::new()
+    }
+    /// The events have ended (the programme's end, an alarm, a refusal): write what closes the
+    /// output. `why` says why it stopped early, if it did.
+    fn finish(&mut self, _why: Option<&str>, _w: &mut dyn Write) -> io::Result<()> {
+        Ok(())
+    }
 }
 
 /// The format of that name for a profile.

@@ -69,14 +69,21 @@ def _options(caller: str, machine: str, params: Params, setup: Any, options: Map
         raise ValueError(f"machine: one of {', '.join(machines())}")
     main = options.get("main")
     max_blocks = options.get("max_blocks")
+    if max_blocks is not None and (isinstance(max_blocks, bool) or not isinstance(max_blocks, int) or max_blocks < 0):
+        raise ValueError(f"max_blocks: a whole number of blocks, 0 or more, not {max_blocks!r}")
+    variables = options.get("variables")
+    if variables is not None and not isinstance(variables, Mapping):
+        raise ValueError("variables: a mapping such as {500: 1.5, 1002: 1}")
+    if main is not None and (isinstance(main, bool) or not isinstance(main, (int, str))):
+        raise ValueError(f"main: a programme number such as 1234 or 'O1234', not {main!r}")
     return _ncsight.Options(
         machine,
         params=_params(params),
         main=None if main is None else str(main),
         subprogram_dirs=[os.fspath(d) for d in (options.get("subprogram_dirs") or [])],
         skip_missing_subprograms=bool(options.get("skip_missing_subprograms", False)),
-        max_blocks=None if max_blocks is None else int(max_blocks),
-        variables=_variables(options.get("variables")),
+        max_blocks=max_blocks,
+        variables=_variables(variables),
         block_delete=bool(options.get("block_delete", False)),
         optional_stop=bool(options.get("optional_stop", False)),
     )
@@ -93,12 +100,17 @@ def run(text: Text, machine: str, params: Params = None, setup: Any = None, **op
 def check(text: Text, machine: str, params: Params = None, setup: Any = None, *, name: str = "<text>", **options: Any) -> List[Dict[str, Any]]:
     """Check a programme's text on ``machine``: its diagnostics as ``ncsight check --format
     jsonl`` gives them (``name`` is their ``file``)."""
+    if not isinstance(name, str):
+        raise ValueError(f"name: the file name the diagnostics give, a str, not {name!r}")
     lines, _ = _ncsight.jsonl_lines(_options("check", machine, params, setup, options), "check", name, text=text)
     return [json.loads(line) for line in lines]
 
 
-def _stream(mode: str, source: Union[Text, PathLike], name: Optional[str], opts: Any) -> Iterator[Dict[str, Any]]:
-    if isinstance(source, (str, bytes)) and not isinstance(source, os.PathLike):
+def _stream(mode: str, source: Union[Text, "os.PathLike[str]"], name: Optional[str], opts: Any) -> Iterator[Dict[str, Any]]:
+    if name is not None and not isinstance(name, str):
+        raise ValueError(f"name: the file name the diagnostics give, a str, not {name!r}")
+    # A str is the programme's text; a path is a pathlib.Path (or any os.PathLike).
+    if isinstance(source, (str, bytes, bytearray)):
         stream = _ncsight.LineStream(opts, mode, name or "<text>", text=source)
     else:
         path = os.fspath(source)
@@ -106,14 +118,15 @@ def _stream(mode: str, source: Union[Text, PathLike], name: Optional[str], opts:
     return (json.loads(line) for line in stream)
 
 
-def iter_run(source: Union[Text, PathLike], machine: str, params: Params = None, setup: Any = None, **options: Any) -> Iterator[Dict[str, Any]]:
+def iter_run(source: Union[Text, "os.PathLike[str]"], machine: str, params: Params = None, setup: Any = None, **options: Any) -> Iterator[Dict[str, Any]]:
     """Like :func:`run`, one record at a time while the programme runs on another thread, in
-    bounded memory. ``source`` is the text (str or bytes) or a path (``pathlib.Path``): a file
-    is read as it runs, and jumps back read it again, so a programme of any size fits."""
+    bounded memory. ``source`` is the text (str or bytes) or a path (a ``pathlib.Path``: a str is
+    always text): a file is read as it runs, and jumps back read it again, so a programme of any
+    size fits. Stop iterating and the run stops (at the end of the line being run)."""
     return _stream("run", source, None, _options("iter_run", machine, params, setup, options))
 
 
-def iter_check(source: Union[Text, PathLike], machine: str, params: Params = None, setup: Any = None, *, name: Optional[str] = None, **options: Any) -> Iterator[Dict[str, Any]]:
+def iter_check(source: Union[Text, "os.PathLike[str]"], machine: str, params: Params = None, setup: Any = None, *, name: Optional[str] = None, **options: Any) -> Iterator[Dict[str, Any]]:
     """Like :func:`check`, one diagnostic at a time; a path is read as the check goes."""
     return _stream("check", source, name, _options("iter_check", machine, params, setup, options))
 
