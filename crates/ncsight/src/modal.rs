@@ -104,8 +104,8 @@ pub struct ThreadState {
     pub taper_mm: f64,
     /// S of a rigid thread command, signed (seed 001: the sign selects the direction).
     pub rigid_rpm: Option<f64>,
-    /// Boxed, as are the other large rarely-set parts: the modal state is copied for every block
-    /// (atomic blocks), so it is kept small.
+    /// Held inline, as are the other rarely-set parts: the modal state is a plain `Copy` value,
+    /// copied once per block (atomic blocks), which is cheaper than cloning boxes.
     pub pending: Option<PendingThread>,
     pub memory: Option<PassMemory>,
     /// Four-step cycles started so far (each start of each block), to tell them apart.

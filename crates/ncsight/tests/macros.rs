@@ -539,3 +539,49 @@ mod expansion {
         }
     }
 }
+
+/// Review fixes: a statement's single-block stop comes after the thread run held back before
+/// it (time order); #1032 given gives its bits, and a bit that disagrees is refused; #4015 on
+/// a lathe whose G61/G64 are not simulated is alarm 115, not the power-on 64.
+#[test]
+fn statement_stops_inputs_and_unsimulated_groups() {
+    use ncsight::motion::StopReason;
+    let mut params = Params::defaults(profile::by_name("fanuc0t").unwrap());
+    params.set(profile::ParamKey::Number(6000, Some(5)), 1.0).unwrap();
+    let operator = ncsight::Options { single_block: true, ..ncsight::Options::default() };
+    let text = "G00 X40. Z5. S500 M03\nG32 W-10. F1.5\n#1 = 1\nG00 X50.\nM30\n";
+    let events = ncsight::run_text_with(params, Switches::default(), Mode::Run, operator, text.as_bytes());
+    let times: Vec<f64> = events.iter().filter_map(|e| match e { Event::Record(r) => Some(r.t_s), _ => None }).collect();
+    assert!(times.windows(2).all(|w| w[0] <= w[1] + 1e-9), "{times:?}");
+    let line3 = events.iter().position(|e| matches!(e, Event::Record(r) if r.span.line == 3 && r.op == (Op::Stop { reason: StopReason::SingleBlock }))).expect("a stop at the statement");
+    let last_thread = events.iter().rposition(|e| matches!(e, Event::Record(r) if r.span.line == 2)).unwrap();
+    assert!(last_thread < line3);
+
+    let mut program = Program::new(Params::defaults(profile::by_name("fanuc0m").unwrap()), Switches::default(), Mode::Run);
+    program.set_variable(1032, 5.0).unwrap();
+    let moves: Vec<String> = events_of(program, "G21 G90 G00 X0 Y0 Z0\nG00 X#1000 Y#1001 Z#1002\nM30\n");
+    assert_eq!(moves, t(&["2:1,0,1"]));
+    let mut program = Program::new(Params::defaults(profile::by_name("fanuc0m").unwrap()), Switches::default(), Mode::Run);
+    program.set_variable(1000, 0.0).unwrap();
+    assert!(program.set_variable(1032, 1.0).is_err());
+
+    // (The GSK980TDi numbers alarm 115 its own way.)
+    assert_eq!(trace("gsk980tdi", "G00 X10 Z0\n#1 = #4015\nM30\n"), [String::from("1:5,0,0"), gsk_115()]);
+}
+
+/// The GSK980TDi's code for alarm 115 (its own style).
+fn gsk_115() -> String {
+    ncsight::Rule::IllegalVariable.code(profile::by_name("gsk980tdi").unwrap().alarm_style).to_string()
+}
+
+fn events_of(program: Program, text: &str) -> Vec<String> {
+    events(program, text.as_bytes())
+        .filter_map(|e| match e {
+            Event::Record(r) => match r.op {
+                Op::Rapid { to, .. } => Some(format!("{}:{},{},{}", r.span.line, to.x, to.y, to.z)),
+                _ => None,
+            },
+            Event::Diagnostic(d) => Some(format!("{}:{}", d.span.line, d.code)),
+        })
+        .collect()
+}

@@ -109,11 +109,12 @@ pub const FANUC_T_GROUPS: &[(u8, Group)] = &[
     (1, Group::Motion),
     (2, Group::SpindleSpeedMode),
     (3, Group::Distance),
-    (4, Group::StrokeCheck),
+    (4, Group::Rotation),
     (5, Group::FeedMode),
     (6, Group::Units),
     (7, Group::CutterComp),
     (8, Group::SpindleCheck),
+    (9, Group::StrokeCheck),
     (10, Group::CannedCycle),
     (11, Group::ReturnLevel),
     (12, Group::MacroCall),
@@ -121,7 +122,6 @@ pub const FANUC_T_GROUPS: &[(u8, Group)] = &[
     (15, Group::PathMode),
     (16, Group::Plane),
     (17, Group::Polar2),
-    (18, Group::Rotation),
     (21, Group::Polar),
 ];
 

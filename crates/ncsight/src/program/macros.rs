@@ -129,8 +129,11 @@ impl Reading<'_> {
             // A group whose codes the profile lists as not simulated yet (G96/G97 on the mill).
             return code_of(p, f).map(Some).ok_or_else(|| no_such(number, "the codes of this group are not simulated by ncsight yet"));
         }
-        // The last code commanded in the group, else its power-on code.
+        // The last code commanded in the group, else its power-on code: only for a group whose
+        // codes the profile simulates (G61/G64 are not simulated on the lathes yet).
+        let simulated = p.g_codes.iter().flat_map(|t| t.iter()).any(|d| d.group == group && !matches!(d.function, GFn::NotYet(_) | GFn::NotYetReference(_)));
         match m.group_codes[group as usize] {
+            0 if !simulated => Err(no_such(number, "the codes of this group are not simulated by ncsight yet")),
             0 => match POWER_ON.iter().find(|(g, _)| *g == group) {
                 Some((_, code)) => Ok(Some(*code)),
                 None => Err(no_such(number, "the code in force in this group is not simulated by ncsight yet")),
@@ -204,6 +207,14 @@ impl Variables {
         } else {
             return Err(format!("#{number} is not an input signal (#1000-#1015, #1032)"));
         }
+        // A bit and the word given both must agree (#1000 is the word's lowest bit).
+        if let Some(word) = self.input_word {
+            for (k, bit) in self.inputs.iter().enumerate() {
+                if bit.is_some_and(|b| b != f64::from((word as u32 >> k) & 1)) {
+                    return Err(format!("#{}={} disagrees with #1032={word} (bit {k})", 1000 + k, bit.unwrap_or(0.0)));
+                }
+            }
+        }
         Ok(())
     }
 
@@ -213,9 +224,11 @@ impl Variables {
         let given = if number == INPUT_WORD {
             self.input_word.or_else(|| self.inputs.iter().rev().try_fold(0.0, |w, b| b.map(|b| w * 2.0 + b)))
         } else {
-            self.inputs[(number - 1000) as usize]
+            let k = (number - 1000) as usize;
+            self.inputs[k].or_else(|| self.input_word.map(|w| f64::from((w as u32 >> k) & 1)))
         };
-        given.map(Some).ok_or_else(|| no_such(number, &format!("an input signal of the machine, which ncsight cannot know: give it with --var {number}=1 (or 0)")))
+        let hint = if number == INPUT_WORD { "--var 1032=N (the 16 signals as one number, 0 to 65535)".to_string() } else { format!("--var {number}=1 (or 0)") };
+        given.map(Some).ok_or_else(|| no_such(number, &format!("an input signal of the machine, which ncsight cannot know: give it with {hint}")))
     }
 
     /// Set variable `number`. #3000 is the caller's (a user alarm).
@@ -284,7 +297,7 @@ pub(super) fn expr_alarm(style: AlarmStyle, span: Span, e: &ExprError) -> Diagno
     match e.kind {
         // Most often a setting the programme expects the machine to hold (a vacant variable
         // reads as 0 in arithmetic).
-        ErrorKind::DivideByZero => d.with_hint("a vacant variable counts as 0: a value kept at the machine (#500-#999) is given with --var N=V"),
+        ErrorKind::DivideByZero if e.message.starts_with("division") => d.with_hint("a vacant variable counts as 0: if the divisor is a value kept at the machine (#100-#199, #500-#999), give it with --var N=V"),
         _ => d,
     }
 }

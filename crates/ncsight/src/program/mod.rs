@@ -5,7 +5,9 @@
 //! - `Mode::Run` stops at the first alarm, exactly as the controller does (the alarm is the last
 //!   event), and stops reading at the programme end.
 //! - `Mode::Check` reports every problem: a block that alarms is left out (the modal state stays as
-//!   it was) and reading goes on; blocks after the programme end are still read for their syntax.
+//!   it was) and reading goes on; blocks after the programme end are still read for their syntax,
+//!   up to the `%` that closes the record (after it nothing is read unless a call finds a
+//!   programme there).
 
 mod calls;
 mod macros;
@@ -1015,6 +1017,8 @@ impl Core {
         match result {
             Ok(go_on) => {
                 if self.statement_stops && self.records() {
+                    // The machine stops here: a thread run held back ends first, as at M00.
+                    self.flush_pending(sink);
                     let stop = crate::motion::Op::Stop { reason: crate::motion::StopReason::SingleBlock };
                     sink(Event::Record(crate::motion::Record::of_block(block.span, block.sequence, stop)));
                 }
