@@ -385,15 +385,7 @@ fn interface_signals() {
         for (n, v) in vars {
             program.set_variable(*n, *v).unwrap();
         }
-        events(program, text.as_bytes())
-            .filter_map(|e| match e {
-                Event::Record(r) => match r.op {
-                    Op::Rapid { to, .. } => Some(format!("{}:{},{},{}", r.span.line, to.x, to.y, to.z)),
-                    _ => None,
-                },
-                Event::Diagnostic(d) => Some(format!("{}:{}", d.span.line, d.code)),
-            })
-            .collect()
+        events_of(program, text)
     };
     let read = "G21 G90 G00 X0 Y0 Z0\nG00 X#1002 Y#1032 Z1.\nM30\n";
     assert_eq!(run_vars(&[], read), t(&["2:PS0115"]));
@@ -574,6 +566,7 @@ fn gsk_115() -> String {
     ncsight::Rule::IllegalVariable.code(profile::by_name("gsk980tdi").unwrap().alarm_style).to_string()
 }
 
+/// The rapids of a run as "line:x,y,z", each diagnostic as "line:code".
 fn events_of(program: Program, text: &str) -> Vec<String> {
     events(program, text.as_bytes())
         .filter_map(|e| match e {
