@@ -23,16 +23,19 @@ function put(bytes) {
   return p;
 }
 
-/** The JSONL of a run (mode 0) or check (mode 1) of `text` on `machine`. */
-function run(text, machine, mode) {
+/** The JSONL of a run (mode 0) or check (mode 1) of `text` on `machine` with `params` (N=V each). */
+function run(text, machine, mode, params = []) {
+  const p = new TextEncoder().encode(params.join("\n"));
   const t = put(text);
   const m = put(new TextEncoder().encode(machine));
-  const r = ncsight_run(t, text.length, m, machine.length, mode);
+  const q = put(p);
+  const r = ncsight_run(t, text.length, m, machine.length, q, p.length, mode);
   const len = new DataView(memory.buffer).getUint32(r, true);
   const out = new TextDecoder().decode(new Uint8Array(memory.buffer, r + 4, len).slice());
   ncsight_free(r, 4 + len);
   ncsight_free(t, text.length);
   ncsight_free(m, machine.length);
+  ncsight_free(q, p.length);
   return out;
 }
 
@@ -43,9 +46,9 @@ for (const name of readdirSync(golden).sort()) {
   const dir = join(golden, name);
   if (!existsSync(join(dir, "input.nc"))) continue;
   const args = existsSync(join(dir, "args")) ? readFileSync(join(dir, "args"), "utf8").trim().split(/\s+/) : [];
-  if (args.includes("--param")) continue; // parameters are not passed through this ABI yet
-  const machine = args[args.indexOf("--machine") + 1] ?? "gsk980tdi";
-  const got = run(readFileSync(join(dir, "input.nc")), machine, 0);
+  const machine = args.includes("--machine") ? args[args.indexOf("--machine") + 1] : "gsk980tdi";
+  const params = args.flatMap((a, i) => (a === "--param" ? [args[i + 1]] : []));
+  const got = run(readFileSync(join(dir, "input.nc")), machine, 0, params);
   const want = readFileSync(join(dir, "expected.jsonl"), "utf8");
   cases++;
   if (got !== want) {
@@ -65,7 +68,7 @@ if (usage.kind !== "usage" || !usage.message.includes("unknown machine")) {
   failed++;
   console.error(`wasm: an unknown machine must be a usage line: ${JSON.stringify(usage)}`);
 }
-if (cases < 20) {
+if (cases < 28) {
   failed++;
   console.error(`wasm: only ${cases} golden programmes found`);
 }
