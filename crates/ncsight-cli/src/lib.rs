@@ -376,9 +376,10 @@ fn setup(m: &MachineArgs, err: &mut dyn Write) -> Result<(Params, Switches), Fai
             "gsk980tdi".to_string()
         }
     };
-    let params = m.job(&name).parameters()?;
+    let job = m.job(&name);
+    let params = job.parameters()?;
     let repair_position = m.repair_position.as_deref().map(|t| recorded(t, "--repair-position")).transpose()?;
-    Ok((params, Switches { block_delete: m.block_delete, optional_stop: m.optional_stop, repair_position }))
+    Ok((params, Switches { repair_position, ..job.switches }))
 }
 
 fn open(file: &str) -> Result<feed::Input, Failure> {
@@ -502,22 +503,22 @@ fn run_into(file: &str, m: &MachineArgs, mut program: Program, fmt: &mut dyn for
     let mut err = Tolerant::new(err);
     let mut refused = false;
     let result = drive(file, input, &mut library, &mut program, &mut |e, text, name| {
+        let mut show = |d: &ncsight::Diagnostic| err.write_all(diag::render(name.unwrap_or(shown), text, d, diag::Style::Full, &decoding).as_bytes());
         if let Event::Diagnostic(d) = e {
             if !carries || d.severity() == Severity::Alarm {
-                err.write_all(diag::render(name.unwrap_or(shown), text, d, diag::Style::Full, &decoding).as_bytes())?;
+                show(d)?;
             }
             if !carries {
                 return Ok(());
             }
         }
-        let written = fmt.event(e, name, writer).inspect_err(|e| {
-            if let Some(d) = format::expand::Refused::of(e) {
-                refused = true;
-                let _ = err.write_all(diag::render(name.unwrap_or(shown), text, d, diag::Style::Full, &decoding).as_bytes());
-            }
-        });
+        let written = fmt.event(e, name, writer);
+        if let Some(d) = written.as_ref().err().and_then(format::expand::Refused::of) {
+            refused = true;
+            show(d)?;
+        }
         for d in fmt.take_notes() {
-            err.write_all(diag::render(name.unwrap_or(shown), text, &d, diag::Style::Full, &decoding).as_bytes())?;
+            show(&d)?;
         }
         written
     });

@@ -143,17 +143,11 @@ impl Job {
     /// programme ended.
     pub fn jsonl(&self, input: Input, mode: Mode, name: &str, on_line: &mut dyn FnMut(&str) -> io::Result<()>) -> Result<Status, JobError> {
         let (mut program, mut library) = self.program(mode)?;
-        let mut jsonl = format::Jsonl::new(self.profile()?);
+        let mut writer = self.jsonl_writer(mode, name)?;
         let mut line = Vec::with_capacity(256);
         let mut on_event = |e: &Event, _: &[u8], file: FileName| -> io::Result<()> {
             line.clear();
-            match mode {
-                Mode::Run => jsonl.event(e, file, &mut line)?,
-                Mode::Check => match e {
-                    Event::Diagnostic(d) => line.extend_from_slice(format::jsonl::diagnostic_line(file.unwrap_or(name), d).as_bytes()),
-                    Event::Record(_) => return Ok(()),
-                },
-            }
+            writer.write(e, file, &mut line)?;
             // One object per line; the formatter ends each with a line break.
             for l in line.split(|b| *b == b'\n').filter(|l| !l.is_empty()) {
                 on_line(std::str::from_utf8(l).map_err(|e| io::Error::new(io::ErrorKind::InvalidData, e))?)?;
@@ -162,5 +156,34 @@ impl Job {
         };
         feed::drive(input, &mut library, &mut program, &mut on_event).map_err(|e| if feed::is_read_failure(&e) { usage(format!("cannot read {name}: {e}")) } else { JobError::Io(e) })?;
         Ok(program.status())
+    }
+
+    /// What [`Job::jsonl`] writes for each event, for a caller that drives the programme itself
+    /// (the WebAssembly engine, which has no threads to read a file on).
+    pub fn jsonl_writer<'n>(&self, mode: Mode, name: &'n str) -> Result<JsonlWriter<'n>, JobError> {
+        Ok(JsonlWriter { mode, name, jsonl: format::Jsonl::new(self.profile()?) })
+    }
+}
+
+/// The JSONL of a job's events: a run's records and diagnostics as `run --format jsonl` writes
+/// them, or a check's diagnostics as `check --format jsonl` does, named after the file they come
+/// from (`name` for the text the job began with).
+pub struct JsonlWriter<'n> {
+    mode: Mode,
+    name: &'n str,
+    jsonl: format::Jsonl,
+}
+
+impl JsonlWriter<'_> {
+    /// The lines of one event (none for a record in a check), each ending in a line break.
+    pub fn write(&mut self, e: &Event, file: FileName, out: &mut Vec<u8>) -> io::Result<()> {
+        match (self.mode, e) {
+            (Mode::Run, _) => self.jsonl.event(e, file, out),
+            (Mode::Check, Event::Diagnostic(d)) => {
+                out.extend_from_slice(format::jsonl::diagnostic_line(file.unwrap_or(self.name), d).as_bytes());
+                Ok(())
+            }
+            (Mode::Check, Event::Record(_)) => Ok(()),
+        }
     }
 }

@@ -17,28 +17,22 @@
 //! formatter as the command line's, so the page shows what `ncsight run` prints.
 
 use ncsight::Mode;
-use ncsight_io::format::{self, Format};
+use ncsight_io::format;
 use ncsight_io::Job;
 
 /// Run `text` on `machine` as `ncsight run --format jsonl` (or `check --format jsonl`, named
 /// `<text>`) would, from memory on this thread: the JSONL text.
 pub fn run_jsonl(text: &[u8], machine: &str, params: &str, mode: Mode) -> String {
     let job = Job { params: params.lines().map(str::trim).filter(|l| !l.is_empty()).map(String::from).collect(), ..Job::on(machine) };
-    let (program, profile) = match job.program(mode).and_then(|(p, _)| job.profile().map(|f| (p, f))) {
+    let started = job.program(mode).and_then(|(program, _)| Ok((program, job.jsonl_writer(mode, "<text>")?)));
+    let (program, mut writer) = match started {
         Ok(v) => v,
         Err(e) => return format!("{{\"kind\":\"usage\",\"message\":{}}}\n", format::jsonl::json_str(&e.to_string())),
     };
     let mut out = Vec::with_capacity(text.len() * 2);
-    let mut jsonl = format::Jsonl::new(profile);
     for e in ncsight::events(program, text) {
-        match (mode, &e) {
-            (Mode::Run, _) => {
-                // Writing into a Vec cannot fail.
-                let _ = jsonl.event(&e, None, &mut out);
-            }
-            (Mode::Check, ncsight::Event::Diagnostic(d)) => out.extend_from_slice(format::jsonl::diagnostic_line("<text>", d).as_bytes()),
-            (Mode::Check, ncsight::Event::Record(_)) => {}
-        }
+        // Writing into a Vec cannot fail.
+        let _ = writer.write(&e, None, &mut out);
     }
     String::from_utf8_lossy(&out).into_owned()
 }

@@ -72,14 +72,6 @@ fn comment_text(text: &str) -> String {
     }).collect()
 }
 
-/// Where a move starts.
-fn start_of(op: &Op) -> Option<&Vec3> {
-    match op {
-        Op::Rapid { from, .. } | Op::Feed { from, .. } | Op::Arc { from, .. } | Op::Thread { from, .. } | Op::ThreadArc { from, .. } => Some(from),
-        _ => None,
-    }
-}
-
 fn same(a: &Vec3, b: &Vec3) -> bool {
     (a.x - b.x).abs() + (a.y - b.y).abs() + (a.z - b.z).abs() < 1e-6
 }
@@ -93,7 +85,8 @@ pub struct Expand {
     machine: &'static str,
     started: bool,
     feed: Option<f64>,
-    plane: Option<Plane>,
+    /// The plane in force on the target (the header's, then the last arc's).
+    plane: Plane,
     /// The source line (file, line) of the last record written.
     at: Option<(Option<String>, u32)>,
     /// Warnings about what the target cannot express exactly (NCS-W29), once each.
@@ -128,8 +121,7 @@ impl Expand {
             machine: profile.name,
             started: false,
             feed: None,
-            // The header's plane.
-            plane: Some(if profile.is_lathe() { Plane::ZX } else { Plane::XY }),
+            plane: if profile.is_lathe() { Plane::ZX } else { Plane::XY },
             at: None,
             notes: Vec::new(),
             warned_start_angle: false,
@@ -143,7 +135,6 @@ impl Expand {
             text: String::with_capacity(256),
         }
     }
-
 
     fn header(&self, s: &mut String) {
         s.push_str(&format!("(expanded by ncsight from {} as it runs on {}, for {})\n", file_label(&self.source), self.machine, self.target.title()));
@@ -181,8 +172,8 @@ impl Expand {
     }
 
     fn plane(&mut self, s: &mut String, plane: Plane) {
-        if self.plane != Some(plane) {
-            self.plane = Some(plane);
+        if self.plane != plane {
+            self.plane = plane;
             s.push_str(match plane {
                 Plane::XY => "G17 ",
                 Plane::ZX => "G18 ",
@@ -287,10 +278,10 @@ impl Expand {
         }
         // A move that starts where the last did not end follows a coordinate shift (G50/G92,
         // G52): the same shift, as G92, keeps the target's coordinates the programme's.
-        if let (Some(from), Some(last), None) = (start_of(&r.op), self.last, &self.held) {
-            if !same(from, &last) {
+        if let (Some(from), Some(last), None) = (r.op.start_point(), self.last, &self.held) {
+            if !same(&from, &last) {
                 s.push_str("G92");
-                self.point(s, from);
+                self.point(s, &from);
                 s.push_str(" (the programme's coordinates were shifted here)\n");
             }
         }
@@ -323,7 +314,7 @@ impl Expand {
                         let Op::Thread { rpm, .. } = pass.op else { unreachable!("held passes are threads") };
                         self.thread(&pass, s, "G33.1");
                         self.spindle_rpm = rpm;
-                        self.last = start_of(&pass.op).copied();
+                        self.last = pass.op.start_point();
                     }
                     None => self.held = Some((r.clone(), Vec::new())),
                 }

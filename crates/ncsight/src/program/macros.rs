@@ -40,6 +40,11 @@ pub(super) struct Variables {
 /// texts at hand list no numbers; MACRO.md section 3 "system: #1000 up").
 const INPUTS: std::ops::RangeInclusive<i64> = 1000..=1015;
 const INPUT_WORD: i64 = 1032;
+
+/// Whether `#n` is one of the machine's input signals.
+pub(super) fn is_input(n: i64) -> bool {
+    INPUTS.contains(&n) || n == INPUT_WORD
+}
 const OUTPUTS: std::ops::RangeInclusive<i64> = 1100..=1115;
 const OUTPUT_WORD: i64 = 1132;
 
@@ -159,7 +164,7 @@ impl expr::Variables for Reading<'_> {
             3001 => Some((self.clock_s * 1000.0 - self.vars.clock_ms_offset).max(0.0).floor()),
             3002 => Some(self.clock_s / 3600.0 - self.vars.clock_h_offset),
             3901 | 3902 => Some(self.vars.parts[(number - 3901) as usize]),
-            n if INPUTS.contains(&n) || n == INPUT_WORD => return self.vars.input(n),
+            n if is_input(n) => return self.vars.input(n),
             n if OUTPUTS.contains(&n) => Some(f64::from(u8::from(self.vars.outputs[(n - 1100) as usize]))),
             OUTPUT_WORD => Some(self.vars.outputs.iter().rev().fold(0.0, |w, on| w * 2.0 + f64::from(u8::from(*on)))),
             // Modal information (FANUC #4001-#4022, #4102-#4120).
@@ -276,7 +281,7 @@ impl Variables {
                 }
                 Ok(())
             }
-            n if INPUTS.contains(&n) || n == INPUT_WORD => Err((Rule::WriteProtected, format!("#{n} is an input signal of the machine: a programme can only read it"))),
+            n if is_input(n) => Err((Rule::WriteProtected, format!("#{n} is an input signal of the machine: a programme can only read it"))),
             4001..=4120 | 5001..=5140 => Err((Rule::WriteProtected, format!("#{number} is a system variable that can only be read"))),
             n => Err((Rule::IllegalVariable, format!("#{n}: no such variable (locals #1-#33, common #100-#199 and #500-#999)"))),
         }

@@ -364,9 +364,10 @@ impl Program {
     pub fn with_operator(params: Params, switches: Switches, mode: Mode, operator: Options) -> Program {
         let style = params.profile().alarm_style;
         let builder_codes = Program::builder_codes(&params);
+        let builders = !builder_codes.is_empty() || params.profile().calls.builder.m9000;
         // FANUC 6000#5 SBM: single block stops after macro statements too (MACRO.md section 6).
         let statement_stops = operator.single_block && params.profile().macros.single_block_param.is_some_and(|k| params.get(k) == 1.0);
-        let mut program = Program {
+        Program {
             machine: Machine::new(&params, operator),
             block: Block::default(),
             core: Core {
@@ -402,15 +403,12 @@ impl Program {
                 clock_s: 0.0,
                 last_n: None,
                 modal_call: None,
-                builder_codes: Vec::new(),
-                builders: false,
+                builder_codes,
+                builders,
                 builder_call: false,
                 statement_stops,
             },
-        };
-        program.core.builders = !builder_codes.is_empty() || program.core.interp.profile().calls.builder.m9000;
-        program.core.builder_codes = builder_codes;
-        program
+        }
     }
 
     /// The codes the parameters make calls of the machine's macros (FANUC 6050-6089; GSK980TDi
@@ -459,7 +457,7 @@ impl Program {
     /// keep their values through power off; #100-#199 too until a reset), or an input signal
     /// of the machine (#1000-#1015, #1032).
     pub fn set_variable(&mut self, number: i64, value: f64) -> Result<(), String> {
-        if value.is_finite() && ((1000..=1015).contains(&number) || number == 1032) {
+        if value.is_finite() && macros::is_input(number) {
             return self.core.vars.set_input(number, value);
         }
         if !value.is_finite() || !(100..=999).contains(&number) {
