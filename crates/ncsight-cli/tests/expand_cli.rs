@@ -47,6 +47,20 @@ fn rs274() -> Option<&'static str> {
     Some("rs274")
 }
 
+/// An expansion read by `rs274 -g` (with a tool table, if given): its canonical calls without
+/// rs274's count and N column, and what it said on standard error. rs274 must accept it.
+fn read_back(rs274: &str, tools: Option<&Path>, ngc: &Path) -> (String, String) {
+    let mut cmd = std::process::Command::new(rs274);
+    if let Some(t) = tools {
+        cmd.arg("-t").arg(t);
+    }
+    let out = cmd.arg("-g").arg(ngc).output().unwrap();
+    let calls: String = String::from_utf8_lossy(&out.stdout).lines().map(|l| l.trim_start().split_once("N..... ").map_or(l, |(_, r)| r)).collect::<Vec<_>>().join("\n");
+    let stderr = String::from_utf8_lossy(&out.stderr).trim().to_string();
+    assert!(out.status.success(), "{}: rs274 refused the expansion: {stderr}\n{calls}", ngc.display());
+    (calls, stderr)
+}
+
 #[test]
 fn linuxcnc_reads_the_expansion_back_as_the_original_moves() {
     let rs274 = rs274();
@@ -73,13 +87,8 @@ fn linuxcnc_reads_the_expansion_back_as_the_original_moves() {
         let Some(rs274) = rs274 else { continue };
         let ngc = tmp.join(format!("{name}.ngc"));
         std::fs::write(&ngc, &text).unwrap();
-        let out = std::process::Command::new(rs274).arg("-t").arg(&tools).arg("-g").arg(&ngc).output().unwrap();
-        let theirs_text = String::from_utf8_lossy(&out.stdout).into_owned();
-        // rs274 prefixes each call with a count and the N column: keep what follows.
-        let theirs_text: String = theirs_text.lines().map(|l| l.trim_start().split_once("N..... ").map_or(l, |(_, r)| r)).collect::<Vec<_>>().join("\n");
-        let stderr = String::from_utf8_lossy(&out.stderr);
-        assert!(out.status.success(), "{name}: rs274 refused the expansion: {}\n{theirs_text}", stderr.trim());
-        let what = format!("{name} (rs274 said: {})", stderr.trim());
+        let (theirs_text, stderr) = read_back(rs274, Some(&tools), &ngc);
+        let what = format!("{name} (rs274 said: {stderr})");
         let (mut ours, mut theirs) = (common::motion_calls(&canon), common::motion_calls(&rigid_taps_as_feeds(&theirs_text)));
         if text.contains("G33.1") {
             // LinuxCNC's G33.1 reverses at the bottom at once: a dwell there is left out (NCS-W29).
@@ -255,9 +264,7 @@ fn a_coordinate_shift_is_carried_over() {
     if let Some(rs274) = rs274() {
         let ngc = dir.join("g50.ngc");
         std::fs::write(&ngc, &text).unwrap();
-        let out = std::process::Command::new(rs274).arg("-g").arg(&ngc).output().unwrap();
-        assert!(out.status.success());
-        let theirs: String = String::from_utf8_lossy(&out.stdout).lines().map(|l| l.trim_start().split_once("N..... ").map_or(l, |(_, r)| r)).collect::<Vec<_>>().join("\n");
+        let (theirs, _) = read_back(rs274, None, &ngc);
         let (_, canon, _) = common::ncsight(&["run", f.to_str().unwrap(), "--machine", "fanuc0t", "--format", "canon"]);
         common::same_calls("g50", &common::motion_calls(&canon), &common::motion_calls(&theirs));
     }
