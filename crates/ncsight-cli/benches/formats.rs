@@ -27,7 +27,7 @@ fn formats(c: &mut Criterion) {
     let mut out = Vec::with_capacity(1 << 20);
     for name in ["text", "jsonl", "canon"] {
         let mut g = c.benchmark_group(format!("format {name}"));
-        let mut fmt = format::by_name(name, profile).unwrap();
+        let mut fmt = format::by_name(name, profile, false).unwrap();
         for (kind, event) in records() {
             g.bench_function(kind, |b| {
                 b.iter(|| {

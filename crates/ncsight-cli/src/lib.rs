@@ -82,12 +82,16 @@ struct MachineArgs {
     /// machine (#1000-#1015, #1032) (repeatable): 500=1.5, 1002=1.
     #[arg(long = "var", value_name = "N=V", allow_hyphen_values = true)]
     vars: Vec<String>,
+    /// The machine setup (TOML): axes, travel limits, reference points, work offsets (G54-G59),
+    /// the tool and offset tables, the stock (docs/setup.md).
+    #[arg(long, value_name = "FILE.toml")]
+    setup: Option<String>,
 }
 
 impl MachineArgs {
     /// The run these arguments describe (the machine resolved by [`setup`]).
-    fn job(&self, machine: &str) -> ncsight_io::Job {
-        ncsight_io::Job {
+    fn job(&self, machine: &str) -> Result<ncsight_io::Job, Failure> {
+        let mut job = ncsight_io::Job {
             machine: machine.to_string(),
             params: self.params.clone(),
             switches: Switches { block_delete: self.block_delete, optional_stop: self.optional_stop, repair_position: None },
@@ -97,13 +101,18 @@ impl MachineArgs {
             skip_missing_subprograms: self.skip_missing_subprograms,
             max_blocks: self.max_blocks,
             vars: self.vars.clone(),
+            setup: None,
+        };
+        if let Some(path) = &self.setup {
+            job.read_setup(path)?;
         }
+        Ok(job)
     }
 
     /// The run's calls and variables as the arguments give them, set on `program`.
     fn prepare(&self, program: &mut Program) -> Result<feed::Library, Failure> {
         let machine = program.profile().name;
-        Ok(self.job(machine).prepare(program)?)
+        Ok(self.job(machine)?.prepare(program)?)
     }
 
     fn decoding(&self) -> Result<diag::Decoding, Failure> {
@@ -223,9 +232,6 @@ enum Command {
         file: String,
         #[command(flatten)]
         machine: MachineArgs,
-        /// Job setup (TOML): stock and tools.
-        #[arg(long)]
-        setup: Option<String>,
         /// Stock as DIAxLEN in mm (a bar, its face at Z0), e.g. 60x80.
         #[arg(long)]
         stock: Option<String>,
@@ -249,9 +255,6 @@ enum Command {
         machine: MachineArgs,
         #[command(flatten)]
         operator: OperatorArgs,
-        /// Job setup (TOML) for the thread-form view.
-        #[arg(long)]
-        setup: Option<String>,
         /// Stock as DIAxLEN for the thread-form view.
         #[arg(long)]
         stock: Option<String>,
@@ -315,11 +318,11 @@ pub fn main_with(args: impl IntoIterator<Item = std::ffi::OsString>, out: &mut d
         Command::Check { files, machine, format } => check(&files, &machine, &format, out, err),
         Command::Expand { file, machine, to, output } => expand(&file, &machine, &to, output.as_deref(), out, err),
         Command::Machines { machine } => machines(machine.as_deref(), out),
-        Command::Simulate { file, machine, setup: setup_file, stock, expect, format, image, resolution } => {
-            simulate(&file, &machine, setup_file.as_deref(), stock.as_deref(), expect.as_deref(), &format, image.as_deref(), resolution.as_deref(), out, err)
+        Command::Simulate { file, machine, stock, expect, format, image, resolution } => {
+            simulate(&file, &machine, machine.setup.as_deref(), stock.as_deref(), expect.as_deref(), &format, image.as_deref(), resolution.as_deref(), out, err)
         }
-        Command::Report { file, machine, operator, setup: setup_file, stock, output } => {
-            report(&file, &machine, &operator, setup_file.as_deref(), stock.as_deref(), output.as_deref(), out, err)
+        Command::Report { file, machine, operator, stock, output } => {
+            report(&file, &machine, &operator, machine.setup.as_deref(), stock.as_deref(), output.as_deref(), out, err)
         }
         Command::Repair { machine, start, end, lead, tpi, rpm, measured, j, k } => {
             repair(&machine, &start, &end, lead, tpi, rpm, &measured, j, k, out, err)
@@ -376,7 +379,7 @@ fn setup(m: &MachineArgs, err: &mut dyn Write) -> Result<(Params, Switches), Fai
             "gsk980tdi".to_string()
         }
     };
-    let job = m.job(&name);
+    let job = m.job(&name)?;
     let params = job.parameters()?;
     let repair_position = m.repair_position.as_deref().map(|t| recorded(t, "--repair-position")).transpose()?;
     Ok((params, Switches { repair_position, ..job.switches }))
@@ -466,7 +469,7 @@ fn run(
 ) -> Result<i32, Failure> {
     let (params, switches) = setup(m, err)?;
     let operator = operator.options()?;
-    let mut fmt = format::by_name(format, params.profile()).ok_or_else(|| usage(format!("unknown format '{format}': choose text, jsonl or canon")))?;
+    let mut fmt = format::by_name(format, params.profile(), m.setup.is_some()).ok_or_else(|| usage(format!("unknown format '{format}': choose text, jsonl or canon")))?;
     let program = Program::with_operator(params, switches, Mode::Run, operator);
     run_into(file, m, program, fmt.as_mut(), output, out, err)
 }

@@ -50,6 +50,8 @@ pub fn assumed_tools(m: &Measurement) -> Vec<String> {
             ToolKind::Thread => format!("T{n}: threading insert, {} degrees, sharp", num(t.included_angle_deg, 1)),
             ToolKind::Drill => format!("T{n}: drill on the spindle axis (not cut in the lathe stock)"),
             ToolKind::Turning => format!("T{n}: turning insert, {} degrees, nose radius {} mm", num(t.included_angle_deg, 1), num(t.tip_radius_mm, 3)),
+            // Never assumed (measure.rs assumes the three above); named for completeness.
+            other => format!("T{n}: {other:?}").to_lowercase(),
         })
         .collect()
 }

@@ -19,6 +19,12 @@ fn golden_traces() {
         let args = std::fs::read_to_string(case.join("args")).unwrap_or_default();
         let mut argv = vec!["run", input.to_str().unwrap(), "--format", "jsonl"];
         argv.extend(args.split_whitespace());
+        // A case with a machine setup keeps it beside its programme.
+        let setup = case.join("setup.toml");
+        let setup = setup.to_str().unwrap();
+        if case.join("setup.toml").is_file() {
+            argv.extend(["--setup", setup]);
+        }
         let (code, out, err) = common::ncsight(&argv);
         let expected_code = if out.lines().last().is_some_and(|l| l.contains("\"kind\":\"alarm\"")) { 1 } else { 0 };
         assert_eq!(code, expected_code, "{}: {err}", case.display());
@@ -29,7 +35,7 @@ fn golden_traces() {
 #[test]
 fn bad_programmes_raise_their_alarm() {
     let dir = common::root().join("tests/bad");
-    let mut files: Vec<_> = std::fs::read_dir(&dir).unwrap().map(|e| e.unwrap().path()).collect();
+    let mut files: Vec<_> = std::fs::read_dir(&dir).unwrap().map(|e| e.unwrap().path()).filter(|p| p.extension().is_some_and(|x| x == "nc")).collect();
     files.sort();
     assert!(files.len() >= 10);
     for f in files {
@@ -43,7 +49,11 @@ fn bad_programmes_raise_their_alarm() {
         );
         let (code, line, col, machine) = (spec[1], spec[3], spec[5], spec[7]);
         let path = f.to_str().unwrap();
-        let (status, out, err) = common::ncsight(&["run", path, "--machine", machine, "--format", "jsonl"]);
+        let setup_file = f.with_extension("toml");
+        let setup_arg: Vec<&str> = if setup_file.is_file() { vec!["--setup", setup_file.to_str().unwrap()] } else { vec![] };
+        let with_setup = |args: &[&str]| -> Vec<String> { args.iter().chain(setup_arg.iter()).map(|s| s.to_string()).collect() };
+        let run_args = with_setup(&["run", path, "--machine", machine, "--format", "jsonl"]);
+        let (status, out, err) = common::ncsight(&run_args.iter().map(String::as_str).collect::<Vec<_>>());
         assert_eq!(status, 1, "{}: run must stop on an alarm\n{out}{err}", f.display());
         let last = out.lines().last().unwrap_or_default();
         let v: serde_json::Value = serde_json::from_str(last).unwrap();
@@ -52,7 +62,8 @@ fn bad_programmes_raise_their_alarm() {
         assert_eq!(v["line"].to_string(), line, "{}: {last}", f.display());
         assert_eq!(v["col"].to_string(), col, "{}: {last}", f.display());
         assert!(!v["message"].as_str().unwrap().is_empty());
-        let (status, out, _) = common::ncsight(&["check", path, "--machine", machine]);
+        let check_args = with_setup(&["check", path, "--machine", machine]);
+        let (status, out, _) = common::ncsight(&check_args.iter().map(String::as_str).collect::<Vec<_>>());
         assert_eq!(status, 1, "{}", f.display());
         assert!(out.contains(&format!(":{line}:{col}: alarm[{code}]")), "{}: check output\n{out}", f.display());
     }

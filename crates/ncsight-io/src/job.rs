@@ -32,6 +32,8 @@ pub struct Job {
     /// Variables set at the machine before the run: `N=V` (#100-#199, #500-#999, the input
     /// signals #1000-#1015 and #1032).
     pub vars: Vec<String>,
+    /// The machine setup (`--setup FILE.toml`): offsets, reference points, limits, tools.
+    pub setup: Option<ncsight::setup::Setup>,
 }
 
 /// Why a job cannot run: a mistake in how it was asked for (unknown machine, bad parameter,
@@ -111,8 +113,23 @@ impl Job {
         Ok((options, Library::new(self.subprogram_dirs.clone())))
     }
 
-    /// The run's calls and variables set on `program`; the library of called programmes.
+    /// Read the setup file at `path` (TOML) into the job.
+    pub fn read_setup(&mut self, path: &str) -> Result<(), JobError> {
+        let text = std::fs::read_to_string(path).map_err(|e| usage(format!("cannot read {path}: {e}")))?;
+        self.set_setup_text(&text, path)
+    }
+
+    /// The setup from its TOML text; `name` says where it came from in a message.
+    pub fn set_setup_text(&mut self, text: &str, name: &str) -> Result<(), JobError> {
+        self.setup = Some(ncsight::setup::Setup::from_toml(text).map_err(|e| usage(format!("{name}: {e}")))?);
+        Ok(())
+    }
+
+    /// The run's setup, calls and variables set on `program`; the library of called programmes.
     pub fn prepare(&self, program: &mut Program) -> Result<Library, JobError> {
+        if let Some(setup) = &self.setup {
+            program.set_setup(setup);
+        }
         let (options, library) = self.calls()?;
         program.set_call_options(options);
         for v in &self.vars {
@@ -161,7 +178,7 @@ impl Job {
     /// What [`Job::jsonl`] writes for each event, for a caller that drives the programme itself
     /// (the WebAssembly engine, which has no threads to read a file on).
     pub fn jsonl_writer<'n>(&self, mode: Mode, name: &'n str) -> Result<JsonlWriter<'n>, JobError> {
-        Ok(JsonlWriter { mode, name, jsonl: format::Jsonl::new(self.profile()?) })
+        Ok(JsonlWriter { mode, name, jsonl: format::Jsonl::new(self.profile()?, self.setup.is_some()) })
     }
 }
 

@@ -30,7 +30,7 @@ struct Options {
 #[pymethods]
 impl Options {
     #[new]
-    #[pyo3(signature = (machine, params=Vec::new(), main=None, subprogram_dirs=Vec::new(), skip_missing_subprograms=false, max_blocks=None, variables=Vec::new(), block_delete=false, optional_stop=false))]
+    #[pyo3(signature = (machine, params=Vec::new(), main=None, subprogram_dirs=Vec::new(), skip_missing_subprograms=false, max_blocks=None, variables=Vec::new(), block_delete=false, optional_stop=false, setup_path=None, setup_toml=None))]
     #[allow(clippy::too_many_arguments)]
     fn new(
         machine: &str,
@@ -42,8 +42,10 @@ impl Options {
         variables: Vec<String>,
         block_delete: bool,
         optional_stop: bool,
-    ) -> Options {
-        let job = Job {
+        setup_path: Option<PathBuf>,
+        setup_toml: Option<String>,
+    ) -> PyResult<Options> {
+        let mut job = Job {
             machine: machine.to_string(),
             params,
             switches: ncsight::Switches { block_delete, optional_stop, repair_position: None },
@@ -53,8 +55,16 @@ impl Options {
             skip_missing_subprograms,
             max_blocks,
             vars: variables,
+            setup: None,
         };
-        Options { job }
+        // The setup as a file, or as the TOML the Python half wrote from a mapping.
+        if let Some(p) = setup_path {
+            job.read_setup(&p.to_string_lossy()).map_err(to_py)?;
+        }
+        if let Some(t) = setup_toml {
+            job.set_setup_text(&t, "setup").map_err(to_py)?;
+        }
+        Ok(Options { job })
     }
 }
 

@@ -20,6 +20,11 @@ GOLDEN = sorted(p for p in (ROOT / "tests" / "golden").iterdir() if (p / "input.
 BAD = sorted((ROOT / "tests" / "bad").glob("*.nc"))
 
 
+def golden_setup(case):
+    """The machine setup a golden case keeps beside its programme, if any."""
+    return case / "setup.toml" if (case / "setup.toml").exists() else None
+
+
 def golden_args(case):
     """The machine and parameters of a golden case (its `args` file: --machine M --param K=V)."""
     words = (case / "args").read_text().split() if (case / "args").exists() else []
@@ -47,24 +52,28 @@ def test_the_cli_is_there():
 @pytest.mark.parametrize("case", GOLDEN, ids=[c.name for c in GOLDEN])
 def test_run_gives_the_cli_records(case):
     machine, params = golden_args(case)
+    setup = golden_setup(case)
     text = (case / "input.nc").read_bytes()
-    records = ncsight.run(text, machine, params=params)
+    records = ncsight.run(text, machine, params=params, setup=setup)
     expected = [json.loads(l) for l in (case / "expected.jsonl").read_text().splitlines() if l.strip()]
     assert records == expected
     # The same from the file, streamed.
-    assert list(ncsight.iter_run(case / "input.nc", machine, params=params)) == expected
+    assert list(ncsight.iter_run(case / "input.nc", machine, params=params, setup=setup)) == expected
 
 
 @pytest.mark.parametrize("case", GOLDEN, ids=[c.name for c in GOLDEN])
 def test_check_gives_the_cli_diagnostics(case):
     machine, params = golden_args(case)
+    setup = golden_setup(case)
     path = str(case / "input.nc")
     args = ["check", path, "--machine", machine, "--format", "jsonl"]
     for p in params:
         args += ["--param", p]
+    if setup:
+        args += ["--setup", str(setup)]
     expected = cli(*args)
-    assert ncsight.check((case / "input.nc").read_bytes(), machine, params=params, name=path) == expected
-    assert list(ncsight.iter_check(pathlib.Path(path), machine, params=params)) == expected
+    assert ncsight.check((case / "input.nc").read_bytes(), machine, params=params, setup=setup, name=path) == expected
+    assert list(ncsight.iter_check(pathlib.Path(path), machine, params=params, setup=setup)) == expected
 
 
 @pytest.mark.parametrize("bad", BAD, ids=[b.name for b in BAD])
@@ -72,8 +81,10 @@ def test_an_alarm_is_a_record(bad):
     first = bad.read_bytes().split(b"\n", 1)[0].decode()
     spec = first.strip().strip("()").split()
     code, line, col, machine = spec[1], int(spec[3]), int(spec[5]), spec[7]
-    records = ncsight.run(bad.read_bytes(), machine)
-    assert records == cli("run", str(bad), "--machine", machine, "--format", "jsonl")
+    setup = bad.with_suffix(".toml") if bad.with_suffix(".toml").exists() else None
+    records = ncsight.run(bad.read_bytes(), machine, setup=setup)
+    extra = ["--setup", str(setup)] if setup else []
+    assert records == cli("run", str(bad), "--machine", machine, "--format", "jsonl", *extra)
     last = records[-1]
     assert (last["kind"], last["code"], last["line"], last["col"]) == ("alarm", code, line, col)
 
@@ -100,8 +111,12 @@ def test_usage_errors_raise_value_error():
         ncsight.run("G00 X0\n", "haas")
     with pytest.raises(ValueError, match="parameter"):
         ncsight.run("G00 X0\n", "gsk980tdi", params={"99999": 1})
-    with pytest.raises(ValueError, match="setup"):
-        ncsight.run("G00 X0\n", "gsk980tdi", setup="setup.toml")
+    with pytest.raises(ValueError, match="cannot read no-such-setup.toml"):
+        ncsight.run("G00 X0\n", "gsk980tdi", setup="no-such-setup.toml")
+    with pytest.raises(ValueError, match="offset 1"):
+        ncsight.run("G00 X0\n", "gsk980tdi", setup={"offset": [{"number": 1, "x_mm": float("nan")}]})
+    with pytest.raises(ValueError, match="unknown field"):
+        ncsight.run("G00 X0\n", "gsk980tdi", setup={"wrok": {}})
     with pytest.raises(TypeError, match="unexpected keyword argument 'subprogram_dir'"):
         ncsight.run("G00 X0\n", "gsk980tdi", subprogram_dir="/tmp")
     with pytest.raises(ValueError, match="--main O12x"):
@@ -161,3 +176,23 @@ def test_to_arrays():
     a = ncsight.to_arrays(records)
     assert list(a["kind"]) == ["rapid", "feed"]
     assert np.allclose(a["x"], [1.0, 4.0]) and np.allclose(a["z"], [3.0, 3.0])
+
+
+def test_a_setup_as_a_mapping_is_the_setup_file(tmp_path):
+    """setup= takes the file's path or a mapping shaped as it: both give what --setup gives."""
+    toml = """[machine.reference]
+x_mm = 200.0
+z_mm = 100.0
+
+[work]
+G54 = { x_mm = 0.0, z_mm = -300.0 }
+G55 = { x_mm = 0.0, z_mm = -350.0 }
+"""
+    mapping = {"machine": {"reference": {"x_mm": 200.0, "z_mm": 100.0}}, "work": {"G54": {"x_mm": 0.0, "z_mm": -300.0}, "G55": {"x_mm": 0, "z_mm": -350}}}
+    (tmp_path / "setup.toml").write_text(toml)
+    (tmp_path / "p.nc").write_text("G00 X50 Z10\nG55 G00 X50 Z10\nG28 U0 W0\nM30\n")
+    expected = cli("run", str(tmp_path / "p.nc"), "--machine", "gsk980tdi", "--format", "jsonl", "--setup", str(tmp_path / "setup.toml"))
+    assert any("machine_z" in r for r in expected)
+    text = (tmp_path / "p.nc").read_text()
+    assert ncsight.run(text, "gsk980tdi", setup=tmp_path / "setup.toml") == expected
+    assert ncsight.run(text, "gsk980tdi", setup=mapping) == expected

@@ -116,6 +116,10 @@ rules! {
     NoReturn => Alarm, "NCS-E62", None, "SUBPROGRAMME ENDS WITHOUT M99";
     Runaway => Alarm, "NCS-E63", None, "TOO MANY BLOCKS EXECUTED";
     NotExpandable => Alarm, "NCS-E76", None, "THE TARGET CONTROLLER CANNOT DO THIS";
+    // Soft travel limits (stored stroke check 1): the FANUC 0i-D numbers, the axis named in the
+    // message (FANUC 0 numbered them per axis; docs/setup.md).
+    OvertravelPlus => Alarm, "NCS-E77", Some("OT0500"), "+ OVERTRAVEL (SOFT 1)";
+    OvertravelMinus => Alarm, "NCS-E78", Some("OT0501"), "- OVERTRAVEL (SOFT 1)";
     // --- warnings ---
     SameGroupTwice => Warning, "NCS-W01", None, "TWO G CODES OF ONE GROUP: THE LAST ONE COUNTS";
     IntegerLength => Warning, "NCS-W02", None, "LENGTH WITHOUT DECIMAL POINT";
@@ -146,6 +150,8 @@ rules! {
     CallSkipped => Warning, "NCS-W27", None, "SUBPROGRAMME NOT FOUND: CALL SKIPPED";
     ThenOmitted => Warning, "NCS-W28", None, "IF WITHOUT THEN";
     ExpandApproximate => Warning, "NCS-W29", None, "EXPANDED APPROXIMATELY FOR THE TARGET";
+    MachineIncremental => Warning, "NCS-W30", None, "G53 IGNORED IN INCREMENTAL";
+    ReferenceAssumed => Warning, "NCS-W31", None, "REFERENCE POINT NOT IN THE SETUP";
 }
 
 impl Rule {

@@ -117,6 +117,35 @@ pub fn arc_point(from: &Vec3, to: &Vec3, plane: Plane, dir: ArcDir, g: &ArcGeom,
     p
 }
 
+/// The smallest and largest coordinate an arc reaches on each axis: its ends, and the quadrant
+/// points of its circle that lie within its sweep.
+pub fn arc_extent(from: &Vec3, to: &Vec3, plane: Plane, dir: ArcDir, g: &ArcGeom) -> (Vec3, Vec3) {
+    let (a, b, _) = plane.axes();
+    let mut lo = Vec3::new(from.x.min(to.x), from.y.min(to.y), from.z.min(to.z));
+    let mut hi = Vec3::new(from.x.max(to.x), from.y.max(to.y), from.z.max(to.z));
+    let c = plane_coords(&g.center, plane);
+    let start = angle_of(c, plane_coords(from, plane));
+    for k in 0..4 {
+        let quadrant = k as f64 * TAU / 4.0;
+        // How far along the sweep the quadrant point lies, in the arc's direction.
+        let along = match dir {
+            ArcDir::Ccw => (quadrant - start).rem_euclid(TAU),
+            ArcDir::Cw => (start - quadrant).rem_euclid(TAU),
+        };
+        if along <= g.sweep_rad {
+            let (axis, value) = match k {
+                0 => (a, c.0 + g.radius),
+                1 => (b, c.1 + g.radius),
+                2 => (a, c.0 - g.radius),
+                _ => (b, c.1 - g.radius),
+            };
+            lo.set_axis(axis, lo.axis(axis).min(value));
+            hi.set_axis(axis, hi.axis(axis).max(value));
+        }
+    }
+    (lo, hi)
+}
+
 /// The geometry of an `Op::Arc` or `Op::ThreadArc` from its stored fields.
 pub fn arc_geom_of(op: &Op) -> Option<ArcGeom> {
     match op {

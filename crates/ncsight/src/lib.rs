@@ -18,6 +18,7 @@ pub mod profile;
 pub mod program;
 pub mod read;
 pub mod repair;
+pub mod setup;
 pub mod source;
 pub mod stock;
 pub mod time;

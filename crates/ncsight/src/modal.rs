@@ -141,6 +141,20 @@ pub struct DrillData {
     pub tap_left: bool,
 }
 
+/// Where programme coordinates lie on the machine, as far as the modal state says: the work
+/// system selected, the G50/G92 shift (acting on every work system), the G52 local origin and
+/// the tool offset in effect. The offsets' values are the machine's tables (`interp::Tables`):
+/// machine = programme + external + work + shift + local + tool.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Frame {
+    /// 1-6: G54-G59.
+    pub work: u8,
+    pub shift: Vec3,
+    pub local: Vec3,
+    /// The tool offset applied to the position (lathe geometry and wear, mill tool length).
+    pub tool: Vec3,
+}
+
 /// Spindle rotation commanded by M03/M04/M05.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum SpindleDir {
@@ -165,6 +179,8 @@ pub struct Modal {
     pub box_cycle: BoxMemory,
     /// Current position, programme coordinates, mm, X as a radius.
     pub pos: Vec3,
+    /// Where those coordinates are on the machine.
+    pub frame: Frame,
     pub motion: Motion,
     pub plane: Plane,
     /// G91 on mills. Lathes use U/W instead and keep this false.
@@ -219,6 +235,7 @@ impl Modal {
         Modal {
             feed_warned: None,
             pos: Vec3::default(),
+            frame: Frame { work: 1, ..Frame::default() },
             motion: Motion::Rapid,
             rough_data: [None; 2],
             pattern_data: None,

@@ -38,6 +38,20 @@ impl Vec3 {
     }
 }
 
+impl std::ops::Add for Vec3 {
+    type Output = Vec3;
+    fn add(self, o: Vec3) -> Vec3 {
+        Vec3::new(self.x + o.x, self.y + o.y, self.z + o.z)
+    }
+}
+
+impl std::ops::Sub for Vec3 {
+    type Output = Vec3;
+    fn sub(self, o: Vec3) -> Vec3 {
+        Vec3::new(self.x - o.x, self.y - o.y, self.z - o.z)
+    }
+}
+
 /// The plane of circular interpolation. Its axes (first, second, normal) form a right-handed
 /// set, as LinuxCNC's canonical interface orders them: XY = (X, Y, Z), ZX = (Z, X, Y),
 /// YZ = (Y, Z, X).
@@ -310,6 +324,9 @@ pub struct Record {
     /// The acceleration time constant of this move where the controller has its own for it
     /// (the GSK988T's perpendicular pull-out after a G32.1 end: parameter 1628), seconds.
     pub accel_s: Option<f64>,
+    /// Added to the record's points gives machine coordinates (the work offsets, G50/G92
+    /// shift, G52 and the tool offset in force; 0 without a setup).
+    pub to_machine: Vec3,
 }
 
 impl Record {
@@ -327,6 +344,6 @@ impl Record {
             _ => Hold::Stop,
         };
         let override_free = op.is_thread();
-        Record { span, n, call_depth: 0, t_s: 0.0, op, block_end: false, hold, cycle: None, override_free, accel_s: None }
+        Record { span, n, call_depth: 0, t_s: 0.0, op, block_end: false, hold, cycle: None, override_free, accel_s: None, to_machine: Vec3::new(0.0, 0.0, 0.0) }
     }
 }

@@ -17,7 +17,7 @@ const LAYERS: &[&[&str]] = &[
     &["alarm", "motion"],
     &["geom", "codes"],
     &["cycles", "event"],
-    &["profile", "read", "dialect"],
+    &["profile", "read", "dialect", "setup"],
     &["time", "repair"],
     &["modal"],
     &["interp"],

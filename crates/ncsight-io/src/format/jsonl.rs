@@ -9,14 +9,16 @@ use std::io::{self, Write};
 
 pub struct Jsonl {
     axes: super::ShownAxes,
+    /// Motion records carry `machine_x/_y/_z` (a setup gave the machine's frame).
+    machine_positions: bool,
     x_scale: f64,
     /// The line being written, reused.
     text: String,
 }
 
 impl Jsonl {
-    pub fn new(profile: &'static Profile) -> Jsonl {
-        Jsonl { axes: super::ShownAxes::new(profile), x_scale: if profile.diameter_x { 2.0 } else { 1.0 }, text: String::with_capacity(256) }
+    pub fn new(profile: &'static Profile, machine_positions: bool) -> Jsonl {
+        Jsonl { axes: super::ShownAxes::new(profile), machine_positions, x_scale: if profile.diameter_x { 2.0 } else { 1.0 }, text: String::with_capacity(256) }
     }
 
     fn point(&self, s: &mut String, p: &Vec3, prefix: &str) {
@@ -194,6 +196,11 @@ impl Jsonl {
                     }
                     Op::End { code } => {
                         let _ = write!(s, ",\"code\":\"M{code:02}\"");
+                    }
+                }
+                if self.machine_positions {
+                    if let Some(to) = r.op.end_point() {
+                        self.point(s, &(to + r.to_machine), "machine_");
                     }
                 }
                 num_field(s, "t", r.t_s, 6);

@@ -33,10 +33,10 @@ pub trait Format {
 }
 
 /// The format of that name for a profile.
-pub fn by_name(name: &str, profile: &'static Profile) -> Option<Box<dyn Format>> {
+pub fn by_name(name: &str, profile: &'static Profile, machine_positions: bool) -> Option<Box<dyn Format>> {
     match name {
         "text" => Some(Box::new(Text::new(profile))),
-        "jsonl" => Some(Box::new(Jsonl::new(profile))),
+        "jsonl" => Some(Box::new(Jsonl::new(profile, machine_positions))),
         "canon" => Some(Box::new(Canon::new(profile))),
         _ => None,
     }

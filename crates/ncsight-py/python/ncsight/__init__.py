@@ -53,6 +53,38 @@ def _variables(variables: Optional[Mapping[int, float]]) -> List[str]:
     return [f"{int(k)}={_number(v)}" for k, v in variables.items()]
 
 
+def _toml_key(k: Any) -> str:
+    k = str(k)
+    return k if k and all(c.isalnum() or c in "_-" for c in k) else json.dumps(k)
+
+
+def _toml_value(v: Any) -> str:
+    """A value as TOML writes it inline (tables as inline tables)."""
+    if isinstance(v, bool):
+        return "true" if v else "false"
+    if isinstance(v, (int, float)):
+        return repr(v) if isinstance(v, int) else repr(float(v))
+    if isinstance(v, str):
+        return json.dumps(v)
+    if isinstance(v, Mapping):
+        return "{ " + ", ".join(f"{_toml_key(k)} = {_toml_value(x)}" for k, x in v.items()) + " }"
+    if isinstance(v, (list, tuple)):
+        return "[" + ", ".join(_toml_value(x) for x in v) + "]"
+    raise ValueError(f"setup: {v!r} is not a number, string, list or mapping")
+
+
+def _setup(setup: Any) -> "tuple[Optional[str], Optional[str]]":
+    """The setup as a path to its TOML file, or a mapping shaped as the file (``{"work": {"G54":
+    {"x_mm": 0, "z_mm": -400}}, "offset": [{"number": 1, "x_mm": -150}]}``) written as TOML."""
+    if setup is None:
+        return None, None
+    if isinstance(setup, (str, os.PathLike)):
+        return os.fspath(setup), None
+    if isinstance(setup, Mapping):
+        return None, "\n".join(f"{_toml_key(k)} = {_toml_value(v)}" for k, v in setup.items()) + "\n"
+    raise ValueError("setup: the path of a setup file (TOML), or a mapping shaped as one")
+
+
 _OPTIONS = ("main", "subprogram_dirs", "skip_missing_subprograms", "max_blocks", "variables", "block_delete", "optional_stop")
 
 
@@ -62,9 +94,7 @@ def _options(caller: str, machine: str, params: Params, setup: Any, options: Map
     unknown = sorted(set(options) - set(_OPTIONS))
     if unknown:
         raise TypeError(f"{caller}() got an unexpected keyword argument {unknown[0]!r} (options: {', '.join(_OPTIONS)})")
-    if setup is not None:
-        # INTERFACE.md: until a piece is built, using it is a clear error.
-        raise ValueError("setup: the machine setup file (work offsets, tools) is not simulated by ncsight yet; run without it")
+    setup_path, setup_toml = _setup(setup)
     if not isinstance(machine, str):
         raise ValueError(f"machine: one of {', '.join(machines())}")
     main = options.get("main")
@@ -86,6 +116,8 @@ def _options(caller: str, machine: str, params: Params, setup: Any, options: Map
         variables=_variables(variables),
         block_delete=bool(options.get("block_delete", False)),
         optional_stop=bool(options.get("optional_stop", False)),
+        setup_path=setup_path,
+        setup_toml=setup_toml,
     )
 
 

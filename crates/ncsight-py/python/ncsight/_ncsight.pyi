@@ -16,6 +16,8 @@ class Options:
         variables: Sequence[str] = ...,
         block_delete: bool = False,
         optional_stop: bool = False,
+        setup_path: Optional[Union[str, PathLike[str]]] = None,
+        setup_toml: Optional[str] = None,
     ) -> None: ...
 
 def machines() -> List[str]: ...

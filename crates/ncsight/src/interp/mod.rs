@@ -5,9 +5,11 @@
 mod call;
 mod compound;
 mod drill;
+mod frame;
 mod groove;
 mod rough;
 pub use call::{Flow, MAX_PROGRAM_NUMBER};
+pub use frame::Tables;
 pub use rough::{FinishRequest, RoughRequest};
 mod thread;
 mod turning;
@@ -56,6 +58,9 @@ pub struct Outcome {
     finish_request: Option<FinishRequest>,
     /// M98 or M99: the jump the block asks for, after its records.
     pub flow: Option<Flow>,
+    /// The first move of the block beyond a soft travel limit: (its block, axis, limit, where
+    /// it went, beyond the upper end).
+    overtravel: Option<(Span, usize, f64, f64, bool)>,
 }
 
 impl Outcome {
@@ -66,6 +71,7 @@ impl Outcome {
         self.rough_request = None;
         self.finish_request = None;
         self.flow = None;
+        self.overtravel = None;
     }
 }
 
@@ -86,6 +92,8 @@ pub struct Switches {
 pub struct Interpreter {
     profile: &'static Profile,
     params: Params,
+    /// The machine's offsets, reference points and limits (the setup's, else all zero).
+    tables: Tables,
     state: Modal,
     switches: Switches,
     /// A G71/G72 block is collecting its contour blocks (they follow it).
@@ -123,6 +131,7 @@ impl From<&'static str> for What {
 struct Step<'a> {
     profile: &'static Profile,
     params: &'a Params,
+    tables: &'a Tables,
     /// The recorded thread repair position, if any.
     repair: Option<crate::repair::Recorded>,
     span: Span,
@@ -157,8 +166,25 @@ impl Step<'_> {
         if self.out.emitted > MAX_MOTIONS_PER_BLOCK {
             return;
         }
+        let to_machine = self.tables.to_machine(&self.st.frame);
+        if self.tables.limits_mm.iter().any(Option::is_some) && self.out.overtravel.is_none() {
+            if let Some((from, to)) = op.start_point().zip(op.end_point()) {
+                let (lo, hi) = match geom::arc_geom_of(&op) {
+                    Some(g) => match op {
+                        Op::Arc { plane, dir, .. } | Op::ThreadArc { plane, dir, .. } => geom::arc_extent(&from, &to, plane, dir, &g),
+                        _ => unreachable!("only arcs have an arc's geometry"),
+                    },
+                    None => (Vec3::new(from.x.min(to.x), from.y.min(to.y), from.z.min(to.z)), Vec3::new(from.x.max(to.x), from.y.max(to.y), from.z.max(to.z))),
+                };
+                if let Some((axis, limit, at, upper)) = self.tables.beyond_limit(&(lo + to_machine), &(hi + to_machine)) {
+                    self.out.overtravel = Some((span, axis, limit, at, upper));
+                }
+            }
+        }
         if !self.out.discard_records {
-            self.out.records.push(Record::of_block(span, n, op));
+            let mut r = Record::of_block(span, n, op);
+            r.to_machine = to_machine;
+            self.out.records.push(r);
         }
     }
 
@@ -337,9 +363,39 @@ impl Step<'_> {
 impl Interpreter {
     pub fn new(params: Params, switches: Switches) -> Interpreter {
         let profile = params.profile();
-        Interpreter { profile, state: Modal::power_on(profile), params, switches, collecting: None, contours: Vec::new(), replaying: false }
+        Interpreter { profile, state: Modal::power_on(profile), params, tables: Tables::none(profile), switches, collecting: None, contours: Vec::new(), replaying: false }
     }
 
+    /// Take the machine's tables from a setup (before the first block): the offsets, reference
+    /// points and limits; the tool starts at the reference point.
+    pub fn set_setup(&mut self, setup: &crate::setup::Setup) {
+        self.tables = Tables::from_setup(setup, self.profile);
+        if let Some(p) = self.tables.power_on_mm {
+            self.state.pos = p - self.tables.to_machine(&self.state.frame);
+        }
+    }
+
+    pub fn tables(&self) -> &Tables {
+        &self.tables
+    }
+}
+
+/// The overtravel alarm of a block whose move went beyond a soft limit.
+fn overtravel_alarm(profile: &Profile, hit: (Span, usize, f64, f64, bool)) -> Diagnostic {
+    let (span, axis, limit, at, upper) = hit;
+    let scale = if axis == 0 && profile.diameter_x { 2.0 } else { 1.0 };
+    let name = ["X", "Y", "Z"][axis];
+    let (rule, side, bound) = if upper { (Rule::OvertravelPlus, "+", "upper") } else { (Rule::OvertravelMinus, "-", "lower") };
+    let msg = format!(
+        "{side}{name}: this block moves {name} to {:.3} in machine coordinates, beyond the soft limit {:.3} ({bound} end of [machine.limits] {}_mm)",
+        at * scale,
+        limit * scale,
+        name.to_ascii_lowercase()
+    );
+    Diagnostic::new(rule, profile.alarm_style, span, msg)
+}
+
+impl Interpreter {
     pub fn profile(&self) -> &'static Profile {
         self.profile
     }
@@ -371,9 +427,14 @@ impl Interpreter {
             return;
         }
         let repair = self.switches.repair_position;
-        let mut step = Step { profile: self.profile, params: &self.params, repair, span: Span::default(), n: None, st: &mut self.state, out };
+        let mut step = Step { profile: self.profile, params: &self.params, tables: &self.tables, repair, span: Span::default(), n: None, st: &mut self.state, out };
         if let Some(p) = step.st.thread.pending.take() {
             thread::flush(&mut step, p, true);
+        }
+        // The run has ended: a pull-out beyond a limit is told, with nothing left to stop.
+        if let Some(hit) = out.overtravel.take() {
+            let d = overtravel_alarm(self.profile, hit);
+            out.warnings.push(d);
         }
     }
 
@@ -396,7 +457,7 @@ impl Interpreter {
         }
         let before = self.state;
         let repair = self.switches.repair_position;
-        let mut step = Step { profile: self.profile, params: &self.params, repair, span: block.span, n: block.sequence, st: &mut self.state, out };
+        let mut step = Step { profile: self.profile, params: &self.params, tables: &self.tables, repair, span: block.span, n: block.sequence, st: &mut self.state, out };
         let result = run_block(&mut step, block, self.switches).and_then(|()| {
             if step.out.emitted > MAX_MOTIONS_PER_BLOCK {
                 return Err(step.alarm(
@@ -418,6 +479,10 @@ impl Interpreter {
             )),
             _ => Ok(()),
         });
+        let result = match (result, step.out.overtravel) {
+            (Ok(()), Some(hit)) => Err(overtravel_alarm(step.profile, hit)),
+            (r, _) => r,
+        };
         if let Err(d) = result {
             step.out.clear();
             self.state = before;
@@ -569,7 +634,7 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
         } else {
             last_of.push((g.group, w, g));
         }
-        if matches!(g.function, GFn::ReferenceReturn | GFn::NotYetReference(_))
+        if matches!(g.function, GFn::ReferenceReturn | GFn::OtherReferenceReturn | GFn::NotYetReference(_))
             && profile.reference_in_canned_cycle_alarm
             && step.st.drill.kind.is_some()
             // G80, or a group 01 code, in the same block cancels the cycle first (inferred: a
@@ -628,7 +693,13 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
             _ => {}
         }
     }
+    // GSK980TDi help text, G54-G59 note 6: with G50 in the block, G54-G59 are void.
+    let set_wins = profile.frame.coordinate_set_wins
+        && last_of.iter().any(|(_, _, g)| matches!(g.function, GFn::LatheCoordinateSet | GFn::MillCoordinateSet));
     for (_, w, g) in &last_of {
+        if set_wins && matches!(g.function, GFn::WorkOffset(_)) {
+            continue;
+        }
         let st = &mut step.st;
         if g.group != Group::NonModal {
             st.group_codes[g.group as usize] = (w.value * 10.0).round() as u16;
@@ -658,7 +729,8 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
                     step.warn(Rule::NotSimulated, w.span, msg);
                 }
             }
-            GFn::LengthComp | GFn::WorkOffset | GFn::PathControl => {}
+            GFn::WorkOffset(n) => frame::select_work(step, n),
+            GFn::LengthComp | GFn::PathControl => {}
             GFn::ReturnInitial => st.return_initial = true,
             GFn::ReturnR => st.return_initial = false,
             // G80: the cycle and its hole data end; F stays (seed 003 8.1.4).
@@ -672,7 +744,7 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
                     codes.motion = Some((w.span, Motion::Rapid));
                 }
             }
-            GFn::Dwell | GFn::ReferenceReturn | GFn::LatheCoordinateSet | GFn::MillCoordinateSet | GFn::CompoundThread(_) | GFn::PeckCycle(_) | GFn::Rough(_) | GFn::Finish => {
+            GFn::Dwell | GFn::ReferenceReturn | GFn::OtherReferenceReturn | GFn::LocalCoordinates | GFn::MachineCoordinates | GFn::LatheCoordinateSet | GFn::MillCoordinateSet | GFn::CompoundThread(_) | GFn::PeckCycle(_) | GFn::Rough(_) | GFn::Finish => {
                 codes.non_modal = Some((w.span, g.function))
             }
             GFn::NotYet(_) | GFn::NotYetReference(_) | GFn::MacroCall | GFn::ModalMacroCall | GFn::ModalMacroCancel => unreachable!("rejected above"),
@@ -860,30 +932,27 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
     if matches!(codes.non_modal, Some((_, f)) if f != GFn::Dwell) {
         step.st.box_cycle = Default::default();
     }
-    match codes.non_modal {
+    let mut non_modal = codes.non_modal;
+    if let Some((span, GFn::MachineCoordinates)) = non_modal {
+        if frame::machine_move(step, &mut words, span)? {
+            return finish_block(step, &words, &codes, after, switches);
+        }
+        // Ignored in incremental: the block runs as without it.
+        non_modal = None;
+    }
+    match non_modal {
         Some((_, GFn::Dwell)) => dwell(step, &mut words)?,
         Some((_, GFn::CompoundThread(kind))) => compound::compound(step, &mut words, kind)?,
         Some((_, GFn::PeckCycle(kind))) => groove::block(step, &mut words, kind)?,
         Some((_, GFn::Rough(kind))) => rough::block(step, &mut words, kind)?,
         Some((_, GFn::Finish)) => rough::finishing(step, &mut words)?,
-        Some((_, GFn::ReferenceReturn)) => {
-            let (target, given) = axis_target(step, &mut words)?;
-            let mid = target;
-            if given.iter().any(|g| *g) {
-                step.emit(Op::Rapid { from: step.st.pos, to: mid });
-                let mut home = mid;
-                for a in 0..3 {
-                    if given[a] {
-                        home.set_axis(a, profile.reference_point_mm.axis(a));
-                    }
-                }
-                step.emit(Op::Rapid { from: step.st.pos, to: home });
-            }
+        Some((span, GFn::ReferenceReturn)) => frame::reference_return(step, &mut words, 1, span)?,
+        Some((span, GFn::OtherReferenceReturn)) => {
+            let n = frame::other_reference(step, &mut words)?;
+            frame::reference_return(step, &mut words, n, span)?;
         }
-        Some((_, GFn::LatheCoordinateSet | GFn::MillCoordinateSet)) => {
-            let (target, _) = axis_target(step, &mut words)?;
-            step.st.pos = target;
-        }
+        Some((_, GFn::LatheCoordinateSet | GFn::MillCoordinateSet)) => frame::set_coordinates(step, &mut words)?,
+        Some((_, GFn::LocalCoordinates)) => frame::local(step, &mut words)?,
         Some(_) => unreachable!("only one-shot functions are stored"),
         None => {
             if let Some((_, m)) = codes.motion {
@@ -971,7 +1040,9 @@ fn describe_command(step: &Step, codes: &Codes) -> String {
     let name = |f: GFn| step.profile.name_of(f);
     let (_, m) = match codes.non_modal {
         Some((_, f @ GFn::Dwell)) => return format!("{} (dwell)", name(f)),
-        Some((_, f @ GFn::ReferenceReturn)) => return format!("{} (reference return)", name(f)),
+        Some((_, f @ (GFn::ReferenceReturn | GFn::OtherReferenceReturn))) => return format!("{} (reference return)", name(f)),
+        Some((_, f @ GFn::LocalCoordinates)) => return format!("{} (local coordinate system)", name(f)),
+        Some((_, f @ GFn::MachineCoordinates)) => return format!("{} (positioning in machine coordinates)", name(f)),
         Some((_, f @ (GFn::LatheCoordinateSet | GFn::MillCoordinateSet))) => return format!("{} (coordinate setting)", name(f)),
         Some((_, f @ GFn::CompoundThread(Compound::G76))) => return format!("{} (compound threading)", name(f)),
         Some((_, f @ GFn::CompoundThread(Compound::G78))) => return format!("{} (compound threading with infeed modes)", name(f)),

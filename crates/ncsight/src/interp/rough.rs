@@ -231,7 +231,7 @@ impl Interpreter {
             if let Some(g) = drilling {
                 return Err(self.contour_alarm(Rule::ContourCommand, b.span, format!("{code}: a contour block cannot run the drilling cycle G{}", g.major)));
             }
-            let mut step = Step { profile: self.profile, params: &self.params, repair: None, span: b.span, n: b.sequence, st: &mut st, out: &mut scratch };
+            let mut step = Step { profile: self.profile, params: &self.params, tables: &self.tables, repair: None, span: b.span, n: b.sequence, st: &mut st, out: &mut scratch };
             run_block(&mut step, b, self.switches)?;
             if scratch.rough_request.is_some() || scratch.finish_request.is_some() {
                 return Err(self.contour_alarm(Rule::ContourCommand, b.span, format!("{code}: a contour block cannot call a cycle itself")));
@@ -360,7 +360,7 @@ impl Interpreter {
     fn emit_cycle(&mut self, req: &RoughRequest, ops: Vec<Op>, out: &mut Outcome) -> Result<(), Diagnostic> {
         let code = req.kind.code();
         let before = self.state.clone();
-        let mut step = Step { profile: self.profile, params: &self.params, repair: None, span: req.span, n: req.n, st: &mut self.state, out };
+        let mut step = Step { profile: self.profile, params: &self.params, tables: &self.tables, repair: None, span: req.span, n: req.n, st: &mut self.state, out };
         let result = ops.into_iter().try_for_each(|op| step.emit_cut(code, op)).and_then(|()| {
             // The per-block limit (the cycle's moves come here, not through `execute_into`).
             if step.out.emitted > super::MAX_MOTIONS_PER_BLOCK {

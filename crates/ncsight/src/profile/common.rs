@@ -45,12 +45,12 @@ pub(super) const G_CODES: &[GDef] = &[
     g(40, Group::CutterComp, GFn::RadiusComp(false), "cancel radius compensation"),
     g(41, Group::CutterComp, GFn::RadiusComp(true), "radius compensation, left"),
     g(42, Group::CutterComp, GFn::RadiusComp(true), "radius compensation, right"),
-    g(54, Group::WorkOffset, GFn::WorkOffset, "work coordinate system 1"),
-    g(55, Group::WorkOffset, GFn::WorkOffset, "work coordinate system 2"),
-    g(56, Group::WorkOffset, GFn::WorkOffset, "work coordinate system 3"),
-    g(57, Group::WorkOffset, GFn::WorkOffset, "work coordinate system 4"),
-    g(58, Group::WorkOffset, GFn::WorkOffset, "work coordinate system 5"),
-    g(59, Group::WorkOffset, GFn::WorkOffset, "work coordinate system 6"),
+    g(54, Group::WorkOffset, GFn::WorkOffset(1), "work coordinate system 1"),
+    g(55, Group::WorkOffset, GFn::WorkOffset(2), "work coordinate system 2"),
+    g(56, Group::WorkOffset, GFn::WorkOffset(3), "work coordinate system 3"),
+    g(57, Group::WorkOffset, GFn::WorkOffset(4), "work coordinate system 4"),
+    g(58, Group::WorkOffset, GFn::WorkOffset(5), "work coordinate system 5"),
+    g(59, Group::WorkOffset, GFn::WorkOffset(6), "work coordinate system 6"),
 ];
 
 pub(super) const M_CODES: &[MDef] = &[

@@ -10,7 +10,7 @@ const G_CODES: &[GDef] = &[
     g(43, Group::LengthComp, GFn::LengthComp, "tool length compensation +"),
     g(44, Group::LengthComp, GFn::LengthComp, "tool length compensation -"),
     g(49, Group::LengthComp, GFn::LengthComp, "cancel tool length compensation"),
-    g(53, Group::NonModal, GFn::NotYet("positioning in machine coordinates is not simulated: ncsight has programme coordinates only"), "positioning in the machine coordinate system"),
+    g(53, Group::NonModal, GFn::MachineCoordinates, "positioning in the machine coordinate system"),
     g(61, Group::PathMode, GFn::PathControl, "exact stop mode"),
     g(64, Group::PathMode, GFn::PathControl, "cutting mode"),
     g(73, Group::CannedCycle, GFn::Drill(DrillKind::G73), "high-speed peck drilling"),
@@ -147,6 +147,7 @@ pub static PROFILE: Profile = Profile {
     },
     calls: super::CallRules::FANUC,
     macros: super::MacroRules { group_numbers: super::FANUC_M_GROUPS, ..super::MacroRules::FANUC },
+    frame: super::FrameRules::FANUC,
     summary: "FANUC 0-M machining centre. G90/G91, G17 at power on. Lengths without a decimal point \
 are least input increments (X100 = 0.1 mm), F without a point is mm/min.",
 };

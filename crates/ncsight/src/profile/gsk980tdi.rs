@@ -228,6 +228,7 @@ pub static PROFILE: Profile = Profile {
         source: "GSK980TDi help text, G65 (P right after G65; macro A with H); five bracket levels as FANUC (inferred)",
         ..super::MacroRules::FANUC
     },
+    frame: super::FrameRules::GSK,
     summary: "GSK980TDi turning centre. X is a diameter, U/W incremental. Lengths without a decimal \
 point are millimetres (seed 000's O0012: Z-28, F3, J3 K1). Feed per minute (G98) at power on.",
 };

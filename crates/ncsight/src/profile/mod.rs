@@ -156,8 +156,14 @@ pub enum GFn {
     RadiusComp(bool),
     /// G43/G44/G49: tool length compensation; positions stay in programme coordinates.
     LengthComp,
-    /// G54..G59: work offsets; all are zero in the simulation unless set up.
-    WorkOffset,
+    /// G54..G59: select work coordinate system 1-6 (offsets from the setup's `[work]`).
+    WorkOffset(u8),
+    /// G52: a local coordinate system inside the work system (FANUC; GSK980TDi help G52).
+    LocalCoordinates,
+    /// G53: positioning in machine coordinates, this block only.
+    MachineCoordinates,
+    /// G30: via an intermediate point to the 2nd (3rd, 4th: P) reference point.
+    OtherReferenceReturn,
     /// G61/G64 and friends: path control, no effect on the programmed path.
     PathControl,
     /// G98/G99 on a mill: return to the initial level / to the R point.
@@ -405,6 +411,34 @@ impl MacroRules {
         single_block_param: Some(ParamKey::Number(6000, Some(5))),
         group_numbers: FANUC_T_GROUPS,
         source: "FANUC Series 16/18 operator's manual for lathe (brackets: five levels, alarm 118); FANUC Series 16i (G65 arguments)",
+    };
+}
+
+/// How the coordinate systems behave (MACRO.md section 10.2).
+#[derive(Debug, Clone, Copy)]
+pub struct FrameRules {
+    /// G50/G92 in the same block as G54-G59 wins: the work system stays as it was (GSK980TDi
+    /// help text, G54-G59 note 6). Elsewhere the system is selected first, then set.
+    pub coordinate_set_wins: bool,
+    /// G28 and G30 cancel the tool offset (GSK980TDi help text, G28 note 2, G30 note 3).
+    pub reference_cancels_tool_offset: bool,
+    /// The highest reference point G30 reaches with P (4: P2-P4; 2: the 2nd only).
+    pub last_reference: u8,
+    pub source: &'static str,
+}
+
+impl FrameRules {
+    pub const FANUC: FrameRules = FrameRules {
+        coordinate_set_wins: false,
+        reference_cancels_tool_offset: false,
+        last_reference: 4,
+        source: "FANUC 0i manuals as recalled (G30 P2-P4; G92 after G54 in one block sets the system selected); MACRO.md 10.2",
+    };
+    pub const GSK: FrameRules = FrameRules {
+        coordinate_set_wins: true,
+        reference_cancels_tool_offset: true,
+        last_reference: 4,
+        source: "GSK980TDi help text: G54-G59 note 6, G28 note 2, G30 (P2-P4) note 3",
     };
 }
 
@@ -682,8 +716,8 @@ pub struct Profile {
     pub reference_in_canned_cycle_alarm: bool,
     /// Axes the machine has, of "XYZ" (formatters omit the others).
     pub axes: &'static str,
-    /// The reference point G28 returns to, in programme coordinates (mm, X as a radius). The
-    /// simulation has no machine coordinates, so this is a documented assumption per profile.
+    /// The reference point G28 returns to, in machine coordinates (mm, X as a radius), where the
+    /// setup gives none: a documented assumption per profile (docs/setup.md).
     pub reference_point_mm: crate::motion::Vec3,
     /// Addresses the controller reads at all (anything else is IMPROPER NC-ADDRESS).
     pub addresses: Letters,
@@ -699,6 +733,7 @@ pub struct Profile {
     pub drill: DrillRules,
     pub calls: CallRules,
     pub macros: MacroRules,
+    pub frame: FrameRules,
     /// One paragraph for `ncsight machines`.
     pub summary: &'static str,
 }

@@ -441,6 +441,12 @@ impl Program {
         &self.core.interp
     }
 
+    /// The machine's offsets, reference points and limits from a setup; given before the first
+    /// line (the tool starts at the setup's reference point).
+    pub fn set_setup(&mut self, setup: &crate::setup::Setup) {
+        self.core.interp.set_setup(setup);
+    }
+
     /// How programmes that call programmes are run; given before the first line. With a main
     /// programme named, the run begins by looking for it.
     pub fn set_call_options(&mut self, options: CallOptions) {

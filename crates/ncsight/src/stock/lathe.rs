@@ -210,7 +210,7 @@ impl LatheStock {
     /// Apply one record with the tool in the turret.
     pub fn apply(&mut self, rec: &Record, tool: &Tool, spindle_turning: bool) {
         let after_thread = self.last_thread_end.take();
-        if tool.kind == super::ToolKind::Drill {
+        if tool.kind.on_spindle_axis() {
             // A drill on the spindle axis bores the part from its face: the height field of the
             // outside does not hold that (docs/commands/simulate.md); its moves are not cut.
             return;

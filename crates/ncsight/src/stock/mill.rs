@@ -7,15 +7,8 @@
 use super::lathe::Finding;
 use super::Tool;
 use crate::motion::{Op, Record, Vec3};
-use serde::Deserialize;
 
-/// A block of stock on the table, its corners in programme coordinates.
-#[derive(Debug, Clone, Copy, PartialEq, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct Block {
-    pub min_mm: [f64; 3],
-    pub max_mm: [f64; 3],
-}
+pub use crate::setup::Block;
 
 /// A hole found in the cut surface.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -1,0 +1,389 @@
+//! The job setup (`--setup FILE.toml`, ../shared/spec/INTERFACE.md "The setup file"): the
+//! machine, its work offsets, tool and offset tables, and the stock. Plain data read from TOML and
+//! checked; the interpreter takes the machine's frame from it, the stock simulation the stock and
+//! the tools' shapes.
+
+use serde::Deserialize;
+
+/// The job setup (`--setup FILE.toml`): the machine (axes, travel limits, reference points),
+/// the work offsets, the tool and offset tables, the stock. Every part is optional; without a
+/// part the run assumes what docs/setup.md says (offsets 0, the profile's reference point).
+#[derive(Debug, Clone, PartialEq, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+pub struct Setup {
+    pub machine: Option<MachineSetup>,
+    /// Work offsets: where each coordinate system's zero is in machine coordinates.
+    pub work: Option<WorkOffsets>,
+    #[serde(default, rename = "tool")]
+    pub tools: Vec<Tool>,
+    /// The offset table (a lathe's T0101 selects offset 01; a mill's H and D numbers).
+    #[serde(default, rename = "offset")]
+    pub offsets: Vec<Offset>,
+    pub stock: Option<Bar>,
+    /// A block on a machining centre (drilling cycles).
+    pub block: Option<Block>,
+}
+
+/// `[machine]`: what the machine is, in machine coordinates (mm; X as a diameter on a lathe).
+#[derive(Debug, Clone, PartialEq, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+pub struct MachineSetup {
+    /// The axes the machine has (`["X", "Z"]`); the profile's axes when absent.
+    #[serde(default)]
+    pub axes: Vec<String>,
+    /// Multi-spindle machines: the P values that select a spindle in an S/M block.
+    #[serde(default)]
+    pub spindle_p: Vec<u32>,
+    /// Soft travel limits, `[min, max]` per axis.
+    pub limits: Option<Limits>,
+    /// The reference point (G28), where the tool is at power on.
+    pub reference: Option<Point>,
+    /// The 2nd, 3rd and 4th reference points (G30 P2-P4).
+    pub reference_2: Option<Point>,
+    pub reference_3: Option<Point>,
+    pub reference_4: Option<Point>,
+}
+
+/// A point in machine coordinates; an axis left out is 0.
+#[derive(Debug, Clone, Copy, PartialEq, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+pub struct Point {
+    pub x_mm: Option<f64>,
+    pub y_mm: Option<f64>,
+    pub z_mm: Option<f64>,
+}
+
+impl Point {
+    /// X, Y, Z with 0 for what is left out (X as written: a diameter on a lathe).
+    pub fn xyz(&self) -> [f64; 3] {
+        [self.x_mm.unwrap_or(0.0), self.y_mm.unwrap_or(0.0), self.z_mm.unwrap_or(0.0)]
+    }
+}
+
+/// Soft travel limits per axis, `[min, max]` in machine coordinates.
+#[derive(Debug, Clone, Copy, PartialEq, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+pub struct Limits {
+    pub x_mm: Option<[f64; 2]>,
+    pub y_mm: Option<[f64; 2]>,
+    pub z_mm: Option<[f64; 2]>,
+}
+
+impl Limits {
+    pub fn by_axis(&self) -> [Option<[f64; 2]>; 3] {
+        [self.x_mm, self.y_mm, self.z_mm]
+    }
+}
+
+/// `[work]`: G54-G59 and the external (common) offset that shifts all six.
+#[derive(Debug, Clone, Copy, PartialEq, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+pub struct WorkOffsets {
+    #[serde(rename = "G54")]
+    pub g54: Option<Point>,
+    #[serde(rename = "G55")]
+    pub g55: Option<Point>,
+    #[serde(rename = "G56")]
+    pub g56: Option<Point>,
+    #[serde(rename = "G57")]
+    pub g57: Option<Point>,
+    #[serde(rename = "G58")]
+    pub g58: Option<Point>,
+    #[serde(rename = "G59")]
+    pub g59: Option<Point>,
+    pub external: Option<Point>,
+}
+
+impl WorkOffsets {
+    /// The external offset, then G54-G59.
+    pub fn all(&self) -> [Option<Point>; 7] {
+        [self.external, self.g54, self.g55, self.g56, self.g57, self.g58, self.g59]
+    }
+}
+
+/// One entry of the offset table: geometry and wear per axis, the nose (or cutter) radius and
+/// the imaginary tool nose number (lathes), the tool length (mills, H).
+#[derive(Debug, Clone, Copy, PartialEq, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+pub struct Offset {
+    pub number: u32,
+    #[serde(default)]
+    pub x_mm: f64,
+    #[serde(default)]
+    pub y_mm: f64,
+    #[serde(default)]
+    pub z_mm: f64,
+    #[serde(default)]
+    pub wear_x_mm: f64,
+    #[serde(default)]
+    pub wear_y_mm: f64,
+    #[serde(default)]
+    pub wear_z_mm: f64,
+    #[serde(default)]
+    pub radius_mm: f64,
+    #[serde(default)]
+    pub wear_radius_mm: f64,
+    #[serde(default)]
+    pub tip: u8,
+    #[serde(default)]
+    pub length_mm: f64,
+    #[serde(default)]
+    pub wear_length_mm: f64,
+}
+
+/// A block of stock on a machining centre's table, its corners in programme coordinates.
+#[derive(Debug, Clone, Copy, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Block {
+    pub min_mm: [f64; 3],
+    pub max_mm: [f64; 3],
+}
+
+/// A bar on a lathe: its face at `front_z_mm`, extending `length_mm` toward -Z; `bore_mm` for
+/// internal threads (0: solid).
+#[derive(Debug, Clone, Copy, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Bar {
+    pub diameter_mm: f64,
+    pub length_mm: f64,
+    #[serde(default)]
+    pub bore_mm: f64,
+    #[serde(default)]
+    pub front_z_mm: f64,
+}
+
+/// What a tool is.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Default)]
+#[serde(rename_all = "lowercase")]
+pub enum ToolKind {
+    /// A threading insert (V profile).
+    #[default]
+    Thread,
+    /// A turning tool (a nose radius).
+    Turning,
+    /// A drill (diameter, point angle).
+    Drill,
+    /// A grooving or parting tool.
+    Groove,
+    /// A boring bar (a nose radius, inside the bore).
+    Boring,
+    /// A tap.
+    Tap,
+    /// A milling cutter (its diameter).
+    Mill,
+}
+
+impl ToolKind {
+    /// A tool that works along the spindle axis (drill, tap, an end mill): not cut in the
+    /// lathe stock's height field.
+    pub fn on_spindle_axis(self) -> bool {
+        matches!(self, ToolKind::Drill | ToolKind::Tap | ToolKind::Mill)
+    }
+}
+
+/// A tool by its T number.
+#[derive(Debug, Clone, Copy, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Tool {
+    /// T number (the tool part of a lathe's `T0101`).
+    pub number: u32,
+    #[serde(default)]
+    pub kind: ToolKind,
+    /// Included angle of a threading insert, degrees (60 for ISO metric and UN).
+    #[serde(default = "sixty")]
+    pub included_angle_deg: f64,
+    /// Tip (nose) radius, mm (`nose_radius_mm` is the same key).
+    #[serde(default, alias = "nose_radius_mm")]
+    pub tip_radius_mm: f64,
+    /// The imaginary tool nose number 0-9 (lathes), where the offset table does not give it.
+    #[serde(default)]
+    pub tip: Option<u8>,
+    /// Width of a flat tip, mm (instead of a radius).
+    #[serde(default)]
+    pub tip_flat_mm: f64,
+    /// Cuts an internal thread (works on the bore, cutting outward).
+    #[serde(default)]
+    pub internal: bool,
+    /// Drill diameter, mm.
+    #[serde(default)]
+    pub diameter_mm: f64,
+    /// Drill point angle, degrees.
+    #[serde(default = "one_eighteen")]
+    pub point_angle_deg: f64,
+}
+
+fn sixty() -> f64 {
+    60.0
+}
+
+fn one_eighteen() -> f64 {
+    118.0
+}
+
+impl Tool {
+    /// The default without a setup: a sharp 60-degree external threading insert.
+    pub fn default_thread() -> Tool {
+        Tool {
+            number: 0,
+            kind: ToolKind::Thread,
+            included_angle_deg: 60.0,
+            tip_radius_mm: 0.0,
+            tip: None,
+            tip_flat_mm: 0.0,
+            internal: false,
+            diameter_mm: 0.0,
+            point_angle_deg: 118.0,
+        }
+    }
+
+    /// How far the cut surface lies from the tip's radius at axial distance `u` from the tip
+    /// (the edge profile): flat, then the nose radius, then the flanks at half the included
+    /// angle. `None` beyond the tool's reach is never returned: the flanks go on.
+    pub fn profile(&self, u: f64) -> f64 {
+        let u = u.abs();
+        let half = (self.included_angle_deg / 2.0).to_radians();
+        let slope = 1.0 / half.tan().max(1e-9); // radial per axial on a flank
+        let flat = self.tip_flat_mm / 2.0;
+        if u <= flat {
+            return 0.0;
+        }
+        let u = u - flat;
+        let rho = self.tip_radius_mm;
+        if rho > 0.0 {
+            // The nose arc meets the flanks where its tangent has the flank's slope.
+            let u_t = rho * half.cos();
+            if u <= u_t {
+                return rho - (rho * rho - u * u).sqrt();
+            }
+            let r_t = rho - (rho * rho - u_t * u_t).sqrt();
+            return r_t + (u - u_t) * slope;
+        }
+        u * slope
+    }
+}
+
+/// Why a setup cannot be used.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SetupError(pub String);
+
+impl std::fmt::Display for SetupError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "{}", self.0)
+    }
+}
+
+impl Setup {
+    /// Read a setup from its TOML text.
+    pub fn from_toml(text: &str) -> Result<Setup, SetupError> {
+        let s: Setup = toml::from_str(text).map_err(|e| SetupError(e.to_string()))?;
+        // Every value is checked: NaN or infinity would make the simulation answer wrongly and
+        // silently. Lengths are at most 100 m.
+        const MAX_MM: f64 = 100_000.0;
+        let length = |v: f64| v.is_finite() && v.abs() <= MAX_MM;
+        if let Some(b) = s.stock {
+            if !(length(b.diameter_mm) && length(b.length_mm) && length(b.bore_mm) && length(b.front_z_mm)) {
+                return Err(SetupError(format!("stock: every length must be a finite number of at most {MAX_MM} mm")));
+            }
+            if !(b.diameter_mm > 0.0 && b.length_mm > 0.0 && b.bore_mm >= 0.0 && b.bore_mm < b.diameter_mm) {
+                return Err(SetupError("stock: diameter and length must be more than 0, the bore less than the diameter".into()));
+            }
+        }
+        for t in &s.tools {
+            let lengths_ok = [t.tip_radius_mm, t.tip_flat_mm, t.diameter_mm].into_iter().all(|v| length(v) && v >= 0.0);
+            let angles_ok = [t.included_angle_deg, t.point_angle_deg].into_iter().all(|a| a.is_finite() && a > 0.0 && a < 180.0);
+            if !(lengths_ok && angles_ok) {
+                return Err(SetupError(format!(
+                    "tool {}: the included and point angles must be more than 0 and less than 180 degrees, the radius, flat and diameter finite, 0 or more",
+                    t.number
+                )));
+            }
+        }
+        for t in &s.tools {
+            if t.tip.is_some_and(|n| n > 9) {
+                return Err(SetupError(format!("tool {}: tip is the imaginary tool nose number, 0 to 9", t.number)));
+            }
+        }
+        let point_ok = |p: &Point| [p.x_mm, p.y_mm, p.z_mm].into_iter().flatten().all(length);
+        if let Some(m) = &s.machine {
+            for a in &m.axes {
+                if !matches!(a.as_str(), "X" | "Y" | "Z" | "A" | "B" | "C") {
+                    return Err(SetupError(format!("machine.axes: {a:?} is not an axis (X, Y, Z, A, B or C)")));
+                }
+            }
+            for (name, p) in [("reference", m.reference), ("reference_2", m.reference_2), ("reference_3", m.reference_3), ("reference_4", m.reference_4)] {
+                if p.is_some_and(|p| !point_ok(&p)) {
+                    return Err(SetupError(format!("machine.{name}: every coordinate must be a finite number of at most {MAX_MM} mm")));
+                }
+            }
+            if let Some(l) = m.limits {
+                for (axis, r) in ["x", "y", "z"].into_iter().zip(l.by_axis()) {
+                    if let Some([lo, hi]) = r {
+                        if !(length(lo) && length(hi) && lo < hi) {
+                            return Err(SetupError(format!("machine.limits.{axis}_mm: give [min, max] with min less than max, finite, at most {MAX_MM} mm")));
+                        }
+                    }
+                }
+            }
+        }
+        if let Some(w) = &s.work {
+            let names = ["external", "G54", "G55", "G56", "G57", "G58", "G59"];
+            for (name, p) in names.into_iter().zip(w.all()) {
+                if p.is_some_and(|p| !point_ok(&p)) {
+                    return Err(SetupError(format!("work.{name}: every coordinate must be a finite number of at most {MAX_MM} mm")));
+                }
+            }
+        }
+        let mut seen = std::collections::BTreeSet::new();
+        for o in &s.offsets {
+            let values = [o.x_mm, o.y_mm, o.z_mm, o.wear_x_mm, o.wear_y_mm, o.wear_z_mm, o.radius_mm, o.wear_radius_mm, o.length_mm, o.wear_length_mm];
+            if !values.into_iter().all(length) {
+                return Err(SetupError(format!("offset {}: every value must be a finite number of at most {MAX_MM} mm", o.number)));
+            }
+            if o.tip > 9 {
+                return Err(SetupError(format!("offset {}: tip is the imaginary tool nose number, 0 to 9", o.number)));
+            }
+            if o.number == 0 || o.number > MAX_OFFSET_NUMBER {
+                return Err(SetupError(format!("offset {}: numbers run from 1 to {MAX_OFFSET_NUMBER} (0 is no offset)", o.number)));
+            }
+            if !seen.insert(o.number) {
+                return Err(SetupError(format!("offset {} is given twice", o.number)));
+            }
+        }
+        Ok(s)
+    }
+
+    /// The offset table's entry `number`, if the setup gives it.
+    pub fn offset(&self, number: u32) -> Option<&Offset> {
+        self.offsets.iter().find(|o| o.number == number)
+    }
+
+    /// `--stock 60x80`: a 60 mm bar, 80 mm long, its face at Z0.
+    pub fn parse_stock(text: &str) -> Result<Bar, SetupError> {
+        let (d, l) = text.split_once(['x', 'X']).ok_or_else(|| SetupError(format!("--stock {text}: write DIAxLEN, e.g. 60x80")))?;
+        let d: f64 = d.trim().parse().map_err(|_| SetupError(format!("--stock {text}: the diameter is not a number")))?;
+        let l: f64 = l.trim().parse().map_err(|_| SetupError(format!("--stock {text}: the length is not a number")))?;
+        if !(d > 0.0 && l > 0.0 && d.is_finite() && l.is_finite()) {
+            return Err(SetupError(format!("--stock {text}: diameter and length must be more than 0")));
+        }
+        Ok(Bar { diameter_mm: d, length_mm: l, bore_mm: 0.0, front_z_mm: 0.0 })
+    }
+
+    /// The tool of a T number, or the default threading insert.
+    pub fn tool(&self, number: u32) -> Tool {
+        self.tools.iter().find(|t| t.number == number).copied().unwrap_or_else(Tool::default_thread)
+    }
+
+    /// The tool of a T number on a machining centre, or the default drill (5 mm, 118 degrees).
+    pub fn mill_tool(&self, number: u32) -> Tool {
+        self.tools.iter().find(|t| t.number == number).copied().unwrap_or(Tool {
+            kind: ToolKind::Drill,
+            diameter_mm: 5.0,
+            point_angle_deg: 118.0,
+            ..Tool::default_thread()
+        })
+    }
+}
+
+/// The highest offset number a setup may give (FANUC 0i-T G10 P: up to 64 wear offsets;
+/// kept wide for machines with more).
+pub const MAX_OFFSET_NUMBER: u32 = 999;
