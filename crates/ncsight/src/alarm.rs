@@ -152,6 +152,7 @@ rules! {
     ExpandApproximate => Warning, "NCS-W29", None, "EXPANDED APPROXIMATELY FOR THE TARGET";
     MachineIncremental => Warning, "NCS-W30", None, "G53 IGNORED IN INCREMENTAL";
     ReferenceAssumed => Warning, "NCS-W31", None, "REFERENCE POINT NOT IN THE SETUP";
+    OffsetAssumed => Warning, "NCS-W32", None, "OFFSET NOT IN THE SETUP";
 }
 
 impl Rule {

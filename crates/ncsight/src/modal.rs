@@ -151,8 +151,24 @@ pub struct Frame {
     pub work: u8,
     pub shift: Vec3,
     pub local: Vec3,
-    /// The tool offset applied to the position (lathe geometry and wear, mill tool length).
-    pub tool: Vec3,
+    /// The tool offset applied to the position: a lathe's geometry and wear (T), a mill's tool
+    /// length (G43/G44 H) in `geometry`.
+    pub geometry: Vec3,
+    pub wear: Vec3,
+    /// The part of a tool offset not moved out yet (a lathe's offset by movement with the next
+    /// move, FANUC 5002#6 LWM): the display reads the position plus this until the next move.
+    pub unmoved: Vec3,
+    /// The offset number in force (a lathe's T0102 -> 2; a mill's H), 0: none.
+    pub offset_number: u32,
+    /// G43 (+1), G44 (-1), G49 (0).
+    pub length_sign: i8,
+}
+
+impl Frame {
+    /// The tool offset applied.
+    pub fn tool(&self) -> Vec3 {
+        self.geometry + self.wear
+    }
 }
 
 /// Spindle rotation commanded by M03/M04/M05.

@@ -11,7 +11,7 @@ use crate::alarm::{Diagnostic, Rule};
 use crate::modal::Frame;
 use crate::motion::{Op, Vec3};
 use crate::profile::Profile;
-use crate::setup::{Point, Setup};
+use crate::setup::{Offset, Point, Setup};
 use crate::source::Span;
 
 /// The machine's tables for one run, in the interpreter's units (X as a radius on a lathe).
@@ -27,6 +27,8 @@ pub struct Tables {
     pub limits_mm: [Option<[f64; 2]>; 3],
     /// Where the tool is at power on (machine coordinates), when the setup says.
     pub power_on_mm: Option<Vec3>,
+    /// The offset table by number (X and its wear as radii on a lathe).
+    pub offsets: Vec<Offset>,
 }
 
 impl Tables {
@@ -39,6 +41,7 @@ impl Tables {
             reference_mm: [Some(profile.reference_point_mm), None, None, None],
             limits_mm: [None; 3],
             power_on_mm: None,
+            offsets: Vec::new(),
         }
     }
 
@@ -73,12 +76,31 @@ impl Tables {
             }
         }
         t.power_on_mm = t.reference_mm[0];
+        t.offsets = setup.offsets.iter().map(|o| Offset { x_mm: o.x_mm * x_scale, wear_x_mm: o.wear_x_mm * x_scale, ..*o }).collect();
         t
+    }
+
+    /// Offset `number` of the table.
+    pub fn offset(&self, number: u32) -> Option<&Offset> {
+        self.offsets.iter().find(|o| o.number == number)
+    }
+
+    /// Apply a G10 write (after its block ran); returns what the origin of `frame` moved by.
+    pub fn write(&mut self, w: TableWrite, frame: &Frame) -> Vec3 {
+        let before = self.to_machine(frame);
+        match w {
+            TableWrite::Work(i, p) => self.work_mm[i] = p,
+            TableWrite::Offset(o) => match self.offsets.iter_mut().find(|e| e.number == o.number) {
+                Some(e) => *e = o,
+                None => self.offsets.push(o),
+            },
+        }
+        self.to_machine(frame) - before
     }
 
     /// What to add to programme coordinates for machine coordinates in `frame`.
     pub fn to_machine(&self, frame: &Frame) -> Vec3 {
-        self.work_mm[0] + self.work_mm[frame.work.clamp(1, 6) as usize] + frame.shift + frame.local + frame.tool
+        self.work_mm[0] + self.work_mm[frame.work.clamp(1, 6) as usize] + frame.shift + frame.local + frame.tool()
     }
 
     /// A machine position beyond a soft limit: (axis, the limit, the machine coordinate,
@@ -97,6 +119,15 @@ impl Tables {
         }
         None
     }
+}
+
+/// What a G10 block writes into the tables, applied when the block has run.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum TableWrite {
+    /// Work offset 0 (external) or 1-6 (G54-G59).
+    Work(usize, Vec3),
+    /// A whole entry of the offset table.
+    Offset(Offset),
 }
 
 /// Change the frame and keep the tool where it is on the machine: its programme coordinates
@@ -212,7 +243,12 @@ pub(super) fn reference_return(step: &mut Step, words: &mut Words, n: usize, spa
         step.emit(Op::Rapid { from: step.st.pos, to: mid });
     }
     if step.profile.frame.reference_cancels_tool_offset {
-        reframe(step, |f| f.tool = Vec3::default());
+        reframe(step, |f| {
+            f.geometry = Vec3::default();
+            f.wear = Vec3::default();
+            f.unmoved = Vec3::default();
+            f.offset_number = 0;
+        });
     }
     let origin = step.tables.to_machine(&step.st.frame);
     let mut home = step.st.pos;
@@ -237,5 +273,183 @@ pub(super) fn other_reference(step: &mut Step, words: &mut Words) -> Result<usiz
             let range = if last == 2 { "the 2nd reference point only (P2)".to_string() } else { format!("reference point P2 to P{last}") };
             Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("{}: G30 returns to {range} on {}", w.text(), step.profile.name)))
         }
+    }
+}
+
+/// The entry an offset number names, in the interpreter's units; a number the setup lacks is
+/// all zero (warning NCS-W32 when there is a setup: without one every offset is 0 by design).
+fn entry(step: &mut Step, number: u32, span: Span) -> Offset {
+    if number == 0 {
+        return Offset::default();
+    }
+    match step.tables.offset(number) {
+        Some(o) => *o,
+        None => {
+            if step.tables.given {
+                let msg = format!("offset {number} is not in the setup's [[offset]] table: taken as 0");
+                step.warn(Rule::OffsetAssumed, span, msg);
+            }
+            Offset { number, ..Offset::default() }
+        }
+    }
+}
+
+/// Put a tool offset in force (MACRO.md 10.1). What shifts the coordinates changes the position
+/// the programme reads, with no motion; what moves the tool does so in this block (a rapid of
+/// the difference, when the block has no axis words of its own) or with the next move. Either
+/// way an absolute move then puts the new tool's tip at the point written, and an incremental
+/// one counts from the position the controller shows.
+fn put_offset(step: &mut Step, geometry: Vec3, wear: Vec3, number: u32, geometry_by_shift: bool, with_next_move: bool, has_axis: bool) {
+    let old = step.st.frame;
+    let moved = (wear - old.wear) + if geometry_by_shift { Vec3::default() } else { geometry - old.geometry };
+    reframe(step, |f| {
+        f.geometry = geometry;
+        f.wear = wear;
+        f.offset_number = number;
+    });
+    let unmoved = old.unmoved + moved;
+    if unmoved == Vec3::default() {
+        return;
+    }
+    if with_next_move || has_axis {
+        step.st.frame.unmoved = unmoved;
+    } else {
+        let from = step.st.pos;
+        step.emit(Op::Rapid { from, to: from + unmoved });
+    }
+}
+
+/// A lathe's T word with an offset part (`T0102` -> 2; `T0100` cancels): that entry's geometry
+/// and wear act as the profile's parameters say (FANUC 5002#4 LGT, #6 LWM; GSK settings).
+pub(super) fn lathe_offset(step: &mut Step, number: u32, span: Span, has_axis: bool) {
+    let Some((geometry_key, wear_key)) = step.profile.frame.lathe_offset_keys else {
+        return;
+    };
+    let e = entry(step, number, span);
+    let by_shift = step.params.get(geometry_key) == 0.0;
+    let next_move = step.params.get(wear_key) == 1.0;
+    put_offset(step, Vec3::new(e.x_mm, e.y_mm, e.z_mm), Vec3::new(e.wear_x_mm, e.wear_y_mm, e.wear_z_mm), number, by_shift, next_move, has_axis);
+}
+
+/// G43 (+1) / G44 (-1) with H, G49 (0): the tool length of offset H along Z (FANUC tool length
+/// offset A), moved in the block: with its Z move, else as a rapid of the difference. An H in a
+/// block while G43/G44 is in force changes the offset (FANUC 0i-MB manual, 14.1.2).
+pub(super) fn length_offset(step: &mut Step, sign: i8, h: Option<u32>, span: Span, has_axis: bool) {
+    let number = if sign == 0 { 0 } else { h.unwrap_or(step.st.frame.offset_number) };
+    let e = entry(step, number, span);
+    let length = sign as f64 * (e.length_mm + e.wear_length_mm);
+    step.st.frame.length_sign = sign;
+    put_offset(step, Vec3::new(0.0, 0.0, length), Vec3::default(), number, false, false, has_axis);
+}
+
+/// G10: data setting, in the forms the profile has (MACRO.md 10.2). The values are written
+/// when the block has run; later blocks see them.
+pub(super) fn data_setting(step: &mut Step, words: &mut Words, span: Span) -> Result<Option<TableWrite>, Diagnostic> {
+    use crate::profile::G10Forms;
+    let forms = step.profile.frame.g10;
+    let l = match words.take(b'L') {
+        Some(w) if w.decimal || w.value < 0.0 => return Err(step.alarm(Rule::IllegalDecimalPoint, w.span, format!("{}: L is a whole number", w.text()))),
+        Some(w) => Some(w.value as u32),
+        None => None,
+    };
+    if forms == G10Forms::ToolLifeAndParameters {
+        // GSK980TDi help text: G10 L3 (tool life, HT:567) and G10 L52 (parameters, HT:1525).
+        return Err(match l {
+            Some(3) => step.alarm(Rule::NotSupported, span, "G10 L3 (tool life management data): not simulated by ncsight yet"),
+            Some(52) => step.alarm(Rule::NotSupported, span, "G10 L52 (parameter writing): not simulated by ncsight yet"),
+            _ => step.alarm(Rule::ImproperGCode, span, format!("G10 on {}: its help text has G10 L3 (tool life) and G10 L52 (parameters) only, no work or tool offset setting", step.profile.name)),
+        });
+    }
+    let p = match words.take(b'P') {
+        Some(w) if w.decimal || w.value < 0.0 => return Err(step.alarm(Rule::IllegalDecimalPoint, w.span, format!("{}: P is a whole number", w.text()))),
+        Some(w) => (w.value as u32, w),
+        None => return Err(step.alarm(Rule::MissingWord, span, "G10 needs P: the work system (L2 P0-P6) or the offset number")),
+    };
+    let (n, pw) = p;
+    let x_scale = if step.profile.diameter_x { 0.5 } else { 1.0 };
+    // Set (absolute) or add (incremental: G91 on a mill, U/V/W on a lathe) per axis.
+    let mut values = [None::<(f64, bool)>; 3];
+    for (abs_l, inc_l, axis) in [(b'X', b'U', 0), (b'Y', b'V', 1), (b'Z', b'W', 2)] {
+        let abs_w = words.take(abs_l);
+        let inc_w = if step.profile.incremental_addresses { words.take(inc_l) } else { None };
+        if let (Some(a), Some(i)) = (abs_w, inc_w) {
+            return Err(step.alarm(Rule::DuplicateWord, i.span, format!("{} and {} both give the {} axis", a.text(), i.text(), abs_l as char)));
+        }
+        if let Some(w) = abs_w.or(inc_w) {
+            let scale = if axis == 0 { x_scale } else { 1.0 };
+            values[axis] = Some((step.length(w)? * scale, inc_w.is_some() || step.st.incremental));
+        }
+    }
+    let merge = |old: f64, v: Option<(f64, bool)>| match v {
+        Some((v, true)) => old + v,
+        Some((v, false)) => v,
+        None => old,
+    };
+    let out_of_range = |step: &Step, what: &str| step.alarm(Rule::ValueOutOfRange, pw.span, format!("{}: {what}", pw.text()));
+    if l == Some(2) {
+        if n > 6 {
+            return Err(out_of_range(step, "G10 L2 sets work offset P0 (external) to P6 (G59)"));
+        }
+        let old = step.tables.work_mm[n as usize];
+        let p = Vec3::new(merge(old.x, values[0]), merge(old.y, values[1]), merge(old.z, values[2]));
+        return Ok(Some(TableWrite::Work(n as usize, p)));
+    }
+    match (forms, l) {
+        (G10Forms::LatheOffsets, None) => {
+            // P1-64 wear, P10001-10064 geometry (MACRO.md 10.2, inferred); R (C adds) the nose
+            // radius, Q the imaginary tip.
+            let (number, geometry) = match n {
+                1..=64 => (n, false),
+                10_001..=10_064 => (n - 10_000, true),
+                _ => return Err(out_of_range(step, "G10 P sets wear offsets P1-P64 or geometry offsets P10001-P10064")),
+            };
+            let mut e = step.tables.offset(number).copied().unwrap_or(Offset { number, ..Offset::default() });
+            if geometry {
+                (e.x_mm, e.y_mm, e.z_mm) = (merge(e.x_mm, values[0]), merge(e.y_mm, values[1]), merge(e.z_mm, values[2]));
+            } else {
+                (e.wear_x_mm, e.wear_y_mm, e.wear_z_mm) = (merge(e.wear_x_mm, values[0]), merge(e.wear_y_mm, values[1]), merge(e.wear_z_mm, values[2]));
+            }
+            let r = match (words.take(b'R'), words.take(b'C')) {
+                (Some(a), Some(i)) => return Err(step.alarm(Rule::DuplicateWord, i.span, format!("{} and {} both give the nose radius", a.text(), i.text()))),
+                (Some(w), None) => Some((step.length(w)?, false)),
+                (None, Some(w)) => Some((step.length(w)?, true)),
+                (None, None) => None,
+            };
+            if geometry { e.radius_mm = merge(e.radius_mm, r) } else { e.wear_radius_mm = merge(e.wear_radius_mm, r) }
+            if let Some(w) = words.take(b'Q') {
+                if w.decimal || !(0.0..=9.0).contains(&w.value) {
+                    return Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("{}: the imaginary tool nose is Q0 to Q9", w.text())));
+                }
+                e.tip = w.value as u8;
+            }
+            Ok(Some(TableWrite::Offset(e)))
+        }
+        (G10Forms::MillOffsets, None | Some(1) | Some(10..=13)) => {
+            if !(1..=crate::setup::MAX_OFFSET_NUMBER).contains(&n) {
+                return Err(out_of_range(step, "G10 P is an offset number, 1 or more"));
+            }
+            let Some(rw) = words.take(b'R') else {
+                return Err(step.alarm(Rule::MissingWord, span, "G10 P_ R_: R gives the offset value"));
+            };
+            let r = Some((step.length(rw)?, step.st.incremental));
+            let mut e = step.tables.offset(n).copied().unwrap_or(Offset { number: n, ..Offset::default() });
+            match l {
+                // Memory A: one value per number, read by H and by D (inferred).
+                None | Some(1) => {
+                    e.length_mm = merge(e.length_mm, r);
+                    e.radius_mm = merge(e.radius_mm, r);
+                    e.wear_length_mm = 0.0;
+                    e.wear_radius_mm = 0.0;
+                }
+                // Memory C: L10 H geometry, L11 H wear, L12 D geometry, L13 D wear.
+                Some(10) => e.length_mm = merge(e.length_mm, r),
+                Some(11) => e.wear_length_mm = merge(e.wear_length_mm, r),
+                Some(12) => e.radius_mm = merge(e.radius_mm, r),
+                _ => e.wear_radius_mm = merge(e.wear_radius_mm, r),
+            }
+            Ok(Some(TableWrite::Offset(e)))
+        }
+        (_, Some(l)) => Err(step.alarm(Rule::ValueOutOfRange, span, format!("G10 L{l}: {} sets L2 (work offsets) and the tool offsets only here", step.profile.name))),
+        (_, None) => Err(step.alarm(Rule::NotSupported, span, "G10: not simulated by ncsight on this profile yet")),
     }
 }

@@ -9,7 +9,7 @@ mod frame;
 mod groove;
 mod rough;
 pub use call::{Flow, MAX_PROGRAM_NUMBER};
-pub use frame::Tables;
+pub use frame::{TableWrite, Tables};
 pub use rough::{FinishRequest, RoughRequest};
 mod thread;
 mod turning;
@@ -61,6 +61,8 @@ pub struct Outcome {
     /// The first move of the block beyond a soft travel limit: (its block, axis, limit, where
     /// it went, beyond the upper end).
     overtravel: Option<(Span, usize, f64, f64, bool)>,
+    /// What a G10 block writes into the machine's tables, once it has run.
+    table_write: Option<TableWrite>,
 }
 
 impl Outcome {
@@ -72,6 +74,7 @@ impl Outcome {
         self.finish_request = None;
         self.flow = None;
         self.overtravel = None;
+        self.table_write = None;
     }
 }
 
@@ -161,6 +164,8 @@ impl Step<'_> {
     fn emit_at(&mut self, span: Span, n: Option<u32>, op: Op) {
         if let Some(p) = op.end_point() {
             self.st.pos = p;
+            // The tool offset's movement is made (FANUC 5002#6 LWM: with the next move).
+            self.st.frame.unmoved = Vec3::default();
         }
         self.out.emitted += 1;
         if self.out.emitted > MAX_MOTIONS_PER_BLOCK {
@@ -493,6 +498,11 @@ impl Interpreter {
         if let Some(last) = step.out.records.iter_mut().rev().find(|r| r.span == block.span) {
             last.block_end = true;
         }
+        // G10: the tables change; the tool stays where it is on the machine.
+        if let Some(w) = out.table_write.take() {
+            let moved = self.tables.write(w, &self.state.frame);
+            self.state.pos = self.state.pos - moved;
+        }
         if let Some(req) = out.rough_request.take() {
             if self.replaying {
                 self.state = before;
@@ -730,7 +740,8 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
                 }
             }
             GFn::WorkOffset(n) => frame::select_work(step, n),
-            GFn::LengthComp | GFn::PathControl => {}
+            // Step 6 puts the length offset in force, with the H of the block.
+            GFn::LengthComp(_) | GFn::PathControl => {}
             GFn::ReturnInitial => st.return_initial = true,
             GFn::ReturnR => st.return_initial = false,
             // G80: the cycle and its hole data end; F stays (seed 003 8.1.4).
@@ -744,7 +755,7 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
                     codes.motion = Some((w.span, Motion::Rapid));
                 }
             }
-            GFn::Dwell | GFn::ReferenceReturn | GFn::OtherReferenceReturn | GFn::LocalCoordinates | GFn::MachineCoordinates | GFn::LatheCoordinateSet | GFn::MillCoordinateSet | GFn::CompoundThread(_) | GFn::PeckCycle(_) | GFn::Rough(_) | GFn::Finish => {
+            GFn::Dwell | GFn::DataSetting | GFn::ReferenceReturn | GFn::OtherReferenceReturn | GFn::LocalCoordinates | GFn::MachineCoordinates | GFn::LatheCoordinateSet | GFn::MillCoordinateSet | GFn::CompoundThread(_) | GFn::PeckCycle(_) | GFn::Rough(_) | GFn::Finish => {
                 codes.non_modal = Some((w.span, g.function))
             }
             GFn::NotYet(_) | GFn::NotYetReference(_) | GFn::MacroCall | GFn::ModalMacroCall | GFn::ModalMacroCancel => unreachable!("rejected above"),
@@ -813,8 +824,18 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
     let rigid_thread = matches!(motion_now, Motion::Thread(cmd) if thread::is_rigid(cmd));
 
     // 6. Tool length compensation takes H (the offset number); D belongs to cutter compensation.
-    if last_of.iter().any(|(_, _, g)| g.function == GFn::LengthComp) {
-        words.take(b'H');
+    let length_code = last_of.iter().find_map(|(_, w, g)| if let GFn::LengthComp(s) = g.function { Some((w.span, s)) } else { None });
+    let h_word = if length_code.is_some() || step.st.frame.length_sign != 0 { words.take(b'H') } else { None };
+    if length_code.is_some() || h_word.is_some() {
+        let h = match h_word {
+            Some(w) if w.decimal || w.value < 0.0 || w.value > crate::setup::MAX_OFFSET_NUMBER as f64 => {
+                return Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("{}: H is an offset number, 0 to {}", w.text(), crate::setup::MAX_OFFSET_NUMBER)));
+            }
+            Some(w) => Some(w.value as u32),
+            None => None,
+        };
+        let (span, sign) = length_code.unwrap_or((h_word.map(|w| w.span).unwrap_or(step.span), step.st.frame.length_sign));
+        frame::length_offset(step, sign, h, span, has_axis);
     }
     if last_of.iter().any(|(_, _, g)| matches!(g.function, GFn::RadiusComp(_))) {
         words.take(b'D');
@@ -860,14 +881,17 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
                 return Err(step.alarm(Rule::IllegalDecimalPoint, w.span, format!("{}: a tool number is a whole number", w.text())));
             }
             let v = w.value as u32;
-            Some(if profile.is_lathe() && v >= 100 { (v / 100, Some(v % 100)) } else { (v, None) })
+            Some((if profile.is_lathe() && v >= 100 { (v / 100, Some(v % 100)) } else { (v, None) }, w.span))
         }
         None => None,
     };
-    if let Some((number, offset)) = tool {
+    if let Some(((number, offset), span)) = tool {
         step.st.tool = number;
         if profile.is_lathe() {
             step.emit(Op::Tool { number, offset });
+            if let Some(o) = offset {
+                frame::lathe_offset(step, o, span, has_axis);
+            }
         }
     }
 
@@ -953,6 +977,7 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
         }
         Some((_, GFn::LatheCoordinateSet | GFn::MillCoordinateSet)) => frame::set_coordinates(step, &mut words)?,
         Some((_, GFn::LocalCoordinates)) => frame::local(step, &mut words)?,
+        Some((span, GFn::DataSetting)) => step.out.table_write = frame::data_setting(step, &mut words, span)?,
         Some(_) => unreachable!("only one-shot functions are stored"),
         None => {
             if let Some((_, m)) = codes.motion {
@@ -1042,6 +1067,7 @@ fn describe_command(step: &Step, codes: &Codes) -> String {
         Some((_, f @ GFn::Dwell)) => return format!("{} (dwell)", name(f)),
         Some((_, f @ (GFn::ReferenceReturn | GFn::OtherReferenceReturn))) => return format!("{} (reference return)", name(f)),
         Some((_, f @ GFn::LocalCoordinates)) => return format!("{} (local coordinate system)", name(f)),
+        Some((_, f @ GFn::DataSetting)) => return format!("{} (data setting)", name(f)),
         Some((_, f @ GFn::MachineCoordinates)) => return format!("{} (positioning in machine coordinates)", name(f)),
         Some((_, f @ (GFn::LatheCoordinateSet | GFn::MillCoordinateSet))) => return format!("{} (coordinate setting)", name(f)),
         Some((_, f @ GFn::CompoundThread(Compound::G76))) => return format!("{} (compound threading)", name(f)),
@@ -1120,13 +1146,16 @@ fn axis_target(step: &mut Step, words: &mut Words) -> Result<(Vec3, [bool; 3]), 
                 format!("{} and {} both give the {} axis", a.text(), i.text(), abs_l as char),
             ));
         }
+        // Incremental words count from the position the controller shows: the tool's, plus a
+        // tool offset's movement not made yet (FANUC 5002#6 LWM).
+        let shown = step.st.pos.axis(axis) + step.st.frame.unmoved.axis(axis);
         if let Some(w) = abs_w {
             let v = step.length(w)? * scale;
-            target.set_axis(axis, if step.st.incremental { step.st.pos.axis(axis) + v } else { v });
+            target.set_axis(axis, if step.st.incremental { shown + v } else { v });
             given[axis] = true;
         } else if let Some(w) = inc_w {
             let v = step.length(w)? * scale;
-            target.set_axis(axis, step.st.pos.axis(axis) + v);
+            target.set_axis(axis, shown + v);
             given[axis] = true;
         }
     }

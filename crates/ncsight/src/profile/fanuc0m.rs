@@ -7,9 +7,9 @@ use crate::codes::DrillKind;
 
 
 const G_CODES: &[GDef] = &[
-    g(43, Group::LengthComp, GFn::LengthComp, "tool length compensation +"),
-    g(44, Group::LengthComp, GFn::LengthComp, "tool length compensation -"),
-    g(49, Group::LengthComp, GFn::LengthComp, "cancel tool length compensation"),
+    g(43, Group::LengthComp, GFn::LengthComp(1), "tool length compensation +"),
+    g(44, Group::LengthComp, GFn::LengthComp(-1), "tool length compensation -"),
+    g(49, Group::LengthComp, GFn::LengthComp(0), "cancel tool length compensation"),
     g(53, Group::NonModal, GFn::MachineCoordinates, "positioning in the machine coordinate system"),
     g(61, Group::PathMode, GFn::PathControl, "exact stop mode"),
     g(64, Group::PathMode, GFn::PathControl, "cutting mode"),
@@ -147,7 +147,7 @@ pub static PROFILE: Profile = Profile {
     },
     calls: super::CallRules::FANUC,
     macros: super::MacroRules { group_numbers: super::FANUC_M_GROUPS, ..super::MacroRules::FANUC },
-    frame: super::FrameRules::FANUC,
+    frame: super::FrameRules { lathe_offset_keys: None, g10: super::G10Forms::MillOffsets, ..super::FrameRules::FANUC },
     summary: "FANUC 0-M machining centre. G90/G91, G17 at power on. Lengths without a decimal point \
 are least input increments (X100 = 0.1 mm), F without a point is mm/min.",
 };

@@ -127,7 +127,7 @@ pub static PROFILE: Profile = Profile {
     peck_back_off: Some(ParamKey::Number(5139, None)),
     g_codes: &[common::G_CODES, lathe_a::G_CODES, EXTRA, super::later::FANUC_0T],
     m_codes: &[common::M_CODES, lathe_a::M_CODES],
-    params: &[FANUC_RATES, PARAMS, super::FANUC_INPUT, DRY_RUN, super::builder::FANUC, super::FANUC_MACRO, SETTINGS],
+    params: &[FANUC_RATES, PARAMS, super::FANUC_INPUT, DRY_RUN, super::builder::FANUC, super::FANUC_MACRO, super::FANUC_LATHE_OFFSETS, SETTINGS],
     time: TimeKeys {
         rapid: [ParamKey::Number(1420, None), ParamKey::Number(1420, None), ParamKey::Number(1420, None)],
         dry_run: ParamKey::Setting("dry_run_mm_min"),

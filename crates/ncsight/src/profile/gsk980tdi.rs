@@ -203,7 +203,7 @@ pub static PROFILE: Profile = Profile {
     peck_back_off: Some(ParamKey::Number(56, None)),
     g_codes: &[common::G_CODES, lathe_a::G_CODES, EXTRA, super::later::GSK980TDI],
     m_codes: &[common::M_CODES, lathe_a::M_CODES, lathe_a::GSK_M_CODES, TAPPING_M],
-    params: &[PARAMS, DRY_RUN, super::builder::GSK980TDI, SETTINGS],
+    params: &[PARAMS, DRY_RUN, super::builder::GSK980TDI, super::GSK_LATHE_OFFSETS, SETTINGS],
     time: TimeKeys {
         rapid: [ParamKey::Number(22, None), ParamKey::Number(22, None), ParamKey::Number(22, None)],
         dry_run: ParamKey::Setting("dry_run_mm_min"),

@@ -14,7 +14,7 @@ const LATER_REF: GFn = GFn::NotYetReference("not simulated by ncsight yet");
 /// names G27-G30, G52, G53, G92).
 pub(super) const FANUC_0M: &[GDef] = &[
     g(9, Group::NonModal, LATER, "exact stop for one block"),
-    g(10, Group::NonModal, LATER, "programmable data input (offsets, work offsets)"),
+    g(10, Group::NonModal, GFn::DataSetting, "programmable data input (offsets, work offsets)"),
     g(15, Group::Polar, LATER, "polar coordinate command off"),
     g(16, Group::Polar, LATER, "polar coordinate command on"),
     g(22, Group::StrokeCheck, LATER, "stored stroke check on"),
@@ -48,7 +48,7 @@ pub(super) const FANUC_0M: &[GDef] = &[
 /// FANUC 0-T, G-code system A (the FANUC 0-TC G-code table; the 0i-TC for what it lacks).
 pub(super) const FANUC_0T: &[GDef] = &[
     gp(7, 1, "G07.1", Group::NonModal, LATER, "cylindrical interpolation (C axis)"),
-    g(10, Group::NonModal, LATER, "programmable data input (offsets)"),
+    g(10, Group::NonModal, GFn::DataSetting, "programmable data input (offsets, work offsets)"),
     g(11, Group::NonModal, LATER, "programmable data input cancel"),
     gp(12, 1, "G12.1", Group::Polar, LATER, "polar coordinate interpolation on (C axis)"),
     gp(13, 1, "G13.1", Group::Polar, LATER, "polar coordinate interpolation off"),
@@ -84,7 +84,7 @@ pub(super) const GSK980TDI: &[GDef] = &[
     gp(7, 2, "G07.2", Group::Motion, LATER, "parabolic interpolation, clockwise"),
     gp(7, 3, "G07.3", Group::Motion, LATER, "parabolic interpolation, counter-clockwise"),
     g(9, Group::NonModal, LATER, "exact stop for one block"),
-    g(10, Group::NonModal, LATER, "data input from the programme (L3: tool life)"),
+    g(10, Group::NonModal, GFn::DataSetting, "data input from the programme (L3: tool life; L52: parameters)"),
     g(11, Group::NonModal, LATER, "data input cancel"),
     gp(12, 1, "G12.1", Group::Polar, LATER, "polar coordinate interpolation on"),
     gp(13, 1, "G13.1", Group::Polar, LATER, "polar coordinate interpolation off"),

@@ -154,8 +154,10 @@ pub enum GFn {
     MillCoordinateSet,
     /// G40/G41/G42: tool (nose) radius compensation; the programmed path is shown.
     RadiusComp(bool),
-    /// G43/G44/G49: tool length compensation; positions stay in programme coordinates.
-    LengthComp,
+    /// G43 (+1), G44 (-1), G49 (0): tool length compensation along Z by the offset H names.
+    LengthComp(i8),
+    /// G10: data setting (work offsets, tool offsets) in the forms of the profile's `G10Forms`.
+    DataSetting,
     /// G54..G59: select work coordinate system 1-6 (offsets from the setup's `[work]`).
     WorkOffset(u8),
     /// G52: a local coordinate system inside the work system (FANUC; GSK980TDi help G52).
@@ -424,7 +426,26 @@ pub struct FrameRules {
     pub reference_cancels_tool_offset: bool,
     /// The highest reference point G30 reaches with P (4: P2-P4; 2: the 2nd only).
     pub last_reference: u8,
+    /// Lathes: the parameters that say how a T word's offset acts: (geometry by movement = 1,
+    /// by shifting the coordinates = 0: FANUC 5002#4 LGT; wear with the next move = 1, in the
+    /// T block = 0: FANUC 5002#6 LWM). Mills: `None` (G43/G44 move in their block).
+    pub lathe_offset_keys: Option<(ParamKey, ParamKey)>,
+    /// What G10 sets, where the profile simulates it.
+    pub g10: G10Forms,
     pub source: &'static str,
+}
+
+/// The G10 forms a controller has (MACRO.md 10.2).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum G10Forms {
+    /// FANUC 0-T: `G10 P_ X(U) Z(W) R(C) Q` (P1-64 wear, P10001-10064 geometry), `G10 L2 P0-6`.
+    LatheOffsets,
+    /// FANUC 0-M: `G10 L2 P0-6 X Y Z`, `G10 L10-L13 P R` (memory C), `G10 P R` (memory A).
+    MillOffsets,
+    /// GSK980TDi: only `G10 L3` (tool life) and `G10 L52` (parameters); no offsets.
+    ToolLifeAndParameters,
+    /// Not simulated (G10 is "not simulated yet" in the code table).
+    None,
 }
 
 impl FrameRules {
@@ -432,15 +453,86 @@ impl FrameRules {
         coordinate_set_wins: false,
         reference_cancels_tool_offset: false,
         last_reference: 4,
-        source: "FANUC 0i manuals as recalled (G30 P2-P4; G92 after G54 in one block sets the system selected); MACRO.md 10.2",
+        lathe_offset_keys: Some((ParamKey::Number(5002, Some(4)), ParamKey::Number(5002, Some(6)))),
+        g10: G10Forms::LatheOffsets,
+        source: "FANUC 0i manuals as recalled (G30 P2-P4; G92 after G54 in one block sets the system selected; 5002#4 LGT, #6 LWM; G10 forms); MACRO.md 10",
     };
     pub const GSK: FrameRules = FrameRules {
         coordinate_set_wins: true,
         reference_cancels_tool_offset: true,
         last_reference: 4,
-        source: "GSK980TDi help text: G54-G59 note 6, G28 note 2, G30 (P2-P4) note 3",
+        lathe_offset_keys: Some((ParamKey::Setting("geometry_by_movement"), ParamKey::Setting("wear_with_next_move"))),
+        g10: G10Forms::ToolLifeAndParameters,
+        source: "GSK980TDi help text: G54-G59 note 6, G28 note 2, G30 (P2-P4) note 3, G10 L3 and L52 only; the offset mode's parameter number not found (an ncsight setting)",
     };
 }
+
+/// FANUC 0i-T 5002: how a lathe's tool offsets act (MACRO.md 10.1).
+pub const FANUC_LATHE_OFFSETS: &[ParamDef] = &[
+    ParamDef {
+        key: ParamKey::Number(5002, Some(4)),
+        meaning: "LGT: 0 = the geometry offset shifts the coordinates (no motion); 1 = it moves the tool, as the wear offset does",
+        unit: "bit",
+        min: 0.0,
+        max: 1.0,
+        default: 0.0,
+        source: "FANUC 0i-T parameter manual, 5002#4 LGT, as recalled (MACRO.md 10.1; inferred for the FANUC 0-T)",
+    },
+    ParamDef {
+        key: ParamKey::Number(5002, Some(6)),
+        meaning: "LWM: 0 = the offset's movement is made in the T block; 1 = together with the next axis move",
+        unit: "bit",
+        min: 0.0,
+        max: 1.0,
+        default: 0.0,
+        source: "FANUC 0i-T parameter manual, 5002#6 LWM, as recalled (MACRO.md 10.1; inferred for the FANUC 0-T)",
+    },
+];
+
+/// [`FANUC_LATHE_OFFSETS`] as ncsight settings, for the lathes whose parameter numbers were not
+/// found: `geometry_by_movement` defaults to 1 (GSK's "tool traverse" mode, inferred).
+pub const GSK_LATHE_OFFSETS: &[ParamDef] = &[
+    ParamDef {
+        key: ParamKey::Setting("geometry_by_movement"),
+        meaning: "1 = the geometry offset moves the tool (GSK 'tool traverse'); 0 = it shifts the coordinates (GSK 'coordinate offset')",
+        unit: "bit",
+        min: 0.0,
+        max: 1.0,
+        default: 1.0,
+        source: "ncsight setting; GSK980TD/TDi have both modes by a state parameter whose number was not found (MACRO.md 10.1), traverse assumed",
+    },
+    ParamDef {
+        key: ParamKey::Setting("wear_with_next_move"),
+        meaning: "1 = the offset's movement is made with the next axis move; 0 = in the T block",
+        unit: "bit",
+        min: 0.0,
+        max: 1.0,
+        default: 0.0,
+        source: "ncsight setting; assumed (in the T block, as FANUC's default)",
+    },
+];
+
+/// [`GSK_LATHE_OFFSETS`] with FANUC's defaults, for the YASNAC LX3 (no text at hand).
+pub const YASNAC_LATHE_OFFSETS: &[ParamDef] = &[
+    ParamDef {
+        key: ParamKey::Setting("geometry_by_movement"),
+        meaning: "1 = the geometry offset moves the tool; 0 = it shifts the coordinates",
+        unit: "bit",
+        min: 0.0,
+        max: 1.0,
+        default: 0.0,
+        source: "ncsight setting; inferred as FANUC 5002#4 LGT's default (no YASNAC LX3 text at hand)",
+    },
+    ParamDef {
+        key: ParamKey::Setting("wear_with_next_move"),
+        meaning: "1 = the offset's movement is made with the next axis move; 0 = in the T block",
+        unit: "bit",
+        min: 0.0,
+        max: 1.0,
+        default: 0.0,
+        source: "ncsight setting; inferred as FANUC 5002#6 LWM's default (no YASNAC LX3 text at hand)",
+    },
+];
 
 /// Thread facts of a profile.
 #[derive(Debug, Clone, Copy)]
