@@ -120,6 +120,12 @@ rules! {
     // message (FANUC 0 numbered them per axis; docs/setup.md).
     OvertravelPlus => Alarm, "NCS-E77", Some("OT0500"), "+ OVERTRAVEL (SOFT 1)";
     OvertravelMinus => Alarm, "NCS-E78", Some("OT0501"), "- OVERTRAVEL (SOFT 1)";
+    // Tool radius compensation: the FANUC 0 P/S numbers (MACRO.md 10.3; texts as recalled).
+    CompNoSolution => Alarm, "NCS-E79", Some("PS0033"), "NO SOLUTION AT CRC";
+    CompStartupArc => Alarm, "NCS-E80", Some("PS0034"), "NO CIRC ALLOWED IN STUP/EXT BLK";
+    CompPlaneChange => Alarm, "NCS-E81", Some("PS0037"), "CAN NOT CHANGE PLANE IN CRC";
+    CompInterference => Alarm, "NCS-E82", Some("PS0041"), "INTERFERENCE IN CRC";
+    CompIdleBlocks => Alarm, "NCS-E83", None, "TOO MANY BLOCKS WITHOUT A MOVE IN COMPENSATION";
     // --- warnings ---
     SameGroupTwice => Warning, "NCS-W01", None, "TWO G CODES OF ONE GROUP: THE LAST ONE COUNTS";
     IntegerLength => Warning, "NCS-W02", None, "LENGTH WITHOUT DECIMAL POINT";
@@ -153,6 +159,7 @@ rules! {
     MachineIncremental => Warning, "NCS-W30", None, "G53 IGNORED IN INCREMENTAL";
     ReferenceAssumed => Warning, "NCS-W31", None, "REFERENCE POINT NOT IN THE SETUP";
     OffsetAssumed => Warning, "NCS-W32", None, "OFFSET NOT IN THE SETUP";
+    CompRadiusZero => Warning, "NCS-W33", None, "RADIUS COMPENSATION WITH RADIUS 0";
 }
 
 impl Rule {

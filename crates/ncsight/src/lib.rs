@@ -6,6 +6,7 @@
 
 pub mod alarm;
 pub mod codes;
+pub mod comp;
 pub mod cycles;
 pub mod dialect;
 pub mod event;

@@ -290,6 +290,8 @@ impl Machine {
     /// (or stop where the pull-out ends), then cut the cycle again from its start.
     fn thread_hold(&mut self, r: Record, th: ThreadHold, start: f64, dur: f64, at: f64, out: &mut dyn FnMut(Event)) {
         let span = r.span;
+        // The moves the hold makes are in the thread's frame (its machine coordinates).
+        let to_machine = r.to_machine;
         let Op::Thread { from, to, lead_mm, long_axis, spindle_deg, rpm } = r.op else {
             self.finish_record(r, dur, out);
             return;
@@ -318,6 +320,7 @@ impl Machine {
             };
             let mut rec = Record::new(span, op);
             rec.hold = Hold::Stop;
+            rec.to_machine = to_machine;
             let d = self.model.duration_s(&rec, false);
             self.emit(rec, d, out);
         }
@@ -327,7 +330,7 @@ impl Machine {
             d.set_axis(s, th.start.axis(s));
             for (a, b) in [(from, d), (d, th.start)] {
                 if a != b {
-                    let rec = Record::new(span, Op::Rapid { from: a, to: b });
+                    let rec = Record { to_machine, ..Record::new(span, Op::Rapid { from: a, to: b }) };
                     let t = me.model.duration_s(&rec, false);
                     me.emit(rec, t, out);
                 }

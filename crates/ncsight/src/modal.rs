@@ -171,6 +171,33 @@ impl Frame {
     }
 }
 
+/// Tool radius compensation in force (MACRO.md 10.3; docs/compensation.md). The move held
+/// back until the next one shows its corner is in the interpreter's queue; this is its scalar
+/// part.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct CompState {
+    /// +1 G41 (the tool left of the path), -1 G42, 0 G40.
+    pub side: i8,
+    pub radius_mm: f64,
+    /// From the nose centre to the point the controller positions (the imaginary tool nose:
+    /// R times the tip's direction; 0 on a mill and for tips 0 and 9).
+    pub tip: Vec3,
+    /// The D in force (mills): its offset's radius.
+    pub d: u32,
+    /// A compensated move has been made since G41/G42 (or since the path was broken off): the
+    /// next move is not a start-up.
+    pub started: bool,
+    /// The held move starts its compensated path here (nose centre).
+    pub held_start: Vec3,
+    /// The held move is the start-up (its end is perpendicular to the next move: type A).
+    pub held_startup: bool,
+    /// Where the nose centre is when it is not on the programmed point (after a move that ended
+    /// perpendicular): the next move starts there.
+    pub actual: Option<Vec3>,
+    /// Blocks run since the held move without a move in the plane.
+    pub idle_blocks: u8,
+}
+
 /// Spindle rotation commanded by M03/M04/M05.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum SpindleDir {
@@ -220,8 +247,8 @@ pub struct Modal {
     pub tool: u32,
     /// G98 (return to the initial level) on mills.
     pub return_initial: bool,
-    /// Tool radius compensation requested (not simulated: the programmed path is shown).
-    pub radius_comp: bool,
+    /// Tool radius compensation (G40/G41/G42) and its held-back move.
+    pub comp: CompState,
     pub thread: ThreadState,
     pub drill: DrillData,
     /// M02/M30 reached.
@@ -269,7 +296,7 @@ impl Modal {
             feed: None,
             tool: 0,
             return_initial: true,
-            radius_comp: false,
+            comp: CompState::default(),
             thread: ThreadState {
                 lead_mm: None,
                 j: None,

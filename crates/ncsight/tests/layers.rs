@@ -16,7 +16,7 @@ const LAYERS: &[&[&str]] = &[
     &["source"],
     &["alarm", "motion"],
     &["geom", "codes"],
-    &["cycles", "event"],
+    &["cycles", "event", "comp"],
     &["profile", "read", "dialect", "setup"],
     &["time", "repair"],
     &["modal"],

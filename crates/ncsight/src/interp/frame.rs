@@ -19,6 +19,8 @@ use crate::source::Span;
 pub struct Tables {
     /// A setup gave them: records carry machine positions.
     pub given: bool,
+    /// The setup has a `[machine]` part (a reference point it lacks is then worth a warning).
+    pub machine_given: bool,
     /// The external offset (0), then G54-G59 (1-6): machine coordinates of each zero.
     pub work_mm: [Vec3; 7],
     /// Reference points 1-4 in machine coordinates (`None`: not in the setup).
@@ -37,6 +39,7 @@ impl Tables {
     pub fn none(profile: &Profile) -> Tables {
         Tables {
             given: false,
+            machine_given: false,
             work_mm: [Vec3::default(); 7],
             reference_mm: [Some(profile.reference_point_mm), None, None, None],
             limits_mm: [None; 3],
@@ -55,6 +58,7 @@ impl Tables {
         };
         let mut t = Tables::none(profile);
         t.given = true;
+        t.machine_given = setup.machine.is_some();
         if let Some(w) = &setup.work {
             for (slot, p) in t.work_mm.iter_mut().zip(w.all()) {
                 if let Some(p) = p {
@@ -75,7 +79,9 @@ impl Tables {
                 }
             }
         }
-        t.power_on_mm = t.reference_mm[0];
+        // The tool starts at the reference point the setup gives; without one, at programme
+        // zero as without a setup (a setup of stock and tools only changes no position).
+        t.power_on_mm = setup.machine.as_ref().and_then(|m| m.reference).map(|_| t.reference_mm[0].unwrap_or_default());
         t.offsets = setup.offsets.iter().map(|o| Offset { x_mm: o.x_mm * x_scale, wear_x_mm: o.wear_x_mm * x_scale, ..*o }).collect();
         t
     }
@@ -150,14 +156,14 @@ pub(super) fn select_work(step: &mut Step, n: u8) {
 pub(super) fn set_coordinates(step: &mut Step, words: &mut Words) -> Result<(), Diagnostic> {
     let (target, given) = axis_target(step, words)?;
     let st = &mut *step.st;
+    // The position shown (the tool's plus an offset's movement not made yet) gets the values.
+    let shown = st.pos + st.frame.unmoved;
     for (a, _) in given.iter().enumerate().filter(|(_, g)| **g) {
-        {
-            let shift = st.frame.shift.axis(a) + st.frame.local.axis(a) + st.pos.axis(a) - target.axis(a);
-            st.frame.shift.set_axis(a, shift);
-            st.frame.local.set_axis(a, 0.0);
-        }
+        let shift = st.frame.shift.axis(a) + st.frame.local.axis(a) + shown.axis(a) - target.axis(a);
+        st.frame.shift.set_axis(a, shift);
+        st.frame.local.set_axis(a, 0.0);
     }
-    st.pos = target;
+    st.pos = target - st.frame.unmoved;
     Ok(())
 }
 
@@ -234,8 +240,12 @@ pub(super) fn reference_return(step: &mut Step, words: &mut Words, n: usize, spa
     let reference = match step.tables.reference_mm[n - 1] {
         Some(r) => r,
         None => {
-            let msg = format!("reference point {n} is not in the setup ([machine.reference_{n}]): taken as machine zero");
-            step.warn(Rule::ReferenceAssumed, span, msg);
+            // Without a setup's [machine], every reference point but the first is at machine
+            // zero silently (as every other setting then).
+            if step.tables.machine_given {
+                let msg = format!("reference point {n} is not in the setup ([machine.reference_{n}]): taken as machine zero");
+                step.warn(Rule::ReferenceAssumed, span, msg);
+            }
             Vec3::default()
         }
     };
@@ -276,16 +286,17 @@ pub(super) fn other_reference(step: &mut Step, words: &mut Words) -> Result<usiz
     }
 }
 
-/// The entry an offset number names, in the interpreter's units; a number the setup lacks is
-/// all zero (warning NCS-W32 when there is a setup: without one every offset is 0 by design).
-fn entry(step: &mut Step, number: u32, span: Span) -> Offset {
+/// The entry an offset number names, in the interpreter's units; a number the table lacks is all
+/// zero (warning NCS-W32 when the setup has an offset table: without one every offset is 0 by
+/// design).
+pub(super) fn entry(step: &mut Step, number: u32, span: Span) -> Offset {
     if number == 0 {
         return Offset::default();
     }
     match step.tables.offset(number) {
         Some(o) => *o,
         None => {
-            if step.tables.given {
+            if !step.tables.offsets.is_empty() {
                 let msg = format!("offset {number} is not in the setup's [[offset]] table: taken as 0");
                 step.warn(Rule::OffsetAssumed, span, msg);
             }
@@ -436,8 +447,8 @@ pub(super) fn data_setting(step: &mut Step, words: &mut Words, span: Span) -> Re
             match l {
                 // Memory A: one value per number, read by H and by D (inferred).
                 None | Some(1) => {
-                    e.length_mm = merge(e.length_mm, r);
-                    e.radius_mm = merge(e.radius_mm, r);
+                    e.length_mm = merge(e.length_mm + e.wear_length_mm, r);
+                    e.radius_mm = merge(e.radius_mm + e.wear_radius_mm, r);
                     e.wear_length_mm = 0.0;
                     e.wear_radius_mm = 0.0;
                 }

@@ -3,6 +3,7 @@
 //! stream and warnings, or into one alarm that leaves the modal state untouched.
 
 mod call;
+mod comp;
 mod compound;
 mod drill;
 mod frame;
@@ -63,6 +64,10 @@ pub struct Outcome {
     overtravel: Option<(Span, usize, f64, f64, bool)>,
     /// What a G10 block writes into the machine's tables, once it has run.
     table_write: Option<TableWrite>,
+    /// Radius compensation found no path (the block alarms).
+    comp_error: Option<Diagnostic>,
+    /// The block made a move in the plane in compensation.
+    comp_plane_move: bool,
 }
 
 impl Outcome {
@@ -75,6 +80,8 @@ impl Outcome {
         self.flow = None;
         self.overtravel = None;
         self.table_write = None;
+        self.comp_error = None;
+        self.comp_plane_move = false;
     }
 }
 
@@ -97,6 +104,8 @@ pub struct Interpreter {
     params: Params,
     /// The machine's offsets, reference points and limits (the setup's, else all zero).
     tables: Tables,
+    /// Radius compensation's held move and the records waiting behind it.
+    comp_queue: Vec<Record>,
     state: Modal,
     switches: Switches,
     /// A G71/G72 block is collecting its contour blocks (they follow it).
@@ -135,6 +144,10 @@ struct Step<'a> {
     profile: &'static Profile,
     params: &'a Params,
     tables: &'a Tables,
+    /// Radius compensation's held records.
+    queue: &'a mut Vec<Record>,
+    /// This block runs outside radius compensation (a cycle, a reference return...).
+    bypass_comp: bool,
     /// The recorded thread repair position, if any.
     repair: Option<crate::repair::Recorded>,
     span: Span,
@@ -167,6 +180,17 @@ impl Step<'_> {
             // The tool offset's movement is made (FANUC 5002#6 LWM: with the next move).
             self.st.frame.unmoved = Vec3::default();
         }
+        // Radius compensation: the move goes through the look-ahead stage; a move outside it
+        // starts where the tool is.
+        if self.st.comp.side != 0 && !self.bypass_comp {
+            return comp::take(self, span, n, op);
+        }
+        let op = if self.st.comp.actual.is_some() { comp::from_actual(self, op) } else { op };
+        self.push_record(span, n, op);
+    }
+
+    /// Put a record in the block's outcome as it is (positions as the controller moves).
+    fn push_record(&mut self, span: Span, n: Option<u32>, op: Op) {
         self.out.emitted += 1;
         if self.out.emitted > MAX_MOTIONS_PER_BLOCK {
             return;
@@ -368,7 +392,7 @@ impl Step<'_> {
 impl Interpreter {
     pub fn new(params: Params, switches: Switches) -> Interpreter {
         let profile = params.profile();
-        Interpreter { profile, state: Modal::power_on(profile), params, tables: Tables::none(profile), switches, collecting: None, contours: Vec::new(), replaying: false }
+        Interpreter { profile, state: Modal::power_on(profile), params, tables: Tables::none(profile), comp_queue: Vec::new(), switches, collecting: None, contours: Vec::new(), replaying: false }
     }
 
     /// Take the machine's tables from a setup (before the first block): the offsets, reference
@@ -427,14 +451,32 @@ impl Interpreter {
 
     /// [`Interpreter::flush_pending`] into `out` (emptied first), reusing its allocations.
     pub fn flush_pending_into(&mut self, out: &mut Outcome) {
+        self.flush_into(out, true);
+    }
+
+    /// [`Interpreter::flush_pending_into`] for the held thread run only: the machine stops (a
+    /// single-block stop after a macro statement) but radius compensation keeps its look-ahead.
+    pub fn flush_thread_into(&mut self, out: &mut Outcome) {
+        self.flush_into(out, false);
+    }
+
+    fn flush_into(&mut self, out: &mut Outcome, with_comp: bool) {
         out.clear();
-        if self.state.thread.pending.is_none() {
+        if self.state.thread.pending.is_none() && (!with_comp || self.comp_queue.is_empty()) {
             return;
         }
         let repair = self.switches.repair_position;
-        let mut step = Step { profile: self.profile, params: &self.params, tables: &self.tables, repair, span: Span::default(), n: None, st: &mut self.state, out };
+        let mut step = Step { profile: self.profile, params: &self.params, tables: &self.tables, queue: &mut self.comp_queue, bypass_comp: false, repair, span: Span::default(), n: None, st: &mut self.state, out };
         if let Some(p) = step.st.thread.pending.take() {
             thread::flush(&mut step, p, true);
+        }
+        // The input ended (or the next block alarmed) in compensation: the held move ends
+        // perpendicular.
+        if with_comp {
+            comp::break_off(&mut step);
+        }
+        if let Some(d) = step.out.comp_error.take() {
+            out.warnings.push(d);
         }
         // The run has ended: a pull-out beyond a limit is told, with nothing left to stop.
         if let Some(hit) = out.overtravel.take() {
@@ -461,8 +503,9 @@ impl Interpreter {
             return self.collect_contour(block, out);
         }
         let before = self.state;
+        let queue_before = if self.comp_queue.is_empty() { None } else { Some(self.comp_queue.clone()) };
         let repair = self.switches.repair_position;
-        let mut step = Step { profile: self.profile, params: &self.params, tables: &self.tables, repair, span: block.span, n: block.sequence, st: &mut self.state, out };
+        let mut step = Step { profile: self.profile, params: &self.params, tables: &self.tables, queue: &mut self.comp_queue, bypass_comp: false, repair, span: block.span, n: block.sequence, st: &mut self.state, out };
         let result = run_block(&mut step, block, self.switches).and_then(|()| {
             if step.out.emitted > MAX_MOTIONS_PER_BLOCK {
                 return Err(step.alarm(
@@ -484,13 +527,16 @@ impl Interpreter {
             )),
             _ => Ok(()),
         });
-        let result = match (result, step.out.overtravel) {
-            (Ok(()), Some(hit)) => Err(overtravel_alarm(step.profile, hit)),
-            (r, _) => r,
+        let result = result.and_then(|()| comp::end_of_block(&mut step));
+        let result = match (result, step.out.comp_error.take(), step.out.overtravel) {
+            (Ok(()), Some(d), _) => Err(d),
+            (Ok(()), None, Some(hit)) => Err(overtravel_alarm(step.profile, hit)),
+            (r, _, _) => r,
         };
         if let Err(d) = result {
             step.out.clear();
             self.state = before;
+            self.comp_queue = queue_before.unwrap_or_default();
             return Err(d);
         }
         // Single block stops after the block's last record (a held-back thread run end carries
@@ -607,6 +653,10 @@ struct Codes {
     motion: Option<(Span, Motion)>,
     /// A drilling cycle code in this block.
     drill: Option<crate::cycles::drill::DrillKind>,
+    /// G40 (0), G41 (+1), G42 (-1) in this block.
+    comp: Option<(Span, i8)>,
+    /// G54-G59 in this block (1-6).
+    work: Option<u8>,
 }
 
 /// One block, in the order the controller executes it (the steps as grbl's `gc_execute_line`
@@ -689,6 +739,47 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
         }
     }
 
+    // Radius compensation acts on plain moves only: a block with a cycle, a thread, a reference
+    // return, a coordinate change or a T word runs uncompensated; the compensated path ends
+    // before it (GSK980TDi help text, G40-G42 notes 5-6; FANUC threading likewise, inferred).
+    if step.st.comp.side != 0 || !step.queue.is_empty() {
+        let suspends = |f: GFn| {
+            matches!(
+                f,
+                GFn::WorkOffset(_)
+                    | GFn::LocalCoordinates
+                    | GFn::MachineCoordinates
+                    | GFn::ReferenceReturn
+                    | GFn::OtherReferenceReturn
+                    | GFn::LatheCoordinateSet
+                    | GFn::MillCoordinateSet
+                    | GFn::DataSetting
+                    | GFn::Thread(_)
+                    | GFn::BoxCycle(_)
+                    | GFn::Drill(_)
+                    | GFn::CompoundThread(_)
+                    | GFn::PeckCycle(_)
+                    | GFn::Rough(_)
+                    | GFn::Finish
+                    | GFn::LengthComp(_)
+            )
+        };
+        let plain_motion = last_of.iter().any(|(_, _, g)| matches!(g.function, GFn::Rapid | GFn::Linear | GFn::ArcCw | GFn::ArcCcw));
+        let mode_suspends = !plain_motion && (matches!(step.st.motion, Motion::Thread(_) | Motion::Box(_)) || step.st.drill.kind.is_some());
+        if let Some((_, w, g)) = last_of.iter().find(|(_, _, g)| suspends(g.function)) {
+            comp::break_off(step);
+            step.bypass_comp = true;
+            // G70 runs its contour's blocks in compensation (they are moves of their own).
+            if matches!(g.function, GFn::BoxCycle(_) | GFn::Rough(_) | GFn::Drill(_) | GFn::PeckCycle(_)) && step.st.comp.side != 0 {
+                let msg = format!("{}: radius compensation is suspended in this cycle: its moves are the programmed ones (docs/compensation.md)", w.text());
+                step.warn(Rule::NotSimulated, w.span, msg);
+            }
+        } else if mode_suspends || words.has(b'T') {
+            comp::break_off(step);
+            step.bypass_comp = true;
+        }
+    }
+
     // 3. Modal codes take effect; the motion and drilling codes are noted.
     let mut codes = Codes::default();
     // The words a macro reads back (#4102-#4113) and each group's code (#4001-#4022).
@@ -721,9 +812,18 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
             GFn::ArcCcw => codes.motion = Some((w.span, Motion::ArcCcw)),
             GFn::Thread(cmd) => codes.motion = Some((w.span, Motion::Thread(cmd))),
             GFn::BoxCycle(kind) => codes.motion = Some((w.span, Motion::Box(kind))),
-            GFn::PlaneXY => st.plane = Plane::XY,
-            GFn::PlaneZX => st.plane = Plane::ZX,
-            GFn::PlaneYZ => st.plane = Plane::YZ,
+            GFn::PlaneXY | GFn::PlaneZX | GFn::PlaneYZ => {
+                let plane = match g.function {
+                    GFn::PlaneXY => Plane::XY,
+                    GFn::PlaneZX => Plane::ZX,
+                    _ => Plane::YZ,
+                };
+                // FANUC 037; GSK980TDi help text, G17-G19 (no plane change in compensation).
+                if st.comp.side != 0 && plane != st.plane {
+                    return Err(step.alarm(Rule::CompPlaneChange, w.span, format!("{}: the plane cannot change while radius compensation is in force (G40 first)", w.text())));
+                }
+                st.plane = plane;
+            }
             GFn::Inch => st.inch = true,
             GFn::Metric => st.inch = false,
             GFn::Absolute => st.incremental = false,
@@ -732,14 +832,10 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
             GFn::FeedPerRevolution => st.per_rev = true,
             GFn::ConstantSurfaceSpeed => st.css = true,
             GFn::ConstantRpm => st.css = false,
-            GFn::RadiusComp(on) => {
-                st.radius_comp = on;
-                if on {
-                    let msg = format!("{}: radius compensation is not simulated; the programmed path is shown", w.text());
-                    step.warn(Rule::NotSimulated, w.span, msg);
-                }
-            }
-            GFn::WorkOffset(n) => frame::select_work(step, n),
+            // Step 6 puts it in force, with the block's D.
+            GFn::RadiusComp(side) => codes.comp = Some((w.span, side)),
+            // After step 5: a thread run held back from the block before is made in its frame.
+            GFn::WorkOffset(n) => codes.work = Some(n),
             // Step 6 puts the length offset in force, with the H of the block.
             GFn::LengthComp(_) | GFn::PathControl => {}
             GFn::ReturnInitial => st.return_initial = true,
@@ -821,6 +917,9 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
         }
         thread::flush(step, p, !goes_on);
     }
+    if let Some(n) = codes.work {
+        frame::select_work(step, n);
+    }
     let rigid_thread = matches!(motion_now, Motion::Thread(cmd) if thread::is_rigid(cmd));
 
     // 6. Tool length compensation takes H (the offset number); D belongs to cutter compensation.
@@ -837,8 +936,16 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
         let (span, sign) = length_code.unwrap_or((h_word.map(|w| w.span).unwrap_or(step.span), step.st.frame.length_sign));
         frame::length_offset(step, sign, h, span, has_axis);
     }
-    if last_of.iter().any(|(_, _, g)| matches!(g.function, GFn::RadiusComp(_))) {
-        words.take(b'D');
+    if let Some((span, side)) = codes.comp {
+        let d = match words.take(b'D') {
+            Some(w) if w.decimal || w.value < 0.0 || w.value > crate::setup::MAX_OFFSET_NUMBER as f64 => {
+                return Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("{}: D is an offset number, 0 to {}", w.text(), crate::setup::MAX_OFFSET_NUMBER)));
+            }
+            Some(w) => Some(w.value as u32),
+            None => None,
+        };
+        let arc_move = has_axis && matches!(motion_now, Motion::ArcCw | Motion::ArcCcw);
+        comp::command(step, side, d, span, arc_move)?;
     }
 
     // 7. F, S, T.
@@ -955,6 +1062,14 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
     // A one-shot code other than G04 ends the box cycles' remembered X, Z and R (FANUC 0-T).
     if matches!(codes.non_modal, Some((_, f)) if f != GFn::Dwell) {
         step.st.box_cycle = Default::default();
+    }
+    // A group 01 code beside a one-shot code is in force for the blocks after (`G53 G0 Z0`).
+    if codes.non_modal.is_some() {
+        if let Some((_, m)) = codes.motion {
+            if matches!(m, Motion::Rapid | Motion::Linear | Motion::ArcCw | Motion::ArcCcw) {
+                step.st.motion = m;
+            }
+        }
     }
     let mut non_modal = codes.non_modal;
     if let Some((span, GFn::MachineCoordinates)) = non_modal {
@@ -1132,7 +1247,9 @@ fn dwell(step: &mut Step, words: &mut Words) -> Result<(), Diagnostic> {
 /// The end point a block's axis words name, and which axes were given.
 fn axis_target(step: &mut Step, words: &mut Words) -> Result<(Vec3, [bool; 3]), Diagnostic> {
     let profile = step.profile;
-    let mut target = step.st.pos;
+    // From the position the controller shows: an axis not written goes there too (a tool
+    // offset's movement not made yet is made with this move, on every axis).
+    let mut target = step.st.pos + step.st.frame.unmoved;
     let mut given = [false; 3];
     let pairs: [(u8, u8, usize); 3] = [(b'X', b'U', 0), (b'Y', b'V', 1), (b'Z', b'W', 2)];
     for (abs_l, inc_l, axis) in pairs {

@@ -231,7 +231,9 @@ impl Interpreter {
             if let Some(g) = drilling {
                 return Err(self.contour_alarm(Rule::ContourCommand, b.span, format!("{code}: a contour block cannot run the drilling cycle G{}", g.major)));
             }
-            let mut step = Step { profile: self.profile, params: &self.params, tables: &self.tables, repair: None, span: b.span, n: b.sequence, st: &mut st, out: &mut scratch };
+            // The contour is the programmed one (compensation of the finishing shape: docs/compensation.md).
+            let mut no_queue = Vec::new();
+            let mut step = Step { profile: self.profile, params: &self.params, tables: &self.tables, queue: &mut no_queue, bypass_comp: true, repair: None, span: b.span, n: b.sequence, st: &mut st, out: &mut scratch };
             run_block(&mut step, b, self.switches)?;
             if scratch.rough_request.is_some() || scratch.finish_request.is_some() {
                 return Err(self.contour_alarm(Rule::ContourCommand, b.span, format!("{code}: a contour block cannot call a cycle itself")));
@@ -360,13 +362,17 @@ impl Interpreter {
     fn emit_cycle(&mut self, req: &RoughRequest, ops: Vec<Op>, out: &mut Outcome) -> Result<(), Diagnostic> {
         let code = req.kind.code();
         let before = self.state.clone();
-        let mut step = Step { profile: self.profile, params: &self.params, tables: &self.tables, repair: None, span: req.span, n: req.n, st: &mut self.state, out };
+        let mut step = Step { profile: self.profile, params: &self.params, tables: &self.tables, queue: &mut self.comp_queue, bypass_comp: true, repair: None, span: req.span, n: req.n, st: &mut self.state, out };
         let result = ops.into_iter().try_for_each(|op| step.emit_cut(code, op)).and_then(|()| {
             // The per-block limit (the cycle's moves come here, not through `execute_into`).
             if step.out.emitted > super::MAX_MOTIONS_PER_BLOCK {
                 return Err(step.alarm(Rule::MotionLimit, req.span, format!("{code}: more than {} moves in one cycle", super::MAX_MOTIONS_PER_BLOCK)));
             }
-            Ok(())
+            // A roughing pass beyond a soft limit stops the cycle (docs/setup.md).
+            match step.out.overtravel {
+                Some(hit) => Err(super::overtravel_alarm(step.profile, hit)),
+                None => Ok(()),
+            }
         });
         if let Err(d) = result {
             out.clear();
@@ -411,13 +417,19 @@ impl Interpreter {
         out.increment_words_small += scratch.increment_words_small;
         self.replaying = false;
         result?;
-        // Back to the start point at rapid (the cycle's end, as G71 step 8).
+        // Back to the start point at rapid (the cycle's end, as G71 step 8), checked against
+        // the soft limits as every move.
         let from = self.state.pos;
         if from != req.start {
-            self.state.pos = req.start;
-            let mut r = crate::motion::Record::new(req.span, Op::Rapid { from, to: req.start });
-            r.n = req.n;
-            out.records.push(r);
+            let before = self.state;
+            let mut scratch = Outcome::default();
+            let mut step = Step { profile: self.profile, params: &self.params, tables: &self.tables, queue: &mut self.comp_queue, bypass_comp: true, repair: None, span: req.span, n: req.n, st: &mut self.state, out: &mut scratch };
+            step.emit(Op::Rapid { from, to: req.start });
+            if let Some(hit) = scratch.overtravel {
+                self.state = before;
+                return Err(super::overtravel_alarm(self.profile, hit));
+            }
+            out.records.append(&mut scratch.records);
         }
         // Single block stops after the whole G70.
         if let Some(last) = out.records.last_mut() {

@@ -152,8 +152,8 @@ pub enum GFn {
     LatheCoordinateSet,
     /// G92 (mill): set the current position's coordinates.
     MillCoordinateSet,
-    /// G40/G41/G42: tool (nose) radius compensation; the programmed path is shown.
-    RadiusComp(bool),
+    /// G40 (0), G41 (+1: the tool left of the path), G42 (-1): tool (nose) radius compensation.
+    RadiusComp(i8),
     /// G43 (+1), G44 (-1), G49 (0): tool length compensation along Z by the offset H names.
     LengthComp(i8),
     /// G10: data setting (work offsets, tool offsets) in the forms of the profile's `G10Forms`.
@@ -432,6 +432,12 @@ pub struct FrameRules {
     pub lathe_offset_keys: Option<(ParamKey, ParamKey)>,
     /// What G10 sets, where the profile simulates it.
     pub g10: G10Forms,
+    /// Radius compensation looks ahead across this many blocks without a move in the plane
+    /// before the held move ends perpendicular (FANUC: 1, as its manuals draw it).
+    pub comp_lookahead: u8,
+    /// This many consecutive blocks without a move in compensation is an alarm (GSK980TDi help
+    /// text, G40-G42 note 1: seven).
+    pub comp_idle_alarm: Option<u8>,
     pub source: &'static str,
 }
 
@@ -455,6 +461,8 @@ impl FrameRules {
         last_reference: 4,
         lathe_offset_keys: Some((ParamKey::Number(5002, Some(4)), ParamKey::Number(5002, Some(6)))),
         g10: G10Forms::LatheOffsets,
+        comp_lookahead: 1,
+        comp_idle_alarm: None,
         source: "FANUC 0i manuals as recalled (G30 P2-P4; G92 after G54 in one block sets the system selected; 5002#4 LGT, #6 LWM; G10 forms); MACRO.md 10",
     };
     pub const GSK: FrameRules = FrameRules {
@@ -463,6 +471,8 @@ impl FrameRules {
         last_reference: 4,
         lathe_offset_keys: Some((ParamKey::Setting("geometry_by_movement"), ParamKey::Setting("wear_with_next_move"))),
         g10: G10Forms::ToolLifeAndParameters,
+        comp_lookahead: 6,
+        comp_idle_alarm: Some(7),
         source: "GSK980TDi help text: G54-G59 note 6, G28 note 2, G30 (P2-P4) note 3, G10 L3 and L52 only; the offset mode's parameter number not found (an ncsight setting)",
     };
 }

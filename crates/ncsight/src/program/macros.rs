@@ -67,6 +67,8 @@ impl Default for Variables {
 pub(super) struct Reading<'a> {
     pub vars: &'a Variables,
     pub modal: &'a Modal,
+    /// Added to a position for machine coordinates (the setup's offsets in force).
+    pub to_machine: crate::motion::Vec3,
     pub profile: &'static Profile,
     /// Seconds of machine time so far.
     pub clock_s: f64,
@@ -151,8 +153,12 @@ impl Reading<'_> {
 impl expr::Variables for Reading<'_> {
     fn read(&mut self, number: i64) -> Result<Value, ExprError> {
         let m = self.modal;
-        let axis = |i: usize| {
-            let v = m.pos.axis(i);
+        // The position the controller shows (the tool's, plus a tool offset not moved out yet);
+        // #5021-#5026 add the machine's offsets.
+        let shown = m.pos + m.frame.unmoved;
+        let machine = m.pos + self.to_machine;
+        let axis = |i: usize, p: &crate::motion::Vec3| {
+            let v = p.axis(i);
             // A diameter X reads as a diameter (MACRO.md section 8, inferred).
             Some(if i == 0 && self.profile.diameter_x { v * 2.0 } else { v })
         };
@@ -180,13 +186,15 @@ impl expr::Variables for Reading<'_> {
             4119 => Some(m.s_word),
             4120 => Some(f64::from(m.tool)),
             // Positions: the block end point, the machine and the current position. Without a
-            // setup (work and tool offsets) the three are the same (MACRO.md section 8).
+            // setup (work and tool offsets) the three are the same (MACRO.md section 8); with
+            // one, #5021-#5026 are in machine coordinates.
             // The controlled axes in their order: X Y Z on the mill, X Z on a lathe (#5002 is a
             // lathe's Z, as SK7420's `#681=#5022(Current Z ...)` reads it). An axis the profile
             // does not have is vacant.
             5001..=5006 | 5021..=5026 | 5041..=5046 => {
                 let k = ((number - 5001) % 20) as usize;
-                self.controlled_axes().get(k).and_then(|a| axis(*a))
+                let p = if (5021..=5026).contains(&number) { &machine } else { &shown };
+                self.controlled_axes().get(k).and_then(|a| axis(*a, p))
             }
             // The manual handle interruption (FANUC #5121-#5125): none in a simulation.
             5121..=5126 => self.controlled_axes().get((number - 5121) as usize).map(|_| 0.0),

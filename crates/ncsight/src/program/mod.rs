@@ -905,6 +905,7 @@ impl Core {
         macros::Reading {
             vars: &self.vars,
             modal: self.interp.state(),
+            to_machine: self.interp.tables().to_machine(&self.interp.state().frame),
             profile: self.interp.profile(),
             clock_s: self.clock_s,
             program: self.calls.running().and_then(|(n, _)| n),
@@ -1022,7 +1023,9 @@ impl Core {
             Ok(go_on) => {
                 if self.statement_stops && self.records() {
                     // The machine stops here: a thread run held back ends first, as at M00.
-                    self.flush_pending(sink);
+                    self.interp.flush_thread_into(&mut self.outcome);
+                    self.outcome.warnings.clear();
+                    self.pass_on(sink);
                     let stop = crate::motion::Op::Stop { reason: crate::motion::StopReason::SingleBlock };
                     sink(Event::Record(crate::motion::Record::of_block(block.span, block.sequence, stop)));
                 }
@@ -1788,8 +1791,13 @@ impl Core {
 
     fn flush_pending(&mut self, sink: &mut dyn FnMut(Event)) {
         self.interp.flush_pending_into(&mut self.outcome);
-        self.outcome.warnings.clear(); // a flush reports its records only
+        // A flush reports its records, and after them the alarm of a move they make that the
+        // machine refuses (beyond a soft limit, a compensated path with no solution).
+        let alarms: Vec<Diagnostic> = self.outcome.warnings.drain(..).filter(|d| d.is_alarm()).collect();
         self.pass_on(sink);
+        for d in alarms {
+            self.alarm(d, sink);
+        }
     }
 
     fn alarm(&mut self, d: Diagnostic, sink: &mut dyn FnMut(Event)) {

@@ -1,0 +1,349 @@
+//! Tool radius compensation's geometry (G41/G42; MACRO.md 10.3, docs/compensation.md), written
+//! once in plane-local coordinates: the offset of a line or an arc, and what happens where two
+//! compensated moves meet. Pure functions; the interpreter's stage (`interp/comp.rs`) holds a
+//! move back until the next one shows the corner.
+//!
+//! The corner rules are FANUC's cutter compensation C as its manuals draw them: an inner corner
+//! goes to the intersection of the two offset paths; an outer corner whose angle on the work is
+//! 90 degrees or more goes to the intersection of the offset lines extended along the moves'
+//! tangents; a sharper outer corner goes out by the radius along each move, with a straight move
+//! between.
+
+use crate::motion::{ArcDir, Op, Plane, Vec3};
+
+/// A point or vector in the plane: (first axis, second axis) of [`Plane::axes`].
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct P2 {
+    pub a: f64,
+    pub b: f64,
+}
+
+impl P2 {
+    pub const fn new(a: f64, b: f64) -> P2 {
+        P2 { a, b }
+    }
+    pub fn add(self, o: P2) -> P2 {
+        P2::new(self.a + o.a, self.b + o.b)
+    }
+    pub fn sub(self, o: P2) -> P2 {
+        P2::new(self.a - o.a, self.b - o.b)
+    }
+    pub fn scale(self, k: f64) -> P2 {
+        P2::new(self.a * k, self.b * k)
+    }
+    pub fn dot(self, o: P2) -> f64 {
+        self.a * o.a + self.b * o.b
+    }
+    pub fn cross(self, o: P2) -> f64 {
+        self.a * o.b - self.b * o.a
+    }
+    pub fn len(self) -> f64 {
+        self.dot(self).sqrt()
+    }
+    pub fn unit(self) -> P2 {
+        let l = self.len();
+        if l < 1e-12 {
+            P2::default()
+        } else {
+            self.scale(1.0 / l)
+        }
+    }
+    /// The left normal (90 degrees counter-clockwise).
+    pub fn left(self) -> P2 {
+        P2::new(-self.b, self.a)
+    }
+    pub fn dist(self, o: P2) -> f64 {
+        self.sub(o).len()
+    }
+}
+
+/// The plane-local point of `p`.
+pub fn local(p: &Vec3, plane: Plane) -> P2 {
+    let (a, b, _) = plane.axes();
+    P2::new(p.axis(a), p.axis(b))
+}
+
+/// `p` with its in-plane coordinates replaced by `q` (the normal axis kept).
+pub fn with_local(p: &Vec3, q: P2, plane: Plane) -> Vec3 {
+    let (a, b, _) = plane.axes();
+    let mut r = *p;
+    r.set_axis(a, q.a);
+    r.set_axis(b, q.b);
+    r
+}
+
+/// A programmed move in the plane.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Seg {
+    Line { from: P2, to: P2 },
+    Arc { from: P2, to: P2, center: P2, ccw: bool },
+}
+
+impl Seg {
+    /// The move of a motion op in `plane` (`None` for anything else).
+    pub fn of(op: &Op, plane: Plane) -> Option<Seg> {
+        match op {
+            Op::Rapid { from, to } | Op::Feed { from, to, .. } => Some(Seg::Line { from: local(from, plane), to: local(to, plane) }),
+            Op::Arc { from, to, center, dir, .. } => Some(Seg::Arc { from: local(from, plane), to: local(to, plane), center: local(center, plane), ccw: *dir == ArcDir::Ccw }),
+            _ => None,
+        }
+    }
+
+    pub fn from(&self) -> P2 {
+        match *self {
+            Seg::Line { from, .. } | Seg::Arc { from, .. } => from,
+        }
+    }
+
+    pub fn to(&self) -> P2 {
+        match *self {
+            Seg::Line { to, .. } | Seg::Arc { to, .. } => to,
+        }
+    }
+
+    /// The unit direction of travel where the move starts (`at_end` false) or ends.
+    pub fn tangent(&self, at_end: bool) -> P2 {
+        match *self {
+            Seg::Line { from, to } => to.sub(from).unit(),
+            Seg::Arc { from, to, center, ccw } => {
+                let radial = (if at_end { to } else { from }).sub(center).unit();
+                if ccw {
+                    radial.left()
+                } else {
+                    radial.left().scale(-1.0)
+                }
+            }
+        }
+    }
+
+    /// A move that has no length in the plane (a move along the normal axis only).
+    pub fn is_point(&self) -> bool {
+        matches!(self, Seg::Line { from, to } if from.dist(*to) < 1e-9)
+    }
+}
+
+/// Why a compensated path cannot be made (FANUC 0 P/S alarm numbers in `interp/comp.rs`).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum CompError {
+    /// The offset paths of an inner corner do not meet (033 NO SOLUTION AT CRC).
+    NoIntersection,
+    /// The compensated move runs against the programmed one (041 INTERFERENCE IN CRC).
+    Interference,
+    /// An arc smaller than the radius on its inner side (038 / 041).
+    ArcTooSmall,
+}
+
+/// The offset vector of length `r` on `side` (+1 left: G41, -1 right: G42) of a move's start or
+/// end.
+pub fn vector(seg: &Seg, at_end: bool, side: f64, r: f64) -> P2 {
+    seg.tangent(at_end).left().scale(side * r)
+}
+
+/// What the tool does where two compensated moves meet: where the first ends, the points that
+/// straight moves go to between them (outer corners of arcs), where the second starts (a
+/// straight move joins the last of these to it where they differ).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Corner {
+    pub first_end: P2,
+    pub between: Vec<P2>,
+    pub second_start: P2,
+}
+
+/// The offset circle of an arc (its radius on the compensated side, `None` when it vanishes).
+fn offset_radius(seg: &Seg, side: f64, r: f64) -> Option<(P2, f64)> {
+    match *seg {
+        Seg::Arc { from, center, ccw, .. } => {
+            // The left normal of a counter-clockwise arc points to its centre.
+            let inward = if ccw { side } else { -side };
+            let rr = from.dist(center) - inward * r;
+            (rr > 1e-9).then_some((center, rr))
+        }
+        Seg::Line { .. } => None,
+    }
+}
+
+/// Intersections of the line through `p` along `d` with the circle (`c`, `rr`).
+fn line_circle(p: P2, d: P2, c: P2, rr: f64) -> Vec<P2> {
+    let f = p.sub(c);
+    let (a, b, cc) = (d.dot(d), 2.0 * f.dot(d), f.dot(f) - rr * rr);
+    let disc = b * b - 4.0 * a * cc;
+    if disc < -1e-12 || a < 1e-18 {
+        return Vec::new();
+    }
+    let s = disc.max(0.0).sqrt();
+    [(-b - s) / (2.0 * a), (-b + s) / (2.0 * a)].iter().map(|t| p.add(d.scale(*t))).collect()
+}
+
+/// Intersections of two circles.
+fn circle_circle(c1: P2, r1: f64, c2: P2, r2: f64) -> Vec<P2> {
+    let d = c2.sub(c1);
+    let dist = d.len();
+    if dist < 1e-12 || dist > r1 + r2 + 1e-9 || dist < (r1 - r2).abs() - 1e-9 {
+        return Vec::new();
+    }
+    let a = (r1 * r1 - r2 * r2 + dist * dist) / (2.0 * dist);
+    let h = (r1 * r1 - a * a).max(0.0).sqrt();
+    let m = c1.add(d.scale(a / dist));
+    let n = d.unit().left().scale(h);
+    vec![m.add(n), m.sub(n)]
+}
+
+/// Intersection of the lines through `p1` along `d1` and `p2` along `d2`.
+fn line_line(p1: P2, d1: P2, p2: P2, d2: P2) -> Option<P2> {
+    let den = d1.cross(d2);
+    if den.abs() < 1e-12 {
+        return None;
+    }
+    let t = p2.sub(p1).cross(d2) / den;
+    Some(p1.add(d1.scale(t)))
+}
+
+/// The corner between `first` and `second` (which starts where `first` ends), compensated by
+/// `r` on `side`.
+pub fn corner(first: &Seg, second: &Seg, side: f64, r: f64) -> Result<Corner, CompError> {
+    let p = first.to();
+    let (d1, d2) = (first.tangent(true), second.tangent(false));
+    let (v1, v2) = (vector(first, true, side, r), vector(second, false, side, r));
+    let turn = d1.cross(d2);
+    let tangent = turn.abs() < 1e-9 && d1.dot(d2) > 0.0;
+    if tangent || r == 0.0 {
+        let q = p.add(v1);
+        return Ok(Corner { first_end: q, between: Vec::new(), second_start: p.add(v2) });
+    }
+    // The path turns toward the compensated side: an inner corner.
+    let inner = turn * side > 0.0;
+    if inner {
+        let candidates = match (first, second) {
+            (Seg::Line { .. }, Seg::Line { .. }) => line_line(p.add(v1), d1, p.add(v2), d2).into_iter().collect(),
+            (Seg::Line { .. }, Seg::Arc { .. }) => match offset_radius(second, side, r) {
+                Some((c, rr)) => line_circle(p.add(v1), d1, c, rr),
+                None => return Err(CompError::ArcTooSmall),
+            },
+            (Seg::Arc { .. }, Seg::Line { .. }) => match offset_radius(first, side, r) {
+                Some((c, rr)) => line_circle(p.add(v2), d2, c, rr),
+                None => return Err(CompError::ArcTooSmall),
+            },
+            (Seg::Arc { .. }, Seg::Arc { .. }) => match (offset_radius(first, side, r), offset_radius(second, side, r)) {
+                (Some((c1, r1)), Some((c2, r2))) => circle_circle(c1, r1, c2, r2),
+                _ => return Err(CompError::ArcTooSmall),
+            },
+        };
+        // The intersection nearest the corner (the other lies across the path).
+        let target = p.add(v1.add(v2).scale(0.5));
+        let q = candidates.into_iter().min_by(|a, b| a.dist(target).total_cmp(&b.dist(target))).ok_or(CompError::NoIntersection)?;
+        return Ok(Corner { first_end: q, between: Vec::new(), second_start: q });
+    }
+    // Outer corner. The angle on the work side is 90 degrees or more when the moves' directions
+    // differ by 90 degrees or less: the offsets extended along the tangents meet at q. Sharper:
+    // out by r along the first move (a), in by r against the second (b). A line is extended to
+    // its point; an arc ends (starts) perpendicular and a straight move joins it.
+    let (e1, s2) = (p.add(v1), p.add(v2));
+    let (out_pt, in_pt) = if d1.dot(d2) >= 0.0 {
+        let q = line_line(e1, d1, s2, d2).unwrap_or(e1);
+        (q, q)
+    } else {
+        (e1.add(d1.scale(r)), s2.sub(d2.scale(r)))
+    };
+    let first_is_line = matches!(first, Seg::Line { .. });
+    let second_is_line = matches!(second, Seg::Line { .. });
+    let first_end = if first_is_line { out_pt } else { e1 };
+    let second_start = if second_is_line { in_pt } else { s2 };
+    let mut between = Vec::new();
+    if !first_is_line {
+        between.push(out_pt);
+    }
+    if !second_is_line && (between.last() != Some(&in_pt)) && in_pt.dist(first_end) > 1e-12 {
+        between.push(in_pt);
+    }
+    Ok(Corner { first_end, between, second_start })
+}
+
+/// The compensated form of `seg` from `start` to `end` (an arc keeps its centre); an error when
+/// it runs against the programmed move (FANUC's interference check).
+pub fn offset(seg: &Seg, start: P2, end: P2, side: f64, r: f64) -> Result<Seg, CompError> {
+    match *seg {
+        Seg::Line { from, to } => {
+            let (prog, comp) = (to.sub(from), end.sub(start));
+            if prog.len() > 1e-9 && comp.len() > 1e-9 && prog.dot(comp) < 0.0 {
+                return Err(CompError::Interference);
+            }
+            Ok(Seg::Line { from: start, to: end })
+        }
+        Seg::Arc { from, to, center, ccw } => {
+            if offset_radius(seg, side, r).is_none() {
+                return Err(CompError::ArcTooSmall);
+            }
+            let sweep = |s: P2, e: P2| {
+                let (a0, a1) = ((s.b - center.b).atan2(s.a - center.a), (e.b - center.b).atan2(e.a - center.a));
+                let d = if ccw { a1 - a0 } else { a0 - a1 };
+                d.rem_euclid(std::f64::consts::TAU)
+            };
+            let (prog, comp) = (sweep(from, to), sweep(start, end));
+            // A full circle keeps its sweep; otherwise the compensated arc may not turn more
+            // than half a turn further than the programmed one (it would run backwards).
+            if prog > 1e-9 && comp - prog > std::f64::consts::PI {
+                return Err(CompError::Interference);
+            }
+            Ok(Seg::Arc { from: start, to: end, center, ccw })
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn close(a: P2, b: P2) -> bool {
+        a.dist(b) < 1e-9
+    }
+
+    #[test]
+    fn inner_corner_of_two_lines_is_their_offsets_intersection() {
+        // Along +a then turning left (+b), tool on the left (G41): an inner corner.
+        let l1 = Seg::Line { from: P2::new(0.0, 0.0), to: P2::new(10.0, 0.0) };
+        let l2 = Seg::Line { from: P2::new(10.0, 0.0), to: P2::new(10.0, 10.0) };
+        let c = corner(&l1, &l2, 1.0, 1.0).unwrap();
+        assert!(close(c.first_end, P2::new(9.0, 1.0)) && close(c.second_start, P2::new(9.0, 1.0)) && c.between.is_empty());
+    }
+
+    #[test]
+    fn outer_right_angle_goes_to_the_extended_offsets() {
+        // The same turn with the tool on the right (G42): an outer 90-degree corner.
+        let l1 = Seg::Line { from: P2::new(0.0, 0.0), to: P2::new(10.0, 0.0) };
+        let l2 = Seg::Line { from: P2::new(10.0, 0.0), to: P2::new(10.0, 10.0) };
+        let c = corner(&l1, &l2, -1.0, 1.0).unwrap();
+        assert!(close(c.first_end, P2::new(11.0, -1.0)) && close(c.second_start, P2::new(11.0, -1.0)), "{c:?}");
+    }
+
+    #[test]
+    fn sharp_outer_corner_goes_out_by_the_radius_on_each_move() {
+        // Along +a, then back at 135 degrees: the work-side angle is 45 degrees.
+        let l1 = Seg::Line { from: P2::new(0.0, 0.0), to: P2::new(10.0, 0.0) };
+        let l2 = Seg::Line { from: P2::new(10.0, 0.0), to: P2::new(0.0, 10.0) };
+        let c = corner(&l1, &l2, -1.0, 1.0).unwrap();
+        let s = 0.5f64.sqrt();
+        assert!(close(c.first_end, P2::new(11.0, -1.0)), "{c:?}");
+        // Second's right normal is (s, s); back along it by r.
+        assert!(close(c.second_start, P2::new(10.0 + s + s, s - s)), "{c:?}");
+        assert_eq!(c.between.len(), 0, "the stage joins first_end and second_start with one move");
+    }
+
+    #[test]
+    fn arc_offset_radius_and_interference() {
+        // A counter-clockwise arc of radius 5 with the tool on its left (inside): radius 4.
+        let arc = Seg::Arc { from: P2::new(5.0, 0.0), to: P2::new(0.0, 5.0), center: P2::new(0.0, 0.0), ccw: true };
+        assert_eq!(offset_radius(&arc, 1.0, 1.0).unwrap().1, 4.0);
+        assert_eq!(offset_radius(&arc, 1.0, 6.0), None);
+        assert_eq!(offset(&arc, P2::new(4.0, 0.0), P2::new(0.0, 4.0), 1.0, 1.0).unwrap(), Seg::Arc { from: P2::new(4.0, 0.0), to: P2::new(0.0, 4.0), center: P2::new(0.0, 0.0), ccw: true });
+        let short = Seg::Line { from: P2::new(0.0, 0.0), to: P2::new(1.0, 0.0) };
+        assert_eq!(offset(&short, P2::new(2.0, 1.0), P2::new(1.5, 1.0), 1.0, 1.0), Err(CompError::Interference));
+    }
+
+    #[test]
+    fn line_into_a_tangent_arc_has_no_corner() {
+        let l = Seg::Line { from: P2::new(-10.0, -5.0), to: P2::new(0.0, -5.0) };
+        let arc = Seg::Arc { from: P2::new(0.0, -5.0), to: P2::new(5.0, 0.0), center: P2::new(0.0, 0.0), ccw: true };
+        let c = corner(&l, &arc, 1.0, 1.0).unwrap();
+        assert!(close(c.first_end, P2::new(0.0, -4.0)) && close(c.second_start, P2::new(0.0, -4.0)));
+    }
+}

@@ -1,0 +1,312 @@
+//! The look-ahead stage of tool radius compensation (G40/G41/G42; MACRO.md 10.3,
+//! docs/compensation.md). In compensation a move in the plane is held back until the next one
+//! shows the corner between them (`crate::comp` does the geometry); the records that come
+//! between (a move along the normal axis, a dwell, an M code) wait behind it, so the stream
+//! stays in time order. The held records live in the interpreter's queue (restored when a block
+//! alarms); the scalar state in `Modal::comp`.
+//!
+//! Positions in records are the point the controller positions: the nose centre plus the tip
+//! vector (the imaginary tool nose on a lathe, tips 1-8), the centre itself on a mill.
+
+use super::frame;
+use super::Step;
+use crate::alarm::{Diagnostic, Rule};
+use crate::comp::{self, CompError, Seg, P2};
+use crate::motion::{Op, Record, Vec3};
+use crate::source::Span;
+
+/// The direction of imaginary tool nose `tip` from the nose centre, as (X, Z) signs, seen with
+/// +X up and +Z to the right (MACRO.md 10.3: 1-4 the corners, 5-8 the sides [inferred], 0 and 9
+/// the centre).
+fn tip_direction(tip: u8) -> (f64, f64) {
+    match tip {
+        1 => (1.0, 1.0),
+        2 => (1.0, -1.0),
+        3 => (-1.0, -1.0),
+        4 => (-1.0, 1.0),
+        5 => (0.0, 1.0),
+        6 => (1.0, 0.0),
+        7 => (0.0, -1.0),
+        8 => (-1.0, 0.0),
+        _ => (0.0, 0.0),
+    }
+}
+
+fn alarm_of(step: &Step, e: CompError, span: Span) -> Diagnostic {
+    match e {
+        CompError::NoIntersection => step.alarm(Rule::CompNoSolution, span, "radius compensation: the offset paths of this inner corner do not meet (the tool does not fit)"),
+        CompError::Interference => step.alarm(
+            Rule::CompInterference,
+            span,
+            "radius compensation: the compensated move would run against the programmed one (the tool is larger than this step: it would cut into the part)",
+        ),
+        CompError::ArcTooSmall => step.alarm(Rule::CompInterference, span, "radius compensation: the arc's radius is smaller than the tool's on its inner side"),
+    }
+}
+
+/// Note the first compensation error of the block (the block then alarms).
+fn fail(step: &mut Step, e: CompError, span: Span) {
+    if step.out.comp_error.is_none() {
+        let d = alarm_of(step, e, span);
+        step.out.comp_error = Some(d);
+    }
+}
+
+/// G40/G41/G42 of a block (`side` 0, +1, -1), with the block's D (mills). On a lathe the radius
+/// and tip are those of the T offset in force.
+pub(super) fn command(step: &mut Step, side: i8, d: Option<u32>, span: Span, arc_move: bool) -> Result<(), Diagnostic> {
+    let c = step.st.comp;
+    if side == 0 {
+        if c.side != 0 && arc_move {
+            // FANUC 034; GSK980TDi help text, G40-G42 note 2.
+            return Err(step.alarm(Rule::CompStartupArc, span, "G40: compensation is cancelled in a G00 or G01 block only, not in an arc"));
+        }
+        break_off(step);
+        step.st.comp.side = 0;
+        return Ok(());
+    }
+    let lathe = step.profile.is_lathe();
+    let number = if lathe { step.st.frame.offset_number } else { d.unwrap_or(c.d) };
+    let e = frame::entry(step, number, span);
+    let radius = e.radius_mm + e.wear_radius_mm;
+    if radius < 0.0 {
+        return Err(step.alarm(Rule::ValueOutOfRange, span, format!("offset {number}: the radius with its wear is negative ({radius:.3} mm)")));
+    }
+    let tip = if lathe {
+        let (dx, dz) = tip_direction(e.tip);
+        Vec3::new(radius * dx, 0.0, radius * dz)
+    } else {
+        Vec3::default()
+    };
+    if c.side != 0 && (c.side != side || c.radius_mm != radius || c.tip != tip) {
+        // A new side or radius: the path so far ends perpendicular; the next move starts anew.
+        break_off(step);
+    }
+    if c.side != side && radius == 0.0 {
+        let whose = if lathe { format!("the T offset in force ({number})") } else { format!("D{number}") };
+        let msg = format!("G4{}: the radius of {whose} is 0 (no setup, or radius_mm 0 in its [[offset]]): the programmed path is the tool's", if side > 0 { 1 } else { 2 });
+        step.warn(Rule::CompRadiusZero, span, msg);
+    }
+    let st = &mut step.st.comp;
+    st.side = side;
+    st.radius_mm = radius;
+    st.tip = tip;
+    if let Some(d) = d {
+        st.d = d;
+    }
+    Ok(())
+}
+
+/// `op` (a move) with its in-plane coordinates at centre `c` (its normal-axis ones kept), as the
+/// controller positions it.
+fn at_point(step: &Step, op: Op, c: P2) -> Op {
+    let plane = step.st.plane;
+    let tip = step.st.comp.tip;
+    let place = |p: Vec3| comp::with_local(&p, c, plane) + tip;
+    match op {
+        Op::Rapid { from, to } => Op::Rapid { from: place(from), to: place(to) },
+        Op::Feed { from, to, feed_mm_min } => Op::Feed { from: place(from), to: place(to), feed_mm_min },
+        other => other,
+    }
+}
+
+/// A record the stage takes: a move in the plane is held (the one held before is made, with
+/// the corner between); anything else waits behind a held move, or goes out now.
+pub(super) fn take(step: &mut Step, span: Span, n: Option<u32>, op: Op) {
+    let plane = step.st.plane;
+    match Seg::of(&op, plane) {
+        Some(seg) if !seg.is_point() => plane_move(step, span, n, op, seg),
+        _ => {
+            if !step.queue.is_empty() {
+                step.queue.push(Record::of_block(span, n, op));
+                return;
+            }
+            let op = match (step.st.comp.actual, op.start_point()) {
+                (Some(c), Some(_)) => at_point(step, op, comp::local(&c, plane)),
+                _ => op,
+            };
+            step.push_record(span, n, op);
+        }
+    }
+}
+
+fn plane_move(step: &mut Step, span: Span, n: Option<u32>, op: Op, seg: Seg) {
+    let plane = step.st.plane;
+    let (side, r) = (step.st.comp.side as f64, step.st.comp.radius_mm);
+    step.out.comp_plane_move = true;
+    step.st.comp.idle_blocks = 0;
+    let start3 = op.start_point().unwrap_or_default();
+    if step.queue.is_empty() {
+        // Start-up (type A), or a new start after the path was broken off.
+        let centre = step.st.comp.actual.take().unwrap_or(start3 - step.st.comp.tip);
+        if matches!(op, Op::Arc { .. }) {
+            if !step.st.comp.started {
+                let d = step.alarm(Rule::CompStartupArc, span, "G41/G42: compensation starts in a G00 or G01 block, not in an arc");
+                if step.out.comp_error.is_none() {
+                    step.out.comp_error = Some(d);
+                }
+                return;
+            }
+            // After a break: a straight move to the arc's offset start, then the arc.
+            let s = seg.from().add(comp::vector(&seg, false, side, r));
+            let s3 = comp::with_local(&start3, s, plane);
+            let link = Op::Feed { from: centre + step.st.comp.tip, to: s3 + step.st.comp.tip, feed_mm_min: feed_of(&op) };
+            step.push_record(span, n, link);
+            step.st.comp.held_start = s3;
+            step.st.comp.held_startup = false;
+        } else {
+            step.st.comp.held_start = centre;
+            step.st.comp.held_startup = true;
+        }
+        step.st.comp.started = true;
+        step.queue.push(Record::of_block(span, n, op));
+        return;
+    }
+    let held = step.queue[0].clone();
+    let Some(hseg) = Seg::of(&held.op, plane) else {
+        unreachable!("the queue's first record is a move in the plane")
+    };
+    let corner = if step.st.comp.held_startup {
+        // Type A: the start-up ends perpendicular to the next move at its start.
+        let e = seg.from().add(comp::vector(&seg, false, side, r));
+        comp::Corner { first_end: e, between: Vec::new(), second_start: e }
+    } else {
+        match comp::corner(&hseg, &seg, side, r) {
+            Ok(c) => c,
+            Err(e) => return fail(step, e, span),
+        }
+    };
+    if let Err(e) = make_held(step, corner.first_end) {
+        return fail(step, e, held.span);
+    }
+    // The moves around an outer corner, at the next move's rate.
+    let mut at = corner.first_end;
+    for p in corner.between.iter().copied().chain(std::iter::once(corner.second_start)) {
+        if p.dist(at) > 1e-9 {
+            let (a, b) = (comp::with_local(&start3, at, plane), comp::with_local(&start3, p, plane));
+            let link = match op {
+                Op::Rapid { .. } => Op::Rapid { from: a + step.st.comp.tip, to: b + step.st.comp.tip },
+                _ => Op::Feed { from: a + step.st.comp.tip, to: b + step.st.comp.tip, feed_mm_min: feed_of(&op) },
+            };
+            step.push_record(span, n, link);
+        }
+        at = p;
+    }
+    step.st.comp.held_start = comp::with_local(&start3, corner.second_start, plane);
+    step.st.comp.held_startup = false;
+    step.queue.push(Record::of_block(span, n, op));
+}
+
+fn feed_of(op: &Op) -> f64 {
+    match op {
+        Op::Feed { feed_mm_min, .. } | Op::Arc { feed_mm_min, .. } => *feed_mm_min,
+        _ => 0.0,
+    }
+}
+
+/// Make the held move, compensated from its start to `end` (nose centre in the plane), then
+/// the records that waited behind it, there. The queue is left empty.
+fn make_held(step: &mut Step, end: P2) -> Result<(), CompError> {
+    let plane = step.st.plane;
+    let (side, r) = (step.st.comp.side as f64, step.st.comp.radius_mm);
+    let queue = std::mem::take(step.queue);
+    let Some((held, rest)) = queue.split_first() else {
+        return Ok(());
+    };
+    let hseg = Seg::of(&held.op, plane).expect("the queue's first record is a move in the plane");
+    let start = step.st.comp.held_start;
+    let end3 = comp::with_local(&held.op.end_point().unwrap_or_default(), end, plane);
+    let result = comp::offset(&hseg, comp::local(&start, plane), end, side, r);
+    let tip = step.st.comp.tip;
+    let made = match held.op {
+        Op::Rapid { .. } => Op::Rapid { from: start + tip, to: end3 + tip },
+        Op::Feed { feed_mm_min, .. } => Op::Feed { from: start + tip, to: end3 + tip, feed_mm_min },
+        Op::Arc { center, plane, dir, feed_mm_min, .. } => Op::Arc { from: start + tip, to: end3 + tip, center: center + tip, plane, dir, feed_mm_min },
+        other => other,
+    };
+    if let Err(e) = result {
+        *step.queue = queue;
+        return Err(e);
+    }
+    step.push_record(held.span, held.n, made);
+    for rec in rest {
+        let op = at_point(step, rec.op, end);
+        step.push_record(rec.span, rec.n, op);
+    }
+    let mut reuse = queue;
+    reuse.clear();
+    *step.queue = reuse;
+    Ok(())
+}
+
+/// The path is broken off: the held move ends perpendicular to itself at its end (cancel, a
+/// block compensation does not act in, the look-ahead run out), and the tool stays there until
+/// the next move.
+pub(super) fn break_off(step: &mut Step) {
+    if step.queue.is_empty() {
+        return;
+    }
+    let plane = step.st.plane;
+    let held = step.queue[0].clone();
+    let hseg = Seg::of(&held.op, plane).expect("the queue's first record is a move in the plane");
+    let (side, r) = (step.st.comp.side as f64, step.st.comp.radius_mm);
+    let end = hseg.to().add(comp::vector(&hseg, true, side, r));
+    if let Err(e) = make_held(step, end) {
+        step.queue.clear();
+        return fail(step, e, held.span);
+    }
+    let end3 = comp::with_local(&held.op.end_point().unwrap_or_default(), end, plane);
+    step.st.comp.actual = Some(end3);
+    step.st.comp.started = false;
+    step.st.comp.idle_blocks = 0;
+}
+
+/// After a block in compensation: count it if it had no move in the plane; past the look-ahead
+/// the held move ends perpendicular; the controller's limit of such blocks is an alarm (GSK980TDi
+/// help text, G40-G42 note 1). The programme's end cancels compensation (note 3).
+pub(super) fn end_of_block(step: &mut Step) -> Result<(), Diagnostic> {
+    if step.st.ended {
+        break_off(step);
+        step.st.comp.side = 0;
+        return Ok(());
+    }
+    if step.queue.is_empty() || step.out.comp_plane_move {
+        return Ok(());
+    }
+    step.st.comp.idle_blocks = step.st.comp.idle_blocks.saturating_add(1);
+    let idle = step.st.comp.idle_blocks;
+    if let Some(limit) = step.profile.frame.comp_idle_alarm {
+        if idle >= limit {
+            return Err(step.alarm(
+                Rule::CompIdleBlocks,
+                step.span,
+                format!("{idle} blocks in a row without a move in radius compensation: {} allows fewer than {limit}", step.profile.name),
+            ));
+        }
+    }
+    if idle > step.profile.frame.comp_lookahead {
+        break_off(step);
+    }
+    Ok(())
+}
+
+/// A move made outside compensation while the tool is off its programmed point (the move after
+/// G40, or a block compensation does not act in) starts where the tool is.
+pub(super) fn from_actual(step: &mut Step, op: Op) -> Op {
+    let Some(c) = step.st.comp.actual else {
+        return op;
+    };
+    if op.start_point().is_none() {
+        return op;
+    }
+    step.st.comp.actual = None;
+    let from = c + step.st.comp.tip;
+    match op {
+        Op::Rapid { to, .. } => Op::Rapid { from, to },
+        Op::Feed { to, feed_mm_min, .. } => Op::Feed { from, to, feed_mm_min },
+        Op::Arc { to, center, plane, dir, feed_mm_min, .. } => Op::Arc { from, to, center, plane, dir, feed_mm_min },
+        Op::Thread { to, lead_mm, long_axis, spindle_deg, rpm, .. } => Op::Thread { from, to, lead_mm, long_axis, spindle_deg, rpm },
+        Op::ThreadArc { to, center, plane, dir, lead_mm, long_axis, spindle_deg, rpm, .. } => Op::ThreadArc { from, to, center, plane, dir, lead_mm, long_axis, spindle_deg, rpm },
+        other => other,
+    }
+}
