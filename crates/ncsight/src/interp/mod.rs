@@ -474,9 +474,10 @@ impl Interpreter {
         // perpendicular.
         if with_comp {
             comp::break_off(&mut step);
-        }
-        if let Some(d) = step.out.comp_error.take() {
-            out.warnings.push(d);
+            // A held move that cannot be made was the next block's alarm already (or, at the
+            // end of the input, ends where the path stops): not told twice.
+            step.out.comp_error = None;
+            step.queue.clear();
         }
         // The run has ended: a pull-out beyond a limit is told, with nothing left to stop.
         if let Some(hit) = out.overtravel.take() {

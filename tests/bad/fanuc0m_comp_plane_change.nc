@@ -1,0 +1,6 @@
+(expect PS0037 line 5 col 1 on fanuc0m)
+G21 G17 G90 G00 X0 Y0 Z5.
+G41 D1 G01 X10. F100.
+Y10.
+G18
+M30

@@ -1,0 +1,15 @@
+O0700 (GSK980TDi - G42 tool nose radius compensation, tip 3, R0.8 - setup.toml)
+T0101
+G99 G97 S1000 M03
+G00 X20. Z2.
+G42 G01 Z0 F0.1
+X30. Z-5.
+Z-15.
+X40. Z-25.
+Z-30.
+G02 X50. Z-35. R5.
+G01 X60.
+G03 X70. Z-40. R5.
+G01 Z-50.
+G40 G00 X100.
+M30
