@@ -133,6 +133,9 @@ pub enum CompError {
     ArcTooSmall,
 }
 
+/// Two moves whose directions differ by less than this (radians) meet without a corner.
+pub const TANGENT_RAD: f64 = 1e-4;
+
 /// The offset vector of length `r` on `side` (+1 left: G41, -1 right: G42) of a move's start or
 /// end.
 pub fn vector(seg: &Seg, at_end: bool, side: f64, r: f64) -> P2 {
@@ -205,10 +208,13 @@ pub fn corner(first: &Seg, second: &Seg, side: f64, r: f64) -> Result<Corner, Co
     let (d1, d2) = (first.tangent(true), second.tangent(false));
     let (v1, v2) = (vector(first, true, side, r), vector(second, false, side, r));
     let turn = d1.cross(d2);
-    let tangent = turn.abs() < 1e-9 && d1.dot(d2) > 0.0;
+    // Tangent within 0.0001 rad (a programme's 4 decimals put a tangent arc's ends this far
+    // off): no corner; the arc's side of the join is kept exact, the line's moves by at most
+    // r x 0.0001.
+    let tangent = turn.abs() < TANGENT_RAD && d1.dot(d2) > 0.0;
     if tangent || r == 0.0 {
-        let q = p.add(v1);
-        return Ok(Corner { first_end: q, between: Vec::new(), second_start: p.add(v2) });
+        let q = if matches!(second, Seg::Arc { .. }) { p.add(v2) } else { p.add(v1) };
+        return Ok(Corner { first_end: q, between: Vec::new(), second_start: q });
     }
     // The path turns toward the compensated side: an inner corner.
     let inner = turn * side > 0.0;
