@@ -72,6 +72,23 @@ pub fn with_local(p: &Vec3, q: P2, plane: Plane) -> Vec3 {
     r
 }
 
+/// The direction of imaginary tool nose `tip` from the nose centre, as (X, Z) signs, seen with
+/// +X up and +Z to the right (MACRO.md 10.3: 1-4 the corners, 5-8 the sides [inferred], 0 and 9
+/// the centre).
+pub fn tip_direction(tip: u8) -> (f64, f64) {
+    match tip {
+        1 => (1.0, 1.0),
+        2 => (1.0, -1.0),
+        3 => (-1.0, -1.0),
+        4 => (-1.0, 1.0),
+        5 => (0.0, 1.0),
+        6 => (1.0, 0.0),
+        7 => (0.0, -1.0),
+        8 => (-1.0, 0.0),
+        _ => (0.0, 0.0),
+    }
+}
+
 /// A programmed move in the plane.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Seg {

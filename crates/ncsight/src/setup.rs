@@ -238,9 +238,16 @@ impl Tool {
 
     /// How far the cut surface lies from the tip's radius at axial distance `u` from the tip
     /// (the edge profile): flat, then the nose radius, then the flanks at half the included
-    /// angle. `None` beyond the tool's reach is never returned: the flanks go on.
+    /// angle. `None` beyond the tool's reach is never returned: the flanks go on. A turning or
+    /// boring tool with an imaginary tool nose (`tip`) cuts with its nose circle only: the
+    /// insert's edges beyond it are clearance, not a symmetric V (docs/compensation.md).
     pub fn profile(&self, u: f64) -> f64 {
         let u = u.abs();
+        if self.tip.is_some() && matches!(self.kind, ToolKind::Turning | ToolKind::Boring) && self.tip_radius_mm > 0.0 {
+            let rho = self.tip_radius_mm;
+            // Beyond the circle: far above anything, so it never cuts.
+            return if u <= rho { rho - (rho * rho - u * u).sqrt() } else { 1e6 };
+        }
         let half = (self.included_angle_deg / 2.0).to_radians();
         let slope = 1.0 / half.tan().max(1e-9); // radial per axial on a flank
         let flat = self.tip_flat_mm / 2.0;

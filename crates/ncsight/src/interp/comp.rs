@@ -15,23 +15,6 @@ use crate::comp::{self, CompError, Seg, P2};
 use crate::motion::{Op, Record, Vec3};
 use crate::source::Span;
 
-/// The direction of imaginary tool nose `tip` from the nose centre, as (X, Z) signs, seen with
-/// +X up and +Z to the right (MACRO.md 10.3: 1-4 the corners, 5-8 the sides [inferred], 0 and 9
-/// the centre).
-fn tip_direction(tip: u8) -> (f64, f64) {
-    match tip {
-        1 => (1.0, 1.0),
-        2 => (1.0, -1.0),
-        3 => (-1.0, -1.0),
-        4 => (-1.0, 1.0),
-        5 => (0.0, 1.0),
-        6 => (1.0, 0.0),
-        7 => (0.0, -1.0),
-        8 => (-1.0, 0.0),
-        _ => (0.0, 0.0),
-    }
-}
-
 fn alarm_of(step: &Step, e: CompError, span: Span) -> Diagnostic {
     match e {
         CompError::NoIntersection => step.alarm(Rule::CompNoSolution, span, "radius compensation: the offset paths of this inner corner do not meet (the tool does not fit)"),
@@ -73,7 +56,7 @@ pub(super) fn command(step: &mut Step, side: i8, d: Option<u32>, span: Span, arc
         return Err(step.alarm(Rule::ValueOutOfRange, span, format!("offset {number}: the radius with its wear is negative ({radius:.3} mm)")));
     }
     let tip = if lathe {
-        let (dx, dz) = tip_direction(e.tip);
+        let (dx, dz) = comp::tip_direction(e.tip);
         Vec3::new(radius * dx, 0.0, radius * dz)
     } else {
         Vec3::default()

@@ -244,12 +244,28 @@ pub fn simulate_with(records: &[Record], setup: &Setup, opts: &SimOptions, progr
         ));
     }
     let mut stock = LatheStock::new(bar, internal, dz, ntheta);
+    // A turning tool with an imaginary tool nose (its `tip`) is positioned by that point: the
+    // stock cuts with the nose, whose lowest point (highest in a bore) lies R x d(tip) and R
+    // from it (docs/compensation.md). Without a tip, the record's point is the nose's.
+    let nose_shift = |t: &Tool| -> Option<crate::motion::Vec3> {
+        let tip = t.tip?;
+        if t.kind == crate::setup::ToolKind::Thread || t.tip_radius_mm <= 0.0 {
+            return None;
+        }
+        let r = t.tip_radius_mm;
+        let (dx, dz) = crate::comp::tip_direction(tip);
+        let side = if internal { 1.0 } else { -1.0 };
+        Some(crate::motion::Vec3::new(-r * dx + side * r, 0.0, -r * dz))
+    };
     // Where the tool is before the first rapid is the machine's business, not the programme's
     // (the power-on position): motion up to the end of the first rapid is not cut.
     let first_rapid = records.iter().position(|r| matches!(r.op, Op::Rapid { .. })).unwrap_or(0);
     let total = records.len();
     for (k, (r, (t, turning))) in records.iter().zip(&tool_of).enumerate().skip(first_rapid + 1) {
-        stock.apply(r, t, *turning);
+        match nose_shift(t) {
+            Some(d) => stock.apply(&shifted(r, d), t, *turning),
+            None => stock.apply(r, t, *turning),
+        }
         progress(k + 1, total);
     }
     let mut m = measure(&stock, records, &tool_of.iter().map(|(t, _)| *t).collect::<Vec<_>>());
@@ -259,6 +275,17 @@ pub fn simulate_with(records: &[Record], setup: &Setup, opts: &SimOptions, progr
     }
     m.findings.splice(0..0, stock.findings.iter().cloned());
     Ok(Simulation { stock, measurement: m })
+}
+
+/// A record with every point moved by `d`.
+fn shifted(r: &Record, d: crate::motion::Vec3) -> Record {
+    let op = match r.op {
+        Op::Rapid { from, to } => Op::Rapid { from: from + d, to: to + d },
+        Op::Feed { from, to, feed_mm_min } => Op::Feed { from: from + d, to: to + d, feed_mm_min },
+        Op::Arc { from, to, center, plane, dir, feed_mm_min } => Op::Arc { from: from + d, to: to + d, center: center + d, plane, dir, feed_mm_min },
+        other => other,
+    };
+    Record { op, ..r.clone() }
 }
 
 fn deviation(m: &mut Measurement, e: &Expected, dz: f64, last_thread: Option<&Record>) {
