@@ -25,4 +25,6 @@ G91 G53 X0
 G28 X0 Y0
 (G30 via programme X5 Y0 absolute to the 2nd reference point X-250 Y-100 - programme X140 Y195.)
 G90 G30 P2 X5. Y0
+(G30 P3 - the setup has no reference_3 - warning NCS-W31, taken as machine zero - from the intermediate point X5 Y0 to X390 Y295.)
+G30 P3 X5. Y0
 M30

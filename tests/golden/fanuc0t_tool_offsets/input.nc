@@ -19,4 +19,6 @@ T0200
 (Offset cancelled - the geometry shift goes - reads X-100 Z-69.7 - the wear Z0.3 moves back - a rapid to X-100 Z-70.)
 G00 X60. Z20.
 (No offset - machine X60 Z20.)
+T0303
+(Offset 3 is not in the setup's table - warning NCS-W32 - taken as 0 - no change, no motion.)
 M30
