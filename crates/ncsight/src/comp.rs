@@ -301,10 +301,15 @@ pub fn offset(seg: &Seg, start: P2, end: P2, side: f64, r: f64) -> Result<Seg, C
                 let d = if ccw { a1 - a0 } else { a0 - a1 };
                 d.rem_euclid(std::f64::consts::TAU)
             };
-            let (prog, comp) = (sweep(from, to), sweep(start, end));
-            // A full circle keeps its sweep; otherwise the compensated arc may not turn more
-            // than half a turn further than the programmed one (it would run backwards).
-            if prog > 1e-9 && comp - prog > std::f64::consts::PI {
+            // Corners only shorten an arc (an outer one ends it perpendicular, as programmed):
+            // its start moves forward by a, its end back by b. When a + b is more than the
+            // programmed sweep the two cross: the compensated arc would run backwards. (A
+            // full circle keeps its sweep.)
+            let prog = sweep(from, to);
+            let (a, b) = (sweep(from, start), sweep(end, to));
+            // A move of a few micrometres backwards reads as almost a full turn: as 0.
+            let fwd = |x: f64| if x > std::f64::consts::PI * 1.5 { 0.0 } else { x };
+            if prog > 1e-9 && prog < std::f64::consts::TAU - 1e-9 && fwd(a) + fwd(b) > prog + 1e-9 {
                 return Err(CompError::Interference);
             }
             Ok(Seg::Arc { from: start, to: end, center, ccw })
@@ -358,6 +363,12 @@ mod tests {
         assert_eq!(offset_radius(&arc, 1.0, 1.0).unwrap().1, 4.0);
         assert_eq!(offset_radius(&arc, 1.0, 6.0), None);
         assert_eq!(offset(&arc, P2::new(4.0, 0.0), P2::new(0.0, 4.0), 1.0, 1.0).unwrap(), Seg::Arc { from: P2::new(4.0, 0.0), to: P2::new(0.0, 4.0), center: P2::new(0.0, 0.0), ccw: true });
+        // A 270-degree arc whose shortened ends cross: its start forward to 300 degrees, its end
+        // back to 200 degrees (from 90 and 0 = 360).
+        let long = Seg::Arc { from: P2::new(0.0, 5.0), to: P2::new(5.0, 0.0), center: P2::new(0.0, 0.0), ccw: true };
+        let at = |deg: f64| P2::new(4.0 * deg.to_radians().cos(), 4.0 * deg.to_radians().sin());
+        assert_eq!(offset(&long, at(300.0), at(200.0), 1.0, 1.0), Err(CompError::Interference));
+        assert!(offset(&long, at(100.0), at(350.0), 1.0, 1.0).is_ok());
         let short = Seg::Line { from: P2::new(0.0, 0.0), to: P2::new(1.0, 0.0) };
         assert_eq!(offset(&short, P2::new(2.0, 1.0), P2::new(1.5, 1.0), 1.0, 1.0), Err(CompError::Interference));
     }

@@ -46,6 +46,7 @@ pub(super) fn command(step: &mut Step, side: i8, d: Option<u32>, span: Span, arc
         }
         break_off(step);
         step.st.comp.side = 0;
+        step.st.comp.started = false;
         return Ok(());
     }
     let lathe = step.profile.is_lathe();
@@ -71,6 +72,10 @@ pub(super) fn command(step: &mut Step, side: i8, d: Option<u32>, span: Span, arc
         step.warn(Rule::CompRadiusZero, span, msg);
     }
     let st = &mut step.st.comp;
+    if st.side != side {
+        // A new start: the next move is the start-up (type A).
+        st.started = false;
+    }
     st.side = side;
     st.radius_mm = radius;
     st.tip = tip;
@@ -105,7 +110,12 @@ pub(super) fn take(step: &mut Step, span: Span, n: Option<u32>, op: Op) {
                 return;
             }
             let op = match (step.st.comp.actual, op.start_point()) {
-                (Some(c), Some(_)) => at_point(step, op, comp::local(&c, plane)),
+                (Some(c), Some(_)) => {
+                    let op = at_point(step, op, comp::local(&c, plane));
+                    // The tool is now at the move's end (a move along the normal axis).
+                    step.st.comp.actual = op.end_point().map(|e| e - step.st.comp.tip);
+                    op
+                }
                 _ => op,
             };
             step.push_record(span, n, op);
@@ -188,13 +198,14 @@ fn feed_of(op: &Op) -> f64 {
 }
 
 /// Make the held move, compensated from its start to `end` (nose centre in the plane), then
-/// the records that waited behind it, there. The queue is left empty.
-fn make_held(step: &mut Step, end: P2) -> Result<(), CompError> {
+/// the records that waited behind it, there. The queue is left empty. Returns where the nose
+/// centre ends (the waiting moves along the normal axis included).
+fn make_held(step: &mut Step, end: P2) -> Result<Vec3, CompError> {
     let plane = step.st.plane;
     let (side, r) = (step.st.comp.side as f64, step.st.comp.radius_mm);
     let queue = std::mem::take(step.queue);
     let Some((held, rest)) = queue.split_first() else {
-        return Ok(());
+        return Ok(step.st.comp.held_start);
     };
     let hseg = Seg::of(&held.op, plane).expect("the queue's first record is a move in the plane");
     let start = step.st.comp.held_start;
@@ -212,14 +223,18 @@ fn make_held(step: &mut Step, end: P2) -> Result<(), CompError> {
         return Err(e);
     }
     step.push_record(held.span, held.n, made);
+    let mut last = end3;
     for rec in rest {
         let op = at_point(step, rec.op, end);
+        if let Some(e) = op.end_point() {
+            last = e - tip;
+        }
         step.push_record(rec.span, rec.n, op);
     }
     let mut reuse = queue;
     reuse.clear();
     *step.queue = reuse;
-    Ok(())
+    Ok(last)
 }
 
 /// The path is broken off: the held move ends perpendicular to itself at its end (cancel, a
@@ -234,13 +249,19 @@ pub(super) fn break_off(step: &mut Step) {
     let hseg = Seg::of(&held.op, plane).expect("the queue's first record is a move in the plane");
     let (side, r) = (step.st.comp.side as f64, step.st.comp.radius_mm);
     let end = hseg.to().add(comp::vector(&hseg, true, side, r));
-    if let Err(e) = make_held(step, end) {
-        step.queue.clear();
-        return fail(step, e, held.span);
+    match make_held(step, end) {
+        Ok(last) => step.st.comp.actual = Some(last),
+        Err(e) => {
+            // The held move cannot be made: what waited behind it still happens, where it was
+            // written.
+            let rest: Vec<Record> = step.queue.drain(1..).collect();
+            step.queue.clear();
+            for rec in rest {
+                step.push_record(rec.span, rec.n, rec.op);
+            }
+            return fail(step, e, held.span);
+        }
     }
-    let end3 = comp::with_local(&held.op.end_point().unwrap_or_default(), end, plane);
-    step.st.comp.actual = Some(end3);
-    step.st.comp.started = false;
     step.st.comp.idle_blocks = 0;
 }
 
@@ -285,11 +306,18 @@ pub(super) fn from_actual(step: &mut Step, op: Op) -> Op {
     step.st.comp.actual = None;
     let from = c + step.st.comp.tip;
     match op {
+        // A plain move (the move after G40, a cycle's first rapid) goes from where the tool is.
         Op::Rapid { to, .. } => Op::Rapid { from, to },
         Op::Feed { to, feed_mm_min, .. } => Op::Feed { from, to, feed_mm_min },
         Op::Arc { to, center, plane, dir, feed_mm_min, .. } => Op::Arc { from, to, center, plane, dir, feed_mm_min },
-        Op::Thread { to, lead_mm, long_axis, spindle_deg, rpm, .. } => Op::Thread { from, to, lead_mm, long_axis, spindle_deg, rpm },
-        Op::ThreadArc { to, center, plane, dir, lead_mm, long_axis, spindle_deg, rpm, .. } => Op::ThreadArc { from, to, center, plane, dir, lead_mm, long_axis, spindle_deg, rpm },
-        other => other,
+        // A thread starts where it is written: the tool goes there first, at rapid.
+        other => {
+            if let Some(start) = other.start_point() {
+                if start.dist(&from) > 1e-9 {
+                    step.push_record(step.span, step.n, Op::Rapid { from, to: start });
+                }
+            }
+            other
+        }
     }
 }

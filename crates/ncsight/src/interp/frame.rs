@@ -27,6 +27,8 @@ pub struct Tables {
     pub reference_mm: [Option<Vec3>; 4],
     /// Soft travel limits per axis, machine coordinates.
     pub limits_mm: [Option<[f64; 2]>; 3],
+    /// Some axis has a limit (checked once per record).
+    pub limited: bool,
     /// Where the tool is at power on (machine coordinates), when the setup says.
     pub power_on_mm: Option<Vec3>,
     /// The offset table by number (X and its wear as radii on a lathe).
@@ -43,6 +45,7 @@ impl Tables {
             work_mm: [Vec3::default(); 7],
             reference_mm: [Some(profile.reference_point_mm), None, None, None],
             limits_mm: [None; 3],
+            limited: false,
             power_on_mm: None,
             offsets: Vec::new(),
         }
@@ -74,6 +77,7 @@ impl Tables {
             }
             if let Some(l) = m.limits {
                 t.limits_mm = l.by_axis();
+                t.limited = t.limits_mm.iter().any(Option::is_some);
                 if let Some([lo, hi]) = t.limits_mm[0] {
                     t.limits_mm[0] = Some([lo * x_scale, hi * x_scale]);
                 }
@@ -143,6 +147,10 @@ pub(super) fn reframe(step: &mut Step, change: impl FnOnce(&mut Frame)) {
     change(&mut step.st.frame);
     let after = step.tables.to_machine(&step.st.frame);
     step.st.pos = step.st.pos + before - after;
+    // Where the compensated tool waits moves with it.
+    if let Some(a) = step.st.comp.actual {
+        step.st.comp.actual = Some(a + before - after);
+    }
 }
 
 /// G54-G59: select work system `n` (1-6).

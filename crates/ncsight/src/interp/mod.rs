@@ -196,7 +196,7 @@ impl Step<'_> {
             return;
         }
         let to_machine = self.tables.to_machine(&self.st.frame);
-        if self.tables.limits_mm.iter().any(Option::is_some) && self.out.overtravel.is_none() {
+        if self.tables.limited && self.out.overtravel.is_none() {
             if let Some((from, to)) = op.start_point().zip(op.end_point()) {
                 let (lo, hi) = match geom::arc_geom_of(&op) {
                     Some(g) => match op {
@@ -468,7 +468,9 @@ impl Interpreter {
         let repair = self.switches.repair_position;
         let mut step = Step { profile: self.profile, params: &self.params, tables: &self.tables, queue: &mut self.comp_queue, bypass_comp: false, repair, span: Span::default(), n: None, st: &mut self.state, out };
         if let Some(p) = step.st.thread.pending.take() {
+            step.bypass_comp = true;
             thread::flush(&mut step, p, true);
+            step.bypass_comp = false;
         }
         // The input ended (or the next block alarmed) in compensation: the held move ends
         // perpendicular.
@@ -528,12 +530,19 @@ impl Interpreter {
             )),
             _ => Ok(()),
         });
-        let result = result.and_then(|()| comp::end_of_block(&mut step));
-        let result = match (result, step.out.comp_error.take(), step.out.overtravel) {
-            (Ok(()), Some(d), _) => Err(d),
-            (Ok(()), None, Some(hit)) => Err(overtravel_alarm(step.profile, hit)),
-            (r, _, _) => r,
-        };
+        // Compensation's block end and the stage's or the limits' alarm (rare: tested before
+        // anything is moved).
+        let mut result = result;
+        if result.is_ok() && (!step.queue.is_empty() || step.st.ended) {
+            result = comp::end_of_block(&mut step);
+        }
+        if result.is_ok() {
+            if step.out.comp_error.is_some() {
+                result = Err(step.out.comp_error.take().expect("tested above"));
+            } else if let Some(hit) = step.out.overtravel {
+                result = Err(overtravel_alarm(step.profile, hit));
+            }
+        }
         if let Err(d) = result {
             step.out.clear();
             self.state = before;
@@ -541,18 +550,34 @@ impl Interpreter {
             return Err(d);
         }
         // Single block stops after the block's last record (a held-back thread run end carries
-        // its own mark).
-        if let Some(last) = step.out.records.iter_mut().rev().find(|r| r.span == block.span) {
+        // its own mark). In radius compensation a block's move is made during a later block: each
+        // block's last record made here is its end, unless a move of it is still held.
+        let compensating = queue_before.is_some() || !step.queue.is_empty() || step.st.comp.side != 0;
+        if compensating {
+            let held: Vec<Span> = step.queue.iter().map(|r| r.span).collect();
+            let records = &mut step.out.records;
+            for i in 0..records.len() {
+                let span = records[i].span;
+                let last_of_span = records[i + 1..].iter().all(|r| r.span != span);
+                if last_of_span && !held.contains(&span) {
+                    records[i].block_end = true;
+                }
+            }
+        } else if let Some(last) = step.out.records.iter_mut().rev().find(|r| r.span == block.span) {
             last.block_end = true;
         }
         // G10: the tables change; the tool stays where it is on the machine.
         if let Some(w) = out.table_write.take() {
             let moved = self.tables.write(w, &self.state.frame);
             self.state.pos = self.state.pos - moved;
+            if let Some(a) = self.state.comp.actual {
+                self.state.comp.actual = Some(a - moved);
+            }
         }
         if let Some(req) = out.rough_request.take() {
             if self.replaying {
                 self.state = before;
+                self.comp_queue = queue_before.unwrap_or_default();
                 out.clear();
                 return Err(self.contour_alarm(Rule::ContourCommand, block.span, format!("{} cannot run inside the contour that G70 is finishing", req.kind.code())));
             }
@@ -561,6 +586,7 @@ impl Interpreter {
         if let Some(req) = out.finish_request.take() {
             if let Err(d) = self.finish_contour(req, out) {
                 self.state = before;
+                self.comp_queue = queue_before.unwrap_or_default();
                 out.clear();
                 return Err(d);
             }
@@ -770,6 +796,12 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
         if let Some((_, w, g)) = last_of.iter().find(|(_, _, g)| suspends(g.function)) {
             comp::break_off(step);
             step.bypass_comp = true;
+            // GSK980TDi help text, G40-G42 note 6: G71-G73 cancel the mode; the finishing
+            // shape's first block starts it again.
+            if matches!(g.function, GFn::Rough(_)) && profile.frame.rough_cancels_comp {
+                step.st.comp.side = 0;
+                step.st.comp.started = false;
+            }
             // G70 runs its contour's blocks in compensation (they are moves of their own).
             if matches!(g.function, GFn::BoxCycle(_) | GFn::Rough(_) | GFn::Drill(_) | GFn::PeckCycle(_)) && step.st.comp.side != 0 {
                 let msg = format!("{}: radius compensation is suspended in this cycle: its moves are the programmed ones (docs/compensation.md)", w.text());
@@ -916,7 +948,10 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
         if goes_on {
             run_deg = Some(p.end_deg);
         }
+        // A thread is never compensated, whatever this block does.
+        let bypass = std::mem::replace(&mut step.bypass_comp, true);
         thread::flush(step, p, !goes_on);
+        step.bypass_comp = bypass;
     }
     if let Some(n) = codes.work {
         frame::select_work(step, n);
@@ -999,6 +1034,11 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
             step.emit(Op::Tool { number, offset });
             if let Some(o) = offset {
                 frame::lathe_offset(step, o, span, has_axis);
+                // In compensation the new offset's radius and tip take over.
+                let side = step.st.comp.side;
+                if side != 0 {
+                    comp::command(step, side, None, span, false)?;
+                }
             }
         }
     }

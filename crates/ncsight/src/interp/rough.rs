@@ -418,19 +418,25 @@ impl Interpreter {
         self.replaying = false;
         result?;
         // Back to the start point at rapid (the cycle's end, as G71 step 8), checked against
-        // the soft limits as every move.
+        // the soft limits as every move; a contour move still held in radius compensation is
+        // made first (it ends perpendicular), and the return starts where the tool is.
         let from = self.state.pos;
-        if from != req.start {
-            let before = self.state;
-            let mut scratch = Outcome::default();
-            let mut step = Step { profile: self.profile, params: &self.params, tables: &self.tables, queue: &mut self.comp_queue, bypass_comp: true, repair: None, span: req.span, n: req.n, st: &mut self.state, out: &mut scratch };
+        let before = self.state;
+        let mut scratch = Outcome::default();
+        let mut step = Step { profile: self.profile, params: &self.params, tables: &self.tables, queue: &mut self.comp_queue, bypass_comp: true, repair: None, span: req.span, n: req.n, st: &mut self.state, out: &mut scratch };
+        super::comp::break_off(&mut step);
+        if from != req.start || step.st.comp.actual.is_some() {
             step.emit(Op::Rapid { from, to: req.start });
-            if let Some(hit) = scratch.overtravel {
-                self.state = before;
-                return Err(super::overtravel_alarm(self.profile, hit));
-            }
-            out.records.append(&mut scratch.records);
         }
+        if let Some(d) = scratch.comp_error.take() {
+            self.state = before;
+            return Err(d);
+        }
+        if let Some(hit) = scratch.overtravel {
+            self.state = before;
+            return Err(super::overtravel_alarm(self.profile, hit));
+        }
+        out.records.append(&mut scratch.records);
         // Single block stops after the whole G70.
         if let Some(last) = out.records.last_mut() {
             last.block_end = true;

@@ -438,6 +438,9 @@ pub struct FrameRules {
     /// This many consecutive blocks without a move in compensation is an alarm (GSK980TDi help
     /// text, G40-G42 note 1: seven).
     pub comp_idle_alarm: Option<u8>,
+    /// G71-G73 cancel radius compensation (GSK980TDi help text, G40-G42 note 6); elsewhere it
+    /// is suspended for the cycle.
+    pub rough_cancels_comp: bool,
     pub source: &'static str,
 }
 
@@ -463,6 +466,7 @@ impl FrameRules {
         g10: G10Forms::LatheOffsets,
         comp_lookahead: 1,
         comp_idle_alarm: None,
+        rough_cancels_comp: false,
         source: "FANUC 0i manuals as recalled (G30 P2-P4; G92 after G54 in one block sets the system selected; 5002#4 LGT, #6 LWM; G10 forms); MACRO.md 10",
     };
     pub const GSK: FrameRules = FrameRules {
@@ -473,6 +477,7 @@ impl FrameRules {
         g10: G10Forms::ToolLifeAndParameters,
         comp_lookahead: 6,
         comp_idle_alarm: Some(7),
+        rough_cancels_comp: true,
         source: "GSK980TDi help text: G54-G59 note 6, G28 note 2, G30 (P2-P4) note 3, G10 L3 and L52 only; the offset mode's parameter number not found (an ncsight setting)",
     };
 }

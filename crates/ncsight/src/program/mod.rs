@@ -133,6 +133,8 @@ struct Core {
     builders: bool,
     /// Single block is on and the parameters make it stop after macro statements too.
     statement_stops: bool,
+    /// The last alarm told (its place and code), so one met twice in a row is told once.
+    last_alarm: Option<(Span, &'static str)>,
     /// The next call is made by such a code.
     builder_call: bool,
 }
@@ -407,6 +409,7 @@ impl Program {
                 builders,
                 builder_call: false,
                 statement_stops,
+                last_alarm: None,
             },
         }
     }
@@ -1585,6 +1588,8 @@ impl Core {
                         "M99 in the main programme: the controller starts it again from the top; the simulation ends here",
                     );
                     sink(Event::Diagnostic(d));
+                    // A move still held (radius compensation) is made before the end.
+                    self.flush_pending(sink);
                     let mut end = Record::new(span, Op::End { code: 99 });
                     end.n = self.block_n;
                     end.block_end = true;
@@ -1805,6 +1810,12 @@ impl Core {
         if !self.reported.first(&d) && self.again && self.mode == Mode::Check {
             return;
         }
+        // The same alarm twice in a row (a held move's, met again when the run stops) once.
+        let key = (d.span, d.code);
+        if self.last_alarm == Some(key) {
+            return;
+        }
+        self.last_alarm = Some(key);
         self.alarms += 1;
         if self.mode == Mode::Run {
             self.status = Status::Alarm;

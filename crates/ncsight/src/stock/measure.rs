@@ -208,9 +208,22 @@ pub fn simulate_with(records: &[Record], setup: &Setup, opts: &SimOptions, progr
     let mut tool_of = Vec::with_capacity(records.len());
     let mut tool = tool_for(0);
     let mut turning = false;
+    // A turning or boring tool whose [[tool]] gives no imaginary nose takes the one of its
+    // offset (T0101 -> [[offset]] 1), and that offset's radius if it gives none.
+    let with_offset = |mut t: Tool, offset: Option<u32>| {
+        if t.tip.is_none() && matches!(t.kind, crate::setup::ToolKind::Turning | crate::setup::ToolKind::Boring) {
+            if let Some(o) = offset.and_then(|n| setup.offset(n)).filter(|o| o.tip != 0 || o.radius_mm > 0.0) {
+                t.tip = Some(o.tip);
+                if t.tip_radius_mm <= 0.0 {
+                    t.tip_radius_mm = o.radius_mm + o.wear_radius_mm;
+                }
+            }
+        }
+        t
+    };
     for r in records {
         match r.op {
-            Op::Tool { number, .. } => tool = tool_for(number),
+            Op::Tool { number, offset } => tool = with_offset(tool_for(number), offset),
             Op::Spindle { rpm, .. } => turning = rpm != 0.0,
             _ => {}
         }
@@ -249,7 +262,7 @@ pub fn simulate_with(records: &[Record], setup: &Setup, opts: &SimOptions, progr
     // from it (docs/compensation.md). Without a tip, the record's point is the nose's.
     let nose_shift = |t: &Tool| -> Option<crate::motion::Vec3> {
         let tip = t.tip?;
-        if t.kind == crate::setup::ToolKind::Thread || t.tip_radius_mm <= 0.0 {
+        if !matches!(t.kind, crate::setup::ToolKind::Turning | crate::setup::ToolKind::Boring) || t.tip_radius_mm <= 0.0 {
             return None;
         }
         let r = t.tip_radius_mm;

@@ -1,0 +1,98 @@
+//! Radius compensation's look-ahead stage with what goes on around it: held thread runs, moves
+//! along the normal axis, blocks without moves, subprogramme ends, single block (the cases a
+//! reviewer found, each a programme).
+
+use ncsight::motion::Op;
+use ncsight::profile::{self, Params};
+use ncsight::setup::Setup;
+use ncsight::{Event, Mode, Program, Record, Switches};
+
+fn run(machine: &str, setup: &str, text: &str, single_block: bool) -> (Vec<Record>, Vec<ncsight::Diagnostic>) {
+    let operator = ncsight::Options { single_block, ..Default::default() };
+    let mut program = Program::with_operator(Params::defaults(profile::by_name(machine).unwrap()), Switches::default(), Mode::Run, operator);
+    program.set_setup(&Setup::from_toml(setup).unwrap());
+    let (mut records, mut diags) = (Vec::new(), Vec::new());
+    for e in ncsight::events(program, text.as_bytes()) {
+        match e {
+            Event::Record(r) => records.push(r),
+            Event::Diagnostic(d) => diags.push(d),
+        }
+    }
+    (records, diags)
+}
+
+const LATHE: &str = "[[offset]]\nnumber = 1\nradius_mm = 0.8\ntip = 3\n";
+const MILL: &str = "[[offset]]\nnumber = 1\nradius_mm = 2.5\n";
+
+/// Every move starts where the one before it ended (time order, no jumps), unless `except`.
+fn continuous(records: &[Record]) {
+    let moves: Vec<&Record> = records.iter().filter(|r| r.op.start_point().is_some()).collect();
+    for w in moves.windows(2) {
+        let (a, b) = (w[0].op.end_point().unwrap(), w[1].op.start_point().unwrap());
+        assert!(a.dist(&b) < 1e-9, "line {} ends at {a:?}, line {} starts at {b:?}", w[0].span.line, w[1].span.line);
+    }
+}
+
+#[test]
+fn a_thread_in_compensation_is_cut_where_it_is_written() {
+    let text = "T0101\nG97 S500 M03\nG0 X20. Z2.\nG42 G1 Z0 F100.\nG32 Z-20. F1.5\nG0 X30.\nG40 G0 X100. Z100.\nM30\n";
+    let (records, diags) = run("gsk980tdi", LATHE, text, false);
+    assert!(diags.iter().all(|d| !d.is_alarm()), "{diags:?}");
+    let thread = records.iter().find(|r| r.op.is_thread()).expect("the thread");
+    // G32 Z-20 from X20 Z0 as written (the tool is first brought there from where the
+    // compensated start-up left it).
+    let (from, to) = (thread.op.start_point().unwrap(), thread.op.end_point().unwrap());
+    assert!((from.x - 10.0).abs() < 1e-9 && from.z.abs() < 1e-9 && (to.z + 20.0).abs() < 1e-9, "{from:?} -> {to:?}");
+    continuous(&records);
+}
+
+#[test]
+fn a_move_along_the_normal_axis_waits_behind_the_held_move_and_the_next_start_follows_it() {
+    // FANUC: one block without a move in the plane (M08) is looked across; the Z move is the
+    // second: the held X20 ends perpendicular, the Z plunge is made there, Y20 starts from it.
+    let text = "G21 G17 G90 G0 X0. Y0. Z5.\nG41 D1 G1 X0. Y0. F100.\nX20.\nM08\nG1 Z-2.\nY20.\nG40 X0.\nM30\n";
+    let (records, diags) = run("fanuc0m", MILL, text, false);
+    assert!(diags.iter().all(|d| !d.is_alarm()), "{diags:?}");
+    continuous(&records);
+    let y20 = records.iter().find(|r| r.span.line == 6).unwrap();
+    assert!((y20.op.start_point().unwrap().z + 2.0).abs() < 1e-9, "Y20 starts at Z-2: {:?}", y20.op);
+}
+
+#[test]
+fn an_arc_after_the_look_ahead_ran_out_is_no_start_up() {
+    let text = "G21 G17 G90 G0 X0. Y-10. Z5.\nG41 D1 G1 X0. Y0. F100.\nX20.\nM08\nM09\nG3 X30. Y10. R10.\nG1 Y20.\nG40 X40.\nM30\n";
+    let (records, diags) = run("fanuc0m", MILL, text, false);
+    assert!(diags.iter().all(|d| !d.is_alarm()), "{diags:?}");
+    continuous(&records);
+}
+
+#[test]
+fn m99_in_the_main_programme_ends_after_the_held_move() {
+    let text = "G21 G17 G90 G0 X0. Y-10. Z5.\nG41 D1 G1 X0. Y0. F100.\nX20.\nM99\n";
+    let (records, _) = run("fanuc0m", MILL, text, false);
+    let last = records.last().unwrap();
+    assert!(matches!(last.op, Op::End { code: 99 }), "{:?}", last.op);
+    assert!(records.iter().any(|r| r.span.line == 3 && r.op.end_point().is_some()), "the X20 move is made");
+}
+
+#[test]
+fn single_block_stops_after_every_block_in_compensation() {
+    let text = "G21 G17 G90 G0 X0. Y-10. Z5.\nG41 D1 G1 X0. Y0. F100.\nX20.\nY20.\nX0.\nG40 Y-10.\nM30\n";
+    let (records, _) = run("fanuc0m", MILL, text, true);
+    let stops: Vec<u32> = records.iter().filter(|r| matches!(r.op, Op::Stop { .. })).map(|r| r.span.line).collect();
+    for line in 2..=6 {
+        assert!(stops.contains(&line), "no single-block stop after line {line}: {stops:?}");
+    }
+}
+
+#[test]
+fn a_new_t_offset_in_compensation_brings_its_radius() {
+    let setup = "[[offset]]\nnumber = 1\nradius_mm = 0.8\ntip = 3\n[[offset]]\nnumber = 2\nradius_mm = 0.4\ntip = 3\n";
+    let text = "T0101\nG0 X20. Z2.\nG42 G1 Z0 F100.\nZ-10.\nT0102\nG1 Z-20.\nZ-30.\nG40 G0 X100.\nM30\n";
+    let (records, diags) = run("gsk980tdi", setup, text, false);
+    assert!(diags.iter().all(|d| !d.is_alarm()), "{diags:?}");
+    // Z-parallel with tip 3: the tip is on the line whatever the radius; the perpendicular end
+    // of the last move shows the radius: R0.4 -> Z-30.4.
+    let last_cut = records.iter().rev().find(|r| r.span.line == 7).unwrap();
+    assert!((last_cut.op.end_point().unwrap().z + 30.4).abs() < 1e-9, "{:?}", last_cut.op);
+}
