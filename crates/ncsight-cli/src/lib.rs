@@ -624,6 +624,33 @@ fn progress_on(err: &mut dyn Write) -> impl FnMut(usize, usize) + '_ {
     }
 }
 
+/// What the machine setup gives and what the run assumes without it (docs/setup.md), as the
+/// report says it.
+fn setup_notes(setup: Option<(&str, &ncsight::stock::Setup)>, profile: &ncsight::Profile) -> Vec<String> {
+    let x = if profile.diameter_x { 2.0 } else { 1.0 };
+    let r = profile.reference_point_mm;
+    let assumed_reference = if profile.is_lathe() { format!("X{} Z{}", r.x * x, r.z) } else { format!("X{} Y{} Z{}", r.x, r.y, r.z) };
+    let Some((path, s)) = setup else {
+        return vec![format!(
+            "no machine setup (--setup): work and tool offsets 0, radius compensation with radius 0, no travel limits, the reference point assumed at {assumed_reference}, the tool at programme zero at power on"
+        )];
+    };
+    let mut out = vec![format!("machine setup {path}")];
+    let m = s.machine.as_ref();
+    out.push(match m.and_then(|m| m.reference) {
+        Some(_) => "reference point from the setup; the tool there at power on".into(),
+        None => format!("no [machine.reference]: the reference point assumed at {assumed_reference}, the tool at programme zero at power on"),
+    });
+    out.push(match m.and_then(|m| m.limits) {
+        Some(_) => "soft travel limits from the setup".into(),
+        None => "no travel limits".into(),
+    });
+    let works: Vec<&str> = s.work.as_ref().map(|w| ["external", "G54", "G55", "G56", "G57", "G58", "G59"].into_iter().zip(w.all()).filter(|(_, p)| p.is_some()).map(|(n, _)| n).collect()).unwrap_or_default();
+    out.push(if works.is_empty() { "work offsets 0".into() } else { format!("work offsets {} from the setup, the others 0", works.join(", ")) });
+    out.push(if s.offsets.is_empty() { "no offset table: tool offsets and radii 0".into() } else { format!("{} tool offset(s) from the setup, the others 0", s.offsets.len()) });
+    out
+}
+
 /// The job setup from `--setup` and `--stock`.
 fn job_setup(setup_file: Option<&str>, stock: Option<&str>) -> Result<ncsight::stock::Setup, Failure> {
     let mut job = match setup_file {
@@ -682,6 +709,7 @@ fn report(
         settings.push("dry run".into());
     }
     settings.push(format!("feed override {} %, rapid override {} %", opts.overrides.feed_pct, opts.overrides.rapid_pct));
+    settings.extend(setup_notes(m.setup.as_deref().map(|p| (p, &job)), params.profile()));
     settings.push("assumptions: docs/guide.md and docs/commands/*.md".into());
     let mut program = Program::with_operator(params.clone(), switches, Mode::Run, opts);
     let mut library = m.prepare(&mut program)?;

@@ -40,3 +40,27 @@ fn report_shows_the_call_chain() {
     assert!(html.contains("in a subprogramme called at line 3"), "the call chain is on the page");
     let _ = std::fs::remove_dir_all(dir);
 }
+
+/// The report says which machine setup the run used, and what it assumed without one.
+#[test]
+fn report_says_what_the_setup_gives_and_what_is_assumed() {
+    let dir = std::env::temp_dir().join(format!("ncsight-report-setup-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let prog = dir.join("p.nc");
+    std::fs::write(&prog, "G0 X10 Z5\nM30\n").unwrap();
+    let out = dir.join("r.html");
+    let (code, _, err) = common::ncsight(&["report", prog.to_str().unwrap(), "--machine", "gsk980tdi", "-o", out.to_str().unwrap()]);
+    assert_eq!(code, 0, "{err}");
+    let html = std::fs::read_to_string(&out).unwrap();
+    assert!(html.contains("no machine setup (--setup): work and tool offsets 0"), "the defaults are said");
+    assert!(html.contains("reference point assumed at X200 Z200"));
+    let setup = dir.join("s.toml");
+    std::fs::write(&setup, "[work]\nG54 = { z_mm = -300.0 }\n[[offset]]\nnumber = 1\nradius_mm = 0.4\n").unwrap();
+    let (code, _, err) = common::ncsight(&["report", prog.to_str().unwrap(), "--machine", "gsk980tdi", "--setup", setup.to_str().unwrap(), "-o", out.to_str().unwrap()]);
+    assert_eq!(code, 0, "{err}");
+    let html = std::fs::read_to_string(&out).unwrap();
+    assert!(html.contains("work offsets G54 from the setup, the others 0"), "what the setup gives is said");
+    assert!(html.contains("1 tool offset(s) from the setup"));
+    assert!(html.contains("no travel limits"));
+    let _ = std::fs::remove_dir_all(dir);
+}

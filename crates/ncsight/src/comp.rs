@@ -22,10 +22,10 @@ impl P2 {
     pub const fn new(a: f64, b: f64) -> P2 {
         P2 { a, b }
     }
-    pub fn add(self, o: P2) -> P2 {
+    pub fn plus(self, o: P2) -> P2 {
         P2::new(self.a + o.a, self.b + o.b)
     }
-    pub fn sub(self, o: P2) -> P2 {
+    pub fn minus(self, o: P2) -> P2 {
         P2::new(self.a - o.a, self.b - o.b)
     }
     pub fn scale(self, k: f64) -> P2 {
@@ -53,7 +53,7 @@ impl P2 {
         P2::new(-self.b, self.a)
     }
     pub fn dist(self, o: P2) -> f64 {
-        self.sub(o).len()
+        self.minus(o).len()
     }
 }
 
@@ -121,9 +121,9 @@ impl Seg {
     /// The unit direction of travel where the move starts (`at_end` false) or ends.
     pub fn tangent(&self, at_end: bool) -> P2 {
         match *self {
-            Seg::Line { from, to } => to.sub(from).unit(),
+            Seg::Line { from, to } => to.minus(from).unit(),
             Seg::Arc { from, to, center, ccw } => {
-                let radial = (if at_end { to } else { from }).sub(center).unit();
+                let radial = (if at_end { to } else { from }).minus(center).unit();
                 if ccw {
                     radial.left()
                 } else {
@@ -184,28 +184,28 @@ fn offset_radius(seg: &Seg, side: f64, r: f64) -> Option<(P2, f64)> {
 
 /// Intersections of the line through `p` along `d` with the circle (`c`, `rr`).
 fn line_circle(p: P2, d: P2, c: P2, rr: f64) -> Vec<P2> {
-    let f = p.sub(c);
+    let f = p.minus(c);
     let (a, b, cc) = (d.dot(d), 2.0 * f.dot(d), f.dot(f) - rr * rr);
     let disc = b * b - 4.0 * a * cc;
     if disc < -1e-12 || a < 1e-18 {
         return Vec::new();
     }
     let s = disc.max(0.0).sqrt();
-    [(-b - s) / (2.0 * a), (-b + s) / (2.0 * a)].iter().map(|t| p.add(d.scale(*t))).collect()
+    [(-b - s) / (2.0 * a), (-b + s) / (2.0 * a)].iter().map(|t| p.plus(d.scale(*t))).collect()
 }
 
 /// Intersections of two circles.
 fn circle_circle(c1: P2, r1: f64, c2: P2, r2: f64) -> Vec<P2> {
-    let d = c2.sub(c1);
+    let d = c2.minus(c1);
     let dist = d.len();
     if dist < 1e-12 || dist > r1 + r2 + 1e-9 || dist < (r1 - r2).abs() - 1e-9 {
         return Vec::new();
     }
     let a = (r1 * r1 - r2 * r2 + dist * dist) / (2.0 * dist);
     let h = (r1 * r1 - a * a).max(0.0).sqrt();
-    let m = c1.add(d.scale(a / dist));
+    let m = c1.plus(d.scale(a / dist));
     let n = d.unit().left().scale(h);
-    vec![m.add(n), m.sub(n)]
+    vec![m.plus(n), m.minus(n)]
 }
 
 /// Intersection of the lines through `p1` along `d1` and `p2` along `d2`.
@@ -214,8 +214,8 @@ fn line_line(p1: P2, d1: P2, p2: P2, d2: P2) -> Option<P2> {
     if den.abs() < 1e-12 {
         return None;
     }
-    let t = p2.sub(p1).cross(d2) / den;
-    Some(p1.add(d1.scale(t)))
+    let t = p2.minus(p1).cross(d2) / den;
+    Some(p1.plus(d1.scale(t)))
 }
 
 /// The corner between `first` and `second` (which starts where `first` ends), compensated by
@@ -230,20 +230,20 @@ pub fn corner(first: &Seg, second: &Seg, side: f64, r: f64) -> Result<Corner, Co
     // r x 0.0001.
     let tangent = turn.abs() < TANGENT_RAD && d1.dot(d2) > 0.0;
     if tangent || r == 0.0 {
-        let q = if matches!(second, Seg::Arc { .. }) { p.add(v2) } else { p.add(v1) };
+        let q = if matches!(second, Seg::Arc { .. }) { p.plus(v2) } else { p.plus(v1) };
         return Ok(Corner { first_end: q, between: Vec::new(), second_start: q });
     }
     // The path turns toward the compensated side: an inner corner.
     let inner = turn * side > 0.0;
     if inner {
         let candidates = match (first, second) {
-            (Seg::Line { .. }, Seg::Line { .. }) => line_line(p.add(v1), d1, p.add(v2), d2).into_iter().collect(),
+            (Seg::Line { .. }, Seg::Line { .. }) => line_line(p.plus(v1), d1, p.plus(v2), d2).into_iter().collect(),
             (Seg::Line { .. }, Seg::Arc { .. }) => match offset_radius(second, side, r) {
-                Some((c, rr)) => line_circle(p.add(v1), d1, c, rr),
+                Some((c, rr)) => line_circle(p.plus(v1), d1, c, rr),
                 None => return Err(CompError::ArcTooSmall),
             },
             (Seg::Arc { .. }, Seg::Line { .. }) => match offset_radius(first, side, r) {
-                Some((c, rr)) => line_circle(p.add(v2), d2, c, rr),
+                Some((c, rr)) => line_circle(p.plus(v2), d2, c, rr),
                 None => return Err(CompError::ArcTooSmall),
             },
             (Seg::Arc { .. }, Seg::Arc { .. }) => match (offset_radius(first, side, r), offset_radius(second, side, r)) {
@@ -252,7 +252,7 @@ pub fn corner(first: &Seg, second: &Seg, side: f64, r: f64) -> Result<Corner, Co
             },
         };
         // The intersection nearest the corner (the other lies across the path).
-        let target = p.add(v1.add(v2).scale(0.5));
+        let target = p.plus(v1.plus(v2).scale(0.5));
         let q = candidates.into_iter().min_by(|a, b| a.dist(target).total_cmp(&b.dist(target))).ok_or(CompError::NoIntersection)?;
         return Ok(Corner { first_end: q, between: Vec::new(), second_start: q });
     }
@@ -260,12 +260,12 @@ pub fn corner(first: &Seg, second: &Seg, side: f64, r: f64) -> Result<Corner, Co
     // differ by 90 degrees or less: the offsets extended along the tangents meet at q. Sharper:
     // out by r along the first move (a), in by r against the second (b). A line is extended to
     // its point; an arc ends (starts) perpendicular and a straight move joins it.
-    let (e1, s2) = (p.add(v1), p.add(v2));
+    let (e1, s2) = (p.plus(v1), p.plus(v2));
     let (out_pt, in_pt) = if d1.dot(d2) >= 0.0 {
         let q = line_line(e1, d1, s2, d2).unwrap_or(e1);
         (q, q)
     } else {
-        (e1.add(d1.scale(r)), s2.sub(d2.scale(r)))
+        (e1.plus(d1.scale(r)), s2.minus(d2.scale(r)))
     };
     let first_is_line = matches!(first, Seg::Line { .. });
     let second_is_line = matches!(second, Seg::Line { .. });
@@ -286,7 +286,7 @@ pub fn corner(first: &Seg, second: &Seg, side: f64, r: f64) -> Result<Corner, Co
 pub fn offset(seg: &Seg, start: P2, end: P2, side: f64, r: f64) -> Result<Seg, CompError> {
     match *seg {
         Seg::Line { from, to } => {
-            let (prog, comp) = (to.sub(from), end.sub(start));
+            let (prog, comp) = (to.minus(from), end.minus(start));
             if prog.len() > 1e-9 && comp.len() > 1e-9 && prog.dot(comp) < 0.0 {
                 return Err(CompError::Interference);
             }

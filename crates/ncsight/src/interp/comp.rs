@@ -141,7 +141,7 @@ fn plane_move(step: &mut Step, span: Span, n: Option<u32>, op: Op, seg: Seg) {
                 return;
             }
             // After a break: a straight move to the arc's offset start, then the arc.
-            let s = seg.from().add(comp::vector(&seg, false, side, r));
+            let s = seg.from().plus(comp::vector(&seg, false, side, r));
             let s3 = comp::with_local(&start3, s, plane);
             let link = Op::Feed { from: centre + step.st.comp.tip, to: s3 + step.st.comp.tip, feed_mm_min: feed_of(&op) };
             step.push_record(span, n, link);
@@ -161,7 +161,7 @@ fn plane_move(step: &mut Step, span: Span, n: Option<u32>, op: Op, seg: Seg) {
     };
     let corner = if step.st.comp.held_startup {
         // Type A: the start-up ends perpendicular to the next move at its start.
-        let e = seg.from().add(comp::vector(&seg, false, side, r));
+        let e = seg.from().plus(comp::vector(&seg, false, side, r));
         comp::Corner { first_end: e, between: Vec::new(), second_start: e }
     } else {
         match comp::corner(&hseg, &seg, side, r) {
@@ -248,7 +248,7 @@ pub(super) fn break_off(step: &mut Step) {
     let held = step.queue[0].clone();
     let hseg = Seg::of(&held.op, plane).expect("the queue's first record is a move in the plane");
     let (side, r) = (step.st.comp.side as f64, step.st.comp.radius_mm);
-    let end = hseg.to().add(comp::vector(&hseg, true, side, r));
+    let end = hseg.to().plus(comp::vector(&hseg, true, side, r));
     match make_held(step, end) {
         Ok(last) => step.st.comp.actual = Some(last),
         Err(e) => {
