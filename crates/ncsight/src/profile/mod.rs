@@ -504,49 +504,35 @@ pub const FANUC_LATHE_OFFSETS: &[ParamDef] = &[
     },
 ];
 
+/// One of the two on/off settings of a lathe's tool offsets (an ncsight setting where the
+/// parameter's number was not found).
+const fn offset_bit(key: &'static str, meaning: &'static str, default: f64, source: &'static str) -> ParamDef {
+    ParamDef { key: ParamKey::Setting(key), meaning, unit: "bit", min: 0.0, max: 1.0, default, source }
+}
+
+const WEAR_WITH_NEXT_MOVE: &str = "1 = the offset's movement is made with the next axis move; 0 = in the T block";
+
 /// [`FANUC_LATHE_OFFSETS`] as ncsight settings, for the lathes whose parameter numbers were not
 /// found: `geometry_by_movement` defaults to 1 (GSK's "tool traverse" mode, inferred).
 pub const GSK_LATHE_OFFSETS: &[ParamDef] = &[
-    ParamDef {
-        key: ParamKey::Setting("geometry_by_movement"),
-        meaning: "1 = the geometry offset moves the tool (GSK 'tool traverse'); 0 = it shifts the coordinates (GSK 'coordinate offset')",
-        unit: "bit",
-        min: 0.0,
-        max: 1.0,
-        default: 1.0,
-        source: "ncsight setting; GSK980TD/TDi have both modes by a state parameter whose number was not found (MACRO.md 10.1), traverse assumed",
-    },
-    ParamDef {
-        key: ParamKey::Setting("wear_with_next_move"),
-        meaning: "1 = the offset's movement is made with the next axis move; 0 = in the T block",
-        unit: "bit",
-        min: 0.0,
-        max: 1.0,
-        default: 0.0,
-        source: "ncsight setting; assumed (in the T block, as FANUC's default)",
-    },
+    offset_bit(
+        "geometry_by_movement",
+        "1 = the geometry offset moves the tool (GSK 'tool traverse'); 0 = it shifts the coordinates (GSK 'coordinate offset')",
+        1.0,
+        "ncsight setting; GSK980TD/TDi have both modes by a state parameter whose number was not found (MACRO.md 10.1), traverse assumed",
+    ),
+    offset_bit("wear_with_next_move", WEAR_WITH_NEXT_MOVE, 0.0, "ncsight setting; assumed (in the T block, as FANUC's default)"),
 ];
 
 /// [`GSK_LATHE_OFFSETS`] with FANUC's defaults, for the YASNAC LX3 (no text at hand).
 pub const YASNAC_LATHE_OFFSETS: &[ParamDef] = &[
-    ParamDef {
-        key: ParamKey::Setting("geometry_by_movement"),
-        meaning: "1 = the geometry offset moves the tool; 0 = it shifts the coordinates",
-        unit: "bit",
-        min: 0.0,
-        max: 1.0,
-        default: 0.0,
-        source: "ncsight setting; inferred as FANUC 5002#4 LGT's default (no YASNAC LX3 text at hand)",
-    },
-    ParamDef {
-        key: ParamKey::Setting("wear_with_next_move"),
-        meaning: "1 = the offset's movement is made with the next axis move; 0 = in the T block",
-        unit: "bit",
-        min: 0.0,
-        max: 1.0,
-        default: 0.0,
-        source: "ncsight setting; inferred as FANUC 5002#6 LWM's default (no YASNAC LX3 text at hand)",
-    },
+    offset_bit(
+        "geometry_by_movement",
+        "1 = the geometry offset moves the tool; 0 = it shifts the coordinates",
+        0.0,
+        "ncsight setting; inferred as FANUC 5002#4 LGT's default (no YASNAC LX3 text at hand)",
+    ),
+    offset_bit("wear_with_next_move", WEAR_WITH_NEXT_MOVE, 0.0, "ncsight setting; inferred as FANUC 5002#6 LWM's default (no YASNAC LX3 text at hand)"),
 ];
 
 /// Thread facts of a profile.
