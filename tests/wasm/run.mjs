@@ -23,19 +23,23 @@ function put(bytes) {
   return p;
 }
 
-/** The JSONL of a run (mode 0) or check (mode 1) of `text` on `machine` with `params` (N=V each). */
-function run(text, machine, mode, params = []) {
+/** The JSONL of a run (mode 0) or check (mode 1) of `text` on `machine` with `params` (N=V each)
+ * and the text of a setup file (TOML; "" for none). */
+function run(text, machine, mode, params = [], setup = "") {
   const p = new TextEncoder().encode(params.join("\n"));
+  const s = new TextEncoder().encode(setup);
   const t = put(text);
   const m = put(new TextEncoder().encode(machine));
   const q = put(p);
-  const r = ncsight_run(t, text.length, m, machine.length, q, p.length, mode);
+  const u = put(s);
+  const r = ncsight_run(t, text.length, m, machine.length, q, p.length, u, s.length, mode);
   const len = new DataView(memory.buffer).getUint32(r, true);
   const out = new TextDecoder().decode(new Uint8Array(memory.buffer, r + 4, len).slice());
   ncsight_free(r, 4 + len);
   ncsight_free(t, text.length);
   ncsight_free(m, machine.length);
   ncsight_free(q, p.length);
+  ncsight_free(u, s.length);
   return out;
 }
 
@@ -48,7 +52,8 @@ for (const name of readdirSync(golden).sort()) {
   const args = existsSync(join(dir, "args")) ? readFileSync(join(dir, "args"), "utf8").trim().split(/\s+/) : [];
   const machine = args.includes("--machine") ? args[args.indexOf("--machine") + 1] : "gsk980tdi";
   const params = args.flatMap((a, i) => (a === "--param" ? [args[i + 1]] : []));
-  const got = run(readFileSync(join(dir, "input.nc")), machine, 0, params);
+  const setup = existsSync(join(dir, "setup.toml")) ? readFileSync(join(dir, "setup.toml"), "utf8") : "";
+  const got = run(readFileSync(join(dir, "input.nc")), machine, 0, params, setup);
   const want = readFileSync(join(dir, "expected.jsonl"), "utf8");
   cases++;
   if (got !== want) {

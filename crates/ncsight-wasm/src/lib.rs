@@ -4,13 +4,15 @@
 //!
 //! - `ncsight_alloc(len) -> ptr` gives the page a buffer to copy the programme's text and the
 //!   machine's name into; `ncsight_free(ptr, len)` gives it back.
-//! - `ncsight_run(text, text_len, machine, machine_len, params, params_len, mode) -> ptr` runs
-//!   the text (`mode` 0: run, 1: check) with the parameter overrides `params` (`N=V` lines, as
-//!   `--param` takes them; empty for none) and returns a buffer: 4 bytes of length
+//! - `ncsight_run(text, text_len, machine, machine_len, params, params_len, setup, setup_len,
+//!   mode) -> ptr` runs the text (`mode` 0: run, 1: check) with the parameter overrides `params`
+//!   (`N=V` lines, as `--param` takes them; empty for none) and the machine setup `setup` (the
+//!   text of a setup file, TOML, as `--setup` reads it; empty for none), and returns a buffer: 4
+//!   bytes of length
 //!   (little-endian), then the JSONL the
 //!   command line writes for `run --format jsonl` (records and diagnostics) or `check --format
-//!   jsonl`; free it with `ncsight_free(ptr, 4 + length)`. A usage mistake (an unknown machine)
-//!   or a bad parameter is one JSONL line `{"kind":"usage","message":...}`.
+//!   jsonl`; free it with `ncsight_free(ptr, 4 + length)`. A usage mistake (an unknown machine),
+//!   a bad parameter or setup is one JSONL line `{"kind":"usage","message":...}`.
 //!
 //! A page has no threads and no files: the programme runs from memory, on the calling thread,
 //! through the core's pull iterator (`ncsight::events`), and the JSONL comes from the same
@@ -22,9 +24,10 @@ use ncsight_io::Job;
 
 /// Run `text` on `machine` as `ncsight run --format jsonl` (or `check --format jsonl`, named
 /// `<text>`) would, from memory on this thread: the JSONL text.
-pub fn run_jsonl(text: &[u8], machine: &str, params: &str, mode: Mode) -> String {
-    let job = Job { params: params.lines().map(str::trim).filter(|l| !l.is_empty()).map(String::from).collect(), ..Job::on(machine) };
-    let started = job.program(mode).and_then(|(program, _)| Ok((program, job.jsonl_writer(mode, "<text>")?)));
+pub fn run_jsonl(text: &[u8], machine: &str, params: &str, setup: &str, mode: Mode) -> String {
+    let mut job = Job { params: params.lines().map(str::trim).filter(|l| !l.is_empty()).map(String::from).collect(), ..Job::on(machine) };
+    let with_setup = if setup.trim().is_empty() { Ok(()) } else { job.set_setup_text(setup, "setup") };
+    let started = with_setup.and_then(|()| job.program(mode)).and_then(|(program, _)| Ok((program, job.jsonl_writer(mode, "<text>")?)));
     let (program, mut writer) = match started {
         Ok(v) => v,
         Err(e) => return format!("{{\"kind\":\"usage\",\"message\":{}}}\n", format::jsonl::json_str(&e.to_string())),
@@ -62,14 +65,17 @@ pub unsafe extern "C" fn ncsight_free(ptr: *mut u8, len: usize) {
 /// Run a programme: see the crate's documentation.
 ///
 /// # Safety
-/// `text`, `machine` and `params` must point to `text_len`, `machine_len` and `params_len`
-/// readable bytes (buffers from [`ncsight_alloc`]).
+/// `text`, `machine`, `params` and `setup` must point to `text_len`, `machine_len`, `params_len`
+/// and `setup_len` readable bytes (buffers from [`ncsight_alloc`]).
 #[no_mangle]
-pub unsafe extern "C" fn ncsight_run(text: *const u8, text_len: usize, machine: *const u8, machine_len: usize, params: *const u8, params_len: usize, mode: u32) -> *mut u8 {
-    // SAFETY: the caller guarantees the three buffers (see above).
-    let (text, machine, params) = unsafe { (std::slice::from_raw_parts(text, text_len), std::slice::from_raw_parts(machine, machine_len), std::slice::from_raw_parts(params, params_len)) };
+#[allow(clippy::too_many_arguments)]
+pub unsafe extern "C" fn ncsight_run(text: *const u8, text_len: usize, machine: *const u8, machine_len: usize, params: *const u8, params_len: usize, setup: *const u8, setup_len: usize, mode: u32) -> *mut u8 {
+    // SAFETY: the caller guarantees the four buffers (see above).
+    let (text, machine, params, setup) = unsafe {
+        (std::slice::from_raw_parts(text, text_len), std::slice::from_raw_parts(machine, machine_len), std::slice::from_raw_parts(params, params_len), std::slice::from_raw_parts(setup, setup_len))
+    };
     let mode = if mode == 1 { Mode::Check } else { Mode::Run };
-    let jsonl = run_jsonl(text, &String::from_utf8_lossy(machine), &String::from_utf8_lossy(params), mode);
+    let jsonl = run_jsonl(text, &String::from_utf8_lossy(machine), &String::from_utf8_lossy(params), &String::from_utf8_lossy(setup), mode);
     answer(jsonl.as_bytes())
 }
 
@@ -102,8 +108,10 @@ mod tests {
             std::ptr::copy_nonoverlapping(text.as_ptr(), tp, text.len());
             std::ptr::copy_nonoverlapping(machine.as_ptr(), mp, machine.len());
             let pp = ncsight_alloc(0);
-            let r = ncsight_run(tp, text.len(), mp, machine.len(), pp, 0, 0);
+            let sp = ncsight_alloc(0);
+            let r = ncsight_run(tp, text.len(), mp, machine.len(), pp, 0, sp, 0, 0);
             ncsight_free(pp, 0);
+            ncsight_free(sp, 0);
             let len = u32::from_le_bytes(std::slice::from_raw_parts(r, 4).try_into().unwrap()) as usize;
             let jsonl = std::str::from_utf8(std::slice::from_raw_parts(r.add(4), len)).unwrap().to_string();
             ncsight_free(r, 4 + len);
@@ -117,11 +125,14 @@ mod tests {
 
     #[test]
     fn a_usage_mistake_is_a_line() {
-        assert_eq!(run_jsonl(b"G00 X0\n", "haas", "", Mode::Run).lines().count(), 1);
-        assert!(run_jsonl(b"G00 X0\n", "haas", "", Mode::Run).contains("\"kind\":\"usage\""));
-        assert!(run_jsonl(b"G00 X0\n", "fanuc0m", "99999=1", Mode::Run).contains("\"kind\":\"usage\""));
+        assert_eq!(run_jsonl(b"G00 X0\n", "haas", "", "", Mode::Run).lines().count(), 1);
+        assert!(run_jsonl(b"G00 X0\n", "haas", "", "", Mode::Run).contains("\"kind\":\"usage\""));
+        assert!(run_jsonl(b"G00 X0\n", "fanuc0m", "99999=1", "", Mode::Run).contains("\"kind\":\"usage\""));
+        assert!(run_jsonl(b"G00 X0\n", "fanuc0m", "", "[wrok]\n", Mode::Run).contains("\"kind\":\"usage\""));
+        // With a setup, records carry machine positions.
+        assert!(run_jsonl(b"G21 G90 G00 X1. Y2. Z3.\nM30\n", "fanuc0m", "", "[work]\nG54 = { x_mm = -100.0 }\n", Mode::Run).contains("\"machine_x\":-99"));
         // A check gives diagnostics only.
-        let check = run_jsonl(b"G00 X0 Q1\nM30\n", "gsk980tdi", "", Mode::Check);
+        let check = run_jsonl(b"G00 X0 Q1\nM30\n", "gsk980tdi", "", "", Mode::Check);
         assert!(check.lines().all(|l| l.contains("\"severity\"")), "{check}");
     }
 }
