@@ -52,7 +52,6 @@ fn fanuc_0044_reference_return_in_a_canned_cycle() {
 fn codes_of_the_manual_are_not_simulated_yet_not_unknown() {
     for (machine, block) in [
         ("fanuc0m", "G27 Z0."),
-        ("fanuc0m", "G45 X10. D1"),
         ("fanuc0m", "G31 X10. F100."),
         ("fanuc0m", "G60 X10."),
         ("fanuc0m", "G68 X0 Y0 R45."),

@@ -472,3 +472,61 @@ pub(super) fn data_setting(step: &mut Step, words: &mut Words, span: Span) -> Re
         (_, None) => Err(step.alarm(Rule::NotSupported, span, "G10: not simulated by ncsight on this profile yet")),
     }
 }
+
+/// G45 (+1) / G46 (-1) / G47 (+2) / G48 (-2) with D: each axis's move of the block is made
+/// longer (shorter) by the offset's value once (twice), in the move's direction (a negative
+/// value the other way; a move shortened past zero reverses). An incremental zero moves by the
+/// value, signed by the zero's sign (`G45 X0` +, `G45 X-0` -); an absolute zero move does not
+/// move (FANUC 0-M tool position offset; the details from the FANUC-compatible Mitsubishi
+/// M700V manual, 12.6 [secondary]). In G00 or G01 only: with an arc it is not simulated.
+pub(super) fn offset_move(step: &mut Step, words: &mut Words, factor: i8, span: Span) -> Result<(), Diagnostic> {
+    use crate::modal::Motion;
+    let d = match words.take(b'D') {
+        Some(w) if w.decimal || w.value < 0.0 || w.value > crate::setup::MAX_OFFSET_NUMBER as f64 => {
+            return Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("{}: D is an offset number, 0 to {}", w.text(), crate::setup::MAX_OFFSET_NUMBER)));
+        }
+        Some(w) => w.value as u32,
+        None => step.st.comp.d,
+    };
+    if matches!(step.st.motion, Motion::ArcCw | Motion::ArcCcw) {
+        return Err(step.alarm(Rule::NotSupported, span, "G45-G48 with a circular move: not simulated by ncsight yet (G00 or G01)"));
+    }
+    let e = entry(step, d, span);
+    let value = factor as f64 * (e.radius_mm + e.wear_radius_mm);
+    // The sign of an incremental zero (X0 or X-0 under G91, U0 or U-0), per axis.
+    let mut zero_sign = [None::<f64>; 3];
+    for (abs_l, inc_l, axis) in [(b'X', b'U', 0), (b'Y', b'V', 1), (b'Z', b'W', 2)] {
+        let w = match (words.peek(abs_l), words.peek(inc_l).filter(|_| step.profile.incremental_addresses)) {
+            (Some(w), _) if step.st.incremental => Some(w),
+            (None, Some(w)) => Some(w),
+            _ => None,
+        };
+        if let Some(w) = w.filter(|w| w.value == 0.0) {
+            zero_sign[axis] = Some(if w.value.is_sign_negative() { -1.0 } else { 1.0 });
+        }
+    }
+    let (target, given) = axis_target(step, words)?;
+    let shown = step.st.pos + step.st.frame.unmoved;
+    let mut to = target;
+    for (a, _) in given.iter().enumerate().filter(|(_, g)| **g) {
+        let delta = target.axis(a) - shown.axis(a);
+        let scale = if a == 0 && step.profile.diameter_x { 0.5 } else { 1.0 };
+        if delta != 0.0 {
+            to.set_axis(a, target.axis(a) + delta.signum() * value * scale);
+        } else if let Some(sign) = zero_sign[a] {
+            to.set_axis(a, target.axis(a) + sign * value * scale);
+        }
+    }
+    let from = step.st.pos;
+    if to == from {
+        return Ok(());
+    }
+    match step.st.motion {
+        Motion::Linear => {
+            let feed = step.cutting_feed(super::What::Code(crate::profile::GFn::Linear), &|u| super::lerp(&from, &to, u))?;
+            step.emit(Op::Feed { from, to, feed_mm_min: feed });
+        }
+        _ => step.emit(Op::Rapid { from, to }),
+    }
+    Ok(())
+}

@@ -781,6 +781,7 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
                     | GFn::LatheCoordinateSet
                     | GFn::MillCoordinateSet
                     | GFn::DataSetting
+                    | GFn::OffsetMove(_)
                     | GFn::Thread(_)
                     | GFn::BoxCycle(_)
                     | GFn::Drill(_)
@@ -884,7 +885,7 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
                     codes.motion = Some((w.span, Motion::Rapid));
                 }
             }
-            GFn::Dwell | GFn::DataSetting | GFn::ReferenceReturn | GFn::OtherReferenceReturn | GFn::LocalCoordinates | GFn::MachineCoordinates | GFn::LatheCoordinateSet | GFn::MillCoordinateSet | GFn::CompoundThread(_) | GFn::PeckCycle(_) | GFn::Rough(_) | GFn::Finish => {
+            GFn::Dwell | GFn::DataSetting | GFn::OffsetMove(_) | GFn::ReferenceReturn | GFn::OtherReferenceReturn | GFn::LocalCoordinates | GFn::MachineCoordinates | GFn::LatheCoordinateSet | GFn::MillCoordinateSet | GFn::CompoundThread(_) | GFn::PeckCycle(_) | GFn::Rough(_) | GFn::Finish => {
                 codes.non_modal = Some((w.span, g.function))
             }
             GFn::NotYet(_) | GFn::NotYetReference(_) | GFn::MacroCall | GFn::ModalMacroCall | GFn::ModalMacroCancel => unreachable!("rejected above"),
@@ -1134,6 +1135,7 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
         Some((_, GFn::LatheCoordinateSet | GFn::MillCoordinateSet)) => frame::set_coordinates(step, &mut words)?,
         Some((_, GFn::LocalCoordinates)) => frame::local(step, &mut words)?,
         Some((span, GFn::DataSetting)) => step.out.table_write = frame::data_setting(step, &mut words, span)?,
+        Some((span, GFn::OffsetMove(factor))) => frame::offset_move(step, &mut words, factor, span)?,
         Some(_) => unreachable!("only one-shot functions are stored"),
         None => {
             if let Some((_, m)) = codes.motion {
@@ -1224,6 +1226,7 @@ fn describe_command(step: &Step, codes: &Codes) -> String {
         Some((_, f @ (GFn::ReferenceReturn | GFn::OtherReferenceReturn))) => return format!("{} (reference return)", name(f)),
         Some((_, f @ GFn::LocalCoordinates)) => return format!("{} (local coordinate system)", name(f)),
         Some((_, f @ GFn::DataSetting)) => return format!("{} (data setting)", name(f)),
+        Some((_, f @ GFn::OffsetMove(_))) => return format!("{} (tool offset increase/decrease)", name(f)),
         Some((_, f @ GFn::MachineCoordinates)) => return format!("{} (positioning in machine coordinates)", name(f)),
         Some((_, f @ (GFn::LatheCoordinateSet | GFn::MillCoordinateSet))) => return format!("{} (coordinate setting)", name(f)),
         Some((_, f @ GFn::CompoundThread(Compound::G76))) => return format!("{} (compound threading)", name(f)),

@@ -158,6 +158,9 @@ pub enum GFn {
     LengthComp(i8),
     /// G10: data setting (work offsets, tool offsets) in the forms of the profile's `G10Forms`.
     DataSetting,
+    /// G45 (+1), G46 (-1), G47 (+2), G48 (-2): the block's move lengthened (shortened) by the
+    /// offset D once (twice).
+    OffsetMove(i8),
     /// G54..G59: select work coordinate system 1-6 (offsets from the setup's `[work]`).
     WorkOffset(u8),
     /// G52: a local coordinate system inside the work system (FANUC; GSK980TDi help G52).
