@@ -381,3 +381,61 @@ mod tests {
         assert!(close(c.first_end, P2::new(0.0, -4.0)) && close(c.second_start, P2::new(0.0, -4.0)));
     }
 }
+
+/// A whole path compensated at once (a G71-G73 contour on FANUC, which roughs along the
+/// compensated finishing shape): the first move is the start-up from its start (type A: it
+/// ends perpendicular to the second move), the corners as [`corner`], the last move ends
+/// perpendicular (the cancel). Positions are the points the controller positions: the nose
+/// centre plus `tip`. Moves of no length in the plane are left out.
+pub fn path(ops: &[Op], plane: Plane, side: f64, r: f64, tip: Vec3) -> Result<Vec<Op>, CompError> {
+    let segs: Vec<(usize, Seg)> = ops.iter().enumerate().filter_map(|(i, op)| Seg::of(op, plane).filter(|s| !s.is_point()).map(|s| (i, s))).collect();
+    if segs.len() < 2 || r == 0.0 {
+        return Ok(ops.to_vec());
+    }
+    let feed_of = |op: &Op| match op {
+        Op::Feed { feed_mm_min, .. } | Op::Arc { feed_mm_min, .. } => Some(*feed_mm_min),
+        _ => None,
+    };
+    let place = |base: &Vec3, p: P2| with_local(base, p, plane) + tip;
+    let mut out = Vec::with_capacity(ops.len() + 4);
+    // The start-up begins where the tool stands: its controlled point is the programmed start.
+    let first = &ops[segs[0].0];
+    let mut at = local(&(first.start_point().unwrap_or_default() - tip), plane);
+    for (k, (i, seg)) in segs.iter().enumerate() {
+        let op = &ops[*i];
+        let (end, between, next_start) = if k == 0 {
+            let e = segs[1].1.from().plus(vector(&segs[1].1, false, side, r));
+            (e, Vec::new(), e)
+        } else if k + 1 == segs.len() {
+            let e = seg.to().plus(vector(seg, true, side, r));
+            (e, Vec::new(), e)
+        } else {
+            let c = corner(seg, &segs[k + 1].1, side, r)?;
+            (c.first_end, c.between, c.second_start)
+        };
+        if k > 0 {
+            offset(seg, at, end, side, r)?;
+        }
+        let (from3, to3) = (op.start_point().unwrap_or_default(), op.end_point().unwrap_or_default());
+        out.push(match *op {
+            Op::Rapid { .. } => Op::Rapid { from: place(&from3, at), to: place(&to3, end) },
+            Op::Feed { feed_mm_min, .. } => Op::Feed { from: place(&from3, at), to: place(&to3, end), feed_mm_min },
+            Op::Arc { center, plane, dir, feed_mm_min, .. } => Op::Arc { from: place(&from3, at), to: place(&to3, end), center: center + tip, plane, dir, feed_mm_min },
+            other => other,
+        });
+        let mut p = end;
+        let next_feed = segs.get(k + 1).and_then(|(j, _)| feed_of(&ops[*j]));
+        for q in between.into_iter().chain(std::iter::once(next_start)) {
+            if q.dist(p) > 1e-9 {
+                let (a, b) = (place(&to3, p), place(&to3, q));
+                out.push(match next_feed {
+                    Some(f) => Op::Feed { from: a, to: b, feed_mm_min: f },
+                    None => Op::Rapid { from: a, to: b },
+                });
+            }
+            p = q;
+        }
+        at = next_start;
+    }
+    Ok(out)
+}

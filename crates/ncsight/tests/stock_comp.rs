@@ -37,7 +37,11 @@ fn programme(comp: bool) -> String {
 }
 
 fn records(text: &str, setup: &Setup) -> Vec<Record> {
-    let mut program = Program::new(Params::defaults(profile::by_name("gsk980tdi").unwrap()), Switches::default(), Mode::Run);
+    records_on("gsk980tdi", text, setup)
+}
+
+fn records_on(machine: &str, text: &str, setup: &Setup) -> Vec<Record> {
+    let mut program = Program::new(Params::defaults(profile::by_name(machine).unwrap()), Switches::default(), Mode::Run);
     program.set_setup(setup);
     let mut out = Vec::new();
     for e in ncsight::events(program, text.as_bytes()) {
@@ -77,4 +81,21 @@ fn a_part_finished_under_g42_has_its_programmed_diameters() {
     let chamfer_mid = |s: &ncsight::stock::measure::Simulation| diameter_at(s, -1.0);
     assert!((chamfer_mid(&sim) - 22.0).abs() <= 0.02, "chamfer at Z-1: {:.4}", chamfer_mid(&sim));
     assert!(chamfer_mid(&plain) - 22.0 > 0.2, "uncompensated, the nose leaves the chamfer high: {:.4}", chamfer_mid(&plain));
+}
+
+/// FANUC: G42 before G71, G40 after G70: the roughing runs along the compensated shape too
+/// (MACRO.md 10.3, inferred), and the finished part has its programmed diameters.
+#[test]
+fn fanuc_roughs_and_finishes_along_the_compensated_shape() {
+    let setup = Setup::from_toml(SETUP).unwrap();
+    let text = "T0101\nG99 G97 S800 M03\nG0 X32. Z2.\nG42\nG71 U1.5 R0.5\nG71 P10 Q20 U0.4 W0.1 F0.2\nN10 G0 X20.\nG1 Z0. F0.1\nX24. Z-2.\nZ-30.\nX28.\nZ-40.\nN20 X34.\nG70 P10 Q20\nG40 G0 X100. Z100.\nM30\n";
+    let recs = records_on("fanuc0t", text, &setup);
+    // The roughing's last pass along the contour leaves the allowance on the compensated shape:
+    // X24.4 on the X24 portion, the tip on it as on the finishing pass.
+    assert!(recs.iter().any(|r| r.span.line == 6 && matches!(r.op, ncsight::Op::Feed { to, .. } if (to.x * 2.0 - 24.4).abs() < 1e-9 && (to.z + 29.9).abs() < 1e-9)), "no roughing pass along X24.4 to Z-29.9");
+    let sim = simulate(&recs, &setup, &SimOptions { dz_mm: Some(0.01), dtheta_deg: Some(2.0), expect: None }).unwrap();
+    for (z, want) in [(-5.0, 24.0), (-15.0, 24.0), (-27.0, 24.0), (-33.0, 28.0), (-38.0, 28.0), (-1.0, 22.0)] {
+        let d = diameter_at(&sim, z);
+        assert!((d - want).abs() <= 0.02, "Z{z}: {d:.4} mm turned, {want} programmed");
+    }
 }

@@ -219,6 +219,7 @@ impl Interpreter {
         // The motion mode and position after the ns block (a G00 to where the tool stands makes
         // no record).
         let mut after_ns = None;
+        let mut comp_at_ns = st.comp;
         for (k, b) in blocks.iter().enumerate() {
             if b.block_delete && self.switches.block_delete {
                 continue;
@@ -244,6 +245,7 @@ impl Interpreter {
             }
             if k == 0 {
                 after_ns = Some((st.motion, st.pos));
+                comp_at_ns = st.comp;
             }
         }
         // Help text notes 1 and 2: the ns block makes one G00 or G01 move.
@@ -283,7 +285,7 @@ impl Interpreter {
         if moves.is_empty() {
             return Err(self.contour_alarm(Rule::ContourCommand, ns_span, format!("{code}: the contour has no move after its first block")));
         }
-        let notes = ContourNotes { feed_warned: st.feed_warned, increment_words: scratch.increment_words, increment_words_small: scratch.increment_words_small };
+        let notes = ContourNotes { feed_warned: st.feed_warned, increment_words: scratch.increment_words, increment_words_small: scratch.increment_words_small, comp: comp_at_ns };
         Ok((ns_move, moves, scratch.warnings, notes))
     }
 
@@ -298,7 +300,19 @@ impl Interpreter {
         out.increment_words_small += notes.increment_words_small;
         let first = &blocks[0];
         let ns_rapid = matches!(ns_move, Op::Rapid { .. });
-        let contour: Vec<Op> = std::iter::once(ns_move.clone()).chain(rest).collect();
+        let mut contour: Vec<Op> = std::iter::once(ns_move.clone()).chain(rest).collect();
+        // FANUC roughs along the compensated finishing shape (MACRO.md 10.3, inferred); the GSK
+        // cancels compensation in G71-G73 (help text, G40-G42 note 6) and roughs the programmed
+        // one.
+        let c = notes.comp;
+        if c.side != 0 && c.radius_mm > 0.0 && !self.profile.frame.rough_cancels_comp {
+            let has_length = ns_move.start_point().zip(ns_move.end_point()).is_some_and(|(a, b)| a.dist(&b) > 1e-9);
+            if has_length {
+                contour = crate::comp::path(&contour, crate::motion::Plane::ZX, c.side as f64, c.radius_mm, c.tip).map_err(|_| {
+                    self.contour_alarm(Rule::CompInterference, req.span, format!("{code}: the finishing shape cannot be compensated by the nose radius {:.3} mm (the tool does not fit it)", c.radius_mm))
+                })?;
+            }
+        }
         // The contour blocks' own warnings (a length without a decimal point, ...) are passed on.
         out.warnings.extend(warnings.iter().cloned());
         let hint = warnings.first().map(|w| format!("{} (line {})", w.message, w.span.line));
@@ -460,4 +474,6 @@ pub(super) struct ContourNotes {
     feed_warned: Option<f64>,
     increment_words: u32,
     increment_words_small: u32,
+    /// Radius compensation in force after the ns block (a G41/G42 before the cycle or in it).
+    comp: crate::modal::CompState,
 }
