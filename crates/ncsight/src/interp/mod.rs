@@ -805,7 +805,7 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
             }
             // G70 runs its contour's blocks in compensation (they are moves of their own); G71/
             // G72 rough along the compensated shape (FANUC) or cancel it (GSK).
-            let rough_compensated = matches!(g.function, GFn::Rough(_)) && !profile.frame.rough_cancels_comp;
+            let rough_compensated = (matches!(g.function, GFn::Rough(_)) && !profile.frame.rough_cancels_comp) || (matches!(g.function, GFn::BoxCycle(_)) && profile.frame.box_by_tip);
             if matches!(g.function, GFn::BoxCycle(_) | GFn::Rough(_) | GFn::Drill(_) | GFn::PeckCycle(_)) && step.st.comp.side != 0 && !rough_compensated {
                 let msg = format!("{}: radius compensation is suspended in this cycle: its moves are the programmed ones (docs/compensation.md)", w.text());
                 step.warn(Rule::NotSimulated, w.span, msg);

@@ -441,9 +441,12 @@ pub struct FrameRules {
     /// This many consecutive blocks without a move in compensation is an alarm (GSK980TDi help
     /// text, G40-G42 note 1: seven).
     pub comp_idle_alarm: Option<u8>,
-    /// G71-G73 cancel radius compensation (GSK980TDi help text, G40-G42 note 6); elsewhere it
-    /// is suspended for the cycle.
+    /// G71-G73 cancel radius compensation (GSK980TDi help text, G40-G42 note 6); elsewhere they
+    /// rough along the compensated shape.
     pub rough_cancels_comp: bool,
+    /// G90/G94 in compensation are offset by the imaginary tool nose (FANUC, inferred); elsewhere
+    /// they run as programmed (the GSK text says nothing: suspended, with a warning).
+    pub box_by_tip: bool,
     pub source: &'static str,
 }
 
@@ -470,6 +473,7 @@ impl FrameRules {
         comp_lookahead: 1,
         comp_idle_alarm: None,
         rough_cancels_comp: false,
+        box_by_tip: true,
         source: "FANUC 0i manuals as recalled (G30 P2-P4; G92 after G54 in one block sets the system selected; 5002#4 LGT, #6 LWM; G10 forms); MACRO.md 10",
     };
     pub const GSK: FrameRules = FrameRules {
@@ -481,6 +485,7 @@ impl FrameRules {
         comp_lookahead: 6,
         comp_idle_alarm: Some(7),
         rough_cancels_comp: true,
+        box_by_tip: false,
         source: "GSK980TDi help text: G54-G59 note 6, G28 note 2, G30 (P2-P4) note 3, G10 L3 and L52 only; the offset mode's parameter number not found (an ncsight setting)",
     };
 }
