@@ -195,6 +195,11 @@ impl Step<'_> {
         if self.out.emitted > MAX_MOTIONS_PER_BLOCK {
             return;
         }
+        // Machine coordinates only where something reads them (a check without limits keeps no
+        // record).
+        if !self.tables.limited && self.out.discard_records {
+            return;
+        }
         let to_machine = self.tables.to_machine(&self.st.frame);
         if self.tables.limited && self.out.overtravel.is_none() {
             if let Some((from, to)) = op.start_point().zip(op.end_point()) {
