@@ -413,7 +413,9 @@ pub fn path(ops: &[Op], plane: Plane, side: f64, r: f64, tip: Vec3) -> Result<Ve
             let c = corner(seg, &segs[k + 1].1, side, r)?;
             (c.first_end, c.between, c.second_start)
         };
-        if k > 0 {
+        // The start-up and the cancel leg are not checked (they are not offset moves: a short
+        // last move in a cycle ends perpendicular wherever that is).
+        if k > 0 && k + 1 < segs.len() {
             offset(seg, at, end, side, r)?;
         }
         let (from3, to3) = (op.start_point().unwrap_or_default(), op.end_point().unwrap_or_default());

@@ -184,8 +184,9 @@ pub struct CompState {
     pub tip: Vec3,
     /// The D in force (mills): its offset's radius.
     pub d: u32,
-    /// A compensated move has been made since G41/G42 (or since the path was broken off): the
-    /// next move is not a start-up.
+    /// A compensated move has been made since G41/G42: a move that starts the path again (after
+    /// a block compensation does not act in) may be an arc, joined by a straight move; before
+    /// that, an arc is alarm 034.
     pub started: bool,
     /// The held move starts its compensated path here (nose centre).
     pub held_start: Vec3,

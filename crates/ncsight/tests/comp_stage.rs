@@ -96,3 +96,33 @@ fn a_new_t_offset_in_compensation_brings_its_radius() {
     let last_cut = records.iter().rev().find(|r| r.span.line == 7).unwrap();
     assert!((last_cut.op.end_point().unwrap().z + 30.4).abs() < 1e-9, "{:?}", last_cut.op);
 }
+
+#[test]
+fn single_block_does_not_stop_inside_a_thread_run_in_compensation() {
+    let text = "T0101\nG97 S500 M03\nG0 X30. Z5.\nG42 G1 X20. F100.\nG32 Z-10. F1.5\nG32 X24. Z-20.\nG0 X40.\nG40 G0 X100. Z100.\nM30\n";
+    let (records, diags) = run("fanuc0t", LATHE, text, true);
+    assert!(diags.iter().all(|d| !d.is_alarm()), "{diags:?}");
+    let threads: Vec<usize> = records.iter().enumerate().filter(|(_, r)| r.op.is_thread()).map(|(i, _)| i).collect();
+    assert!(threads.len() >= 2, "{records:?}");
+    assert!(records[threads[0]..threads[threads.len() - 1]].iter().all(|r| !matches!(r.op, Op::Stop { .. })), "a stop inside the thread run");
+}
+
+#[test]
+fn g92_in_compensation_moves_the_waiting_point_with_the_coordinates() {
+    // The held X10 ends perpendicular at X10 Y5; G92 makes X10 Y0 the new X0 Y0: the next move
+    // starts at X0 Y5 in the new coordinates.
+    let text = "G21 G17 G90 G0 X0. Y0. Z0.\nG41 D1 G1 X10. F100.\nG92 X0. Y0.\nG1 X10.\nG40 X20.\nM30\n";
+    let (records, diags) = run("fanuc0m", "[[offset]]\nnumber = 1\nradius_mm = 5.0\n", text, false);
+    assert!(diags.iter().all(|d| !d.is_alarm()), "{diags:?}");
+    let next = records.iter().find(|r| r.span.line == 4).unwrap();
+    let from = next.op.start_point().unwrap();
+    assert!(from.x.abs() < 1e-9 && (from.y - 5.0).abs() < 1e-9, "{from:?}");
+}
+
+#[test]
+fn a_shallow_g90_pass_in_compensation_is_no_interference() {
+    // The start 0.5 mm (radius) from the cut, the nose radius 0.8: the out move ends where it ends.
+    let text = "T0101\nG99 G97 S800 M03\nG0 X50. Z2.\nG42\nG90 X49. Z-20. F0.2\nG40 G0 X100. Z100.\nM30\n";
+    let (_, diags) = run("fanuc0t", LATHE, text, false);
+    assert!(diags.iter().all(|d| !d.is_alarm()), "{diags:?}");
+}

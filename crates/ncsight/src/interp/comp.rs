@@ -15,6 +15,14 @@ use crate::comp::{self, CompError, Seg, P2};
 use crate::motion::{Op, Record, Vec3};
 use crate::source::Span;
 
+/// The alarm rule of a compensation error.
+pub(super) fn rule_of(e: CompError) -> Rule {
+    match e {
+        CompError::NoIntersection => Rule::CompNoSolution,
+        CompError::Interference | CompError::ArcTooSmall => Rule::CompInterference,
+    }
+}
+
 fn alarm_of(step: &Step, e: CompError, span: Span) -> Diagnostic {
     match e {
         CompError::NoIntersection => step.alarm(Rule::CompNoSolution, span, "radius compensation: the offset paths of this inner corner do not meet (the tool does not fit)"),
@@ -182,12 +190,20 @@ fn plane_move(step: &mut Step, span: Span, n: Option<u32>, op: Op, seg: Seg) {
                 _ => Op::Feed { from: a + step.st.comp.tip, to: b + step.st.comp.tip, feed_mm_min: feed_of(&op) },
             };
             step.push_record(span, n, link);
+            note_span(step, span);
         }
         at = p;
     }
     step.st.comp.held_start = comp::with_local(&start3, corner.second_start, plane);
     step.st.comp.held_startup = false;
     step.queue.push(Record::of_block(span, n, op));
+}
+
+/// A block whose records the stage made in this block (for the single-block marks).
+fn note_span(step: &mut Step, span: Span) {
+    if !step.out.comp_spans.contains(&span) {
+        step.out.comp_spans.push(span);
+    }
 }
 
 fn feed_of(op: &Op) -> f64 {
@@ -223,8 +239,10 @@ fn make_held(step: &mut Step, end: P2) -> Result<Vec3, CompError> {
         return Err(e);
     }
     step.push_record(held.span, held.n, made);
+    note_span(step, held.span);
     let mut last = end3;
     for rec in rest {
+        note_span(step, rec.span);
         let op = at_point(step, rec.op, end);
         if let Some(e) = op.end_point() {
             last = e - tip;
@@ -296,7 +314,7 @@ pub(super) fn end_of_block(step: &mut Step) -> Result<(), Diagnostic> {
 
 /// A move made outside compensation while the tool is off its programmed point (the move after
 /// G40, or a block compensation does not act in) starts where the tool is.
-pub(super) fn from_actual(step: &mut Step, op: Op) -> Op {
+pub(super) fn from_actual(step: &mut Step, span: Span, n: Option<u32>, op: Op) -> Op {
     let Some(c) = step.st.comp.actual else {
         return op;
     };
@@ -314,7 +332,7 @@ pub(super) fn from_actual(step: &mut Step, op: Op) -> Op {
         other => {
             if let Some(start) = other.start_point() {
                 if start.dist(&from) > 1e-9 {
-                    step.push_record(step.span, step.n, Op::Rapid { from, to: start });
+                    step.push_record(span, n, Op::Rapid { from, to: start });
                 }
             }
             other

@@ -171,7 +171,12 @@ pub(super) fn set_coordinates(step: &mut Step, words: &mut Words) -> Result<(), 
         st.frame.shift.set_axis(a, shift);
         st.frame.local.set_axis(a, 0.0);
     }
+    let moved = (target - st.frame.unmoved) - st.pos;
     st.pos = target - st.frame.unmoved;
+    // Where a compensated tool waits is in the new coordinates too.
+    if let Some(a) = st.comp.actual {
+        st.comp.actual = Some(a + moved);
+    }
     Ok(())
 }
 

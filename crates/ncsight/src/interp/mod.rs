@@ -68,6 +68,8 @@ pub struct Outcome {
     comp_error: Option<Diagnostic>,
     /// The block made a move in the plane in compensation.
     comp_plane_move: bool,
+    /// The blocks whose records the compensation stage made during this block.
+    comp_spans: Vec<Span>,
 }
 
 impl Outcome {
@@ -82,6 +84,7 @@ impl Outcome {
         self.table_write = None;
         self.comp_error = None;
         self.comp_plane_move = false;
+        self.comp_spans.clear();
     }
 }
 
@@ -185,7 +188,7 @@ impl Step<'_> {
         if self.st.comp.side != 0 && !self.bypass_comp {
             return comp::take(self, span, n, op);
         }
-        let op = if self.st.comp.actual.is_some() { comp::from_actual(self, op) } else { op };
+        let op = if self.st.comp.actual.is_some() { comp::from_actual(self, span, n, op) } else { op };
         self.push_record(span, n, op);
     }
 
@@ -557,15 +560,21 @@ impl Interpreter {
         // Single block stops after the block's last record (a held-back thread run end carries
         // its own mark). In radius compensation a block's move is made during a later block: each
         // block's last record made here is its end, unless a move of it is still held.
-        let compensating = queue_before.is_some() || !step.queue.is_empty() || step.st.comp.side != 0;
-        if compensating {
+        if !step.out.comp_spans.is_empty() {
+            // Marked: this block's last record and the last of each block whose moves the
+            // compensation stage made here, unless a move of it is still held (a thread run left
+            // open keeps its own mark). Backwards, once per span.
             let held: Vec<Span> = step.queue.iter().map(|r| r.span).collect();
-            let records = &mut step.out.records;
-            for i in 0..records.len() {
-                let span = records[i].span;
-                let last_of_span = records[i + 1..].iter().all(|r| r.span != span);
-                if last_of_span && !held.contains(&span) {
-                    records[i].block_end = true;
+            let mut wanted: Vec<Span> = step.out.comp_spans.clone();
+            wanted.push(block.span);
+            wanted.retain(|s| !held.contains(s));
+            for r in step.out.records.iter_mut().rev() {
+                if wanted.is_empty() {
+                    break;
+                }
+                if let Some(k) = wanted.iter().position(|s| *s == r.span) {
+                    r.block_end = true;
+                    wanted.swap_remove(k);
                 }
             }
         } else if let Some(last) = step.out.records.iter_mut().rev().find(|r| r.span == block.span) {

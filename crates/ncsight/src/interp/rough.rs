@@ -308,8 +308,8 @@ impl Interpreter {
         if c.side != 0 && c.radius_mm > 0.0 && !self.profile.frame.rough_cancels_comp {
             let has_length = ns_move.start_point().zip(ns_move.end_point()).is_some_and(|(a, b)| a.dist(&b) > 1e-9);
             if has_length {
-                contour = crate::comp::path(&contour, crate::motion::Plane::ZX, c.side as f64, c.radius_mm, c.tip).map_err(|_| {
-                    self.contour_alarm(Rule::CompInterference, req.span, format!("{code}: the finishing shape cannot be compensated by the nose radius {:.3} mm (the tool does not fit it)", c.radius_mm))
+                contour = crate::comp::path(&contour, crate::motion::Plane::ZX, c.side as f64, c.radius_mm, c.tip).map_err(|e| {
+                    self.contour_alarm(super::comp::rule_of(e), req.span, format!("{code}: the finishing shape cannot be compensated by the nose radius {:.3} mm (the tool does not fit it)", c.radius_mm))
                 })?;
             }
         }

@@ -51,10 +51,17 @@ pub(super) fn block(step: &mut Step, words: &mut Words, kind: BoxKind) -> Result
     // Steps 2 and 3 are cutting feeds at the F in force.
     let mut ops = box_cycle(kind, a, c, taper_mm);
     let comp = step.st.comp;
-    if comp.side != 0 && comp.radius_mm > 0.0 && step.profile.frame.box_by_tip && ops.len() == 4 {
-        ops = by_tip(ops, comp.radius_mm, comp.tip).map_err(|_| {
-            step.alarm(Rule::CompInterference, step.span, format!("{name}: the cycle cannot be compensated by the nose radius {:.3} mm (the tool does not fit it)", comp.radius_mm))
-        })?;
+    if comp.side != 0 && comp.radius_mm > 0.0 && step.profile.frame.box_by_tip {
+        match by_tip(&ops, comp.radius_mm, comp.tip) {
+            Ok(Some(done)) => ops = done,
+            Ok(None) => {
+                let msg = format!("{name}: the imaginary tool nose of the offset in force gives the cycle no side (tip 0, 9 or along the cut): the programmed cycle runs");
+                step.warn(Rule::NotSimulated, step.span, msg);
+            }
+            Err(e) => {
+                return Err(step.alarm(super::comp::rule_of(e), step.span, format!("{name}: the cycle cannot be compensated by the nose radius {:.3} mm (the tool does not fit it)", comp.radius_mm)));
+            }
+        }
     }
     for op in ops {
         step.emit_cut(name, op)?;
@@ -67,24 +74,25 @@ pub(super) fn block(step: &mut Step, words: &mut Words, kind: BoxKind) -> Result
 /// (MACRO.md 10.3 [inferred]); the rapid back to the start goes from where the tool is. A
 /// straight cycle then cuts where it is written (on its lines the nose's imaginary point stays
 /// on the programmed line); a taper is offset as a compensated taper is.
-fn by_tip(ops: Vec<crate::motion::Op>, r: f64, tip: crate::motion::Vec3) -> Result<Vec<crate::motion::Op>, crate::comp::CompError> {
+fn by_tip(ops: &[crate::motion::Op], r: f64, tip: crate::motion::Vec3) -> Result<Option<Vec<crate::motion::Op>>, crate::comp::CompError> {
     use crate::comp::{self, Seg};
     use crate::motion::{Op, Plane};
     let plane = Plane::ZX;
-    let Some(cut) = Seg::of(&ops[1], plane) else {
-        return Ok(ops);
+    let Some(cut) = ops.get(1).and_then(|op| Seg::of(op, plane)).filter(|_| ops.len() == 4) else {
+        return Ok(None);
     };
     // The nose centre lies against the tip's direction: left or right of the cut's travel.
     let to_centre = comp::local(&(crate::motion::Vec3::default() - tip), plane);
-    let side = comp::P2::cross(cut.tangent(false), to_centre).signum();
-    if side == 0.0 {
-        return Ok(ops);
+    let side = comp::P2::cross(cut.tangent(false), to_centre);
+    if side.abs() < 1e-12 {
+        return Ok(None);
     }
+    let side = side.signum();
     let mut out = comp::path(&ops[..3], plane, side, r, tip)?;
     let back = match (out.last().and_then(Op::end_point), ops[3]) {
         (Some(from), Op::Rapid { to, .. }) => Op::Rapid { from, to },
         (_, other) => other,
     };
     out.push(back);
-    Ok(out)
+    Ok(Some(out))
 }
