@@ -126,6 +126,8 @@ rules! {
     CompPlaneChange => Alarm, "NCS-E81", Some("PS0037"), "CAN NOT CHANGE PLANE IN CRC";
     CompInterference => Alarm, "NCS-E82", Some("PS0041"), "INTERFERENCE IN CRC";
     CompIdleBlocks => Alarm, "NCS-E83", None, "TOO MANY BLOCKS WITHOUT A MOVE IN COMPENSATION";
+    // G27: the FANUC 0 number and text as recalled (not verified).
+    ReferenceCheck => Alarm, "NCS-E84", Some("PS0092"), "ZERO RETURN CHECK (G27) ERROR";
     // --- warnings ---
     SameGroupTwice => Warning, "NCS-W01", None, "TWO G CODES OF ONE GROUP: THE LAST ONE COUNTS";
     IntegerLength => Warning, "NCS-W02", None, "LENGTH WITHOUT DECIMAL POINT";
@@ -160,6 +162,7 @@ rules! {
     ReferenceAssumed => Warning, "NCS-W31", None, "REFERENCE POINT NOT IN THE SETUP";
     OffsetAssumed => Warning, "NCS-W32", None, "OFFSET NOT IN THE SETUP";
     CompRadiusZero => Warning, "NCS-W33", None, "RADIUS COMPENSATION WITH RADIUS 0";
+    NoSkipSignal => Warning, "NCS-W34", None, "NO SKIP SIGNAL: THE MOVE RUNS TO ITS END";
 }
 
 impl Rule {

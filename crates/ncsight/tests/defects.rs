@@ -44,6 +44,7 @@ fn fanuc_0044_reference_return_in_a_canned_cycle() {
     assert_eq!(first_alarm("fanuc0m", &format!("{head}G30 Z0.\nM30\n")).unwrap().code, "PS0044");
     assert!(first_alarm("fanuc0m", "G30 Z0.\nM30\n").is_none());
     assert_eq!(first_alarm("fanuc0m", &format!("{head}G27 Z0.\nM30\n")).unwrap().code, "PS0044");
+    assert_eq!(first_alarm("fanuc0m", &format!("{head}G29 Z0.\nM30\n")).unwrap().code, "PS0044");
 }
 
 /// A code the controller has but ncsight does not simulate is "not simulated yet" (NCS-E38),
@@ -51,15 +52,14 @@ fn fanuc_0044_reference_return_in_a_canned_cycle() {
 #[test]
 fn codes_of_the_manual_are_not_simulated_yet_not_unknown() {
     for (machine, block) in [
-        ("fanuc0m", "G27 Z0."),
-        ("fanuc0m", "G31 X10. F100."),
+        ("fanuc0m", "G29 Z0."),
         ("fanuc0m", "G60 X10."),
         ("fanuc0m", "G68 X0 Y0 R45."),
         ("fanuc0m", "G69"),
         ("fanuc0t", "G84 Z-10. F1."),
-        ("gsk980tdi", "G31 W-10 F100"),
+        ("gsk980tdi", "G36 X10"),
         ("gsk988t", "G12.1"),
-        ("yasnac-lx3", "G27 U0 W0"),
+        ("yasnac-lx3", "G34 W-10 F2"),
     ] {
         let a = first_alarm(machine, &format!("{block}\nM30\n")).unwrap_or_else(|| panic!("{machine} {block}: no alarm"));
         assert_eq!(a.code, "NCS-E38", "{machine} {block}: {a:?}");

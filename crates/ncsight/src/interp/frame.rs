@@ -535,3 +535,33 @@ pub(super) fn offset_move(step: &mut Step, words: &mut Words, factor: i8, span: 
     }
     Ok(())
 }
+
+/// G27: rapid to the point given (absolute or incremental) on the axes given, then the check
+/// that it is the reference point in machine coordinates (within 0.001 mm, inferred): FANUC
+/// alarm 092 when it is not (the setup's reference point, else the profile's assumed one).
+pub(super) fn reference_check(step: &mut Step, words: &mut Words, span: Span) -> Result<(), Diagnostic> {
+    let (target, given) = axis_target(step, words)?;
+    let from = step.st.pos;
+    if target != from {
+        step.emit(Op::Rapid { from, to: target });
+    }
+    let reference = step.tables.reference_mm[0].unwrap_or_default();
+    let machine = target + step.tables.to_machine(&step.st.frame);
+    let x_scale = if step.profile.diameter_x { 2.0 } else { 1.0 };
+    for (a, _) in given.iter().enumerate().filter(|(_, g)| **g) {
+        if (machine.axis(a) - reference.axis(a)).abs() > 0.001 {
+            let scale = if a == 0 { x_scale } else { 1.0 };
+            let name = ["X", "Y", "Z"][a];
+            return Err(step.alarm(
+                Rule::ReferenceCheck,
+                span,
+                format!(
+                    "G27: {name} ends at {:.3} in machine coordinates, not at the reference point {name}{:.3}",
+                    machine.axis(a) * scale,
+                    reference.axis(a) * scale
+                ),
+            ));
+        }
+    }
+    Ok(())
+}

@@ -735,7 +735,7 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
         } else {
             last_of.push((g.group, w, g));
         }
-        if matches!(g.function, GFn::ReferenceReturn | GFn::OtherReferenceReturn | GFn::NotYetReference(_))
+        if matches!(g.function, GFn::ReferenceReturn | GFn::OtherReferenceReturn | GFn::ReferenceCheck | GFn::NotYetReference(_))
             && profile.reference_in_canned_cycle_alarm
             && step.st.drill.kind.is_some()
             // G80, or a group 01 code, in the same block cancels the cycle first (inferred: a
@@ -796,6 +796,8 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
                     | GFn::MillCoordinateSet
                     | GFn::DataSetting
                     | GFn::OffsetMove(_)
+                    | GFn::ReferenceCheck
+                    | GFn::Skip
                     | GFn::Thread(_)
                     | GFn::BoxCycle(_)
                     | GFn::Drill(_)
@@ -901,7 +903,7 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
                     codes.motion = Some((w.span, Motion::Rapid));
                 }
             }
-            GFn::Dwell | GFn::DataSetting | GFn::OffsetMove(_) | GFn::ReferenceReturn | GFn::OtherReferenceReturn | GFn::LocalCoordinates | GFn::MachineCoordinates | GFn::LatheCoordinateSet | GFn::MillCoordinateSet | GFn::CompoundThread(_) | GFn::PeckCycle(_) | GFn::Rough(_) | GFn::Finish => {
+            GFn::Dwell | GFn::DataSetting | GFn::OffsetMove(_) | GFn::ReferenceCheck | GFn::Skip | GFn::ReferenceReturn | GFn::OtherReferenceReturn | GFn::LocalCoordinates | GFn::MachineCoordinates | GFn::LatheCoordinateSet | GFn::MillCoordinateSet | GFn::CompoundThread(_) | GFn::PeckCycle(_) | GFn::Rough(_) | GFn::Finish => {
                 codes.non_modal = Some((w.span, g.function))
             }
             GFn::NotYet(_) | GFn::NotYetReference(_) | GFn::MacroCall | GFn::ModalMacroCall | GFn::ModalMacroCancel => unreachable!("rejected above"),
@@ -1152,6 +1154,8 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
         Some((_, GFn::LocalCoordinates)) => frame::local(step, &mut words)?,
         Some((span, GFn::DataSetting)) => step.out.table_write = frame::data_setting(step, &mut words, span)?,
         Some((span, GFn::OffsetMove(factor))) => frame::offset_move(step, &mut words, factor, span)?,
+        Some((span, GFn::ReferenceCheck)) => frame::reference_check(step, &mut words, span)?,
+        Some((span, GFn::Skip)) => skip(step, &mut words, span)?,
         Some(_) => unreachable!("only one-shot functions are stored"),
         None => {
             if let Some((_, m)) = codes.motion {
@@ -1243,6 +1247,8 @@ fn describe_command(step: &Step, codes: &Codes) -> String {
         Some((_, f @ GFn::LocalCoordinates)) => return format!("{} (local coordinate system)", name(f)),
         Some((_, f @ GFn::DataSetting)) => return format!("{} (data setting)", name(f)),
         Some((_, f @ GFn::OffsetMove(_))) => return format!("{} (tool offset increase/decrease)", name(f)),
+        Some((_, f @ GFn::ReferenceCheck)) => return format!("{} (reference point return check)", name(f)),
+        Some((_, f @ GFn::Skip)) => return format!("{} (skip function)", name(f)),
         Some((_, f @ GFn::MachineCoordinates)) => return format!("{} (positioning in machine coordinates)", name(f)),
         Some((_, f @ (GFn::LatheCoordinateSet | GFn::MillCoordinateSet))) => return format!("{} (coordinate setting)", name(f)),
         Some((_, f @ GFn::CompoundThread(Compound::G76))) => return format!("{} (compound threading)", name(f)),
@@ -1337,6 +1343,25 @@ fn axis_target(step: &mut Step, words: &mut Words) -> Result<(Vec3, [bool; 3]), 
         }
     }
     Ok((target, given))
+}
+
+/// G31: a cutting feed to the point given that the skip signal would end where it came (FANUC,
+/// GSK980TDi help text G31: the position is then stored). A simulation has no signal: the move
+/// runs to its end, with warning NCS-W34. P (which signal, 1-4: GSK980TDi help text) is read.
+fn skip(step: &mut Step, words: &mut Words, span: Span) -> Result<(), Diagnostic> {
+    if let Some(w) = words.take(b'P') {
+        if w.decimal || !(1.0..=4.0).contains(&w.value) {
+            return Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("{}: G31's P names the skip signal, P1 to P4 (GSK980TDi help text, G31)", w.text())));
+        }
+    }
+    let (target, _) = axis_target(step, words)?;
+    let from = step.st.pos;
+    let feed = step.cutting_feed(What::Name("G31"), &|u| lerp(&from, &target, u))?;
+    step.warn(Rule::NoSkipSignal, span, "G31: no skip signal comes in a simulation: the move runs to its end (the position a signal would store is its end point)");
+    if target != from {
+        step.emit(Op::Feed { from, to: target, feed_mm_min: feed });
+    }
+    Ok(())
 }
 
 fn motion(step: &mut Step, words: &mut Words) -> Result<(), Diagnostic> {

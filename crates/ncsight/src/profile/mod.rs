@@ -161,6 +161,10 @@ pub enum GFn {
     /// G45 (+1), G46 (-1), G47 (+2), G48 (-2): the block's move lengthened (shortened) by the
     /// offset D once (twice).
     OffsetMove(i8),
+    /// G27: rapid to the point given, then a check that it is the reference point.
+    ReferenceCheck,
+    /// G31: a cutting feed that the skip signal would end early; none comes in a simulation.
+    Skip,
     /// G54..G59: select work coordinate system 1-6 (offsets from the setup's `[work]`).
     WorkOffset(u8),
     /// G52: a local coordinate system inside the work system (FANUC; GSK980TDi help G52).
