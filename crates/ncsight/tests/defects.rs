@@ -53,7 +53,7 @@ fn fanuc_0044_reference_return_in_a_canned_cycle() {
 fn codes_of_the_manual_are_not_simulated_yet_not_unknown() {
     for (machine, block) in [
         ("fanuc0m", "G29 Z0."),
-        ("fanuc0m", "G60 X10."),
+        ("fanuc0m", "G15"),
         ("fanuc0m", "G68 X0 Y0 R45."),
         ("fanuc0m", "G69"),
         ("fanuc0t", "G84 Z-10. F1."),

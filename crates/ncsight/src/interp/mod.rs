@@ -20,7 +20,7 @@ use crate::alarm::{Diagnostic, Rule};
 use crate::geom::{self, ArcError};
 use crate::modal::{Modal, Motion, SpindleDir};
 use crate::motion::{ArcDir, Op, Plane, Record, StopReason, Vec3};
-use crate::profile::{Compound, GDef, GFn, Group, IntegerLengths, MDef, MFn, Params, Profile, MAX_RPM};
+use crate::profile::{Compound, GDef, GFn, Group, IntegerLengths, MDef, MFn, ParamKey, Params, Profile, MAX_RPM};
 use crate::read::{Block, Word};
 use crate::source::Span;
 use words::Words;
@@ -798,6 +798,7 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
                     | GFn::OffsetMove(_)
                     | GFn::ReferenceCheck
                     | GFn::Skip
+                    | GFn::SingleDirection
                     | GFn::Thread(_)
                     | GFn::BoxCycle(_)
                     | GFn::Drill(_)
@@ -903,7 +904,7 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
                     codes.motion = Some((w.span, Motion::Rapid));
                 }
             }
-            GFn::Dwell | GFn::DataSetting | GFn::OffsetMove(_) | GFn::ReferenceCheck | GFn::Skip | GFn::ReferenceReturn | GFn::OtherReferenceReturn | GFn::LocalCoordinates | GFn::MachineCoordinates | GFn::LatheCoordinateSet | GFn::MillCoordinateSet | GFn::CompoundThread(_) | GFn::PeckCycle(_) | GFn::Rough(_) | GFn::Finish => {
+            GFn::Dwell | GFn::DataSetting | GFn::OffsetMove(_) | GFn::ReferenceCheck | GFn::Skip | GFn::SingleDirection | GFn::ReferenceReturn | GFn::OtherReferenceReturn | GFn::LocalCoordinates | GFn::MachineCoordinates | GFn::LatheCoordinateSet | GFn::MillCoordinateSet | GFn::CompoundThread(_) | GFn::PeckCycle(_) | GFn::Rough(_) | GFn::Finish => {
                 codes.non_modal = Some((w.span, g.function))
             }
             GFn::NotYet(_) | GFn::NotYetReference(_) | GFn::MacroCall | GFn::ModalMacroCall | GFn::ModalMacroCancel => unreachable!("rejected above"),
@@ -1156,6 +1157,7 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
         Some((span, GFn::OffsetMove(factor))) => frame::offset_move(step, &mut words, factor, span)?,
         Some((span, GFn::ReferenceCheck)) => frame::reference_check(step, &mut words, span)?,
         Some((span, GFn::Skip)) => skip(step, &mut words, span)?,
+        Some((_, GFn::SingleDirection)) => single_direction(step, &mut words)?,
         Some(_) => unreachable!("only one-shot functions are stored"),
         None => {
             if let Some((_, m)) = codes.motion {
@@ -1249,6 +1251,7 @@ fn describe_command(step: &Step, codes: &Codes) -> String {
         Some((_, f @ GFn::OffsetMove(_))) => return format!("{} (tool offset increase/decrease)", name(f)),
         Some((_, f @ GFn::ReferenceCheck)) => return format!("{} (reference point return check)", name(f)),
         Some((_, f @ GFn::Skip)) => return format!("{} (skip function)", name(f)),
+        Some((_, f @ GFn::SingleDirection)) => return format!("{} (single direction positioning)", name(f)),
         Some((_, f @ GFn::MachineCoordinates)) => return format!("{} (positioning in machine coordinates)", name(f)),
         Some((_, f @ (GFn::LatheCoordinateSet | GFn::MillCoordinateSet))) => return format!("{} (coordinate setting)", name(f)),
         Some((_, f @ GFn::CompoundThread(Compound::G76))) => return format!("{} (compound threading)", name(f)),
@@ -1360,6 +1363,29 @@ fn skip(step: &mut Step, words: &mut Words, span: Span) -> Result<(), Diagnostic
     step.warn(Rule::NoSkipSignal, span, "G31: no skip signal comes in a simulation: the move runs to its end (the position a signal would store is its end point)");
     if target != from {
         step.emit(Op::Feed { from, to: target, feed_mm_min: feed });
+    }
+    Ok(())
+}
+
+/// G60 (FANUC 0-M): at rapid to a point each moving axis's overrun before the end point (the
+/// profile's per-axis setting, FANUC 0i 5440), then to the end point: every axis arrives from the
+/// same side whatever the direction it came from. With every overrun 0 it is a rapid there.
+fn single_direction(step: &mut Step, words: &mut Words) -> Result<(), Diagnostic> {
+    let (target, given) = axis_target(step, words)?;
+    let from = step.st.pos;
+    let keys = [ParamKey::Setting("g60_overrun_x_mm"), ParamKey::Setting("g60_overrun_y_mm"), ParamKey::Setting("g60_overrun_z_mm")];
+    let mut via = target;
+    for (a, _) in given.iter().enumerate().filter(|(_, g)| **g) {
+        let overrun = if step.profile.param(keys[a]).is_some() { step.params.get(keys[a]) } else { 0.0 };
+        if target.axis(a) != from.axis(a) {
+            via.set_axis(a, target.axis(a) - overrun);
+        }
+    }
+    if via != from {
+        step.emit(Op::Rapid { from, to: via });
+    }
+    if target != via {
+        step.emit(Op::Rapid { from: via, to: target });
     }
     Ok(())
 }

@@ -133,7 +133,7 @@ pub static PROFILE: Profile = Profile {
     peck_back_off: None,
     g_codes: &[common::G_CODES, G_CODES, super::later::FANUC_0M],
     m_codes: &[common::M_CODES, M_CODES],
-    params: &[PARAMS, super::FANUC_INPUT, DRY_RUN, super::builder::FANUC, super::FANUC_MACRO, SETTINGS],
+    params: &[PARAMS, super::FANUC_INPUT, DRY_RUN, super::builder::FANUC, super::FANUC_MACRO, super::FANUC_G60, SETTINGS],
     time: TimeKeys {
         rapid: [ParamKey::Number(518, None), ParamKey::Number(519, None), ParamKey::Number(520, None)],
         dry_run: ParamKey::Setting("dry_run_mm_min"),

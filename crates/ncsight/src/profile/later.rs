@@ -33,7 +33,7 @@ pub(super) const FANUC_0M: &[GDef] = &[
     g(50, Group::Scaling, LATER, "scaling off"),
     g(51, Group::Scaling, LATER, "scaling on"),
     g(52, Group::NonModal, GFn::LocalCoordinates, "local coordinate system"),
-    g(60, Group::NonModal, LATER, "single direction positioning"),
+    g(60, Group::NonModal, GFn::SingleDirection, "single direction positioning"),
     g(62, Group::PathMode, LATER, "automatic corner override"),
     g(63, Group::PathMode, LATER, "tapping mode"),
     g(65, Group::NonModal, GFn::MacroCall, "custom macro call"),

@@ -165,6 +165,8 @@ pub enum GFn {
     ReferenceCheck,
     /// G31: a cutting feed that the skip signal would end early; none comes in a simulation.
     Skip,
+    /// G60: single direction positioning (each axis comes to its end point from one side).
+    SingleDirection,
     /// G54..G59: select work coordinate system 1-6 (offsets from the setup's `[work]`).
     WorkOffset(u8),
     /// G52: a local coordinate system inside the work system (FANUC; GSK980TDi help G52).
@@ -749,6 +751,15 @@ pub const FANUC_INPUT: &[ParamDef] = &[ParamDef {
     default: 0.0,
     source: "docs/sources.md, FANUC (inferred)",
 }];
+
+/// FANUC 0-M G60: the overrun of single direction positioning per axis, signed by the side the
+/// axis approaches from (FANUC 0i 5440, per axis; ncsight settings, one per axis, 0 at power
+/// on as the parameter's default).
+pub const FANUC_G60: &[ParamDef] = &[
+    ParamDef { key: ParamKey::Setting("g60_overrun_x_mm"), meaning: "G60: X comes to its end point from this far before it (signed: + from the minus side); 0 = straight there", unit: "mm", min: -100.0, max: 100.0, default: 0.0, source: "ncsight setting; FANUC 0i parameter 5440 for X (a machine builder's value: set it as the machine has it)" },
+    ParamDef { key: ParamKey::Setting("g60_overrun_y_mm"), meaning: "G60: the same for Y", unit: "mm", min: -100.0, max: 100.0, default: 0.0, source: "ncsight setting; FANUC 0i parameter 5440 for Y" },
+    ParamDef { key: ParamKey::Setting("g60_overrun_z_mm"), meaning: "G60: the same for Z", unit: "mm", min: -100.0, max: 100.0, default: 0.0, source: "ncsight setting; FANUC 0i parameter 5440 for Z" },
+];
 
 /// FANUC custom macro: 6000#5 SBM (MACRO.md section 6; FANUC 0i parameter manual, inferred for
 /// the FANUC 0).
