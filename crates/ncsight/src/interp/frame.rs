@@ -181,32 +181,31 @@ pub(super) fn set_coordinates(step: &mut Step, words: &mut Words) -> Result<(), 
 }
 
 /// The axis words of a block as written, mm (X as a radius), whether absolute or incremental
-/// addresses: G52 and G53 read them so (GSK980TDi help text, G52: X and U have the same effect).
-fn written_axes(step: &mut Step, words: &mut Words) -> Result<([Option<f64>; 3], bool), Diagnostic> {
+/// addresses, each with whether it came by its incremental address (U, V, W): G52 and G53 read
+/// them as values (GSK980TDi help text, G52: X and U have the same effect), G10 sets or adds.
+fn written_axes(step: &mut Step, words: &mut Words) -> Result<[Option<(f64, bool)>; 3], Diagnostic> {
     let mut values = [None; 3];
-    let mut incremental_address = false;
     for (abs_l, inc_l, axis) in [(b'X', b'U', 0), (b'Y', b'V', 1), (b'Z', b'W', 2)] {
         let abs_w = words.take(abs_l);
         let inc_w = if step.profile.incremental_addresses { words.take(inc_l) } else { None };
         if let (Some(a), Some(i)) = (abs_w, inc_w) {
             return Err(step.alarm(Rule::DuplicateWord, i.span, format!("{} and {} both give the {} axis", a.text(), i.text(), abs_l as char)));
         }
-        incremental_address |= inc_w.is_some();
         if let Some(w) = abs_w.or(inc_w) {
             let scale = if axis == 0 && step.profile.diameter_x { 0.5 } else { 1.0 };
-            values[axis] = Some(step.length(w)? * scale);
+            values[axis] = Some((step.length(w)? * scale, inc_w.is_some()));
         }
     }
-    Ok((values, incremental_address))
+    Ok(values)
 }
 
 /// G52: the local system's origin at the point given, in the work system (absolute whatever
 /// the address or G90/G91: GSK980TDi help text, G52; FANUC inferred alike). `G52 X0 Z0` cancels.
 pub(super) fn local(step: &mut Step, words: &mut Words) -> Result<(), Diagnostic> {
-    let (values, _) = written_axes(step, words)?;
+    let values = written_axes(step, words)?;
     reframe(step, |f| {
         for (a, v) in values.iter().enumerate() {
-            if let Some(v) = v {
+            if let Some((v, _)) = v {
                 f.local.set_axis(a, *v);
             }
         }
@@ -227,12 +226,12 @@ pub(super) fn machine_move(step: &mut Step, words: &mut Words, span: Span) -> Re
         step.warn(Rule::MachineIncremental, span, msg);
         return Ok(false);
     }
-    let (values, _) = written_axes(step, words)?;
+    let values = written_axes(step, words)?;
     let origin = step.tables.to_machine(&step.st.frame);
     let from = step.st.pos;
     let mut to = from;
     for (a, v) in values.iter().enumerate() {
-        if let Some(v) = v {
+        if let Some((v, _)) = v {
             to.set_axis(a, v - origin.axis(a));
         }
     }
@@ -390,20 +389,9 @@ pub(super) fn data_setting(step: &mut Step, words: &mut Words, span: Span) -> Re
         None => return Err(step.alarm(Rule::MissingWord, span, "G10 needs P: the work system (L2 P0-P6) or the offset number")),
     };
     let (n, pw) = p;
-    let x_scale = if step.profile.diameter_x { 0.5 } else { 1.0 };
     // Set (absolute) or add (incremental: G91 on a mill, U/V/W on a lathe) per axis.
-    let mut values = [None::<(f64, bool)>; 3];
-    for (abs_l, inc_l, axis) in [(b'X', b'U', 0), (b'Y', b'V', 1), (b'Z', b'W', 2)] {
-        let abs_w = words.take(abs_l);
-        let inc_w = if step.profile.incremental_addresses { words.take(inc_l) } else { None };
-        if let (Some(a), Some(i)) = (abs_w, inc_w) {
-            return Err(step.alarm(Rule::DuplicateWord, i.span, format!("{} and {} both give the {} axis", a.text(), i.text(), abs_l as char)));
-        }
-        if let Some(w) = abs_w.or(inc_w) {
-            let scale = if axis == 0 { x_scale } else { 1.0 };
-            values[axis] = Some((step.length(w)? * scale, inc_w.is_some() || step.st.incremental));
-        }
-    }
+    let incremental = step.st.incremental;
+    let values = written_axes(step, words)?.map(|v| v.map(|(v, by_address)| (v, by_address || incremental)));
     let merge = |old: f64, v: Option<(f64, bool)>| match v {
         Some((v, true)) => old + v,
         Some((v, false)) => v,
