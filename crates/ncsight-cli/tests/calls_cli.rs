@@ -106,3 +106,37 @@ fn standard_input_and_jumps() {
     assert_eq!(code, 0, "{err}");
     assert_eq!(out.lines().count(), 3);
 }
+
+/// The tape leader through the file and pipe readers: the banner before the first `%` is not
+/// read (one warning on line 1), the lines after it keep their numbers, and a call that jumps
+/// back after M30 finds its way by byte offsets that count the leader (O0100 on line 7 moves
+/// X to 1, the return comes back to line 5's X2).
+#[test]
+fn the_tape_leader_from_a_file_and_a_pipe() {
+    let d = scratch("leader");
+    let text = "SOMECAM POST V2 -- PART 77\n%\nO0001\nM98 P0100\nG00 X2.\nM30\nO0100\nG00 X1.\nM99\n%\n";
+    let f = d.join("leader.nc");
+    std::fs::write(&f, text).unwrap();
+    let (code, out, err) = common::ncsight(&["run", f.to_str().unwrap(), "-m", "fanuc0m", "--format", "jsonl"]);
+    assert_eq!(code, 0, "{err}");
+    let lines: Vec<&str> = out.lines().collect();
+    assert!(lines[0].contains("\"code\":\"NCS-W04\"") && lines[0].contains("\"line\":1,"), "{out}");
+    assert!(lines[1].contains("\"line\":8,") && lines[1].contains("\"x\":1,"), "{out}");
+    assert!(lines[2].contains("\"line\":5,") && lines[2].contains("\"x\":2,"), "{out}");
+    assert!(lines[3].contains("\"line\":6,") && lines[3].contains("\"end\""), "{out}");
+    assert_eq!(lines.len(), 4, "{out}");
+    // Through a pipe (a programme that only reads forward).
+    let mut child = Command::new(env!("CARGO_BIN_EXE_ncsight"))
+        .args(["check", "-", "-m", "fanuc0m"])
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    child.stdin.take().unwrap().write_all(b"PART 77\n%\nG00 X1.\nM30\n").unwrap();
+    let o = child.wait_with_output().unwrap();
+    let err = String::from_utf8_lossy(&o.stderr).into_owned() + &String::from_utf8_lossy(&o.stdout);
+    assert_eq!(o.status.code(), Some(0), "{err}");
+    assert!(err.contains("<stdin>:1:1: warning[NCS-W04]: line 1, before the first '%', is the tape leader"), "{err}");
+    assert!(err.contains("0 alarm(s), 1 warning(s)"), "{err}");
+}

@@ -4,7 +4,7 @@
 //! at most `BATCH_BYTES` (plus one kept line) are in flight, and their buffers are reused.
 
 use ncsight::{Event, LineReader, Program, ReadBatch, Request};
-use std::io::{self, BufRead};
+use std::io::{self, BufRead, Read};
 use std::ops::Range;
 use std::sync::mpsc;
 
@@ -220,7 +220,20 @@ pub fn drive(
     program: &mut Program,
     on_event: &mut dyn FnMut(&Event, &[u8], FileName) -> io::Result<()>,
 ) -> io::Result<()> {
-    let (stream, source) = input.split().map_err(|e| io::Error::new(e.kind(), ReadFailure(e)))?;
+    let (mut stream, source) = input.split().map_err(|e| io::Error::new(e.kind(), ReadFailure(e)))?;
+    // The first lines decide whether the file has a tape leader; they are read again after.
+    let mut head = Vec::new();
+    let mut scan = program.leader_scan();
+    loop {
+        let start = head.len();
+        let room = ncsight::LEADER_SCAN_BYTES.saturating_sub(start) as u64;
+        let n = (&mut stream).take(room).read_until(b'\n', &mut head).map_err(|e| io::Error::new(e.kind(), ReadFailure(e)))?;
+        if n == 0 || scan.push(&head[start..]) {
+            break;
+        }
+    }
+    program.set_tape_leader(scan.lines());
+    let stream: Box<dyn BufRead + Send> = Box::new(io::Cursor::new(head).chain(stream));
     let mut pending: io::Result<()> = Ok(());
     let Some(request) = stream_forward(stream, &source, program, &mut |e, text| {
         if pending.is_ok() {

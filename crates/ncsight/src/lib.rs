@@ -29,4 +29,4 @@ pub use interp::{Interpreter, Switches};
 pub use machine::{Machine, Options};
 pub use motion::{Op, Record, Vec3};
 pub use profile::{Params, Profile};
-pub use program::{events, events_with_library, run_text, run_text_with, CallOptions, Event, LineReader, Mode, Place, Program, ReadBatch, Request, Status};
+pub use program::{events, events_with_library, run_text, run_text_with, CallOptions, Event, LeaderScan, LEADER_SCAN_BYTES, LineReader, Mode, Place, Program, ReadBatch, Request, Status};

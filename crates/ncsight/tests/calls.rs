@@ -317,3 +317,28 @@ fn the_closing_percent_ends_the_text() {
     let after = run("fanuc0m", "%\nO0001\nG21 G90 G00 X0. Y0. Z0.\nM98 P100\nM30\n%\n%\nO0100\nG00 X1.\nM99\n%\n");
     assert_eq!(trace(&after), t(&["9:rapid:1,0,0@1", "5:end@0"]));
 }
+
+/// The tape leader: text before the first `%` is not read (FANUC tape format). A CAM banner and
+/// a title line before the `%` give one warning on line 1 and nothing else; the programme after
+/// the `%` runs (its rapid on line 5 to X10, radius 5, M30 on line 6). A file that starts with blocks has no
+/// leader: its `%` closes the record, and what follows is read only by a search (O2 here is
+/// called by M98 and runs at depth 1).
+#[test]
+fn text_before_the_first_percent_is_the_tape_leader() {
+    let text = "PART 12 REV B - SOMECAM 4.2\n(POST: FANUC)\n%\nO1000\nG00 X10. Z5.\nM30\n%\n";
+    assert_eq!(trace(&run("fanuc0t", text)), t(&["1:NCS-W04", "5:rapid:5,0,5@0", "6:end@0"]));
+    // The leader's words could be read if it were a programme: the same answer on every profile.
+    for m in ["gsk980tdi", "gsk988t", "yasnac-lx3", "fanuc0m"] {
+        let e = trace(&run(m, text));
+        assert_eq!((e[0].as_str(), e.len()), ("1:NCS-W04", 3), "{m}: {e:?}");
+    }
+    // Blocks first: no leader.
+    let record = "O1\nG00 X1. Z1.\nM98 P2\nM30\n%\nO2\nG00 X2.\nM99\n%\n";
+    assert_eq!(trace(&run("fanuc0t", record)), t(&["2:rapid:0.5,0,1@0", "7:rapid:1,0,1@1", "4:end@0"]));
+    // Only comments before the `%`: nothing to warn about, nothing skipped that would matter.
+    let comments = "(MADE BY X)\n%\nO1000\nG00 X10. Z5.\nM30\n%\n";
+    assert_eq!(trace(&run("fanuc0t", comments)), t(&["4:rapid:5,0,5@0", "5:end@0"]));
+    // Unreadable text and no `%` at all: the alarm at line 1, as before.
+    let none = "PART 12 REV B\nG00 X10. Z5.\nM30\n";
+    assert_eq!(trace(&run("fanuc0t", none))[0].as_str(), "1:PS0005");
+}

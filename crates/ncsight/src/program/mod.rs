@@ -137,6 +137,8 @@ struct Core {
     last_alarm: Option<(Span, &'static str)>,
     /// The next call is made by such a code.
     builder_call: bool,
+    /// The first lines of the main file are the tape leader (before the opening `%`): not read.
+    leader_lines: u32,
 }
 
 /// A G66 modal call: the macro, its count and arguments, the call depth it was given at.
@@ -195,6 +197,70 @@ impl LineReader {
         if out.foreign.is_none() {
             self.reader.read_line_into(line_no, raw, &mut out.line);
         }
+    }
+}
+
+/// Looks at the first lines of a file for a tape leader. In the tape format the text before
+/// the first `%` (the tape start) is the leader and is not read (FANUC 0i operator's manual,
+/// programme configuration; assumed for the GSK and YASNAC profiles as well). A file whose
+/// first lines are programme blocks has no leader: a `%` after them closes the record
+/// (MACRO.md section 1). So lines before the first `%` are the leader only when none of them
+/// reads as a block, and at least one is text that is not a comment (a title, a CAM banner).
+/// The scan is bounded: past [`LEADER_SCAN_BYTES`] without a `%` there is no leader.
+#[derive(Debug, Clone)]
+pub struct LeaderScan {
+    reader: LineReader,
+    lines: u32,
+    text: bool,
+    bytes: usize,
+    decided: Option<u32>,
+}
+
+/// How far into a file a tape leader is looked for.
+pub const LEADER_SCAN_BYTES: usize = 1 << 16;
+
+impl LeaderScan {
+    /// The next line (with or without its break). Whether the answer is known: no more lines
+    /// are needed.
+    pub fn push(&mut self, raw: &[u8]) -> bool {
+        if self.decided.is_some() {
+            return true;
+        }
+        self.bytes += raw.len();
+        let body: &[u8] = {
+            let t = raw.iter().position(|b| !matches!(b, b' ' | b'\t' | b'\r' | b'\n')).unwrap_or(raw.len());
+            &raw[t..]
+        };
+        if body.first() == Some(&b'%') {
+            self.decided = Some(if self.text { self.lines } else { 0 });
+            return true;
+        }
+        self.lines += 1;
+        if body.is_empty() {
+            return self.bytes >= LEADER_SCAN_BYTES && self.decide_none();
+        }
+        if crate::dialect::sniff(raw).is_some() {
+            return self.decide_none();
+        }
+        let mut line = Line::default();
+        self.reader.reader.read_line_into(self.lines, raw, &mut line);
+        let block = line.blocks.iter().any(|b| b.as_ref().is_ok_and(|b| !b.is_empty()));
+        if block || line.tape_mark || line.end_of_file {
+            return self.decide_none();
+        }
+        // Comments only are harmless either way; unreadable text makes this a leader.
+        self.text |= line.blocks.iter().any(|b| b.is_err());
+        self.bytes >= LEADER_SCAN_BYTES && self.decide_none()
+    }
+
+    fn decide_none(&mut self) -> bool {
+        self.decided = Some(0);
+        true
+    }
+
+    /// The number of leader lines (0: none); at the end of the text or of the scan.
+    pub fn lines(&self) -> u32 {
+        self.decided.unwrap_or(0)
     }
 }
 
@@ -408,6 +474,7 @@ impl Program {
                 builder_codes,
                 builders,
                 builder_call: false,
+            leader_lines: 0,
                 statement_stops,
                 last_alarm: None,
             },
@@ -577,6 +644,17 @@ impl Program {
         self.core.read = read;
     }
 
+    /// The tape leader of the main file, decided from its first lines (see [`LeaderScan`]):
+    /// that many lines from the top are not read. Given before the first line is fed.
+    pub fn set_tape_leader(&mut self, lines: u32) {
+        self.core.leader_lines = lines;
+    }
+
+    /// A scan of the first lines of the main file for a tape leader.
+    pub fn leader_scan(&self) -> LeaderScan {
+        LeaderScan { reader: self.core.reader.clone(), lines: 0, text: false, bytes: 0, decided: None }
+    }
+
     /// A reader for the lines of this programme (see [`ReadBatch`]).
     pub fn line_reader(&self) -> LineReader {
         self.core.reader.clone()
@@ -707,6 +785,19 @@ impl Core {
     /// The start of a line: another control's language ends the run; the line's warnings; a DOS
     /// end-of-file mark. Whether the line's blocks are to be interpreted.
     fn begin_line(&mut self, foreign: Option<Foreign>, len: usize, warnings: &[Diagnostic], end_of_file: bool, tape_mark: bool, sink: &mut dyn FnMut(Event)) -> bool {
+        if self.file == 0 && self.line_no <= self.leader_lines {
+            if self.line_no == 1 && !self.again && self.calls.search.is_none() {
+                let span = Span::new(1, 1, len.clamp(1, 80) as u32);
+                let lines = if self.leader_lines == 1 { "line 1, before the first '%', is".to_string() } else { format!("lines 1-{}, before the first '%', are", self.leader_lines) };
+                sink(Event::Diagnostic(Diagnostic::new(
+                    Rule::TextIgnored,
+                    self.interp.profile().alarm_style,
+                    span,
+                    format!("{lines} the tape leader: not read (the programme starts after the '%')"),
+                )));
+            }
+            return false;
+        }
         if let Some(f) = foreign {
             let profile = self.interp.profile();
             let d = Diagnostic::new(
@@ -750,7 +841,7 @@ impl Core {
     /// A line of a batch, its blocks set one by one into a block kept for reuse.
     fn interpret_packed(&mut self, batch: &ReadBatch, l: &PackedLine, block: &mut Block, sink: &mut dyn FnMut(Event)) {
         let warnings = &batch.diagnostics[l.warnings.0 as usize..l.warnings.1 as usize];
-        let plain = l.foreign.is_none() && warnings.is_empty() && !l.end_of_file && !l.tape_mark;
+        let plain = l.foreign.is_none() && warnings.is_empty() && !l.end_of_file && !l.tape_mark && self.line_no > self.leader_lines;
         if !plain && !self.begin_line(l.foreign, l.len, warnings, l.end_of_file, l.tape_mark, sink) {
             return;
         }
@@ -1892,6 +1983,14 @@ pub fn events(program: Program, text: &[u8]) -> Events<'_> {
 /// [`events`] with other texts, by name, where a called programme the text lacks is looked for
 /// (what `--subprogram-dir` gives the command line).
 pub fn events_with_library<'a>(program: Program, text: &'a [u8], library: Vec<(String, &'a [u8])>) -> Events<'a> {
+    let mut program = program;
+    let mut scan = program.leader_scan();
+    for line in text.split_inclusive(|&b| b == b'\n') {
+        if scan.push(line) {
+            break;
+        }
+    }
+    program.set_tape_leader(scan.lines());
     Events { program, texts: vec![text], library, at: (0, 0), queue: std::collections::VecDeque::new(), finished: false }
 }
 
