@@ -896,6 +896,17 @@ fn repair(
     }
 }
 
+/// One code of `machines NAME`: the code, its status, what it does, where that comes from.
+fn code_line(out: &mut dyn Write, code: &str, status: ncsight::profile::CodeStatus, meaning: &str, source: &str) -> std::io::Result<()> {
+    use ncsight::profile::CodeStatus;
+    let (state, why) = match status {
+        CodeStatus::Simulated => ("simulated", String::new()),
+        CodeStatus::Assumed(a) => ("assumed", format!(" ({a})")),
+        CodeStatus::NotYet => ("not yet", String::new()),
+    };
+    writeln!(out, "  {code:<7} {state:<10} {meaning}{why} [{source}]")
+}
+
 fn machines(name: Option<&str>, out: &mut dyn Write) -> Result<i32, Failure> {
     match name {
         None => {
@@ -920,18 +931,20 @@ fn machines(name: Option<&str>, out: &mut dyn Write) -> Result<i32, Failure> {
                     d.source
                 )?;
             }
-            writeln!(out, "\nG codes:")?;
-            for g in p.g_codes.iter().flat_map(|t| t.iter()) {
-                let code = match g.minor {
-                    Some(m) => format!("G{:02}.{m}", g.major),
-                    None => format!("G{:02}", g.major),
-                };
-                let state = if let ncsight::profile::GFn::NotYet(_) | ncsight::profile::GFn::NotYetReference(_) = g.function { " (not simulated yet)" } else { "" };
-                writeln!(out, "  {code:<7} {}{state}", g.meaning)?;
+            writeln!(
+                out,
+                "\nG codes (status: simulated; assumed = runs with a warning that names the assumption; not yet = alarm NCS-E38, not simulated yet):"
+            )?;
+            for t in p.g_codes {
+                for g in t.codes {
+                    code_line(out, g.name, p.code_status(g), g.meaning, t.source)?;
+                }
             }
             writeln!(out, "\nM codes:")?;
-            for mc in p.m_codes.iter().flat_map(|t| t.iter()) {
-                writeln!(out, "  M{:02}     {}", mc.code, mc.meaning)?;
+            for t in p.m_codes {
+                for mc in t.codes {
+                    code_line(out, &format!("M{:02}", mc.code), mc.function.status(), mc.meaning, t.source)?;
+                }
             }
         }
     }

@@ -56,3 +56,55 @@ fn stated_cycle_times_are_true() {
     }
     assert_eq!(checked, 6);
 }
+
+/// `ncsight machines NAME` lists every code of the profile's tables, in order, with the status
+/// the profile gives it; docs/codes.md is the same list for all profiles (NCSIGHT_BLESS=1
+/// rewrites it).
+#[test]
+fn machines_lists_every_code_with_its_status_and_source() {
+    use ncsight::profile::{self, CodeStatus};
+    let status = |s: CodeStatus| match s {
+        CodeStatus::Simulated => "simulated",
+        CodeStatus::Assumed(_) => "assumed",
+        CodeStatus::NotYet => "not yet",
+    };
+    let mut md = String::from(
+        "# Codes by profile\n\nEvery G and M code of each profile's tables, as `ncsight machines NAME` prints them: \
+**simulated** (run as the controller runs it), **assumed** (run; a warning or this table names what is assumed), \
+**not yet** (the alarm NCS-E38, \"not simulated yet\"). A code that is not listed is not the controller's: \
+IMPROPER G-CODE (G), a machine builder's M code (warning NCS-W05). The source says where the code comes from; \
+\"inferred\" marks a table taken from the nearest controller whose manual was at hand. This file is generated \
+by `NCSIGHT_BLESS=1 cargo test --test docs`.\n",
+    );
+    for p in profile::all() {
+        let (code, out, err) = common::ncsight(&["machines", p.name]);
+        assert_eq!(code, 0, "{err}");
+        let listed: Vec<&str> = out.lines().filter(|l| l.starts_with("  G") || l.starts_with("  M")).collect();
+        let mut want = Vec::new();
+        md.push_str(&format!("\n## {} ({})\n\n| code | status | meaning | source |\n|---|---|---|---|\n", p.name, p.title));
+        for t in p.g_codes {
+            for g in t.codes {
+                let s = p.code_status(g);
+                let why = if let CodeStatus::Assumed(a) = s { format!(" ({a})") } else { String::new() };
+                want.push((g.name.to_string(), status(s)));
+                md.push_str(&format!("| {} | {} | {}{why} | {} |\n", g.name, status(s), g.meaning, t.source));
+            }
+        }
+        for t in p.m_codes {
+            for m in t.codes {
+                let s = m.function.status();
+                let why = if let CodeStatus::Assumed(a) = s { format!(" ({a})") } else { String::new() };
+                want.push((format!("M{:02}", m.code), status(s)));
+                md.push_str(&format!("| M{:02} | {} | {}{why} | {} |\n", m.code, status(s), m.meaning, t.source));
+            }
+        }
+        assert_eq!(listed.len(), want.len(), "{}: {out}", p.name);
+        for (line, (code, st)) in listed.iter().zip(&want) {
+            let mut f = line.split_whitespace();
+            assert_eq!(f.next(), Some(code.as_str()), "{}: {line}", p.name);
+            assert!(line[2 + 8..].starts_with(st), "{}: {line} (want {st})", p.name);
+            assert!(line.ends_with(']'), "{}: a source in brackets: {line}", p.name);
+        }
+    }
+    common::expect_file(&common::root().join("docs/codes.md"), &md);
+}

@@ -55,9 +55,35 @@ fn a_profile_with_a_missing_parameter_is_refused() {
     };
     static G93: &[GDef] = &[GDef { major: 93, minor: None, name: "G93", group: Group::Motion, function: GFn::Thread(ThreadCmd::Cycle(&RULES)), meaning: "test" }];
     let base = profile::by_name("fanuc0m").unwrap();
-    let mut codes: Vec<&'static [GDef]> = base.g_codes.to_vec();
-    codes.push(G93);
+    let mut codes: Vec<profile::Codes<GDef>> = base.g_codes.to_vec();
+    codes.push(profile::Codes { source: "test", codes: G93 });
     let broken: &'static Profile = Box::leak(Box::new(Profile { name: "broken", g_codes: Box::leak(codes.into_boxed_slice()), ..base.clone() }));
     let e = broken.validate().unwrap_err();
     assert!(e.contains("4242"), "{e}");
+}
+
+/// Every code in a profile's tables is known to it: written alone in a block it never gets
+/// "no such code" (IMPROPER G-CODE; for an M code, the machine-specific warning), and it gets "not simulated yet"
+/// (NCS-E38) exactly when its table says so (the status `ncsight machines NAME` prints).
+#[test]
+fn every_code_of_a_table_is_known_and_its_status_holds() {
+    use ncsight::profile::CodeStatus;
+    for p in profile::all() {
+        for g in p.g_defs() {
+            // The GSK980TDi's G10 has the forms L3 and L52 only; bare, it is IMPROPER G-CODE.
+            let block = if g.function == profile::GFn::DataSetting && p.frame.g10 == profile::G10Forms::ToolLifeAndParameters { "G10 L3" } else { g.name };
+            let events = run_text(Params::defaults(p), Switches::default(), Mode::Check, format!("{block}\nM30\n").as_bytes());
+            let codes: Vec<&str> = events.iter().filter_map(|e| if let Event::Diagnostic(d) = e { d.is_alarm().then_some(d.code) } else { None }).collect();
+            let e10 = ncsight::Rule::ImproperGCode.code(p.alarm_style);
+            assert!(!codes.contains(&e10), "{} {}: {codes:?}", p.name, g.name);
+            let not_yet = codes.contains(&"NCS-E38");
+            assert_eq!(not_yet, p.code_status(g) == CodeStatus::NotYet, "{} {}: {codes:?}", p.name, g.name);
+        }
+        for m in p.m_defs() {
+            let events = run_text(Params::defaults(p), Switches::default(), Mode::Check, format!("M{:02}\nM30\n", m.code).as_bytes());
+            let codes: Vec<&str> = events.iter().filter_map(|e| if let Event::Diagnostic(d) = e { Some(d.code) } else { None }).collect();
+            // An M code the table lacks is a machine builder's: NCS-W05.
+            assert!(!codes.contains(&"NCS-W05"), "{} M{}: {codes:?}", p.name, m.code);
+        }
+    }
 }

@@ -125,8 +125,8 @@ pub static PROFILE: Profile = Profile {
     reference_point_mm: crate::motion::Vec3::new(100.0, 0.0, 200.0),
     addresses: super::Letters::new("GMSTFXZUWRIKPQLN"),
     peck_back_off: Some(ParamKey::Number(5139, None)),
-    g_codes: &[common::G_CODES, lathe_a::G_CODES, EXTRA, super::later::FANUC_0T],
-    m_codes: &[common::M_CODES, lathe_a::M_CODES],
+    g_codes: &[super::Codes { source: "the FANUC 0-TC G-code table, system A (the 0i-TC where it lacks)", codes: common::G_CODES }, super::Codes { source: "the FANUC 0-TC G-code table, system A (the 0i-TC where it lacks)", codes: lathe_a::G_CODES }, super::Codes { source: "FANUC 0i-T documentation (inferred for the 0-T; docs/profiles.md)", codes: EXTRA }, super::Codes { source: "the FANUC 0-TC G-code table, system A (the 0i-TC where it lacks)", codes: super::later::FANUC_0T }],
+    m_codes: &[super::Codes { source: "FANUC 0i-TC M codes (inferred for the 0-T)", codes: common::M_CODES }, super::Codes { source: "FANUC 0i-TC M codes (inferred for the 0-T)", codes: lathe_a::M_CODES }],
     params: &[FANUC_RATES, PARAMS, super::FANUC_INPUT, DRY_RUN, super::builder::FANUC, super::FANUC_MACRO, super::FANUC_LATHE_OFFSETS, SETTINGS],
     time: TimeKeys {
         rapid: [ParamKey::Number(1420, None), ParamKey::Number(1420, None), ParamKey::Number(1420, None)],

@@ -114,8 +114,8 @@ pub static PROFILE: Profile = Profile {
     reference_point_mm: crate::motion::Vec3::new(100.0, 0.0, 200.0),
     addresses: super::Letters::new("GMSTFXYZUVWRIJKPQLN"),
     peck_back_off: None,
-    g_codes: &[common::G_CODES, lathe_a::G_CODES, EXTRA, super::later::GSK988T],
-    m_codes: &[common::M_CODES, lathe_a::M_CODES, lathe_a::GSK_M_CODES],
+    g_codes: &[super::Codes { source: "inferred from the GSK980TDi help text (the GSK988T G-code table was not at hand)", codes: common::G_CODES }, super::Codes { source: "inferred from the GSK980TDi help text (the GSK988T G-code table was not at hand)", codes: lathe_a::G_CODES }, super::Codes { source: "GSK988T manual: G32.1, G92.1, G32.2/G32.3, thread repair (seeds 001, 002)", codes: EXTRA }, super::Codes { source: "GSK988T manual G-code table (G12.1/G13.1); the rest inferred from the GSK980TDi help text", codes: super::later::GSK988T }],
+    m_codes: &[super::Codes { source: "inferred from the GSK980TDi help text (M-code list)", codes: common::M_CODES }, super::Codes { source: "inferred from the GSK980TDi help text (M-code list)", codes: lathe_a::M_CODES }, super::Codes { source: "GSK988T manual, G32.1 (M14/M15); the rest inferred from the GSK980TDi help text", codes: lathe_a::GSK_M_CODES }],
     params: &[FANUC_RATES, PARAMS, super::GSK_LATHE_OFFSETS, SETTINGS],
     time: TimeKeys {
         rapid: [ParamKey::Number(1420, None), ParamKey::Number(1420, None), ParamKey::Number(1420, None)],

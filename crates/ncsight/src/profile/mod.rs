@@ -626,6 +626,44 @@ pub enum MFn {
     RigidTapping,
 }
 
+/// One table of a profile's codes and the manual (or the inference) it comes from.
+#[derive(Debug, Clone, Copy)]
+pub struct Codes<T: 'static> {
+    pub source: &'static str,
+    pub codes: &'static [T],
+}
+
+/// How far ncsight simulates a code (what `ncsight machines NAME` prints).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum CodeStatus {
+    /// Run as the controller runs it.
+    Simulated,
+    /// Run, with an assumption a warning names where the controller depends on something a
+    /// simulation does not have (a skip signal).
+    Assumed(&'static str),
+    /// Known to the controller, not simulated: the alarm NCS-E38 "not simulated yet".
+    NotYet,
+}
+
+impl GFn {
+    pub fn status(self) -> CodeStatus {
+        match self {
+            GFn::NotYet(_) | GFn::NotYetReference(_) => CodeStatus::NotYet,
+            GFn::Skip => CodeStatus::Assumed("no skip signal comes: the move runs to its end (NCS-W34)"),
+            _ => CodeStatus::Simulated,
+        }
+    }
+}
+
+impl MFn {
+    pub fn status(self) -> CodeStatus {
+        match self {
+            MFn::Auxiliary => CodeStatus::Assumed("a machine function with no motion: recorded, nothing moves"),
+            _ => CodeStatus::Simulated,
+        }
+    }
+}
+
 #[derive(Debug, Clone, Copy)]
 pub struct MDef {
     pub code: u32,
@@ -840,8 +878,9 @@ pub struct Profile {
     /// The parameter with the power-on back-off e of the lathe peck cycles G74/G75 (one value
     /// for both; their first block rewrites it), if the profile knows it.
     pub peck_back_off: Option<ParamKey>,
-    pub g_codes: &'static [&'static [GDef]],
-    pub m_codes: &'static [&'static [MDef]],
+    /// The G codes, table by table, each table with the manual it comes from.
+    pub g_codes: &'static [Codes<GDef>],
+    pub m_codes: &'static [Codes<MDef>],
     /// The manual's parameters, then ncsight's own settings ([`SETTINGS`]).
     pub params: &'static [&'static [ParamDef]],
     pub time: TimeKeys,
@@ -878,7 +917,7 @@ impl Profile {
                 return fail(format!("parameter {}: default out of range, or no source or meaning", d.key));
             }
         }
-        let all: Vec<&GDef> = p.g_codes.iter().flat_map(|t| t.iter()).collect();
+        let all: Vec<&GDef> = p.g_defs().collect();
         for (i, g) in all.iter().enumerate() {
             if all[i + 1..].iter().any(|h| h.major == g.major && h.minor == g.minor) {
                 return fail(format!("{} twice", g.name));
@@ -942,7 +981,7 @@ impl Profile {
                 return fail(format!("no code for {f:?}"));
             }
         }
-        let ms: Vec<&MDef> = p.m_codes.iter().flat_map(|t| t.iter()).collect();
+        let ms: Vec<&MDef> = p.m_defs().collect();
         for (i, m) in ms.iter().enumerate() {
             if ms[i + 1..].iter().any(|n| n.code == m.code) {
                 return fail(format!("M{} twice", m.code));
@@ -955,18 +994,37 @@ impl Profile {
         Ok(())
     }
 
+    /// How far ncsight simulates `g` on this profile: the function's status, and for G10 the
+    /// forms the profile has (the GSK980TDi's L3 and L52 are not simulated yet).
+    pub fn code_status(&self, g: &GDef) -> CodeStatus {
+        match g.function {
+            GFn::DataSetting if self.frame.g10 == G10Forms::ToolLifeAndParameters => CodeStatus::NotYet,
+            f => f.status(),
+        }
+    }
+
+    /// Every G code of the profile, in table order.
+    pub fn g_defs(&self) -> impl Iterator<Item = &'static GDef> + '_ {
+        self.g_codes.iter().flat_map(|t| t.codes.iter())
+    }
+
+    /// Every M code of the profile, in table order.
+    pub fn m_defs(&self) -> impl Iterator<Item = &'static MDef> + '_ {
+        self.m_codes.iter().flat_map(|t| t.codes.iter())
+    }
+
     pub fn g_code(&self, major: u32, minor: Option<u32>) -> Option<&'static GDef> {
-        self.g_codes.iter().flat_map(|t| t.iter()).find(|g| g.major == major && g.minor == minor)
+        self.g_defs().find(|g| g.major == major && g.minor == minor)
     }
 
     /// The name of the code that does `f` (`G01` for linear interpolation), from the profile's
     /// table; `?` if the profile has none (a mistake in a table, caught by the profile tests).
     pub fn name_of(&self, f: GFn) -> &'static str {
-        self.g_codes.iter().flat_map(|t| t.iter()).find(|g| g.function == f).map_or("?", |g| g.name)
+        self.g_defs().find(|g| g.function == f).map_or("?", |g| g.name)
     }
 
     pub fn m_code(&self, code: u32) -> Option<&'static MDef> {
-        self.m_codes.iter().flat_map(|t| t.iter()).find(|m| m.code == code)
+        self.m_defs().find(|m| m.code == code)
     }
 
     pub fn param(&self, key: ParamKey) -> Option<(usize, &'static ParamDef)> {

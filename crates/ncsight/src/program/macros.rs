@@ -103,10 +103,10 @@ impl Reading<'_> {
     fn group_code(&self, number: i64) -> Result<Value, ExprError> {
         let (m, p) = (self.modal, self.profile);
         let group = p.macros.group_numbers.iter().find(|(n, _)| i64::from(*n) + 4000 == number).map(|(_, g)| *g);
-        let Some(group) = group.filter(|g| p.g_codes.iter().flat_map(|t| t.iter()).any(|d| d.group == *g)) else {
+        let Some(group) = group.filter(|g| p.g_defs().any(|d| d.group == *g)) else {
             return Err(no_such(number, &format!("{} has no G-code group {} (or ncsight does not know its codes)", p.name, number - 4000)));
         };
-        let drill_code = m.drill.kind.map(|k| GFn::Drill(k)).filter(|f| p.g_codes.iter().flat_map(|t| t.iter()).any(|d| d.function == *f && d.group == group));
+        let drill_code = m.drill.kind.map(|k| GFn::Drill(k)).filter(|f| p.g_defs().any(|d| d.function == *f && d.group == group));
         let f = match group {
             // A lathe's drilling cycle is a group 01 code on the GSK profiles.
             Group::Motion | Group::CannedCycle if drill_code.is_some() => drill_code,
@@ -138,7 +138,7 @@ impl Reading<'_> {
         }
         // The last code commanded in the group, else its power-on code: only for a group whose
         // codes the profile simulates (G61/G64 are not simulated on the lathes yet).
-        let simulated = p.g_codes.iter().flat_map(|t| t.iter()).any(|d| d.group == group && !matches!(d.function, GFn::NotYet(_) | GFn::NotYetReference(_)));
+        let simulated = p.g_defs().any(|d| d.group == group && !matches!(d.function, GFn::NotYet(_) | GFn::NotYetReference(_)));
         match m.group_codes[group as usize] {
             0 if !simulated => Err(no_such(number, "the codes of this group are not simulated by ncsight yet")),
             0 => match POWER_ON.iter().find(|(g, _)| *g == group) {
