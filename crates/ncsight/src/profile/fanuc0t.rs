@@ -71,42 +71,6 @@ const PARAMS: &[ParamDef] = &[
         default: 0.0,
         source: "docs/sources.md section 3 (inferred)",
     },
-    ParamDef {
-        key: ParamKey::Number(5140, None),
-        meaning: "G76 minimum cut dmin",
-        unit: "0.001 mm",
-        min: 0.0,
-        max: 999999.0,
-        default: 100.0,
-        source: "docs/sources.md section 3 (inferred); default assumed",
-    },
-    ParamDef {
-        key: ParamKey::Number(5141, None),
-        meaning: "G76 finishing allowance d",
-        unit: "0.001 mm",
-        min: 0.0,
-        max: 999999.0,
-        default: 50.0,
-        source: "docs/sources.md section 3 (inferred); default assumed",
-    },
-    ParamDef {
-        key: ParamKey::Number(5142, None),
-        meaning: "G76 number of finishing passes m",
-        unit: "passes",
-        min: 1.0,
-        max: 99.0,
-        default: 1.0,
-        source: "docs/sources.md section 3 (inferred); default assumed",
-    },
-    ParamDef {
-        key: ParamKey::Number(5143, None),
-        meaning: "G76 tool angle a",
-        unit: "deg",
-        min: 0.0,
-        max: 99.0,
-        default: 60.0,
-        source: "docs/sources.md section 3 (inferred); default assumed",
-    },
 ];
 
 pub static PROFILE: Profile = Profile {
@@ -127,7 +91,7 @@ pub static PROFILE: Profile = Profile {
     peck_back_off: Some(ParamKey::Number(5139, None)),
     g_codes: &[super::Codes { source: "the FANUC 0-TC G-code table, system A (the 0i-TC where it lacks)", codes: common::G_CODES }, super::Codes { source: "the FANUC 0-TC G-code table, system A (the 0i-TC where it lacks)", codes: lathe_a::G_CODES }, super::Codes { source: "FANUC 0i-T documentation (inferred for the 0-T; docs/profiles.md)", codes: EXTRA }, super::Codes { source: "the FANUC 0-TC G-code table, system A (the 0i-TC where it lacks)", codes: super::later::FANUC_0T }],
     m_codes: &[super::Codes { source: "FANUC 0i-TC M codes (inferred for the 0-T)", codes: common::M_CODES }, super::Codes { source: "FANUC 0i-TC M codes (inferred for the 0-T)", codes: lathe_a::M_CODES }],
-    params: &[FANUC_RATES, PARAMS, super::FANUC_INPUT, DRY_RUN, super::builder::FANUC, super::FANUC_MACRO, super::FANUC_LATHE_OFFSETS, SETTINGS],
+    params: &[FANUC_RATES, PARAMS, super::FANUC_G76, super::FANUC_INPUT, DRY_RUN, super::builder::FANUC, super::FANUC_MACRO, super::FANUC_LATHE_OFFSETS, SETTINGS],
     time: TimeKeys {
         rapid: [ParamKey::Number(1420, None), ParamKey::Number(1420, None), ParamKey::Number(1420, None)],
         dry_run: ParamKey::Setting("dry_run_mm_min"),

@@ -3,8 +3,8 @@
 //! manual does (params_alarms.md section 3).
 
 use super::common::{self, g, gp};
-use super::lathe_a::{self, LATER_G76, LATER_THREAD};
-use super::{FANUC_RATES, SETTINGS, CycleRules, HoldRule, JkWords, PullOutRule, GFn, QPoint, ThreadCmd, ThreadRules, GDef, Group, IntegerLengths, MachineKind, ParamDef, ParamKey, Profile, TimeKeys};
+use super::lathe_a;
+use super::{Compound, G76Keys, FANUC_RATES, SETTINGS, CycleRules, HoldRule, JkWords, PullOutRule, GFn, QPoint, ThreadCmd, ThreadRules, GDef, Group, IntegerLengths, MachineKind, ParamDef, ParamKey, Profile, TimeKeys};
 use crate::alarm::AlarmStyle;
 use crate::motion::ArcDir;
 
@@ -29,10 +29,35 @@ static G92_1: CycleRules = CycleRules {
     hold: HoldRule::Ignored,
 };
 
+/// G92 (GSK988TA/TB manual, G92 (printed p104), the same family as the 988T): R taper, F lead,
+/// J (not below zero) and K pull-out, modal, without direction; L starts 1-99; Q start angle as
+/// G32. No I (inch) word in its format. Inferred where its page was cut off: the pull-out for
+/// what J/K omit is that of G92.1 on the same control (parameters 5130/5131, seed 001 G92.1
+/// notes 1-3), and FEED HOLD waits for the thread's end, as in the G32 notes.
+static G92: CycleRules = CycleRules {
+    code: "G92",
+    rigid: false,
+    negative_f_left_hand: false,
+    lead_i: false,
+    lead_e: false,
+    repair_p: false,
+    starts_l: true,
+    jk: JkWords::NonNegative,
+    flank_k: false,
+    ts_before: false,
+    q_start: true,
+    taper: b'R',
+    taper_limit: true,
+    pull_out: PullOutRule::JkChamfer { amount: ParamKey::Number(5130, None), angle: ParamKey::Number(5131, None) },
+    hold: HoldRule::AfterRun,
+};
+
 const EXTRA: &[GDef] = &[
-    g(76, Group::NonModal, LATER_G76, "compound thread cutting cycle"),
+    g(76, Group::NonModal, GFn::CompoundThread(Compound::G76), "compound thread cutting cycle, two blocks (inferred from the GSK980TDi help text; the GSK988T manual's definitions page agrees: sqrt(n) depths, flank infeed)"),
+    g(33, Group::Motion, GFn::Thread(ThreadCmd::Tap), "tapping: in, spindle reversed, out (inferred from the GSK980TDi help text)"),
+    g(34, Group::Motion, GFn::Thread(ThreadCmd::VariableLead), "variable-lead thread cutting: F, R per revolution, J/K (GSK988T manual 2.16.2, its example G34 W-78 F4 J5 K2 R0.2)"),
     g(32, Group::Motion, GFn::Thread(ThreadCmd::Lead), "thread cutting: F lead or I threads per inch, J/K pull-out, Q start angle"),
-    g(92, Group::Motion, LATER_THREAD, "thread cutting cycle (the GSK988T manual's G92 page was not available)"),
+    g(92, Group::Motion, GFn::Thread(ThreadCmd::Cycle(&G92)), "thread cutting cycle: R taper, F lead, J/K pull-out, L starts, Q start angle (GSK988TA/TB manual, G92)"),
     gp(32, 1, "G32.1", Group::Motion, GFn::Thread(ThreadCmd::Rigid), "rigid thread cutting (GSK988T manual)"),
     gp(32, 2, "G32.2", Group::Motion, GFn::Thread(ThreadCmd::Arc(ArcDir::Cw)), "arc thread, clockwise (GSK988T manual, G32.2/G32.3)"),
     gp(32, 3, "G32.3", Group::Motion, GFn::Thread(ThreadCmd::Arc(ArcDir::Ccw)), "arc thread, counter-clockwise (GSK988T manual, G32.2/G32.3)"),
@@ -69,7 +94,7 @@ const PARAMS: &[ParamDef] = &[
     },
     ParamDef {
         key: ParamKey::Number(5130, None),
-        meaning: "G92.1 pull-out (chamfer) length along the long axis when J and K are omitted",
+        meaning: "G92 and G92.1 pull-out (chamfer) length along the long axis when J and K are omitted; G76 pull-out r (its first block's P rewrites it)",
         unit: "0.1 x lead",
         min: 0.0,
         max: 127.0,
@@ -78,7 +103,7 @@ const PARAMS: &[ParamDef] = &[
     },
     ParamDef {
         key: ParamKey::Number(5131, None),
-        meaning: "G92.1 pull-out angle; 0 = 45 degrees",
+        meaning: "G92, G92.1 and G76 pull-out angle; 0 = 45 degrees",
         unit: "deg",
         min: 0.0,
         max: 89.0,
@@ -114,15 +139,25 @@ pub static PROFILE: Profile = Profile {
     reference_point_mm: crate::motion::Vec3::new(100.0, 0.0, 200.0),
     addresses: super::Letters::new("GMSTFXYZUVWRIJKPQLN"),
     peck_back_off: None,
-    g_codes: &[super::Codes { source: "inferred from the GSK980TDi help text (the GSK988T G-code table was not at hand)", codes: common::G_CODES }, super::Codes { source: "inferred from the GSK980TDi help text (the GSK988T G-code table was not at hand)", codes: lathe_a::G_CODES }, super::Codes { source: "GSK988T manual: G32.1, G92.1, G32.2/G32.3, thread repair (seeds 001, 002)", codes: EXTRA }, super::Codes { source: "GSK988T manual G-code table (G12.1/G13.1); the rest inferred from the GSK980TDi help text", codes: super::later::GSK988T }],
+    g_codes: &[super::Codes { source: "inferred from the GSK980TDi help text (the GSK988T G-code table was not at hand)", codes: common::G_CODES }, super::Codes { source: "inferred from the GSK980TDi help text (the GSK988T G-code table was not at hand)", codes: lathe_a::G_CODES }, super::Codes { source: "GSK988T manual: G32.1, G92.1, G32.2/G32.3, thread repair (seeds 001, 002); G92 of the GSK988TA/TB manual; G34 of the GSK988T manual", codes: EXTRA }, super::Codes { source: "GSK988T manual G-code table (G12.1/G13.1); the rest inferred from the GSK980TDi help text", codes: super::later::GSK988T }],
     m_codes: &[super::Codes { source: "inferred from the GSK980TDi help text (M-code list)", codes: common::M_CODES }, super::Codes { source: "inferred from the GSK980TDi help text (M-code list)", codes: lathe_a::M_CODES }, super::Codes { source: "GSK988T manual, G32.1 (M14/M15); the rest inferred from the GSK980TDi help text", codes: lathe_a::GSK_M_CODES }],
-    params: &[FANUC_RATES, PARAMS, super::GSK_LATHE_OFFSETS, SETTINGS],
+    params: &[FANUC_RATES, PARAMS, super::FANUC_G76, super::GSK_LATHE_OFFSETS, SETTINGS],
     time: TimeKeys {
         rapid: [ParamKey::Number(1420, None), ParamKey::Number(1420, None), ParamKey::Number(1420, None)],
         dry_run: ParamKey::Number(1410, None),
         feed_max: ParamKey::Number(1422, None),
     },
-    thread: ThreadRules { q_point: QPoint::Alarm, arc_q_unit_deg: 1.0, pull_out_speed: None, after_end_feed: Some(ParamKey::Number(1466, None)), pull_out_accel: Some(ParamKey::Number(1628, None)), repair_enable: Some(ParamKey::Number(8135, Some(7))), g32_pull_out: true, g76: None },
+    thread: ThreadRules { q_point: QPoint::Alarm, arc_q_unit_deg: 1.0, pull_out_speed: None, after_end_feed: Some(ParamKey::Number(1466, None)), pull_out_accel: Some(ParamKey::Number(1628, None)), repair_enable: Some(ParamKey::Number(8135, Some(7))), g32_pull_out: true, g76: Some(G76Keys {
+        // The GSK988T numbers its parameters as FANUC does (1022, 1422 on its G01/G02 page;
+        // 5130/5131 in G92.1): the FANUC 0i-T G76 numbers are assumed.
+        finishing: ParamKey::Number(5142, None),
+        pull_out: ParamKey::Number(5130, None),
+        angle: ParamKey::Number(5143, None),
+        dmin_um: ParamKey::Number(5140, None),
+        allowance: ParamKey::Number(5141, None),
+        allowance_to_mm: 0.001,
+        pull_out_angle: Some(ParamKey::Number(5131, None)),
+    }) },
     drill: super::DrillRules::NONE,
     calls: super::CallRules {
         max_count: 9999,

@@ -115,8 +115,6 @@ pub(super) const GSK988T: &[GDef] = &[
     g(27, Group::NonModal, GFn::ReferenceCheck, "reference point return check (inferred)"),
     g(30, Group::NonModal, GFn::OtherReferenceReturn, "return to the 2nd, 3rd or 4th reference point (inferred)"),
     g(31, Group::NonModal, GFn::Skip, "skip function (inferred)"),
-    g(33, Group::Motion, LATER, "tapping cycle (inferred)"),
-    g(34, Group::Motion, LATER, "variable-lead thread cutting (inferred)"),
     g(36, Group::NonModal, LATER, "automatic tool compensation, X (inferred)"),
     g(37, Group::NonModal, LATER, "automatic tool compensation, Z (inferred)"),
     g(52, Group::NonModal, GFn::LocalCoordinates, "local coordinate system (inferred)"),

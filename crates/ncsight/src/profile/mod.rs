@@ -589,6 +589,47 @@ pub struct G76Keys {
     pub pull_out_angle: Option<ParamKey>,
 }
 
+/// The G76 parameters in FANUC 0i-T numbering (minimum cut, finishing allowance, finishing
+/// passes, tool angle), for the profiles that number their parameters as FANUC does.
+pub(crate) const FANUC_G76: &[ParamDef] = &[
+    ParamDef {
+        key: ParamKey::Number(5140, None),
+        meaning: "G76 minimum cut dmin",
+        unit: "0.001 mm",
+        min: 0.0,
+        max: 999999.0,
+        default: 100.0,
+        source: "FANUC 0i-T numbering (docs/sources.md section 3; inferred); default assumed",
+    },
+    ParamDef {
+        key: ParamKey::Number(5141, None),
+        meaning: "G76 finishing allowance d",
+        unit: "0.001 mm",
+        min: 0.0,
+        max: 999999.0,
+        default: 50.0,
+        source: "FANUC 0i-T numbering (docs/sources.md section 3; inferred); default assumed",
+    },
+    ParamDef {
+        key: ParamKey::Number(5142, None),
+        meaning: "G76 number of finishing passes m",
+        unit: "passes",
+        min: 1.0,
+        max: 99.0,
+        default: 1.0,
+        source: "FANUC 0i-T numbering (docs/sources.md section 3; inferred); default assumed",
+    },
+    ParamDef {
+        key: ParamKey::Number(5143, None),
+        meaning: "G76 tool angle a",
+        unit: "deg",
+        min: 0.0,
+        max: 99.0,
+        default: 60.0,
+        source: "FANUC 0i-T numbering (docs/sources.md section 3; inferred); default assumed",
+    },
+];
+
 /// One G code of a profile.
 #[derive(Debug, Clone, Copy)]
 pub struct GDef {
