@@ -32,11 +32,20 @@ pub enum DrillKind {
     FaceG83,
     /// GSK980TDi lathe G87: peck drilling along X from the start point (help text G83/87).
     SideG87,
-    /// FANUC 0-T lathe G83 without Q: drilling along Z from the R level, dwell, rapid out to the
-    /// initial level (docs/commands/g83_g87_lathe.md).
+    /// FANUC 0-T lathe G83: drilling along Z from the R level (pecking with Q), dwell, rapid out
+    /// to the initial level (docs/commands/g83_g87_lathe.md).
     FaceFromR,
-    /// FANUC 0-T lathe G87 without Q: the same along X.
+    /// FANUC 0-T lathe G87: the same along X.
     SideFromR,
+    /// FANUC 0-T lathe G84: tapping along Z from the R level, the spindle reversed at the
+    /// bottom (docs/commands/g83_g87_lathe.md, inferred from the FANUC 0i-T family).
+    FaceTapR,
+    /// FANUC 0-T lathe G88: the same along X.
+    SideTapR,
+    /// FANUC 0-T lathe G85: boring along Z from the R level, feed out to R.
+    FaceBoreR,
+    /// FANUC 0-T lathe G89: the same along X.
+    SideBoreR,
     /// GSK980TDi G84: rigid tapping along Z from the start point (help text G84/88).
     TapFace,
     /// GSK980TDi G88: rigid tapping along X from the start point.
@@ -60,8 +69,10 @@ impl DrillKind {
             DrillKind::G89 => "G89",
             DrillKind::FaceG83 | DrillKind::FaceFromR => "G83",
             DrillKind::SideG87 | DrillKind::SideFromR => "G87",
-            DrillKind::TapFace => "G84",
-            DrillKind::TapSide => "G88",
+            DrillKind::TapFace | DrillKind::FaceTapR => "G84",
+            DrillKind::TapSide | DrillKind::SideTapR => "G88",
+            DrillKind::FaceBoreR => "G85",
+            DrillKind::SideBoreR => "G89",
         }
     }
 
@@ -82,12 +93,24 @@ impl DrillKind {
 
     /// A lathe cycle: it drills along Z (G83) or X (G87) of the lathe, not along a plane's normal.
     pub fn on_lathe(self) -> bool {
-        matches!(self, DrillKind::FaceG83 | DrillKind::SideG87 | DrillKind::FaceFromR | DrillKind::SideFromR | DrillKind::TapFace | DrillKind::TapSide)
+        matches!(
+            self,
+            DrillKind::FaceG83
+                | DrillKind::SideG87
+                | DrillKind::FaceFromR
+                | DrillKind::SideFromR
+                | DrillKind::TapFace
+                | DrillKind::TapSide
+                | DrillKind::FaceTapR
+                | DrillKind::SideTapR
+                | DrillKind::FaceBoreR
+                | DrillKind::SideBoreR
+        )
     }
 
     /// The lathe cycles that drill along X.
     pub fn along_x(self) -> bool {
-        matches!(self, DrillKind::SideG87 | DrillKind::SideFromR | DrillKind::TapSide)
+        matches!(self, DrillKind::SideG87 | DrillKind::SideFromR | DrillKind::TapSide | DrillKind::SideTapR | DrillKind::SideBoreR)
     }
 
     /// GSK980TDi rigid tapping G84/G88: spindle-synchronised, not laid out by the hole cycles of `cycles::drill`.

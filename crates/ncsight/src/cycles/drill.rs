@@ -107,8 +107,16 @@ pub fn expand_each(h: &Hole, s: &mut dyn FnMut(Step)) {
         s(Step::Rapid(p(h.r)));
     }
     let down = if h.bottom < h.r { -1.0 } else { 1.0 };
-    match h.kind {
-        DrillKind::G73 | DrillKind::G83 => {
+    // Pecking: G73 backs off d after each peck; G83 (and the FANUC 0-T lathe G83/G87 with Q
+    // under the standard cycle) goes back to R and down again to d short of the last depth.
+    let peck = match h.kind {
+        DrillKind::G73 => Some(false),
+        DrillKind::G83 => Some(true),
+        DrillKind::FaceFromR | DrillKind::SideFromR if h.q > 0.0 => Some(h.deep),
+        _ => None,
+    };
+    match peck {
+        Some(full_return) => {
             // Peck k ends at R + k Q, computed afresh, and within a nanometre of the bottom is the
             // bottom: the control counts in whole increments, so rounding leaves no sliver of a
             // last peck (LinuxCNC's rs274, adding Q again and again, sometimes makes one).
@@ -121,7 +129,7 @@ pub fn expand_each(h: &Hole, s: &mut dyn FnMut(Step)) {
                 if next == h.bottom {
                     break;
                 }
-                if h.kind == DrillKind::G73 {
+                if !full_return {
                     s(Step::Rapid(p(next - down * h.d)));
                 } else {
                     s(Step::Rapid(p(h.r)));
@@ -129,7 +137,7 @@ pub fn expand_each(h: &Hole, s: &mut dyn FnMut(Step)) {
                 }
             }
         }
-        _ => s(Step::Feed(p(h.bottom), h.feed)),
+        None => s(Step::Feed(p(h.bottom), h.feed)),
     }
     let dwell = |s: &mut dyn FnMut(Step)| {
         if h.dwell_s > 0.0 {
@@ -142,8 +150,8 @@ pub fn expand_each(h: &Hole, s: &mut dyn FnMut(Step)) {
             dwell(s);
             s(Step::Rapid(p(ret)));
         }
-        DrillKind::G85 | DrillKind::G89 => {
-            if h.kind == DrillKind::G89 {
+        DrillKind::G85 | DrillKind::G89 | DrillKind::FaceBoreR | DrillKind::SideBoreR => {
+            if h.kind != DrillKind::G85 {
                 dwell(s);
             }
             s(Step::Feed(p(h.r), h.feed));
@@ -151,7 +159,7 @@ pub fn expand_each(h: &Hole, s: &mut dyn FnMut(Step)) {
                 s(Step::Rapid(p(ret)));
             }
         }
-        DrillKind::G74 | DrillKind::G84 => {
+        DrillKind::G74 | DrillKind::G84 | DrillKind::FaceTapR | DrillKind::SideTapR => {
             // Tapping: reverse at the bottom, feed out to R, turn forward again.
             dwell(s);
             s(Step::Spindle(-h.rpm));

@@ -261,12 +261,21 @@ fn lathe_from_r_block(step: &mut Step, words: &mut Words, kind: DrillKind) -> Re
         step.st.drill.initial = step.st.pos.axis(along);
         step.st.drill.kind = Some(kind);
     }
+    let drilling = matches!(kind, DrillKind::FaceFromR | DrillKind::SideFromR);
     if let Some(w) = words.peek(b'Q') {
-        return Err(step.alarm(
-            Rule::NotSupported,
-            w.span,
-            format!("{}: the peck drilling of the FANUC 0-T {code} (with Q) is not simulated: the sources here give only the cycle without Q", w.text()),
-        ));
+        if !drilling {
+            // Peck tapping (FANUC 0i-T 5104#6 PCT) is not simulated; boring has no Q.
+            if matches!(kind, DrillKind::FaceTapR | DrillKind::SideTapR) {
+                return Err(step.alarm(Rule::NotSupported, w.span, format!("{}: peck tapping (FANUC 5104 bit 6) is not simulated; {code} without Q taps in one feed", w.text())));
+            }
+            return Err(step.alarm(Rule::WordNotTaken, w.span, format!("{}: {code} (boring) has no peck depth Q", w.text())));
+        }
+    }
+    if let Some(w) = words.take(b'Q') {
+        // The depth of each peck along the drilling axis (a radius value along X, as R): always
+        // incremental and positive (the FANUC 0-M rule, seed 003 8.1.7; inferred for the lathe).
+        let v = step.length(w)?.abs();
+        step.st.drill.q = Some(v);
     }
     let drills = [b'X', b'Z', b'U', b'W', b'R'].iter().any(|l| words.has(*l));
     if let Some(w) = words.take(b'R') {
@@ -298,6 +307,18 @@ fn lathe_from_r_block(step: &mut Step, words: &mut Words, kind: DrillKind) -> Re
             format!("{code}: R {r_level:.3} and bottom {bottom:.3}: the R level must lie between the initial level {:.3} and the hole bottom", d.initial),
         ));
     }
+    let q = if drilling { d.q.unwrap_or(0.0) } else { 0.0 };
+    if q > 0.0 {
+        let pecks = ((bottom - r_level).abs() / q).ceil() * repeats as f64;
+        if pecks > MAX_PECKS {
+            return Err(step.alarm(Rule::MotionLimit, step.span, format!("{code}: {pecks:.0} pecks in one block (Q too small for the depth, times K); at most {MAX_PECKS}")));
+        }
+    }
+    let rules = step.profile.drill;
+    let full_return = rules.lathe_peck_full_return.is_some_and(|k| step.params.get(k) != 0.0);
+    let um = |key: Option<ParamKey>| key.map_or(0.0, |k| step.params.get(k) * 0.001);
+    let d_mm = if full_return { um(rules.g83_clearance_um) } else { um(rules.g73_retract_um) };
+    let tapping = matches!(kind, DrillKind::FaceTapR | DrillKind::SideTapR);
     let rpm = step.rpm_here();
     let global = lathe_global(place, along);
     for _ in 0..repeats {
@@ -312,15 +333,18 @@ fn lathe_from_r_block(step: &mut Step, words: &mut Words, kind: DrillKind) -> Re
             r: r_level,
             bottom,
             return_initial: true,
-            q: 0.0,
+            q,
             dwell_s: d.dwell_s.unwrap_or(0.0),
-            d: 0.0,
-            deep: false,
+            d: d_mm,
+            deep: full_return,
             shift_dir: [0.0; 2],
             feed,
             rpm,
         };
-        emit_hole(step, &hole, global);
+        let first = emit_hole(step, &hole, global);
+        if tapping {
+            hold_through_tapping(step, first, along);
+        }
     }
     Ok(())
 }
@@ -401,6 +425,18 @@ fn rigid_tap_block(step: &mut Step, words: &mut Words, kind: DrillKind) -> Resul
         }
     }
     Ok(())
+}
+
+/// Tapping (seed 003 8.1.2, 8.1.8; the FANUC 0-T G84/G88 inferred the same): feed hold and the
+/// feed override do not act from the R level to the end of the hole's records from `first`;
+/// the positioning to the hole (a rapid that keeps the drilling axis `along`) still stops.
+fn hold_through_tapping(step: &mut Step, first: usize, along: usize) {
+    let recs = step.records_since(first);
+    let positioning = usize::from(matches!(recs.first().map(|r| &r.op), Some(Op::Rapid { from, to }) if from.axis(along) == to.axis(along)));
+    for r in recs.iter_mut().skip(positioning) {
+        r.hold = Hold::AfterRun;
+        r.override_free = true;
+    }
 }
 
 /// A block while a drilling cycle is in force. `entering`: the block names a cycle code.
@@ -563,14 +599,8 @@ pub(super) fn block(step: &mut Step, words: &mut Words, kind: DrillKind, enterin
         let first = emit_hole(step, &hole, |l, _| plane.from_local(l));
         // Tapping: feed hold and feed override are ignored until the cycle ends (seed 003 8.1.2);
         // positioning to the hole still stops. Single block stops after each hole (BEHAVIOUR.md).
-        let tapping = matches!(kind, DrillKind::G74 | DrillKind::G84);
-        let recs = step.records_since(first);
-        let positioning = usize::from(matches!(recs.first().map(|r| &r.op), Some(Op::Rapid { from, to }) if from.axis(n) == to.axis(n)));
-        if tapping {
-            for r in recs.iter_mut().skip(positioning) {
-                r.hold = Hold::AfterRun;
-                r.override_free = true;
-            }
+        if matches!(kind, DrillKind::G74 | DrillKind::G84) {
+            hold_through_tapping(step, first, n);
         }
     }
     Ok(())

@@ -144,6 +144,7 @@ pub static PROFILE: Profile = Profile {
         g73_retract_um: Some(ParamKey::Number(531, None)),
         g83_clearance_um: Some(ParamKey::Number(532, None)),
         shift_bits: Some((ParamKey::Number(2, Some(4)), ParamKey::Number(2, Some(5)))),
+        lathe_peck_full_return: None,
     },
     calls: super::CallRules::FANUC,
     macros: super::MacroRules { group_numbers: super::FANUC_M_GROUPS, ..super::MacroRules::FANUC },

@@ -68,10 +68,6 @@ pub(super) const FANUC_0T: &[GDef] = &[
     g(67, Group::MacroCall, GFn::ModalMacroCancel, "custom macro modal call cancel"),
     g(68, Group::Rotation, LATER, "mirror image for double turrets on"),
     g(69, Group::Rotation, LATER, "mirror image for double turrets off"),
-    g(84, Group::CannedCycle, LATER, "face tapping cycle"),
-    g(85, Group::CannedCycle, LATER, "face boring cycle"),
-    g(88, Group::CannedCycle, LATER, "side tapping cycle"),
-    g(89, Group::CannedCycle, LATER, "side boring cycle"),
 ];
 
 /// GSK980TDi (every code of the on-line help text).

@@ -329,11 +329,15 @@ pub struct DrillRules {
     /// The G76/G87 shift direction bits (low, high): (high, low) 00 = +X, 01 = -X, 10 = +Y,
     /// 11 = -Y (FANUC 0-M parameter 2 bits 4 and 5).
     pub shift_bits: Option<(ParamKey, ParamKey)>,
+    /// The lathe's G83/G87 with Q: the bit that chooses the standard peck cycle (1: back to R
+    /// after each peck, then down to `g83_clearance_um` short) over the high-speed one (0: back
+    /// off `g73_retract_um`) (FANUC 0i-T 5101#2 RTR, inferred).
+    pub lathe_peck_full_return: Option<ParamKey>,
 }
 
 impl DrillRules {
     /// A profile without those cycles' parameters.
-    pub const NONE: DrillRules = DrillRules { g73_retract_um: None, g83_clearance_um: None, shift_bits: None };
+    pub const NONE: DrillRules = DrillRules { g73_retract_um: None, g83_clearance_um: None, shift_bits: None, lathe_peck_full_return: None };
 }
 
 /// How the controller calls subprogrammes (M98) and returns from them (M99).
@@ -999,6 +1003,13 @@ impl Profile {
                     DrillKind::G73 => d.g73_retract_um.map(|k| keys.push(k)).is_none(),
                     DrillKind::G83 => d.g83_clearance_um.map(|k| keys.push(k)).is_none(),
                     DrillKind::G76 | DrillKind::G87 => d.shift_bits.map(|(a, b)| keys.extend([a, b])).is_none(),
+                    DrillKind::FaceFromR | DrillKind::SideFromR => match (d.lathe_peck_full_return, d.g73_retract_um, d.g83_clearance_um) {
+                        (Some(a), Some(b), Some(c)) => {
+                            keys.extend([a, b, c]);
+                            false
+                        }
+                        _ => true,
+                    },
                     _ => false,
                 };
                 if missing {
