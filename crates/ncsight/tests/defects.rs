@@ -56,7 +56,7 @@ fn codes_of_the_manual_are_not_simulated_yet_not_unknown() {
         ("fanuc0m", "G15"),
         ("fanuc0m", "G68 X0 Y0 R45."),
         ("fanuc0m", "G69"),
-        ("fanuc0t", "G84 Z-10. F1."),
+        ("fanuc0t", "G12.1"),
         ("gsk980tdi", "G36 X10"),
         ("gsk988t", "G12.1"),
         ("yasnac-lx3", "G34 W-10 F2"),
