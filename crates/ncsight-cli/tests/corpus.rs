@@ -52,14 +52,22 @@ fn corpus_checks_give_clear_answers() {
         let machine = machine_for(&name);
         // Run from the corpus folder so the file names in the output do not depend on paths.
         let shown = format!("corpus/{name}");
-        let params = params_for(&name);
-        let args: Vec<&str> = ["check", f.to_str().unwrap(), "--machine", machine].into_iter().chain(params.iter().copied()).collect();
+        let mut params: Vec<String> = params_for(&name).iter().map(|p| p.to_string()).collect();
+        // The machine a programme is written for, where it has axes the profile's default lacks
+        // (a 4th axis, a C axis): tests/corpus/<file>.toml.
+        let setup = format!("tests/corpus/{name}.toml");
+        if common::root().join(&setup).is_file() {
+            params.extend(["--setup".to_string(), setup]);
+        }
+        let run_params: Vec<String> = params.iter().map(|p| if p.starts_with("tests/") { common::root().join(p).to_str().unwrap().to_string() } else { p.clone() }).collect();
+        let params: Vec<&str> = params.iter().map(String::as_str).collect();
+        let args: Vec<&str> = ["check", f.to_str().unwrap(), "--machine", machine].into_iter().chain(run_params.iter().map(String::as_str)).collect();
         let (code, out, err) = common::ncsight(&args);
         assert!(code == 0 || code == 1, "{name}: exit {code}: {err}");
         let out = out.replace(f.to_str().unwrap(), &shown);
         assert!(out.contains(&format!("{shown}: ")), "{name}: no summary line");
         common::expect_file(&out_dir.join(format!("{name}.check")), &format!("$ ncsight check {shown} --machine {machine}{}\n{out}", params.iter().map(|p| format!(" {p}")).collect::<String>()));
-        let args: Vec<&str> = ["run", f.to_str().unwrap(), "--machine", machine, "--format", "jsonl"].into_iter().chain(params.iter().copied()).collect();
+        let args: Vec<&str> = ["run", f.to_str().unwrap(), "--machine", machine, "--format", "jsonl"].into_iter().chain(run_params.iter().map(String::as_str)).collect();
         let (code, _, err) = common::ncsight(&args);
         assert!(code == 0 || code == 1, "{name}: run exit {code}: {err}");
     }
@@ -85,11 +93,17 @@ fn corpus_programme_libraries_run_from_each_entry() {
         let f = corpus.join(name);
         let machine = machine_for(name);
         let shown = format!("corpus/{name}");
-        let args: Vec<&str> = ["check", f.to_str().unwrap(), "--machine", machine, "--main", main].into_iter().chain(extra.iter().copied()).collect();
+        let setup = format!("tests/corpus/{name}.toml");
+        let setup_path = common::root().join(&setup);
+        let with_setup: Vec<&str> = if setup_path.is_file() { vec!["--setup", setup_path.to_str().unwrap()] } else { vec![] };
+        let args: Vec<&str> = ["check", f.to_str().unwrap(), "--machine", machine, "--main", main].into_iter().chain(extra.iter().copied()).chain(with_setup.iter().copied()).collect();
         let (code, out, err) = common::ncsight(&args);
         assert!(code == 0 || code == 1, "{name} O{main}: exit {code}: {err}");
         let out = out.replace(f.to_str().unwrap(), &shown);
-        let shown_args: String = extra.iter().map(|a| format!(" {a}")).collect();
+        let mut shown_args: String = extra.iter().map(|a| format!(" {a}")).collect();
+        if setup_path.is_file() {
+            shown_args.push_str(&format!(" --setup {setup}"));
+        }
         common::expect_file(&out_dir.join(format!("{name}.O{main}.check")), &format!("$ ncsight check {shown} --machine {machine} --main {main}{shown_args}\n{out}"));
     }
 }

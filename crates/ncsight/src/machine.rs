@@ -54,6 +54,8 @@ pub struct Machine {
     cycle_id: Option<u32>,
     /// Where the last record ended and whether it was a thread (for a run's acceleration).
     last_thread_end: Option<Vec3>,
+    /// How long the last record run took (a rotary turn made with it takes only the rest).
+    last_duration_s: f64,
     reset: bool,
     last_span: crate::source::Span,
     /// Records a thread hold makes the machine cut again, in order: a queue, not recursion, so
@@ -76,6 +78,7 @@ impl Machine {
             cycle_buf: Vec::new(),
             cycle_id: None,
             last_thread_end: None,
+            last_duration_s: 0.0,
             reset: false,
             last_span: Default::default(),
             again: std::collections::VecDeque::new(),
@@ -162,7 +165,8 @@ impl Machine {
             self.stop(r.span, StopReason::FeedHold, out);
         }
         let run_start = r.op.is_thread() && self.last_thread_end != r.op.start_point();
-        let dur = self.model.duration_s(&r, run_start);
+        let dur = self.model.duration_after_s(&r, run_start, self.last_duration_s);
+        self.last_duration_s = dur;
         let start = self.t;
         let end = start + dur;
         if let Some(tr) = self.reset_at.filter(|tr| *tr < end || (*tr <= start)) {

@@ -223,6 +223,8 @@ pub struct Modal {
     pub box_cycle: BoxMemory,
     /// Current position, programme coordinates, mm, X as a radius.
     pub pos: Vec3,
+    /// Where the rotary axes A, B, C stand, degrees (those the setup declares; no offsets).
+    pub rotary_deg: [f64; 3],
     /// Where those coordinates are on the machine.
     pub frame: Frame,
     pub motion: Motion,
@@ -279,6 +281,7 @@ impl Modal {
         Modal {
             feed_warned: None,
             pos: Vec3::default(),
+            rotary_deg: [0.0; 3],
             frame: Frame { work: 1, ..Frame::default() },
             motion: Motion::Rapid,
             rough_data: [None; 2],

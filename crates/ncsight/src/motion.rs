@@ -200,6 +200,11 @@ pub enum Op {
         rpm: f64,
     },
     Dwell { seconds: f64 },
+    /// A rotary axis (`axis`: b'A', b'B' or b'C', as the setup declares it) turns from
+    /// `from_deg` to `to_deg`: at its rapid rate, or at `rate_deg_min`. `with_move`: it turns
+    /// together with the linear move recorded just before it (the block moved both), and takes
+    /// only the time that move does not already take.
+    Rotary { axis: u8, from_deg: f64, to_deg: f64, rate_deg_min: f64, rapid: bool, with_move: bool },
     /// Spindle state changed. `rpm` is signed: negative = the spindle's negative direction;
     /// 0 = stopped. `surface_m_min` is the G96 surface speed when constant surface speed is on.
     /// `oriented`: an oriented spindle stop (G76, G87).
@@ -221,6 +226,7 @@ impl Op {
             Op::Thread { .. } => "thread",
             Op::ThreadArc { .. } => "thread_arc",
             Op::Dwell { .. } => "dwell",
+            Op::Rotary { .. } => "rotary",
             Op::Spindle { .. } => "spindle",
             Op::Tool { .. } => "tool",
             Op::Stop { .. } => "stop",

@@ -41,6 +41,8 @@ pub struct TimeModel {
     feed_accel_s: f64,
     feed_max_mm_min: f64,
     dry_run_mm_min: f64,
+    /// Rapid rate of a rotary axis, degrees per minute (after the rapid override).
+    rotary_rapid_deg_min: f64,
     ov: Overrides,
 }
 
@@ -126,6 +128,7 @@ impl TimeModel {
             rapid_accel_s: setting("rapid_accel_ms"),
             feed_accel_s: setting("feed_accel_ms"),
             feed_max_mm_min: params.feed_max_mm_min(),
+            rotary_rapid_deg_min: params.get(ParamKey::Setting("rotary_rapid_deg_min")) * ov.rapid_pct / 100.0,
             dry_run_mm_min: params.get(params.profile().time.dry_run),
             ov,
         }
@@ -185,8 +188,23 @@ impl TimeModel {
                 long / v + if run_start { self.feed_accel_s } else { 0.0 }
             }
             Op::Dwell { seconds } => *seconds,
+            Op::Rotary { from_deg, to_deg, rate_deg_min, rapid, .. } => {
+                let turn = (to_deg - from_deg).abs();
+                if *rapid {
+                    trapezoid_s(turn, self.rotary_rapid_deg_min, self.rapid_accel_s)
+                } else {
+                    trapezoid_s(turn, self.feed_speed(r, *rate_deg_min), self.feed_accel_s)
+                }
+            }
             Op::Spindle { .. } | Op::Tool { .. } | Op::Stop { .. } | Op::End { .. } => 0.0,
         }
+    }
+
+    /// Seconds a record takes after the record before it took `previous_s`: a rotary turn made
+    /// with a linear move takes only what that move does not already take.
+    pub fn duration_after_s(&self, r: &Record, run_start: bool, previous_s: f64) -> f64 {
+        let d = self.duration_s(r, run_start);
+        if matches!(r.op, Op::Rotary { with_move: true, .. }) { (d - previous_s).max(0.0) } else { d }
     }
 }
 

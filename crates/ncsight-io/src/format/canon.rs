@@ -115,6 +115,10 @@ impl Canon {
             Op::Tool { number, .. } => {
                 let _ = writeln!(s, "SELECT_TOOL({number})\nCHANGE_TOOL({number})");
             }
+            // The canonical calls here carry X, Y, Z only: a rotary turn is told, not moved.
+            Op::Rotary { axis, to_deg, .. } => {
+                let _ = writeln!(s, "COMMENT(\"rotary {} {to_deg:.4}\")", *axis as char);
+            }
             Op::Stop { .. } => s.push_str("PROGRAM_STOP()\n"),
             Op::End { .. } => s.push_str("PROGRAM_END()\n"),
         }

@@ -175,6 +175,16 @@ impl Jsonl {
                         thread_fields(s, *lead_mm, long_axis.as_str(), *spindle_deg, *rpm);
                     }
                     Op::Dwell { seconds } => num_field(s, "seconds", *seconds, 6),
+                    Op::Rotary { axis, to_deg, rate_deg_min, rapid, with_move, .. } => {
+                        let _ = write!(s, ",\"axis\":\"{}\"", axis.to_ascii_lowercase() as char);
+                        num_field(s, &(axis.to_ascii_lowercase() as char).to_string(), *to_deg, 4);
+                        if !*rapid {
+                            num_field(s, "f", *rate_deg_min, 4);
+                        }
+                        if *with_move {
+                            s.push_str(",\"with_move\":true");
+                        }
+                    }
                     Op::Spindle { rpm, surface_m_min, position_mode, oriented } => {
                         num_field(s, "rpm", *rpm, 3);
                         if *oriented {

@@ -81,6 +81,18 @@ impl Text {
                 push_num(s, *seconds, 3);
                 s.push_str(" s");
             }
+            Op::Rotary { axis, to_deg, rate_deg_min, rapid, with_move, .. } => {
+                s.push(*axis as char);
+                push_num(s, *to_deg, 3);
+                if !*rapid {
+                    s.push_str("  F");
+                    push_num(s, *rate_deg_min, 3);
+                    s.push_str(" deg/min");
+                }
+                if *with_move {
+                    s.push_str("  (with the move above)");
+                }
+            }
             Op::Spindle { rpm, surface_m_min, position_mode, oriented } => {
                 push_num(s, *rpm, 1);
                 s.push_str(" rpm");

@@ -33,6 +33,11 @@ pub struct Tables {
     pub power_on_mm: Option<Vec3>,
     /// The offset table by number (X and its wear as radii on a lathe).
     pub offsets: Vec<Offset>,
+    /// The rotary axes A, B, C the setup declares (`[machine] axes`).
+    pub rotary: [bool; 3],
+    /// Axis addresses the setup adds to the profile's: a lathe's Y (and V), the rotary axes
+    /// (and H, the FANUC lathe's incremental C).
+    pub added_addresses: crate::profile::Letters,
 }
 
 impl Tables {
@@ -48,6 +53,8 @@ impl Tables {
             limited: false,
             power_on_mm: None,
             offsets: Vec::new(),
+            rotary: [false; 3],
+            added_addresses: crate::profile::Letters::EMPTY,
         }
     }
 
@@ -70,6 +77,23 @@ impl Tables {
             }
         }
         if let Some(m) = &setup.machine {
+            for a in &m.axes {
+                let letter = a.as_bytes()[0];
+                if profile.takes_address(letter) {
+                    continue;
+                }
+                t.added_addresses = t.added_addresses.with(letter);
+                match letter {
+                    b'Y' if profile.incremental_addresses => t.added_addresses = t.added_addresses.with(b'V'),
+                    b'A' | b'B' | b'C' => {
+                        t.rotary[usize::from(letter - b'A')] = true;
+                        if letter == b'C' && profile.incremental_addresses {
+                            t.added_addresses = t.added_addresses.with(b'H');
+                        }
+                    }
+                    _ => {}
+                }
+            }
             for (slot, p) in t.reference_mm.iter_mut().zip([m.reference, m.reference_2, m.reference_3, m.reference_4]) {
                 if let Some(p) = p {
                     *slot = Some(point(&p));

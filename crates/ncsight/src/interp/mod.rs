@@ -633,11 +633,15 @@ fn collect<'w>(
     };
     for (i, w) in block.words.iter().enumerate() {
         let letter = w.letter;
-        if !profile.takes_address(letter) && !not_yet() {
+        if !profile.takes_address(letter) && !step.tables.added_addresses.contains(letter) && !not_yet() {
             return Err(step.alarm(
                 Rule::ImproperAddress,
                 w.span,
-                format!("address {} is not used on {} ({})", letter as char, profile.name, w.text()),
+                if matches!(letter, b'A' | b'B' | b'C' | b'Y') {
+                    format!("address {} is not used on {} ({}): a machine with this axis declares it in the setup ([machine] axes)", letter as char, profile.name, w.text())
+                } else {
+                    format!("address {} is not used on {} ({})", letter as char, profile.name, w.text())
+                },
             ));
         }
         match letter {
@@ -1181,7 +1185,9 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
                 return finish_block(step, &words, &codes, after, switches);
             }
             let arc_words = matches!(step.st.motion, Motion::ArcCw | Motion::ArcCcw) && b"RIJK".iter().any(|l| words.has(*l));
-            let motion_words = has_axis || arc_words;
+            // A rotary axis the setup declares moves in G00/G01 alone too (FANUC 0-M G91 A45.).
+            let rotary_words = step.tables.rotary.iter().any(|r| *r) && b"ABCH".iter().any(|l| step.tables.added_addresses.contains(*l) && words.has(*l));
+            let motion_words = has_axis || arc_words || rotary_words;
             if motion_words {
                 motion(step, &mut words)?;
             }
@@ -1390,7 +1396,59 @@ fn single_direction(step: &mut Step, words: &mut Words) -> Result<(), Diagnostic
     Ok(())
 }
 
+/// The rotary axes' words of a move (A, B, C as the setup declares them; H, the FANUC lathe's
+/// incremental C): where each axis turns to, degrees, or `None` without such a word. Degrees
+/// without a decimal point are least input increments (0.001 degree) where lengths are, as on
+/// the FANUC (IS-B); no work offset or rollover applies (FANUC 1008#0 ROA off, assumed).
+fn rotary_target(step: &mut Step, words: &mut Words) -> Result<Option<[f64; 3]>, Diagnostic> {
+    if !step.tables.rotary.iter().any(|r| *r) {
+        return Ok(None);
+    }
+    let mut target = step.st.rotary_deg;
+    let mut any = false;
+    for (i, letter) in [b'A', b'B', b'C'].into_iter().enumerate() {
+        if !step.tables.rotary[i] {
+            continue;
+        }
+        let abs_w = words.take(letter);
+        let inc_w = if letter == b'C' && step.tables.added_addresses.contains(b'H') { words.take(b'H') } else { None };
+        if let (Some(a), Some(h)) = (abs_w, inc_w) {
+            return Err(step.alarm(Rule::DuplicateWord, h.span, format!("{} and {} both give the C axis", a.text(), h.text())));
+        }
+        let Some(w) = abs_w.or(inc_w) else { continue };
+        let mut v = w.value;
+        if !w.decimal && step.params.integer_lengths() == IntegerLengths::LeastIncrement {
+            v *= 0.001;
+        }
+        if !v.is_finite() || v.abs() > MAX_COORD_MM {
+            return Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("{}: a rotary axis turns at most {MAX_COORD_MM} degrees from its zero", w.text())));
+        }
+        let incremental = inc_w.is_some() || step.st.incremental;
+        target[i] = if incremental { step.st.rotary_deg[i] + v } else { v };
+        any = true;
+    }
+    if any && step.st.comp.side != 0 {
+        return Err(step.alarm(Rule::NotSupported, step.span, "a rotary axis turn in radius compensation (G41/G42) is not simulated"));
+    }
+    Ok(any.then_some(target))
+}
+
+/// The rotary turns of a G00/G01 block, after its linear move (if any, recorded just before):
+/// one record per axis that turns, made together with that move. In G01 the feed F is the
+/// rate of the move in X, Y, Z and the degrees together (FANUC: a rotary axis's degrees count
+/// as millimetres), so the linear move is recorded at its share of F.
+fn emit_rotary(step: &mut Step, to_deg: [f64; 3], rapid: bool, feed: f64, with_move: bool) {
+    for i in 0..3 {
+        let from_deg = step.st.rotary_deg[i];
+        if to_deg[i] != from_deg {
+            step.emit(Op::Rotary { axis: b'A' + i as u8, from_deg, to_deg: to_deg[i], rate_deg_min: feed, rapid, with_move });
+        }
+    }
+    step.st.rotary_deg = to_deg;
+}
+
 fn motion(step: &mut Step, words: &mut Words) -> Result<(), Diagnostic> {
+    let rotary = if matches!(step.st.motion, Motion::Rapid | Motion::Linear) { rotary_target(step, words)? } else { None };
     let (target, _) = axis_target(step, words)?;
     let from = step.st.pos;
     match step.st.motion {
@@ -1398,11 +1456,22 @@ fn motion(step: &mut Step, words: &mut Words) -> Result<(), Diagnostic> {
             if target != from {
                 step.emit(Op::Rapid { from, to: target });
             }
+            if let Some(to_deg) = rotary {
+                emit_rotary(step, to_deg, true, 0.0, target != from);
+            }
         }
         Motion::Linear => {
             let feed = step.cutting_feed(What::Code(GFn::Linear), &|u| lerp(&from, &target, u))?;
+            let turn = rotary.map_or(0.0, |to| (0..3).map(|i| (to[i] - step.st.rotary_deg[i]).powi(2)).sum::<f64>().sqrt());
+            let length = from.dist(&target);
             if target != from {
-                step.emit(Op::Feed { from, to: target, feed_mm_min: feed });
+                // With a turn, the move's share of F (the turn takes the rest of the same time).
+                let share = if turn > 0.0 { length / (length * length + turn * turn).sqrt() } else { 1.0 };
+                step.emit(Op::Feed { from, to: target, feed_mm_min: feed * share });
+            }
+            if let Some(to_deg) = rotary {
+                let share = if length > 0.0 { turn / (length * length + turn * turn).sqrt() } else { 1.0 };
+                emit_rotary(step, to_deg, false, feed * share, target != from);
             }
         }
         Motion::ArcCw | Motion::ArcCcw => {

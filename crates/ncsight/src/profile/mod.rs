@@ -858,6 +858,15 @@ pub const FANUC_MACRO: &[ParamDef] = &[ParamDef {
 
 pub const SETTINGS: &[ParamDef] = &[
     ParamDef {
+        key: ParamKey::Setting("rotary_rapid_deg_min"),
+        meaning: "rapid rate of a rotary axis (A, B, C) the setup declares",
+        unit: "deg/min",
+        min: 1.0,
+        max: 1000000.0,
+        default: 10800.0,
+        source: "ncsight setting; assumed (30 rpm; the FANUC per-axis rapid parameter 1420 of the rotary axis is the machine builder's)",
+    },
+    ParamDef {
         key: ParamKey::Setting("rapid_accel_ms"),
         meaning: "time to reach the rapid rate from a stop (linear acceleration), each axis",
         unit: "ms",
@@ -1124,6 +1133,15 @@ impl Letters {
         }
         Letters(mask)
     }
+
+    /// These letters and `letter` (upper-case A-Z).
+    pub const fn with(self, letter: u8) -> Letters {
+        assert!(letter.is_ascii_uppercase(), "address letters are A-Z");
+        Letters(self.0 | 1 << (letter - b'A'))
+    }
+
+    /// No letter.
+    pub const EMPTY: Letters = Letters(0);
 
     pub fn contains(self, letter: u8) -> bool {
         letter.is_ascii_uppercase() && self.0 & (1 << (letter - b'A')) != 0
