@@ -3,7 +3,8 @@
 //! says in its comments what the manual says and how the trace was checked by hand.
 //! NCSIGHT_BLESS=1 rewrites the expected files (review the diff before committing).
 //!
-//! tests/bad/*.nc: programmes whose first line is `(expect CODE line L col C on MACHINE)`;
+//! tests/bad/*.nc: programmes whose first line is `(expect CODE line L col C on MACHINE)` (a
+//! same-name `.toml` is their setup, a `.args` more arguments);
 //! `run` must stop with that alarm at that place, and `check` must report it and exit 1.
 
 mod common;
@@ -50,7 +51,10 @@ fn bad_programmes_raise_their_alarm() {
         let (code, line, col, machine) = (spec[1], spec[3], spec[5], spec[7]);
         let path = f.to_str().unwrap();
         let setup_file = f.with_extension("toml");
-        let setup_arg: Vec<&str> = if setup_file.is_file() { vec!["--setup", setup_file.to_str().unwrap()] } else { vec![] };
+        let mut setup_arg: Vec<&str> = if setup_file.is_file() { vec!["--setup", setup_file.to_str().unwrap()] } else { vec![] };
+        // More arguments (a setting the programme's machine has) in `<name>.args`.
+        let extra = std::fs::read_to_string(f.with_extension("args")).unwrap_or_default();
+        setup_arg.extend(extra.split_whitespace());
         let with_setup = |args: &[&str]| -> Vec<String> { args.iter().chain(setup_arg.iter()).map(|s| s.to_string()).collect() };
         let run_args = with_setup(&["run", path, "--machine", machine, "--format", "jsonl"]);
         let (status, out, err) = common::ncsight(&run_args.iter().map(String::as_str).collect::<Vec<_>>());

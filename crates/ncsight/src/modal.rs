@@ -141,6 +141,37 @@ pub struct DrillData {
     pub tap_left: bool,
 }
 
+/// The programme coordinate transforms in force (FANUC 0-M G16, G51.1, G51, G68;
+/// `interp/transform.rs`). Centres are in programmed coordinates.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Transforms {
+    /// G16: a block's two plane words are a radius and an angle.
+    pub polar: bool,
+    /// The last radius (mm) and angle (degrees) of the polar coordinates.
+    pub polar_radius: f64,
+    pub polar_angle_deg: f64,
+    /// G51.1: the axes mirrored (bit 0 X, 1 Y, 2 Z), each about its coordinate in `mirror_at`.
+    pub mirror_axes: u8,
+    pub mirror_at: Vec3,
+    pub scaling: Option<Scaling>,
+    pub rotation: Option<Rotation>,
+}
+
+/// G51: magnification per axis about a centre.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Scaling {
+    pub centre: Vec3,
+    pub factor: [f64; 3],
+}
+
+/// G68: rotation in a plane about a centre, counter-clockwise positive.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Rotation {
+    pub plane: crate::motion::Plane,
+    pub centre: Vec3,
+    pub angle_deg: f64,
+}
+
 /// Where programme coordinates lie on the machine, as far as the modal state says: the work
 /// system selected, the G50/G92 shift (acting on every work system), the G52 local origin and
 /// the tool offset in effect. The offsets' values are the machine's tables (`interp::Tables`):
@@ -225,6 +256,8 @@ pub struct Modal {
     pub pos: Vec3,
     /// Where the rotary axes A, B, C stand, degrees (those the setup declares; no offsets).
     pub rotary_deg: [f64; 3],
+    /// Polar coordinates, mirror image, scaling and rotation in force.
+    pub transform: Transforms,
     /// Where those coordinates are on the machine.
     pub frame: Frame,
     pub motion: Motion,
@@ -282,6 +315,7 @@ impl Modal {
             feed_warned: None,
             pos: Vec3::default(),
             rotary_deg: [0.0; 3],
+            transform: Transforms::default(),
             frame: Frame { work: 1, ..Frame::default() },
             motion: Motion::Rapid,
             rough_data: [None; 2],

@@ -13,6 +13,7 @@ pub use call::{Flow, MAX_PROGRAM_NUMBER};
 pub use frame::{TableWrite, Tables};
 pub use rough::{FinishRequest, RoughRequest};
 mod thread;
+mod transform;
 mod turning;
 mod words;
 
@@ -158,6 +159,9 @@ struct Step<'a> {
     n: Option<u32>,
     /// The interpreter's modal state, changed in place (restored from a copy on an alarm).
     st: &'a mut Modal,
+    /// The block runs in programmed coordinates: its records are carried through these
+    /// transforms (G51.1, G51, G68) and its end position back at the block's end.
+    carry: Option<crate::modal::Transforms>,
     out: &'a mut Outcome,
 }
 
@@ -183,6 +187,10 @@ impl Step<'_> {
             // The tool offset's movement is made (FANUC 5002#6 LWM: with the next move).
             self.st.frame.unmoved = Vec3::default();
         }
+        let op = match &self.carry {
+            Some(t) => transform::carry(t, op),
+            None => op,
+        };
         // Radius compensation: the move goes through the look-ahead stage; a move outside it
         // starts where the tool is.
         if self.st.comp.side != 0 && !self.bypass_comp {
@@ -474,7 +482,7 @@ impl Interpreter {
             return;
         }
         let repair = self.switches.repair_position;
-        let mut step = Step { profile: self.profile, params: &self.params, tables: &self.tables, queue: &mut self.comp_queue, bypass_comp: false, repair, span: Span::default(), n: None, st: &mut self.state, out };
+        let mut step = Step { profile: self.profile, params: &self.params, tables: &self.tables, queue: &mut self.comp_queue, bypass_comp: false, repair, span: Span::default(), n: None, st: &mut self.state, carry: None, out };
         if let Some(p) = step.st.thread.pending.take() {
             step.bypass_comp = true;
             thread::flush(&mut step, p, true);
@@ -516,7 +524,7 @@ impl Interpreter {
         let before = self.state;
         let queue_before = if self.comp_queue.is_empty() { None } else { Some(self.comp_queue.clone()) };
         let repair = self.switches.repair_position;
-        let mut step = Step { profile: self.profile, params: &self.params, tables: &self.tables, queue: &mut self.comp_queue, bypass_comp: false, repair, span: block.span, n: block.sequence, st: &mut self.state, out };
+        let mut step = Step { profile: self.profile, params: &self.params, tables: &self.tables, queue: &mut self.comp_queue, bypass_comp: false, repair, span: block.span, n: block.sequence, st: &mut self.state, carry: None, out };
         let result = run_block(&mut step, block, self.switches).and_then(|()| {
             if step.out.emitted > MAX_MOTIONS_PER_BLOCK {
                 return Err(step.alarm(
@@ -614,7 +622,7 @@ impl Interpreter {
 #[allow(clippy::type_complexity)]
 fn collect<'w>(
     step: &mut Step,
-    block: &'w Block,
+    all: &'w [Word],
     words: &mut Words<'w>,
 ) -> Result<(Vec<(&'w Word, &'static GDef)>, Vec<(&'w Word, Option<&'static MDef>)>), Diagnostic> {
     let profile = step.profile;
@@ -623,7 +631,7 @@ fn collect<'w>(
     // A code not simulated yet answers for its block: its own words (G65's H, G10's L) are not
     // judged by the rules of the codes that are. Looked at only when a letter is not read.
     let not_yet = || {
-        block.words.iter().any(|w| {
+        all.iter().any(|w| {
             w.letter == b'G'
                 && !w.expr
                 && w.value >= 0.0
@@ -631,7 +639,7 @@ fn collect<'w>(
                 && matches!(profile.g_code(w.code().0, w.code().1).map(|g| g.function), Some(GFn::NotYet(_) | GFn::NotYetReference(_)))
         })
     };
-    for (i, w) in block.words.iter().enumerate() {
+    for (i, w) in all.iter().enumerate() {
         let letter = w.letter;
         if !profile.takes_address(letter) && !step.tables.added_addresses.contains(letter) && !not_yet() {
             return Err(step.alarm(
@@ -702,6 +710,8 @@ struct Codes {
     comp: Option<(Span, i8)>,
     /// G54-G59 in this block (1-6).
     work: Option<u8>,
+    /// G68/G69, G51.1/G50.1 or G51/G50 in this block (the last of them).
+    transform: Option<(Span, GFn)>,
 }
 
 /// One block, in the order the controller executes it (the steps as grbl's `gc_execute_line`
@@ -724,9 +734,29 @@ struct Codes {
 ///     mode in force: drilling cycle, thread, box cycle, G00-G03.
 /// 11. M codes that act after the motion (stops, ends), then every word must have been used.
 fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), Diagnostic> {
+    // 0. Under G16 the plane's two words are a radius and an angle: the block is read with the
+    // X, Y, Z words they stand for (not in a block that sets or ends a transform, or G15's own).
+    let polar;
+    let all: &[Word] = if step.st.transform.polar && polar_reads(step, block) {
+        // The block's own G90/G91 count: its words are read in its distance mode.
+        let incremental = block.words.iter().rev().filter(|w| w.letter == b'G' && !w.expr && w.is_code()).find_map(|w| match step.profile.g_code(w.code().0, w.code().1).map(|g| g.function) {
+            Some(GFn::Absolute) => Some(false),
+            Some(GFn::Incremental) => Some(true),
+            _ => None,
+        });
+        match transform::polar_words(step, &block.words, incremental.unwrap_or(step.st.incremental))? {
+            Some(w) => {
+                polar = w;
+                &polar
+            }
+            None => &block.words,
+        }
+    } else {
+        &block.words
+    };
     // 1. Collect the words.
-    let mut words = Words::new(&block.words);
-    let (gs, ms) = collect(step, block, &mut words)?;
+    let mut words = Words::new(all);
+    let (gs, ms) = collect(step, all, &mut words)?;
     let profile = step.profile;
 
     // 2. G codes: the last of a group counts (GSK: TAC p65; FANUC the same); a warning says so.
@@ -895,6 +925,14 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
             GFn::WorkOffset(n) => codes.work = Some(n),
             // Step 6 puts the length offset in force, with the H of the block.
             GFn::LengthComp(_) | GFn::PathControl => {}
+            GFn::Rotation(_) | GFn::MirrorImage(_) | GFn::Scaling(_) => codes.transform = Some((w.span, g.function)),
+            GFn::PolarCoordinates(on) => {
+                if on && !st.transform.polar {
+                    st.transform.polar_radius = 0.0;
+                    st.transform.polar_angle_deg = 0.0;
+                }
+                st.transform.polar = on;
+            }
             GFn::ReturnInitial => st.return_initial = true,
             GFn::ReturnR => st.return_initial = false,
             // G80: the cycle and its hole data end; F stays (seed 003 8.1.4).
@@ -1136,6 +1174,46 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
             }
         }
     }
+    // G68/G69, G51.1/G50.1, G51/G50: set or end a transform. A block that sets one (or names
+    // the axes of a mirror image to end) makes no move: its axis words are the transform's.
+    if let Some((span, f)) = codes.transform {
+        let t = step.st.transform;
+        // The centres default to where the tool is, in programmed coordinates.
+        let here = step.st.pos;
+        if transform::moves_records(&t) {
+            step.st.pos = transform::programmed(&t, here);
+        }
+        let set = match f {
+            GFn::Rotation(on) => transform::rotation(step, &mut words, on, span).map(|_| on),
+            GFn::MirrorImage(on) => transform::mirror_image(step, &mut words, on, span).map(|_| true),
+            GFn::Scaling(on) => transform::scaling(step, &mut words, on, span).map(|_| on),
+            _ => unreachable!("only transform codes are noted here"),
+        };
+        step.st.pos = here;
+        if set? {
+            return finish_block(step, &words, &codes, after, switches);
+        }
+    }
+    // Under a transform the block is worked out in programmed coordinates.
+    let t = step.st.transform;
+    if transform::moves_records(&t) {
+        let what = match codes.non_modal {
+            Some((_, GFn::Dwell)) | None => None,
+            Some((span, f)) => Some((span, step.profile.name_of(f))),
+        };
+        if let Some((span, code)) = what {
+            return Err(step.alarm(Rule::NotSupported, span, format!("{code} under coordinate rotation, scaling or mirror image (G68, G51, G51.1) is not simulated")));
+        }
+        if step.st.comp.side != 0 {
+            return Err(step.alarm(Rule::NotSupported, step.span, "radius compensation under coordinate rotation, scaling or mirror image (G68, G51, G51.1) is not simulated"));
+        }
+        let arc = matches!(codes.motion.map_or(step.st.motion, |(_, m)| m), Motion::ArcCw | Motion::ArcCcw);
+        if let Some(why) = transform::arc_refused(&t, step.st.plane).filter(|_| arc && codes.drill.or(step.st.drill.kind).is_none()) {
+            return Err(step.alarm(Rule::NotSupported, step.span, format!("an arc under this transform is not simulated: {why}")));
+        }
+        step.st.pos = transform::programmed(&t, step.st.pos);
+        step.carry = Some(t);
+    }
     let mut non_modal = codes.non_modal;
     if let Some((span, GFn::MachineCoordinates)) = non_modal {
         if frame::machine_move(step, &mut words, span)? {
@@ -1197,6 +1275,19 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
     finish_block(step, &words, &codes, after, switches)
 }
 
+/// Whether a block's plane words are polar coordinates under G16: not when the block ends
+/// G16, sets or ends another transform, or has a one-shot code other than G04 (whose words are
+/// not a point of the path).
+fn polar_reads(step: &Step, block: &Block) -> bool {
+    block.words.iter().filter(|w| w.letter == b'G' && !w.expr && w.is_code()).all(|w| {
+        let (major, minor) = w.code();
+        !matches!(
+            step.profile.g_code(major, minor).map(|g| (g.group, g.function)),
+            Some((_, GFn::PolarCoordinates(false) | GFn::Rotation(_) | GFn::MirrorImage(_) | GFn::Scaling(_))) | Some((Group::NonModal, _))
+        ) || matches!(step.profile.g_code(major, minor).map(|g| g.function), Some(GFn::Dwell))
+    })
+}
+
 /// Whether the block's own G codes switch constant surface speed on or off.
 fn codes_css(last_of: &[(Group, &Word, &GDef)]) -> Option<bool> {
     last_of.iter().rev().find_map(|(_, _, g)| match g.function {
@@ -1208,6 +1299,10 @@ fn codes_css(last_of: &[(Group, &Word, &GDef)]) -> Option<bool> {
 
 /// 11. M codes that act after the motion, then the check that every word was used.
 fn finish_block(step: &mut Step, words: &Words, codes: &Codes, after: Vec<(&Word, MFn)>, switches: Switches) -> Result<(), Diagnostic> {
+    // A block worked out in programmed coordinates ends where its records took the tool.
+    if let Some(t) = step.carry.take() {
+        step.st.pos = transform::apply(&t, step.st.pos);
+    }
     // A stop or an end after a held-back thread run end: the run ends first.
     if !after.is_empty() {
         if let Some(p) = step.st.thread.pending.take() {

@@ -234,7 +234,7 @@ impl Interpreter {
             }
             // The contour is the programmed one (compensation of the finishing shape: docs/compensation.md).
             let mut no_queue = Vec::new();
-            let mut step = Step { profile: self.profile, params: &self.params, tables: &self.tables, queue: &mut no_queue, bypass_comp: true, repair: None, span: b.span, n: b.sequence, st: &mut st, out: &mut scratch };
+            let mut step = Step { profile: self.profile, params: &self.params, tables: &self.tables, queue: &mut no_queue, bypass_comp: true, repair: None, span: b.span, n: b.sequence, st: &mut st, carry: None, out: &mut scratch };
             run_block(&mut step, b, self.switches)?;
             if scratch.rough_request.is_some() || scratch.finish_request.is_some() {
                 return Err(self.contour_alarm(Rule::ContourCommand, b.span, format!("{code}: a contour block cannot call a cycle itself")));
@@ -376,7 +376,7 @@ impl Interpreter {
     fn emit_cycle(&mut self, req: &RoughRequest, ops: Vec<Op>, out: &mut Outcome) -> Result<(), Diagnostic> {
         let code = req.kind.code();
         let before = self.state.clone();
-        let mut step = Step { profile: self.profile, params: &self.params, tables: &self.tables, queue: &mut self.comp_queue, bypass_comp: true, repair: None, span: req.span, n: req.n, st: &mut self.state, out };
+        let mut step = Step { profile: self.profile, params: &self.params, tables: &self.tables, queue: &mut self.comp_queue, bypass_comp: true, repair: None, span: req.span, n: req.n, st: &mut self.state, carry: None, out };
         let result = ops.into_iter().try_for_each(|op| step.emit_cut(code, op)).and_then(|()| {
             // The per-block limit (the cycle's moves come here, not through `execute_into`).
             if step.out.emitted > super::MAX_MOTIONS_PER_BLOCK {
@@ -437,7 +437,7 @@ impl Interpreter {
         let from = self.state.pos;
         let before = self.state;
         let mut scratch = Outcome::default();
-        let mut step = Step { profile: self.profile, params: &self.params, tables: &self.tables, queue: &mut self.comp_queue, bypass_comp: true, repair: None, span: req.span, n: req.n, st: &mut self.state, out: &mut scratch };
+        let mut step = Step { profile: self.profile, params: &self.params, tables: &self.tables, queue: &mut self.comp_queue, bypass_comp: true, repair: None, span: req.span, n: req.n, st: &mut self.state, carry: None, out: &mut scratch };
         super::comp::break_off(&mut step);
         if from != req.start || step.st.comp.actual.is_some() {
             step.emit(Op::Rapid { from, to: req.start });

@@ -40,6 +40,46 @@ const M_CODES: &[MDef] = &[
     m(19, MFn::Auxiliary, "spindle orientation"),
 ];
 
+/// Coordinate rotation and scaling (FANUC 0i numbering, inferred for the FANUC 0-M).
+const TRANSFORMS: &[ParamDef] = &[
+    ParamDef {
+        key: ParamKey::Number(5400, Some(0)),
+        meaning: "RIN: G68's R in G91 is 0 = always an absolute angle, 1 = added to the angle in force",
+        unit: "bit",
+        min: 0.0,
+        max: 1.0,
+        default: 0.0,
+        source: "FANUC 0i-C connection manual, coordinate system rotation (5400#0 RIN; inferred for the FANUC 0-M)",
+    },
+    ParamDef {
+        key: ParamKey::Number(5410, None),
+        meaning: "G68's angle when R is omitted",
+        unit: "0.001 deg",
+        min: -360000.0,
+        max: 360000.0,
+        default: 0.0,
+        source: "FANUC 0i-C connection manual, coordinate system rotation (5410; inferred for the FANUC 0-M)",
+    },
+    ParamDef {
+        key: ParamKey::Number(5411, None),
+        meaning: "G51's magnification when P is omitted",
+        unit: "0.001",
+        min: 1.0,
+        max: 999999.0,
+        default: 1000.0,
+        source: "FANUC 0i numbering (inferred); default assumed (1.0)",
+    },
+    ParamDef {
+        key: ParamKey::Setting("scaling_option"),
+        meaning: "the machine has the scaling option (G51); 0 = G51 and G50 are IMPROPER G-CODE",
+        unit: "bit",
+        min: 0.0,
+        max: 1.0,
+        default: 0.0,
+        source: "ncsight setting (scaling is a FANUC option; off at power on, assumed)",
+    },
+];
+
 const PARAMS: &[ParamDef] = &[
     ParamDef {
         key: ParamKey::Number(2, Some(4)),
@@ -133,7 +173,7 @@ pub static PROFILE: Profile = Profile {
     peck_back_off: None,
     g_codes: &[super::Codes { source: "FANUC 0-M manual, canned cycles (seed 003) and the FANUC 0i-MC G-code table", codes: common::G_CODES }, super::Codes { source: "FANUC 0-M manual, canned cycles (seed 003) and the FANUC 0i-MC G-code table", codes: G_CODES }, super::Codes { source: "the FANUC 0i-MC G-code table (the 0-M's own table was not at hand)", codes: super::later::FANUC_0M }],
     m_codes: &[super::Codes { source: "FANUC 0-M manual (seed 003: M03-M05 in the tapping cycles); FANUC 0i-MC M codes", codes: common::M_CODES }, super::Codes { source: "FANUC 0-M manual (seed 003) and FANUC 0i-MC M codes", codes: M_CODES }],
-    params: &[PARAMS, super::FANUC_INPUT, DRY_RUN, super::builder::FANUC, super::FANUC_MACRO, super::FANUC_G60, SETTINGS],
+    params: &[PARAMS, TRANSFORMS, super::FANUC_INPUT, DRY_RUN, super::builder::FANUC, super::FANUC_MACRO, super::FANUC_G60, SETTINGS],
     time: TimeKeys {
         rapid: [ParamKey::Number(518, None), ParamKey::Number(519, None), ParamKey::Number(520, None)],
         dry_run: ParamKey::Setting("dry_run_mm_min"),
@@ -148,7 +188,17 @@ pub static PROFILE: Profile = Profile {
     },
     calls: super::CallRules::FANUC,
     macros: super::MacroRules { group_numbers: super::FANUC_M_GROUPS, ..super::MacroRules::FANUC },
-    frame: super::FrameRules { lathe_offset_keys: None, g10: super::G10Forms::MillOffsets, ..super::FrameRules::FANUC },
+    frame: super::FrameRules {
+        lathe_offset_keys: None,
+        g10: super::G10Forms::MillOffsets,
+        transform_keys: super::TransformKeys {
+            rotation_incremental: Some(ParamKey::Number(5400, Some(0))),
+            rotation_angle: Some(ParamKey::Number(5410, None)),
+            magnification: Some(ParamKey::Number(5411, None)),
+            scaling_option: Some(ParamKey::Setting("scaling_option")),
+        },
+        ..super::FrameRules::FANUC
+    },
     summary: "FANUC 0-M machining centre. G90/G91, G17 at power on. Lengths without a decimal point \
 are least input increments (X100 = 0.1 mm), F without a point is mm/min.",
 };

@@ -73,11 +73,13 @@ pub enum Group {
     Rotation,
     /// Spindle speed fluctuation detection G25/G26 (FANUC 0-T).
     SpindleCheck,
+    /// Programmable mirror image G50.1/G51.1 (FANUC 0i-M group 22).
+    MirrorImage,
 }
 
 impl Group {
     /// How many groups there are (for tables indexed by `group as usize`).
-    pub const COUNT: usize = Group::SpindleCheck as usize + 1;
+    pub const COUNT: usize = Group::MirrorImage as usize + 1;
 }
 
 /// FANUC's numbers of the modal groups, which #4001-#4022 read (#4000 + the group number; the
@@ -101,6 +103,7 @@ pub const FANUC_M_GROUPS: &[(u8, Group)] = &[
     (15, Group::PathMode),
     (16, Group::Rotation),
     (17, Group::Polar),
+    (22, Group::MirrorImage),
 ];
 
 /// The lathe's numbering (G-code system A; FANUC 0i-TC list, inferred for the FANUC 0-T and,
@@ -198,6 +201,14 @@ pub enum GFn {
     PeckCycle(crate::codes::PeckKind),
     /// G90 / G94: the single turning and facing cycles of the lathes (group 01).
     BoxCycle(crate::codes::BoxKind),
+    /// G68 (on) / G69 (off): coordinate system rotation in the plane.
+    Rotation(bool),
+    /// G51.1 (on) / G50.1 (off): programmable mirror image.
+    MirrorImage(bool),
+    /// G51 (on) / G50 (off) on a machining centre: scaling (an option).
+    Scaling(bool),
+    /// G16 (on) / G15 (off): polar coordinate command.
+    PolarCoordinates(bool),
     /// Known to the controller, not yet simulated: an alarm that says so.
     NotYet(&'static str),
     /// G65: a custom macro call, run by the programme (not the interpreter) with a new level of
@@ -457,7 +468,26 @@ pub struct FrameRules {
     /// G90/G94 in compensation are offset by the imaginary tool nose (FANUC, inferred); elsewhere
     /// they run as programmed (the GSK text says nothing: suspended, with a warning).
     pub box_by_tip: bool,
+    /// The parameters of the coordinate transforms (G68, G51), where the profile has them.
+    pub transform_keys: TransformKeys,
     pub source: &'static str,
+}
+
+/// The parameters G68 and G51 read.
+#[derive(Debug, Clone, Copy)]
+pub struct TransformKeys {
+    /// G68's R in G91 adds to the angle in force when this bit is 1 (FANUC 0i 5400#0 RIN).
+    pub rotation_incremental: Option<ParamKey>,
+    /// G68's angle when R is omitted, 0.001 degree (FANUC 0i 5410).
+    pub rotation_angle: Option<ParamKey>,
+    /// G51's magnification when P is omitted, 0.001 (FANUC 0i 5411).
+    pub magnification: Option<ParamKey>,
+    /// The machine has the scaling option (a setting).
+    pub scaling_option: Option<ParamKey>,
+}
+
+impl TransformKeys {
+    pub const NONE: TransformKeys = TransformKeys { rotation_incremental: None, rotation_angle: None, magnification: None, scaling_option: None };
 }
 
 /// The G10 forms a controller has (MACRO.md 10.2).
@@ -484,6 +514,7 @@ impl FrameRules {
         comp_idle_alarm: None,
         rough_cancels_comp: false,
         box_by_tip: true,
+        transform_keys: TransformKeys::NONE,
         source: "FANUC 0i manuals as recalled (G30 P2-P4; G92 after G54 in one block sets the system selected; 5002#4 LGT, #6 LWM; G10 forms); MACRO.md 10",
     };
     pub const GSK: FrameRules = FrameRules {
@@ -496,6 +527,7 @@ impl FrameRules {
         comp_idle_alarm: Some(7),
         rough_cancels_comp: true,
         box_by_tip: false,
+        transform_keys: TransformKeys::NONE,
         source: "GSK980TDi help text: G54-G59 note 6, G28 note 2, G30 (P2-P4) note 3, G10 L3 and L52 only; the offset mode's parameter number not found (an ncsight setting)",
     };
 }
