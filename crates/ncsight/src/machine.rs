@@ -166,7 +166,9 @@ impl Machine {
         }
         let run_start = r.op.is_thread() && self.last_thread_end != r.op.start_point();
         let dur = self.model.duration_after_s(&r, run_start, self.last_duration_s);
-        self.last_duration_s = dur;
+        // The time the block's simultaneous motion has taken so far (a rotary turn made with
+        // the records before it adds only what they do not cover).
+        self.last_duration_s = if matches!(r.op, Op::Rotary { with_move: true, .. }) { self.last_duration_s + dur } else { dur };
         let start = self.t;
         let end = start + dur;
         if let Some(tr) = self.reset_at.filter(|tr| *tr < end || (*tr <= start)) {
@@ -178,6 +180,15 @@ impl Machine {
                 if let Some((f, fdur)) = first {
                     self.emit(f, fdur, out);
                 }
+            } else if let (true, Op::Rotary { from_deg, to_deg, .. }) = (tr > start && dur > 0.0, r.op) {
+                // A turn stops where it has come to (in proportion to its time: the deceleration
+                // of a rotary axis is not modelled).
+                let reached = from_deg + (to_deg - from_deg) * ((tr - start) / dur);
+                let mut part = r.clone();
+                if let Op::Rotary { to_deg, .. } = &mut part.op {
+                    *to_deg = reached;
+                }
+                self.emit(part, tr - start, out);
             }
             self.stop(r.span, StopReason::Reset, out);
             return;

@@ -345,7 +345,8 @@ impl Record {
     #[inline]
     pub fn of_block(span: Span, n: Option<u32>, op: Op) -> Record {
         let hold = match op {
-            Op::Dwell { .. } => Hold::AfterRecord,
+            // A rotary turn, as a dwell: FEED HOLD stops after it (its position is one angle).
+            Op::Dwell { .. } | Op::Rotary { .. } => Hold::AfterRecord,
             Op::Thread { .. } | Op::ThreadArc { .. } => Hold::AfterRun,
             _ => Hold::Stop,
         };

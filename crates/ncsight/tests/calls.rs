@@ -338,6 +338,12 @@ fn text_before_the_first_percent_is_the_tape_leader() {
     // Only comments before the `%`: nothing to warn about, nothing skipped that would matter.
     let comments = "(MADE BY X)\n%\nO1000\nG00 X10. Z5.\nM30\n%\n";
     assert_eq!(trace(&run("fanuc0t", comments)), t(&["4:rapid:5,0,5@0", "5:end@0"]));
+    // A programme with mistakes before a closing `%` is a programme (its lines start as blocks):
+    // its alarm, not a leader.
+    assert_eq!(trace(&run("fanuc0t", "G0 X1,5 Z2,0\nG1 X3,0 F0,2\n%\n"))[0].as_str(), "1:NCS-E30");
+    // A punched tape's blank leader: NUL bytes, also before the `%` on its line.
+    let tape = "\0\0\0\0\n\0\0%\nO1000\nG00 X10. Z5.\nM30\n%\n";
+    assert_eq!(trace(&run("fanuc0t", tape)), t(&["1:NCS-W04", "4:rapid:5,0,5@0", "5:end@0"]));
     // Unreadable text and no `%` at all: the alarm at line 1, as before.
     let none = "PART 12 REV B\nG00 X10. Z5.\nM30\n";
     assert_eq!(trace(&run("fanuc0t", none))[0].as_str(), "1:PS0005");

@@ -76,6 +76,19 @@ fn seed_000_note_2_j_and_k_omitted_use_no_19() {
     assert_eq!(pull_out_of(&r), ((58.7, -26.5), (61.7, -28.0)));
 }
 
+/// A G76 first block's P(r) rewrites the pull-out parameter for the rest of the run, and G92
+/// reads the same one: GSK980TDi No.19 (TAC p135: its run-out width serves G92 and G76), FANUC
+/// 5130 on fanuc0t and gsk988t (inferred). `P020560`: r = 05, half a lead = 1.5 mm at F3.
+#[test]
+fn a_g76_first_block_rewrites_the_g92_pull_out() {
+    let r = g92("G76 P020560 Q150 R0.1\nG92 X58.7 Z-28 F3", &[]).ok();
+    assert_eq!(pull_out_of(&r), ((58.7, -26.5), (61.7, -28.0)));
+    for machine in ["fanuc0t", "gsk988t"] {
+        let r = run(machine, &[], "M3 S300\nG0 X65. Z5.\nG76 P020560 Q150 R100\nG92 X58.7 Z-28. F3.\nM30\n").ok();
+        assert_eq!(pull_out_of(&r), ((58.7, -26.5), (61.7, -28.0)), "{machine}");
+    }
+}
+
 #[test]
 fn seed_000_note_3_j_omitted() {
     // Long axis by K, short axis by No.19 (here 0.5 lead = 1.5 mm).

@@ -247,11 +247,12 @@ fn bottom_in_force(step: &Step, code: &str, along: usize) -> Result<(f64, bool),
 }
 
 /// FANUC 0-T G83 (face: the hole at X, drilled along Z) and G87 (side: the hole at Z, drilled
-/// along X), the cycle without Q: rapid to the hole position, rapid to the R level (R, signed, is
-/// the distance from the initial level), feed to the bottom Z (X; W, U from the R level), dwell
-/// P, rapid back to the initial level; K repeats (a FANUC lathe manual's format, quoted in
-/// docs/commands/g83_g87_lathe.md). The data stays until G80 or a group 01 code. With Q, the peck
-/// drilling of these cycles is not simulated (no FANUC 0-T text for it here).
+/// along X): rapid to the hole position, rapid to the R level (R, signed, is the distance from
+/// the initial level), feed to the bottom Z (X; W, U from the R level), pecking by Q (the
+/// high-speed or the standard cycle, by the profile's bit), dwell P, rapid back to the initial
+/// level; K repeats (a FANUC lathe manual's format, quoted in docs/commands/g83_g87_lathe.md).
+/// G84/G88 tap (the spindle reversed at the bottom) and G85/G89 bore (feed out to R) the same
+/// way. The data stays until G80 or a group 01 code.
 fn lathe_from_r_block(step: &mut Step, words: &mut Words, kind: DrillKind) -> Result<(), Diagnostic> {
     let code = kind.code();
     let (place, along) = lathe_axes(step, kind)?;

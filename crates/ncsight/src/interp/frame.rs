@@ -38,6 +38,9 @@ pub struct Tables {
     /// Axis addresses the setup adds to the profile's: a lathe's Y (and V), the rotary axes
     /// (and H, the FANUC lathe's incremental C).
     pub added_addresses: crate::profile::Letters,
+    /// The controlled axes in the control's order (what #5001-#5006 read): the setup's
+    /// `[machine] axes` as written, else the profile's.
+    pub axis_order: Vec<u8>,
 }
 
 impl Tables {
@@ -55,6 +58,7 @@ impl Tables {
             offsets: Vec::new(),
             rotary: [false; 3],
             added_addresses: crate::profile::Letters::EMPTY,
+            axis_order: profile.axes.bytes().collect(),
         }
     }
 
@@ -77,6 +81,9 @@ impl Tables {
             }
         }
         if let Some(m) = &setup.machine {
+            if !m.axes.is_empty() {
+                t.axis_order = m.axes.iter().map(|a| a.as_bytes()[0]).collect();
+            }
             for a in &m.axes {
                 let letter = a.as_bytes()[0];
                 if profile.takes_address(letter) {

@@ -1265,7 +1265,7 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
             let arc_words = matches!(step.st.motion, Motion::ArcCw | Motion::ArcCcw) && b"RIJK".iter().any(|l| words.has(*l));
             // A rotary axis the setup declares moves in G00/G01 alone too (FANUC 0-M G91 A45.).
             let rotary_words = step.tables.rotary.iter().any(|r| *r) && b"ABCH".iter().any(|l| step.tables.added_addresses.contains(*l) && words.has(*l));
-            let motion_words = has_axis || arc_words || rotary_words;
+            let motion_words = has_axis || arc_words || (rotary_words && matches!(step.st.motion, Motion::Rapid | Motion::Linear));
             if motion_words {
                 motion(step, &mut words)?;
             }
@@ -1529,14 +1529,19 @@ fn rotary_target(step: &mut Step, words: &mut Words) -> Result<Option<[f64; 3]>,
 }
 
 /// The rotary turns of a G00/G01 block, after its linear move (if any, recorded just before):
-/// one record per axis that turns, made together with that move. In G01 the feed F is the
-/// rate of the move in X, Y, Z and the degrees together (FANUC: a rotary axis's degrees count
-/// as millimetres), so the linear move is recorded at its share of F.
-fn emit_rotary(step: &mut Step, to_deg: [f64; 3], rapid: bool, feed: f64, with_move: bool) {
+/// one record per axis that turns, each made together with the records of the block before it
+/// (`with_move`). In G01 the feed F is the rate of the whole move, X, Y, Z and the degrees
+/// together (FANUC: a rotary axis's degrees count as the input unit, mm or inch), so each axis
+/// turns at its share of F (`rate_per_unit`: the rate in degrees per minute for each degree of
+/// the axis's turn).
+fn emit_rotary(step: &mut Step, to_deg: [f64; 3], rapid: bool, rate_per_unit: f64, with_move: bool) {
+    let mut with_move = with_move;
     for i in 0..3 {
         let from_deg = step.st.rotary_deg[i];
         if to_deg[i] != from_deg {
-            step.emit(Op::Rotary { axis: b'A' + i as u8, from_deg, to_deg: to_deg[i], rate_deg_min: feed, rapid, with_move });
+            let rate_deg_min = rate_per_unit * (to_deg[i] - from_deg).abs();
+            step.emit(Op::Rotary { axis: b'A' + i as u8, from_deg, to_deg: to_deg[i], rate_deg_min, rapid, with_move });
+            with_move = true;
         }
     }
     step.st.rotary_deg = to_deg;
@@ -1558,15 +1563,16 @@ fn motion(step: &mut Step, words: &mut Words) -> Result<(), Diagnostic> {
         Motion::Linear => {
             let feed = step.cutting_feed(What::Code(GFn::Linear), &|u| lerp(&from, &target, u))?;
             let turn = rotary.map_or(0.0, |to| (0..3).map(|i| (to[i] - step.st.rotary_deg[i]).powi(2)).sum::<f64>().sqrt());
-            let length = from.dist(&target);
+            // The move's length in the input unit, the degrees counted as that unit; F in it.
+            let unit = if step.st.inch { 25.4 } else { 1.0 };
+            let length = from.dist(&target) / unit;
+            let whole = (length * length + turn * turn).sqrt();
             if target != from {
-                // With a turn, the move's share of F (the turn takes the rest of the same time).
-                let share = if turn > 0.0 { length / (length * length + turn * turn).sqrt() } else { 1.0 };
-                step.emit(Op::Feed { from, to: target, feed_mm_min: feed * share });
+                // With a turn, the move's share of F: every axis ends at the same time.
+                step.emit(Op::Feed { from, to: target, feed_mm_min: feed * length / whole });
             }
             if let Some(to_deg) = rotary {
-                let share = if length > 0.0 { turn / (length * length + turn * turn).sqrt() } else { 1.0 };
-                emit_rotary(step, to_deg, false, feed * share, target != from);
+                emit_rotary(step, to_deg, false, feed / unit / whole, target != from);
             }
         }
         Motion::ArcCw | Motion::ArcCcw => {

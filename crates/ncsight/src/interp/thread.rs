@@ -575,7 +575,7 @@ fn cycle(step: &mut Step, words: &mut Words, rules: &'static CycleRules, explici
     let pull_out = match rules.pull_out {
         // Seed 000 notes 2-7 and 10: J/K, No.19 for what is omitted.
         PullOutRule::JkTenths(tenths) => {
-            let tenths = step.params.get(tenths);
+            let tenths = pull_out_tenths(step, tenths);
             jk_pull_out(step, step.st.thread.j, step.st.thread.k, tenths, lead, toward_start)
         }
         // Seed 001 G92.1 notes 1-6.
@@ -683,7 +683,17 @@ pub(super) fn jk_pull_out(step: &Step, j: Option<f64>, k: Option<f64>, tenths: f
 /// A chamfer of `amount` x 0.1 x lead along the long axis at the angle parameter (0 or none:
 /// 45 degrees): G92.1 note 1 (5130/5131), FANUC G92 and G76, GSK G76 by P(r).
 pub(super) fn chamfer_pull_out(step: &Step, lead: f64, sign: f64, amount: ParamKey, angle: Option<ParamKey>) -> Option<PullOut> {
-    chamfer_of(step.params.get(amount), angle.map(|a| step.params.get(a)).unwrap_or(0.0), lead, sign)
+    chamfer_of(pull_out_tenths(step, amount), angle.map(|a| step.params.get(a)).unwrap_or(0.0), lead, sign)
+}
+
+/// The pull-out amount parameter `key` (0.1 x lead) as the run has it: a G76 first block's P
+/// rewrote it for the rest of the run where G76 reads the same parameter (GSK980TDi No.19 for
+/// G92 and G76; FANUC 5130).
+fn pull_out_tenths(step: &Step, key: ParamKey) -> f64 {
+    match (step.profile.thread.g76, step.st.thread.g76) {
+        (Some(keys), Some(data)) if keys.pull_out == key => data.pull_out_tenths,
+        _ => step.params.get(key),
+    }
 }
 
 /// See [`chamfer_pull_out`]; the values given.
@@ -696,7 +706,7 @@ pub(super) fn chamfer_of(tenths: f64, angle_deg: f64, lead: f64, sign: f64) -> O
 /// Seed 001 G92.1 notes 1-6 (GSK988T): J/K, the chamfer parameters for what is omitted.
 fn jk_chamfer_pull_out(step: &Step, lead: f64, sign: f64, amount: ParamKey, angle: ParamKey) -> Option<PullOut> {
     let (j, k) = (step.st.thread.j, step.st.thread.k);
-    let chamfer = step.params.get(amount) * 0.1 * lead;
+    let chamfer = pull_out_tenths(step, amount) * 0.1 * lead;
     let after_end = |j: f64| PullOut { long_mm: 0.0, short_mm: j, short_sign: sign, mode: PullOutMode::Ratio, after_end_feed: Some(step.after_end_feed()) };
     let (long, short) = match (j, k) {
         (None, None) => return chamfer_pull_out(step, lead, sign, amount, Some(angle)), // note 1

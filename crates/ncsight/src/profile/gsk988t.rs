@@ -53,8 +53,6 @@ static G92: CycleRules = CycleRules {
 };
 
 const EXTRA: &[GDef] = &[
-    g(76, Group::NonModal, GFn::CompoundThread(Compound::G76), "compound thread cutting cycle, two blocks (inferred from the GSK980TDi help text; the GSK988T manual's definitions page agrees: sqrt(n) depths, flank infeed)"),
-    g(33, Group::Motion, GFn::Thread(ThreadCmd::Tap), "tapping: in, spindle reversed, out (inferred from the GSK980TDi help text)"),
     g(34, Group::Motion, GFn::Thread(ThreadCmd::VariableLead), "variable-lead thread cutting: F, R per revolution, J/K (GSK988T manual 2.16.2, its example G34 W-78 F4 J5 K2 R0.2)"),
     g(32, Group::Motion, GFn::Thread(ThreadCmd::Lead), "thread cutting: F lead or I threads per inch, J/K pull-out, Q start angle"),
     g(92, Group::Motion, GFn::Thread(ThreadCmd::Cycle(&G92)), "thread cutting cycle: R taper, F lead, J/K pull-out, L starts, Q start angle (GSK988TA/TB manual, G92)"),
@@ -62,6 +60,12 @@ const EXTRA: &[GDef] = &[
     gp(32, 2, "G32.2", Group::Motion, GFn::Thread(ThreadCmd::Arc(ArcDir::Cw)), "arc thread, clockwise (GSK988T manual, G32.2/G32.3)"),
     gp(32, 3, "G32.3", Group::Motion, GFn::Thread(ThreadCmd::Arc(ArcDir::Ccw)), "arc thread, counter-clockwise (GSK988T manual, G32.2/G32.3)"),
     gp(92, 1, "G92.1", Group::Motion, GFn::Thread(ThreadCmd::Cycle(&G92_1)), "rigid thread cutting cycle (GSK988T manual)"),
+];
+
+/// Codes whose GSK988T page was not at hand, run as the GSK980TDi's.
+const AS_GSK980TDI: &[GDef] = &[
+    g(76, Group::NonModal, GFn::CompoundThread(Compound::G76), "compound thread cutting cycle, two blocks (the GSK988T manual's definitions page agrees: sqrt(n) depths, flank infeed)"),
+    g(33, Group::Motion, GFn::Thread(ThreadCmd::Tap), "tapping: in, spindle reversed, out"),
 ];
 
 const PARAMS: &[ParamDef] = &[
@@ -139,7 +143,7 @@ pub static PROFILE: Profile = Profile {
     reference_point_mm: crate::motion::Vec3::new(100.0, 0.0, 200.0),
     addresses: super::Letters::new("GMSTFXYZUVWRIJKPQLN"),
     peck_back_off: None,
-    g_codes: &[super::Codes { source: "inferred from the GSK980TDi help text (the GSK988T G-code table was not at hand)", codes: common::G_CODES }, super::Codes { source: "inferred from the GSK980TDi help text (the GSK988T G-code table was not at hand)", codes: lathe_a::G_CODES }, super::Codes { source: "GSK988T manual: G32.1, G92.1, G32.2/G32.3, thread repair (seeds 001, 002); G92 of the GSK988TA/TB manual; G34 of the GSK988T manual", codes: EXTRA }, super::Codes { source: "GSK988T manual G-code table (G12.1/G13.1); the rest inferred from the GSK980TDi help text", codes: super::later::GSK988T }],
+    g_codes: &[super::Codes { source: "inferred from the GSK980TDi help text (the GSK988T G-code table was not at hand)", codes: common::G_CODES }, super::Codes { source: "inferred from the GSK980TDi help text (the GSK988T G-code table was not at hand)", codes: lathe_a::G_CODES }, super::Codes { source: "GSK988T manual: G32.1, G92.1, G32.2/G32.3, thread repair (seeds 001, 002); G92 of the GSK988TA/TB manual; G34 of the GSK988T manual", codes: EXTRA }, super::Codes { source: "inferred from the GSK980TDi help text (the GSK988T page was not at hand)", codes: AS_GSK980TDI }, super::Codes { source: "GSK988T manual G-code table (G12.1/G13.1); the rest inferred from the GSK980TDi help text", codes: super::later::GSK988T }],
     m_codes: &[super::Codes { source: "inferred from the GSK980TDi help text (M-code list)", codes: common::M_CODES }, super::Codes { source: "inferred from the GSK980TDi help text (M-code list)", codes: lathe_a::M_CODES }, super::Codes { source: "GSK988T manual, G32.1 (M14/M15); the rest inferred from the GSK980TDi help text", codes: lathe_a::GSK_M_CODES }],
     params: &[FANUC_RATES, PARAMS, super::FANUC_G76, super::GSK_LATHE_OFFSETS, SETTINGS],
     time: TimeKeys {

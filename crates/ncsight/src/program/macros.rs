@@ -77,6 +77,8 @@ pub(super) struct Reading<'a> {
     pub last_n: Option<u32>,
     /// A G66 modal call is in force (group 12: G66, else G67).
     pub modal_call: bool,
+    /// The controlled axes in the control's order (X Y Z A B C letters).
+    pub axes: &'a [u8],
 }
 
 fn no_such(number: i64, why: &str) -> ExprError {
@@ -93,9 +95,9 @@ fn code_of(profile: &Profile, f: GFn) -> Option<f64> {
 const POWER_ON: [(Group, f64); 4] = [(Group::CutterComp, 40.0), (Group::LengthComp, 49.0), (Group::WorkOffset, 54.0), (Group::PathMode, 64.0)];
 
 impl Reading<'_> {
-    /// The profile's controlled axes in their order, as indices of a position (x 0, y 1, z 2).
-    fn controlled_axes(&self) -> &'static [usize] {
-        if self.profile.is_lathe() { &[0, 2] } else { &[0, 1, 2] }
+    /// The controlled axes in their order (the setup's, else the profile's X Z or X Y Z).
+    fn controlled_axes(&self) -> &[u8] {
+        self.axes
     }
 
     /// #4001-#4022: the code in force in FANUC group `number - 4000`, as the profile numbers
@@ -157,8 +159,14 @@ impl expr::Variables for Reading<'_> {
         // #5021-#5026 add the machine's offsets.
         let shown = m.pos + m.frame.unmoved;
         let machine = m.pos + self.to_machine;
-        let axis = |i: usize, p: &crate::motion::Vec3| {
-            let v = p.axis(i);
+        let axis = |letter: u8, p: &crate::motion::Vec3| {
+            let (i, v) = match letter {
+                b'X' => (0, p.x),
+                b'Y' => (1, p.y),
+                b'Z' => (2, p.z),
+                // A rotary axis: degrees, the same in every coordinate system (no offsets).
+                r => return Some(self.modal.rotary_deg[usize::from(r - b'A').min(2)]),
+            };
             // A diameter X reads as a diameter (MACRO.md section 8, inferred).
             Some(if i == 0 && self.profile.diameter_x { v * 2.0 } else { v })
         };
@@ -189,7 +197,8 @@ impl expr::Variables for Reading<'_> {
             // setup (work and tool offsets) the three are the same (MACRO.md section 8); with
             // one, #5021-#5026 are in machine coordinates.
             // The controlled axes in their order: X Y Z on the mill, X Z on a lathe (#5002 is a
-            // lathe's Z, as SK7420's `#681=#5022(Current Z ...)` reads it). An axis the profile
+            // lathe's Z, as SK7420's `#681=#5022(Current Z ...)` reads it), or the setup's
+            // `[machine] axes` in the order written (a 4th axis A is #5004). An axis the machine
             // does not have is vacant.
             5001..=5006 | 5021..=5026 | 5041..=5046 => {
                 let k = ((number - 5001) % 20) as usize;

@@ -205,7 +205,9 @@ impl LineReader {
 /// programme configuration; assumed for the GSK and YASNAC profiles as well). A file whose
 /// first lines are programme blocks has no leader: a `%` after them closes the record
 /// (MACRO.md section 1). So lines before the first `%` are the leader only when none of them
-/// reads as a block, and at least one is text that is not a comment (a title, a CAM banner).
+/// reads as a block or starts as one (`G0 X1,5` is a programme with a mistake, not a title), and
+/// at least one is text that is not a comment (a title, a CAM banner) or a punched tape's
+/// blank leader (NUL or DEL bytes, also before the `%` on its line).
 /// The scan is bounded: past [`LEADER_SCAN_BYTES`] without a `%` there is no leader.
 #[derive(Debug, Clone)]
 pub struct LeaderScan {
@@ -227,17 +229,30 @@ impl LeaderScan {
             return true;
         }
         self.bytes += raw.len();
-        let body: &[u8] = {
-            let t = raw.iter().position(|b| !matches!(b, b' ' | b'\t' | b'\r' | b'\n')).unwrap_or(raw.len());
-            &raw[t..]
-        };
+        // Blanks, and the NUL and DEL bytes of a punched tape's blank leader.
+        let blank = |b: &u8| matches!(b, b' ' | b'\t' | b'\r' | b'\n' | 0 | 0x7f);
+        let t = raw.iter().position(|b| !blank(b)).unwrap_or(raw.len());
+        let body = &raw[t..];
         if body.first() == Some(&b'%') {
-            self.decided = Some(if self.text { self.lines } else { 0 });
+            // Tape bytes before the `%` on its own line make that line part of the leader.
+            let tape_bytes = raw[..t].iter().any(|b| matches!(b, 0 | 0x7f));
+            self.decided = Some(if self.text || tape_bytes { self.lines + u32::from(tape_bytes) } else { 0 });
             return true;
         }
         self.lines += 1;
         if body.is_empty() {
+            self.text |= raw.iter().any(|b| matches!(b, 0 | 0x7f));
             return self.bytes >= LEADER_SCAN_BYTES && self.decide_none();
+        }
+        // A line that starts as a block does (an address with a number, `/`, `:`) is a
+        // programme, even one with a mistake in it (`G0 X1,5`): no leader.
+        let code_like = match body {
+            [b'/' | b':', ..] => true,
+            [l, n, ..] if l.is_ascii_alphabetic() => matches!(n, b'0'..=b'9' | b'-' | b'+' | b'.' | b'#' | b'[' | b' '),
+            _ => false,
+        };
+        if code_like {
+            return self.decide_none();
         }
         if crate::dialect::sniff(raw).is_some() {
             return self.decide_none();
@@ -786,7 +801,7 @@ impl Core {
     /// end-of-file mark. Whether the line's blocks are to be interpreted.
     fn begin_line(&mut self, foreign: Option<Foreign>, len: usize, warnings: &[Diagnostic], end_of_file: bool, tape_mark: bool, sink: &mut dyn FnMut(Event)) -> bool {
         if self.file == 0 && self.line_no <= self.leader_lines {
-            if self.line_no == 1 && !self.again && self.calls.search.is_none() {
+            if self.line_no == 1 && !self.again {
                 let span = Span::new(1, 1, len.clamp(1, 80) as u32);
                 let lines = if self.leader_lines == 1 { "line 1, before the first '%', is".to_string() } else { format!("lines 1-{}, before the first '%', are", self.leader_lines) };
                 sink(Event::Diagnostic(Diagnostic::new(
@@ -1005,6 +1020,7 @@ impl Core {
             program: self.calls.running().and_then(|(n, _)| n),
             last_n: self.last_n,
             modal_call: self.modal_call.is_some(),
+            axes: &self.interp.tables().axis_order,
         }
     }
 
@@ -1403,7 +1419,9 @@ impl Core {
             }
             None => {}
         }
-        let modal_call = self.modal_call.filter(|m| m.depth == self.calls.depth() && block.words.iter().any(|w| matches!(w.letter, b'X' | b'Y' | b'Z' | b'U' | b'V' | b'W')));
+        // A move of any axis calls it: the setup's rotary axes (and H, the lathe's incremental C) too.
+        let added = self.interp.tables().added_addresses;
+        let modal_call = self.modal_call.filter(|m| m.depth == self.calls.depth() && block.words.iter().any(|w| matches!(w.letter, b'X' | b'Y' | b'Z' | b'U' | b'V' | b'W') || (matches!(w.letter, b'A' | b'B' | b'C' | b'H') && added.contains(w.letter))));
         let go_on = self.execute_nc(block, place, sink);
         match modal_call {
             // After a block with a move, the G66 macro is called (its moves do not call it again:
