@@ -82,8 +82,11 @@ def test_an_alarm_is_a_record(bad):
     spec = first.strip().strip("()").split()
     code, line, col, machine = spec[1], int(spec[3]), int(spec[5]), spec[7]
     setup = bad.with_suffix(".toml") if bad.with_suffix(".toml").exists() else None
-    records = ncsight.run(bad.read_bytes(), machine, setup=setup)
-    extra = ["--setup", str(setup)] if setup else []
+    # A `.args` beside it holds more arguments: here `--param NAME=VALUE` pairs.
+    more = bad.with_suffix(".args").read_text().split() if bad.with_suffix(".args").exists() else []
+    params = [more[i + 1] for i in range(0, len(more) - 1, 2) if more[i] == "--param"]
+    records = ncsight.run(bad.read_bytes(), machine, setup=setup, params=params)
+    extra = (["--setup", str(setup)] if setup else []) + more
     assert records == cli("run", str(bad), "--machine", machine, "--format", "jsonl", *extra)
     last = records[-1]
     assert (last["kind"], last["code"], last["line"], last["col"]) == ("alarm", code, line, col)
