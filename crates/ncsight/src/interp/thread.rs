@@ -317,7 +317,7 @@ pub(super) fn block(step: &mut Step, words: &mut Words, cmd: ThreadCmd, explicit
 fn straight(step: &mut Step, words: &mut Words, cmd: ThreadCmd, run_deg: Option<f64>) -> Result<(), Diagnostic> {
     let rigid = cmd == ThreadCmd::Rigid;
     let gname = name(cmd);
-    let lead = step.read_lead(words, gname, !rigid && step.profile.thread.g32_pull_out, false, MAX_LEAD_MM)?;
+    let lead = step.read_lead(words, gname, !rigid && step.profile.thread.g32_pull_out, !rigid && step.profile.thread.g32_lead_e, MAX_LEAD_MM)?;
     // G32.1: J signed, K unsigned (seed 001 notes); G32: J signed, K as written taken positive.
     // FANUC's G32 has no J/K.
     let (j_given, k_given) = if rigid || step.profile.thread.g32_pull_out { step.read_jk(words, gname, true, !rigid)? } else { (false, false) };

@@ -136,6 +136,7 @@ pub static PROFILE: Profile = Profile {
         pull_out_accel: None,
         repair_enable: None,
         g32_pull_out: false,
+        g32_lead_e: false,
         g76: Some(G76Keys {
             finishing: ParamKey::Number(5142, None),
             pull_out: ParamKey::Number(5130, None),

@@ -151,7 +151,7 @@ pub static PROFILE: Profile = Profile {
         dry_run: ParamKey::Number(1410, None),
         feed_max: ParamKey::Number(1422, None),
     },
-    thread: ThreadRules { q_point: QPoint::Alarm, arc_q_unit_deg: 1.0, pull_out_speed: None, after_end_feed: Some(ParamKey::Number(1466, None)), pull_out_accel: Some(ParamKey::Number(1628, None)), repair_enable: Some(ParamKey::Number(8135, Some(7))), g32_pull_out: true, g76: Some(G76Keys {
+    thread: ThreadRules { q_point: QPoint::Alarm, arc_q_unit_deg: 1.0, pull_out_speed: None, after_end_feed: Some(ParamKey::Number(1466, None)), pull_out_accel: Some(ParamKey::Number(1628, None)), repair_enable: Some(ParamKey::Number(8135, Some(7))), g32_pull_out: true, g32_lead_e: false, g76: Some(G76Keys {
         // The GSK988T numbers its parameters as FANUC does (1022, 1422 on its G01/G02 page;
         // 5130/5131 in G92.1): the FANUC 0i-T G76 numbers are assumed.
         finishing: ParamKey::Number(5142, None),

@@ -603,6 +603,8 @@ pub struct ThreadRules {
     pub repair_enable: Option<ParamKey>,
     /// G32 takes J and K (GSK) or not (FANUC).
     pub g32_pull_out: bool,
+    /// G32 takes E as the lead, as F (YASNAC LX3, as its G92: seed 004; inferred for G32).
+    pub g32_lead_e: bool,
     /// G76: the parameters its first block rewrites, with their units.
     pub g76: Option<G76Keys>,
 }
