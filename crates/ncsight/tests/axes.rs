@@ -1,22 +1,13 @@
 //! Axes a setup adds to a profile (docs/setup.md): the rotary axes in the macro variables, in
 //! G66 calls, in the other motion modes, and several of them turning in one block.
 
+mod common;
+
 use ncsight::motion::Op;
-use ncsight::profile::{self, Params};
-use ncsight::setup::Setup;
-use ncsight::{Event, Mode, Program, Record, Switches};
+use ncsight::Record;
 
 fn run(machine: &str, axes: &str, text: &str) -> (Vec<Record>, Vec<ncsight::Diagnostic>) {
-    let mut program = Program::new(Params::defaults(profile::by_name(machine).unwrap()), Switches::default(), Mode::Run);
-    program.set_setup(&Setup::from_toml(&format!("[machine]\naxes = {axes}\n")).unwrap());
-    let (mut records, mut diags) = (Vec::new(), Vec::new());
-    for e in ncsight::events(program, text.as_bytes()) {
-        match e {
-            Event::Record(r) => records.push(r),
-            Event::Diagnostic(d) => diags.push(d),
-        }
-    }
-    (records, diags)
+    common::run_setup(machine, &format!("[machine]\naxes = {axes}\n"), text, false)
 }
 
 fn alarms(diags: &[ncsight::Diagnostic]) -> Vec<&str> {

@@ -2,23 +2,15 @@
 //! along the normal axis, blocks without moves, subprogramme ends, single block (the cases a
 //! reviewer found, each a programme).
 
+mod common;
+
 use ncsight::motion::Op;
 use ncsight::profile::{self, Params};
 use ncsight::setup::Setup;
 use ncsight::{Event, Mode, Program, Record, Switches};
 
 fn run(machine: &str, setup: &str, text: &str, single_block: bool) -> (Vec<Record>, Vec<ncsight::Diagnostic>) {
-    let operator = ncsight::Options { single_block, ..Default::default() };
-    let mut program = Program::with_operator(Params::defaults(profile::by_name(machine).unwrap()), Switches::default(), Mode::Run, operator);
-    program.set_setup(&Setup::from_toml(setup).unwrap());
-    let (mut records, mut diags) = (Vec::new(), Vec::new());
-    for e in ncsight::events(program, text.as_bytes()) {
-        match e {
-            Event::Record(r) => records.push(r),
-            Event::Diagnostic(d) => diags.push(d),
-        }
-    }
-    (records, diags)
+    common::run_setup(machine, setup, text, single_block)
 }
 
 const LATHE: &str = "[[offset]]\nnumber = 1\nradius_mm = 0.8\ntip = 3\n";

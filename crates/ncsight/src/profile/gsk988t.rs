@@ -11,7 +11,7 @@ use crate::motion::ArcDir;
 /// G92.1 (GSK988T manual, G92.1): S, Q, L; J not below zero, K 0 or more; the pull-out of
 /// parameters 5130/5131 for what J/K omit (notes 1-6); FEED HOLD discarded during the thread
 /// (note 7).
-static G92_1: CycleRules = CycleRules {
+const G92_1_RULES: CycleRules = CycleRules {
     code: "G92.1",
     rigid: true,
     negative_f_left_hand: false,
@@ -28,29 +28,14 @@ static G92_1: CycleRules = CycleRules {
     pull_out: PullOutRule::JkChamfer { amount: ParamKey::Number(5130, None), angle: ParamKey::Number(5131, None) },
     hold: HoldRule::Ignored,
 };
+static G92_1: CycleRules = G92_1_RULES;
 
 /// G92 (GSK988TA/TB manual, G92 (printed p104), the same family as the 988T): R taper, F lead,
 /// J (not below zero) and K pull-out, modal, without direction; L starts 1-99; Q start angle as
 /// G32. No I (inch) word in its format. Inferred where its page was cut off: the pull-out for
 /// what J/K omit is that of G92.1 on the same control (parameters 5130/5131, seed 001 G92.1
 /// notes 1-3), and FEED HOLD waits for the thread's end, as in the G32 notes.
-static G92: CycleRules = CycleRules {
-    code: "G92",
-    rigid: false,
-    negative_f_left_hand: false,
-    lead_i: false,
-    lead_e: false,
-    repair_p: false,
-    starts_l: true,
-    jk: JkWords::NonNegative,
-    flank_k: false,
-    ts_before: false,
-    q_start: true,
-    taper: b'R',
-    taper_limit: true,
-    pull_out: PullOutRule::JkChamfer { amount: ParamKey::Number(5130, None), angle: ParamKey::Number(5131, None) },
-    hold: HoldRule::AfterRun,
-};
+static G92: CycleRules = CycleRules { code: "G92", rigid: false, hold: HoldRule::AfterRun, ..G92_1_RULES };
 
 const EXTRA: &[GDef] = &[
     g(34, Group::Motion, GFn::Thread(ThreadCmd::VariableLead), "variable-lead thread cutting: F, R per revolution, J/K (GSK988T manual 2.16.2, its example G34 W-78 F4 J5 K2 R0.2)"),

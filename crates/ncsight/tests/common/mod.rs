@@ -3,7 +3,7 @@
 #![allow(dead_code)]
 
 use ncsight::profile::{self, Params};
-use ncsight::{run_text_with, Diagnostic, Event, Mode, Options, Record, Switches};
+use ncsight::{run_text_with, Diagnostic, Event, Mode, Options, Program, Record, Switches};
 
 /// `machine` with its default parameters, each of `params` (`NAME=VALUE`) set on top.
 pub fn params(machine: &str, params: &[&str]) -> Params {
@@ -14,16 +14,29 @@ pub fn params(machine: &str, params: &[&str]) -> Params {
     p
 }
 
-/// Every record and diagnostic of `text` run on `machine`.
-pub fn run_with(machine: &str, given: &[&str], switches: Switches, opts: Options, text: &str) -> (Vec<Record>, Vec<Diagnostic>) {
+/// Every record and diagnostic of a programme's run.
+pub fn split(events: impl Iterator<Item = Event>) -> (Vec<Record>, Vec<Diagnostic>) {
     let (mut records, mut diags) = (Vec::new(), Vec::new());
-    for e in run_text_with(params(machine, given), switches, Mode::Run, opts, text.as_bytes()) {
+    for e in events {
         match e {
             Event::Record(r) => records.push(r),
             Event::Diagnostic(d) => diags.push(d),
         }
     }
     (records, diags)
+}
+
+/// `text` run on `machine` with the setup file `setup` (TOML), single block as asked.
+pub fn run_setup(machine: &str, setup: &str, text: &str, single_block: bool) -> (Vec<Record>, Vec<Diagnostic>) {
+    let operator = Options { single_block, ..Default::default() };
+    let mut program = Program::with_operator(Params::defaults(profile::by_name(machine).unwrap()), Switches::default(), Mode::Run, operator);
+    program.set_setup(&ncsight::setup::Setup::from_toml(setup).unwrap());
+    split(ncsight::events(program, text.as_bytes()))
+}
+
+/// Every record and diagnostic of `text` run on `machine`.
+pub fn run_with(machine: &str, given: &[&str], switches: Switches, opts: Options, text: &str) -> (Vec<Record>, Vec<Diagnostic>) {
+    split(run_text_with(params(machine, given), switches, Mode::Run, opts, text.as_bytes()).into_iter())
 }
 
 /// The same with the default switches and options.
