@@ -146,11 +146,15 @@ impl Report<'_> {
         let _ = write!(s, "\"passes\":{pass},\"thin\":{thin},");
         // Other records: spindle, stops, tools, dwells, ends.
         s.push_str("\"events\":[");
+        let mut before_s = 0.0;
         let evs: Vec<String> = self
             .records
             .iter()
             .filter_map(|r| {
+                let took_s = r.t_s - std::mem::replace(&mut before_s, r.t_s);
                 let what = match &r.op {
+                    // A rotary axis's turn: the time it adds (the plot shows X, Y, Z only).
+                    Op::Rotary { axis, to_deg, .. } => format!("\"rotary\",\"axis\":\"{}\",\"deg\":{},\"s\":{}", *axis as char, num(*to_deg, 3), num(took_s.max(0.0), 4)),
                     Op::Spindle { rpm, oriented, .. } => format!("\"spindle\",\"rpm\":{}{}", num(*rpm, 1), if *oriented { ",\"oriented\":true" } else { "" }),
                     Op::Stop { reason } => format!("\"stop\",\"reason\":\"{}\"", reason.as_str()),
                     Op::Tool { number, .. } => format!("\"tool\",\"tool\":{number}"),

@@ -64,3 +64,21 @@ fn report_says_what_the_setup_gives_and_what_is_assumed() {
     assert!(html.contains("no travel limits"));
     let _ = std::fs::remove_dir_all(dir);
 }
+
+/// A rotary axis's turn is in the report's data with the time it adds (45 degrees at the rotary
+/// rapid rate, 10800 deg/min: 0.25 s plus 0.1 s to accelerate), for the time chart and table.
+#[test]
+fn report_counts_the_time_of_rotary_turns() {
+    let dir = std::env::temp_dir().join(format!("ncsight-report-rotary-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let prog = dir.join("p.nc");
+    std::fs::write(&prog, "G91 G00 A45.\nM30\n").unwrap();
+    let setup = dir.join("s.toml");
+    std::fs::write(&setup, "[machine]\naxes = [\"X\", \"Y\", \"Z\", \"A\"]\n").unwrap();
+    let out = dir.join("r.html");
+    let (code, _, err) = common::ncsight(&["report", prog.to_str().unwrap(), "--machine", "fanuc0m", "--setup", setup.to_str().unwrap(), "-o", out.to_str().unwrap()]);
+    assert_eq!(code, 0, "{err}");
+    let html = std::fs::read_to_string(&out).unwrap();
+    assert!(html.contains(r#"{"k":"rotary","axis":"A","deg":45,"s":0.35,"l":1"#), "{}", &html[html.find("\"events\"").unwrap_or(0)..][..300.min(html.len())]);
+    let _ = std::fs::remove_dir_all(dir);
+}

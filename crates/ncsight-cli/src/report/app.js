@@ -258,8 +258,9 @@
   // ---- time breakdown ----------------------------------------------------------------
   const kinds = {};
   D.segs.forEach((s) => { const k = s.pull ? "pull-out" : ({ r: "rapid", f: "feed", a: "arc", t: "thread", ta: "thread arc" })[s.k]; kinds[k] = (kinds[k] || 0) + (s.t1 - s.t0); });
-  let dwell = 0; D.events.forEach((e) => { if (e.k === "dwell") dwell += e.s; });
+  let dwell = 0, turn = 0; D.events.forEach((e) => { if (e.k === "dwell") dwell += e.s; if (e.k === "rotary") turn += e.s; });
   if (dwell) kinds.dwell = dwell;
+  if (turn) kinds["rotary turn"] = turn;
   const keys = Object.keys(kinds).sort((a, b) => kinds[b] - kinds[a]);
   const chart = sel("svg", { width: 520, height: 24 * keys.length + 10, role: "img", "aria-label": "time by kind of motion" });
   const maxv = Math.max(...keys.map((k) => kinds[k]), 1e-9);
@@ -271,6 +272,7 @@
   $("time-chart").appendChild(chart);
   const perLine = {};
   D.segs.forEach((s) => { perLine[s.l] = (perLine[s.l] || 0) + (s.t1 - s.t0); });
+  D.events.forEach((e) => { if (e.k === "rotary" && e.s > 0) perLine[e.l] = (perLine[e.l] || 0) + e.s; });
   const rows = Object.keys(perLine).map((l) => [+l, perLine[l]]).sort((a, b) => b[1] - a[1]);
   const tt = el("table", { id: "time-by-block" });
   const head = el("tr"); ["line", "block", "seconds"].forEach((h) => head.appendChild(el("th", {}, h))); tt.appendChild(head);
