@@ -273,6 +273,10 @@ pub struct Modal {
     pub spindle: SpindleDir,
     /// Last S word: rpm (G97) or m/min (G96).
     pub s_word: f64,
+    /// Several spindles (the setup's `spindle_p`): the one selected (an index into it), and
+    /// the direction and S word each keeps while another is selected.
+    pub spindle_sel: u8,
+    pub spindles: [(SpindleDir, f64); crate::setup::MAX_SPINDLES],
     /// G50 S: the spindle speed clamp, rpm.
     pub rpm_clamp: Option<f64>,
     /// M14 (position / CS mode) on servo-spindle lathes.
@@ -330,6 +334,8 @@ impl Modal {
             spindle: SpindleDir::Stopped,
             s_word: 0.0,
             rpm_clamp: None,
+            spindle_sel: 0,
+            spindles: [(SpindleDir::Stopped, 0.0); crate::setup::MAX_SPINDLES],
             spindle_position_mode: false,
             feed: None,
             tool: 0,

@@ -208,7 +208,9 @@ pub enum Op {
     /// Spindle state changed. `rpm` is signed: negative = the spindle's negative direction;
     /// 0 = stopped. `surface_m_min` is the G96 surface speed when constant surface speed is on.
     /// `oriented`: an oriented spindle stop (G76, G87).
-    Spindle { rpm: f64, surface_m_min: Option<f64>, position_mode: bool, oriented: bool },
+    /// `p`: the spindle it is, by the P that selects it on a machine with several (the setup's
+    /// `spindle_p`); 0 on a machine with one.
+    Spindle { rpm: f64, surface_m_min: Option<f64>, position_mode: bool, oriented: bool, p: u32 },
     /// Tool selected (lathe T word) or changed (M06). `offset` is the lathe offset number.
     Tool { number: u32, offset: Option<u32> },
     Stop { reason: StopReason },

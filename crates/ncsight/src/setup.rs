@@ -5,6 +5,9 @@
 
 use serde::Deserialize;
 
+/// The most spindles a setup may name (`[machine] spindle_p`).
+pub const MAX_SPINDLES: usize = 4;
+
 /// The job setup (`--setup FILE.toml`): the machine (axes, travel limits, reference points),
 /// the work offsets, the tool and offset tables, the stock. Every part is optional; without a
 /// part the run assumes what docs/setup.md says (offsets 0, the profile's reference point).
@@ -316,6 +319,12 @@ impl Setup {
                 if !matches!(a.as_str(), "X" | "Y" | "Z" | "A" | "B" | "C") {
                     return Err(SetupError(format!("machine.axes: {a:?} is not an axis (X, Y, Z, A, B or C)")));
                 }
+            }
+            if m.spindle_p.len() > MAX_SPINDLES {
+                return Err(SetupError(format!("machine.spindle_p: at most {} spindles", MAX_SPINDLES)));
+            }
+            if m.spindle_p.iter().enumerate().any(|(i, p)| m.spindle_p[..i].contains(p)) {
+                return Err(SetupError("machine.spindle_p: each spindle's P once".into()));
             }
             for (name, p) in [("reference", m.reference), ("reference_2", m.reference_2), ("reference_3", m.reference_3), ("reference_4", m.reference_4)] {
                 if p.is_some_and(|p| !point_ok(&p)) {

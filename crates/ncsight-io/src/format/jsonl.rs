@@ -185,8 +185,11 @@ impl Jsonl {
                             s.push_str(",\"with_move\":true");
                         }
                     }
-                    Op::Spindle { rpm, surface_m_min, position_mode, oriented } => {
+                    Op::Spindle { rpm, surface_m_min, position_mode, oriented, p } => {
                         num_field(s, "rpm", *rpm, 3);
+                        if *p != 0 {
+                            let _ = write!(s, ",\"spindle_p\":{p}");
+                        }
                         if *oriented {
                             s.push_str(",\"oriented\":true");
                         }

@@ -93,9 +93,12 @@ impl Text {
                     s.push_str("  (with the move above)");
                 }
             }
-            Op::Spindle { rpm, surface_m_min, position_mode, oriented } => {
+            Op::Spindle { rpm, surface_m_min, position_mode, oriented, p } => {
                 push_num(s, *rpm, 1);
                 s.push_str(" rpm");
+                if *p != 0 {
+                    let _ = write!(s, " (spindle P{p})");
+                }
                 if *oriented {
                     s.push_str(" oriented stop");
                 }

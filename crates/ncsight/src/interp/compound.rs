@@ -257,8 +257,8 @@ pub(super) fn tap(step: &mut Step, words: &mut Words) -> Result<(), Diagnostic> 
     let first = step.out.records.len();
     // Steps 2-4: M05 at the bottom, wait for the stop, turn the other way.
     let reverse = [
-        Op::Spindle { rpm: 0.0, surface_m_min: None, position_mode, oriented: false },
-        Op::Spindle { rpm: -rpm, surface_m_min: None, position_mode, oriented: false },
+        Op::Spindle { rpm: 0.0, surface_m_min: None, position_mode, oriented: false, p: step.spindle_p() },
+        Op::Spindle { rpm: -rpm, surface_m_min: None, position_mode, oriented: false, p: step.spindle_p() },
     ];
     for k in 0..starts {
         let deg = k as f64 * 360.0 / starts as f64;
@@ -266,7 +266,7 @@ pub(super) fn tap(step: &mut Step, words: &mut Words) -> Result<(), Diagnostic> 
             step.emit(op);
         }
         // Step 6: M05.
-        step.emit(Op::Spindle { rpm: 0.0, surface_m_min: None, position_mode, oriented: false });
+        step.emit(Op::Spindle { rpm: 0.0, surface_m_min: None, position_mode, oriented: false, p: step.spindle_p() });
     }
     step.st.spindle = SpindleDir::Stopped;
     // Help note 4: single block and feed hold wait for the end of the tapping.

@@ -94,8 +94,8 @@ fn emit_hole(step: &mut Step, hole: &Hole, global: impl Fn(drill::Local, &Vec3) 
             drill::Step::Rapid(l) => Op::Rapid { from: here, to: global(l, &here) },
             drill::Step::Feed(l, f) => Op::Feed { from: here, to: global(l, &here), feed_mm_min: f },
             drill::Step::Dwell(s) => Op::Dwell { seconds: s },
-            drill::Step::Spindle(rpm) => Op::Spindle { rpm, surface_m_min: None, position_mode, oriented: false },
-            drill::Step::Orient => Op::Spindle { rpm: 0.0, surface_m_min: None, position_mode, oriented: true },
+            drill::Step::Spindle(rpm) => Op::Spindle { rpm, surface_m_min: None, position_mode, oriented: false, p: step.spindle_p() },
+            drill::Step::Orient => Op::Spindle { rpm: 0.0, surface_m_min: None, position_mode, oriented: true, p: step.spindle_p() },
             drill::Step::ManualRetract => Op::Stop { reason: StopReason::ManualRetract },
         };
         if let Op::Rapid { from, to } | Op::Feed { from, to, .. } = op {

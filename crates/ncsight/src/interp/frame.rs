@@ -41,6 +41,8 @@ pub struct Tables {
     /// The controlled axes in the control's order (what #5001-#5006 read): the setup's
     /// `[machine] axes` as written, else the profile's.
     pub axis_order: Vec<u8>,
+    /// The P values that select a spindle (the setup's `spindle_p`; empty: one spindle).
+    pub spindle_p: Vec<u32>,
 }
 
 impl Tables {
@@ -59,6 +61,7 @@ impl Tables {
             rotary: [false; 3],
             added_addresses: crate::profile::Letters::EMPTY,
             axis_order: profile.axes.bytes().collect(),
+            spindle_p: Vec::new(),
         }
     }
 
@@ -81,6 +84,7 @@ impl Tables {
             }
         }
         if let Some(m) = &setup.machine {
+            t.spindle_p = m.spindle_p.clone();
             if !m.axes.is_empty() {
                 t.axis_order = m.axes.iter().map(|a| a.as_bytes()[0]).collect();
             }

@@ -175,6 +175,11 @@ impl Step<'_> {
         self.out.warnings.push(d);
     }
 
+    /// The P of the spindle selected (the setup's `spindle_p`), 0 on a machine with one.
+    fn spindle_p(&self) -> u32 {
+        self.tables.spindle_p.get(usize::from(self.st.spindle_sel)).copied().unwrap_or(0)
+    }
+
     fn emit(&mut self, op: Op) {
         self.emit_at(self.span, self.n, op);
     }
@@ -1062,6 +1067,27 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
         let unit = if step.st.inch { 25.4 } else { 1.0 };
         step.st.feed = Some(w.value * unit);
     }
+    // On a machine with several spindles (the setup's `spindle_p`), P in a block with S or a
+    // spindle M code selects the spindle they are for (FANUC multi-spindle control: the P codes
+    // of parameter 3781; inferred). Each spindle keeps its own speed and direction; the one
+    // selected last is the one feeds per revolution and threads follow (assumed).
+    let spindle_m = ms.iter().any(|(_, m)| m.is_some_and(|m| matches!(m.function, MFn::SpindleCw | MFn::SpindleCcw | MFn::SpindleStop)));
+    let calls = ms.iter().any(|(_, m)| m.is_some_and(|m| matches!(m.function, MFn::SubprogramCall | MFn::SubprogramReturn)));
+    if !step.tables.spindle_p.is_empty() && (words.has(b'S') || spindle_m) && codes.non_modal.is_none() && !calls && codes.drill.or(step.st.drill.kind).is_none() && !thread_block {
+        if let Some(w) = words.take(b'P') {
+            let Some(i) = step.tables.spindle_p.iter().position(|p| f64::from(*p) == w.value) else {
+                let list: Vec<String> = step.tables.spindle_p.iter().map(|p| format!("P{p}")).collect();
+                return Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("{}: no such spindle: the setup's spindles are {}", w.text(), list.join(", "))));
+            };
+            let i = i as u8;
+            if i != step.st.spindle_sel {
+                let st = &mut *step.st;
+                st.spindles[usize::from(st.spindle_sel)] = (st.spindle, st.s_word);
+                (st.spindle, st.s_word) = st.spindles[usize::from(i)];
+                st.spindle_sel = i;
+            }
+        }
+    }
     let g50_clamp = matches!(codes.non_modal, Some((_, GFn::LatheCoordinateSet)));
     let spindle_before = (step.st.spindle, step.st.s_word, step.st.css, step.st.spindle_position_mode);
     let s_word = if rigid_thread { None } else { words.take(b'S') };
@@ -1384,7 +1410,7 @@ fn emit_spindle(step: &mut Step) {
     let rpm = step.rpm_here();
     let surface = if step.st.css { Some(step.st.surface_m_min()) } else { None };
     let position_mode = step.st.spindle_position_mode;
-    step.emit(Op::Spindle { rpm, surface_m_min: surface, position_mode, oriented: false });
+    step.emit(Op::Spindle { rpm, surface_m_min: surface, position_mode, oriented: false, p: step.spindle_p() });
 }
 
 /// G04: P in ms (whole number), X or U in seconds; P wins over X, X over U; negative = 0
