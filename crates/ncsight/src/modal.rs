@@ -157,6 +157,15 @@ pub struct Transforms {
     pub rotation: Option<Rotation>,
 }
 
+/// G22's area: a box in machine coordinates (an axis G22 did not bound is unbounded), the
+/// tool forbidden inside it, or outside it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct StrokeArea {
+    pub lo: Vec3,
+    pub hi: Vec3,
+    pub outside: bool,
+}
+
 /// G51: magnification per axis about a centre.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Scaling {
@@ -258,6 +267,8 @@ pub struct Modal {
     pub rotary_deg: [f64; 3],
     /// Polar coordinates, mirror image, scaling and rotation in force.
     pub transform: Transforms,
+    /// G22: the stored stroke check 2 area in force, machine coordinates (X a radius).
+    pub stroke2: Option<StrokeArea>,
     /// Where those coordinates are on the machine.
     pub frame: Frame,
     pub motion: Motion,
@@ -320,6 +331,7 @@ impl Modal {
             pos: Vec3::default(),
             rotary_deg: [0.0; 3],
             transform: Transforms::default(),
+            stroke2: None,
             frame: Frame { work: 1, ..Frame::default() },
             motion: Motion::Rapid,
             rough_data: [None; 2],

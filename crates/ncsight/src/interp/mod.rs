@@ -13,6 +13,7 @@ pub use call::{Flow, MAX_PROGRAM_NUMBER};
 pub use frame::{TableWrite, Tables};
 pub use rough::{FinishRequest, RoughRequest};
 mod thread;
+mod stroke;
 mod transform;
 mod turning;
 mod words;
@@ -63,6 +64,8 @@ pub struct Outcome {
     /// The first move of the block beyond a soft travel limit: (its block, axis, limit, where
     /// it went, beyond the upper end).
     overtravel: Option<(Span, usize, f64, f64, bool)>,
+    /// The first move of the block into G22's forbidden area: its block and what it did.
+    stroke_hit: Option<(Span, String)>,
     /// What a G10 block writes into the machine's tables, once it has run.
     table_write: Option<TableWrite>,
     /// Radius compensation found no path (the block alarms).
@@ -82,6 +85,7 @@ impl Outcome {
         self.finish_request = None;
         self.flow = None;
         self.overtravel = None;
+        self.stroke_hit = None;
         self.table_write = None;
         self.comp_error = None;
         self.comp_plane_move = false;
@@ -213,10 +217,15 @@ impl Step<'_> {
         }
         // Machine coordinates only where something reads them (a check without limits keeps no
         // record).
-        if !self.tables.limited && self.out.discard_records {
+        if !self.tables.limited && self.out.discard_records && self.st.stroke2.is_none() {
             return;
         }
         let to_machine = self.tables.to_machine(&self.st.frame);
+        if let (Some(area), None) = (self.st.stroke2, &self.out.stroke_hit) {
+            if let Some(why) = stroke::entered(&area, &op, &to_machine) {
+                self.out.stroke_hit = Some((span, why));
+            }
+        }
         if self.tables.limited && self.out.overtravel.is_none() {
             if let Some((from, to)) = op.start_point().zip(op.end_point()) {
                 let (lo, hi) = match geom::arc_geom_of(&op) {
@@ -562,6 +571,8 @@ impl Interpreter {
                 result = Err(step.out.comp_error.take().expect("tested above"));
             } else if let Some(hit) = step.out.overtravel {
                 result = Err(overtravel_alarm(step.profile, hit));
+            } else if let Some((span, why)) = step.out.stroke_hit.take() {
+                result = Err(step.alarm(Rule::StrokeCheck2, span, why));
             }
         }
         if let Err(d) = result {
@@ -715,7 +726,7 @@ struct Codes {
     comp: Option<(Span, i8)>,
     /// G54-G59 in this block (1-6).
     work: Option<u8>,
-    /// G68/G69, G51.1/G50.1 or G51/G50 in this block (the last of them).
+    /// G68/G69, G51.1/G50.1, G51/G50 or G22/G23 in this block (the last of them).
     transform: Option<(Span, GFn)>,
 }
 
@@ -930,7 +941,7 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
             GFn::WorkOffset(n) => codes.work = Some(n),
             // Step 6 puts the length offset in force, with the H of the block.
             GFn::LengthComp(_) | GFn::PathControl => {}
-            GFn::Rotation(_) | GFn::MirrorImage(_) | GFn::Scaling(_) => codes.transform = Some((w.span, g.function)),
+            GFn::Rotation(_) | GFn::MirrorImage(_) | GFn::Scaling(_) | GFn::StrokeCheck(_) => codes.transform = Some((w.span, g.function)),
             GFn::PolarCoordinates(on) => {
                 if on && !st.transform.polar {
                     st.transform.polar_radius = 0.0;
@@ -1213,6 +1224,7 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
             GFn::Rotation(on) => transform::rotation(step, &mut words, on, span).map(|_| on),
             GFn::MirrorImage(on) => transform::mirror_image(step, &mut words, on, span).map(|_| true),
             GFn::Scaling(on) => transform::scaling(step, &mut words, on, span).map(|_| on),
+            GFn::StrokeCheck(on) => stroke::set(step, &mut words, on, span).map(|_| on),
             _ => unreachable!("only transform codes are noted here"),
         };
         step.st.pos = here;
@@ -1309,7 +1321,7 @@ fn polar_reads(step: &Step, block: &Block) -> bool {
         let (major, minor) = w.code();
         !matches!(
             step.profile.g_code(major, minor).map(|g| (g.group, g.function)),
-            Some((_, GFn::PolarCoordinates(false) | GFn::Rotation(_) | GFn::MirrorImage(_) | GFn::Scaling(_))) | Some((Group::NonModal, _))
+            Some((_, GFn::PolarCoordinates(false) | GFn::Rotation(_) | GFn::MirrorImage(_) | GFn::Scaling(_) | GFn::StrokeCheck(_))) | Some((Group::NonModal, _))
         ) || matches!(step.profile.g_code(major, minor).map(|g| g.function), Some(GFn::Dwell))
     })
 }

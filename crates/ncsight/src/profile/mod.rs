@@ -209,6 +209,8 @@ pub enum GFn {
     Scaling(bool),
     /// G16 (on) / G15 (off): polar coordinate command.
     PolarCoordinates(bool),
+    /// G22 (on) / G23 (off): stored stroke check 2, a forbidden area.
+    StrokeCheck(bool),
     /// Known to the controller, not yet simulated: an alarm that says so.
     NotYet(&'static str),
     /// G65: a custom macro call, run by the programme (not the interpreter) with a new level of
@@ -891,6 +893,15 @@ pub const FANUC_MACRO: &[ParamDef] = &[ParamDef {
 }];
 
 pub const SETTINGS: &[ParamDef] = &[
+    ParamDef {
+        key: ParamKey::Setting("stroke2_outside"),
+        meaning: "G22's area: 0 = the tool may not enter it, 1 = it may not leave it",
+        unit: "bit",
+        min: 0.0,
+        max: 1.0,
+        default: 0.0,
+        source: "ncsight setting for FANUC 0i parameter 1300#0 (OUT) and GSK980TDi No.172 bit 2 (help text G22 note 2); inside forbidden assumed at power on",
+    },
     ParamDef {
         key: ParamKey::Setting("rotary_rapid_deg_min"),
         meaning: "rapid rate of a rotary axis (A, B, C) the setup declares",
