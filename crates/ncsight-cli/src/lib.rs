@@ -918,11 +918,13 @@ fn machines(name: Option<&str>, out: &mut dyn Write) -> Result<i32, Failure> {
             let p = profile::by_name(n).ok_or_else(|| usage(format!("unknown machine '{n}': choose one of {}", names())))?;
             writeln!(out, "{} - {}\n", p.name, p.title)?;
             writeln!(out, "{}\n", p.summary)?;
-            writeln!(out, "{:<14} {:>10} {:<11} {:<16} meaning [source]", "parameter", "default", "unit", "range")?;
+            // The key column as wide as the longest key (setting names are long).
+            let w = p.all_params().map(|d| d.key.to_string().len()).max().unwrap_or(0).max(9);
+            writeln!(out, "{:<w$} {:>10} {:<11} {:<16} meaning [source]", "parameter", "default", "unit", "range")?;
             for d in p.all_params() {
                 writeln!(
                     out,
-                    "{:<14} {:>10} {:<11} {:<16} {} [{}]",
+                    "{:<w$} {:>10} {:<11} {:<16} {} [{}]",
                     d.key.to_string(),
                     format::num(d.default, 4),
                     d.unit,
