@@ -165,6 +165,7 @@ rules! {
     OffsetAssumed => Warning, "NCS-W32", None, "OFFSET NOT IN THE SETUP";
     CompRadiusZero => Warning, "NCS-W33", None, "RADIUS COMPENSATION WITH RADIUS 0";
     NoSkipSignal => Warning, "NCS-W34", None, "NO SKIP SIGNAL: THE MOVE RUNS TO ITS END";
+    NoMeasuringSignal => Warning, "NCS-W35", None, "NO MEASURING SIGNAL: THE OFFSET STAYS";
 }
 
 impl Rule {

@@ -53,10 +53,10 @@ fn fanuc_0044_reference_return_in_a_canned_cycle() {
 fn codes_of_the_manual_are_not_simulated_yet_not_unknown() {
     for (machine, block) in [
         ("fanuc0m", "G29 Z0."),
-        ("fanuc0m", "G37"),
+        ("fanuc0m", "G33"),
         ("fanuc0m", "G39"),
         ("fanuc0t", "G12.1"),
-        ("gsk980tdi", "G36 X10"),
+        ("gsk980tdi", "G05.1"),
         ("gsk988t", "G12.1"),
         ("yasnac-lx3", "G34 W-10 F2"),
     ] {

@@ -962,7 +962,7 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
                     codes.motion = Some((w.span, Motion::Rapid));
                 }
             }
-            GFn::Dwell | GFn::DataSetting | GFn::OffsetMove(_) | GFn::ReferenceCheck | GFn::Skip | GFn::SingleDirection | GFn::ReferenceReturn | GFn::OtherReferenceReturn | GFn::LocalCoordinates | GFn::MachineCoordinates | GFn::LatheCoordinateSet | GFn::MillCoordinateSet | GFn::CompoundThread(_) | GFn::PeckCycle(_) | GFn::Rough(_) | GFn::Finish => {
+            GFn::Dwell | GFn::DataSetting | GFn::OffsetMove(_) | GFn::ReferenceCheck | GFn::Skip | GFn::ToolMeasure(_) | GFn::SingleDirection | GFn::ReferenceReturn | GFn::OtherReferenceReturn | GFn::LocalCoordinates | GFn::MachineCoordinates | GFn::LatheCoordinateSet | GFn::MillCoordinateSet | GFn::CompoundThread(_) | GFn::PeckCycle(_) | GFn::Rough(_) | GFn::Finish => {
                 codes.non_modal = Some((w.span, g.function))
             }
             GFn::NotYet(_) | GFn::NotYetReference(_) | GFn::MacroCall | GFn::ModalMacroCall | GFn::ModalMacroCancel => unreachable!("rejected above"),
@@ -1277,6 +1277,7 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
         Some((span, GFn::OffsetMove(factor))) => frame::offset_move(step, &mut words, factor, span)?,
         Some((span, GFn::ReferenceCheck)) => frame::reference_check(step, &mut words, span)?,
         Some((span, GFn::Skip)) => skip(step, &mut words, span)?,
+        Some((span, GFn::ToolMeasure(axis))) => tool_measure(step, &mut words, axis, span)?,
         Some((_, GFn::SingleDirection)) => single_direction(step, &mut words)?,
         Some(_) => unreachable!("only one-shot functions are stored"),
         None => {
@@ -1503,6 +1504,45 @@ fn skip(step: &mut Step, words: &mut Words, span: Span) -> Result<(), Diagnostic
     if target != from {
         step.emit(Op::Feed { from, to: target, feed_mm_min: feed });
     }
+    Ok(())
+}
+
+/// G36 (X) / G37 (Z): automatic tool compensation (lathes) or tool length measurement (G37 on
+/// a mill): at rapid to the setting's approach distance before the measuring position, then at
+/// the measuring feed to it; the sensor's signal would stop the tool there and the offset would
+/// be corrected by the difference (FANUC 0i, GSK980TDi G-code list; inferred). A simulation has
+/// no sensor: the tool reaches the position, the offset stays, with warning NCS-W35.
+fn tool_measure(step: &mut Step, words: &mut Words, axis: u8, span: Span) -> Result<(), Diagnostic> {
+    let axis = usize::from(axis);
+    let (abs_l, inc_l) = if axis == 0 { (b'X', b'U') } else { (b'Z', b'W') };
+    let name = if axis == 0 { "G36" } else { "G37" };
+    let inc = if step.profile.incremental_addresses { words.take(inc_l) } else { None };
+    let scale = if axis == 0 && step.profile.diameter_x { 0.5 } else { 1.0 };
+    let from = step.st.pos;
+    let at = match (words.take(abs_l), inc) {
+        (Some(w), None) => {
+            let v = step.length(w)? * scale;
+            if step.st.incremental { from.axis(axis) + v } else { v }
+        }
+        (None, Some(w)) => from.axis(axis) + step.length(w)? * scale,
+        (Some(a), Some(i)) => return Err(step.alarm(Rule::DuplicateWord, i.span, format!("{} and {} both give the measuring position", a.text(), i.text()))),
+        (None, None) => return Err(step.alarm(Rule::MissingWord, span, format!("{name} needs the measuring position {}", abs_l as char))),
+    };
+    let setting = |step: &Step, k: &'static str| if step.profile.param(ParamKey::Setting(k)).is_some() { step.params.get(ParamKey::Setting(k)) } else { 0.0 };
+    let approach = setting(step, "measure_approach_mm");
+    let feed = setting(step, "measure_feed_mm_min").max(1.0);
+    let travel = at - from.axis(axis);
+    let mut via = from;
+    if travel.abs() > approach {
+        via.set_axis(axis, at - approach * travel.signum());
+        step.emit(Op::Rapid { from, to: via });
+    }
+    let mut target = via;
+    target.set_axis(axis, at);
+    if target != via {
+        step.emit(Op::Feed { from: via, to: target, feed_mm_min: feed });
+    }
+    step.warn(Rule::NoMeasuringSignal, span, format!("{name}: no measuring signal comes in a simulation: the tool reaches the measuring position and the offset stays as it is"));
     Ok(())
 }
 

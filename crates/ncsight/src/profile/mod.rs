@@ -211,6 +211,9 @@ pub enum GFn {
     PolarCoordinates(bool),
     /// G22 (on) / G23 (off): stored stroke check 2, a forbidden area.
     StrokeCheck(bool),
+    /// G36 (X, 0) / G37 (Z, 2): automatic tool compensation or tool length measurement, a
+    /// move to the measuring position that a sensor's signal would end.
+    ToolMeasure(u8),
     /// Known to the controller, not yet simulated: an alarm that says so.
     NotYet(&'static str),
     /// G65: a custom macro call, run by the programme (not the interpreter) with a new level of
@@ -731,6 +734,7 @@ impl GFn {
         match self {
             GFn::NotYet(_) | GFn::NotYetReference(_) => CodeStatus::NotYet,
             GFn::Skip => CodeStatus::Assumed("no skip signal comes: the move runs to its end (NCS-W34)"),
+            GFn::ToolMeasure(_) => CodeStatus::Assumed("no measuring signal comes: the tool reaches the measuring position, the offset stays (NCS-W35)"),
             _ => CodeStatus::Simulated,
         }
     }
@@ -893,6 +897,24 @@ pub const FANUC_MACRO: &[ParamDef] = &[ParamDef {
 }];
 
 pub const SETTINGS: &[ParamDef] = &[
+    ParamDef {
+        key: ParamKey::Setting("measure_approach_mm"),
+        meaning: "G36/G37: the tool comes at rapid to this far before the measuring position, then at the measuring feed",
+        unit: "mm",
+        min: 0.0,
+        max: 100.0,
+        default: 5.0,
+        source: "ncsight setting for FANUC 0i parameter 6254 (gamma; inferred); default assumed",
+    },
+    ParamDef {
+        key: ParamKey::Setting("measure_feed_mm_min"),
+        meaning: "G36/G37: the measuring feed",
+        unit: "mm/min",
+        min: 1.0,
+        max: 10000.0,
+        default: 100.0,
+        source: "ncsight setting for FANUC 0i parameter 6241 (inferred); default assumed",
+    },
     ParamDef {
         key: ParamKey::Setting("stroke2_outside"),
         meaning: "G22's area: 0 = the tool may not enter it, 1 = it may not leave it",
