@@ -726,8 +726,8 @@ struct Codes {
     comp: Option<(Span, i8)>,
     /// G54-G59 in this block (1-6).
     work: Option<u8>,
-    /// G68/G69, G51.1/G50.1, G51/G50 or G22/G23 in this block (the last of them).
-    transform: Option<(Span, GFn)>,
+    /// G68/G69, G51.1/G50.1, G51/G50 and G22/G23 in this block, in order.
+    transforms: Vec<(Span, GFn)>,
 }
 
 /// One block, in the order the controller executes it (the steps as grbl's `gc_execute_line`
@@ -752,15 +752,28 @@ struct Codes {
 fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), Diagnostic> {
     // 0. Under G16 the plane's two words are a radius and an angle: the block is read with the
     // X, Y, Z words they stand for (not in a block that sets or ends a transform, or G15's own).
+    // The block's own G16/G15, G90/G91 and plane count: its words are read in its modes.
     let polar;
-    let all: &[Word] = if step.st.transform.polar && polar_reads(step, block) {
-        // The block's own G90/G91 count: its words are read in its distance mode.
-        let incremental = block.words.iter().rev().filter(|w| w.letter == b'G' && !w.expr && w.is_code()).find_map(|w| match step.profile.g_code(w.code().0, w.code().1).map(|g| g.function) {
-            Some(GFn::Absolute) => Some(false),
-            Some(GFn::Incremental) => Some(true),
-            _ => None,
-        });
-        match transform::polar_words(step, &block.words, incremental.unwrap_or(step.st.incremental))? {
+    let (mut incremental, mut plane, mut polar_on) = (step.st.incremental, step.st.plane, step.st.transform.polar);
+    for w in block.words.iter().filter(|w| w.letter == b'G' && !w.expr && w.is_code()) {
+        match step.profile.g_code(w.code().0, w.code().1).map(|g| g.function) {
+            Some(GFn::Absolute) => incremental = false,
+            Some(GFn::Incremental) => incremental = true,
+            Some(GFn::PlaneXY) => plane = Plane::XY,
+            Some(GFn::PlaneZX) => plane = Plane::ZX,
+            Some(GFn::PlaneYZ) => plane = Plane::YZ,
+            Some(GFn::PolarCoordinates(on)) => polar_on = on,
+            _ => {}
+        }
+    }
+    if polar_on && !step.st.transform.polar {
+        // G16 in this block: its words are polar already, from a radius and angle of 0.
+        step.st.transform.polar = true;
+        step.st.transform.polar_radius = 0.0;
+        step.st.transform.polar_angle_deg = 0.0;
+    }
+    let all: &[Word] = if polar_on && polar_reads(step, block) {
+        match transform::polar_words(step, &block.words, incremental, plane)? {
             Some(w) => {
                 polar = w;
                 &polar
@@ -925,6 +938,10 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
                 if st.comp.side != 0 && plane != st.plane {
                     return Err(step.alarm(Rule::CompPlaneChange, w.span, format!("{}: the plane cannot change while radius compensation is in force (G40 first)", w.text())));
                 }
+                // FANUC: no plane change in coordinate rotation (G69 first).
+                if st.transform.rotation.is_some_and(|r| r.plane != plane) {
+                    return Err(step.alarm(Rule::NotSupported, w.span, format!("{}: a plane change under coordinate rotation (G68) is not simulated: G69 first", w.text())));
+                }
                 st.plane = plane;
             }
             GFn::Inch => st.inch = true,
@@ -941,7 +958,7 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
             GFn::WorkOffset(n) => codes.work = Some(n),
             // Step 6 puts the length offset in force, with the H of the block.
             GFn::LengthComp(_) | GFn::PathControl => {}
-            GFn::Rotation(_) | GFn::MirrorImage(_) | GFn::Scaling(_) | GFn::StrokeCheck(_) => codes.transform = Some((w.span, g.function)),
+            GFn::Rotation(_) | GFn::MirrorImage(_) | GFn::Scaling(_) | GFn::StrokeCheck(_) => codes.transforms.push((w.span, g.function)),
             GFn::PolarCoordinates(on) => {
                 if on && !st.transform.polar {
                     st.transform.polar_radius = 0.0;
@@ -1213,22 +1230,45 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
     }
     // G68/G69, G51.1/G50.1, G51/G50: set or end a transform. A block that sets one (or names
     // the axes of a mirror image to end) makes no move: its axis words are the transform's.
-    if let Some((span, f)) = codes.transform {
+    if !codes.transforms.is_empty() {
         let t = step.st.transform;
+        // The codes that set an area or a transform take the block's axis words: one of them
+        // per block; the cancels run first.
+        let sets = |f: &GFn| matches!(f, GFn::Rotation(true) | GFn::MirrorImage(_) | GFn::Scaling(true) | GFn::StrokeCheck(true));
+        if codes.transforms.iter().filter(|(_, f)| sets(f)).count() > 1 {
+            let (span, _) = codes.transforms.iter().filter(|(_, f)| sets(f)).nth(1).copied().expect("counted");
+            return Err(step.alarm(Rule::NotSupported, span, "two of G68, G51, G51.1/G50.1 and G22 in one block are not simulated: give each its own block"));
+        }
+        if codes.transforms.iter().any(|(_, f)| !matches!(f, GFn::StrokeCheck(_))) && (step.st.drill.kind.is_some() || codes.drill.is_some()) {
+            let (span, _) = codes.transforms[0];
+            return Err(step.alarm(Rule::NotSupported, span, "a coordinate rotation, scaling or mirror image set or ended in a drilling cycle is not simulated: cancel the cycle (G80) first"));
+        }
         // The centres default to where the tool is, in programmed coordinates.
         let here = step.st.pos;
         if transform::moves_records(&t) {
             step.st.pos = transform::programmed(&t, here);
         }
-        let set = match f {
-            GFn::Rotation(on) => transform::rotation(step, &mut words, on, span).map(|_| on),
-            GFn::MirrorImage(on) => transform::mirror_image(step, &mut words, on, span).map(|_| true),
-            GFn::Scaling(on) => transform::scaling(step, &mut words, on, span).map(|_| on),
-            GFn::StrokeCheck(on) => stroke::set(step, &mut words, on, span).map(|_| on),
-            _ => unreachable!("only transform codes are noted here"),
-        };
+        let mut set = Ok(false);
+        let mut order: Vec<(Span, GFn)> = codes.transforms.iter().filter(|(_, f)| !sets(f)).copied().collect();
+        order.extend(codes.transforms.iter().filter(|(_, f)| sets(f)).copied());
+        for (span, f) in order {
+            set = match f {
+                GFn::Rotation(on) => transform::rotation(step, &mut words, on, span).map(|_| on),
+                GFn::MirrorImage(on) => transform::mirror_image(step, &mut words, on, span).map(|_| true),
+                GFn::Scaling(on) => transform::scaling(step, &mut words, on, span).map(|_| on),
+                GFn::StrokeCheck(on) => stroke::set(step, &mut words, on, span).map(|_| on),
+                _ => unreachable!("only transform codes are noted here"),
+            };
+            if set.is_err() {
+                break;
+            }
+        }
         step.st.pos = here;
         if set? {
+            // The block's group 01 code is in force for the blocks after it.
+            if let Some((_, m)) = codes.motion {
+                step.st.motion = m;
+            }
             return finish_block(step, &words, &codes, after, switches);
         }
     }
@@ -1245,9 +1285,15 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
         if step.st.comp.side != 0 {
             return Err(step.alarm(Rule::NotSupported, step.span, "radius compensation under coordinate rotation, scaling or mirror image (G68, G51, G51.1) is not simulated"));
         }
-        let arc = matches!(codes.motion.map_or(step.st.motion, |(_, m)| m), Motion::ArcCw | Motion::ArcCcw);
+        // An arc this block makes (its motion mode an arc, and axis or centre words in it).
+        let arc = matches!(codes.motion.map_or(step.st.motion, |(_, m)| m), Motion::ArcCw | Motion::ArcCcw) && (has_axis || b"RIJK".iter().any(|l| words.has(*l)));
         if let Some(why) = transform::arc_refused(&t, step.st.plane).filter(|_| arc && codes.drill.or(step.st.drill.kind).is_none()) {
             return Err(step.alarm(Rule::NotSupported, step.span, format!("an arc under this transform is not simulated: {why}")));
+        }
+        // FANUC: Q and d of the peck cycles and the G76/G87 shift are not scaled (and the shift is
+        // a direction of the machine): those cycles are not simulated under a transform.
+        if let Some(kind) = codes.drill.or(step.st.drill.kind).filter(|k| matches!(k, crate::codes::DrillKind::G73 | crate::codes::DrillKind::G83 | crate::codes::DrillKind::G76 | crate::codes::DrillKind::G87)) {
+            return Err(step.alarm(Rule::NotSupported, step.span, format!("{} under coordinate rotation, scaling or mirror image is not simulated (its Q and shift are not transformed on the controller)", kind.code())));
         }
         step.st.pos = transform::programmed(&t, step.st.pos);
         step.carry = Some(t);
@@ -1315,15 +1361,15 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
 }
 
 /// Whether a block's plane words are polar coordinates under G16: not when the block ends
-/// G16, sets or ends another transform, or has a one-shot code other than G04 (whose words are
-/// not a point of the path).
+/// G16, sets or ends another transform, or has a one-shot code (G04's X is a time; the others'
+/// words are not a point of the path).
 fn polar_reads(step: &Step, block: &Block) -> bool {
     block.words.iter().filter(|w| w.letter == b'G' && !w.expr && w.is_code()).all(|w| {
         let (major, minor) = w.code();
         !matches!(
             step.profile.g_code(major, minor).map(|g| (g.group, g.function)),
             Some((_, GFn::PolarCoordinates(false) | GFn::Rotation(_) | GFn::MirrorImage(_) | GFn::Scaling(_) | GFn::StrokeCheck(_))) | Some((Group::NonModal, _))
-        ) || matches!(step.profile.g_code(major, minor).map(|g| g.function), Some(GFn::Dwell))
+        )
     })
 }
 

@@ -225,6 +225,9 @@ pub(super) fn scaling(step: &mut Step, words: &mut Words, on: bool, span: crate:
         if ijk.iter().any(Option::is_some) {
             return Err(step.alarm(Rule::WordNotTaken, w.span, format!("{}: G51 takes P (every axis) or I, J, K (each axis), not both", w.text())));
         }
+        if w.value <= 0.0 {
+            return Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("{}: G51's P is a positive magnification (a mirror image is a negative I, J or K)", w.text())));
+        }
         factor = [magnification(w); 3];
     }
     for (a, w) in ijk.iter().enumerate() {
@@ -246,15 +249,17 @@ pub(super) fn scaling(step: &mut Step, words: &mut Words, on: bool, span: crate:
 /// the last angle. What a block leaves out is the last radius and angle. The words are written
 /// back in the units and distance mode of the block (`incremental`: G91 in force or in the
 /// block), with a decimal point.
-pub(super) fn polar_words(step: &mut Step, all: &[Word], incremental: bool) -> Result<Option<Vec<Word>>, Diagnostic> {
-    let (a, b, _) = step.st.plane.axes();
+pub(super) fn polar_words(step: &mut Step, all: &[Word], incremental: bool, plane: Plane) -> Result<Option<Vec<Word>>, Diagnostic> {
+    let (a, b, _) = plane.axes();
     let (la, lb) = (b"XYZ"[a], b"XYZ"[b]);
     let radius_w = all.iter().rev().find(|w| w.letter == la);
     let angle_w = all.iter().rev().find(|w| w.letter == lb);
     if radius_w.is_none() && angle_w.is_none() {
         return Ok(None);
     }
-    let here = step.st.pos;
+    // Where the tool is in programmed coordinates (under a rotation, scaling or mirror image).
+    let t = step.st.transform;
+    let here = if moves_records(&t) { programmed(&t, step.st.pos) } else { step.st.pos };
     let mut origin = Vec3::default();
     let mut radius = step.st.transform.polar_radius;
     if let Some(w) = radius_w {
