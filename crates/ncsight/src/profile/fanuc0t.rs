@@ -6,7 +6,7 @@
 use super::common::{self, g};
 use super::lathe_a::{self, LATER_THREAD};
 use super::{FANUC_RATES, Compound, 
-    CycleRules, HoldRule, JkWords, PullOutRule, G76Keys, GDef, GFn, Group, IntegerLengths, MachineKind, ParamDef, ParamKey, Profile, QPoint, ThreadCmd,
+    CycleRules, HoldRule, JkWords, PullOutRule, GDef, GFn, Group, IntegerLengths, MachineKind, ParamDef, ParamKey, Profile, QPoint, ThreadCmd,
     ThreadRules, TimeKeys, DRY_RUN, SETTINGS,
 };
 use crate::alarm::AlarmStyle;
@@ -137,15 +137,7 @@ pub static PROFILE: Profile = Profile {
         repair_enable: None,
         g32_pull_out: false,
         g32_lead_e: false,
-        g76: Some(G76Keys {
-            finishing: ParamKey::Number(5142, None),
-            pull_out: ParamKey::Number(5130, None),
-            angle: ParamKey::Number(5143, None),
-            dmin_um: ParamKey::Number(5140, None),
-            allowance: ParamKey::Number(5141, None),
-            allowance_to_mm: 0.001,
-            pull_out_angle: Some(ParamKey::Number(5131, None)),
-        }),
+        g76: Some(super::FANUC_G76_KEYS),
     },
     drill: super::DrillRules {
         g73_retract_um: Some(ParamKey::Number(5114, None)),

@@ -4,7 +4,7 @@
 
 use super::common::{self, g, gp};
 use super::lathe_a;
-use super::{Compound, G76Keys, FANUC_RATES, SETTINGS, CycleRules, HoldRule, JkWords, PullOutRule, GFn, QPoint, ThreadCmd, ThreadRules, GDef, Group, IntegerLengths, MachineKind, ParamDef, ParamKey, Profile, TimeKeys};
+use super::{Compound, FANUC_RATES, SETTINGS, CycleRules, HoldRule, JkWords, PullOutRule, GFn, QPoint, ThreadCmd, ThreadRules, GDef, Group, IntegerLengths, MachineKind, ParamDef, ParamKey, Profile, TimeKeys};
 use crate::alarm::AlarmStyle;
 use crate::motion::ArcDir;
 
@@ -136,17 +136,10 @@ pub static PROFILE: Profile = Profile {
         dry_run: ParamKey::Number(1410, None),
         feed_max: ParamKey::Number(1422, None),
     },
-    thread: ThreadRules { q_point: QPoint::Alarm, arc_q_unit_deg: 1.0, pull_out_speed: None, after_end_feed: Some(ParamKey::Number(1466, None)), pull_out_accel: Some(ParamKey::Number(1628, None)), repair_enable: Some(ParamKey::Number(8135, Some(7))), g32_pull_out: true, g32_lead_e: false, g76: Some(G76Keys {
+    thread: ThreadRules { q_point: QPoint::Alarm, arc_q_unit_deg: 1.0, pull_out_speed: None, after_end_feed: Some(ParamKey::Number(1466, None)), pull_out_accel: Some(ParamKey::Number(1628, None)), repair_enable: Some(ParamKey::Number(8135, Some(7))), g32_pull_out: true, g32_lead_e: false,
         // The GSK988T numbers its parameters as FANUC does (1022, 1422 on its G01/G02 page;
         // 5130/5131 in G92.1): the FANUC 0i-T G76 numbers are assumed.
-        finishing: ParamKey::Number(5142, None),
-        pull_out: ParamKey::Number(5130, None),
-        angle: ParamKey::Number(5143, None),
-        dmin_um: ParamKey::Number(5140, None),
-        allowance: ParamKey::Number(5141, None),
-        allowance_to_mm: 0.001,
-        pull_out_angle: Some(ParamKey::Number(5131, None)),
-    }) },
+        g76: Some(super::FANUC_G76_KEYS) },
     drill: super::DrillRules::NONE,
     calls: super::CallRules {
         max_count: 9999,

@@ -632,6 +632,17 @@ pub struct G76Keys {
     pub pull_out_angle: Option<ParamKey>,
 }
 
+/// G76's keys in FANUC 0i-T numbering (see [`FANUC_G76`]; 5130/5131 the pull-out and its angle).
+pub(crate) const FANUC_G76_KEYS: G76Keys = G76Keys {
+    finishing: ParamKey::Number(5142, None),
+    pull_out: ParamKey::Number(5130, None),
+    angle: ParamKey::Number(5143, None),
+    dmin_um: ParamKey::Number(5140, None),
+    allowance: ParamKey::Number(5141, None),
+    allowance_to_mm: 0.001,
+    pull_out_angle: Some(ParamKey::Number(5131, None)),
+};
+
 /// The G76 parameters in FANUC 0i-T numbering (minimum cut, finishing allowance, finishing
 /// passes, tool angle), for the profiles that number their parameters as FANUC does.
 pub(crate) const FANUC_G76: &[ParamDef] = &[
