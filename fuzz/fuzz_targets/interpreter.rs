@@ -30,6 +30,14 @@ fuzz_target!(|data: &[u8]| {
     let per_batch = if pick & 0x40 == 0 { 3 } else { 1 };
     let mut program = Program::new(Params::defaults(p), Switches::default(), mode);
     program.set_call_options(calls);
+    // The tape leader, decided from the first lines as every driver does.
+    let mut scan = program.leader_scan();
+    for l in text.split_inclusive(|&b| b == b'\n') {
+        if scan.push(l) {
+            break;
+        }
+    }
+    program.set_tape_leader(scan.lines());
     let reader = program.line_reader();
     let mut batch = ReadBatch::default();
     // Compared as they come, so that a long run is not held twice.

@@ -558,7 +558,7 @@ fn statement_stops_inputs_and_unsimulated_groups() {
     assert!(program.set_variable(1032, 1.0).is_err());
 
     // (The GSK980TDi numbers alarm 115 its own way.)
-    assert_eq!(trace("gsk980tdi", "G00 X10 Z0\n#1 = #4015\nM30\n"), [String::from("1:5,0,0"), gsk_115()]);
+    assert_eq!(trace("gsk980tdi", "G00 X10 Z0\n#1 = #4017\nM30\n"), [String::from("1:5,0,0"), gsk_115()]);
 }
 
 /// The GSK980TDi's code for alarm 115 (its own style).

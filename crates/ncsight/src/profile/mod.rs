@@ -178,7 +178,9 @@ pub enum GFn {
     MachineCoordinates,
     /// G30: via an intermediate point to the 2nd (3rd, 4th: P) reference point.
     OtherReferenceReturn,
-    /// G61/G64 and friends: path control, no effect on the programmed path.
+    /// Codes that change nothing ncsight models: G61/G64 path control and G09 exact stop (every
+    /// move of the time model starts and ends at rest), G25/G26 spindle speed fluctuation
+    /// detection (the simulated spindle does not fluctuate).
     PathControl,
     /// G98/G99 on a mill: return to the initial level / to the R point.
     ReturnInitial,

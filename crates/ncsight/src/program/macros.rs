@@ -92,7 +92,19 @@ fn code_of(profile: &Profile, f: GFn) -> Option<f64> {
 
 /// The groups ncsight accepts without modelling, and their codes at power on (the codes the
 /// FANUC G-code lists mark as set at power on; inferred where a parameter may change it).
-const POWER_ON: [(Group, f64); 4] = [(Group::CutterComp, 40.0), (Group::LengthComp, 49.0), (Group::WorkOffset, 54.0), (Group::PathMode, 64.0)];
+const POWER_ON: [(Group, f64); 10] = [
+    (Group::CutterComp, 40.0),
+    (Group::LengthComp, 49.0),
+    (Group::WorkOffset, 54.0),
+    (Group::PathMode, 64.0),
+    // The transforms and checks off at power on, as ncsight starts them.
+    (Group::StrokeCheck, 23.0),
+    (Group::Scaling, 50.0),
+    (Group::Rotation, 69.0),
+    (Group::Polar, 15.0),
+    (Group::MirrorImage, 50.1),
+    (Group::SpindleCheck, 25.0),
+];
 
 impl Reading<'_> {
     /// The controlled axes in their order (the setup's, else the profile's X Z or X Y Z).
