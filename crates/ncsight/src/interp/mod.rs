@@ -273,6 +273,13 @@ impl Step<'_> {
         &mut self.out.records[from..]
     }
 
+    /// An angle word in degrees (a rotary axis, G68's R, a polar angle): with a decimal point as
+    /// written; without, in least input increments (0.001 degree) where lengths are, else
+    /// degrees.
+    fn degrees(&self, w: &Word) -> f64 {
+        if !w.decimal && self.params.integer_lengths() == IntegerLengths::LeastIncrement { w.value * 0.001 } else { w.value }
+    }
+
     /// A length word in mm, read by the profile's decimal-point rule and the units in force.
     #[inline]
     fn length(&mut self, w: &Word) -> Result<f64, Diagnostic> {
@@ -959,13 +966,8 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
             // Step 6 puts the length offset in force, with the H of the block.
             GFn::LengthComp(_) | GFn::PathControl => {}
             GFn::Rotation(_) | GFn::MirrorImage(_) | GFn::Scaling(_) | GFn::StrokeCheck(_) => codes.transforms.push((w.span, g.function)),
-            GFn::PolarCoordinates(on) => {
-                if on && !st.transform.polar {
-                    st.transform.polar_radius = 0.0;
-                    st.transform.polar_angle_deg = 0.0;
-                }
-                st.transform.polar = on;
-            }
+            // Step 0 turned it on (from a radius and angle of 0) before reading the block.
+            GFn::PolarCoordinates(on) => st.transform.polar = on,
             GFn::ReturnInitial => st.return_initial = true,
             GFn::ReturnR => st.return_initial = false,
             // G80: the cycle and its hole data end; F stays (seed 003 8.1.4).
@@ -1635,10 +1637,7 @@ fn rotary_target(step: &mut Step, words: &mut Words) -> Result<Option<[f64; 3]>,
             return Err(step.alarm(Rule::DuplicateWord, h.span, format!("{} and {} both give the C axis", a.text(), h.text())));
         }
         let Some(w) = abs_w.or(inc_w) else { continue };
-        let mut v = w.value;
-        if !w.decimal && step.params.integer_lengths() == IntegerLengths::LeastIncrement {
-            v *= 0.001;
-        }
+        let v = step.degrees(w);
         if !v.is_finite() || v.abs() > MAX_COORD_MM {
             return Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("{}: a rotary axis turns at most {MAX_COORD_MM} degrees from its zero", w.text())));
         }

@@ -11,7 +11,6 @@ use super::Step;
 use crate::alarm::{Diagnostic, Rule};
 use crate::modal::{Rotation, Scaling, Transforms};
 use crate::motion::{ArcDir, Op, Plane, Vec3};
-use crate::profile::IntegerLengths;
 use crate::read::Word;
 
 /// Some transform moves the records (polar coordinates only change how words are read).
@@ -127,12 +126,6 @@ pub(super) fn carry(t: &Transforms, op: Op) -> Op {
     }
 }
 
-/// An angle word in degrees: with a decimal point as written; without, in least input
-/// increments (0.001 degree) where lengths are, else degrees.
-fn degrees(step: &Step, w: &Word) -> f64 {
-    if !w.decimal && step.params.integer_lengths() == IntegerLengths::LeastIncrement { w.value * 0.001 } else { w.value }
-}
-
 /// The centre words of G68 and G51 (absolute, programmed coordinates): the axes given, the
 /// current programmed position for those not given (FANUC).
 fn centre_words(step: &mut Step, words: &mut Words, axes: &[usize]) -> Result<Vec3, Diagnostic> {
@@ -160,7 +153,7 @@ pub(super) fn rotation(step: &mut Step, words: &mut Words, on: bool, span: crate
     let before = step.st.transform.rotation.map_or(0.0, |r| r.angle_deg);
     let angle_deg = match words.take(b'R') {
         Some(w) => {
-            let v = degrees(step, w);
+            let v = step.degrees(w);
             let incremental = step.st.incremental && keys.rotation_incremental.is_some_and(|k| step.params.get(k) != 0.0);
             if incremental { before + v } else { v }
         }
@@ -270,7 +263,7 @@ pub(super) fn polar_words(step: &mut Step, all: &[Word], incremental: bool, plan
     }
     let mut angle = step.st.transform.polar_angle_deg;
     if let Some(w) = angle_w {
-        let v = degrees(step, w);
+        let v = step.degrees(w);
         angle = if incremental { angle + v } else { v };
     }
     step.st.transform.polar_radius = radius;
