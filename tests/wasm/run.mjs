@@ -2,16 +2,16 @@
 // JSONL of every golden programme exactly as `ncsight run --format jsonl` does
 // (tests/golden/<case>/expected.jsonl), and a check gives diagnostics only.
 //
-//   cargo build --release -p ncsight-wasm --target wasm32-unknown-unknown
+//   cargo build -p ncsight-cli   (its build script builds the engine into target/engine)
 //   node tests/wasm/run.mjs [path/to/ncsight_wasm.wasm]
 import { readFileSync, readdirSync, existsSync } from "node:fs";
 import { join, dirname } from "node:path";
 import { fileURLToPath } from "node:url";
 
 const root = join(dirname(fileURLToPath(import.meta.url)), "..", "..");
-const wasmPath = process.argv[2] ?? join(root, "target", "wasm32-unknown-unknown", "release", "ncsight_wasm.wasm");
+const wasmPath = process.argv[2] ?? join(root, "target", "engine", "wasm32-unknown-unknown", "release", "ncsight_wasm.wasm");
 if (!existsSync(wasmPath)) {
-  console.error(`wasm: ${wasmPath} is missing (cargo build --release -p ncsight-wasm --target wasm32-unknown-unknown)`);
+  console.error(`wasm: ${wasmPath} is missing (cargo build -p ncsight-cli builds it, with the wasm32-unknown-unknown target installed)`);
   process.exit(1);
 }
 const { instance } = await WebAssembly.instantiate(readFileSync(wasmPath), {});

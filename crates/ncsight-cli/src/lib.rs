@@ -164,23 +164,14 @@ struct OperatorArgs {
 
 impl OperatorArgs {
     fn options(&self) -> Result<ncsight::Options, Failure> {
-        if !(self.feed_override > 0.0 && self.feed_override <= 200.0) {
-            return Err(usage(format!("--feed-override {}: give 1 to 200 percent", self.feed_override)));
-        }
-        if !(self.rapid_override > 0.0 && self.rapid_override <= 100.0) {
-            return Err(usage(format!("--rapid-override {}: give 1 to 100 percent", self.rapid_override)));
-        }
-        for t in self.feed_hold_at.iter().chain(self.reset_at.iter()) {
-            if !(t.is_finite() && *t >= 0.0) {
-                return Err(usage(format!("{t}: a button time is a number of seconds, 0 or more")));
-            }
-        }
-        Ok(ncsight::Options {
+        let options = ncsight::Options {
             single_block: self.single_block,
             feed_hold_at: self.feed_hold_at.clone(),
             reset_at: self.reset_at,
             overrides: ncsight::time::Overrides { feed_pct: self.feed_override, rapid_pct: self.rapid_override, dry_run: self.dry_run },
-        })
+        };
+        ncsight_io::check_operator(&options).map_err(|e| usage(if e.contains("override") { format!("--{}", e.replacen(' ', "-", 1)) } else { e }))?;
+        Ok(options)
     }
 }
 
@@ -248,7 +239,8 @@ enum Command {
         #[arg(long)]
         resolution: Option<String>,
     },
-    /// Write one self-contained HTML page that shows what the programme does.
+    /// Write one self-contained HTML page that runs the programme in the browser and shows what it
+    /// does (the `app` page, opening with this programme).
     Report {
         file: String,
         #[command(flatten)]
@@ -258,6 +250,12 @@ enum Command {
         /// Stock as DIAxLEN for the thread-form view.
         #[arg(long)]
         stock: Option<String>,
+        /// The HTML file to write (standard output if omitted).
+        #[arg(short = 'o', long = "output")]
+        output: Option<String>,
+    },
+    /// Write the page empty: open it from disk, choose the controller, paste or drop a programme.
+    App {
         /// The HTML file to write (standard output if omitted).
         #[arg(short = 'o', long = "output")]
         output: Option<String>,
@@ -324,6 +322,7 @@ pub fn main_with(args: impl IntoIterator<Item = std::ffi::OsString>, out: &mut d
         Command::Report { file, machine, operator, stock, output } => {
             report(&file, &machine, &operator, machine.setup.as_deref(), stock.as_deref(), output.as_deref(), out, err)
         }
+        Command::App { output } => app(output.as_deref(), out),
         Command::Repair { machine, start, end, lead, tpi, rpm, measured, j, k } => {
             repair(&machine, &start, &end, lead, tpi, rpm, &measured, j, k, out, err)
         }
@@ -448,10 +447,9 @@ impl<W: Write> Write for Tolerant<W> {
     }
 }
 
-/// The most records and diagnostics a report page keeps (its size and the browser's memory stay
-/// bounded whatever the programme expands to).
+/// The most records of a lathe programme the report hands to the stock simulation (beyond, the
+/// page says to use `ncsight simulate`).
 const REPORT_MAX_RECORDS: usize = 200_000;
-const REPORT_MAX_DIAGNOSTICS: usize = 10_000;
 /// The most records the stock simulation takes (about 75 MB).
 const SIMULATE_MAX_RECORDS: usize = 500_000;
 
@@ -677,12 +675,14 @@ fn report(
     out: &mut dyn Write,
     err: &mut dyn Write,
 ) -> Result<i32, Failure> {
+    if let Some(why) = report::engine_missing() {
+        return Err(usage(why));
+    }
     let (params, switches) = setup(m, err)?;
     let decoding = m.decoding()?;
     let file_out = output.map(|path| output::LazyFile::new(path, &[file], 1 << 16)).transpose().map_err(usage)?;
     let opts = operator.options()?;
     let job = job_setup(setup_file, stock)?;
-    // The page shows the source, so the report reads the whole file (the run still streams).
     let source = if file == "-" {
         let mut v = Vec::new();
         io::stdin().read_to_end(&mut v)?;
@@ -691,64 +691,33 @@ fn report(
         std::fs::read(file).map_err(|e| usage(format!("cannot read {file}: {e}")))?
     };
     let mut settings = vec![format!("profile {} ({})", params.profile().name, params.profile().title)];
-    settings.extend(m.params.iter().map(|p| format!("--param {p}")));
-    if m.block_delete {
-        settings.push("block delete switch on".into());
-    }
-    if m.optional_stop {
-        settings.push("optional stop switch on".into());
-    }
-    if opts.single_block {
-        settings.push("single block".into());
-    }
-    settings.extend(opts.feed_hold_at.iter().map(|t| format!("FEED HOLD at {t} s")));
-    if let Some(t) = opts.reset_at {
-        settings.push(format!("RESET at {t} s"));
-    }
-    if opts.overrides.dry_run {
-        settings.push("dry run".into());
-    }
-    settings.push(format!("feed override {} %, rapid override {} %", opts.overrides.feed_pct, opts.overrides.rapid_pct));
     settings.extend(setup_notes(m.setup.as_deref().map(|p| (p, &job)), params.profile()));
+    if m.repair_position.is_some() {
+        settings.push("--repair-position is not passed to the page: its runs have no recorded repair position".into());
+    }
     settings.push("assumptions: docs/guide.md and docs/commands/*.md".into());
-    let mut program = Program::with_operator(params.clone(), switches, Mode::Run, opts);
+    // The run here gives the exit status and, on a lathe that cuts a thread, the records the
+    // stock simulation measures; the page runs the programme again itself.
+    let mut program = Program::with_operator(params.clone(), switches, Mode::Run, opts.clone());
     let mut library = m.prepare(&mut program)?;
-    let (mut records, mut diags) = (Vec::new(), Vec::new());
-    // The page keeps at most REPORT_MAX_RECORDS motions and REPORT_MAX_DIAGNOSTICS
-    // diagnostics; the run goes on to the end for the time and the alarm, and the page says so.
-    let (mut all_records, mut all_diags) = (0usize, 0usize);
+    let lathe = params.profile().is_lathe();
+    let mut records = Vec::new();
+    let mut all_records = 0usize;
     drive(file, feed::Input::Memory(std::sync::Arc::new(source.clone())), &mut library, &mut program, &mut |e, _, _| {
-        match e {
-            Event::Record(r) => {
-                all_records += 1;
-                if records.len() < REPORT_MAX_RECORDS {
-                    records.push(r.clone());
-                }
-            }
-            Event::Diagnostic(d) => {
-                all_diags += 1;
-                if diags.len() < REPORT_MAX_DIAGNOSTICS {
-                    diags.push(d.clone());
-                }
+        if let (Event::Record(r), true) = (e, lathe) {
+            all_records += 1;
+            if records.len() < REPORT_MAX_RECORDS {
+                records.push(r.clone());
             }
         }
         Ok(())
     })?;
-    if all_records > records.len() {
-        settings.push(format!(
-            "drawn: the first {} of {all_records} records (the report's limit); the time and the alarms are those of the whole run",
-            records.len()
-        ));
-    }
-    if all_diags > diags.len() {
-        settings.push(format!("listed: the first {} of {all_diags} diagnostics (the report's limit)", diags.len()));
-    }
     // The thread section: simulated when the programme cuts a thread on a lathe; when it cannot
     // be, the page says why (never "cuts no thread" for a thread it could not simulate).
     let (sim, sim_error) = if all_records > records.len() {
         // A simulation of part of the programme would measure the wrong thing.
-        (None, Some(format!("the programme makes {all_records} records, more than the report keeps: use ncsight simulate for the stock")))
-    } else if params.profile().is_lathe() && records.iter().any(|r| r.op.is_thread()) {
+        (None, Some(format!("the programme makes {all_records} records, more than the report simulates: use ncsight simulate for the stock")))
+    } else if lathe && records.iter().any(|r| r.op.is_thread()) {
         match ncsight::stock::measure::simulate(&records, &job, &ncsight::stock::measure::SimOptions::default()) {
             Ok(s) => (Some(s), None),
             Err(e) => (None, Some(e)),
@@ -756,16 +725,70 @@ fn report(
     } else {
         (None, None)
     };
-    let shown = if file == "-" { "<stdin>" } else { file };
-    let page = report::Report { file_name: shown, source: &source, params: &params, records: &records, diagnostics: &diags, sim: sim.as_ref(), sim_error: sim_error.as_deref(), decoding, settings };
+    // The programme as the editor shows it: each line as written, UTF-8, or decoded where it is not.
+    let body = source.strip_prefix(&[0xEF, 0xBB, 0xBF][..]).unwrap_or(&source);
+    let text: Vec<String> = body.split(|&b| b == b'\n').map(|l| decoding.decode(l.strip_suffix(b"\r").unwrap_or(l))).collect();
+    let mut extra = Vec::new();
+    extra.extend(m.main.iter().map(|v| format!("main={v}")));
+    extra.extend(m.vars.iter().map(|v| format!("var={v}")));
+    if m.skip_missing_subprograms {
+        extra.push("skip_missing_subprograms=1".into());
+    }
+    extra.extend(m.max_blocks.iter().map(|v| format!("max_blocks={v}")));
+    let page = report::Preload {
+        file_name: if file == "-" { "<stdin>" } else { file },
+        text: text.join("\n"),
+        machine: params.profile().name,
+        params: &m.params,
+        setup: m.setup.as_deref().map(std::fs::read_to_string).transpose().map_err(|e| usage(format!("cannot read the setup: {e}")))?,
+        options: &opts,
+        switches,
+        extra_options: extra,
+        stock: job.stock,
+        library: library_texts(&m.subprogram_dirs, &decoding),
+        settings,
+        sim: sim.as_ref(),
+        sim_error: sim_error.as_deref(),
+    };
     match file_out {
         Some(mut w) => {
-            page.write(&mut w)?;
+            report::write(Some(&page), &mut w)?;
             w.flush()?;
         }
-        None => page.write(out)?,
+        None => report::write(Some(&page), out)?,
     }
     Ok(status_with_findings(program.status() == Status::Alarm, sim.as_ref().map(|s| &s.measurement.findings[..]).unwrap_or(&[])))
+}
+
+/// The files of the `--subprogram-dir` directories, for the page to look for called
+/// programmes in (each as the editor would show it).
+fn library_texts(dirs: &[std::path::PathBuf], decoding: &diag::Decoding) -> Vec<(String, String)> {
+    let mut files: Vec<std::path::PathBuf> = dirs.iter().filter_map(|d| std::fs::read_dir(d).ok()).flatten().filter_map(|e| e.ok().map(|e| e.path())).filter(|p| p.is_file()).collect();
+    files.sort();
+    files
+        .into_iter()
+        .filter_map(|p| {
+            let bytes = std::fs::read(&p).ok()?;
+            let text: Vec<String> = bytes.split(|&b| b == b'\n').map(|l| decoding.decode(l.strip_suffix(b"\r").unwrap_or(l))).collect();
+            Some((p.display().to_string(), text.join("\n")))
+        })
+        .collect()
+}
+
+/// `ncsight app`: the page with no programme in it.
+fn app(output: Option<&str>, out: &mut dyn Write) -> Result<i32, Failure> {
+    if let Some(why) = report::engine_missing() {
+        return Err(usage(why));
+    }
+    match output {
+        Some(path) => {
+            let mut w = output::LazyFile::new(path, &[], 1 << 16).map_err(usage)?;
+            report::write(None, &mut w)?;
+            w.flush()?;
+        }
+        None => report::write(None, out)?,
+    }
+    Ok(0)
 }
 
 #[allow(clippy::too_many_arguments)]

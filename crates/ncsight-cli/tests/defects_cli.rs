@@ -196,8 +196,9 @@ fn usage_errors_name_the_rule() {
     assert!(out.contains("at least 65536 bytes"), "{out}");
 }
 
-/// `report` keeps a bounded number of records and says so; `simulate` refuses work past its
-/// documented limit at once instead of running for hours.
+/// `report`'s page holds the programme, not its motions: 60,000 holes from six blocks make a page
+/// of the engine's size; `simulate` refuses work past its documented limit at once instead of
+/// running for hours.
 #[test]
 fn report_and_simulate_are_bounded() {
     let mut text = String::from("G21 G17 G90 G0 X0. Y0. Z10.\nS500 M3\n");
@@ -210,8 +211,8 @@ fn report_and_simulate_are_bounded() {
     let (code, _, err) = common::ncsight(&["report", p.to_str().unwrap(), "--machine", "fanuc0m", "-o", html.to_str().unwrap()]);
     assert_eq!(code, 0, "{err}");
     let page = std::fs::read_to_string(&html).unwrap();
-    assert!(page.contains("drawn: the first 200000 of"), "the page says it was thinned");
-    assert!(page.len() < 40_000_000, "{} bytes", page.len());
+    assert!(page.contains("K9999"));
+    assert!(page.len() < 3_000_000, "{} bytes", page.len());
     let g76 = tmp("g76long.nc", b"G97 S300 M03\nG0 X70 Z5\nG76 P010060 Q1 R0.01\nG76 X60 Z-2500 P5000 Q1 F6\nM30\n");
     let t = std::time::Instant::now();
     let (code, _, err) = common::ncsight(&["simulate", g76.to_str().unwrap(), "--machine", "gsk980tdi", "--stock", "70x2600"]);

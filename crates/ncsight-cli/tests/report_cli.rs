@@ -15,8 +15,9 @@ fn report_is_self_contained_and_escapes_programme_text() {
     assert!(code == 0 || code == 1, "{err}");
     let html = std::fs::read_to_string(&out).unwrap();
     assert!(html.starts_with("<!DOCTYPE html>"));
-    // Exactly the page's own two script elements, and no markup from the programme.
-    assert_eq!(html.matches("<script").count(), 2, "only the page's own scripts");
+    // Exactly the page's own three script elements (the job, the engine, the page's script), and
+    // no markup from the programme.
+    assert_eq!(html.matches("<script").count(), 3, "only the page's own scripts");
     assert!(!html.contains("<img"));
     assert!(html.contains("\\u003cscript\\u003ealert(1)"));
     // Nothing fetched from anywhere (the only URL is the SVG namespace name, which is no request).
@@ -26,9 +27,10 @@ fn report_is_self_contained_and_escapes_programme_text() {
     let _ = std::fs::remove_dir_all(dir);
 }
 
-/// An alarm inside a subprogramme: the page's message names the call that led there.
+/// The page carries the programme and the files of --subprogram-dir (its engine runs them; the
+/// messages it makes, with their call chains, are tested in ncsight-io's scene module).
 #[test]
-fn report_shows_the_call_chain() {
+fn report_carries_the_programme_and_its_library() {
     let dir = std::env::temp_dir().join(format!("ncsight-report-calls-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let prog = dir.join("calls.nc");
@@ -37,7 +39,15 @@ fn report_shows_the_call_chain() {
     let (code, _, err) = common::ncsight(&["report", prog.to_str().unwrap(), "--machine", "fanuc0m", "-o", out.to_str().unwrap()]);
     assert_eq!(code, 1, "{err}");
     let html = std::fs::read_to_string(&out).unwrap();
-    assert!(html.contains("in a subprogramme called at line 3"), "the call chain is on the page");
+    assert!(html.contains(r#""text":"O0001\nG90 G00 X0. Y0. Z10.\nM98 P0100\nM30\nO0100\nG00 Q1.\nM99\n""#), "the programme is on the page");
+    let lib = dir.join("lib");
+    std::fs::create_dir_all(&lib).unwrap();
+    std::fs::write(lib.join("o0200.nc"), "O0200\nG00 X5.\nM99\n").unwrap();
+    std::fs::write(&prog, "G90 G00 X0. Y0. Z10.\nM98 P0200\nM30\n").unwrap();
+    let (code, _, err) = common::ncsight(&["report", prog.to_str().unwrap(), "--machine", "fanuc0m", "--subprogram-dir", lib.to_str().unwrap(), "-o", out.to_str().unwrap()]);
+    assert_eq!(code, 0, "{err}");
+    let html = std::fs::read_to_string(&out).unwrap();
+    assert!(html.contains(r#"o0200.nc","O0200\nG00 X5.\nM99\n"]]"#), "the library is on the page");
     let _ = std::fs::remove_dir_all(dir);
 }
 
@@ -62,23 +72,5 @@ fn report_says_what_the_setup_gives_and_what_is_assumed() {
     assert!(html.contains("work offsets G54 from the setup, the others 0"), "what the setup gives is said");
     assert!(html.contains("1 tool offset(s) from the setup"));
     assert!(html.contains("no travel limits"));
-    let _ = std::fs::remove_dir_all(dir);
-}
-
-/// A rotary axis's turn is in the report's data with the time it adds (45 degrees at the rotary
-/// rapid rate, 10800 deg/min: 0.25 s plus 0.1 s to accelerate), for the time chart and table.
-#[test]
-fn report_counts_the_time_of_rotary_turns() {
-    let dir = std::env::temp_dir().join(format!("ncsight-report-rotary-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    let prog = dir.join("p.nc");
-    std::fs::write(&prog, "G91 G00 A45.\nM30\n").unwrap();
-    let setup = dir.join("s.toml");
-    std::fs::write(&setup, "[machine]\naxes = [\"X\", \"Y\", \"Z\", \"A\"]\n").unwrap();
-    let out = dir.join("r.html");
-    let (code, _, err) = common::ncsight(&["report", prog.to_str().unwrap(), "--machine", "fanuc0m", "--setup", setup.to_str().unwrap(), "-o", out.to_str().unwrap()]);
-    assert_eq!(code, 0, "{err}");
-    let html = std::fs::read_to_string(&out).unwrap();
-    assert!(html.contains(r#"{"k":"rotary","axis":"A","deg":45,"s":0.35,"l":1"#), "{}", &html[html.find("\"events\"").unwrap_or(0)..][..300.min(html.len())]);
     let _ = std::fs::remove_dir_all(dir);
 }

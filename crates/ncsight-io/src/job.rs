@@ -63,6 +63,25 @@ fn usage(m: impl Into<String>) -> JobError {
     JobError::Usage(m.into())
 }
 
+/// Whether the operator's settings are ones a panel can give: overrides of 1-200 % (feed) and
+/// 1-100 % (rapid), button times of 0 s or more.
+pub fn check_operator(o: &Options) -> Result<(), String> {
+    let f = o.overrides.feed_pct;
+    if !(f > 0.0 && f <= 200.0) {
+        return Err(format!("feed override {f}: give 1 to 200 percent"));
+    }
+    let r = o.overrides.rapid_pct;
+    if !(r > 0.0 && r <= 100.0) {
+        return Err(format!("rapid override {r}: give 1 to 100 percent"));
+    }
+    for t in o.feed_hold_at.iter().chain(o.reset_at.iter()) {
+        if !(t.is_finite() && *t >= 0.0) {
+            return Err(format!("{t}: a button time is a number of seconds, 0 or more"));
+        }
+    }
+    Ok(())
+}
+
 /// The profiles' names, for messages.
 pub fn machine_names() -> String {
     profile::all().iter().map(|p| p.name).collect::<Vec<_>>().join(", ")
@@ -123,6 +142,43 @@ impl Job {
     pub fn set_setup_text(&mut self, text: &str, name: &str) -> Result<(), JobError> {
         self.setup = Some(ncsight::setup::Setup::from_toml(text).map_err(|e| usage(format!("{name}: {e}")))?);
         Ok(())
+    }
+
+    /// The operator's actions and switches from `key=value` lines, as the page keeps them:
+    /// `single_block`, `dry_run`, `block_delete`, `optional_stop` (1 or 0), `feed_hold_at`
+    /// (seconds, comma-separated), `reset_at` (seconds), `feed_override` and `rapid_override`
+    /// (percent); and `main`, `var` (`N=V`, repeatable), `skip_missing_subprograms`, `max_blocks`
+    /// as the command line's options of those names. The same limits as the command line's.
+    pub fn set_operator_text(&mut self, text: &str) -> Result<(), JobError> {
+        for line in text.lines().map(str::trim).filter(|l| !l.is_empty()) {
+            let (key, value) = line.split_once('=').map(|(k, v)| (k.trim(), v.trim())).ok_or_else(|| usage(format!("{line}: expected key=value")))?;
+            let number = |v: &str| v.parse::<f64>().map_err(|_| usage(format!("{key}={v}: expected a number")));
+            let flag = |v: &str| match v {
+                "1" | "true" => Ok(true),
+                "0" | "false" => Ok(false),
+                _ => Err(usage(format!("{key}={v}: expected 1 or 0"))),
+            };
+            match key {
+                "single_block" => self.operator.single_block = flag(value)?,
+                "dry_run" => self.operator.overrides.dry_run = flag(value)?,
+                "block_delete" => self.switches.block_delete = flag(value)?,
+                "optional_stop" => self.switches.optional_stop = flag(value)?,
+                "feed_hold_at" => {
+                    self.operator.feed_hold_at = value.split(',').map(str::trim).filter(|v| !v.is_empty()).map(number).collect::<Result<_, _>>()?
+                }
+                "reset_at" => self.operator.reset_at = if value.is_empty() { None } else { Some(number(value)?) },
+                "feed_override" => self.operator.overrides.feed_pct = number(value)?,
+                "rapid_override" => self.operator.overrides.rapid_pct = number(value)?,
+                // What the command line's --main, --var, --skip-missing-subprograms and
+                // --max-blocks give (checked where the run starts).
+                "main" => self.main = Some(value.to_string()),
+                "var" => self.vars.push(value.to_string()),
+                "skip_missing_subprograms" => self.skip_missing_subprograms = flag(value)?,
+                "max_blocks" => self.max_blocks = Some(value.parse().map_err(|_| usage(format!("{key}={value}: expected a whole number")))?),
+                _ => return Err(usage(format!("{key}: not an operator setting (single_block, feed_hold_at, reset_at, feed_override, rapid_override, dry_run, block_delete, optional_stop, main, var, skip_missing_subprograms, max_blocks)"))),
+            }
+        }
+        check_operator(&self.operator).map_err(usage)
     }
 
     /// The run's setup, calls and variables set on `program`; the library of called programmes.

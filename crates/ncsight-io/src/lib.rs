@@ -7,4 +7,4 @@ pub mod feed;
 pub mod format;
 mod job;
 
-pub use job::{machine_names, Job, JobError, JsonlWriter};
+pub use job::{check_operator, machine_names, Job, JobError, JsonlWriter};

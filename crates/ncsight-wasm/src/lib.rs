@@ -40,6 +40,37 @@ pub fn run_jsonl(text: &[u8], machine: &str, params: &str, setup: &str, mode: Mo
     String::from_utf8_lossy(&out).into_owned()
 }
 
+/// The scene of `text` on `machine` (see `ncsight_io::format::scene`): a run with the parameter
+/// overrides `params`, the setup `setup` (TOML) and the operator's settings `options`
+/// (`key=value` lines, `Job::set_operator_text`), and the files `library` where called
+/// programmes the text lacks are looked for: each a u32 length and the file's name, a u32 length
+/// and its text. A usage mistake is `NCSE` and its message.
+pub fn scene(text: &[u8], machine: &str, params: &str, setup: &str, options: &str, library: &[u8]) -> Vec<u8> {
+    let mut job = Job { params: params.lines().map(str::trim).filter(|l| !l.is_empty()).map(String::from).collect(), ..Job::on(machine) };
+    let built = (if setup.trim().is_empty() { Ok(()) } else { job.set_setup_text(setup, "setup") })
+        .and_then(|()| job.set_operator_text(options))
+        .and_then(|()| files(library).ok_or_else(|| ncsight_io::JobError::Usage("the library of called programmes is cut short".into())))
+        .and_then(|files| format::scene::scene(&job, text, files));
+    built.unwrap_or_else(|e| [b"NCSE".as_slice(), e.to_string().as_bytes()].concat())
+}
+
+/// The files of a library buffer (see [`scene`]); None when it is cut short.
+fn files(mut b: &[u8]) -> Option<Vec<(String, &[u8])>> {
+    fn take<'a>(b: &mut &'a [u8]) -> Option<&'a [u8]> {
+        let n = u32::from_le_bytes(b.get(..4)?.try_into().ok()?) as usize;
+        let v = b.get(4..4 + n)?;
+        *b = &b[4 + n..];
+        Some(v)
+    }
+    let mut out = Vec::new();
+    while !b.is_empty() {
+        let name = String::from_utf8_lossy(take(&mut b)?).into_owned();
+        let text = take(&mut b)?;
+        out.push((name, text));
+    }
+    Some(out)
+}
+
 /// A buffer of `len` bytes for the page to write into.
 #[no_mangle]
 pub extern "C" fn ncsight_alloc(len: usize) -> *mut u8 {
@@ -77,6 +108,42 @@ pub unsafe extern "C" fn ncsight_run(text: *const u8, text_len: usize, machine: 
     let mode = if mode == 1 { Mode::Check } else { Mode::Run };
     let jsonl = run_jsonl(text, &String::from_utf8_lossy(machine), &String::from_utf8_lossy(params), &String::from_utf8_lossy(setup), mode);
     answer(jsonl.as_bytes())
+}
+
+/// The scene of a programme (see [`scene`]), behind its 4-byte little-endian length.
+///
+/// # Safety
+/// As [`ncsight_run`], with `options` and `library` pointing to `options_len` and `library_len`
+/// readable bytes.
+#[no_mangle]
+#[allow(clippy::too_many_arguments)]
+pub unsafe extern "C" fn ncsight_scene(
+    text: *const u8,
+    text_len: usize,
+    machine: *const u8,
+    machine_len: usize,
+    params: *const u8,
+    params_len: usize,
+    setup: *const u8,
+    setup_len: usize,
+    options: *const u8,
+    options_len: usize,
+    library: *const u8,
+    library_len: usize,
+) -> *mut u8 {
+    // SAFETY: the caller guarantees the six buffers (see above).
+    let (text, machine, params, setup, options, library) = unsafe {
+        (
+            std::slice::from_raw_parts(text, text_len),
+            std::slice::from_raw_parts(machine, machine_len),
+            std::slice::from_raw_parts(params, params_len),
+            std::slice::from_raw_parts(setup, setup_len),
+            std::slice::from_raw_parts(options, options_len),
+            std::slice::from_raw_parts(library, library_len),
+        )
+    };
+    let s = |b: &[u8]| String::from_utf8_lossy(b).into_owned();
+    answer(&scene(text, &s(machine), &s(params), &s(setup), &s(options), library))
 }
 
 /// `bytes` behind their 4-byte little-endian length, in a buffer the page frees.
@@ -121,6 +188,66 @@ mod tests {
             assert!(jsonl.starts_with("{\"line\":1,\"kind\":\"rapid\",\"x\":1,\"y\":2,\"z\":3"), "{jsonl}");
             assert!(jsonl.lines().nth(1).unwrap().contains("\"kind\":\"end\""), "{jsonl}");
         }
+    }
+
+    /// The scene of a drilling programme: its header, its motions' columns and its holes.
+    #[test]
+    fn scene_columns() {
+        let text = b"G21 G17 G90 G00 X0 Y0 Z10.\nT3 M06\nG99 G81 X10. Y5. Z-4. R2. F100.\nX20.\nG80 G00 Z10.\nG02 X30. Y5. R5. F200.\nM30\n";
+        let b = scene(text, "fanuc0m", "", "", "", &[]);
+        assert_eq!(&b[..4], b"NCS1");
+        let j = u32::from_le_bytes(b[4..8].try_into().unwrap()) as usize;
+        let head = std::str::from_utf8(&b[8..8 + j]).unwrap();
+        // Motions: the rapid to X0 Y0 Z10; the first hole a rapid in X/Y, one to R, the feed to
+        // Z-4, the rapid back to R (G99); the second starts at R: 1 + 4 + 3, then Z10 and the arc.
+        assert!(head.contains("\"segments\":10,\"holes\":2,\"hole_kinds\":[\"G81\"]"), "{head}");
+        let n = 10;
+        let mut at = (8 + j).div_ceil(8) * 8;
+        let f64s = |at: usize, k: usize| -> Vec<f64> { (0..k).map(|i| f64::from_le_bytes(b[at + 8 * i..at + 8 * i + 8].try_into().unwrap())).collect() };
+        let f32s = |at: usize, k: usize| -> Vec<f32> { (0..k).map(|i| f32::from_le_bytes(b[at + 4 * i..at + 4 * i + 4].try_into().unwrap())).collect() };
+        let t = f64s(at, n);
+        assert!(t.windows(2).all(|w| w[1] >= w[0]) && t[n - 1] > 0.0, "{t:?}");
+        at += 8 * n;
+        let points = f32s(at, 6 * n);
+        // The feed of the first hole: from R (Z2) to Z-4 at X10 Y5.
+        assert_eq!(&points[6 * 3..6 * 4], &[10.0, 5.0, 2.0, 10.0, 5.0, -4.0]);
+        at += 24 * n;
+        let arcs = f32s(at, 4 * n);
+        // The G02 from X20 Y5 to X30 Y5 with R5: centre X25 Y5, half a turn clockwise.
+        assert_eq!(&arcs[4 * 9..4 * 9 + 3], &[25.0, 5.0, 10.0]);
+        assert!((arcs[4 * 9 + 3] + std::f32::consts::PI).abs() < 1e-5, "{arcs:?}");
+        at += 16 * n;
+        let rate = f32s(at, n);
+        assert_eq!((rate[0], rate[3], rate[9]), (0.0, 100.0, 200.0));
+        at += 4 * n;
+        let lines: Vec<u32> = (0..n).map(|i| u32::from_le_bytes(b[at + 4 * i..at + 4 * i + 4].try_into().unwrap())).collect();
+        assert_eq!(lines, [1, 3, 3, 3, 3, 4, 4, 4, 5, 6]);
+        at += 4 * n;
+        let tools: Vec<u16> = (0..n).map(|i| u16::from_le_bytes(b[at + 2 * i..at + 2 * i + 2].try_into().unwrap())).collect();
+        assert_eq!(tools, [0, 3, 3, 3, 3, 3, 3, 3, 3, 3]);
+        at += 2 * n;
+        let kinds = &b[at..at + n];
+        // Rapid, feed at the hole, the arc in XY; each hole ends a block for single block.
+        assert_eq!(kinds[0] & 7, 0);
+        assert_eq!(kinds[3] & 7, 1);
+        assert_eq!(kinds[9] & 7, 2);
+        assert_eq!(kinds[4] & 64, 64);
+        at = (at + n).div_ceil(4) * 4;
+        let holes = f32s(at, 6);
+        assert_eq!(holes, [10.0, 5.0, -4.0, 20.0, 5.0, -4.0]);
+        assert_eq!(b.len(), at + 12 * 2 + 4 * 2 + 2);
+        assert!(scene(b"G0 X0\n", "haas", "", "", "", &[]).starts_with(b"NCSE"));
+        assert!(scene(b"G0 X0\n", "fanuc0m", "", "", "feed_override=300", &[]).starts_with(b"NCSE"));
+        assert!(scene(b"G0 X0\n", "fanuc0m", "", "", "", &[9, 0, 0, 0, b'a']).starts_with(b"NCSE"));
+        // A called programme from the library: M98 P1234 runs O1234's move.
+        let lib = [&4u32.to_le_bytes()[..], b"sub1", &17u32.to_le_bytes()[..], b"O1234\nG0 X7.\nM99\n"].concat();
+        let b = scene(b"G21 G90 G0 X0 Y0 Z0\nM98 P1234\nM30\n", "fanuc0m", "", "", "", &lib);
+        let j = u32::from_le_bytes(b[4..8].try_into().unwrap()) as usize;
+        let head = std::str::from_utf8(&b[8..8 + j]).unwrap();
+        // (The rapid to X0 Y0 Z0 does not move from the power-on position.)
+        assert!(head.contains("\"segments\":1,") && head.contains("\"diagnostics_total\":0"), "{head}");
+        let at = (8 + j).div_ceil(8) * 8 + 8;
+        assert_eq!(f32::from_le_bytes(b[at + 12..at + 16].try_into().unwrap()), 7.0);
     }
 
     #[test]

@@ -3,6 +3,7 @@
 mod canon;
 pub mod expand;
 pub mod jsonl;
+pub mod scene;
 mod text;
 
 pub use canon::Canon;

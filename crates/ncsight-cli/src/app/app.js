@@ -1,0 +1,949 @@
+"use strict";
+// The ncsight page: the engine (the core in WebAssembly, inline below as base64) runs the
+// programme in the editor on the controller chosen, and the page draws, plays and measures the
+// run. Programme text, file names and messages only ever reach the document as text
+// (textContent, a textarea's value, canvas text), never as markup.
+(function () {
+  const $ = (id) => document.getElementById(id);
+  const el = (tag, attrs, text) => {
+    const e = document.createElement(tag);
+    for (const k in attrs || {}) e.setAttribute(k, attrs[k]);
+    if (text !== undefined) e.textContent = String(text);
+    return e;
+  };
+  const JOB = JSON.parse($("ncsight-job").textContent);
+  const LH = 18; // editor line height, px
+
+  // ---- words of the interface: English and Chinese ----------------------------------------
+  const WORDS = {
+    en: {
+      machine: "Controller", stock: "Stock", open: "Open…", source: "Programme", auto: "run as I type", run: "Run",
+      fit: "Fit", play: "Play", pause: "Pause", prev: "◀ Block", next: "Block ▶", nexttool: "Next tool", tocursor: "Run to cursor",
+      speed: "Speed", panel: "Operator panel", hold: "Feed hold now", reset: "Reset now", clear: "Clear presses",
+      single: "Single block", dry: "Dry run", bdel: "Block delete", opt: "Optional stop", feedov: "Feed override",
+      rapidov: "Rapid override", params: "Parameters (N=V or N.B=V, one a line)", time: "Time", thread: "Thread form (ncsight report)",
+      paramtable: "Parameters and assumptions", lang: "中文", rapid: "rapid", pullout: "pull-out", tool: "T",
+      ok: "No problems: {status} at {time}", problems: "{alarms} alarm(s), {warnings} warning(s)", first: "first: line {line}: {msg}",
+      ended: "ended", stopped: "stopped", alarm: "alarm", running: "running…", usage: "Cannot run: {msg}",
+      total: "Total", bytool: "By tool", byop: "By operation", feedk: "feed", arc: "arc", threadk: "thread", dwell: "dwell", turn: "rotary turn", waits: "spindle, tool change, stops",
+      line: "line", col: "col", state_t: "t", state_line: "line", spindle: "spindle", angle: "angle", lead: "lead", feedrate: "feed",
+      empty: "Paste a programme, drop a file here, or open one.", presses: "presses: {list}", holdat: "hold {t} s", resetat: "reset {t} s",
+      more: "{n} more not listed", hole: "holes", view_lathe: "Z–X (lathe)", view_xy: "top X–Y", view_xz: "front X–Z", view_yz: "side Y–Z", view_iso: "3D (isometric)",
+      work_zero: "work zero", stockguess: "stock from the programme (type DIAxLEN to set)", part: "part", notrun: "Not run: the text is larger than auto-run allows; press Run.",
+      edit: "Edit (slow for a programme this long)",
+      seconds: "s", of: "of", block: "block", kinds: { 0: "rapid", 1: "feed", 2: "arc", 3: "thread", 4: "thread arc" },
+      threadtitle: "Computed by ncsight report for the programme as it was written (not re-run on edit).",
+    },
+    zh: {
+      machine: "控制器", stock: "毛坯", open: "打开…", source: "程序", auto: "输入即运行", run: "运行",
+      fit: "适应窗口", play: "播放", pause: "暂停", prev: "◀ 单段", next: "单段 ▶", nexttool: "下一把刀", tocursor: "运行到光标",
+      speed: "速度", panel: "操作面板", hold: "此刻进给保持", reset: "此刻复位", clear: "清除按键",
+      single: "单段", dry: "空运行", bdel: "程序段跳过", opt: "选择停", feedov: "进给倍率",
+      rapidov: "快速倍率", params: "参数（N=V 或 N.B=V，每行一个）", time: "时间", thread: "螺纹牙形（ncsight report）",
+      paramtable: "参数与假设", lang: "English", rapid: "快速", pullout: "退尾", tool: "T",
+      ok: "没有问题：{status}，用时 {time}", problems: "{alarms} 个报警，{warnings} 个警告", first: "第一个：第 {line} 行：{msg}",
+      ended: "程序结束", stopped: "停止", alarm: "报警", running: "运行中…", usage: "无法运行：{msg}",
+      total: "合计", bytool: "按刀具", byop: "按动作", feedk: "切削进给", arc: "圆弧", threadk: "螺纹", dwell: "暂停", turn: "回转轴", waits: "主轴、换刀、停止",
+      line: "行", col: "列", state_t: "时间", state_line: "行", spindle: "主轴", angle: "角度", lead: "导程", feedrate: "进给",
+      empty: "粘贴程序、把文件拖到这里，或打开文件。", presses: "按键：{list}", holdat: "{t} 秒进给保持", resetat: "{t} 秒复位",
+      more: "另有 {n} 条未列出", hole: "孔", view_lathe: "Z–X（车床）", view_xy: "俯视 X–Y", view_xz: "正视 X–Z", view_yz: "侧视 Y–Z", view_iso: "三维（等轴测）",
+      work_zero: "工件零点", stockguess: "按程序估计的毛坯（输入 直径x长度 设定）", part: "工件", notrun: "未运行：程序太大，不自动运行；请按“运行”。",
+      edit: "编辑（程序很长，会较慢）",
+      seconds: "秒", of: "/", block: "段", kinds: { 0: "快速", 1: "直线", 2: "圆弧", 3: "螺纹", 4: "圆弧螺纹" },
+      threadtitle: "由 ncsight report 按原程序计算（编辑后不重算）。",
+    },
+  };
+  let lang = (JOB.lang || (navigator.languages || [navigator.language || "en"]).find((l) => /^(zh|en)/i.test(l)) || "en").toLowerCase().startsWith("zh") ? "zh" : "en";
+  const t = (key, vars) => {
+    let s = WORDS[lang][key];
+    if (s === undefined) s = WORDS.en[key] === undefined ? key : WORDS.en[key];
+    for (const k in vars || {}) s = s.split("{" + k + "}").join(String(vars[k]));
+    return s;
+  };
+  function applyWords() {
+    document.documentElement.lang = lang === "zh" ? "zh-CN" : "en";
+    document.querySelectorAll("[data-i18n]").forEach((e) => { e.textContent = t(e.getAttribute("data-i18n")); });
+    $("lang").textContent = t("lang");
+    $("play").textContent = timer ? t("pause") : t("play");
+    fillViews();
+  }
+
+  // ---- the engine -------------------------------------------------------------------------
+  let engine = null;
+  const enc = new TextEncoder();
+  async function loadEngine() {
+    const b64 = $("ncsight-engine").textContent.trim();
+    if (!b64) throw new Error("this page was written without its engine");
+    const bin = atob(b64);
+    const bytes = new Uint8Array(bin.length);
+    for (let i = 0; i < bin.length; i++) bytes[i] = bin.charCodeAt(i);
+    const { instance } = await WebAssembly.instantiate(bytes, {});
+    engine = instance.exports;
+  }
+  /** The files where called programmes are looked for, as the engine takes them: a u32 length
+   * and the name, a u32 length and the text, for each. */
+  function libraryBytes() {
+    const parts = [];
+    (JOB.library || []).forEach(([name, text]) => [enc.encode(name), enc.encode(text)].forEach((b) => { const l = new Uint8Array(4); new DataView(l.buffer).setUint32(0, b.length, true); parts.push(l, b); }));
+    const out = new Uint8Array(parts.reduce((a, b) => a + b.length, 0));
+    let at = 0;
+    parts.forEach((b) => { out.set(b, at); at += b.length; });
+    return out;
+  }
+  function callScene(textBytes, machine, params, setup, options) {
+    const E = engine;
+    const bufs = [textBytes, enc.encode(machine), enc.encode(params), enc.encode(setup), enc.encode(options), libraryBytes()];
+    const ptrs = bufs.map((b) => { const p = E.ncsight_alloc(b.length); new Uint8Array(E.memory.buffer, p, b.length).set(b); return p; });
+    const r = E.ncsight_scene(ptrs[0], bufs[0].length, ptrs[1], bufs[1].length, ptrs[2], bufs[2].length, ptrs[3], bufs[3].length, ptrs[4], bufs[4].length, ptrs[5], bufs[5].length);
+    const len = new DataView(E.memory.buffer).getUint32(r, true);
+    const out = E.memory.buffer.slice(r + 4, r + 4 + len);
+    E.ncsight_free(r, 4 + len);
+    ptrs.forEach((p, i) => E.ncsight_free(p, bufs[i].length));
+    return out;
+  }
+  /** The scene's header and columns as typed arrays (see ncsight-io's format/scene.rs). */
+  function parseScene(buf) {
+    const u8 = new Uint8Array(buf);
+    const magic = String.fromCharCode(u8[0], u8[1], u8[2], u8[3]);
+    if (magic === "NCSE") return { usage: new TextDecoder().decode(u8.subarray(4)) };
+    const jl = new DataView(buf).getUint32(4, true);
+    const head = JSON.parse(new TextDecoder().decode(u8.subarray(8, 8 + jl)));
+    const n = head.segments, h = head.holes;
+    let at = Math.ceil((8 + jl) / 8) * 8;
+    const take = (Type, count) => { const a = new Type(buf, at, count); at += count * Type.BYTES_PER_ELEMENT; return a; };
+    const S = { head, n, h };
+    S.t = take(Float64Array, n); S.p = take(Float32Array, 6 * n); S.arc = take(Float32Array, 4 * n); S.rate = take(Float32Array, n);
+    S.line = take(Uint32Array, n); S.tool = take(Uint16Array, n); S.kind = take(Uint8Array, n);
+    at = Math.ceil(at / 4) * 4;
+    S.holeAt = take(Float32Array, 3 * h); S.holeSeg = take(Uint32Array, h); S.holeKind = take(Uint8Array, h);
+    // When each motion starts: after the record before it (a dwell, a spindle wait, a tool change).
+    S.t0 = new Float64Array(n);
+    let e = 0;
+    const ev = head.events;
+    for (let i = 0; i < n; i++) {
+      let s = i ? S.t[i - 1] : 0;
+      while (e < ev.length && ev[e].seg <= i) { if (ev[e].seg === i) s = Math.max(s, ev[e].t); e++; }
+      S.t0[i] = Math.min(s, S.t[i]);
+    }
+    // Where single block stops: motions and other records that end a block.
+    const ends = [];
+    for (let i = 0; i < n; i++) if (S.kind[i] & 64) ends.push(S.t[i]);
+    ev.forEach((x) => { if (x.be) ends.push(x.t); });
+    S.blockEnds = Float64Array.from(ends).sort();
+    S.tools = [];
+    ev.forEach((x) => { if (x.k === "tool" && !S.tools.includes(x.tool)) S.tools.push(x.tool); });
+    S.threadOf = new Map(head.threads.map((r) => [r[0], r]));
+    S.lineFirstSeg = new Map();
+    for (let i = 0; i < n; i++) if (!S.lineFirstSeg.has(S.line[i])) S.lineFirstSeg.set(S.line[i], i);
+    return S;
+  }
+
+  // ---- state --------------------------------------------------------------------------------
+  let S = null; // the scene
+  let now = 0;
+  let selLine = 0;
+  let runLine = 0;
+  let timer = 0;
+  const presses = { holds: [], reset: null };
+  let lathe = true;
+  let fitted = true;
+  let fresh = true; // the next run is of a new programme
+  let fileName = JOB.file || "";
+  const view = { s: 1, ou: 0, ov: 0, kind: "lathe" };
+  const VIEWS = {
+    lathe: { pu: [0, 0, 1], pv: [1, 0, 0], names: ["Z", "X Ø"] },
+    xy: { pu: [1, 0, 0], pv: [0, 1, 0], names: ["X", "Y"] },
+    xz: { pu: [1, 0, 0], pv: [0, 0, 1], names: ["X", "Z"] },
+    yz: { pu: [0, 1, 0], pv: [0, 0, 1], names: ["Y", "Z"] },
+    iso: { pu: [0.7071, -0.7071, 0], pv: [-0.4082, -0.4082, 0.8165], names: ["", ""] },
+  };
+  const PALETTE = ["#1565c0", "#2e7d32", "#c62828", "#6a1b9a", "#ef6c00", "#00838f", "#ad1457", "#4e342e", "#283593", "#558b2f"];
+  const HOLE_COLOURS = ["#d81b60", "#00897b", "#f4511e", "#3949ab", "#7cb342", "#8e24aa", "#fb8c00", "#00acc1"];
+  const toolColour = (tool) => { const i = S ? S.tools.indexOf(tool) : -1; return i < 0 ? "#37474f" : PALETTE[i % PALETTE.length]; };
+
+  // ---- machines, views, panel ---------------------------------------------------------------
+  JOB.machines.forEach((m) => $("machine").appendChild(el("option", { value: m[0] }, m[0] + " — " + m[1])));
+  $("machine").value = JOB.machine || "gsk980tdi";
+  for (let f = 200; f >= 0; f -= 10) $("feed-ov").appendChild(el("option", { value: f }, f + " %"));
+  $("feed-ov").value = "100";
+  function fillViews() {
+    const sel = $("view");
+    const keep = sel.value;
+    while (sel.firstChild) sel.removeChild(sel.firstChild);
+    (lathe ? ["lathe"] : ["xy", "xz", "yz", "iso"]).forEach((k) => sel.appendChild(el("option", { value: k }, t("view_" + k))));
+    sel.value = [...sel.options].some((o) => o.value === keep) ? keep : sel.options[0].value;
+    view.kind = sel.value;
+  }
+  $("stock").value = JOB.stock ? JOB.stock.diameter_mm + "x" + JOB.stock.length_mm : "";
+  $("params").value = (JOB.params || []).join("\n");
+  $("single").checked = !!(JOB.options && JOB.options.single_block);
+  $("dry").checked = !!(JOB.options && JOB.options.dry_run);
+  $("bdel").checked = !!(JOB.options && JOB.options.block_delete);
+  $("opt").checked = !!(JOB.options && JOB.options.optional_stop);
+  if (JOB.options) {
+    $("feed-ov").value = String(JOB.options.feed_override || 100);
+    $("rapid-ov").value = String(JOB.options.rapid_override || 100);
+    presses.holds = (JOB.options.feed_hold_at || []).slice();
+    presses.reset = JOB.options.reset_at === undefined ? null : JOB.options.reset_at;
+  }
+  $("file-name").textContent = fileName;
+
+  // ---- the editor: a textarea over a highlight layer, with a gutter; only visible rows drawn --
+  const ta = $("text");
+  const viewer = $("viewer");
+  // A programme of more lines than a textarea lays out quickly is shown read-only, only the rows
+  // in view drawn; "Edit" puts it into the textarea all the same.
+  const BIG_LINES = 20000;
+  let big = null; // { text, lines } while shown read-only
+  let lineCount = 1;
+  let diagByLine = new Map();
+  function setProgramme(text, forceEdit) {
+    let c = 1;
+    for (let i = text.indexOf("\n"); i >= 0; i = text.indexOf("\n", i + 1)) c++;
+    if (c > BIG_LINES && !forceEdit) {
+      big = { text, lines: text.split("\n") };
+      ta.value = ""; ta.hidden = true; viewer.hidden = false; $("edit").hidden = false;
+      $("spacer").style.height = c * LH + "px";
+      viewer.scrollTop = 0;
+    } else {
+      big = null;
+      ta.value = text; ta.hidden = false; viewer.hidden = true; $("edit").hidden = true;
+      ta.scrollTop = 0;
+    }
+    lineCount = c;
+  }
+  const programmeText = () => (big ? big.text : ta.value);
+  const scroller = () => (big ? viewer : ta);
+  setProgramme(JOB.text || "");
+  function countLines() { let c = 1; const s = ta.value; for (let i = s.indexOf("\n"); i >= 0; i = s.indexOf("\n", i + 1)) c++; lineCount = c; }
+  let editorHeight = 0;
+  function paintEditor() {
+    const sc = scroller();
+    const top = sc.scrollTop, hgt = editorHeight || (editorHeight = $("code").clientHeight || 500);
+    const first = Math.max(0, Math.floor(top / LH) - 2), last = Math.min(lineCount, Math.ceil((top + hgt) / LH) + 2);
+    const gut = $("gutter-rows"), ov = $("overlay");
+    gut.textContent = ""; ov.textContent = "";
+    const gf = document.createDocumentFragment(), of = document.createDocumentFragment();
+    for (let i = first; i < last; i++) {
+      const n = i + 1, y = i * LH - top + "px";
+      const sev = diagByLine.get(n);
+      const g = el("div", { class: "g" + (sev ? " " + sev : "") + (n === runLine ? " run" : ""), "data-line": n }, n);
+      g.style.top = y;
+      gf.appendChild(g);
+      const cls = n === runLine ? "run" : n === selLine ? "sel" : sev || "";
+      if (cls || big) {
+        const o = el("div", { class: "o " + cls + (big ? " txt" : ""), "data-line": n }, big ? big.lines[i] : undefined);
+        o.style.top = y;
+        of.appendChild(o);
+      }
+    }
+    gut.appendChild(gf); ov.appendChild(of);
+  }
+  viewer.addEventListener("scroll", paintEditor);
+  viewer.addEventListener("click", (e) => { const r = viewer.getBoundingClientRect(); select(Math.min(lineCount, Math.floor((e.clientY - r.top + viewer.scrollTop) / LH) + 1), false); });
+  $("edit").addEventListener("click", () => { const top = viewer.scrollTop; setProgramme(big.text, true); ta.scrollTop = top; paintEditor(); });
+  ta.addEventListener("scroll", paintEditor);
+  function caretLine() { if (big) return selLine || 1; const s = ta.value; let n = 1; const end = ta.selectionStart; for (let i = s.indexOf("\n"); i >= 0 && i < end; i = s.indexOf("\n", i + 1)) n++; return n; }
+  function showLine(n, moveCaret) {
+    const sc = scroller(), top = (n - 1) * LH, h = editorHeight || 500;
+    if (top < sc.scrollTop || top + LH > sc.scrollTop + h) sc.scrollTop = Math.max(0, top - h / 3);
+    if (moveCaret && !big) {
+      const s = ta.value;
+      let at = 0;
+      for (let k = 1; k < n && at >= 0; k++) at = s.indexOf("\n", at) + 1;
+      if (at >= 0) { ta.setSelectionRange(at, at); }
+    }
+    paintEditor();
+  }
+  ta.addEventListener("click", () => { selLine = caretLine(); paintEditor(); draw(); });
+  let debounce = 0;
+  ta.addEventListener("input", () => {
+    countLines(); paintEditor();
+    if (!$("auto").checked) return;
+    clearTimeout(debounce);
+    const size = ta.value.length;
+    if (size > 5e6) { banner("warning", t("notrun")); return; }
+    debounce = setTimeout(run, size > 2e5 ? 900 : 250);
+  });
+
+  // ---- running -----------------------------------------------------------------------------
+  function optionsText() {
+    const o = [];
+    if ($("single").checked) o.push("single_block=1");
+    if ($("dry").checked) o.push("dry_run=1");
+    if ($("bdel").checked) o.push("block_delete=1");
+    if ($("opt").checked) o.push("optional_stop=1");
+    if (presses.holds.length) o.push("feed_hold_at=" + presses.holds.join(","));
+    if (presses.reset !== null) o.push("reset_at=" + presses.reset);
+    o.push("feed_override=" + $("feed-ov").value, "rapid_override=" + $("rapid-ov").value);
+    // What the report's command line gave besides (main programme, variables, the runaway guard).
+    if (JOB.options && JOB.options.extra) o.push(JOB.options.extra);
+    return o.join("\n");
+  }
+  function banner(cls, text) { const b = $("banner"); b.className = cls; b.textContent = text; }
+  function run() {
+    if (!engine) return;
+    const machine = $("machine").value;
+    const t0 = performance.now();
+    const buf = callScene(enc.encode(programmeText()), machine, $("params").value, JOB.setup || "", optionsText());
+    const next = parseScene(buf);
+    lastRunMs = performance.now() - t0;
+    if (next.usage) { banner("usage", t("usage", { msg: next.usage })); return; }
+    const wasLathe = lathe;
+    S = next;
+    lathe = S.head.lathe;
+    if (wasLathe !== lathe || !$("view").options.length) { fillViews(); fitted = true; }
+    diagByLine = new Map();
+    S.head.diagnostics.forEach((d) => { if (diagByLine.get(d.l) !== "alarm") diagByLine.set(d.l, d.sev); });
+    // A new programme opens at its end (the whole path, the finished part); an edit keeps the moment.
+    now = fresh ? S.head.total_s : Math.min(now, S.head.total_s);
+    fresh = false;
+    partCache = null;
+    if (fitted) fit();
+    showProblems(); showTime(); showParams(); legend(); setTime(now); paintEditor();
+  }
+  let lastRunMs = 0;
+  function showProblems() {
+    const H = S.head, box = $("problems");
+    box.textContent = "";
+    const alarms = H.diagnostics.filter((d) => d.sev === "alarm").length;
+    const warnings = H.diagnostics.length - alarms + Math.max(0, H.diagnostics_total - H.diagnostics.length);
+    if (!H.diagnostics_total) {
+      banner("ok", programmeText().trim() ? t("ok", { status: t(H.status), time: hms(H.total_s) }) : t("empty"));
+    } else {
+      const firstD = H.diagnostics[0];
+      banner(alarms ? "alarm" : "warning", t("problems", { alarms, warnings }) + " — " + t("first", { line: firstD.l, msg: firstD.code + " " + firstD.msg }));
+    }
+    const frag = document.createDocumentFragment();
+    H.diagnostics.slice(0, 500).forEach((d) => {
+      const p = el("div", { class: "p " + d.sev, "data-line": d.l }, t("line") + " " + d.l + " " + t("col") + " " + d.c + " · " + d.code + " · " + d.msg + (d.hint ? " (" + d.hint + ")" : ""));
+      p.addEventListener("click", () => select(d.l, true));
+      frag.appendChild(p);
+    });
+    if (H.diagnostics_total > 500) frag.appendChild(el("div", {}, t("more", { n: H.diagnostics_total - 500 })));
+    box.appendChild(frag);
+  }
+
+  // ---- time as a person reads it --------------------------------------------------------------
+  function hms(s) {
+    if (!(s >= 0)) return "-";
+    const h = Math.floor(s / 3600), m = Math.floor((s % 3600) / 60), sec = s - h * 3600 - m * 60;
+    return (h ? h + ":" + String(m).padStart(2, "0") : String(m)) + ":" + sec.toFixed(1).padStart(4, "0");
+  }
+  function showTime() {
+    const byTool = new Map(), byOp = new Map();
+    const add = (m, k, v) => m.set(k, (m.get(k) || 0) + v);
+    for (let i = 0; i < S.n; i++) {
+      const d = S.t[i] - S.t0[i];
+      add(byTool, S.tool[i], d);
+      const k = S.kind[i] & 7;
+      add(byOp, k === 0 ? t("rapid") : k === 1 ? t("feedk") : k === 2 ? t("arc") : t("threadk"), d);
+    }
+    let between = S.head.total_s;
+    for (let i = 0; i < S.n; i++) between -= S.t[i] - S.t0[i];
+    S.head.events.forEach((e) => { if (e.k === "dwell") { add(byOp, t("dwell"), e.s); between -= e.s; } if (e.k === "rotary") { add(byOp, t("turn"), e.s); } });
+    if (between > 1e-6) add(byOp, t("waits"), between);
+    const box = $("time");
+    box.textContent = "";
+    box.appendChild(el("div", { id: "time-total" }, t("total") + " " + hms(S.head.total_s)));
+    const table = (title, rows, id) => {
+      const tb = el("table", { id });
+      const hr = el("tr"); hr.appendChild(el("th", {}, title)); hr.appendChild(el("th", {}, "h:mm:ss")); hr.appendChild(el("th", {}, "%")); tb.appendChild(hr);
+      rows.forEach(([k, v]) => {
+        const tr = el("tr"); tr.appendChild(el("td", {}, k)); tr.appendChild(el("td", { class: "num" }, hms(v)));
+        tr.appendChild(el("td", { class: "num" }, S.head.total_s > 0 ? (100 * v / S.head.total_s).toFixed(1) : "-")); tb.appendChild(tr);
+      });
+      box.appendChild(tb);
+    };
+    table(t("bytool"), [...byTool].sort((a, b) => b[1] - a[1]).map(([k, v]) => ["T" + String(k).padStart(2, "0"), v]), "time-by-tool");
+    table(t("byop"), [...byOp].sort((a, b) => b[1] - a[1]), "time-by-op");
+  }
+  function showParams() {
+    const box = $("param-table");
+    box.textContent = "";
+    const tb = el("table");
+    const hr = el("tr"); ["parameter", "value", "unit", "meaning", "source"].forEach((h) => hr.appendChild(el("th", {}, h))); tb.appendChild(hr);
+    S.head.params.forEach((p) => { const tr = el("tr"); p.forEach((c) => tr.appendChild(el("td", {}, c))); tb.appendChild(tr); });
+    (JOB.settings || []).forEach((s) => box.appendChild(el("div", {}, s)));
+    box.appendChild(tb);
+  }
+
+  // ---- geometry ------------------------------------------------------------------------------
+  const PLANE_AXES = [[0, 1, 2], [2, 0, 1], [1, 2, 0]];
+  /** The point at fraction f of motion i (arcs along their circle, helices along their axis). */
+  function pointAt(i, f, out) {
+    const p = S.p, o = 6 * i;
+    const k = S.kind[i] & 7;
+    if (k === 2 || k === 4) {
+      const ax = PLANE_AXES[(S.kind[i] >> 3) & 3], a = ax[0], b = ax[1], nn = ax[2];
+      const c = 4 * i, ca = S.arc[c + a], cb = S.arc[c + b];
+      const r = Math.hypot(p[o + a] - ca, p[o + b] - cb);
+      const th = Math.atan2(p[o + b] - cb, p[o + a] - ca) + f * S.arc[c + 3];
+      out[a] = ca + r * Math.cos(th); out[b] = cb + r * Math.sin(th); out[nn] = p[o + nn] + f * (p[o + 3 + nn] - p[o + nn]);
+      return out;
+    }
+    out[0] = p[o] + f * (p[o + 3] - p[o]); out[1] = p[o + 1] + f * (p[o + 4] - p[o + 1]); out[2] = p[o + 2] + f * (p[o + 5] - p[o + 2]);
+    return out;
+  }
+  const V = () => VIEWS[view.kind] || VIEWS.lathe;
+  let cw = 800, ch = 500;
+  const sx = (u) => (u - view.ou) * view.s;
+  const sy = (v) => ch - (v - view.ov) * view.s;
+  function fit() {
+    if (!S) return;
+    const pv = V(), A = pv.pu, B = pv.pv;
+    let u0 = Infinity, u1 = -Infinity, v0 = Infinity, v1 = -Infinity;
+    const p = S.p;
+    const addPt = (x, y, z) => { const u = A[0] * x + A[1] * y + A[2] * z, v = B[0] * x + B[1] * y + B[2] * z; if (u < u0) u0 = u; if (u > u1) u1 = u; if (v < v0) v0 = v; if (v > v1) v1 = v; };
+    // The fit is on the cutting moves; tool changes and approaches at rapid are left out.
+    for (let i = 0; i < S.n; i++) if ((S.kind[i] & 7) !== 0) { const o = 6 * i; addPt(p[o], p[o + 1], p[o + 2]); addPt(p[o + 3], p[o + 4], p[o + 5]); }
+    for (let j = 0; j < S.h; j++) addPt(S.holeAt[3 * j], S.holeAt[3 * j + 1], S.holeAt[3 * j + 2]);
+    if (!isFinite(u0)) for (let i = 0; i < S.n; i++) { const o = 6 * i; addPt(p[o + 3], p[o + 4], p[o + 5]); }
+    if (!isFinite(u0)) { u0 = -10; u1 = 10; v0 = -10; v1 = 10; }
+    const w = Math.max(u1 - u0, 1e-3), h = Math.max(v1 - v0, 1e-3);
+    const m = 0.1;
+    view.s = Math.min(cw / (w * (1 + 2 * m)), ch / (h * (1 + 2 * m) + 60 / Math.max(ch, 1) * h));
+    view.ou = (u0 + u1) / 2 - cw / 2 / view.s;
+    view.ov = (v0 + v1) / 2 - ch / 2 / view.s;
+    fitted = true;
+  }
+  function stock() {
+    const m = /^\s*([0-9.]+)\s*[xX×*]\s*([0-9.]+)\s*$/.exec($("stock").value);
+    if (m && +m[1] > 0 && +m[2] > 0) return { diameter: +m[1], length: +m[2], front: JOB.stock ? JOB.stock.front_z_mm || 0 : 0, guessed: false };
+    if (!lathe || !S || !S.n) return null;
+    // A guess from the programme: the largest diameter cut, from Z0 to the deepest cut.
+    let x = 0, z = 0;
+    for (let i = 0; i < S.n; i++) if ((S.kind[i] & 7) !== 0) { const o = 6 * i; x = Math.max(x, S.p[o], S.p[o + 3]); z = Math.min(z, S.p[o + 2], S.p[o + 5]); }
+    if (x <= 0 || z >= 0) return null;
+    return { diameter: 2 * x, length: -z + 2, front: 0, guessed: true };
+  }
+
+  // ---- the turned part: the outer profile the tool tip leaves, as the programme plays --------
+  let partCache = null;
+  const COLS = 1200;
+  function part(st) {
+    const z0 = st.front - st.length, dz = st.length / COLS;
+    const i1 = segAt(now);
+    if (!partCache || partCache.key !== st.diameter + "x" + st.length + "@" + st.front || partCache.upto > i1) {
+      partCache = { key: st.diameter + "x" + st.length + "@" + st.front, upto: 0, r: new Float32Array(COLS).fill(st.diameter / 2) };
+    }
+    const r = partCache.r, q = [0, 0, 0], a = [0, 0, 0];
+    const cutLine = (za, xa, zb, xb) => {
+      if (xa < 0 || xb < 0) return;
+      let ja = Math.floor((Math.min(za, zb) - z0) / dz), jb = Math.floor((Math.max(za, zb) - z0) / dz);
+      if (jb < 0 || ja >= COLS) return;
+      ja = Math.max(0, ja); jb = Math.min(COLS - 1, jb);
+      for (let j = ja; j <= jb; j++) {
+        const zc = z0 + (j + 0.5) * dz;
+        const x = Math.abs(zb - za) < 1e-9 ? Math.min(xa, xb) : xa + (xb - xa) * Math.min(1, Math.max(0, (zc - za) / (zb - za)));
+        if (x < r[j]) r[j] = x;
+      }
+    };
+    const cutSeg = (i, fEnd) => {
+      const k = S.kind[i] & 7;
+      if (k === 0) return;
+      const steps = k === 2 || k === 4 ? 24 : 1;
+      pointAt(i, 0, a);
+      for (let s = 1; s <= steps; s++) { pointAt(i, (s / steps) * fEnd, q); cutLine(a[2], a[0], q[2], q[0]); a[0] = q[0]; a[1] = q[1]; a[2] = q[2]; }
+    };
+    for (let i = partCache.upto; i < i1; i++) cutSeg(i, 1);
+    partCache.upto = Math.max(partCache.upto, i1);
+    // The motion under way, up to where the tool is (not kept).
+    const out = Float32Array.from(r);
+    if (i1 >= 0 && i1 < S.n && now > S.t0[i1]) {
+      const keep = r.slice();
+      cutSeg(i1, Math.min(1, (now - S.t0[i1]) / Math.max(1e-12, S.t[i1] - S.t0[i1])));
+      out.set(r); r.set(keep);
+    }
+    return { z0, dz, r: out };
+  }
+
+  // ---- drawing -------------------------------------------------------------------------------
+  const canvas = $("plot");
+  const ctx = canvas.getContext("2d");
+  let lastDrawMs = 0;
+  const drawParts = {};
+  function niceStep(raw) { const p = Math.pow(10, Math.floor(Math.log10(raw))); for (const m of [1, 2, 5, 10]) if (m * p >= raw) return m * p; return 10 * p; }
+  function numLabel(v) { const a = Math.abs(v); return (a >= 100 || Math.abs(v - Math.round(v)) < 1e-9 ? Math.round(v) : +v.toFixed(a >= 10 ? 1 : 3)).toString(); }
+  function draw() {
+    const t0 = performance.now();
+    const dpr = window.devicePixelRatio || 1;
+    const box = $("plot-box");
+    cw = box.clientWidth; ch = box.clientHeight;
+    if (canvas.width !== Math.round(cw * dpr) || canvas.height !== Math.round(ch * dpr)) { canvas.width = Math.round(cw * dpr); canvas.height = Math.round(ch * dpr); }
+    ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
+    ctx.fillStyle = "#ffffff"; ctx.fillRect(0, 0, cw, ch);
+    drawGrid();
+    if (!S) { lastDrawMs = performance.now() - t0; return; }
+    const pv = V(), A = pv.pu, B = pv.pv;
+    const st = lathe ? stock() : null;
+    if (st) drawStock(st);
+    if (lathe) {
+      // The spindle centre line, over the part.
+      ctx.strokeStyle = "#455a64"; ctx.lineWidth = 1.2; ctx.setLineDash([14, 4, 3, 4]);
+      ctx.beginPath(); ctx.moveTo(0, sy(0)); ctx.lineTo(cw, sy(0)); ctx.stroke(); ctx.setLineDash([]);
+    }
+    const parts = [["paths", drawPaths], ["holes", drawHoles], ["extents", drawExtents], ["selection", drawSelection], ["diagnostics", drawDiagnostics], ["tool", drawTool]];
+    for (const [name, f] of parts) { const a = performance.now(); f(A, B); drawParts[name] = performance.now() - a; }
+    lastDrawMs = performance.now() - t0;
+  }
+  function drawGrid() {
+    const step = niceStep(80 / view.s), minor = step / 5;
+    const u0 = view.ou, u1 = view.ou + cw / view.s, v0 = view.ov, v1 = view.ov + ch / view.s;
+    ctx.lineWidth = 1;
+    if (minor * view.s >= 8) {
+      ctx.strokeStyle = "#f1f3f5"; ctx.beginPath();
+      for (let u = Math.ceil(u0 / minor) * minor; u <= u1; u += minor) { const x = Math.round(sx(u)) + 0.5; ctx.moveTo(x, 0); ctx.lineTo(x, ch); }
+      for (let v = Math.ceil(v0 / minor) * minor; v <= v1; v += minor) { const y = Math.round(sy(v)) + 0.5; ctx.moveTo(0, y); ctx.lineTo(cw, y); }
+      ctx.stroke();
+    }
+    ctx.strokeStyle = "#dde2e7"; ctx.beginPath();
+    for (let u = Math.ceil(u0 / step) * step; u <= u1; u += step) { const x = Math.round(sx(u)) + 0.5; ctx.moveTo(x, 0); ctx.lineTo(x, ch); }
+    for (let v = Math.ceil(v0 / step) * step; v <= v1; v += step) { const y = Math.round(sy(v)) + 0.5; ctx.moveTo(0, y); ctx.lineTo(cw, y); }
+    ctx.stroke();
+    // The axes through the work zero, and on a lathe the spindle centre line.
+    const zx = sx(0), zy = sy(0);
+    ctx.strokeStyle = "#455a64"; ctx.lineWidth = 1.2;
+    ctx.setLineDash(lathe ? [14, 4, 3, 4] : []);
+    ctx.beginPath(); ctx.moveTo(0, zy); ctx.lineTo(cw, zy); ctx.stroke();
+    ctx.setLineDash([]);
+    ctx.beginPath(); ctx.moveTo(zx, 0); ctx.lineTo(zx, ch); ctx.stroke();
+    // Ticks and numbers along the bottom and the left edge (a lathe's X as a diameter).
+    ctx.fillStyle = "rgba(255,255,255,0.85)"; ctx.fillRect(0, ch - 18, cw, 18); ctx.fillRect(0, 0, 44, ch);
+    ctx.fillStyle = "#37474f"; ctx.font = "11px system-ui,sans-serif"; ctx.textBaseline = "middle";
+    ctx.strokeStyle = "#37474f"; ctx.lineWidth = 1; ctx.beginPath();
+    ctx.textAlign = "center";
+    for (let u = Math.ceil(u0 / step) * step; u <= u1; u += step) { const x = sx(u); if (x < 50) continue; ctx.moveTo(x, ch - 18); ctx.lineTo(x, ch - 13); ctx.fillText(numLabel(u), x, ch - 7); }
+    ctx.textAlign = "right";
+    for (let v = Math.ceil(v0 / step) * step; v <= v1; v += step) { const y = sy(v); if (y > ch - 22) continue; ctx.moveTo(44, y); ctx.lineTo(39, y); ctx.fillText(numLabel(lathe ? 2 * v : v), 37, y); }
+    ctx.stroke();
+    const names = V().names;
+    ctx.font = "bold 12px system-ui,sans-serif"; ctx.textAlign = "right"; ctx.fillText(names[0] + " mm", cw - 6, ch - 26);
+    ctx.textAlign = "left"; ctx.fillText(names[1] + " mm", 48, 10);
+    // The work zero: a quartered circle.
+    if (zx > -10 && zx < cw + 10 && zy > -10 && zy < ch + 10) {
+      ctx.fillStyle = "#263238"; ctx.beginPath(); ctx.moveTo(zx, zy); ctx.arc(zx, zy, 6, 0, Math.PI / 2); ctx.closePath(); ctx.fill();
+      ctx.beginPath(); ctx.moveTo(zx, zy); ctx.arc(zx, zy, 6, Math.PI, 1.5 * Math.PI); ctx.closePath(); ctx.fill();
+      ctx.strokeStyle = "#263238"; ctx.beginPath(); ctx.arc(zx, zy, 6, 0, 2 * Math.PI); ctx.stroke();
+    }
+  }
+  function drawStock(st) {
+    const zb = st.front - st.length, R = st.diameter / 2;
+    // The chuck: jaws gripping the far end of the bar, and its body behind.
+    const grip = Math.min(15, st.length * 0.25), jaw = Math.max(6, st.diameter * 0.18);
+    ctx.fillStyle = "#78909c";
+    ctx.fillRect(sx(zb - 30), sy(R + jaw + 12), 30 * view.s, (2 * (R + jaw + 12)) * view.s);
+    ctx.fillStyle = "#90a4ae";
+    [1, -1].forEach((sgn) => { const y0 = sy(sgn > 0 ? R + jaw : -R), y1 = sy(sgn > 0 ? R : -R - jaw); ctx.fillRect(sx(zb), y0, grip * view.s, y1 - y0); });
+    // The part: the profile left by the tool, mirrored about the axis, shaded.
+    const P = part(st);
+    ctx.fillStyle = "rgba(176,190,197,0.75)"; ctx.strokeStyle = "#546e7a"; ctx.lineWidth = 1;
+    [1, -1].forEach((sgn) => {
+      ctx.beginPath(); ctx.moveTo(sx(P.z0), sy(0));
+      for (let j = 0; j < COLS; j++) { ctx.lineTo(sx(P.z0 + j * P.dz), sy(sgn * P.r[j])); ctx.lineTo(sx(P.z0 + (j + 1) * P.dz), sy(sgn * P.r[j])); }
+      ctx.lineTo(sx(P.z0 + COLS * P.dz), sy(0)); ctx.closePath(); ctx.fill(); ctx.stroke();
+    });
+    // The bar as it was.
+    ctx.setLineDash([5, 4]); ctx.strokeStyle = st.guessed ? "#b0bec5" : "#78909c";
+    ctx.strokeRect(sx(zb), sy(R), st.length * view.s, 2 * R * view.s); ctx.setLineDash([]);
+  }
+  /** One style's path, thinned to what the pixels can show: a point closer than 0.6 px to the
+   * last one drawn is skipped, so a million short moves draw as fast as the screen is wide. */
+  function drawPaths(A, B) {
+    const n = S.n, p = S.p, kind = S.kind, tool = S.tool;
+    const iNow = segAt(now);
+    const buckets = new Map();
+    const bucket = (key) => { let b = buckets.get(key); if (!b) { b = { path: new Path2D(), x: NaN, y: NaN, key }; buckets.set(key, b); } return b; };
+    const q = [0, 0, 0];
+    const W = cw + 50, Hh = ch + 50;
+    for (let i = 0; i < n; i++) {
+      const o = 6 * i, k = kind[i] & 7;
+      const x0 = sx(A[0] * p[o] + A[1] * p[o + 1] + A[2] * p[o + 2]), y0 = sy(B[0] * p[o] + B[1] * p[o + 1] + B[2] * p[o + 2]);
+      const x1 = sx(A[0] * p[o + 3] + A[1] * p[o + 4] + A[2] * p[o + 5]), y1 = sy(B[0] * p[o + 3] + B[1] * p[o + 4] + B[2] * p[o + 5]);
+      const arcy = k === 2 || k === 4;
+      if (!arcy && ((x0 < -50 && x1 < -50) || (x0 > W && x1 > W) || (y0 < -50 && y1 < -50) || (y0 > Hh && y1 > Hh))) continue;
+      const style = k === 0 ? 0 : kind[i] & 32 ? 1 : (k >= 3 ? 3 : 2) + 2 * (S.tools.indexOf(tool[i]) + 1);
+      const b = bucket(style * 2 + (i <= iNow ? 1 : 0));
+      if (!(Math.abs(x0 - b.x) < 0.6 && Math.abs(y0 - b.y) < 0.6)) { b.path.moveTo(x0, y0); b.x = x0; b.y = y0; }
+      if (arcy) {
+        const c = 4 * i;
+        const ax = PLANE_AXES[(kind[i] >> 3) & 3];
+        const r = Math.hypot(p[o + ax[0]] - S.arc[c + ax[0]], p[o + ax[1]] - S.arc[c + ax[1]]) * view.s;
+        const sweep = Math.abs(S.arc[c + 3]);
+        // Chords within a quarter pixel of the circle.
+        const m = r < 1 ? 1 : Math.min(720, Math.max(2, Math.ceil(sweep / (2 * Math.acos(Math.max(-1, 1 - 0.25 / r))))));
+        for (let s = 1; s <= m; s++) {
+          pointAt(i, s / m, q);
+          const x = sx(A[0] * q[0] + A[1] * q[1] + A[2] * q[2]), y = sy(B[0] * q[0] + B[1] * q[1] + B[2] * q[2]);
+          if (s === m || Math.abs(x - b.x) >= 0.6 || Math.abs(y - b.y) >= 0.6) { b.path.lineTo(x, y); b.x = x; b.y = y; }
+        }
+      } else if (Math.abs(x1 - b.x) >= 0.6 || Math.abs(y1 - b.y) >= 0.6) { b.path.lineTo(x1, y1); b.x = x1; b.y = y1; }
+    }
+    const order = [...buckets.values()].sort((a, b) => a.key - b.key);
+    for (const b of order) {
+      const style = b.key >> 1, done = b.key & 1;
+      ctx.globalAlpha = done ? 1 : 0.3;
+      // Dashes cost much in a software canvas: a programme with many rapids draws them thin and solid.
+      ctx.setLineDash(style === 0 && n < 50000 ? [4, 3] : []);
+      ctx.lineWidth = style === 0 ? 1 : style === 1 ? 2 : style % 2 ? 2.2 : 1.5;
+      ctx.strokeStyle = style === 0 ? "#9e9e9e" : style === 1 ? "#8e24aa" : toolColour(S.tools[(style >> 1) - 2] === undefined ? -1 : S.tools[(style >> 1) - 2]);
+      ctx.stroke(b.path);
+    }
+    ctx.globalAlpha = 1; ctx.setLineDash([]);
+  }
+  const SHAPES = ["circle", "square", "triangle", "diamond", "cross", "ring", "star", "bar"];
+  function marker(path, x, y, shape, r) {
+    if (shape === "circle" || shape === "ring") { path.moveTo(x + r, y); path.arc(x, y, r, 0, 2 * Math.PI); }
+    else if (shape === "square") path.rect(x - r, y - r, 2 * r, 2 * r);
+    else if (shape === "triangle") { path.moveTo(x, y - r); path.lineTo(x + r, y + r); path.lineTo(x - r, y + r); path.closePath(); }
+    else if (shape === "diamond") { path.moveTo(x, y - r); path.lineTo(x + r, y); path.lineTo(x, y + r); path.lineTo(x - r, y); path.closePath(); }
+    else { path.moveTo(x - r, y - r); path.lineTo(x + r, y + r); path.moveTo(x + r, y - r); path.lineTo(x - r, y + r); }
+  }
+  function drawHoles(A, B) {
+    if (!S.h) return;
+    // One marker per cell of its own size: 200,000 holes cost what the screen can show. Holes
+    // drilled by now are filled; those to come are open.
+    const r = Math.max(3, Math.min(7, 1.5 * view.s));
+    const cell = Math.max(3, r), gw = Math.ceil(cw / cell) + 1, seen = new Uint8Array(gw * (Math.ceil(ch / cell) + 2));
+    const iNow = segAt(now);
+    const paths = S.head.hole_kinds.map(() => [new Path2D(), new Path2D()]);
+    for (let j = 0; j < S.h; j++) {
+      const o = 3 * j;
+      const x = sx(A[0] * S.holeAt[o] + A[1] * S.holeAt[o + 1] + A[2] * S.holeAt[o + 2]), y = sy(B[0] * S.holeAt[o] + B[1] * S.holeAt[o + 1] + B[2] * S.holeAt[o + 2]);
+      if (x < -8 || y < -8 || x > cw + 8 || y > ch + 8) continue;
+      const c = Math.floor(Math.max(0, y) / cell) * gw + Math.floor(Math.max(0, x) / cell);
+      if (seen[c]) continue;
+      seen[c] = 1;
+      const k = S.holeKind[j];
+      marker(paths[k][S.holeSeg[j] <= iNow ? 1 : 0], x, y, SHAPES[k % SHAPES.length], r);
+    }
+    paths.forEach(([open, done], k) => {
+      const colour = HOLE_COLOURS[k % HOLE_COLOURS.length], filled = SHAPES[k % SHAPES.length] !== "cross";
+      ctx.lineWidth = 1.6; ctx.strokeStyle = colour;
+      if (filled) { ctx.fillStyle = "#ffffff"; ctx.fill(open); ctx.fillStyle = colour; ctx.fill(done); }
+      ctx.stroke(open); ctx.stroke(done);
+    });
+  }
+  let extentsCache = null;
+  function drawExtents(A, B) {
+    // The extents of the cutting moves (worked out once per run and view), dimensioned below
+    // and to the right of them.
+    if (!extentsCache || extentsCache.S !== S || extentsCache.kind !== view.kind) {
+      let u0 = Infinity, u1 = -Infinity, v0 = Infinity, v1 = -Infinity;
+      const p = S.p;
+      for (let i = 0; i < S.n; i++) {
+        if ((S.kind[i] & 7) === 0) continue;
+        const o = 6 * i;
+        for (const d of [0, 3]) {
+          const u = A[0] * p[o + d] + A[1] * p[o + d + 1] + A[2] * p[o + d + 2], v = B[0] * p[o + d] + B[1] * p[o + d + 1] + B[2] * p[o + d + 2];
+          if (u < u0) u0 = u; if (u > u1) u1 = u; if (v < v0) v0 = v; if (v > v1) v1 = v;
+        }
+      }
+      extentsCache = { S, kind: view.kind, u0, u1, v0, v1 };
+    }
+    const { u0, u1, v0, v1 } = extentsCache;
+    if (!isFinite(u0) || view.kind === "iso") return;
+    ctx.strokeStyle = "#00695c"; ctx.fillStyle = "#00695c"; ctx.lineWidth = 1; ctx.font = "11px system-ui,sans-serif";
+    const yb = Math.min(ch - 26, sy(lathe ? Math.min(v0, -(v1)) : v0) + 16), xr = Math.min(cw - 30, sx(u1) + 16);
+    const arrow = (x0, y0, x1, y1) => {
+      ctx.beginPath(); ctx.moveTo(x0, y0); ctx.lineTo(x1, y1); ctx.stroke();
+      const a = Math.atan2(y1 - y0, x1 - x0);
+      for (const [x, y, d] of [[x0, y0, a], [x1, y1, a + Math.PI]]) { ctx.beginPath(); ctx.moveTo(x, y); ctx.lineTo(x + 6 * Math.cos(d + 0.35), y + 6 * Math.sin(d + 0.35)); ctx.lineTo(x + 6 * Math.cos(d - 0.35), y + 6 * Math.sin(d - 0.35)); ctx.closePath(); ctx.fill(); }
+    };
+    if (u1 - u0 > 1e-6) {
+      arrow(sx(u0), yb, sx(u1), yb);
+      ctx.textAlign = "center"; ctx.textBaseline = "bottom";
+      ctx.fillText((u1 - u0).toFixed(3) + "  (" + V().names[0] + " " + numLabel(u0) + " … " + numLabel(u1) + ")", (sx(u0) + sx(u1)) / 2, yb - 2);
+    }
+    if (v1 - v0 > 1e-6) {
+      arrow(xr, sy(v0), xr, sy(v1));
+      ctx.save(); ctx.translate(xr + 4, (sy(v0) + sy(v1)) / 2); ctx.rotate(-Math.PI / 2); ctx.textAlign = "center"; ctx.textBaseline = "top";
+      ctx.fillText(lathe ? "Ø " + numLabel(2 * v0) + " … Ø " + numLabel(2 * v1) : (v1 - v0).toFixed(3) + "  (" + V().names[1] + " " + numLabel(v0) + " … " + numLabel(v1) + ")", 0, 0);
+      ctx.restore();
+    }
+    ctx.textBaseline = "middle";
+  }
+  function drawSelection(A, B) {
+    if (!selLine) return;
+    const q = [0, 0, 0];
+    ctx.strokeStyle = "rgba(255,179,0,0.9)"; ctx.lineWidth = 5; ctx.lineCap = "round";
+    ctx.beginPath();
+    for (let i = 0; i < S.n; i++) {
+      if (S.line[i] !== selLine) continue;
+      const m = (S.kind[i] & 7) === 2 || (S.kind[i] & 7) === 4 ? 48 : 1;
+      for (let s = 0; s <= m; s++) { pointAt(i, s / m, q); const x = sx(A[0] * q[0] + A[1] * q[1] + A[2] * q[2]), y = sy(B[0] * q[0] + B[1] * q[1] + B[2] * q[2]); if (s) ctx.lineTo(x, y); else ctx.moveTo(x, y); }
+    }
+    ctx.stroke(); ctx.lineCap = "butt";
+  }
+  function diagPoint(d, out) {
+    if (!S.n) { out[0] = out[1] = out[2] = 0; return out; }
+    return d.seg > 0 ? pointAt(d.seg - 1, 1, out) : pointAt(0, 0, out);
+  }
+  function drawDiagnostics(A, B) {
+    const q = [0, 0, 0];
+    S.head.diagnostics.slice(0, 200).forEach((d) => {
+      diagPoint(d, q);
+      const x = sx(A[0] * q[0] + A[1] * q[1] + A[2] * q[2]), y = sy(B[0] * q[0] + B[1] * q[1] + B[2] * q[2]);
+      ctx.fillStyle = d.sev === "alarm" ? "#c62828" : "#f9a825";
+      ctx.beginPath(); ctx.moveTo(x, y - 16); ctx.lineTo(x + 9, y - 1); ctx.lineTo(x - 9, y - 1); ctx.closePath(); ctx.fill();
+      ctx.fillStyle = "#fff"; ctx.font = "bold 11px system-ui,sans-serif"; ctx.textAlign = "center"; ctx.textBaseline = "middle"; ctx.fillText("!", x, y - 6);
+    });
+  }
+  function drawTool(A, B) {
+    const q = posAt(now);
+    const x = sx(A[0] * q[0] + A[1] * q[1] + A[2] * q[2]), y = sy(B[0] * q[0] + B[1] * q[1] + B[2] * q[2]);
+    ctx.fillStyle = "#ffb300"; ctx.strokeStyle = "#000"; ctx.lineWidth = 1.5;
+    ctx.beginPath(); ctx.arc(x, y, 6, 0, 2 * Math.PI); ctx.fill(); ctx.stroke();
+    ctx.beginPath(); ctx.moveTo(x - 10, y); ctx.lineTo(x + 10, y); ctx.moveTo(x, y - 10); ctx.lineTo(x, y + 10); ctx.stroke();
+  }
+  function legend() {
+    const L = $("legend");
+    L.textContent = "";
+    const item = (colour, text, dashed) => { const s = el("span", { class: "lg" }); const sw = el("span", { class: "sw" }); sw.style.borderTopColor = colour; if (dashed) sw.style.borderTopStyle = "dashed"; s.appendChild(sw); s.appendChild(document.createTextNode(text)); L.appendChild(s); };
+    item("#9e9e9e", t("rapid"), true);
+    (S.tools.length ? S.tools : [0]).forEach((tool) => item(toolColour(tool), "T" + String(tool).padStart(2, "0")));
+    if (S.head.threads.length) item("#8e24aa", t("pullout"));
+    S.head.hole_kinds.forEach((k, i) => item(HOLE_COLOURS[i % HOLE_COLOURS.length], k + " " + t("hole")));
+  }
+
+  // ---- the player ----------------------------------------------------------------------------
+  function segAt(time) {
+    // The first motion that ends at or after `time` (the one under way), or the last one.
+    if (!S || !S.n) return -1;
+    let lo = 0, hi = S.n - 1;
+    while (lo < hi) { const m = (lo + hi) >> 1; if (S.t[m] < time - 1e-9) lo = m + 1; else hi = m; }
+    return time <= 0 && S.t[0] > 0 ? (S.t0[0] < 1e-12 ? 0 : -1) : lo;
+  }
+  function posAt(time) {
+    const out = [0, 0, 0];
+    if (!S || !S.n) return out;
+    const i = segAt(time);
+    if (i < 0) return pointAt(0, 0, out);
+    const d = S.t[i] - S.t0[i];
+    const f = d > 0 ? Math.min(1, Math.max(0, (time - S.t0[i]) / d)) : 1;
+    return pointAt(i, f, out);
+  }
+  function setTime(time) {
+    if (!S) return;
+    const total = Math.max(S.head.total_s, 1e-9);
+    now = Math.max(0, Math.min(total, time));
+    $("slider").value = String(Math.round(now / total * 10000));
+    const i = segAt(now);
+    const line = i >= 0 ? S.line[i] : 0;
+    if (line !== runLine) { runLine = line; if (runLine) showLine(runLine, false); else paintEditor(); }
+    updateState(i);
+    draw();
+  }
+  function updateState(i) {
+    const q = posAt(now);
+    let rpm = 0;
+    for (const e of S.head.events) { if (e.t > now + 1e-9) break; if (e.k === "spindle") rpm = e.rpm; }
+    const k = i >= 0 ? S.kind[i] & 7 : -1;
+    const th = i >= 0 ? S.threadOf.get(i) : null;
+    const pos = lathe ? "X " + (2 * q[0]).toFixed(3) + " (Ø)  Z " + q[2].toFixed(3) : "X " + q[0].toFixed(3) + "  Y " + q[1].toFixed(3) + "  Z " + q[2].toFixed(3);
+    const lines = [
+      t("state_t") + " " + hms(now) + " " + t("of") + " " + hms(S.head.total_s) + "   " + t("state_line") + " " + (runLine || "-") + "   " + (k >= 0 ? t("kinds")[k] : "") + (i >= 0 ? "   T" + String(S.tool[i]).padStart(2, "0") : ""),
+      pos,
+      t("spindle") + " " + (th ? th[2] : rpm) + " rpm" + (th ? "   " + t("lead") + " " + S.rate[i] + " mm   " + t("angle") + " " + (((th[1] + 360 * Math.abs(th[2]) * Math.max(0, now - S.t0[i]) / 60) % 360)).toFixed(1) + "°" : k === 1 || k === 2 ? "   " + t("feedrate") + " " + S.rate[i] + " mm/min" : ""),
+    ];
+    $("state").textContent = lines.join("\n");
+    $("clock").textContent = hms(now);
+  }
+  function play() {
+    if (timer) { cancelAnimationFrame(timer); timer = 0; $("play").textContent = t("play"); return; }
+    if (!S) return;
+    if (now >= S.head.total_s) setTime(0);
+    $("play").textContent = t("pause");
+    let last = performance.now();
+    const tick = (ts) => {
+      const dt = (ts - last) / 1000; last = ts;
+      setTime(now + dt * +$("speed").value);
+      if (now >= S.head.total_s) { timer = 0; $("play").textContent = t("play"); return; }
+      timer = requestAnimationFrame(tick);
+    };
+    timer = requestAnimationFrame(tick);
+  }
+  function stepBlock(dir) {
+    if (!S) return;
+    const E = S.blockEnds;
+    if (dir > 0) { for (let k = 0; k < E.length; k++) if (E[k] > now + 1e-9) return setTime(E[k]); setTime(S.head.total_s); }
+    else { for (let k = E.length - 1; k >= 0; k--) if (E[k] < now - 1e-9) return setTime(E[k]); setTime(0); }
+  }
+  function nextTool() {
+    const e = S && S.head.events.find((x) => x.k === "tool" && x.t > now + 1e-9);
+    setTime(e ? e.t : S ? S.head.total_s : 0);
+  }
+  function toCursor() {
+    if (!S) return;
+    const n = caretLine();
+    for (let i = 0; i < S.n; i++) if (S.line[i] === n && S.t[i] > now + 1e-9) return setTime(S.t[i]);
+    for (let i = 0; i < S.n; i++) if (S.line[i] === n) return setTime(S.t[i]);
+  }
+  function select(line, moveCaret) { selLine = line; showLine(line, moveCaret); draw(); }
+  $("play").addEventListener("click", play);
+  $("next").addEventListener("click", () => stepBlock(1));
+  $("prev").addEventListener("click", () => stepBlock(-1));
+  $("next-tool").addEventListener("click", nextTool);
+  $("to-cursor").addEventListener("click", toCursor);
+  $("slider").addEventListener("input", (e) => { if (S) setTime(e.target.value / 10000 * S.head.total_s); });
+
+  // ---- the operator panel: each press runs the programme again ---------------------------------
+  const rerun = () => { run(); showPresses(); };
+  function showPresses() {
+    const list = presses.holds.map((x) => t("holdat", { t: x.toFixed(2) }));
+    if (presses.reset !== null) list.push(t("resetat", { t: presses.reset.toFixed(2) }));
+    $("presses").textContent = list.length ? t("presses", { list: list.join(", ") }) : "";
+  }
+  $("hold").addEventListener("click", () => { presses.holds.push(+now.toFixed(3)); presses.holds.sort((a, b) => a - b); rerun(); });
+  $("reset").addEventListener("click", () => { presses.reset = +now.toFixed(3); rerun(); });
+  $("clear-buttons").addEventListener("click", () => { presses.holds = []; presses.reset = null; rerun(); });
+  ["single", "dry", "bdel", "opt", "feed-ov", "rapid-ov", "machine"].forEach((id) => $(id).addEventListener("change", rerun));
+  $("params").addEventListener("change", rerun);
+  $("stock").addEventListener("change", () => { partCache = null; fitted && fit(); draw(); });
+  $("run").addEventListener("click", run);
+  $("view").addEventListener("change", () => { view.kind = $("view").value; fit(); draw(); });
+  $("lang").addEventListener("click", () => { lang = lang === "zh" ? "en" : "zh"; applyWords(); if (S) { showProblems(); showTime(); legend(); setTime(now); } showPresses(); });
+
+  // ---- zoom, pan, pick ------------------------------------------------------------------------
+  function zoom(k, cx, cy) {
+    const x = cx === undefined ? cw / 2 : cx, y = cy === undefined ? ch / 2 : cy;
+    const u = view.ou + x / view.s, v = view.ov + (ch - y) / view.s;
+    view.s *= k;
+    view.ou = u - x / view.s; view.ov = v - (ch - y) / view.s;
+    fitted = false;
+    draw();
+  }
+  canvas.addEventListener("wheel", (e) => { e.preventDefault(); const r = canvas.getBoundingClientRect(); zoom(e.deltaY < 0 ? 1.25 : 0.8, e.clientX - r.left, e.clientY - r.top); }, { passive: false });
+  let drag = null;
+  canvas.addEventListener("pointerdown", (e) => { drag = { x: e.clientX, y: e.clientY, ou: view.ou, ov: view.ov, moved: false }; canvas.setPointerCapture(e.pointerId); });
+  canvas.addEventListener("pointermove", (e) => {
+    if (drag) {
+      const dx = e.clientX - drag.x, dy = e.clientY - drag.y;
+      if (Math.abs(dx) + Math.abs(dy) > 3) drag.moved = true;
+      if (drag.moved) { view.ou = drag.ou - dx / view.s; view.ov = drag.ov + dy / view.s; fitted = false; draw(); }
+      return;
+    }
+    hover(e);
+  });
+  canvas.addEventListener("pointerup", (e) => {
+    if (drag && !drag.moved) { const r = canvas.getBoundingClientRect(); const i = pick(e.clientX - r.left, e.clientY - r.top); if (i >= 0) select(S.line[i], true); }
+    drag = null;
+  });
+  canvas.addEventListener("pointerleave", () => { $("tip").hidden = true; });
+  /** The motion nearest a point of the plot (within 8 px), or -1. */
+  function pick(x, y) {
+    if (!S) return -1;
+    const pv = V(), A = pv.pu, B = pv.pv, p = S.p, q = [0, 0, 0];
+    let best = -1, bd = 64;
+    const dist2 = (ax, ay, bx, by) => { const dx = bx - ax, dy = by - ay, l = dx * dx + dy * dy; const f = l ? Math.max(0, Math.min(1, ((x - ax) * dx + (y - ay) * dy) / l)) : 0; const ex = ax + f * dx - x, ey = ay + f * dy - y; return ex * ex + ey * ey; };
+    for (let i = 0; i < S.n; i++) {
+      const o = 6 * i, k = S.kind[i] & 7;
+      let ax = sx(A[0] * p[o] + A[1] * p[o + 1] + A[2] * p[o + 2]), ay = sy(B[0] * p[o] + B[1] * p[o + 1] + B[2] * p[o + 2]);
+      const m = k === 2 || k === 4 ? 32 : 1;
+      for (let s = 1; s <= m; s++) {
+        let bx, by;
+        if (m === 1) { bx = sx(A[0] * p[o + 3] + A[1] * p[o + 4] + A[2] * p[o + 5]); by = sy(B[0] * p[o + 3] + B[1] * p[o + 4] + B[2] * p[o + 5]); }
+        else { pointAt(i, s / m, q); bx = sx(A[0] * q[0] + A[1] * q[1] + A[2] * q[2]); by = sy(B[0] * q[0] + B[1] * q[1] + B[2] * q[2]); }
+        if (!((ax < x - 8 && bx < x - 8) || (ax > x + 8 && bx > x + 8) || (ay < y - 8 && by < y - 8) || (ay > y + 8 && by > y + 8))) {
+          const d = dist2(ax, ay, bx, by);
+          // Cutting moves win over rapids at the same distance.
+          if (d < bd || (d <= bd && k !== 0)) { bd = d; best = i; }
+        }
+        ax = bx; ay = by;
+      }
+    }
+    return best;
+  }
+  let hoverPending = false;
+  function hover(e) {
+    if (hoverPending || !S) return;
+    hoverPending = true;
+    requestAnimationFrame(() => {
+      hoverPending = false;
+      const r = canvas.getBoundingClientRect(), x = e.clientX - r.left, y = e.clientY - r.top;
+      const i = S.n < 300000 ? pick(x, y) : -1;
+      const tip = $("tip");
+      if (i < 0) { tip.hidden = true; return; }
+      const o = 6 * i, k = S.kind[i] & 7;
+      const end = lathe ? "X " + (2 * S.p[o + 3]).toFixed(3) + " Z " + S.p[o + 5].toFixed(3) : "X " + S.p[o + 3].toFixed(3) + " Y " + S.p[o + 4].toFixed(3) + " Z " + S.p[o + 5].toFixed(3);
+      tip.textContent = t("line") + " " + S.line[i] + ": " + t("kinds")[k] + (S.kind[i] & 32 ? " (" + t("pullout") + ")" : "") + "  T" + String(S.tool[i]).padStart(2, "0") + "\n" + end +
+        (k === 1 || k === 2 ? "\nF " + S.rate[i] + " mm/min" : k >= 3 ? "\n" + t("lead") + " " + S.rate[i] + " mm" : "") + "\n" + hms(S.t0[i]) + " – " + hms(S.t[i]);
+      tip.style.left = Math.min(x + 14, cw - 200) + "px"; tip.style.top = y + 14 + "px"; tip.hidden = false;
+    });
+  }
+  $("fit").addEventListener("click", () => { fit(); draw(); });
+  $("zoom-in").addEventListener("click", () => zoom(1.25));
+  $("zoom-out").addEventListener("click", () => zoom(0.8));
+  window.addEventListener("resize", () => { editorHeight = 0; if (fitted) fit(); draw(); paintEditor(); });
+  // Keys, when not typing: space play, arrows block by block, T next tool, F fit, + and - zoom.
+  document.addEventListener("keydown", (e) => {
+    const tag = (e.target && e.target.tagName) || "";
+    if (tag === "TEXTAREA" || tag === "INPUT" || tag === "SELECT") return;
+    const k = e.key;
+    if (k === " ") { e.preventDefault(); play(); }
+    else if (k === "ArrowRight") stepBlock(1);
+    else if (k === "ArrowLeft") stepBlock(-1);
+    else if (k === "Home") setTime(0);
+    else if (k === "End" && S) setTime(S.head.total_s);
+    else if (k === "t" || k === "T") nextTool();
+    else if (k === "f" || k === "F") { fit(); draw(); }
+    else if (k === "+" || k === "=") zoom(1.25);
+    else if (k === "-") zoom(0.8);
+  });
+
+  // ---- files: open and drop; GBK text decoded as the GSK controllers write it ----------------
+  function decode(bytes) {
+    try { return new TextDecoder("utf-8", { fatal: true }).decode(bytes); } catch (_) { return new TextDecoder("gb18030").decode(bytes); }
+  }
+  function load(file) {
+    file.arrayBuffer().then((b) => {
+      setProgramme(decode(new Uint8Array(b)).replace(/^\uFEFF/, ""));
+      fileName = file.name;
+      $("file-name").textContent = fileName;
+      fresh = true; fitted = true; selLine = 0;
+      run();
+    });
+  }
+  $("file").addEventListener("change", (e) => { if (e.target.files[0]) load(e.target.files[0]); });
+  document.addEventListener("dragover", (e) => e.preventDefault());
+  document.addEventListener("drop", (e) => { e.preventDefault(); const f = e.dataTransfer && e.dataTransfer.files[0]; if (f) load(f); });
+
+  // ---- the thread from the stock simulation (ncsight report --stock) ---------------------------
+  function showThread() {
+    if (!JOB.sim && !JOB.sim_error) return;
+    $("thread-box").hidden = false;
+    const th = $("thread");
+    th.appendChild(el("div", {}, t("threadtitle")));
+    if (!JOB.sim) { th.appendChild(el("p", { class: "notice" }, "The thread could not be simulated on the stock: " + JOB.sim_error)); return; }
+    const m = JOB.sim, f = (v) => (v === null || v === undefined ? "-" : Number(v).toFixed(3));
+    const tb = el("table");
+    [["major diameter", f(m.major_diameter_mm) + " mm"], ["minor diameter", f(m.minor_diameter_mm) + " mm"], ["depth", f(m.depth_mm) + " mm"], ["pitch", f(m.pitch_mm) + " mm"], ["lead", f(m.lead_mm) + " mm"],
+     ["starts", m.starts === null ? "-" : String(m.starts)], ["flank angles", m.flank_angles_deg ? m.flank_angles_deg[0].toFixed(1) + " + " + m.flank_angles_deg[1].toFixed(1) + " deg" : "-"],
+     ["full-depth length", f(m.full_depth_length_mm) + " mm"], ["run-out length", f(m.runout_length_mm) + " mm"]].forEach((r) => { const tr = el("tr"); tr.appendChild(el("th", {}, r[0])); tr.appendChild(el("td", {}, r[1])); tb.appendChild(tr); });
+    th.appendChild(tb);
+    if (JOB.unrolled) th.appendChild(el("img", { src: JOB.unrolled, alt: "unrolled thread surface" }));
+    const ul = el("ul");
+    (m.findings || []).forEach((x) => ul.appendChild(el("li", {}, x.kind + (x.line ? " (line " + x.line + ")" : "") + ": " + x.message)));
+    if (!(m.findings || []).length) ul.appendChild(el("li", {}, "no findings"));
+    th.appendChild(ul);
+  }
+
+  // ---- start ------------------------------------------------------------------------------------
+  applyWords();
+  paintEditor(); draw(); showThread(); showPresses();
+  const ready = loadEngine().then(() => { if (programmeText().trim()) run(); else { banner("ok", t("empty")); } }).catch((e) => banner("usage", t("usage", { msg: String(e.message || e) })));
+  window.ncsightApp = {
+    ready,
+    get scene() { return S && { head: S.head, n: S.n, h: S.h }; },
+    get now() { return now; },
+    get runLine() { return runLine; },
+    get selLine() { return selLine; },
+    get drawMs() { return lastDrawMs; },
+    get drawParts() { return Object.assign({}, drawParts); },
+    get runMs() { return lastRunMs; },
+    passes: () => (S ? S.head.passes : 0),
+    setTime, stepBlock, nextTool, select, zoom, fit: () => { fit(); draw(); }, run, pick,
+    part: () => { const st = stock(); return st && Array.from(part(st).r.filter((_, j) => j % 100 === 0)); },
+    toScreen: (x, y, z) => { const pv = V(); return [sx(pv.pu[0] * x + pv.pu[1] * y + pv.pu[2] * z), sy(pv.pv[0] * x + pv.pv[1] * y + pv.pv[2] * z)]; },
+  };
+})();
