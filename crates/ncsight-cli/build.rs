@@ -12,19 +12,24 @@ use std::process::Command;
 fn main() {
     let manifest = PathBuf::from(std::env::var("CARGO_MANIFEST_DIR").unwrap());
     let root = manifest.join("../..");
-    for dir in ["crates/ncsight/src", "crates/ncsight-io/src", "crates/ncsight-wasm/src", "crates/ncsight-wasm/Cargo.toml", "crates/ncsight/Cargo.toml", "crates/ncsight-io/Cargo.toml"] {
+    for dir in ["crates/ncsight/src", "crates/ncsight-io/src", "crates/ncsight-wasm/src", "crates/ncsight-wasm/Cargo.toml", "crates/ncsight/Cargo.toml", "crates/ncsight-io/Cargo.toml", "Cargo.toml", "Cargo.lock"] {
         println!("cargo:rerun-if-changed={}", root.join(dir).display());
     }
     println!("cargo:rerun-if-env-changed=NCSIGHT_ENGINE_WASM");
     let out = PathBuf::from(std::env::var("OUT_DIR").unwrap()).join("engine.wasm");
     // A prebuilt engine can be given (a packager's build); otherwise it is built here.
     let built = match std::env::var_os("NCSIGHT_ENGINE_WASM") {
-        Some(path) => std::fs::copy(&path, &out).map(|_| ()).map_err(|e| format!("NCSIGHT_ENGINE_WASM={}: {e}", PathBuf::from(&path).display())),
+        Some(path) => {
+            println!("cargo:rerun-if-changed={}", PathBuf::from(&path).display());
+            std::fs::copy(&path, &out).map(|_| ()).map_err(|e| format!("NCSIGHT_ENGINE_WASM={}: {e}", PathBuf::from(&path).display()))
+        }
         None => build(&root, &out),
     };
     if let Err(why) = built {
         println!("cargo:warning=ncsight's page engine was not built ({why}); `ncsight app` and `ncsight report` will say so");
         std::fs::write(&out, b"").unwrap();
+        // Try again on the next build (the target may have been added since).
+        println!("cargo:rerun-if-changed={}", root.join("target/engine/.try-again").display());
     }
 }
 
@@ -42,17 +47,21 @@ fn ensure_target() {
 
 fn build(root: &std::path::Path, out: &std::path::Path) -> Result<(), String> {
     ensure_target();
-    let target_dir = std::env::var_os("CARGO_TARGET_DIR").map(PathBuf::from).unwrap_or_else(|| root.join("target")).join("engine");
+    // A relative CARGO_TARGET_DIR is the workspace root's (where cargo was run from, normally).
+    let target_dir = std::env::var_os("CARGO_TARGET_DIR").map(PathBuf::from).map(|d| if d.is_absolute() { d } else { root.join(d) }).unwrap_or_else(|| root.join("target")).join("engine");
     let cargo = std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into());
     let mut cmd = Command::new(cargo);
     cmd.current_dir(root)
         .args(["build", "--release", "--quiet", "-p", "ncsight-wasm", "--target", "wasm32-unknown-unknown", "--target-dir"])
         .arg(&target_dir)
         .env("CARGO_PROFILE_RELEASE_DEBUG", "0")
-        .env("CARGO_PROFILE_RELEASE_STRIP", "true");
+        .env("CARGO_PROFILE_RELEASE_STRIP", "true")
+        // The page runs a million-line programme in the engine: whole-programme optimisation.
+        .env("CARGO_PROFILE_RELEASE_LTO", "fat")
+        .env("CARGO_PROFILE_RELEASE_CODEGEN_UNITS", "1");
     // What the outer build set for its own target must not reach this one (a fuzzing build's
     // sanitizer flags, clippy's wrapper, the host's target).
-    for var in ["RUSTFLAGS", "CARGO_ENCODED_RUSTFLAGS", "RUSTC_WRAPPER", "RUSTC_WORKSPACE_WRAPPER", "CARGO_BUILD_TARGET", "CARGO_TARGET_DIR", "CARGO_BUILD_RUSTFLAGS"] {
+    for var in ["RUSTFLAGS", "CARGO_ENCODED_RUSTFLAGS", "RUSTC_WRAPPER", "RUSTC_WORKSPACE_WRAPPER", "CARGO_BUILD_TARGET", "CARGO_TARGET_DIR", "CARGO_BUILD_RUSTFLAGS", "CARGO_BUILD_RUSTC_WRAPPER", "CARGO_BUILD_RUSTC_WORKSPACE_WRAPPER"] {
         cmd.env_remove(var);
     }
     let status = cmd.status().map_err(|e| format!("cannot run cargo: {e}"))?;

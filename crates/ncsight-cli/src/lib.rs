@@ -250,6 +250,10 @@ enum Command {
         /// Stock as DIAxLEN for the thread-form view.
         #[arg(long)]
         stock: Option<String>,
+        /// The thread it should make (M24x2, or major=,minor=,pitch=, as `simulate` takes it):
+        /// drawn over the measured section, and a deviation is a finding.
+        #[arg(long)]
+        expect: Option<String>,
         /// The HTML file to write (standard output if omitted).
         #[arg(short = 'o', long = "output")]
         output: Option<String>,
@@ -319,8 +323,8 @@ pub fn main_with(args: impl IntoIterator<Item = std::ffi::OsString>, out: &mut d
         Command::Simulate { file, machine, stock, expect, format, image, resolution } => {
             simulate(&file, &machine, machine.setup.as_deref(), stock.as_deref(), expect.as_deref(), &format, image.as_deref(), resolution.as_deref(), out, err)
         }
-        Command::Report { file, machine, operator, stock, output } => {
-            report(&file, &machine, &operator, machine.setup.as_deref(), stock.as_deref(), output.as_deref(), out, err)
+        Command::Report { file, machine, operator, stock, expect, output } => {
+            report(&file, &machine, &operator, machine.setup.as_deref(), stock.as_deref(), expect.as_deref(), output.as_deref(), out, err)
         }
         Command::App { output } => app(output.as_deref(), out),
         Command::Repair { machine, start, end, lead, tpi, rpm, measured, j, k } => {
@@ -671,6 +675,7 @@ fn report(
     operator: &OperatorArgs,
     setup_file: Option<&str>,
     stock: Option<&str>,
+    expect: Option<&str>,
     output: Option<&str>,
     out: &mut dyn Write,
     err: &mut dyn Write,
@@ -683,6 +688,7 @@ fn report(
     let file_out = output.map(|path| output::LazyFile::new(path, &[file], 1 << 16)).transpose().map_err(usage)?;
     let opts = operator.options()?;
     let job = job_setup(setup_file, stock)?;
+    let sim_options = simulate::options(None, expect).map_err(usage)?;
     let source = if file == "-" {
         let mut v = Vec::new();
         io::stdin().read_to_end(&mut v)?;
@@ -718,7 +724,7 @@ fn report(
         // A simulation of part of the programme would measure the wrong thing.
         (None, Some(format!("the programme makes {all_records} records, more than the report simulates: use ncsight simulate for the stock")))
     } else if lathe && records.iter().any(|r| r.op.is_thread()) {
-        match ncsight::stock::measure::simulate(&records, &job, &ncsight::stock::measure::SimOptions::default()) {
+        match ncsight::stock::measure::simulate(&records, &job, &sim_options) {
             Ok(s) => (Some(s), None),
             Err(e) => (None, Some(e)),
         }
@@ -745,6 +751,7 @@ fn report(
         switches,
         extra_options: extra,
         stock: job.stock,
+        expect: sim_options.expect.as_ref(),
         library: library_texts(&m.subprogram_dirs, &decoding),
         settings,
         sim: sim.as_ref(),
@@ -761,16 +768,24 @@ fn report(
 }
 
 /// The files of the `--subprogram-dir` directories, for the page to look for called
-/// programmes in (each as the editor would show it).
+/// programmes in (each by its file name, as the editor would show it). Files over 8 MB are left
+/// out (not programme files; the page says so if one is called).
 fn library_texts(dirs: &[std::path::PathBuf], decoding: &diag::Decoding) -> Vec<(String, String)> {
-    let mut files: Vec<std::path::PathBuf> = dirs.iter().filter_map(|d| std::fs::read_dir(d).ok()).flatten().filter_map(|e| e.ok().map(|e| e.path())).filter(|p| p.is_file()).collect();
+    const MAX_LIBRARY_FILE_BYTES: u64 = 8 << 20;
+    let mut files: Vec<std::path::PathBuf> = dirs
+        .iter()
+        .filter_map(|d| std::fs::read_dir(d).ok())
+        .flatten()
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .filter(|p| p.metadata().map(|m| m.is_file() && m.len() <= MAX_LIBRARY_FILE_BYTES).unwrap_or(false))
+        .collect();
     files.sort();
     files
         .into_iter()
         .filter_map(|p| {
             let bytes = std::fs::read(&p).ok()?;
             let text: Vec<String> = bytes.split(|&b| b == b'\n').map(|l| decoding.decode(l.strip_suffix(b"\r").unwrap_or(l))).collect();
-            Some((p.display().to_string(), text.join("\n")))
+            Some((p.file_name()?.to_string_lossy().into_owned(), text.join("\n")))
         })
         .collect()
 }

@@ -42,6 +42,8 @@ pub struct Preload<'a> {
     /// Lines of the operator settings the page passes on unchanged (`main=`, `var=`, ...).
     pub extra_options: Vec<String>,
     pub stock: Option<ncsight::setup::Bar>,
+    /// The thread it should make (`--expect`), drawn over the measured section.
+    pub expect: Option<&'a ncsight::stock::standard::Expected>,
     /// Files where called programmes are looked for (name, text).
     pub library: Vec<(String, String)>,
     /// The run's options and switches, described.
@@ -97,11 +99,20 @@ fn job_json(p: Option<&Preload>) -> String {
     if let Some(b) = p.stock {
         let _ = write!(s, ",\"stock\":{{\"diameter_mm\":{},\"length_mm\":{},\"front_z_mm\":{}}}", num(b.diameter_mm, 4), num(b.length_mm, 4), num(b.front_z_mm, 4));
     }
+    if let Some(e) = p.expect {
+        let _ = write!(s, ",\"expect\":{{\"name\":{},\"major_mm\":{},\"minor_mm\":{},\"pitch_mm\":{}}}", json_str(&e.name), num(e.major_mm, 4), num(e.minor_mm, 4), num(e.pitch_mm, 4));
+    }
     let lib: Vec<String> = p.library.iter().map(|(n, t)| format!("[{},{}]", json_str(n), json_str(t))).collect();
     let _ = write!(s, ",\"library\":[{}]", lib.join(","));
     match p.sim {
         Some(sim) => {
             let _ = write!(s, ",\"sim\":{}", crate::simulate::json(&sim.measurement).trim_end());
+            // The axial section at angle 0, X as a diameter, at most 4000 points.
+            let g = sim.stock.grid;
+            let row = sim.stock.row(0);
+            let step = g.nz.div_ceil(4000).max(1);
+            let section: Vec<String> = (0..g.nz).step_by(step).map(|i| format!("[{},{}]", num(g.z(i), 4), num(2.0 * row[i] as f64, 4))).collect();
+            let _ = write!(s, ",\"section\":[{}]", section.join(","));
             let mut png = Vec::new();
             if crate::simulate::image(sim, &mut png).is_ok() {
                 let _ = write!(s, ",\"unrolled\":\"data:image/png;base64,{}\"", base64(&png));

@@ -13,6 +13,10 @@
 //!   command line writes for `run --format jsonl` (records and diagnostics) or `check --format
 //!   jsonl`; free it with `ncsight_free(ptr, 4 + length)`. A usage mistake (an unknown machine),
 //!   a bad parameter or setup is one JSONL line `{"kind":"usage","message":...}`.
+//! - `ncsight_scene(text, machine, params, setup, options, library)` (each a pointer and a length)
+//!   runs the text for the page and answers its scene (`ncsight_io::format::scene`, packed
+//!   columns the page reads into typed arrays); `ncsight_check` with the same arguments answers
+//!   every diagnostic of a check as JSON. Both answer `NCSE` and a message for a usage mistake.
 //!
 //! A page has no threads and no files: the programme runs from memory, on the calling thread,
 //! through the core's pull iterator (`ncsight::events`), and the JSONL comes from the same
@@ -40,18 +44,35 @@ pub fn run_jsonl(text: &[u8], machine: &str, params: &str, setup: &str, mode: Mo
     String::from_utf8_lossy(&out).into_owned()
 }
 
-/// The scene of `text` on `machine` (see `ncsight_io::format::scene`): a run with the parameter
-/// overrides `params`, the setup `setup` (TOML) and the operator's settings `options`
-/// (`key=value` lines, `Job::set_operator_text`), and the files `library` where called
-/// programmes the text lacks are looked for: each a u32 length and the file's name, a u32 length
-/// and its text. A usage mistake is `NCSE` and its message.
-pub fn scene(text: &[u8], machine: &str, params: &str, setup: &str, options: &str, library: &[u8]) -> Vec<u8> {
+/// The job of the page's arguments: the parameter overrides `params`, the setup `setup` (TOML),
+/// the operator's settings `options` (`key=value` lines, `Job::set_operator_text`), and the files
+/// `library` where called programmes the text lacks are looked for: each a u32 length and the
+/// file's name, a u32 length and its text.
+fn page_job<'l>(machine: &str, params: &str, setup: &str, options: &str, library: &'l [u8]) -> Result<(Job, Vec<(String, &'l [u8])>), ncsight_io::JobError> {
     let mut job = Job { params: params.lines().map(str::trim).filter(|l| !l.is_empty()).map(String::from).collect(), ..Job::on(machine) };
-    let built = (if setup.trim().is_empty() { Ok(()) } else { job.set_setup_text(setup, "setup") })
-        .and_then(|()| job.set_operator_text(options))
-        .and_then(|()| files(library).ok_or_else(|| ncsight_io::JobError::Usage("the library of called programmes is cut short".into())))
-        .and_then(|files| format::scene::scene(&job, text, files));
-    built.unwrap_or_else(|e| [b"NCSE".as_slice(), e.to_string().as_bytes()].concat())
+    if !setup.trim().is_empty() {
+        job.set_setup_text(setup, "setup")?;
+    }
+    job.set_operator_text(options)?;
+    let files = files(library).ok_or_else(|| ncsight_io::JobError::Usage("the library of called programmes is cut short".into()))?;
+    Ok((job, files))
+}
+
+/// A usage mistake as the page reads it: `NCSE` and the message.
+fn usage_answer(e: ncsight_io::JobError) -> Vec<u8> {
+    [b"NCSE".as_slice(), e.to_string().as_bytes()].concat()
+}
+
+/// The scene of `text` on `machine` (see `ncsight_io::format::scene`), a run with the job of
+/// [`page_job`]. A usage mistake is `NCSE` and its message.
+pub fn scene(text: &[u8], machine: &str, params: &str, setup: &str, options: &str, library: &[u8]) -> Vec<u8> {
+    page_job(machine, params, setup, options, library).and_then(|(job, files)| format::scene::scene(&job, text, files)).unwrap_or_else(usage_answer)
+}
+
+/// Every diagnostic of a check of `text` (see `ncsight_io::format::scene::check`), with the same
+/// arguments as [`scene`], as JSON; a usage mistake is `NCSE` and its message.
+pub fn check(text: &[u8], machine: &str, params: &str, setup: &str, options: &str, library: &[u8]) -> Vec<u8> {
+    page_job(machine, params, setup, options, library).and_then(|(job, files)| format::scene::check(&job, text, files)).map(String::into_bytes).unwrap_or_else(usage_answer)
 }
 
 /// The files of a library buffer (see [`scene`]); None when it is cut short.
@@ -110,6 +131,17 @@ pub unsafe extern "C" fn ncsight_run(text: *const u8, text_len: usize, machine: 
     answer(jsonl.as_bytes())
 }
 
+/// The six buffers of [`ncsight_scene`] and [`ncsight_check`], as [`scene`] takes them.
+///
+/// # Safety
+/// Each pointer must point to its length's readable bytes.
+unsafe fn page_call(b: [(*const u8, usize); 6], f: fn(&[u8], &str, &str, &str, &str, &[u8]) -> Vec<u8>) -> *mut u8 {
+    // SAFETY: the caller guarantees the six buffers.
+    let [text, machine, params, setup, options, library] = b.map(|(p, n)| unsafe { std::slice::from_raw_parts(p, n) });
+    let s = |b: &[u8]| String::from_utf8_lossy(b).into_owned();
+    answer(&f(text, &s(machine), &s(params), &s(setup), &s(options), library))
+}
+
 /// The scene of a programme (see [`scene`]), behind its 4-byte little-endian length.
 ///
 /// # Safety
@@ -117,33 +149,20 @@ pub unsafe extern "C" fn ncsight_run(text: *const u8, text_len: usize, machine: 
 /// readable bytes.
 #[no_mangle]
 #[allow(clippy::too_many_arguments)]
-pub unsafe extern "C" fn ncsight_scene(
-    text: *const u8,
-    text_len: usize,
-    machine: *const u8,
-    machine_len: usize,
-    params: *const u8,
-    params_len: usize,
-    setup: *const u8,
-    setup_len: usize,
-    options: *const u8,
-    options_len: usize,
-    library: *const u8,
-    library_len: usize,
-) -> *mut u8 {
+pub unsafe extern "C" fn ncsight_scene(text: *const u8, text_len: usize, machine: *const u8, machine_len: usize, params: *const u8, params_len: usize, setup: *const u8, setup_len: usize, options: *const u8, options_len: usize, library: *const u8, library_len: usize) -> *mut u8 {
     // SAFETY: the caller guarantees the six buffers (see above).
-    let (text, machine, params, setup, options, library) = unsafe {
-        (
-            std::slice::from_raw_parts(text, text_len),
-            std::slice::from_raw_parts(machine, machine_len),
-            std::slice::from_raw_parts(params, params_len),
-            std::slice::from_raw_parts(setup, setup_len),
-            std::slice::from_raw_parts(options, options_len),
-            std::slice::from_raw_parts(library, library_len),
-        )
-    };
-    let s = |b: &[u8]| String::from_utf8_lossy(b).into_owned();
-    answer(&scene(text, &s(machine), &s(params), &s(setup), &s(options), library))
+    unsafe { page_call([(text, text_len), (machine, machine_len), (params, params_len), (setup, setup_len), (options, options_len), (library, library_len)], scene) }
+}
+
+/// Every diagnostic of a check (see [`check`]) as JSON, behind its 4-byte little-endian length.
+///
+/// # Safety
+/// As [`ncsight_scene`].
+#[no_mangle]
+#[allow(clippy::too_many_arguments)]
+pub unsafe extern "C" fn ncsight_check(text: *const u8, text_len: usize, machine: *const u8, machine_len: usize, params: *const u8, params_len: usize, setup: *const u8, setup_len: usize, options: *const u8, options_len: usize, library: *const u8, library_len: usize) -> *mut u8 {
+    // SAFETY: the caller guarantees the six buffers (see above).
+    unsafe { page_call([(text, text_len), (machine, machine_len), (params, params_len), (setup, setup_len), (options, options_len), (library, library_len)], check) }
 }
 
 /// `bytes` behind their 4-byte little-endian length, in a buffer the page frees.
@@ -245,7 +264,7 @@ mod tests {
         let j = u32::from_le_bytes(b[4..8].try_into().unwrap()) as usize;
         let head = std::str::from_utf8(&b[8..8 + j]).unwrap();
         // (The rapid to X0 Y0 Z0 does not move from the power-on position.)
-        assert!(head.contains("\"segments\":1,") && head.contains("\"diagnostics_total\":0"), "{head}");
+        assert!(head.contains("\"segments\":1,") && head.contains("\"diagnostics_total\":0,"), "{head}");
         let at = (8 + j).div_ceil(8) * 8 + 8;
         assert_eq!(f32::from_le_bytes(b[at + 12..at + 16].try_into().unwrap()), 7.0);
     }

@@ -5,9 +5,7 @@
 mod common;
 
 use ncsight::motion::Op;
-use ncsight::profile::{self, Params};
-use ncsight::setup::Setup;
-use ncsight::{Event, Mode, Program, Record, Switches};
+use ncsight::Record;
 
 fn run(machine: &str, setup: &str, text: &str, single_block: bool) -> (Vec<Record>, Vec<ncsight::Diagnostic>) {
     common::run_setup(machine, setup, text, single_block)

@@ -11,6 +11,9 @@
     if (text !== undefined) e.textContent = String(text);
     return e;
   };
+  // The engine compiles (off the main thread) while the job is read.
+  const compiled = compileEngine();
+  compiled.catch(() => {}); // reported where it is awaited
   const JOB = JSON.parse($("ncsight-job").textContent);
   const LH = 18; // editor line height, px
 
@@ -30,7 +33,9 @@
       empty: "Paste a programme, drop a file here, or open one.", presses: "presses: {list}", holdat: "hold {t} s", resetat: "reset {t} s",
       more: "{n} more not listed", hole: "holes", view_lathe: "Z–X (lathe)", view_xy: "top X–Y", view_xz: "front X–Z", view_yz: "side Y–Z", view_iso: "3D (isometric)",
       work_zero: "work zero", stockguess: "stock from the programme (type DIAxLEN to set)", part: "part", notrun: "Not run: the text is larger than auto-run allows; press Run.",
-      edit: "Edit (slow for a programme this long)",
+      section: "Axial section at 0°, true scale", nominal: "dashed: nominal", unrolled: "Unrolled surface: Z across, angle down, darker is deeper",
+      p_param: "parameter", p_value: "value", p_unit: "unit", p_meaning: "meaning", p_source: "source",
+      stockfinding: "stock", findings: "{n} finding(s) of the stock simulation", simerror: "The thread could not be simulated on the stock", notsim: "Not simulated", edit: "Edit (slow for a programme this long)", bycheck: "(found by the check; the run stopped before)",
       seconds: "s", of: "of", block: "block", kinds: { 0: "rapid", 1: "feed", 2: "arc", 3: "thread", 4: "thread arc" },
       threadtitle: "Computed by ncsight report for the programme as it was written (not re-run on edit).",
     },
@@ -48,7 +53,9 @@
       empty: "粘贴程序、把文件拖到这里，或打开文件。", presses: "按键：{list}", holdat: "{t} 秒进给保持", resetat: "{t} 秒复位",
       more: "另有 {n} 条未列出", hole: "孔", view_lathe: "Z–X（车床）", view_xy: "俯视 X–Y", view_xz: "正视 X–Z", view_yz: "侧视 Y–Z", view_iso: "三维（等轴测）",
       work_zero: "工件零点", stockguess: "按程序估计的毛坯（输入 直径x长度 设定）", part: "工件", notrun: "未运行：程序太大，不自动运行；请按“运行”。",
-      edit: "编辑（程序很长，会较慢）",
+      section: "0° 轴向剖面，真实比例", nominal: "虚线：名义牙形", unrolled: "展开表面：横向 Z，纵向角度，越深越暗",
+      p_param: "参数", p_value: "值", p_unit: "单位", p_meaning: "含义", p_source: "来源",
+      stockfinding: "毛坯", findings: "毛坯仿真发现 {n} 个问题", simerror: "无法在毛坯上仿真螺纹", notsim: "未仿真", edit: "编辑（程序很长，会较慢）", bycheck: "（检查发现；运行在此之前已停止）",
       seconds: "秒", of: "/", block: "段", kinds: { 0: "快速", 1: "直线", 2: "圆弧", 3: "螺纹", 4: "圆弧螺纹" },
       threadtitle: "由 ncsight report 按原程序计算（编辑后不重算）。",
     },
@@ -71,13 +78,17 @@
   // ---- the engine -------------------------------------------------------------------------
   let engine = null;
   const enc = new TextEncoder();
-  async function loadEngine() {
+  function compileEngine() {
     const b64 = $("ncsight-engine").textContent.trim();
-    if (!b64) throw new Error("this page was written without its engine");
+    if (!b64) return Promise.reject(new Error("this page was written without its engine"));
     const bin = atob(b64);
     const bytes = new Uint8Array(bin.length);
     for (let i = 0; i < bin.length; i++) bytes[i] = bin.charCodeAt(i);
-    const { instance } = await WebAssembly.instantiate(bytes, {});
+    return WebAssembly.compile(bytes);
+  }
+  /** A fresh instance of the engine (again after a trap: its memory is then not to be trusted). */
+  async function loadEngine() {
+    const instance = await WebAssembly.instantiate(await compiled, {});
     engine = instance.exports;
   }
   /** The files where called programmes are looked for, as the engine takes them: a u32 length
@@ -90,14 +101,18 @@
     parts.forEach((b) => { out.set(b, at); at += b.length; });
     return out;
   }
-  function callScene(textBytes, machine, params, setup, options) {
+  /** Call the engine's `ncsight_scene` or `ncsight_check` (same arguments); its answer's bytes. */
+  function callEngine(name, textBytes, machine, params, setup, options) {
     const E = engine;
     const bufs = [textBytes, enc.encode(machine), enc.encode(params), enc.encode(setup), enc.encode(options), libraryBytes()];
-    const ptrs = bufs.map((b) => { const p = E.ncsight_alloc(b.length); new Uint8Array(E.memory.buffer, p, b.length).set(b); return p; });
-    const r = E.ncsight_scene(ptrs[0], bufs[0].length, ptrs[1], bufs[1].length, ptrs[2], bufs[2].length, ptrs[3], bufs[3].length, ptrs[4], bufs[4].length, ptrs[5], bufs[5].length);
-    const len = new DataView(E.memory.buffer).getUint32(r, true);
-    const out = E.memory.buffer.slice(r + 4, r + 4 + len);
-    E.ncsight_free(r, 4 + len);
+    // Pointers come back as signed 32-bit numbers: >>> 0 reads those above 2 GB right.
+    const ptrs = bufs.map((b) => { const p = E.ncsight_alloc(b.length) >>> 0; new Uint8Array(E.memory.buffer, p, b.length).set(b); return p; });
+    const r = E[name](ptrs[0], bufs[0].length, ptrs[1], bufs[1].length, ptrs[2], bufs[2].length, ptrs[3], bufs[3].length, ptrs[4], bufs[4].length, ptrs[5], bufs[5].length);
+    const at = r >>> 0;
+    const len = new DataView(E.memory.buffer).getUint32(at, true);
+    // A copy: the columns' typed arrays need offsets aligned from the buffer's start.
+    const out = E.memory.buffer.slice(at + 4, at + 4 + len);
+    E.ncsight_free(at, 4 + len);
     ptrs.forEach((p, i) => E.ncsight_free(p, bufs[i].length));
     return out;
   }
@@ -132,9 +147,19 @@
     S.blockEnds = Float64Array.from(ends).sort();
     S.tools = [];
     ev.forEach((x) => { if (x.k === "tool" && !S.tools.includes(x.tool)) S.tools.push(x.tool); });
+    // Each motion's drawing style: 0 rapid, 1 pull-out, then per tool (in order of appearance)
+    // 2 + 2t a cut, 3 + 2t a thread.
+    const toolIndex = new Map(S.tools.map((x, j) => [x, j]));
+    S.style = new Uint16Array(n);
+    for (let i = 0; i < n; i++) {
+      const k = S.kind[i] & 7;
+      const ti = toolIndex.has(S.tool[i]) ? toolIndex.get(S.tool[i]) + 1 : 0;
+      S.style[i] = k === 0 ? 0 : S.kind[i] & 32 ? 1 : (k >= 3 ? 3 : 2) + 2 * ti;
+    }
     S.threadOf = new Map(head.threads.map((r) => [r[0], r]));
-    S.lineFirstSeg = new Map();
-    for (let i = 0; i < n; i++) if (!S.lineFirstSeg.has(S.line[i])) S.lineFirstSeg.set(S.line[i], i);
+    // The other records before each motion (dwells, spindle, tools, stops), by that motion.
+    S.eventsBefore = new Map();
+    ev.forEach((x) => { if (!S.eventsBefore.has(x.seg)) S.eventsBefore.set(x.seg, []); S.eventsBefore.get(x.seg).push(x); });
     return S;
   }
 
@@ -164,7 +189,7 @@
   // ---- machines, views, panel ---------------------------------------------------------------
   JOB.machines.forEach((m) => $("machine").appendChild(el("option", { value: m[0] }, m[0] + " — " + m[1])));
   $("machine").value = JOB.machine || "gsk980tdi";
-  for (let f = 200; f >= 0; f -= 10) $("feed-ov").appendChild(el("option", { value: f }, f + " %"));
+  for (let f = 200; f >= 10; f -= 10) $("feed-ov").appendChild(el("option", { value: f }, f + " %"));
   $("feed-ov").value = "100";
   function fillViews() {
     const sel = $("view");
@@ -181,8 +206,11 @@
   $("bdel").checked = !!(JOB.options && JOB.options.block_delete);
   $("opt").checked = !!(JOB.options && JOB.options.optional_stop);
   if (JOB.options) {
-    $("feed-ov").value = String(JOB.options.feed_override || 100);
-    $("rapid-ov").value = String(JOB.options.rapid_override || 100);
+    // A value the lists lack (--feed-override 105) is added to them.
+    [["feed-ov", JOB.options.feed_override || 100, " %"], ["rapid-ov", JOB.options.rapid_override || 100, ""]].forEach(([id, v, unit]) => {
+      if (![...$(id).options].some((o) => o.value === String(v))) $(id).appendChild(el("option", { value: String(v) }, v + unit));
+      $(id).value = String(v);
+    });
     presses.holds = (JOB.options.feed_hold_at || []).slice();
     presses.reset = JOB.options.reset_at === undefined ? null : JOB.options.reset_at;
   }
@@ -250,8 +278,8 @@
     if (moveCaret && !big) {
       const s = ta.value;
       let at = 0;
-      for (let k = 1; k < n && at >= 0; k++) at = s.indexOf("\n", at) + 1;
-      if (at >= 0) { ta.setSelectionRange(at, at); }
+      for (let k = 1; k < n && at >= 0; k++) { const nl = s.indexOf("\n", at); at = nl < 0 ? -1 : nl + 1; }
+      if (at >= 0) ta.setSelectionRange(at, at);
     }
     paintEditor();
   }
@@ -285,7 +313,17 @@
     if (!engine) return;
     const machine = $("machine").value;
     const t0 = performance.now();
-    const buf = callScene(enc.encode(programmeText()), machine, $("params").value, JOB.setup || "", optionsText());
+    const textBytes = enc.encode(programmeText());
+    let buf;
+    try {
+      buf = callEngine("ncsight_scene", textBytes, machine, $("params").value, JOB.setup || "", optionsText());
+    } catch (e) {
+      // The engine stopped (a trap): say so, and start a fresh one for the next run.
+      banner("usage", t("usage", { msg: "engine error: " + String(e.message || e) }));
+      engine = null;
+      loadEngine().catch(() => {});
+      return;
+    }
     const next = parseScene(buf);
     lastRunMs = performance.now() - t0;
     if (next.usage) { banner("usage", t("usage", { msg: next.usage })); return; }
@@ -300,23 +338,64 @@
     fresh = false;
     partCache = null;
     if (fitted) fit();
-    showProblems(); showTime(); showParams(); legend(); setTime(now); paintEditor();
+    showProblems(); showTime(); showParams(); legend(); setTime(now, false); paintEditor();
+    // When the first path was drawn, in ms from navigation (what the size tests measure).
+    if (!firstPathMs) firstPathMs = performance.now();
+    // Then every diagnostic of a check (the run stops at the first alarm; a check goes on), once
+    // the path is drawn.
+    const generation = ++runs;
+    setTimeout(() => {
+      if (generation !== runs || !engine) return;
+      try { addCheck(callEngine("ncsight_check", textBytes, machine, $("params").value, JOB.setup || "", optionsText())); } catch (e) { engine = null; loadEngine().catch(() => {}); }
+    }, 0);
+  }
+  let runs = 0;
+  let firstPathMs = 0;
+  function addCheck(buf) {
+    const text = new TextDecoder().decode(new Uint8Array(buf));
+    if (text.startsWith("NCSE") || !S) return;
+    const C = JSON.parse(text), H = S.head;
+    const seen = new Set(H.diagnostics.map((d) => d.l + ":" + d.c + ":" + d.code));
+    let added = 0;
+    C.diagnostics.forEach((d) => {
+      if (seen.has(d.l + ":" + d.c + ":" + d.code) || H.diagnostics.length >= 10000) return;
+      d.check = true;
+      H.diagnostics.push(d);
+      added++;
+    });
+    if (!added) return;
+    H.diagnostics.sort((a, b) => a.l - b.l || a.c - b.c);
+    H.diagnostics_total = Math.max(H.diagnostics_total + added, H.diagnostics.length);
+    H.alarms_total = Math.max(H.alarms_total || 0, C.alarms || 0);
+    H.diagnostics.forEach((d) => { if (diagByLine.get(d.l) !== "alarm") diagByLine.set(d.l, d.sev); });
+    showProblems(); paintEditor(); draw();
   }
   let lastRunMs = 0;
   function showProblems() {
     const H = S.head, box = $("problems");
     box.textContent = "";
-    const alarms = H.diagnostics.filter((d) => d.sev === "alarm").length;
-    const warnings = H.diagnostics.length - alarms + Math.max(0, H.diagnostics_total - H.diagnostics.length);
-    if (!H.diagnostics_total) {
+    const alarms = Math.max(H.alarms_total || 0, H.diagnostics.filter((d) => d.sev === "alarm").length);
+    const warnings = Math.max(0, H.diagnostics_total - alarms);
+    const nf = stockFindings().length;
+    if (nf) banner("alarm", t("findings", { n: nf }) + (H.diagnostics_total ? " — " + t("problems", { alarms, warnings }) : ""));
+    else if (!H.diagnostics_total) {
       banner("ok", programmeText().trim() ? t("ok", { status: t(H.status), time: hms(H.total_s) }) : t("empty"));
     } else {
       const firstD = H.diagnostics[0];
       banner(alarms ? "alarm" : "warning", t("problems", { alarms, warnings }) + " — " + t("first", { line: firstD.l, msg: firstD.code + " " + firstD.msg }));
     }
     const frag = document.createDocumentFragment();
+    // What the stock simulation could not do, and its findings (crash, chuck, phase, deviation),
+    // come first.
+    if (JOB.sim_error) frag.appendChild(el("div", { class: "p warning notice" }, t("simerror") + ": " + JOB.sim_error));
+    ((JOB.sim && JOB.sim.findings) || []).filter((f) => f.kind === "not_simulated").forEach((f) => frag.appendChild(el("div", { class: "p warning notice" }, t("notsim") + " (" + t("line") + " " + f.line + "): " + f.message)));
+    stockFindings().forEach((f) => {
+      const p = el("div", { class: "p alarm finding", "data-line": f.line }, t("stockfinding") + " · " + f.kind + " · " + t("line") + " " + f.line + (f.x !== undefined ? " · X " + f.x + " Z " + f.z : "") + " · " + f.message);
+      p.addEventListener("click", () => { select(f.line, true); if (f.t !== undefined) setTime(f.t); });
+      frag.appendChild(p);
+    });
     H.diagnostics.slice(0, 500).forEach((d) => {
-      const p = el("div", { class: "p " + d.sev, "data-line": d.l }, t("line") + " " + d.l + " " + t("col") + " " + d.c + " · " + d.code + " · " + d.msg + (d.hint ? " (" + d.hint + ")" : ""));
+      const p = el("div", { class: "p " + d.sev, "data-line": d.l }, t("line") + " " + d.l + " " + t("col") + " " + d.c + " · " + d.code + " · " + d.msg + (d.hint ? " (" + d.hint + ")" : "") + (d.check ? " " + t("bycheck") : ""));
       p.addEventListener("click", () => select(d.l, true));
       frag.appendChild(p);
     });
@@ -327,6 +406,7 @@
   // ---- time as a person reads it --------------------------------------------------------------
   function hms(s) {
     if (!(s >= 0)) return "-";
+    s = Math.round(s * 10) / 10;
     const h = Math.floor(s / 3600), m = Math.floor((s % 3600) / 60), sec = s - h * 3600 - m * 60;
     return (h ? h + ":" + String(m).padStart(2, "0") : String(m)) + ":" + sec.toFixed(1).padStart(4, "0");
   }
@@ -341,7 +421,7 @@
     }
     let between = S.head.total_s;
     for (let i = 0; i < S.n; i++) between -= S.t[i] - S.t0[i];
-    S.head.events.forEach((e) => { if (e.k === "dwell") { add(byOp, t("dwell"), e.s); between -= e.s; } if (e.k === "rotary") { add(byOp, t("turn"), e.s); } });
+    S.head.events.forEach((e) => { if (e.k === "dwell") { add(byOp, t("dwell"), e.s); between -= e.s; } if (e.k === "rotary") { add(byOp, t("turn"), e.s); between -= e.s; } });
     if (between > 1e-6) add(byOp, t("waits"), between);
     const box = $("time");
     box.textContent = "";
@@ -362,7 +442,7 @@
     const box = $("param-table");
     box.textContent = "";
     const tb = el("table");
-    const hr = el("tr"); ["parameter", "value", "unit", "meaning", "source"].forEach((h) => hr.appendChild(el("th", {}, h))); tb.appendChild(hr);
+    const hr = el("tr"); ["p_param", "p_value", "p_unit", "p_meaning", "p_source"].forEach((h) => hr.appendChild(el("th", {}, t(h)))); tb.appendChild(hr);
     S.head.params.forEach((p) => { const tr = el("tr"); p.forEach((c) => tr.appendChild(el("td", {}, c))); tb.appendChild(tr); });
     (JOB.settings || []).forEach((s) => box.appendChild(el("div", {}, s)));
     box.appendChild(tb);
@@ -483,7 +563,7 @@
       ctx.strokeStyle = "#455a64"; ctx.lineWidth = 1.2; ctx.setLineDash([14, 4, 3, 4]);
       ctx.beginPath(); ctx.moveTo(0, sy(0)); ctx.lineTo(cw, sy(0)); ctx.stroke(); ctx.setLineDash([]);
     }
-    const parts = [["paths", drawPaths], ["holes", drawHoles], ["extents", drawExtents], ["selection", drawSelection], ["diagnostics", drawDiagnostics], ["tool", drawTool]];
+    const parts = [["paths", drawPaths], ["holes", drawHoles], ["extents", drawExtents], ["selection", drawSelection], ["diagnostics", drawDiagnostics], ["findings", drawFindings], ["tool", drawTool]];
     for (const [name, f] of parts) { const a = performance.now(); f(A, B); drawParts[name] = performance.now() - a; }
     lastDrawMs = performance.now() - t0;
   }
@@ -550,20 +630,23 @@
   /** One style's path, thinned to what the pixels can show: a point closer than 0.6 px to the
    * last one drawn is skipped, so a million short moves draw as fast as the screen is wide. */
   function drawPaths(A, B) {
-    const n = S.n, p = S.p, kind = S.kind, tool = S.tool;
+    const n = S.n, p = S.p, kind = S.kind, styleOf = S.style;
     const iNow = segAt(now);
-    const buckets = new Map();
-    const bucket = (key) => { let b = buckets.get(key); if (!b) { b = { path: new Path2D(), x: NaN, y: NaN, key }; buckets.set(key, b); } return b; };
+    const buckets = [];
     const q = [0, 0, 0];
     const W = cw + 50, Hh = ch + 50;
+    const a0 = A[0], a1 = A[1], a2 = A[2], b0 = B[0], b1 = B[1], b2 = B[2], s = view.s, ou = view.ou, ov = view.ov;
     for (let i = 0; i < n; i++) {
       const o = 6 * i, k = kind[i] & 7;
-      const x0 = sx(A[0] * p[o] + A[1] * p[o + 1] + A[2] * p[o + 2]), y0 = sy(B[0] * p[o] + B[1] * p[o + 1] + B[2] * p[o + 2]);
-      const x1 = sx(A[0] * p[o + 3] + A[1] * p[o + 4] + A[2] * p[o + 5]), y1 = sy(B[0] * p[o + 3] + B[1] * p[o + 4] + B[2] * p[o + 5]);
+      const x0 = (a0 * p[o] + a1 * p[o + 1] + a2 * p[o + 2] - ou) * s, y0 = ch - (b0 * p[o] + b1 * p[o + 1] + b2 * p[o + 2] - ov) * s;
+      const x1 = (a0 * p[o + 3] + a1 * p[o + 4] + a2 * p[o + 5] - ou) * s, y1 = ch - (b0 * p[o + 3] + b1 * p[o + 4] + b2 * p[o + 5] - ov) * s;
       const arcy = k === 2 || k === 4;
       if (!arcy && ((x0 < -50 && x1 < -50) || (x0 > W && x1 > W) || (y0 < -50 && y1 < -50) || (y0 > Hh && y1 > Hh))) continue;
-      const style = k === 0 ? 0 : kind[i] & 32 ? 1 : (k >= 3 ? 3 : 2) + 2 * (S.tools.indexOf(tool[i]) + 1);
-      const b = bucket(style * 2 + (i <= iNow ? 1 : 0));
+      const key = styleOf[i] * 2 + (i <= iNow ? 1 : 0);
+      let b = buckets[key];
+      if (!b) b = buckets[key] = { path: new Path2D(), x: NaN, y: NaN, key };
+      // Nothing to draw: a move along the line of sight that starts where the last one ended.
+      if (!arcy && Math.abs(x1 - b.x) < 0.6 && Math.abs(y1 - b.y) < 0.6 && Math.abs(x0 - b.x) < 0.6 && Math.abs(y0 - b.y) < 0.6) continue;
       if (!(Math.abs(x0 - b.x) < 0.6 && Math.abs(y0 - b.y) < 0.6)) { b.path.moveTo(x0, y0); b.x = x0; b.y = y0; }
       if (arcy) {
         const c = 4 * i;
@@ -572,14 +655,14 @@
         const sweep = Math.abs(S.arc[c + 3]);
         // Chords within a quarter pixel of the circle.
         const m = r < 1 ? 1 : Math.min(720, Math.max(2, Math.ceil(sweep / (2 * Math.acos(Math.max(-1, 1 - 0.25 / r))))));
-        for (let s = 1; s <= m; s++) {
-          pointAt(i, s / m, q);
+        for (let j = 1; j <= m; j++) {
+          pointAt(i, j / m, q);
           const x = sx(A[0] * q[0] + A[1] * q[1] + A[2] * q[2]), y = sy(B[0] * q[0] + B[1] * q[1] + B[2] * q[2]);
-          if (s === m || Math.abs(x - b.x) >= 0.6 || Math.abs(y - b.y) >= 0.6) { b.path.lineTo(x, y); b.x = x; b.y = y; }
+          if (j === m || Math.abs(x - b.x) >= 0.6 || Math.abs(y - b.y) >= 0.6) { b.path.lineTo(x, y); b.x = x; b.y = y; }
         }
       } else if (Math.abs(x1 - b.x) >= 0.6 || Math.abs(y1 - b.y) >= 0.6) { b.path.lineTo(x1, y1); b.x = x1; b.y = y1; }
     }
-    const order = [...buckets.values()].sort((a, b) => a.key - b.key);
+    const order = buckets.filter(Boolean);
     for (const b of order) {
       const style = b.key >> 1, done = b.key & 1;
       ctx.globalAlpha = done ? 1 : 0.3;
@@ -591,21 +674,27 @@
     }
     ctx.globalAlpha = 1; ctx.setLineDash([]);
   }
-  const SHAPES = ["circle", "square", "triangle", "diamond", "cross", "ring", "star", "bar"];
+  // Eight closed shapes; past eight cycle kinds the colour moves on, so no two kinds look alike.
+  const SHAPES = ["circle", "square", "triangle", "diamond", "down", "hexagon", "bar", "column"];
+  const holeLook = (k) => ({ shape: SHAPES[k % 8], colour: HOLE_COLOURS[(k + 3 * Math.floor(k / 8)) % HOLE_COLOURS.length] });
   function marker(path, x, y, shape, r) {
-    if (shape === "circle" || shape === "ring") { path.moveTo(x + r, y); path.arc(x, y, r, 0, 2 * Math.PI); }
+    const poly = (pts) => { path.moveTo(x + pts[0][0], y + pts[0][1]); for (let i = 1; i < pts.length; i++) path.lineTo(x + pts[i][0], y + pts[i][1]); path.closePath(); };
+    if (shape === "circle") { path.moveTo(x + r, y); path.arc(x, y, r, 0, 2 * Math.PI); }
     else if (shape === "square") path.rect(x - r, y - r, 2 * r, 2 * r);
-    else if (shape === "triangle") { path.moveTo(x, y - r); path.lineTo(x + r, y + r); path.lineTo(x - r, y + r); path.closePath(); }
-    else if (shape === "diamond") { path.moveTo(x, y - r); path.lineTo(x + r, y); path.lineTo(x, y + r); path.lineTo(x - r, y); path.closePath(); }
-    else { path.moveTo(x - r, y - r); path.lineTo(x + r, y + r); path.moveTo(x + r, y - r); path.lineTo(x - r, y + r); }
+    else if (shape === "triangle") poly([[0, -r], [r, r], [-r, r]]);
+    else if (shape === "down") poly([[0, r], [r, -r], [-r, -r]]);
+    else if (shape === "diamond") poly([[0, -r], [r, 0], [0, r], [-r, 0]]);
+    else if (shape === "hexagon") poly([0, 1, 2, 3, 4, 5].map((i) => [r * Math.cos(i * Math.PI / 3), r * Math.sin(i * Math.PI / 3)]));
+    else if (shape === "bar") path.rect(x - r, y - r / 2, 2 * r, r);
+    else path.rect(x - r / 2, y - r, r, 2 * r);
   }
   function drawHoles(A, B) {
     if (!S.h) return;
-    // One marker per cell of its own size: 200,000 holes cost what the screen can show. Holes
+    // One marker per cell of its own size (markers that would overlap are not drawn): 200,000
+    // holes cost what the screen can show. Holes
     // drilled by now are filled; those to come are open.
     const r = Math.max(3, Math.min(7, 1.5 * view.s));
-    const cell = Math.max(3, r), gw = Math.ceil(cw / cell) + 1, seen = new Uint8Array(gw * (Math.ceil(ch / cell) + 2));
-    const iNow = segAt(now);
+    const cell = 2 * r + 1, gw = Math.ceil(cw / cell) + 1, seen = new Uint8Array(gw * (Math.ceil(ch / cell) + 2));
     const paths = S.head.hole_kinds.map(() => [new Path2D(), new Path2D()]);
     for (let j = 0; j < S.h; j++) {
       const o = 3 * j;
@@ -615,12 +704,12 @@
       if (seen[c]) continue;
       seen[c] = 1;
       const k = S.holeKind[j];
-      marker(paths[k][S.holeSeg[j] <= iNow ? 1 : 0], x, y, SHAPES[k % SHAPES.length], r);
+      marker(paths[k][S.t[S.holeSeg[j]] <= now + 1e-9 ? 1 : 0], x, y, holeLook(k).shape, r);
     }
     paths.forEach(([open, done], k) => {
-      const colour = HOLE_COLOURS[k % HOLE_COLOURS.length], filled = SHAPES[k % SHAPES.length] !== "cross";
+      const colour = holeLook(k).colour;
       ctx.lineWidth = 1.6; ctx.strokeStyle = colour;
-      if (filled) { ctx.fillStyle = "#ffffff"; ctx.fill(open); ctx.fillStyle = colour; ctx.fill(done); }
+      ctx.fillStyle = "#ffffff"; ctx.fill(open); ctx.fillStyle = colour; ctx.fill(done);
       ctx.stroke(open); ctx.stroke(done);
     });
   }
@@ -675,18 +764,32 @@
     }
     ctx.stroke(); ctx.lineCap = "butt";
   }
+  /** Where a diagnostic is drawn: where the tool was when the run raised it; one the run did not
+   * reach (found by the check) at its line's first motion, if the line has one; else nowhere. */
   function diagPoint(d, out) {
-    if (!S.n) { out[0] = out[1] = out[2] = 0; return out; }
+    if (!S.n) return null;
+    if (d.seg === undefined) { const i = S.line.indexOf(d.l); return i < 0 ? null : pointAt(i, 0, out); }
     return d.seg > 0 ? pointAt(d.seg - 1, 1, out) : pointAt(0, 0, out);
   }
   function drawDiagnostics(A, B) {
     const q = [0, 0, 0];
     S.head.diagnostics.slice(0, 200).forEach((d) => {
-      diagPoint(d, q);
+      if (!diagPoint(d, q)) return;
       const x = sx(A[0] * q[0] + A[1] * q[1] + A[2] * q[2]), y = sy(B[0] * q[0] + B[1] * q[1] + B[2] * q[2]);
       ctx.fillStyle = d.sev === "alarm" ? "#c62828" : "#f9a825";
       ctx.beginPath(); ctx.moveTo(x, y - 16); ctx.lineTo(x + 9, y - 1); ctx.lineTo(x - 9, y - 1); ctx.closePath(); ctx.fill();
       ctx.fillStyle = "#fff"; ctx.font = "bold 11px system-ui,sans-serif"; ctx.textAlign = "center"; ctx.textBaseline = "middle"; ctx.fillText("!", x, y - 6);
+    });
+  }
+  const stockFindings = () => ((JOB.sim && JOB.sim.findings) || []).filter((f) => f.kind !== "not_simulated");
+  function drawFindings(A, B) {
+    // Where the stock simulation found a crash, a chuck touch, a phase error or a deviation.
+    stockFindings().forEach((f) => {
+      if (f.x === undefined) return;
+      const p = [f.x / 2, f.y || 0, f.z];
+      const x = sx(A[0] * p[0] + A[1] * p[1] + A[2] * p[2]), y = sy(B[0] * p[0] + B[1] * p[1] + B[2] * p[2]);
+      ctx.fillStyle = "#6a1b9a"; ctx.beginPath(); ctx.moveTo(x, y - 9); ctx.lineTo(x + 9, y); ctx.lineTo(x, y + 9); ctx.lineTo(x - 9, y); ctx.closePath(); ctx.fill();
+      ctx.fillStyle = "#fff"; ctx.font = "bold 11px system-ui,sans-serif"; ctx.textAlign = "center"; ctx.textBaseline = "middle"; ctx.fillText("!", x, y);
     });
   }
   function drawTool(A, B) {
@@ -703,7 +806,7 @@
     item("#9e9e9e", t("rapid"), true);
     (S.tools.length ? S.tools : [0]).forEach((tool) => item(toolColour(tool), "T" + String(tool).padStart(2, "0")));
     if (S.head.threads.length) item("#8e24aa", t("pullout"));
-    S.head.hole_kinds.forEach((k, i) => item(HOLE_COLOURS[i % HOLE_COLOURS.length], k + " " + t("hole")));
+    S.head.hole_kinds.forEach((k, i) => item(holeLook(i).colour, k + " " + t("hole")));
   }
 
   // ---- the player ----------------------------------------------------------------------------
@@ -723,18 +826,22 @@
     const f = d > 0 ? Math.min(1, Math.max(0, (time - S.t0[i]) / d)) : 1;
     return pointAt(i, f, out);
   }
-  function setTime(time) {
+  /** Move the player to `time`; the source scrolls to the running line unless `follow` is false
+   * (a run again after an edit must not pull the editor away from the caret). */
+  function setTime(time, follow) {
     if (!S) return;
     const total = Math.max(S.head.total_s, 1e-9);
     now = Math.max(0, Math.min(total, time));
     $("slider").value = String(Math.round(now / total * 10000));
     const i = segAt(now);
-    const line = i >= 0 ? S.line[i] : 0;
-    if (line !== runLine) { runLine = line; if (runLine) showLine(runLine, false); else paintEditor(); }
-    updateState(i);
+    // Between motions (a dwell, a spindle wait, a tool change) the record under way is not a motion.
+    const between = i >= 0 && now < S.t0[i] - 1e-9 ? (S.eventsBefore.get(i) || []).find((e) => e.t >= now - 1e-9) : null;
+    const line = between ? between.l : i >= 0 ? S.line[i] : 0;
+    if (line !== runLine) { runLine = line; if (runLine && follow !== false) showLine(runLine, false); else paintEditor(); }
+    updateState(i, between);
     draw();
   }
-  function updateState(i) {
+  function updateState(i, between) {
     const q = posAt(now);
     let rpm = 0;
     for (const e of S.head.events) { if (e.t > now + 1e-9) break; if (e.k === "spindle") rpm = e.rpm; }
@@ -742,7 +849,7 @@
     const th = i >= 0 ? S.threadOf.get(i) : null;
     const pos = lathe ? "X " + (2 * q[0]).toFixed(3) + " (Ø)  Z " + q[2].toFixed(3) : "X " + q[0].toFixed(3) + "  Y " + q[1].toFixed(3) + "  Z " + q[2].toFixed(3);
     const lines = [
-      t("state_t") + " " + hms(now) + " " + t("of") + " " + hms(S.head.total_s) + "   " + t("state_line") + " " + (runLine || "-") + "   " + (k >= 0 ? t("kinds")[k] : "") + (i >= 0 ? "   T" + String(S.tool[i]).padStart(2, "0") : ""),
+      t("state_t") + " " + hms(now) + " " + t("of") + " " + hms(S.head.total_s) + "   " + t("state_line") + " " + (runLine || "-") + "   " + (between ? between.k : k >= 0 ? t("kinds")[k] : "") + (i >= 0 ? "   T" + String(S.tool[i]).padStart(2, "0") : ""),
       pos,
       t("spindle") + " " + (th ? th[2] : rpm) + " rpm" + (th ? "   " + t("lead") + " " + S.rate[i] + " mm   " + t("angle") + " " + (((th[1] + 360 * Math.abs(th[2]) * Math.max(0, now - S.t0[i]) / 60) % 360)).toFixed(1) + "°" : k === 1 || k === 2 ? "   " + t("feedrate") + " " + S.rate[i] + " mm/min" : ""),
     ];
@@ -808,7 +915,8 @@
   function zoom(k, cx, cy) {
     const x = cx === undefined ? cw / 2 : cx, y = cy === undefined ? ch / 2 : cy;
     const u = view.ou + x / view.s, v = view.ov + (ch - y) / view.s;
-    view.s *= k;
+    // Bounded: far past a micrometre per screen the grid's steps would stop adding up.
+    view.s = Math.min(1e5, Math.max(1e-4, view.s * k));
     view.ou = u - x / view.s; view.ov = v - (ch - y) / view.s;
     fitted = false;
     draw();
@@ -826,7 +934,7 @@
     hover(e);
   });
   canvas.addEventListener("pointerup", (e) => {
-    if (drag && !drag.moved) { const r = canvas.getBoundingClientRect(); const i = pick(e.clientX - r.left, e.clientY - r.top); if (i >= 0) select(S.line[i], true); }
+    if (drag && !drag.moved) { const r = canvas.getBoundingClientRect(); const i = pick(e.clientX - r.left, e.clientY - r.top); if (i >= 0 && S.line[i]) select(S.line[i], true); }
     drag = null;
   });
   canvas.addEventListener("pointerleave", () => { $("tip").hidden = true; });
@@ -878,7 +986,7 @@
   // Keys, when not typing: space play, arrows block by block, T next tool, F fit, + and - zoom.
   document.addEventListener("keydown", (e) => {
     const tag = (e.target && e.target.tagName) || "";
-    if (tag === "TEXTAREA" || tag === "INPUT" || tag === "SELECT") return;
+    if (tag === "TEXTAREA" || tag === "INPUT" || tag === "SELECT" || tag === "BUTTON" || tag === "SUMMARY") return;
     const k = e.key;
     if (k === " ") { e.preventDefault(); play(); }
     else if (k === "ArrowRight") stepBlock(1);
@@ -912,6 +1020,7 @@
   function showThread() {
     if (!JOB.sim && !JOB.sim_error) return;
     $("thread-box").hidden = false;
+    $("thread-box").open = true;
     const th = $("thread");
     th.appendChild(el("div", {}, t("threadtitle")));
     if (!JOB.sim) { th.appendChild(el("p", { class: "notice" }, "The thread could not be simulated on the stock: " + JOB.sim_error)); return; }
@@ -921,11 +1030,72 @@
      ["starts", m.starts === null ? "-" : String(m.starts)], ["flank angles", m.flank_angles_deg ? m.flank_angles_deg[0].toFixed(1) + " + " + m.flank_angles_deg[1].toFixed(1) + " deg" : "-"],
      ["full-depth length", f(m.full_depth_length_mm) + " mm"], ["run-out length", f(m.runout_length_mm) + " mm"]].forEach((r) => { const tr = el("tr"); tr.appendChild(el("th", {}, r[0])); tr.appendChild(el("td", {}, r[1])); tb.appendChild(tr); });
     th.appendChild(tb);
-    if (JOB.unrolled) th.appendChild(el("img", { src: JOB.unrolled, alt: "unrolled thread surface" }));
+    if (JOB.section && JOB.section.length > 1) th.appendChild(threadSection(m));
+    if (JOB.unrolled) { th.appendChild(el("div", {}, t("unrolled"))); th.appendChild(el("img", { src: JOB.unrolled, alt: "unrolled thread surface" })); }
     const ul = el("ul");
     (m.findings || []).forEach((x) => ul.appendChild(el("li", {}, x.kind + (x.line ? " (line " + x.line + ")" : "") + ": " + x.message)));
     if (!(m.findings || []).length) ul.appendChild(el("li", {}, "no findings"));
     th.appendChild(ul);
+  }
+
+  /** The axial section at 0 degrees, true scale, cropped to a few pitches in the middle of the
+   * thread, with the nominal profile of --expect over it and the measured major and minor
+   * diameters and pitch dimensioned. */
+  function threadSection(m) {
+    const W = 900, Hc = 300;
+    const c = el("canvas", { id: "thread-section", width: W, height: Hc, role: "img", "aria-label": "axial section" });
+    const g = c.getContext("2d");
+    const sec = JOB.section, stockD = m.stock_diameter_mm;
+    const cut = sec.filter((p) => p[1] < stockD - 1e-3);
+    if (cut.length < 2 || !(m.major_diameter_mm > 0 && m.minor_diameter_mm > 0)) return el("div", {}, "-");
+    const P = m.pitch_mm || (JOB.expect && JOB.expect.pitch_mm) || (cut[cut.length - 1][0] - cut[0][0]) / 4;
+    const zMid = (cut[0][0] + cut[cut.length - 1][0]) / 2, span = Math.min(cut[cut.length - 1][0] - cut[0][0], 4 * P);
+    const z0 = zMid - span / 2, z1 = zMid + span / 2;
+    const major = m.major_diameter_mm / 2, minor = m.minor_diameter_mm / 2, h = Math.max(major - minor, 1e-3);
+    const r0 = minor - 0.6 * h, r1 = major + 0.9 * h;
+    const s = Math.min((W - 140) / (z1 - z0), (Hc - 50) / (r1 - r0));
+    const X = (z) => 60 + (z - z0) * s, Y = (r) => Hc - 30 - (r - r0) * s;
+    g.fillStyle = "#fff"; g.fillRect(0, 0, W, Hc);
+    // The metal: below the section line.
+    g.beginPath(); g.moveTo(X(z0), Y(r0));
+    sec.forEach((p) => { if (p[0] >= z0 && p[0] <= z1) g.lineTo(X(p[0]), Y(p[1] / 2)); });
+    g.lineTo(X(z1), Y(r0)); g.closePath();
+    g.fillStyle = "#b0bec5"; g.fill(); g.strokeStyle = "#37474f"; g.lineWidth = 1.5; g.stroke();
+    // The nominal profile: flanks at 60 degrees between the expected major and minor, crest and
+    // root flats in the ISO proportion (1 : 2), a root placed on the deepest point measured.
+    if (JOB.expect) {
+      const E = JOB.expect, R = E.major_mm / 2, r = E.minor_mm / 2, f = (R - r) * Math.tan(Math.PI / 6), rest = Math.max(0, E.pitch_mm - 2 * f);
+      // The measured root nearest the middle: the centre of the run of its deepest points.
+      let deepest = Infinity;
+      cut.forEach((p) => { if (Math.abs(p[0] - zMid) < E.pitch_mm / 2 && p[1] < deepest) deepest = p[1]; });
+      const bottom = cut.filter((p) => Math.abs(p[0] - zMid) < E.pitch_mm / 2 && p[1] < deepest + 1e-3);
+      const rootZ = bottom.length ? (bottom[0][0] + bottom[bottom.length - 1][0]) / 2 : zMid;
+      const root = rest * 2 / 3, crest = rest / 3;
+      g.save(); g.beginPath(); g.rect(X(z0), 0, X(z1) - X(z0), Hc); g.clip();
+      g.strokeStyle = "#d32f2f"; g.setLineDash([6, 4]); g.lineWidth = 1.5; g.beginPath();
+      let z = rootZ - root / 2 - Math.ceil((rootZ - z0) / E.pitch_mm + 1) * E.pitch_mm;
+      g.moveTo(X(z), Y(r));
+      while (z < z1 + E.pitch_mm) {
+        g.lineTo(X(z + root), Y(r)); g.lineTo(X(z + root + f), Y(R)); g.lineTo(X(z + root + f + crest), Y(R)); g.lineTo(X(z + E.pitch_mm), Y(r));
+        z += E.pitch_mm;
+      }
+      g.stroke(); g.setLineDash([]); g.restore();
+    }
+    // Dimensions: the measured major and minor diameters, the pitch.
+    g.fillStyle = "#00695c"; g.strokeStyle = "#00695c"; g.lineWidth = 1; g.font = "12px system-ui,sans-serif"; g.textBaseline = "bottom";
+    [[major, "Ø " + m.major_diameter_mm.toFixed(3)], [minor, "Ø " + m.minor_diameter_mm.toFixed(3)]].forEach(([r, label]) => {
+      g.setLineDash([2, 3]); g.beginPath(); g.moveTo(X(z0), Y(r)); g.lineTo(X(z1) + 10, Y(r)); g.stroke(); g.setLineDash([]);
+      g.fillText(label, X(z1) + 12, Y(r) + 6);
+    });
+    if (m.pitch_mm) {
+      const y = Y(r1) + 14, a = X(zMid - P / 2), b = X(zMid + P / 2);
+      g.beginPath(); g.moveTo(a, y); g.lineTo(b, y); g.moveTo(a, y - 5); g.lineTo(a, y + 5); g.moveTo(b, y - 5); g.lineTo(b, y + 5); g.stroke();
+      g.textAlign = "center"; g.fillText("P " + m.pitch_mm.toFixed(3) + (m.flank_angles_deg ? "   " + m.flank_angles_deg[0].toFixed(1) + "° + " + m.flank_angles_deg[1].toFixed(1) + "°" : ""), (a + b) / 2, y - 3); g.textAlign = "left";
+    }
+    g.fillStyle = "#37474f"; g.textBaseline = "top";
+    g.fillText(t("section") + (JOB.expect ? "  — " + t("nominal") + " " + JOB.expect.name : ""), 8, 6);
+    g.fillText("Z " + z0.toFixed(2) + " … " + z1.toFixed(2) + " mm", 8, Hc - 18);
+    return c;
   }
 
   // ---- start ------------------------------------------------------------------------------------
@@ -941,6 +1111,8 @@
     get drawMs() { return lastDrawMs; },
     get drawParts() { return Object.assign({}, drawParts); },
     get runMs() { return lastRunMs; },
+    get runs() { return runs; },
+    get firstPathMs() { return firstPathMs; },
     passes: () => (S ? S.head.passes : 0),
     setTime, stepBlock, nextTool, select, zoom, fit: () => { fit(); draw(); }, run, pick,
     part: () => { const st = stock(); return st && Array.from(part(st).r.filter((_, j) => j % 100 === 0)); },

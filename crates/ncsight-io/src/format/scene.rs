@@ -59,7 +59,7 @@ pub fn scene(job: &Job, text: &[u8], library: Vec<(String, &[u8])>) -> Result<Ve
     let mut c = Columns::default();
     let mut head = String::with_capacity(4096);
     let (mut diags, mut others, mut threads) = (Vec::new(), Vec::new(), Vec::new());
-    let mut diagnostics_total = 0usize;
+    let (mut diagnostics_total, mut alarms_total) = (0usize, 0usize);
     let mut hole_kinds: Vec<&'static str> = Vec::new();
     let mut tool = 0u16;
     let mut pass = 0u32;
@@ -72,8 +72,9 @@ pub fn scene(job: &Job, text: &[u8], library: Vec<(String, &[u8])>) -> Result<Ve
         let r = match e {
             Event::Diagnostic(d) => {
                 diagnostics_total += 1;
+                alarms_total += usize::from(d.severity() == Severity::Alarm);
                 if diags.len() < MAX_DIAGNOSTICS {
-                    diags.push(diagnostic_json(&d, c.kind.len()));
+                    diags.push(diagnostic_json(&d, Some(c.kind.len())));
                 }
                 continue;
             }
@@ -186,7 +187,7 @@ pub fn scene(job: &Job, text: &[u8], library: Vec<(String, &[u8])>) -> Result<Ve
     };
     let _ = write!(
         head,
-        "{{\"machine\":{},\"title\":{},\"lathe\":{},\"status\":\"{status}\",\"total_s\":{},\"segments\":{},\"holes\":{},\"hole_kinds\":[{}],\"diagnostics_total\":{diagnostics_total},\"diagnostics\":[{}],\"events\":[{}],\"threads\":[{}],\"passes\":{pass},\"params\":[{}]}}",
+        "{{\"machine\":{},\"title\":{},\"lathe\":{},\"status\":\"{status}\",\"total_s\":{},\"segments\":{},\"holes\":{},\"hole_kinds\":[{}],\"diagnostics_total\":{diagnostics_total},\"alarms_total\":{alarms_total},\"diagnostics\":[{}],\"events\":[{}],\"threads\":[{}],\"passes\":{pass},\"params\":[{}]}}",
         json_str(profile.name),
         json_str(profile.title),
         profile.is_lathe(),
@@ -202,8 +203,27 @@ pub fn scene(job: &Job, text: &[u8], library: Vec<(String, &[u8])>) -> Result<Ve
     Ok(pack(&head, &c))
 }
 
+/// Every diagnostic of a check of `text` (`ncsight check`: the run goes on after an alarm, no
+/// motion is made), as JSON: `{"total":N,"alarms":A,"diagnostics":[...]}` in the header's form without
+/// `seg`, at most [`MAX_DIAGNOSTICS`] of them. The page lists those a run stopped before.
+pub fn check(job: &Job, text: &[u8], library: Vec<(String, &[u8])>) -> Result<String, JobError> {
+    let (program, _) = job.program(Mode::Check)?;
+    let (mut total, mut alarms) = (0usize, 0usize);
+    let mut diags = Vec::new();
+    for e in ncsight::events_with_library(program, text, library) {
+        if let Event::Diagnostic(d) = e {
+            total += 1;
+            alarms += usize::from(d.severity() == Severity::Alarm);
+            if diags.len() < MAX_DIAGNOSTICS {
+                diags.push(diagnostic_json(&d, None));
+            }
+        }
+    }
+    Ok(format!("{{\"total\":{total},\"alarms\":{alarms},\"diagnostics\":[{}]}}", diags.join(",")))
+}
+
 /// A diagnostic for the header; `seg` is how many motions came before it (where it is drawn).
-fn diagnostic_json(d: &ncsight::Diagnostic, seg: usize) -> String {
+fn diagnostic_json(d: &ncsight::Diagnostic, seg: Option<usize>) -> String {
     let sev = if d.severity() == Severity::Alarm { "alarm" } else { "warning" };
     // A diagnostic from a subprogramme in another file is listed under the outermost call.
     let line = if d.span.file == 0 { d.span.line } else { d.calls.first().map_or(0, |c| c.line) };
@@ -214,8 +234,9 @@ fn diagnostic_json(d: &ncsight::Diagnostic, seg: usize) -> String {
         message = format!("{message}{place} - in a subprogramme called at {}", chain.join(", called at "));
     }
     format!(
-        "{{\"l\":{line},\"c\":{},\"seg\":{seg},\"code\":{},\"sev\":\"{sev}\",\"msg\":{}{}}}",
+        "{{\"l\":{line},\"c\":{}{},\"code\":{},\"sev\":\"{sev}\",\"msg\":{}{}}}",
         d.span.col,
+        seg.map(|s| format!(",\"seg\":{s}")).unwrap_or_default(),
         json_str(d.code),
         json_str(&message),
         d.hint.as_ref().map(|h| format!(",\"hint\":{}", json_str(h))).unwrap_or_default()
@@ -280,6 +301,17 @@ mod tests {
         job.set_setup_text("[machine]\naxes = [\"X\", \"Y\", \"Z\", \"A\"]\n", "s.toml").unwrap();
         let h = head(&scene(&job, b"G91 G00 A45.\nM30\n", Vec::new()).unwrap());
         assert!(h.contains(r#"{"k":"rotary","axis":"A","deg":45,"s":0.35,"l":1"#), "{h}");
+    }
+
+    /// A check lists every alarm, where a run stops at the first.
+    #[test]
+    fn a_check_lists_every_alarm() {
+        let text = b"G0 X10 Z5\nG0 X10 Q1\nG0 X20 Q1\nM30\n";
+        let h = head(&scene(&Job::on("gsk980tdi"), text, Vec::new()).unwrap());
+        assert!(h.contains("\"diagnostics_total\":1,\"alarms_total\":1,") && h.contains("\"l\":2,\"c\":8,\"seg\":1,"), "{h}");
+        let c = check(&Job::on("gsk980tdi"), text, Vec::new()).unwrap();
+        assert!(c.starts_with("{\"total\":2,\"alarms\":2,\"diagnostics\":[{\"l\":2,\"c\":8,\"code\":"), "{c}");
+        assert!(c.contains("{\"l\":3,\"c\":8,"), "{c}");
     }
 
     /// Every hole of the FANUC 0-M cycles (seed 003) has its marker, whatever ends it: a rapid
