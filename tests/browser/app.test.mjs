@@ -155,6 +155,88 @@ test("report O0012: the thread, the player follows the source, a click in the pl
   await context.close();
 });
 
+test("every control: play, speed, next tool, run to cursor, keys, zoom, pan, fit, panel switches, open a file", async () => {
+  const { page, context, errors } = await open(report(join(root, "examples/gsk980tdi_g71_g70_part.nc"), "gsk980tdi", ["--stock", "32x60"]));
+  assert.deepEqual(errors, []);
+  const A = (f, arg) => app(page, f, arg);
+  const total = await A(() => window.ncsightApp.scene.head.total_s);
+  // Keys (focus on the page, not the editor): Home, End, arrows.
+  await page.click("#state");
+  await page.keyboard.press("Home");
+  assert.equal(await A(() => window.ncsightApp.now), 0);
+  await page.keyboard.press("ArrowRight");
+  const firstStop = await A(() => window.ncsightApp.now);
+  assert.ok(firstStop > 0);
+  await page.keyboard.press("End");
+  assert.equal(await A(() => window.ncsightApp.now), total);
+  await page.keyboard.press("ArrowLeft");
+  assert.ok((await A(() => window.ncsightApp.now)) < total);
+  // Play at 20x, then pause: time goes on.
+  await page.keyboard.press("Home");
+  await page.selectOption("#speed", "20");
+  await page.click("#play");
+  await new Promise((r) => setTimeout(r, 300));
+  await page.click("#play");
+  const played = await A(() => window.ncsightApp.now);
+  assert.ok(played > 1 && played < total, `played to ${played} s`);
+  // Next tool: from the start (T0101 is in place at 0 s), T0303 on line 16.
+  await page.keyboard.press("Home");
+  await page.click("#next-tool");
+  assert.equal(await A(() => window.ncsightApp.runLine), 16);
+  // Run to the cursor: the caret on line 12 (X28.).
+  await A(() => { const ta = document.getElementById("text"); const at = ta.value.split("\n").slice(0, 11).join("\n").length + 1; ta.focus(); ta.setSelectionRange(at, at); });
+  await page.keyboard.press("Home"); // in the editor: the caret's own key, not the player's
+  await A(() => window.ncsightApp.setTime(0));
+  await page.click("#to-cursor");
+  assert.equal(await A(() => window.ncsightApp.runLine), 12);
+  // Zoom with the buttons and the wheel, pan by dragging, fit again.
+  const at0 = await A(() => window.ncsightApp.toScreen(10, 0, -20));
+  await page.click("#zoom-in");
+  const at1 = await A(() => window.ncsightApp.toScreen(10, 0, -20));
+  assert.notDeepEqual(at1, at0);
+  const box = await page.$eval("#plot", (c) => { const r = c.getBoundingClientRect(); return [r.left, r.top, r.width, r.height]; });
+  await page.mouse.move(box[0] + box[2] / 2, box[1] + box[3] / 2);
+  await page.mouse.wheel(0, -300);
+  const at2 = await A(() => window.ncsightApp.toScreen(10, 0, -20));
+  assert.notDeepEqual(at2, at1);
+  await page.mouse.down();
+  await page.mouse.move(box[0] + box[2] / 2 + 80, box[1] + box[3] / 2 + 30, { steps: 4 });
+  await page.mouse.up();
+  const at3 = await A(() => window.ncsightApp.toScreen(10, 0, -20));
+  assert.ok(Math.abs(at3[0] - at2[0] - 80) < 2 && Math.abs(at3[1] - at2[1] - 30) < 2, `panned ${at2} -> ${at3}`);
+  await page.click("#fit");
+  assert.deepEqual(await A(() => window.ncsightApp.toScreen(10, 0, -20)), at0);
+  // The panel: feed override 50 % and dry run each run the programme again.
+  await page.selectOption("#feed-ov", "50");
+  const slower = await A(() => window.ncsightApp.scene.head.total_s);
+  assert.ok(slower > total * 1.3, `${slower} s at 50 % against ${total} s`);
+  await page.selectOption("#feed-ov", "100");
+  await page.check("#dry");
+  assert.notEqual(await A(() => window.ncsightApp.scene.head.total_s), total);
+  await page.uncheck("#dry");
+  await page.check("#single");
+  assert.ok((await A(() => window.ncsightApp.scene.head.total_s)) >= total);
+  await page.uncheck("#single");
+  assert.equal(await A(() => window.ncsightApp.scene.head.total_s), total);
+  // A parameter: the G71 retract by parameter instead of R... any change runs it again.
+  const runs = await A(() => window.ncsightApp.runs);
+  await page.fill("#params", "19=10");
+  await page.dispatchEvent("#params", "change");
+  assert.ok((await A(() => window.ncsightApp.runs)) > runs);
+  // Open a file (GBK, as a GSK controller saves it).
+  const gbk = join(work, "open-gbk.nc");
+  writeFileSync(gbk, Buffer.concat([Buffer.from("G0 X20. Z2. (", "latin1"), Buffer.from([0xb5, 0xb6, 0xbe, 0xdf]), Buffer.from(")\nG1 Z-10. F0.2\nM30\n", "latin1")]));
+  await page.setInputFiles("#file", gbk);
+  await until(page, () => document.getElementById("file-name").textContent === "open-gbk.nc" && window.ncsightApp.scene.n === 2);
+  assert.match(await page.inputValue("#text"), /\(刀具\)/);
+  // The stock typed in: the part is drawn from it.
+  await page.fill("#stock", "40x30");
+  await page.dispatchEvent("#stock", "change");
+  assert.deepEqual(errors, []);
+  await shot(page, "app-controls.png");
+  await context.close();
+});
+
 test("G71/G70 with --stock: axes, ticks and the turned part as a mirrored half-section", async () => {
   const { page, context, errors } = await open(report(join(root, "examples/gsk980tdi_g71_g70_part.nc"), "gsk980tdi", ["--stock", "32x60"]));
   assert.deepEqual(errors, []);
@@ -179,6 +261,19 @@ test("G71/G70 with --stock: axes, ticks and the turned part as a mirrored half-s
   assert.ok(count(start, shade, 8, px - 3, cut - 2, px + 3, cut + 2) > 15);
   // Tick labels along the bottom (a font's dark pixels in the label strip).
   assert.ok(count(img, [55, 71, 79], 40, 50, img.height - 14, img.width, img.height) > 100);
+  await context.close();
+});
+
+test("the thread passes unrolled: a pass out of phase is a line of its own", async () => {
+  const prog = join(work, "split.nc");
+  // The second pass starts 0.5 mm further out on a 2 mm lead: a quarter turn out of phase.
+  writeFileSync(prog, "G97 S300 M03\nG0 X30. Z5.\nG92 X28. Z-20. F2.\nG0 Z5.5\nG92 X27.5 Z-20. F2.\nG0 X40.\nM30\n");
+  const { page, context, errors } = await open(report(prog, "gsk980tdi"));
+  assert.deepEqual(errors, []);
+  assert.equal(await page.isVisible("#passes"), true);
+  const img = await shot(page, "report-passes-split.png", "#passes");
+  const first = count(img, [21, 101, 192], 40), second = count(img, [216, 67, 21], 40);
+  assert.ok(first > 300 && second > 300, `pass 1: ${first} px, pass 2: ${second} px`);
   await context.close();
 });
 

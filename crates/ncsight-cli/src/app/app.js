@@ -33,6 +33,7 @@
       empty: "Paste a programme, drop a file here, or open one.", presses: "presses: {list}", holdat: "hold {t} s", resetat: "reset {t} s",
       more: "{n} more not listed", hole: "holes", view_lathe: "Z–X (lathe)", view_xy: "top X–Y", view_xz: "front X–Z", view_yz: "side Y–Z", view_iso: "3D (isometric)",
       work_zero: "work zero", stockguess: "stock from the programme (type DIAxLEN to set)", part: "part", notrun: "Not run: the text is larger than auto-run allows; press Run.",
+      passes: "Thread passes, unrolled", passes_axis: "spindle angle at the tool's point, down; each pass in its colour (a pass out of phase shows as its own line)", pass: "pass {n}",
       section: "Axial section at 0°, true scale", nominal: "dashed: nominal", unrolled: "Unrolled surface: Z across, angle down, darker is deeper",
       p_param: "parameter", p_value: "value", p_unit: "unit", p_meaning: "meaning", p_source: "source",
       stockfinding: "stock", findings: "{n} finding(s) of the stock simulation", simerror: "The thread could not be simulated on the stock", notsim: "Not simulated", edit: "Edit (slow for a programme this long)", bycheck: "(found by the check; the run stopped before)",
@@ -53,6 +54,7 @@
       empty: "粘贴程序、把文件拖到这里，或打开文件。", presses: "按键：{list}", holdat: "{t} 秒进给保持", resetat: "{t} 秒复位",
       more: "另有 {n} 条未列出", hole: "孔", view_lathe: "Z–X（车床）", view_xy: "俯视 X–Y", view_xz: "正视 X–Z", view_yz: "侧视 Y–Z", view_iso: "三维（等轴测）",
       work_zero: "工件零点", stockguess: "按程序估计的毛坯（输入 直径x长度 设定）", part: "工件", notrun: "未运行：程序太大，不自动运行；请按“运行”。",
+      passes: "螺纹走刀展开图", passes_axis: "纵向为刀尖处的主轴角度；每刀一种颜色（相位不对的一刀自成一条线）", pass: "第 {n} 刀",
       section: "0° 轴向剖面，真实比例", nominal: "虚线：名义牙形", unrolled: "展开表面：横向 Z，纵向角度，越深越暗",
       p_param: "参数", p_value: "值", p_unit: "单位", p_meaning: "含义", p_source: "来源",
       stockfinding: "毛坯", findings: "毛坯仿真发现 {n} 个问题", simerror: "无法在毛坯上仿真螺纹", notsim: "未仿真", edit: "编辑（程序很长，会较慢）", bycheck: "（检查发现；运行在此之前已停止）",
@@ -241,6 +243,16 @@
     lineCount = c;
   }
   const programmeText = () => (big ? big.text : ta.value);
+  /** The text of line `n` (1-based). */
+  function sourceLine(n) {
+    if (big) return big.lines[n - 1] || "";
+    const s = ta.value;
+    let at = 0;
+    for (let k = 1; k < n && at >= 0; k++) { const nl = s.indexOf("\n", at); at = nl < 0 ? -1 : nl + 1; }
+    if (at < 0) return "";
+    const end = s.indexOf("\n", at);
+    return s.slice(at, end < 0 ? s.length : end);
+  }
   const scroller = () => (big ? viewer : ta);
   setProgramme(JOB.text || "");
   function countLines() { let c = 1; const s = ta.value; for (let i = s.indexOf("\n"); i >= 0; i = s.indexOf("\n", i + 1)) c++; lineCount = c; }
@@ -338,7 +350,7 @@
     fresh = false;
     partCache = null;
     if (fitted) fit();
-    showProblems(); showTime(); showParams(); legend(); setTime(now, false); paintEditor();
+    showProblems(); showTime(); showParams(); legend(); showPasses(); setTime(now, false); paintEditor();
     // When the first path was drawn, in ms from navigation (what the size tests measure).
     if (!firstPathMs) firstPathMs = performance.now();
     // Then every diagnostic of a check (the run stops at the first alarm; a check goes on), once
@@ -828,7 +840,7 @@
   }
   /** Move the player to `time`; the source scrolls to the running line unless `follow` is false
    * (a run again after an edit must not pull the editor away from the caret). */
-  function setTime(time, follow) {
+  function setTime(time, follow, atLine) {
     if (!S) return;
     const total = Math.max(S.head.total_s, 1e-9);
     now = Math.max(0, Math.min(total, time));
@@ -836,7 +848,8 @@
     const i = segAt(now);
     // Between motions (a dwell, a spindle wait, a tool change) the record under way is not a motion.
     const between = i >= 0 && now < S.t0[i] - 1e-9 ? (S.eventsBefore.get(i) || []).find((e) => e.t >= now - 1e-9) : null;
-    const line = between ? between.l : i >= 0 ? S.line[i] : 0;
+    // `atLine`: the record the caller went to (a tool change at the moment a move ends).
+    const line = atLine || (between ? between.l : i >= 0 ? S.line[i] : 0);
     if (line !== runLine) { runLine = line; if (runLine && follow !== false) showLine(runLine, false); else paintEditor(); }
     updateState(i, between);
     draw();
@@ -853,6 +866,9 @@
       pos,
       t("spindle") + " " + (th ? th[2] : rpm) + " rpm" + (th ? "   " + t("lead") + " " + S.rate[i] + " mm   " + t("angle") + " " + (((th[1] + 360 * Math.abs(th[2]) * Math.max(0, now - S.t0[i]) / 60) % 360)).toFixed(1) + "°" : k === 1 || k === 2 ? "   " + t("feedrate") + " " + S.rate[i] + " mm/min" : ""),
     ];
+    // The block's sequence number, as the controller shows it.
+    const nWord = runLine ? /^\s*\/?\s*N\s*(\d+)/i.exec(sourceLine(runLine)) : null;
+    if (nWord) lines[0] = lines[0].replace(t("state_line") + " " + runLine, t("state_line") + " " + runLine + " (N" + nWord[1] + ")");
     $("state").textContent = lines.join("\n");
     $("clock").textContent = hms(now);
   }
@@ -878,7 +894,8 @@
   }
   function nextTool() {
     const e = S && S.head.events.find((x) => x.k === "tool" && x.t > now + 1e-9);
-    setTime(e ? e.t : S ? S.head.total_s : 0);
+    if (e) setTime(e.t, true, e.l);
+    else if (S) setTime(S.head.total_s);
   }
   function toCursor() {
     if (!S) return;
@@ -1015,6 +1032,57 @@
   $("file").addEventListener("change", (e) => { if (e.target.files[0]) load(e.target.files[0]); });
   document.addEventListener("dragover", (e) => e.preventDefault());
   document.addEventListener("drop", (e) => { e.preventDefault(); const f = e.dataTransfer && e.dataTransfer.files[0]; if (f) load(f); });
+
+  // ---- the thread passes, unrolled: the long axis across, the spindle angle down ------------
+  // Each pass is the line the tool's point follows on the surface, in its own colour: passes that
+  // line up lie on each other; a split thread (a pass out of phase) shows as a second line.
+  const PASS_COLOURS = ["#1565c0", "#d84315", "#2e7d32", "#6a1b9a", "#00838f", "#ef6c00", "#ad1457", "#5d4037"];
+  function showPasses() {
+    const box = $("passes-box");
+    const threads = S.head.threads.filter((r) => !(S.kind[r[0]] & 32));
+    box.hidden = !threads.length;
+    if (!threads.length) return;
+    const c = $("passes"), g = c.getContext("2d"), W = c.width, Hc = c.height;
+    // Along the axis that moves more in each pass (Z for most threads, X for a face thread).
+    const along = (i) => { const o = 6 * i; return Math.abs(S.p[o + 5] - S.p[o + 2]) >= Math.abs(S.p[o + 3] - S.p[o]) ? 2 : 0; };
+    let a0 = Infinity, a1 = -Infinity;
+    threads.forEach((r) => { const o = 6 * r[0], ax = along(r[0]); a0 = Math.min(a0, S.p[o + ax], S.p[o + 3 + ax]); a1 = Math.max(a1, S.p[o + ax], S.p[o + 3 + ax]); });
+    if (!(a1 > a0)) { box.hidden = true; return; }
+    const L = 50, R = 20, T = 24, B = 44;
+    const X = (a) => L + (a - a0) / (a1 - a0) * (W - L - R), Y = (deg) => T + deg / 360 * (Hc - T - B);
+    g.fillStyle = "#fff"; g.fillRect(0, 0, W, Hc);
+    g.strokeStyle = "#dde2e7"; g.lineWidth = 1; g.fillStyle = "#37474f"; g.font = "11px system-ui,sans-serif";
+    g.textAlign = "right"; g.textBaseline = "middle";
+    for (let d = 0; d <= 360; d += 90) { g.beginPath(); g.moveTo(L, Y(d)); g.lineTo(W - R, Y(d)); g.stroke(); g.fillText(d + "°", L - 4, Y(d)); }
+    const step = niceStep((a1 - a0) / 8);
+    g.textAlign = "center"; g.textBaseline = "top";
+    for (let a = Math.ceil(a0 / step) * step; a <= a1 + 1e-9; a += step) { g.beginPath(); g.moveTo(X(a), T); g.lineTo(X(a), Hc - B); g.stroke(); g.fillText(numLabel(a), X(a), Hc - B + 4); }
+    g.textAlign = "left"; g.fillText((along(threads[0][0]) === 2 ? "Z" : "X") + " mm", W - R - 30, Hc - 16);
+    g.textBaseline = "top"; g.fillText(t("passes_axis"), 4, 4);
+    const passes = new Set();
+    threads.forEach((r) => {
+      const i = r[0], o = 6 * i, ax = along(i), lead = S.rate[i];
+      if (!(lead > 0)) return;
+      const from = S.p[o + ax], to = S.p[o + 3 + ax];
+      g.strokeStyle = PASS_COLOURS[(r[3] - 1) % PASS_COLOURS.length]; g.lineWidth = 1.6;
+      passes.add(r[3]);
+      // The angle grows by 360 degrees per lead along the axis; the line wraps at 360 (each
+      // turn drawn whole, at most 5000 turns a pass).
+      const turns = Math.abs(to - from) / lead, at = (f) => from + (to - from) * f;
+      g.beginPath();
+      let f = 0, ang = ((r[1] % 360) + 360) % 360;
+      for (let k = 0; f < 1 - 1e-12 && k < 5000; k++) {
+        const fNext = turns > 0 ? Math.min(1, f + (360 - ang) / (360 * turns)) : 1;
+        g.moveTo(X(at(f)), Y(ang));
+        g.lineTo(X(at(fNext)), Y(ang + 360 * turns * (fNext - f)));
+        f = fNext; ang = 0;
+      }
+      g.stroke();
+    });
+    // The legend along the bottom.
+    let x = L;
+    [...passes].sort((a, b) => a - b).slice(0, 10).forEach((p) => { g.fillStyle = PASS_COLOURS[(p - 1) % PASS_COLOURS.length]; g.fillRect(x, Hc - 12, 14, 3); g.fillStyle = "#37474f"; g.fillText(t("pass", { n: p }), x + 18, Hc - 16); x += 76; });
+  }
 
   // ---- the thread from the stock simulation (ncsight report --stock) ---------------------------
   function showThread() {
