@@ -148,6 +148,17 @@ test("report O0012: the thread, the player follows the source, a click in the pl
   await page.click("#hold");
   assert.match(await page.textContent("#presses"), /hold 4\.50 s/);
   assert.notEqual(await app(page, () => window.ncsightApp.scene.head.total_s), before);
+  // The hold parameter (GSK980TDi NO.18 bit 6): set in the parameter table, the same press
+  // finishes the pass before stopping instead of pulling out at once.
+  const pulledOut = await app(page, () => window.ncsightApp.scene.head.total_s);
+  await page.click("#params-box summary");
+  await page.check('#param-table input[data-param="18.6"]');
+  assert.match(await page.inputValue("#params"), /^18\.6=1$/m);
+  const finished = await app(page, () => window.ncsightApp.scene.head.total_s);
+  assert.notEqual(finished, pulledOut);
+  assert.equal(await page.isChecked('#param-table input[data-param="18.6"]'), true);
+  await page.uncheck('#param-table input[data-param="18.6"]');
+  assert.match(await page.inputValue("#params"), /^18\.6=0$/m);
   await page.click("#clear-buttons");
   assert.equal(await app(page, () => window.ncsightApp.scene.head.total_s), before);
   // Time by tool, as a person reads it.
@@ -261,6 +272,12 @@ test("G71/G70 with --stock: axes, ticks and the turned part as a mirrored half-s
   assert.ok(count(start, shade, 8, px - 3, cut - 2, px + 3, cut + 2) > 15);
   // Tick labels along the bottom (a font's dark pixels in the label strip).
   assert.ok(count(img, [55, 71, 79], 40, 50, img.height - 14, img.width, img.height) > 100);
+  // The part as a solid: its lit front face (the end at Z0) and the shaded body.
+  await app(page, () => window.ncsightApp.setTime(window.ncsightApp.scene.head.total_s));
+  await page.selectOption("#view", "part3d");
+  const solid = await shot(page, "report-g71-part3d.png", "#plot");
+  assert.ok(count(solid, [207, 216, 220], 3) > 2000, "the front face");
+  assert.ok(count(solid, [69, 90, 100], 25) > 2000, "the shaded underside");
   await context.close();
 });
 

@@ -31,7 +31,7 @@
       total: "Total", bytool: "By tool", byop: "By operation", feedk: "feed", arc: "arc", threadk: "thread", dwell: "dwell", turn: "rotary turn", waits: "spindle, tool change, stops",
       line: "line", col: "col", state_t: "t", state_line: "line", spindle: "spindle", angle: "angle", lead: "lead", feedrate: "feed",
       empty: "Paste a programme, drop a file here, or open one.", presses: "presses: {list}", holdat: "hold {t} s", resetat: "reset {t} s",
-      more: "{n} more not listed", hole: "holes", view_lathe: "Z–X (lathe)", view_xy: "top X–Y", view_xz: "front X–Z", view_yz: "side Y–Z", view_iso: "3D (isometric)",
+      more: "{n} more not listed", hole: "holes", view_lathe: "Z–X (lathe)", view_xy: "top X–Y", view_xz: "front X–Z", view_yz: "side Y–Z", view_iso: "3D (isometric)", view_part3d: "3D part",
       work_zero: "work zero", stockguess: "stock from the programme (type DIAxLEN to set)", part: "part", notrun: "Not run: the text is larger than auto-run allows; press Run.",
       passes: "Thread passes, unrolled", passes_axis: "spindle angle at the tool's point, down; each pass in its colour (a pass out of phase shows as its own line)", pass: "pass {n}",
       section: "Axial section at 0°, true scale", nominal: "dashed: nominal", unrolled: "Unrolled surface: Z across, angle down, darker is deeper",
@@ -52,7 +52,7 @@
       total: "合计", bytool: "按刀具", byop: "按动作", feedk: "切削进给", arc: "圆弧", threadk: "螺纹", dwell: "暂停", turn: "回转轴", waits: "主轴、换刀、停止",
       line: "行", col: "列", state_t: "时间", state_line: "行", spindle: "主轴", angle: "角度", lead: "导程", feedrate: "进给",
       empty: "粘贴程序、把文件拖到这里，或打开文件。", presses: "按键：{list}", holdat: "{t} 秒进给保持", resetat: "{t} 秒复位",
-      more: "另有 {n} 条未列出", hole: "孔", view_lathe: "Z–X（车床）", view_xy: "俯视 X–Y", view_xz: "正视 X–Z", view_yz: "侧视 Y–Z", view_iso: "三维（等轴测）",
+      more: "另有 {n} 条未列出", hole: "孔", view_lathe: "Z–X（车床）", view_xy: "俯视 X–Y", view_xz: "正视 X–Z", view_yz: "侧视 Y–Z", view_iso: "三维（等轴测）", view_part3d: "三维工件",
       work_zero: "工件零点", stockguess: "按程序估计的毛坯（输入 直径x长度 设定）", part: "工件", notrun: "未运行：程序太大，不自动运行；请按“运行”。",
       passes: "螺纹走刀展开图", passes_axis: "纵向为刀尖处的主轴角度；每刀一种颜色（相位不对的一刀自成一条线）", pass: "第 {n} 刀",
       section: "0° 轴向剖面，真实比例", nominal: "虚线：名义牙形", unrolled: "展开表面：横向 Z，纵向角度，越深越暗",
@@ -179,6 +179,8 @@
   const view = { s: 1, ou: 0, ov: 0, kind: "lathe" };
   const VIEWS = {
     lathe: { pu: [0, 0, 1], pv: [1, 0, 0], names: ["Z", "X Ø"] },
+    // The turned part as a solid, seen from a little in front of the spindle's end (25 degrees).
+    part3d: { pu: [0, 0.4226, 0.9063], pv: [1, 0, 0], names: ["", ""], solid: true },
     xy: { pu: [1, 0, 0], pv: [0, 1, 0], names: ["X", "Y"] },
     xz: { pu: [1, 0, 0], pv: [0, 0, 1], names: ["X", "Z"] },
     yz: { pu: [0, 1, 0], pv: [0, 0, 1], names: ["Y", "Z"] },
@@ -197,7 +199,7 @@
     const sel = $("view");
     const keep = sel.value;
     while (sel.firstChild) sel.removeChild(sel.firstChild);
-    (lathe ? ["lathe"] : ["xy", "xz", "yz", "iso"]).forEach((k) => sel.appendChild(el("option", { value: k }, t("view_" + k))));
+    (lathe ? ["lathe", "part3d"] : ["xy", "xz", "yz", "iso"]).forEach((k) => sel.appendChild(el("option", { value: k }, t("view_" + k))));
     sel.value = [...sel.options].some((o) => o.value === keep) ? keep : sel.options[0].value;
     view.kind = sel.value;
   }
@@ -450,12 +452,32 @@
     table(t("bytool"), [...byTool].sort((a, b) => b[1] - a[1]).map(([k, v]) => ["T" + String(k).padStart(2, "0"), v]), "time-by-tool");
     table(t("byop"), [...byOp].sort((a, b) => b[1] - a[1]), "time-by-op");
   }
+  /** Set parameter `key` to `value` in the parameters box, in place of an earlier setting of it. */
+  function setParam(key, value) {
+    const lines = $("params").value.split("\n").map((l) => l.trim()).filter((l) => l && l.split("=")[0].trim() !== key);
+    lines.push(key + "=" + value);
+    $("params").value = lines.join("\n");
+    rerun();
+  }
   function showParams() {
     const box = $("param-table");
     box.textContent = "";
     const tb = el("table");
     const hr = el("tr"); ["p_param", "p_value", "p_unit", "p_meaning", "p_source"].forEach((h) => hr.appendChild(el("th", {}, t(h)))); tb.appendChild(hr);
-    S.head.params.forEach((p) => { const tr = el("tr"); p.forEach((c) => tr.appendChild(el("td", {}, c))); tb.appendChild(tr); });
+    // Each value can be set here: a bit by its box, a number by its field; the setting goes into
+    // the parameters box (N=V) and the programme runs again (NO.18 bit 6, the G92 hold, say).
+    S.head.params.forEach((p) => {
+      const tr = el("tr", { "data-param": p[0] });
+      tr.appendChild(el("td", {}, p[0]));
+      const td = el("td");
+      const input = p[2] === "bit" ? el("input", { type: "checkbox", "data-param": p[0] }) : el("input", { type: "number", step: "any", size: "8", "data-param": p[0] });
+      if (p[2] === "bit") input.checked = Number(p[1]) === 1; else input.value = String(p[1]);
+      input.addEventListener("change", () => setParam(p[0], p[2] === "bit" ? (input.checked ? "1" : "0") : input.value));
+      td.appendChild(input);
+      tr.appendChild(td);
+      p.slice(2).forEach((c) => tr.appendChild(el("td", {}, c)));
+      tb.appendChild(tr);
+    });
     (JOB.settings || []).forEach((s) => box.appendChild(el("div", {}, s)));
     box.appendChild(tb);
   }
@@ -492,6 +514,9 @@
     for (let j = 0; j < S.h; j++) addPt(S.holeAt[3 * j], S.holeAt[3 * j + 1], S.holeAt[3 * j + 2]);
     if (!isFinite(u0)) for (let i = 0; i < S.n; i++) { const o = 6 * i; addPt(p[o + 3], p[o + 4], p[o + 5]); }
     if (!isFinite(u0)) { u0 = -10; u1 = 10; v0 = -10; v1 = 10; }
+    // The solid view fits the whole bar, both sides of the axis.
+    const st = pv.solid ? stock() : null;
+    if (st) { addPt(st.diameter / 2, 0, st.front - st.length); addPt(-st.diameter / 2, 0, st.front); }
     const w = Math.max(u1 - u0, 1e-3), h = Math.max(v1 - v0, 1e-3);
     const m = 0.1;
     view.s = Math.min(cw / (w * (1 + 2 * m)), ch / (h * (1 + 2 * m) + 60 / Math.max(ch, 1) * h));
@@ -569,7 +594,8 @@
     if (!S) { lastDrawMs = performance.now() - t0; return; }
     const pv = V(), A = pv.pu, B = pv.pv;
     const st = lathe ? stock() : null;
-    if (st) drawStock(st);
+    if (st && pv.solid) drawSolid(st);
+    else if (st) drawStock(st);
     if (lathe) {
       // The spindle centre line, over the part.
       ctx.strokeStyle = "#455a64"; ctx.lineWidth = 1.2; ctx.setLineDash([14, 4, 3, 4]);
@@ -579,7 +605,34 @@
     for (const [name, f] of parts) { const a = performance.now(); f(A, B); drawParts[name] = performance.now() - a; }
     lastDrawMs = performance.now() - t0;
   }
+  /** The turned part as a solid of revolution: its cross-sections from the chuck forward, each an
+   * ellipse (the yaw of the view), shaded as a lit cylinder; edges where the diameter steps. */
+  function drawSolid(st) {
+    const P = part(st), yaw = Math.asin(V().pu[1]), cz = Math.cos(yaw), sz = Math.sin(yaw);
+    const grad = (r) => {
+      const g = ctx.createLinearGradient(0, sy(r), 0, sy(-r));
+      g.addColorStop(0, "#eceff1"); g.addColorStop(0.35, "#b0bec5"); g.addColorStop(1, "#455a64");
+      return g;
+    };
+    let last = -1;
+    for (let j = 0; j < COLS; j++) {
+      const r = P.r[j];
+      if (r <= 0) { last = r; continue; }
+      const x = sx((P.z0 + (j + 0.5) * P.dz) * cz);
+      ctx.fillStyle = grad(r);
+      ctx.beginPath(); ctx.ellipse(x, sy(0), Math.max(0.5, r * sz * view.s), r * view.s, 0, 0, 2 * Math.PI); ctx.fill();
+      if (Math.abs(r - last) > 1e-6) { ctx.strokeStyle = "rgba(38,50,56,0.6)"; ctx.lineWidth = 1; ctx.stroke(); }
+      last = r;
+    }
+    // The front face, lit flat.
+    const rf = P.r[COLS - 1];
+    if (rf > 0) {
+      ctx.fillStyle = "#cfd8dc"; ctx.strokeStyle = "#37474f";
+      ctx.beginPath(); ctx.ellipse(sx((P.z0 + COLS * P.dz) * cz), sy(0), Math.max(0.5, rf * sz * view.s), rf * view.s, 0, 0, 2 * Math.PI); ctx.fill(); ctx.stroke();
+    }
+  }
   function drawGrid() {
+    if (V().solid) { ctx.fillStyle = "#f4f6f8"; ctx.fillRect(0, 0, cw, ch); return; }
     const step = niceStep(80 / view.s), minor = step / 5;
     const u0 = view.ou, u1 = view.ou + cw / view.s, v0 = view.ov, v1 = view.ov + ch / view.s;
     ctx.lineWidth = 1;
@@ -743,7 +796,7 @@
       extentsCache = { S, kind: view.kind, u0, u1, v0, v1 };
     }
     const { u0, u1, v0, v1 } = extentsCache;
-    if (!isFinite(u0) || view.kind === "iso") return;
+    if (!isFinite(u0) || view.kind === "iso" || V().solid) return;
     ctx.strokeStyle = "#00695c"; ctx.fillStyle = "#00695c"; ctx.lineWidth = 1; ctx.font = "11px system-ui,sans-serif";
     const yb = Math.min(ch - 26, sy(lathe ? Math.min(v0, -(v1)) : v0) + 16), xr = Math.min(cw - 30, sx(u1) + 16);
     const arrow = (x0, y0, x1, y1) => {
