@@ -148,6 +148,10 @@ test("report O0012: the thread, the player follows the source, a click in the pl
   // A click on the second pass (X57.7 from Z5 to Z-28, at Z-10) selects line 5.
   const [x, y] = await app(page, () => window.ncsightApp.toScreen(57.7 / 2, 0, -10));
   const canvas = await page.$eval("#plot", (c) => { const r = c.getBoundingClientRect(); return [r.left, r.top]; });
+  // Hovering it names the block.
+  await page.mouse.move(canvas[0] + x, canvas[1] + y);
+  await until(page, () => !document.getElementById("tip").hidden);
+  assert.match(await page.textContent("#tip"), /^line 5: thread/);
   await page.mouse.click(canvas[0] + x, canvas[1] + y);
   assert.equal(await app(page, () => window.ncsightApp.selLine), 5);
   // The operator panel: FEED HOLD in the middle of a pass runs the programme again with it.
