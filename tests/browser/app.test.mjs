@@ -194,6 +194,23 @@ test("every control: play, speed, next tool, run to cursor, keys, zoom, pan, fit
   assert.equal(await A(() => window.ncsightApp.now), total);
   await page.keyboard.press("ArrowLeft");
   assert.ok((await A(() => window.ncsightApp.now)) < total);
+  // T: the next tool; + and -: zoom about the middle; F: fit again; space: play and pause.
+  await page.keyboard.press("Home");
+  await page.keyboard.press("t");
+  assert.equal(await A(() => window.ncsightApp.runLine), 16);
+  const fitted = await A(() => window.ncsightApp.toScreen(10, 0, -20));
+  await page.keyboard.press("+");
+  assert.notDeepEqual(await A(() => window.ncsightApp.toScreen(10, 0, -20)), fitted);
+  await page.keyboard.press("-");
+  await page.keyboard.press("-");
+  await page.keyboard.press("f");
+  assert.deepEqual(await A(() => window.ncsightApp.toScreen(10, 0, -20)), fitted);
+  await page.keyboard.press("Home");
+  await page.keyboard.press(" ");
+  await new Promise((r) => setTimeout(r, 200));
+  await page.keyboard.press(" ");
+  const spaced = await A(() => window.ncsightApp.now);
+  assert.ok(spaced > 0 && spaced < total, `space played to ${spaced} s`);
   // Play at 20x, then pause: time goes on.
   await page.keyboard.press("Home");
   await page.selectOption("#speed", "20");
@@ -237,9 +254,15 @@ test("every control: play, speed, next tool, run to cursor, keys, zoom, pan, fit
   await page.check("#dry");
   assert.notEqual(await A(() => window.ncsightApp.scene.head.total_s), total);
   await page.uncheck("#dry");
+  await page.selectOption("#rapid-ov", "25");
+  assert.ok((await A(() => window.ncsightApp.scene.head.total_s)) > total, "rapids at 25 %");
+  await page.selectOption("#rapid-ov", "100");
+  const before = await A(() => window.ncsightApp.runs);
   await page.check("#single");
+  assert.equal(await A(() => window.ncsightApp.runs), before + 1);
   assert.ok((await A(() => window.ncsightApp.scene.head.total_s)) >= total);
   await page.uncheck("#single");
+  assert.equal(await A(() => window.ncsightApp.runs), before + 2);
   assert.equal(await A(() => window.ncsightApp.scene.head.total_s), total);
   // A parameter: the G71 retract by parameter instead of R... any change runs it again.
   const runs = await A(() => window.ncsightApp.runs);
@@ -252,9 +275,12 @@ test("every control: play, speed, next tool, run to cursor, keys, zoom, pan, fit
   await page.setInputFiles("#file", gbk);
   await until(page, () => document.getElementById("file-name").textContent === "open-gbk.nc" && window.ncsightApp.scene.n === 2);
   assert.match(await page.inputValue("#text"), /\(刀具\)/);
-  // The stock typed in: the part is drawn from it.
+  // The stock typed in: the part is drawn from it (Ø40 beyond the cut, Ø20 where G1 turned it).
   await page.fill("#stock", "40x30");
   await page.dispatchEvent("#stock", "change");
+  const radii = await A(() => window.ncsightApp.part());
+  assert.equal(radii[0], 20);
+  assert.equal(radii[radii.length - 1], 10);
   assert.deepEqual(errors, []);
   await shot(page, "app-controls.png");
   await context.close();
@@ -288,7 +314,9 @@ test("G71/G70 with --stock: axes, ticks and the turned part as a mirrored half-s
   await app(page, () => window.ncsightApp.setTime(window.ncsightApp.scene.head.total_s));
   await page.selectOption("#view", "part3d");
   const solid = await shot(page, "report-g71-part3d.png", "#plot");
-  assert.ok(count(solid, [207, 216, 220], 3) > 2000, "the front face");
+  // The front face (the end at Z0), lit flat, around the axis.
+  const [fx, fy] = (await app(page, () => window.ncsightApp.toScreen(0, 0, 0))).map(Math.round);
+  assert.ok(count(solid, [207, 216, 220], 3, fx - 6, fy - 20, fx + 6, fy + 20) > 150, "the front face");
   assert.ok(count(solid, [69, 90, 100], 25) > 2000, "the shaded underside");
   await context.close();
 });
@@ -304,6 +332,12 @@ test("the thread passes unrolled: a pass out of phase is a line of its own", asy
   const first = count(img, [21, 101, 192], 40), second = count(img, [216, 67, 21], 40);
   assert.ok(first > 300 && second > 300, `pass 1: ${first} px, pass 2: ${second} px`);
   await context.close();
+  // O0012's four passes start in phase: they lie on each other, the last one drawn on top.
+  const o = await open(report(join(root, "examples/gsk980tdi_o0012.nc"), "gsk980tdi"));
+  const same = await shot(o.page, "report-passes-o0012.png", "#passes");
+  const p1 = count(same, [21, 101, 192], 20, 50, 24, same.width, same.height - 44), p4 = count(same, [106, 27, 154], 20, 50, 24, same.width, same.height - 44);
+  assert.ok(p4 > 300 && p1 < p4 / 10, `pass 4: ${p4} px, pass 1 showing: ${p1} px`);
+  await o.context.close();
 });
 
 test("the thread: the true-scale section with the nominal M24x2 over it, dimensioned", async () => {
@@ -314,6 +348,9 @@ test("the thread: the true-scale section with the nominal M24x2 over it, dimensi
   assert.ok(count(img, [176, 190, 197], 6) > 5000, "the metal of the section");
   assert.ok(count(img, [211, 47, 47], 40) > 100, "the nominal profile, dashed red");
   assert.match(await page.textContent("#thread"), /pitch\s*2\.000 mm/);
+  // Cropped to the thread (Z0 to Z-26 on the M24x2 stud), not to the turned shank beside it.
+  const [z0, z1] = await page.$eval("#thread-section", (c) => [+c.getAttribute("data-z0"), +c.getAttribute("data-z1")]);
+  assert.ok(z0 >= -26 && z1 <= 0 && z1 - z0 > 7, `section from Z${z0} to Z${z1}`);
   await context.close();
 });
 

@@ -36,7 +36,7 @@
       passes: "Thread passes, unrolled", passes_axis: "spindle angle at the tool's point, down; each pass in its colour (a pass out of phase shows as its own line)", pass: "pass {n}",
       section: "Axial section at 0°, true scale", nominal: "dashed: nominal", unrolled: "Unrolled surface: Z across, angle down, darker is deeper",
       p_param: "parameter", p_value: "value", p_unit: "unit", p_meaning: "meaning", p_source: "source",
-      stockfinding: "stock", findings: "{n} finding(s) of the stock simulation", simerror: "The thread could not be simulated on the stock", notsim: "Not simulated", edit: "Edit (slow for a programme this long)", bycheck: "(found by the check; the run stopped before)",
+      stockfinding: "stock", findings: "{n} finding(s) of the stock simulation", simerror: "The thread could not be simulated on the stock", notsim: "Not simulated", edit: "Edit (slow for a programme this long)", bycheck: "(found by the check; the run stopped before)", bycheck_ended: "(found by the check)",
       seconds: "s", of: "of", block: "block", kinds: { 0: "rapid", 1: "feed", 2: "arc", 3: "thread", 4: "thread arc" },
       threadtitle: "Computed by ncsight report for the programme as it was written (not re-run on edit).",
     },
@@ -57,7 +57,7 @@
       passes: "螺纹走刀展开图", passes_axis: "纵向为刀尖处的主轴角度；每刀一种颜色（相位不对的一刀自成一条线）", pass: "第 {n} 刀",
       section: "0° 轴向剖面，真实比例", nominal: "虚线：名义牙形", unrolled: "展开表面：横向 Z，纵向角度，越深越暗",
       p_param: "参数", p_value: "值", p_unit: "单位", p_meaning: "含义", p_source: "来源",
-      stockfinding: "毛坯", findings: "毛坯仿真发现 {n} 个问题", simerror: "无法在毛坯上仿真螺纹", notsim: "未仿真", edit: "编辑（程序很长，会较慢）", bycheck: "（检查发现；运行在此之前已停止）",
+      stockfinding: "毛坯", findings: "毛坯仿真发现 {n} 个问题", simerror: "无法在毛坯上仿真螺纹", notsim: "未仿真", edit: "编辑（程序很长，会较慢）", bycheck: "（检查发现；运行在此之前已停止）", bycheck_ended: "（检查发现）",
       seconds: "秒", of: "/", block: "段", kinds: { 0: "快速", 1: "直线", 2: "圆弧", 3: "螺纹", 4: "圆弧螺纹" },
       threadtitle: "由 ncsight report 按原程序计算（编辑后不重算）。",
     },
@@ -81,12 +81,16 @@
   let engine = null;
   const enc = new TextEncoder();
   function compileEngine() {
-    const b64 = $("ncsight-engine").textContent.trim();
-    if (!b64) return Promise.reject(new Error("this page was written without its engine"));
-    const bin = atob(b64);
-    const bytes = new Uint8Array(bin.length);
-    for (let i = 0; i < bin.length; i++) bytes[i] = bin.charCodeAt(i);
-    return WebAssembly.compile(bytes);
+    try {
+      const b64 = $("ncsight-engine").textContent.trim();
+      if (!b64) throw new Error("this page was written without its engine");
+      const bin = atob(b64);
+      const bytes = new Uint8Array(bin.length);
+      for (let i = 0; i < bin.length; i++) bytes[i] = bin.charCodeAt(i);
+      return WebAssembly.compile(bytes);
+    } catch (e) {
+      return Promise.reject(e);
+    }
   }
   /** A fresh instance of the engine (again after a trap: its memory is then not to be trusted). */
   async function loadEngine() {
@@ -179,7 +183,8 @@
   const view = { s: 1, ou: 0, ov: 0, kind: "lathe" };
   const VIEWS = {
     lathe: { pu: [0, 0, 1], pv: [1, 0, 0], names: ["Z", "X Ø"] },
-    // The turned part as a solid, seen from a little in front of the spindle's end (25 degrees).
+    // The turned part as a solid, seen from the side turned 25 degrees towards the spindle's end
+    // (the axis at 65 degrees to the line of sight).
     part3d: { pu: [0, 0.4226, 0.9063], pv: [1, 0, 0], names: ["", ""], solid: true },
     xy: { pu: [1, 0, 0], pv: [0, 1, 0], names: ["X", "Y"] },
     xz: { pu: [1, 0, 0], pv: [0, 0, 1], names: ["X", "Z"] },
@@ -300,6 +305,7 @@
   ta.addEventListener("click", () => { selLine = caretLine(); paintEditor(); draw(); });
   let debounce = 0;
   ta.addEventListener("input", () => {
+    simCurrent = false;
     countLines(); paintEditor();
     if (!$("auto").checked) return;
     clearTimeout(debounce);
@@ -324,18 +330,24 @@
   }
   function banner(cls, text) { const b = $("banner"); b.className = cls; b.textContent = text; }
   function run() {
-    if (!engine) return;
-    const machine = $("machine").value;
+    const generation = ++runs;
+    if (!engine) {
+      // A new engine is on its way (after a trap): run when it is there.
+      banner("warning", t("running"));
+      loadEngine().then(run).catch((e) => banner("usage", t("usage", { msg: String(e.message || e) })));
+      return;
+    }
+    const machine = $("machine").value, params = $("params").value, options = optionsText();
     const t0 = performance.now();
     const textBytes = enc.encode(programmeText());
     let buf;
     try {
-      buf = callEngine("ncsight_scene", textBytes, machine, $("params").value, JOB.setup || "", optionsText());
+      buf = callEngine("ncsight_scene", textBytes, machine, params, JOB.setup || "", options);
     } catch (e) {
       // The engine stopped (a trap): say so, and start a fresh one for the next run.
       banner("usage", t("usage", { msg: "engine error: " + String(e.message || e) }));
       engine = null;
-      loadEngine().catch(() => {});
+      loadEngine().catch((e) => banner("usage", t("usage", { msg: String(e.message || e) })));
       return;
     }
     const next = parseScene(buf);
@@ -357,10 +369,13 @@
     if (!firstPathMs) firstPathMs = performance.now();
     // Then every diagnostic of a check (the run stops at the first alarm; a check goes on), once
     // the path is drawn.
-    const generation = ++runs;
     setTimeout(() => {
       if (generation !== runs || !engine) return;
-      try { addCheck(callEngine("ncsight_check", textBytes, machine, $("params").value, JOB.setup || "", optionsText())); } catch (e) { engine = null; loadEngine().catch(() => {}); }
+      try { addCheck(callEngine("ncsight_check", textBytes, machine, params, JOB.setup || "", options)); } catch (e) {
+        banner("usage", t("usage", { msg: "engine error in the check: " + String(e.message || e) }));
+        engine = null;
+        loadEngine().catch(() => {});
+      }
     }, 0);
   }
   let runs = 0;
@@ -369,17 +384,17 @@
     const text = new TextDecoder().decode(new Uint8Array(buf));
     if (text.startsWith("NCSE") || !S) return;
     const C = JSON.parse(text), H = S.head;
-    const seen = new Set(H.diagnostics.map((d) => d.l + ":" + d.c + ":" + d.code));
-    let added = 0;
-    C.diagnostics.forEach((d) => {
-      if (seen.has(d.l + ":" + d.c + ":" + d.code) || H.diagnostics.length >= 10000) return;
-      d.check = true;
-      H.diagnostics.push(d);
-      added++;
-    });
-    if (!added) return;
-    H.diagnostics.sort((a, b) => a.l - b.l || a.c - b.c);
-    H.diagnostics_total = Math.max(H.diagnostics_total + added, H.diagnostics.length);
+    // The same diagnostic from the run and the check: same place, code and message (the message
+    // names the line of another file).
+    const key = (d) => d.l + ":" + d.c + ":" + d.code + ":" + d.msg;
+    const seen = new Set(H.diagnostics.map(key));
+    const extra = C.diagnostics.filter((d) => !seen.has(key(d)));
+    if (!extra.length) return;
+    // The run's own stay first, in the order raised; the check's follow, by line.
+    extra.sort((a, b) => a.l - b.l || a.c - b.c).forEach((d) => { d.check = true; });
+    const room = Math.max(0, 10000 - H.diagnostics.length);
+    H.diagnostics.push(...extra.slice(0, room));
+    H.diagnostics_total = Math.max(H.diagnostics_total + extra.length, C.total);
     H.alarms_total = Math.max(H.alarms_total || 0, C.alarms || 0);
     H.diagnostics.forEach((d) => { if (diagByLine.get(d.l) !== "alarm") diagByLine.set(d.l, d.sev); });
     showProblems(); paintEditor(); draw();
@@ -401,15 +416,15 @@
     const frag = document.createDocumentFragment();
     // What the stock simulation could not do, and its findings (crash, chuck, phase, deviation),
     // come first.
-    if (JOB.sim_error) frag.appendChild(el("div", { class: "p warning notice" }, t("simerror") + ": " + JOB.sim_error));
-    ((JOB.sim && JOB.sim.findings) || []).filter((f) => f.kind === "not_simulated").forEach((f) => frag.appendChild(el("div", { class: "p warning notice" }, t("notsim") + " (" + t("line") + " " + f.line + "): " + f.message)));
+    if (JOB.sim_error && simCurrent) frag.appendChild(el("div", { class: "p warning notice" }, t("simerror") + ": " + JOB.sim_error));
+    (simCurrent && JOB.sim && JOB.sim.findings ? JOB.sim.findings : []).filter((f) => f.kind === "not_simulated").forEach((f) => frag.appendChild(el("div", { class: "p warning notice" }, t("notsim") + " (" + t("line") + " " + f.line + "): " + f.message)));
     stockFindings().forEach((f) => {
       const p = el("div", { class: "p alarm finding", "data-line": f.line }, t("stockfinding") + " · " + f.kind + " · " + t("line") + " " + f.line + (f.x !== undefined ? " · X " + f.x + " Z " + f.z : "") + " · " + f.message);
       p.addEventListener("click", () => { select(f.line, true); if (f.t !== undefined) setTime(f.t); });
       frag.appendChild(p);
     });
     H.diagnostics.slice(0, 500).forEach((d) => {
-      const p = el("div", { class: "p " + d.sev, "data-line": d.l }, t("line") + " " + d.l + " " + t("col") + " " + d.c + " · " + d.code + " · " + d.msg + (d.hint ? " (" + d.hint + ")" : "") + (d.check ? " " + t("bycheck") : ""));
+      const p = el("div", { class: "p " + d.sev, "data-line": d.l }, t("line") + " " + d.l + " " + t("col") + " " + d.c + " · " + d.code + " · " + d.msg + (d.hint ? " (" + d.hint + ")" : "") + (d.check ? " " + t(H.status === "ended" ? "bycheck_ended" : "bycheck") : ""));
       p.addEventListener("click", () => select(d.l, true));
       frag.appendChild(p);
     });
@@ -516,7 +531,11 @@
     if (!isFinite(u0)) { u0 = -10; u1 = 10; v0 = -10; v1 = 10; }
     // The solid view fits the whole bar, both sides of the axis.
     const st = pv.solid ? stock() : null;
-    if (st) { addPt(st.diameter / 2, 0, st.front - st.length); addPt(-st.diameter / 2, 0, st.front); }
+    if (st) {
+      // The end sections are ellipses reaching R sideways: their widest points too.
+      const R = st.diameter / 2;
+      for (const z of [st.front - st.length, st.front]) { addPt(R, 0, z); addPt(-R, 0, z); addPt(0, R, z); addPt(0, -R, z); }
+    }
     const w = Math.max(u1 - u0, 1e-3), h = Math.max(v1 - v0, 1e-3);
     const m = 0.1;
     view.s = Math.min(cw / (w * (1 + 2 * m)), ch / (h * (1 + 2 * m) + 60 / Math.max(ch, 1) * h));
@@ -846,7 +865,10 @@
       ctx.fillStyle = "#fff"; ctx.font = "bold 11px system-ui,sans-serif"; ctx.textAlign = "center"; ctx.textBaseline = "middle"; ctx.fillText("!", x, y - 6);
     });
   }
-  const stockFindings = () => ((JOB.sim && JOB.sim.findings) || []).filter((f) => f.kind !== "not_simulated");
+  // The stock simulation ran on the programme as written: once it is edited, another file opened or
+  // another controller chosen, its findings no longer belong to what is shown.
+  let simCurrent = true;
+  const stockFindings = () => (simCurrent && JOB.sim && JOB.sim.findings ? JOB.sim.findings : []).filter((f) => f.kind !== "not_simulated");
   function drawFindings(A, B) {
     // Where the stock simulation found a crash, a chuck touch, a phase error or a deviation.
     stockFindings().forEach((f) => {
@@ -900,7 +922,9 @@
     $("slider").value = String(Math.round(now / total * 10000));
     const i = segAt(now);
     // Between motions (a dwell, a spindle wait, a tool change) the record under way is not a motion.
-    const between = i >= 0 && now < S.t0[i] - 1e-9 ? (S.eventsBefore.get(i) || []).find((e) => e.t >= now - 1e-9) : null;
+    // Records after the last motion (a dwell, M05, M30) and before the first are found too.
+    const under = (seg) => (S.eventsBefore.get(seg) || []).find((e) => e.t >= now - 1e-9) || null;
+    const between = i < 0 ? under(0) : now > S.t[S.n - 1] + 1e-9 ? under(S.n) : now < S.t0[i] - 1e-9 ? under(i) : null;
     // `atLine`: the record the caller went to (a tool change at the moment a move ends).
     const line = atLine || (between ? between.l : i >= 0 ? S.line[i] : 0);
     if (line !== runLine) { runLine = line; if (runLine && follow !== false) showLine(runLine, false); else paintEditor(); }
@@ -974,12 +998,13 @@
   $("hold").addEventListener("click", () => { presses.holds.push(+now.toFixed(3)); presses.holds.sort((a, b) => a - b); rerun(); });
   $("reset").addEventListener("click", () => { presses.reset = +now.toFixed(3); rerun(); });
   $("clear-buttons").addEventListener("click", () => { presses.holds = []; presses.reset = null; rerun(); });
-  ["single", "dry", "bdel", "opt", "feed-ov", "rapid-ov", "machine"].forEach((id) => $(id).addEventListener("change", rerun));
+  ["single", "dry", "bdel", "opt", "feed-ov", "rapid-ov"].forEach((id) => $(id).addEventListener("change", rerun));
+  $("machine").addEventListener("change", () => { simCurrent = false; rerun(); });
   $("params").addEventListener("change", rerun);
   $("stock").addEventListener("change", () => { partCache = null; fitted && fit(); draw(); });
   $("run").addEventListener("click", run);
   $("view").addEventListener("change", () => { view.kind = $("view").value; fit(); draw(); });
-  $("lang").addEventListener("click", () => { lang = lang === "zh" ? "en" : "zh"; applyWords(); if (S) { showProblems(); showTime(); legend(); setTime(now); } showPresses(); });
+  $("lang").addEventListener("click", () => { lang = lang === "zh" ? "en" : "zh"; applyWords(); if (S) { showProblems(); showTime(); showParams(); showPasses(); legend(); setTime(now, false); } showPresses(); });
 
   // ---- zoom, pan, pick ------------------------------------------------------------------------
   function zoom(k, cx, cy) {
@@ -1077,6 +1102,7 @@
     file.arrayBuffer().then((b) => {
       setProgramme(decode(new Uint8Array(b)).replace(/^\uFEFF/, ""));
       fileName = file.name;
+      simCurrent = false;
       $("file-name").textContent = fileName;
       fresh = true; fitted = true; selLine = 0;
       run();
@@ -1092,12 +1118,15 @@
   const PASS_COLOURS = ["#1565c0", "#d84315", "#2e7d32", "#6a1b9a", "#00838f", "#ef6c00", "#ad1457", "#5d4037"];
   function showPasses() {
     const box = $("passes-box");
-    const threads = S.head.threads.filter((r) => !(S.kind[r[0]] & 32));
+    // Along the axis that moves more in each pass (Z for most threads, X for a face thread); the
+    // passes along the axis of the first one are drawn.
+    const along = (i) => { const o = 6 * i; return Math.abs(S.p[o + 5] - S.p[o + 2]) >= Math.abs(S.p[o + 3] - S.p[o]) ? 2 : 0; };
+    const all = S.head.threads.filter((r) => !(S.kind[r[0]] & 32));
+    const threads = all.filter((r) => along(r[0]) === along(all.length ? all[0][0] : 0));
     box.hidden = !threads.length;
     if (!threads.length) return;
     const c = $("passes"), g = c.getContext("2d"), W = c.width, Hc = c.height;
-    // Along the axis that moves more in each pass (Z for most threads, X for a face thread).
-    const along = (i) => { const o = 6 * i; return Math.abs(S.p[o + 5] - S.p[o + 2]) >= Math.abs(S.p[o + 3] - S.p[o]) ? 2 : 0; };
+    const faceX = along(threads[0][0]) === 0; // X across, labelled as a diameter
     let a0 = Infinity, a1 = -Infinity;
     threads.forEach((r) => { const o = 6 * r[0], ax = along(r[0]); a0 = Math.min(a0, S.p[o + ax], S.p[o + 3 + ax]); a1 = Math.max(a1, S.p[o + ax], S.p[o + 3 + ax]); });
     if (!(a1 > a0)) { box.hidden = true; return; }
@@ -1109,8 +1138,8 @@
     for (let d = 0; d <= 360; d += 90) { g.beginPath(); g.moveTo(L, Y(d)); g.lineTo(W - R, Y(d)); g.stroke(); g.fillText(d + "°", L - 4, Y(d)); }
     const step = niceStep((a1 - a0) / 8);
     g.textAlign = "center"; g.textBaseline = "top";
-    for (let a = Math.ceil(a0 / step) * step; a <= a1 + 1e-9; a += step) { g.beginPath(); g.moveTo(X(a), T); g.lineTo(X(a), Hc - B); g.stroke(); g.fillText(numLabel(a), X(a), Hc - B + 4); }
-    g.textAlign = "left"; g.fillText((along(threads[0][0]) === 2 ? "Z" : "X") + " mm", W - R - 30, Hc - 16);
+    for (let a = Math.ceil(a0 / step) * step; a <= a1 + 1e-9; a += step) { g.beginPath(); g.moveTo(X(a), T); g.lineTo(X(a), Hc - B); g.stroke(); g.fillText(numLabel(faceX ? 2 * a : a), X(a), Hc - B + 4); }
+    g.textAlign = "left"; g.fillText(faceX ? "X Ø mm" : "Z mm", W - R - 40, Hc - 16);
     g.textBaseline = "top"; g.fillText(t("passes_axis"), 4, 4);
     const passes = new Set();
     threads.forEach((r) => {
@@ -1166,12 +1195,18 @@
     const W = 900, Hc = 300;
     const c = el("canvas", { id: "thread-section", width: W, height: Hc, role: "img", "aria-label": "axial section" });
     const g = c.getContext("2d");
-    const sec = JOB.section, stockD = m.stock_diameter_mm;
-    const cut = sec.filter((p) => p[1] < stockD - 1e-3);
-    if (cut.length < 2 || !(m.major_diameter_mm > 0 && m.minor_diameter_mm > 0)) return el("div", {}, "-");
+    const sec = JOB.section;
+    if (!(m.major_diameter_mm > 0 && m.minor_diameter_mm > 0)) return el("div", {}, "-");
+    // The thread's length: where the section goes below the middle of its depth (a turned
+    // shank beside it stays above).
+    const half = (m.major_diameter_mm + m.minor_diameter_mm) / 2;
+    const deep = sec.filter((p) => p[1] < half);
+    if (deep.length < 2) return el("div", {}, "-");
+    const cut = sec.filter((p) => p[0] >= deep[0][0] && p[0] <= deep[deep.length - 1][0]);
     const P = m.pitch_mm || (JOB.expect && JOB.expect.pitch_mm) || (cut[cut.length - 1][0] - cut[0][0]) / 4;
     const zMid = (cut[0][0] + cut[cut.length - 1][0]) / 2, span = Math.min(cut[cut.length - 1][0] - cut[0][0], 4 * P);
     const z0 = zMid - span / 2, z1 = zMid + span / 2;
+    c.setAttribute("data-z0", z0.toFixed(3)); c.setAttribute("data-z1", z1.toFixed(3));
     const major = m.major_diameter_mm / 2, minor = m.minor_diameter_mm / 2, h = Math.max(major - minor, 1e-3);
     const r0 = minor - 0.6 * h, r1 = major + 0.9 * h;
     const s = Math.min((W - 140) / (z1 - z0), (Hc - 50) / (r1 - r0));
@@ -1184,7 +1219,7 @@
     g.fillStyle = "#b0bec5"; g.fill(); g.strokeStyle = "#37474f"; g.lineWidth = 1.5; g.stroke();
     // The nominal profile: flanks at 60 degrees between the expected major and minor, crest and
     // root flats in the ISO proportion (1 : 2), a root placed on the deepest point measured.
-    if (JOB.expect) {
+    if (JOB.expect && JOB.expect.pitch_mm > 0) {
       const E = JOB.expect, R = E.major_mm / 2, r = E.minor_mm / 2, f = (R - r) * Math.tan(Math.PI / 6), rest = Math.max(0, E.pitch_mm - 2 * f);
       // The measured root nearest the middle: the centre of the run of its deepest points.
       let deepest = Infinity;
