@@ -170,7 +170,7 @@ impl OperatorArgs {
             reset_at: self.reset_at,
             overrides: ncsight::time::Overrides { feed_pct: self.feed_override, rapid_pct: self.rapid_override, dry_run: self.dry_run },
         };
-        ncsight_io::check_operator(&options).map_err(|e| usage(if e.contains("override") { format!("--{}", e.replacen(' ', "-", 1)) } else { e }))?;
+        ncsight_io::check_operator(&options, |key| format!("--{}", key.replace('_', "-"))).map_err(usage)?;
         Ok(options)
     }
 }
@@ -731,9 +731,6 @@ fn report(
     } else {
         (None, None)
     };
-    // The programme as the editor shows it: each line as written, UTF-8, or decoded where it is not.
-    let body = source.strip_prefix(&[0xEF, 0xBB, 0xBF][..]).unwrap_or(&source);
-    let text: Vec<String> = body.split(|&b| b == b'\n').map(|l| decoding.decode(l.strip_suffix(b"\r").unwrap_or(l))).collect();
     let mut extra = Vec::new();
     extra.extend(m.main.iter().map(|v| format!("main={v}")));
     extra.extend(m.vars.iter().map(|v| format!("var={v}")));
@@ -743,7 +740,7 @@ fn report(
     extra.extend(m.max_blocks.iter().map(|v| format!("max_blocks={v}")));
     let page = report::Preload {
         file_name: if file == "-" { "<stdin>" } else { file },
-        text: text.join("\n"),
+        text: editor_text(&source, &decoding),
         machine: params.profile().name,
         params: &m.params,
         setup: m.setup.as_deref().map(std::fs::read_to_string).transpose().map_err(|e| usage(format!("cannot read the setup: {e}")))?,
@@ -784,10 +781,17 @@ fn library_texts(dirs: &[std::path::PathBuf], decoding: &diag::Decoding) -> Vec<
         .into_iter()
         .filter_map(|p| {
             let bytes = std::fs::read(&p).ok()?;
-            let text: Vec<String> = bytes.split(|&b| b == b'\n').map(|l| decoding.decode(l.strip_suffix(b"\r").unwrap_or(l))).collect();
-            Some((p.file_name()?.to_string_lossy().into_owned(), text.join("\n")))
+            Some((p.file_name()?.to_string_lossy().into_owned(), editor_text(&bytes, decoding)))
         })
         .collect()
+}
+
+/// A programme file as the page's editor shows it: without a byte-order mark, each line as
+/// written, UTF-8, or decoded where it is not (`--encoding`; GB18030 by default), CR LF as LF.
+fn editor_text(bytes: &[u8], decoding: &diag::Decoding) -> String {
+    let body = bytes.strip_prefix(&[0xEF, 0xBB, 0xBF][..]).unwrap_or(bytes);
+    let lines: Vec<String> = body.split(|&b| b == b'\n').map(|l| decoding.decode(l.strip_suffix(b"\r").unwrap_or(l))).collect();
+    lines.join("\n")
 }
 
 /// `ncsight app`: the page with no programme in it.

@@ -64,15 +64,16 @@ fn usage(m: impl Into<String>) -> JobError {
 }
 
 /// Whether the operator's settings are ones a panel can give: overrides of 1-200 % (feed) and
-/// 1-100 % (rapid), button times of 0 s or more.
-pub fn check_operator(o: &Options) -> Result<(), String> {
+/// 1-100 % (rapid), button times of 0 s or more. `name` gives the caller's name of a setting
+/// (`feed_override`, `rapid_override`) for the message: `--feed-override` on the command line.
+pub fn check_operator(o: &Options, name: fn(&str) -> String) -> Result<(), String> {
     let f = o.overrides.feed_pct;
     if !(f > 0.0 && f <= 200.0) {
-        return Err(format!("feed override {f}: give 1 to 200 percent"));
+        return Err(format!("{} {f}: give 1 to 200 percent", name("feed_override")));
     }
     let r = o.overrides.rapid_pct;
     if !(r > 0.0 && r <= 100.0) {
-        return Err(format!("rapid override {r}: give 1 to 100 percent"));
+        return Err(format!("{} {r}: give 1 to 100 percent", name("rapid_override")));
     }
     for t in o.feed_hold_at.iter().chain(o.reset_at.iter()) {
         if !(t.is_finite() && *t >= 0.0) {
@@ -178,7 +179,7 @@ impl Job {
                 _ => return Err(usage(format!("{key}: not an operator setting (single_block, feed_hold_at, reset_at, feed_override, rapid_override, dry_run, block_delete, optional_stop, main, var, skip_missing_subprograms, max_blocks)"))),
             }
         }
-        check_operator(&self.operator).map_err(usage)
+        check_operator(&self.operator, |key| key.to_string()).map_err(usage)
     }
 
     /// The run's setup, calls and variables set on `program`; the library of called programmes.

@@ -29,9 +29,7 @@ use ncsight_io::Job;
 /// Run `text` on `machine` as `ncsight run --format jsonl` (or `check --format jsonl`, named
 /// `<text>`) would, from memory on this thread: the JSONL text.
 pub fn run_jsonl(text: &[u8], machine: &str, params: &str, setup: &str, mode: Mode) -> String {
-    let mut job = Job { params: params.lines().map(str::trim).filter(|l| !l.is_empty()).map(String::from).collect(), ..Job::on(machine) };
-    let with_setup = if setup.trim().is_empty() { Ok(()) } else { job.set_setup_text(setup, "setup") };
-    let started = with_setup.and_then(|()| job.program(mode)).and_then(|(program, _)| Ok((program, job.jsonl_writer(mode, "<text>")?)));
+    let started = page_job(machine, params, setup, "", &[]).and_then(|(job, _)| Ok((job.program(mode)?.0, job.jsonl_writer(mode, "<text>")?)));
     let (program, mut writer) = match started {
         Ok(v) => v,
         Err(e) => return format!("{{\"kind\":\"usage\",\"message\":{}}}\n", format::jsonl::json_str(&e.to_string())),

@@ -154,13 +154,15 @@
   }
   /** The files where called programmes are looked for, as the engine takes them: a u32 length
    * and the name, a u32 length and the text, for each. */
+  let libraryCache = null;
   function libraryBytes() {
+    if (libraryCache) return libraryCache;
     const parts = [];
     (JOB.library || []).forEach(([name, text]) => [enc.encode(name), enc.encode(text)].forEach((b) => { const l = new Uint8Array(4); new DataView(l.buffer).setUint32(0, b.length, true); parts.push(l, b); }));
     const out = new Uint8Array(parts.reduce((a, b) => a + b.length, 0));
     let at = 0;
     parts.forEach((b) => { out.set(b, at); at += b.length; });
-    return out;
+    return (libraryCache = out);
   }
   /** Call the engine's `ncsight_scene` or `ncsight_check` (same arguments); its answer's bytes. */
   function callEngine(name, textBytes, machine, params, setup, options) {
@@ -289,9 +291,15 @@
   let big = null; // { text, lines } while shown read-only
   let lineCount = 1;
   let diagByLine = new Map();
+  function lineCountOf(text) { let c = 1; for (let i = text.indexOf("\n"); i >= 0; i = text.indexOf("\n", i + 1)) c++; return c; }
+  /** Where line `n` (1-based) of `text` starts, or -1 past its end. */
+  function lineStart(text, n) {
+    let at = 0;
+    for (let k = 1; k < n && at >= 0; k++) { const nl = text.indexOf("\n", at); at = nl < 0 ? -1 : nl + 1; }
+    return at;
+  }
   function setProgramme(text, forceEdit) {
-    let c = 1;
-    for (let i = text.indexOf("\n"); i >= 0; i = text.indexOf("\n", i + 1)) c++;
+    const c = lineCountOf(text);
     if (c > BIG_LINES && !forceEdit) {
       big = { text, lines: text.split("\n") };
       ta.value = ""; ta.hidden = true; viewer.hidden = false; $("edit").hidden = false;
@@ -308,16 +316,14 @@
   /** The text of line `n` (1-based). */
   function sourceLine(n) {
     if (big) return big.lines[n - 1] || "";
-    const s = ta.value;
-    let at = 0;
-    for (let k = 1; k < n && at >= 0; k++) { const nl = s.indexOf("\n", at); at = nl < 0 ? -1 : nl + 1; }
+    const s = ta.value, at = lineStart(s, n);
     if (at < 0) return "";
     const end = s.indexOf("\n", at);
     return s.slice(at, end < 0 ? s.length : end);
   }
   const scroller = () => (big ? viewer : ta);
   setProgramme(JOB.text || "");
-  function countLines() { let c = 1; const s = ta.value; for (let i = s.indexOf("\n"); i >= 0; i = s.indexOf("\n", i + 1)) c++; lineCount = c; }
+  const countLines = () => { lineCount = lineCountOf(ta.value); };
   let editorHeight = 0;
   function paintEditor() {
     const sc = scroller();
@@ -350,9 +356,7 @@
     const sc = scroller(), top = (n - 1) * LH, h = editorHeight || 500;
     if (top < sc.scrollTop || top + LH > sc.scrollTop + h) sc.scrollTop = Math.max(0, top - h / 3);
     if (moveCaret && !big) {
-      const s = ta.value;
-      let at = 0;
-      for (let k = 1; k < n && at >= 0; k++) { const nl = s.indexOf("\n", at); at = nl < 0 ? -1 : nl + 1; }
+      const at = lineStart(ta.value, n);
       if (at >= 0) ta.setSelectionRange(at, at);
     }
     paintEditor();
@@ -389,7 +393,7 @@
     if (!engine) {
       // A new engine is on its way (after a trap): run when it is there.
       banner("warning", t("running"));
-      loadEngine().then(run).catch((e) => banner("usage", t("usage", { msg: String(e.message || e) })));
+      loadEngine().then(run).catch((e) => engineFailed("", e));
       return;
     }
     const machine = $("machine").value, params = $("params").value, options = optionsText();
@@ -399,10 +403,7 @@
     try {
       buf = callEngine("ncsight_scene", textBytes, machine, params, JOB.setup || "", options);
     } catch (e) {
-      // The engine stopped (a trap): say so, and start a fresh one for the next run.
-      banner("usage", t("usage", { msg: "engine error: " + String(e.message || e) }));
-      engine = null;
-      loadEngine().catch((e) => banner("usage", t("usage", { msg: String(e.message || e) })));
+      engineFailed("engine error: ", e);
       return;
     }
     const next = parseScene(buf);
@@ -412,8 +413,7 @@
     S = next;
     lathe = S.head.lathe;
     if (wasLathe !== lathe || !$("view").options.length) { fillViews(); fitted = true; }
-    diagByLine = new Map();
-    S.head.diagnostics.forEach((d) => { if (diagByLine.get(d.l) !== "alarm") diagByLine.set(d.l, d.sev); });
+    markDiagnostics();
     // A new programme opens at its end (the whole path, the finished part); an edit keeps the moment.
     now = fresh ? S.head.total_s : Math.min(now, S.head.total_s);
     fresh = false;
@@ -426,12 +426,15 @@
     // the path is drawn.
     setTimeout(() => {
       if (generation !== runs || !engine) return;
-      try { addCheck(callEngine("ncsight_check", textBytes, machine, params, JOB.setup || "", options)); } catch (e) {
-        banner("usage", t("usage", { msg: "engine error in the check: " + String(e.message || e) }));
-        engine = null;
-        loadEngine().catch(() => {});
-      }
+      try { addCheck(callEngine("ncsight_check", textBytes, machine, params, JOB.setup || "", options)); } catch (e) { engineFailed("engine error in the check: ", e); }
     }, 0);
+  }
+  /** The engine stopped (a trap): say so, and start a fresh one for the next run. */
+  function engineFailed(what, e) {
+    const say = (x) => banner("usage", t("usage", { msg: String(x.message || x) }));
+    say(what + String(e.message || e));
+    engine = null;
+    loadEngine().catch(say);
   }
   let runs = 0;
   let firstPathMs = 0;
@@ -451,8 +454,13 @@
     H.diagnostics.push(...extra.slice(0, room));
     H.diagnostics_total = Math.max(H.diagnostics_total + extra.length, C.total);
     H.alarms_total = Math.max(H.alarms_total || 0, C.alarms || 0);
-    H.diagnostics.forEach((d) => { if (diagByLine.get(d.l) !== "alarm") diagByLine.set(d.l, d.sev); });
+    markDiagnostics();
     showProblems(); paintEditor(); draw();
+  }
+  /** Each line's worst diagnostic, for the gutter and the source's bands. */
+  function markDiagnostics() {
+    diagByLine = new Map();
+    S.head.diagnostics.forEach((d) => { if (diagByLine.get(d.l) !== "alarm") diagByLine.set(d.l, d.sev); });
   }
   let lastRunMs = 0;
   function showProblems() {
@@ -497,14 +505,15 @@
   function showTime() {
     const byTool = new Map(), byOp = new Map();
     const add = (m, k, v) => m.set(k, (m.get(k) || 0) + v);
+    // What no motion, dwell or turn takes: spindle waits, tool changes, stops.
+    let between = S.head.total_s;
     for (let i = 0; i < S.n; i++) {
       const d = S.t[i] - S.t0[i];
       add(byTool, S.tool[i], d);
       const k = S.kind[i] & 7;
       add(byOp, k === 0 ? t("rapid") : k === 1 ? t("feedk") : k === 2 ? t("arc") : t("threadk"), d);
+      between -= d;
     }
-    let between = S.head.total_s;
-    for (let i = 0; i < S.n; i++) between -= S.t[i] - S.t0[i];
     S.head.events.forEach((e) => { if (e.k === "dwell") { add(byOp, t("dwell"), e.s); between -= e.s; } if (e.k === "rotary") { add(byOp, t("turn"), e.s); between -= e.s; } });
     if (between > 1e-6) add(byOp, t("waits"), between);
     const box = $("time");
@@ -573,14 +582,34 @@
   let cw = 800, ch = 500;
   const sx = (u) => (u - view.ou) * view.s;
   const sy = (v) => ch - (v - view.ov) * view.s;
+  // A point's place on the screen in the view whose axes are A (across) and B (up).
+  const screenX = (A, q) => sx(A[0] * q[0] + A[1] * q[1] + A[2] * q[2]);
+  const screenY = (B, q) => sy(B[0] * q[0] + B[1] * q[1] + B[2] * q[2]);
+  /** The box of the cutting moves' end points projected on the view (u0, u1, v0, v1; Infinity
+   * without a cutting move), worked out once per run and view (each view's `pu` goes with one
+   * `pv`): the fit, the extents' dimensions and the guessed stock read it. */
+  let cutCache = null;
+  function cutBox(A, B) {
+    if (!cutCache || cutCache.S !== S) cutCache = { S, boxes: new Map() };
+    if (cutCache.boxes.has(A)) return cutCache.boxes.get(A);
+    const box = [Infinity, -Infinity, Infinity, -Infinity], p = S.p;
+    for (let i = 0; i < S.n; i++) {
+      if ((S.kind[i] & 7) === 0) continue;
+      for (let o = 6 * i; o <= 6 * i + 3; o += 3) {
+        const u = A[0] * p[o] + A[1] * p[o + 1] + A[2] * p[o + 2], v = B[0] * p[o] + B[1] * p[o + 1] + B[2] * p[o + 2];
+        if (u < box[0]) box[0] = u; if (u > box[1]) box[1] = u; if (v < box[2]) box[2] = v; if (v > box[3]) box[3] = v;
+      }
+    }
+    cutCache.boxes.set(A, box);
+    return box;
+  }
   function fit() {
     if (!S) return;
     const pv = V(), A = pv.pu, B = pv.pv;
-    let u0 = Infinity, u1 = -Infinity, v0 = Infinity, v1 = -Infinity;
+    // The fit is on the cutting moves; tool changes and approaches at rapid are left out.
+    let [u0, u1, v0, v1] = cutBox(A, B);
     const p = S.p;
     const addPt = (x, y, z) => { const u = A[0] * x + A[1] * y + A[2] * z, v = B[0] * x + B[1] * y + B[2] * z; if (u < u0) u0 = u; if (u > u1) u1 = u; if (v < v0) v0 = v; if (v > v1) v1 = v; };
-    // The fit is on the cutting moves; tool changes and approaches at rapid are left out.
-    for (let i = 0; i < S.n; i++) if ((S.kind[i] & 7) !== 0) { const o = 6 * i; addPt(p[o], p[o + 1], p[o + 2]); addPt(p[o + 3], p[o + 4], p[o + 5]); }
     for (let j = 0; j < S.h; j++) addPt(S.holeAt[3 * j], S.holeAt[3 * j + 1], S.holeAt[3 * j + 2]);
     if (!isFinite(u0)) for (let i = 0; i < S.n; i++) { const o = 6 * i; addPt(p[o + 3], p[o + 4], p[o + 5]); }
     if (!isFinite(u0)) { u0 = -10; u1 = 10; v0 = -10; v1 = 10; }
@@ -602,9 +631,10 @@
     const m = /^\s*([0-9.]+)\s*[xX×*]\s*([0-9.]+)\s*$/.exec($("stock").value);
     if (m && +m[1] > 0 && +m[2] > 0) return { diameter: +m[1], length: +m[2], front: JOB.stock ? JOB.stock.front_z_mm || 0 : 0, guessed: false };
     if (!lathe || !S || !S.n) return null;
-    // A guess from the programme: the largest diameter cut, from Z0 to the deepest cut.
-    let x = 0, z = 0;
-    for (let i = 0; i < S.n; i++) if ((S.kind[i] & 7) !== 0) { const o = 6 * i; x = Math.max(x, S.p[o], S.p[o + 3]); z = Math.min(z, S.p[o + 2], S.p[o + 5]); }
+    // A guess from the programme: the largest diameter cut, from Z0 to the deepest cut (the
+    // lathe view's box: Z across, X up).
+    const [zMin, , , xMax] = cutBox(VIEWS.lathe.pu, VIEWS.lathe.pv);
+    const x = Math.max(0, xMax), z = Math.min(0, zMin);
     if (x <= 0 || z >= 0) return null;
     return { diameter: 2 * x, length: -z + 2, front: 0, guessed: true };
   }
@@ -653,7 +683,6 @@
   const canvas = $("plot");
   const ctx = canvas.getContext("2d");
   let lastDrawMs = 0;
-  const drawParts = {};
   function niceStep(raw) { const p = Math.pow(10, Math.floor(Math.log10(raw))); for (const m of [1, 2, 5, 10]) if (m * p >= raw) return m * p; return 10 * p; }
   function numLabel(v) { const a = Math.abs(v); return (a >= 100 || Math.abs(v - Math.round(v)) < 1e-9 ? Math.round(v) : +v.toFixed(a >= 10 ? 1 : 3)).toString(); }
   function draw() {
@@ -675,8 +704,7 @@
       ctx.strokeStyle = "#455a64"; ctx.lineWidth = 1.2; ctx.setLineDash([14, 4, 3, 4]);
       ctx.beginPath(); ctx.moveTo(0, sy(0)); ctx.lineTo(cw, sy(0)); ctx.stroke(); ctx.setLineDash([]);
     }
-    const parts = [["paths", drawPaths], ["holes", drawHoles], ["extents", drawExtents], ["selection", drawSelection], ["diagnostics", drawDiagnostics], ["findings", drawFindings], ["tool", drawTool]];
-    for (const [name, f] of parts) { const a = performance.now(); f(A, B); drawParts[name] = performance.now() - a; }
+    for (const f of [drawPaths, drawHoles, drawExtents, drawSelection, drawDiagnostics, drawFindings, drawTool]) f(A, B);
     lastDrawMs = performance.now() - t0;
   }
   /** The turned part as a solid of revolution: its cross-sections from the chuck forward, each an
@@ -796,7 +824,7 @@
         const m = r < 1 ? 1 : Math.min(720, Math.max(2, Math.ceil(sweep / (2 * Math.acos(Math.max(-1, 1 - 0.25 / r))))));
         for (let j = 1; j <= m; j++) {
           pointAt(i, j / m, q);
-          const x = sx(A[0] * q[0] + A[1] * q[1] + A[2] * q[2]), y = sy(B[0] * q[0] + B[1] * q[1] + B[2] * q[2]);
+          const x = screenX(A, q), y = screenY(B, q);
           if (j === m || Math.abs(x - b.x) >= 0.6 || Math.abs(y - b.y) >= 0.6) { b.path.lineTo(x, y); b.x = x; b.y = y; }
         }
       } else if (Math.abs(x1 - b.x) >= 0.6 || Math.abs(y1 - b.y) >= 0.6) { b.path.lineTo(x1, y1); b.x = x1; b.y = y1; }
@@ -808,7 +836,9 @@
       // Dashes cost much in a software canvas: a programme with many rapids draws them thin and solid.
       ctx.setLineDash(style === 0 && n < 50000 ? [4, 3] : []);
       ctx.lineWidth = style === 0 ? 1 : style === 1 ? 2 : style % 2 ? 2.2 : 1.5;
-      ctx.strokeStyle = style === 0 ? "#9e9e9e" : style === 1 ? "#8e24aa" : toolColour(S.tools[(style >> 1) - 2] === undefined ? -1 : S.tools[(style >> 1) - 2]);
+      // Style 2 + 2t / 3 + 2t: the tool t in order of appearance (t = 0: before any tool).
+      const ti = (style >> 1) - 1;
+      ctx.strokeStyle = style === 0 ? "#9e9e9e" : style === 1 ? "#8e24aa" : ti === 0 ? "#37474f" : PALETTE[(ti - 1) % PALETTE.length];
       ctx.stroke(b.path);
     }
     ctx.globalAlpha = 1; ctx.setLineDash([]);
@@ -830,8 +860,7 @@
   function drawHoles(A, B) {
     if (!S.h) return;
     // One marker per cell of its own size (markers that would overlap are not drawn): 200,000
-    // holes cost what the screen can show. Holes
-    // drilled by now are filled; those to come are open.
+    // holes cost what the screen can show. Holes drilled by now are filled; those to come open.
     const r = Math.max(3, Math.min(7, 1.5 * view.s));
     const cell = 2 * r + 1, gw = Math.ceil(cw / cell) + 1, seen = new Uint8Array(gw * (Math.ceil(ch / cell) + 2));
     const paths = S.head.hole_kinds.map(() => [new Path2D(), new Path2D()]);
@@ -852,24 +881,9 @@
       ctx.stroke(open); ctx.stroke(done);
     });
   }
-  let extentsCache = null;
   function drawExtents(A, B) {
-    // The extents of the cutting moves (worked out once per run and view), dimensioned below
-    // and to the right of them.
-    if (!extentsCache || extentsCache.S !== S || extentsCache.kind !== view.kind) {
-      let u0 = Infinity, u1 = -Infinity, v0 = Infinity, v1 = -Infinity;
-      const p = S.p;
-      for (let i = 0; i < S.n; i++) {
-        if ((S.kind[i] & 7) === 0) continue;
-        const o = 6 * i;
-        for (const d of [0, 3]) {
-          const u = A[0] * p[o + d] + A[1] * p[o + d + 1] + A[2] * p[o + d + 2], v = B[0] * p[o + d] + B[1] * p[o + d + 1] + B[2] * p[o + d + 2];
-          if (u < u0) u0 = u; if (u > u1) u1 = u; if (v < v0) v0 = v; if (v > v1) v1 = v;
-        }
-      }
-      extentsCache = { S, kind: view.kind, u0, u1, v0, v1 };
-    }
-    const { u0, u1, v0, v1 } = extentsCache;
+    // The extents of the cutting moves, dimensioned below and to the right of them.
+    const [u0, u1, v0, v1] = cutBox(A, B);
     if (!isFinite(u0) || view.kind === "iso" || V().solid) return;
     ctx.strokeStyle = "#00695c"; ctx.fillStyle = "#00695c"; ctx.lineWidth = 1; ctx.font = "11px system-ui,sans-serif";
     const yb = Math.min(ch - 26, sy(lathe ? Math.min(v0, -(v1)) : v0) + 16), xr = Math.min(cw - 30, sx(u1) + 16);
@@ -899,7 +913,7 @@
     for (let i = 0; i < S.n; i++) {
       if (S.line[i] !== selLine) continue;
       const m = (S.kind[i] & 7) === 2 || (S.kind[i] & 7) === 4 ? 48 : 1;
-      for (let s = 0; s <= m; s++) { pointAt(i, s / m, q); const x = sx(A[0] * q[0] + A[1] * q[1] + A[2] * q[2]), y = sy(B[0] * q[0] + B[1] * q[1] + B[2] * q[2]); if (s) ctx.lineTo(x, y); else ctx.moveTo(x, y); }
+      for (let s = 0; s <= m; s++) { pointAt(i, s / m, q); const x = screenX(A, q), y = screenY(B, q); if (s) ctx.lineTo(x, y); else ctx.moveTo(x, y); }
     }
     ctx.stroke(); ctx.lineCap = "butt";
   }
@@ -914,7 +928,7 @@
     const q = [0, 0, 0];
     S.head.diagnostics.slice(0, 200).forEach((d) => {
       if (!diagPoint(d, q)) return;
-      const x = sx(A[0] * q[0] + A[1] * q[1] + A[2] * q[2]), y = sy(B[0] * q[0] + B[1] * q[1] + B[2] * q[2]);
+      const x = screenX(A, q), y = screenY(B, q);
       ctx.fillStyle = d.sev === "alarm" ? "#c62828" : "#f9a825";
       ctx.beginPath(); ctx.moveTo(x, y - 16); ctx.lineTo(x + 9, y - 1); ctx.lineTo(x - 9, y - 1); ctx.closePath(); ctx.fill();
       ctx.fillStyle = "#fff"; ctx.font = "bold 11px system-ui,sans-serif"; ctx.textAlign = "center"; ctx.textBaseline = "middle"; ctx.fillText("!", x, y - 6);
@@ -929,14 +943,14 @@
     stockFindings().forEach((f) => {
       if (f.x === undefined) return;
       const p = [f.x / 2, f.y || 0, f.z];
-      const x = sx(A[0] * p[0] + A[1] * p[1] + A[2] * p[2]), y = sy(B[0] * p[0] + B[1] * p[1] + B[2] * p[2]);
+      const x = screenX(A, p), y = screenY(B, p);
       ctx.fillStyle = "#6a1b9a"; ctx.beginPath(); ctx.moveTo(x, y - 9); ctx.lineTo(x + 9, y); ctx.lineTo(x, y + 9); ctx.lineTo(x - 9, y); ctx.closePath(); ctx.fill();
       ctx.fillStyle = "#fff"; ctx.font = "bold 11px system-ui,sans-serif"; ctx.textAlign = "center"; ctx.textBaseline = "middle"; ctx.fillText("!", x, y);
     });
   }
   function drawTool(A, B) {
     const q = posAt(now);
-    const x = sx(A[0] * q[0] + A[1] * q[1] + A[2] * q[2]), y = sy(B[0] * q[0] + B[1] * q[1] + B[2] * q[2]);
+    const x = screenX(A, q), y = screenY(B, q);
     ctx.fillStyle = "#ffb300"; ctx.strokeStyle = "#000"; ctx.lineWidth = 1.5;
     ctx.beginPath(); ctx.arc(x, y, 6, 0, 2 * Math.PI); ctx.fill(); ctx.stroke();
     ctx.beginPath(); ctx.moveTo(x - 10, y); ctx.lineTo(x + 10, y); ctx.moveTo(x, y - 10); ctx.lineTo(x, y + 10); ctx.stroke();
@@ -1101,7 +1115,7 @@
       for (let s = 1; s <= m; s++) {
         let bx, by;
         if (m === 1) { bx = sx(A[0] * p[o + 3] + A[1] * p[o + 4] + A[2] * p[o + 5]); by = sy(B[0] * p[o + 3] + B[1] * p[o + 4] + B[2] * p[o + 5]); }
-        else { pointAt(i, s / m, q); bx = sx(A[0] * q[0] + A[1] * q[1] + A[2] * q[2]); by = sy(B[0] * q[0] + B[1] * q[1] + B[2] * q[2]); }
+        else { pointAt(i, s / m, q); bx = screenX(A, q); by = screenY(B, q); }
         if (!((ax < x - 8 && bx < x - 8) || (ax > x + 8 && bx > x + 8) || (ay < y - 8 && by < y - 8) || (ay > y + 8 && by > y + 8))) {
           const d = dist2(ax, ay, bx, by);
           // Cutting moves win over rapids at the same distance.
@@ -1320,7 +1334,6 @@
     get runLine() { return runLine; },
     get selLine() { return selLine; },
     get drawMs() { return lastDrawMs; },
-    get drawParts() { return Object.assign({}, drawParts); },
     get runMs() { return lastRunMs; },
     get runs() { return runs; },
     get firstPathMs() { return firstPathMs; },

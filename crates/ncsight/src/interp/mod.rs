@@ -1237,8 +1237,7 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
         // The codes that set an area or a transform take the block's axis words: one of them
         // per block; the cancels run first.
         let sets = |f: &GFn| matches!(f, GFn::Rotation(true) | GFn::MirrorImage(_) | GFn::Scaling(true) | GFn::StrokeCheck(true));
-        if codes.transforms.iter().filter(|(_, f)| sets(f)).count() > 1 {
-            let (span, _) = codes.transforms.iter().filter(|(_, f)| sets(f)).nth(1).copied().expect("counted");
+        if let Some(&(span, _)) = codes.transforms.iter().filter(|(_, f)| sets(f)).nth(1) {
             return Err(step.alarm(Rule::NotSupported, span, "two of G68, G51, G51.1/G50.1 and G22 in one block are not simulated: give each its own block"));
         }
         if codes.transforms.iter().any(|(_, f)| !matches!(f, GFn::StrokeCheck(_))) && (step.st.drill.kind.is_some() || codes.drill.is_some()) {

@@ -58,12 +58,12 @@ fn forbidden_point(area: &StrokeArea, p: &Vec3) -> bool {
 /// where G22 forbids, if it does. A straight move is checked along its whole length, an arc by
 /// the box that holds it (a little stricter than its path).
 pub(super) fn entered(area: &StrokeArea, op: &Op, to_machine: &Vec3) -> Option<String> {
-    let (from, to) = op.start_point().zip(op.end_point())?;
-    let (from, to) = (from + *to_machine, to + *to_machine);
+    let (start, end) = op.start_point().zip(op.end_point())?;
+    let (from, to) = (start + *to_machine, end + *to_machine);
     let hit = match geom::arc_geom_of(op) {
         Some(g) => {
             let (lo, hi) = match *op {
-                Op::Arc { plane, dir, .. } | Op::ThreadArc { plane, dir, .. } => geom::arc_extent(&(from - *to_machine), &(to - *to_machine), plane, dir, &g),
+                Op::Arc { plane, dir, .. } | Op::ThreadArc { plane, dir, .. } => geom::arc_extent(&start, &end, plane, dir, &g),
                 _ => return None,
             };
             let (lo, hi) = (lo + *to_machine, hi + *to_machine);
