@@ -17,6 +17,8 @@ pub enum Motion {
     Thread(ThreadCmd),
     /// G90 / G94 single turning or facing cycle is the group 01 mode.
     Box(crate::cycles::turning::BoxKind),
+    /// G05/G05.1, G6.2/G6.3, G7.2/G7.3 (GSK980TDi).
+    Curve(crate::profile::Curve),
 }
 
 /// The last block of a run of continuous thread blocks, held back until the next block shows

@@ -56,7 +56,7 @@ fn codes_of_the_manual_are_not_simulated_yet_not_unknown() {
         ("fanuc0m", "G33"),
         ("fanuc0m", "G39"),
         ("fanuc0t", "G12.1"),
-        ("gsk980tdi", "G05.1"),
+        ("gsk980tdi", "G12.1"),
         ("gsk988t", "G12.1"),
         ("yasnac-lx3", "G34 W-10 F2"),
     ] {

@@ -5,6 +5,7 @@
 mod call;
 mod comp;
 mod compound;
+mod curve;
 mod drill;
 mod frame;
 mod groove;
@@ -935,6 +936,7 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
             GFn::ArcCcw => codes.motion = Some((w.span, Motion::ArcCcw)),
             GFn::Thread(cmd) => codes.motion = Some((w.span, Motion::Thread(cmd))),
             GFn::BoxCycle(kind) => codes.motion = Some((w.span, Motion::Box(kind))),
+            GFn::Curve(kind) => codes.motion = Some((w.span, Motion::Curve(kind))),
             GFn::PlaneXY | GFn::PlaneZX | GFn::PlaneYZ => {
                 let plane = match g.function {
                     GFn::PlaneXY => Plane::XY,
@@ -1287,7 +1289,7 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
             return Err(step.alarm(Rule::NotSupported, step.span, "radius compensation under coordinate rotation, scaling or mirror image (G68, G51, G51.1) is not simulated"));
         }
         // An arc this block makes (its motion mode an arc, and axis or centre words in it).
-        let arc = matches!(codes.motion.map_or(step.st.motion, |(_, m)| m), Motion::ArcCw | Motion::ArcCcw) && (has_axis || b"RIJK".iter().any(|l| words.has(*l)));
+        let arc = matches!(codes.motion.map_or(step.st.motion, |(_, m)| m), Motion::ArcCw | Motion::ArcCcw | Motion::Curve(_)) && (has_axis || b"RIJK".iter().any(|l| words.has(*l)));
         if let Some(why) = transform::arc_refused(&t, step.st.plane).filter(|_| arc && codes.drill.or(step.st.drill.kind).is_none()) {
             return Err(step.alarm(Rule::NotSupported, step.span, format!("an arc under this transform is not simulated: {why}")));
         }
@@ -1345,6 +1347,12 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
             if let Motion::Box(kind) = step.st.motion {
                 if has_axis || words.has(b'R') {
                     turning::block(step, &mut words, kind)?;
+                }
+                return finish_block(step, &words, &codes, after, switches);
+            }
+            if let Motion::Curve(kind) = step.st.motion {
+                if has_axis || b"IJKABPQ".iter().any(|l| words.has(*l)) {
+                    curve::block(step, &mut words, kind)?;
                 }
                 return finish_block(step, &words, &codes, after, switches);
             }
@@ -1463,6 +1471,7 @@ fn describe_command(step: &Step, codes: &Codes) -> String {
         Motion::ArcCcw => format!("{} in the {plane} plane", name(GFn::ArcCcw)),
         Motion::Thread(cmd) => format!("{} (thread cutting)", thread::name(cmd)),
         Motion::Box(kind) => format!("{} (single turning/facing cycle)", kind.code()),
+        Motion::Curve(kind) => format!("{} in the {plane} plane", name(GFn::Curve(kind))),
     }
 }
 
@@ -1703,6 +1712,7 @@ fn motion(step: &mut Step, words: &mut Words) -> Result<(), Diagnostic> {
         }
         Motion::Thread(_) => unreachable!("thread blocks go to thread::block"),
         Motion::Box(_) => unreachable!("cycle blocks go to turning::block"),
+        Motion::Curve(_) => unreachable!("curve blocks go to curve::block"),
     }
     Ok(())
 }

@@ -2,7 +2,7 @@
 
 use super::common::{self, g, gp};
 use super::lathe_a::{self, LATER_THREAD};
-use super::{Compound, G76Keys, SETTINGS, DRY_RUN, CycleRules, HoldRule, JkWords, PullOutRule, QPoint, ThreadCmd, ThreadRules, GDef, GFn, Group, IntegerLengths, MachineKind, ParamDef, ParamKey, Profile, TimeKeys};
+use super::{Compound, Curve, G76Keys, SETTINGS, DRY_RUN, CycleRules, HoldRule, JkWords, PullOutRule, QPoint, ThreadCmd, ThreadRules, GDef, GFn, Group, IntegerLengths, MachineKind, ParamDef, ParamKey, Profile, TimeKeys};
 use crate::alarm::AlarmStyle;
 use crate::codes::DrillKind;
 use crate::motion::ArcDir;
@@ -72,6 +72,16 @@ const EXTRA: &[GDef] = &[
     g(88, Group::Motion, GFn::Drill(DrillKind::TapSide), "side rigid tapping cycle (after M29 S_)"),
     g(89, Group::Motion, LATER_DRILL, "side boring cycle"),
     g(78, Group::NonModal, GFn::CompoundThread(Compound::G78), "compound thread cutting cycle with infeed modes, two blocks"),
+];
+
+/// G05/G05.1, G6.2/G6.3, G7.2/G7.3 (help text pages of those names; docs/commands/g05_g6_g7.md).
+const CURVES: &[GDef] = &[
+    g(5, Group::Motion, GFn::Curve(Curve::ThreePoint { mid_absolute: false }), "three-point arc: I/K the middle point from the start (I a radius)"),
+    gp(5, 1, "G05.1", Group::Motion, GFn::Curve(Curve::ThreePoint { mid_absolute: true }), "three-point arc: I/K the middle point's coordinates"),
+    gp(6, 2, "G06.2", Group::Motion, GFn::Curve(Curve::Ellipse(ArcDir::Cw)), "ellipse, turning as G02: A long and B short half axis, Q the long axis's angle"),
+    gp(6, 3, "G06.3", Group::Motion, GFn::Curve(Curve::Ellipse(ArcDir::Ccw)), "ellipse, turning as G03: A long and B short half axis, Q the long axis's angle"),
+    gp(7, 2, "G07.2", Group::Motion, GFn::Curve(Curve::Parabola(ArcDir::Cw)), "parabola Y² = 2PX, turning as G02: Q its axis's angle"),
+    gp(7, 3, "G07.3", Group::Motion, GFn::Curve(Curve::Parabola(ArcDir::Ccw)), "parabola Y² = 2PX, turning as G03: Q its axis's angle"),
 ];
 
 const PARAMS: &[ParamDef] = &[
@@ -199,9 +209,9 @@ pub static PROFILE: Profile = Profile {
     group00_with_01_alarm: true,
     axes: "XZ",
     reference_point_mm: crate::motion::Vec3::new(100.0, 0.0, 200.0),
-    addresses: super::Letters::new("GMSTFXZUWRIJKPQLNDE"),
+    addresses: super::Letters::new("GMSTFXZUWRIJKPQLNDEAB"),
     peck_back_off: Some(ParamKey::Number(56, None)),
-    g_codes: &[super::Codes { source: "GSK980TDi help text (G-code list)", codes: common::G_CODES }, super::Codes { source: "GSK980TDi help text (G-code list)", codes: lathe_a::G_CODES }, super::Codes { source: "GSK980TDi manual, G92 (seed 000) and help text", codes: EXTRA }, super::Codes { source: "GSK980TDi help text (G-code list)", codes: super::later::GSK980TDI }],
+    g_codes: &[super::Codes { source: "GSK980TDi help text (G-code list)", codes: common::G_CODES }, super::Codes { source: "GSK980TDi help text (G-code list)", codes: lathe_a::G_CODES }, super::Codes { source: "GSK980TDi manual, G92 (seed 000) and help text", codes: EXTRA }, super::Codes { source: "GSK980TDi help text, G05/05.1, G6.2/6.3, G7.2/7.3; Q's sense from the GSK980TDc manual", codes: CURVES }, super::Codes { source: "GSK980TDi help text (G-code list)", codes: super::later::GSK980TDI }],
     m_codes: &[super::Codes { source: "GSK980TDi help text (M-code list)", codes: common::M_CODES }, super::Codes { source: "GSK980TDi help text (M-code list)", codes: lathe_a::M_CODES }, super::Codes { source: "GSK980TDi help text (M-code list)", codes: lathe_a::GSK_M_CODES }, super::Codes { source: "GSK980TDi help text, G84/G88", codes: TAPPING_M }],
     params: &[PARAMS, DRY_RUN, super::builder::GSK980TDI, super::GSK_LATHE_OFFSETS, SETTINGS],
     time: TimeKeys {

@@ -74,13 +74,7 @@ pub(super) const FANUC_0T: &[GDef] = &[
 
 /// GSK980TDi (every code of the on-line help text).
 pub(super) const GSK980TDI: &[GDef] = &[
-    g(5, Group::NonModal, LATER, "high-speed machining (look-ahead) mode"),
-    gp(5, 1, "G05.1", Group::NonModal, LATER, "smooth interpolation"),
-    gp(6, 2, "G06.2", Group::Motion, LATER, "elliptic interpolation, clockwise"),
-    gp(6, 3, "G06.3", Group::Motion, LATER, "elliptic interpolation, counter-clockwise"),
     gp(7, 1, "G07.1", Group::NonModal, LATER, "cylindrical interpolation"),
-    gp(7, 2, "G07.2", Group::Motion, LATER, "parabolic interpolation, clockwise"),
-    gp(7, 3, "G07.3", Group::Motion, LATER, "parabolic interpolation, counter-clockwise"),
     g(9, Group::NonModal, GFn::PathControl, "exact stop for one block (no effect here: every move of ncsight's time model ends at rest)"),
     g(10, Group::NonModal, GFn::DataSetting, "data input from the programme (L3: tool life; L52: parameters)"),
     g(11, Group::NonModal, LATER, "data input cancel"),

@@ -191,6 +191,8 @@ pub enum GFn {
     Drill(crate::codes::DrillKind),
     /// A thread-cutting command (group 01).
     Thread(ThreadCmd),
+    /// A three-point arc, an ellipse or a parabola (group 01; cycles/curve.rs).
+    Curve(Curve),
     /// G76 compound thread cutting, or the GSK980TDi G78 with its infeed modes: the two-block
     /// form (group 00).
     CompoundThread(Compound),
@@ -228,6 +230,18 @@ pub enum GFn {
     /// A reference-point code (G27, G29, G30) known to the controller, not yet simulated: an
     /// alarm that says so, after the rules that every reference-point code follows (FANUC 0044).
     NotYetReference(&'static str),
+}
+
+/// The curves the GSK980TDi cuts besides the circle (help text G05/G05.1, G6.2/G6.3, G7.2/G7.3).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Curve {
+    /// G05: the arc through a middle point I/K from the start; G05.1: I/K the middle point's
+    /// absolute coordinates.
+    ThreePoint { mid_absolute: bool },
+    /// G6.2 (`Cw`, as G02) / G6.3: an ellipse of half axes A and B, its long axis at Q.
+    Ellipse(crate::motion::ArcDir),
+    /// G7.2 (`Cw`) / G7.3: the parabola Y² = 2PX, its axis at Q.
+    Parabola(crate::motion::ArcDir),
 }
 
 /// The two-block compound threading cycles.

@@ -131,6 +131,7 @@ impl Reading<'_> {
                 Motion::ArcCcw => GFn::ArcCcw,
                 Motion::Thread(cmd) => GFn::Thread(cmd),
                 Motion::Box(kind) => GFn::BoxCycle(kind),
+                Motion::Curve(kind) => GFn::Curve(kind),
             }),
             Group::CannedCycle => Some(GFn::CycleCancel),
             Group::Plane => Some(match m.plane {
