@@ -120,6 +120,8 @@ rules! {
     // message (FANUC 0 numbered them per axis; docs/setup.md).
     OvertravelPlus => Alarm, "NCS-E77", Some("OT0500"), "+ OVERTRAVEL (SOFT 1)";
     OvertravelMinus => Alarm, "NCS-E78", Some("OT0501"), "- OVERTRAVEL (SOFT 1)";
+    // FANUC 0-T variable lead (G34): the number and text as recalled (not verified).
+    IllegalLead => Alarm, "NCS-E87", Some("PS0014"), "ILLEGAL LEAD COMMAND";
     // G05, G6.2, G7.2 of the GSK980TDi (its alarm numbers were not at hand).
     CurveData => Alarm, "NCS-E86", None, "CURVE DATA DO NOT DEFINE THE CURVE";
     // G22 stored stroke check 2 (no alarm number of these controllers at hand).

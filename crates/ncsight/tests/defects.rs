@@ -58,7 +58,7 @@ fn codes_of_the_manual_are_not_simulated_yet_not_unknown() {
         ("fanuc0t", "G12.1"),
         ("gsk980tdi", "G12.1"),
         ("gsk988t", "G12.1"),
-        ("yasnac-lx3", "G34 W-10 F2"),
+        ("yasnac-lx3", "G68"),
     ] {
         let a = first_alarm(machine, &format!("{block}\nM30\n")).unwrap_or_else(|| panic!("{machine} {block}: no alarm"));
         assert_eq!(a.code, "NCS-E38", "{machine} {block}: {a:?}");

@@ -281,15 +281,25 @@ pub(super) fn tap(step: &mut Step, words: &mut Words) -> Result<(), Diagnostic> 
 /// one record per revolution, each with the lead of that revolution (its mean), so the spindle
 /// angle at every record start is exact.
 pub(super) fn variable_lead(step: &mut Step, words: &mut Words, run_deg: Option<f64>) -> Result<(), Diagnostic> {
-    let lead = step.read_lead(words, "G34", true, false, super::thread::MAX_LEAD_MM)?;
-    let change = match words.take(b'R') {
-        Some(w) => step.length(w)?,
+    let rules = step.profile.thread.g34;
+    // I (threads per inch) where G32 takes it (GSK), E where G32 takes it (YASNAC LX3).
+    let lead = step.read_lead(words, "G34", step.profile.thread.g32_pull_out, step.profile.thread.g32_lead_e, super::thread::MAX_LEAD_MM)?;
+    let change = match words.take(rules.change) {
+        Some(w) => {
+            let v = step.length(w)?;
+            if let Some(max) = rules.change_max_mm.filter(|m| v.abs() > *m) {
+                return Err(step.alarm(rules.lead_rule, w.span, format!("{}: G34's change of lead is at most {max} mm per revolution", w.text())));
+            }
+            v
+        }
         None => 0.0,
     };
-    for l in [b'J', b'K'] {
-        if let Some(w) = words.take(l) {
-            let msg = format!("{}: the pull-out of a variable-lead thread is not simulated; the thread ends at its end point", w.text());
-            step.warn(Rule::NotSimulated, w.span, msg);
+    if rules.pull_out_words {
+        for l in [b'J', b'K'] {
+            if let Some(w) = words.take(l) {
+                let msg = format!("{}: the pull-out of a variable-lead thread is not simulated; the thread ends at its end point", w.text());
+                step.warn(Rule::NotSimulated, w.span, msg);
+            }
         }
     }
     let q = step.read_q(words, 0.001, false)?;
@@ -304,9 +314,9 @@ pub(super) fn variable_lead(step: &mut Step, words: &mut Words, run_deg: Option<
     let limit = super::MAX_MOTIONS_PER_BLOCK;
     let ops = variable_lead::expand(from, to, lead, change, start_deg, rpm, max, limit).map_err(|e| match e {
         VariableLeadError::LeadLeavesRange(n) => step.alarm(
-            Rule::ThreadData,
+            rules.lead_rule,
             step.span,
-            format!("G34: after {n} revolutions the lead would leave 0 to {max} mm (F{} R{})", crate::alarm::shown(lead, 4), crate::alarm::shown(change, 4)),
+            format!("G34: after {n} revolutions the lead would leave 0 to {max} mm (F{} {}{})", crate::alarm::shown(lead, 4), rules.change as char, crate::alarm::shown(change, 4)),
         ),
         VariableLeadError::TooMany => step.alarm(Rule::MotionLimit, step.span, format!("G34: more than {limit} revolutions in one block")),
     })?;

@@ -4,7 +4,7 @@
 //! the profile they were written for.
 
 use super::common::{self, g};
-use super::lathe_a::{self, LATER_THREAD};
+use super::lathe_a;
 use super::{FANUC_RATES, Compound, 
     CycleRules, HoldRule, JkWords, PullOutRule, GDef, GFn, Group, IntegerLengths, MachineKind, ParamDef, ParamKey, Profile, QPoint, ThreadCmd,
     ThreadRules, TimeKeys, DRY_RUN, SETTINGS,
@@ -37,7 +37,7 @@ const EXTRA: &[GDef] = &[
     g(32, Group::Motion, GFn::Thread(ThreadCmd::Lead), "thread cutting: F lead, Q start angle"),
     g(92, Group::Motion, GFn::Thread(ThreadCmd::Cycle(&G92)), "thread cutting cycle: R taper, F lead, Q start angle"),
     g(76, Group::NonModal, GFn::CompoundThread(Compound::G76), "compound thread cutting cycle, two blocks"),
-    g(34, Group::Motion, LATER_THREAD, "variable-lead thread cutting"),
+    g(34, Group::Motion, GFn::Thread(ThreadCmd::VariableLead), "variable-lead thread cutting: F (or E) the lead at the start, K its change per revolution, Q start angle"),
     g(80, Group::CannedCycle, GFn::CycleCancel, "cancel a drilling cycle (group 10 on the FANUC)"),
     g(83, Group::CannedCycle, GFn::Drill(DrillKind::FaceFromR), "face drilling cycle; with Q, peck drilling (5101#2)"),
     g(84, Group::CannedCycle, GFn::Drill(DrillKind::FaceTapR), "face tapping cycle: the spindle reversed at the bottom"),
@@ -138,6 +138,7 @@ pub static PROFILE: Profile = Profile {
         g32_pull_out: false,
         g32_lead_e: false,
         g76: Some(super::FANUC_G76_KEYS),
+        g34: super::G34_FANUC,
     },
     drill: super::DrillRules {
         g73_retract_um: Some(ParamKey::Number(5114, None)),

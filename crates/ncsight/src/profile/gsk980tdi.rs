@@ -219,7 +219,7 @@ pub static PROFILE: Profile = Profile {
         dry_run: ParamKey::Setting("dry_run_mm_min"),
         feed_max: ParamKey::Number(27, None),
     },
-    thread: ThreadRules { q_point: QPoint::Ignored, arc_q_unit_deg: 0.001, pull_out_speed: Some(ParamKey::Number(107, None)), after_end_feed: None, pull_out_accel: None, repair_enable: Some(ParamKey::Number(174, Some(4))), g32_pull_out: true, g32_lead_e: false, g76: Some(G76Keys { finishing: ParamKey::Number(57, None), pull_out: ParamKey::Number(19, None), angle: ParamKey::Number(58, None), dmin_um: ParamKey::Number(59, None), allowance: ParamKey::Number(60, None), allowance_to_mm: 1.0, pull_out_angle: None }) },
+    thread: ThreadRules { q_point: QPoint::Ignored, arc_q_unit_deg: 0.001, pull_out_speed: Some(ParamKey::Number(107, None)), after_end_feed: None, pull_out_accel: None, repair_enable: Some(ParamKey::Number(174, Some(4))), g32_pull_out: true, g32_lead_e: false, g76: Some(G76Keys { finishing: ParamKey::Number(57, None), pull_out: ParamKey::Number(19, None), angle: ParamKey::Number(58, None), dmin_um: ParamKey::Number(59, None), allowance: ParamKey::Number(60, None), allowance_to_mm: 1.0, pull_out_angle: None }), g34: super::G34_GSK },
     drill: super::DrillRules::NONE,
     calls: super::CallRules {
         max_count: 9999,

@@ -132,7 +132,6 @@ pub(super) const YASNAC_LX3: &[GDef] = &[
     g(29, Group::NonModal, LATER_REF, "return from the reference point (inferred)"),
     g(30, Group::NonModal, GFn::OtherReferenceReturn, "return to the 2nd reference point (inferred)"),
     g(31, Group::NonModal, GFn::Skip, "skip function (inferred)"),
-    g(34, Group::Motion, LATER, "variable-lead thread cutting (inferred)"),
     g(65, Group::NonModal, GFn::MacroCall, "custom macro call (inferred)"),
     g(66, Group::MacroCall, GFn::ModalMacroCall, "custom macro modal call (inferred)"),
     g(67, Group::MacroCall, GFn::ModalMacroCancel, "custom macro modal call cancel (inferred)"),

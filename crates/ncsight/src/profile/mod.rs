@@ -628,7 +628,29 @@ pub struct ThreadRules {
     pub g32_lead_e: bool,
     /// G76: the parameters its first block rewrites, with their units.
     pub g76: Option<G76Keys>,
+    /// G34: the words of variable-lead thread cutting.
+    pub g34: VariableLeadRules,
 }
+
+/// The words of G34 as a manual gives them.
+#[derive(Debug, Clone, Copy)]
+pub struct VariableLeadRules {
+    /// The lead's change per revolution: R on the GSK lathes (GSK980TDi help text G34), K on the
+    /// FANUC 0-T (its G34 X(U) Z(W) F(E) K).
+    pub change: u8,
+    /// J and K give a pull-out (GSK; ncsight ends the thread at its end point, with a warning).
+    pub pull_out_words: bool,
+    /// The largest change per revolution, mm (FANUC: ±500 mm/rev); None: no limit of its own.
+    pub change_max_mm: Option<f64>,
+    /// The alarm when the lead leaves its range (FANUC 014; a project code on the GSK).
+    pub lead_rule: crate::alarm::Rule,
+}
+
+/// G34 on the GSK lathes: R, J/K (GSK980TDi help text G34; GSK988T manual 2.16.2).
+pub const G34_GSK: VariableLeadRules = VariableLeadRules { change: b'R', pull_out_words: true, change_max_mm: None, lead_rule: crate::alarm::Rule::ThreadData };
+/// G34 on the FANUC 0-T: K, ±0.0001 to ±500 mm/rev, alarm 014 (FANUC 0-TD programming notes;
+/// docs/commands/g76.md).
+pub const G34_FANUC: VariableLeadRules = VariableLeadRules { change: b'K', pull_out_words: false, change_max_mm: Some(500.0), lead_rule: crate::alarm::Rule::IllegalLead };
 
 /// The parameters of G76 (GSK No.57/19/58/59/60; FANUC 5142/5130/5143/5140/5141).
 #[derive(Debug, Clone, Copy)]

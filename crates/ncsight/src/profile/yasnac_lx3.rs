@@ -30,6 +30,7 @@ static G92: CycleRules = CycleRules {
 const EXTRA: &[GDef] = &[
     g(32, Group::Motion, GFn::Thread(ThreadCmd::Lead), "thread cutting: X(U) Z(W), F or E the lead, Q start angle (inferred: the FANUC 0-T's G32 with the E of the LX3's G92)"),
     g(76, Group::NonModal, LATER_G76, "compound thread cutting cycle"),
+    g(34, Group::Motion, GFn::Thread(ThreadCmd::VariableLead), "variable-lead thread cutting: F or E the lead at the start, K its change per revolution (inferred: the FANUC 0-T's G34)"),
     g(92, Group::Motion, GFn::Thread(ThreadCmd::Cycle(&G92)), "threading cycle: I taper, K flank infeed, F or E lead (YASNAC LX3 manual, G92)"),
 ];
 
@@ -87,7 +88,7 @@ pub static PROFILE: Profile = Profile {
         dry_run: ParamKey::Setting("dry_run_mm_min"),
         feed_max: ParamKey::Setting("feed_max_mm_min"),
     },
-    thread: ThreadRules { q_point: QPoint::Ignored, arc_q_unit_deg: 0.001, pull_out_speed: None, after_end_feed: None, pull_out_accel: None, repair_enable: None, g32_pull_out: false, g32_lead_e: true, g76: None },
+    thread: ThreadRules { q_point: QPoint::Ignored, arc_q_unit_deg: 0.001, pull_out_speed: None, after_end_feed: None, pull_out_accel: None, repair_enable: None, g32_pull_out: false, g32_lead_e: true, g76: None, g34: super::G34_FANUC },
     drill: super::DrillRules::NONE,
     calls: super::CallRules {
         l_count: true,
