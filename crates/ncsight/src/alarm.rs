@@ -120,6 +120,8 @@ rules! {
     // message (FANUC 0 numbered them per axis; docs/setup.md).
     OvertravelPlus => Alarm, "NCS-E77", Some("OT0500"), "+ OVERTRAVEL (SOFT 1)";
     OvertravelMinus => Alarm, "NCS-E78", Some("OT0501"), "- OVERTRAVEL (SOFT 1)";
+    // G29 with an axis no G28/G30 has given an intermediate point (no controller text found).
+    NoIntermediatePoint => Alarm, "NCS-E88", None, "NO INTERMEDIATE POINT FOR G29";
     // FANUC 0-T variable lead (G34): the number and text as recalled (not verified).
     IllegalLead => Alarm, "NCS-E87", Some("PS0014"), "ILLEGAL LEAD COMMAND";
     // G05, G6.2, G7.2 of the GSK980TDi (its alarm numbers were not at hand).

@@ -313,6 +313,9 @@ pub struct Modal {
     pub group_codes: [u16; crate::profile::Group::COUNT],
     /// The last B, D, E, H and M words (#4102, #4107, #4108, #4111, #4113).
     pub last_words: LastWords,
+    /// The intermediate point of the last G28 or G30, per axis it named, in the coordinates the
+    /// programme gave it (G29 goes through it; a coordinate change shifts it with the system).
+    pub reference_mid: [Option<f64>; 3],
 }
 
 /// Words a macro reads back as modal information (FANUC #4102-#4113).
@@ -374,6 +377,7 @@ impl Modal {
             ended: false,
             group_codes: [0; crate::profile::Group::COUNT],
             last_words: LastWords::default(),
+            reference_mid: [None; 3],
         }
     }
 

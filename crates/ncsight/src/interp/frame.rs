@@ -299,6 +299,10 @@ pub(super) fn reference_return(step: &mut Step, words: &mut Words, n: usize, spa
     if mid != step.st.pos {
         step.emit(Op::Rapid { from: step.st.pos, to: mid });
     }
+    // Kept for G29, per axis named (FANUC 0i manual, G29: the G28 or G30 before it).
+    for (a, _) in given.iter().enumerate().filter(|(_, g)| **g) {
+        step.st.reference_mid[a] = Some(mid.axis(a));
+    }
     if step.profile.frame.reference_cancels_tool_offset {
         reframe(step, |f| {
             f.geometry = Vec3::default();
@@ -316,6 +320,41 @@ pub(super) fn reference_return(step: &mut Step, words: &mut Words, n: usize, spa
     }
     if home != step.st.pos {
         step.emit(Op::Rapid { from: step.st.pos, to: home });
+    }
+    Ok(())
+}
+
+/// G29 (FANUC 0i manual, "return from the reference position"): each axis named goes at rapid
+/// to the intermediate point the last G28 or G30 gave it, then to the point given; an
+/// incremental word counts from the intermediate point. The intermediate point is kept as the
+/// programme wrote it, so it moves with a change of the coordinate system (as the manual says).
+/// An axis no G28/G30 has named since power on has no intermediate point: alarm NCS-E88
+/// (ncsight's rule; what the control does then was not found).
+pub(super) fn from_reference(step: &mut Step, words: &mut Words, span: Span) -> Result<(), Diagnostic> {
+    let inc_letters: [u8; 3] = [b'U', b'V', b'W'];
+    let abs_letters: [u8; 3] = [b'X', b'Y', b'Z'];
+    let incremental: [bool; 3] = std::array::from_fn(|a| {
+        (step.profile.incremental_addresses && words.has(inc_letters[a])) || (step.st.incremental && words.has(abs_letters[a]))
+    });
+    let shown = step.st.pos + step.st.frame.unmoved;
+    let (written, given) = axis_target(step, words)?;
+    if !given.iter().any(|g| *g) {
+        return Ok(());
+    }
+    let (mut mid, mut end) = (step.st.pos, step.st.pos);
+    for a in (0..3).filter(|a| given[*a]) {
+        let Some(m) = step.st.reference_mid[a] else {
+            let letter = abs_letters[a] as char;
+            return Err(step.alarm(Rule::NoIntermediatePoint, span, format!("G29 names {letter}, and no G28 or G30 has given {letter} an intermediate point since the start")));
+        };
+        mid.set_axis(a, m);
+        end.set_axis(a, if incremental[a] { m + (written.axis(a) - shown.axis(a)) } else { written.axis(a) });
+    }
+    if mid != step.st.pos {
+        step.emit(Op::Rapid { from: step.st.pos, to: mid });
+    }
+    if end != step.st.pos {
+        step.emit(Op::Rapid { from: step.st.pos, to: end });
     }
     Ok(())
 }

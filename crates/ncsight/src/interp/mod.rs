@@ -660,7 +660,7 @@ fn collect<'w>(
                 && !w.expr
                 && w.value >= 0.0
                 && w.is_code()
-                && matches!(profile.g_code(w.code().0, w.code().1).map(|g| g.function), Some(GFn::NotYet(_) | GFn::NotYetReference(_)))
+                && matches!(profile.g_code(w.code().0, w.code().1).map(|g| g.function), Some(GFn::NotYet(_)))
         })
     };
     for (i, w) in all.iter().enumerate() {
@@ -806,7 +806,7 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
         } else {
             last_of.push((g.group, w, g));
         }
-        if matches!(g.function, GFn::ReferenceReturn | GFn::OtherReferenceReturn | GFn::ReferenceCheck | GFn::NotYetReference(_))
+        if matches!(g.function, GFn::ReferenceReturn | GFn::OtherReferenceReturn | GFn::FromReference | GFn::ReferenceCheck)
             && profile.reference_in_canned_cycle_alarm
             && step.st.drill.kind.is_some()
             // G80, or a group 01 code, in the same block cancels the cycle first (inferred: a
@@ -820,7 +820,7 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
                 format!("{}: a reference-point return while a drilling canned cycle is in force; cancel it with G80 first", w.text()),
             ));
         }
-        if let GFn::NotYet(why) | GFn::NotYetReference(why) = g.function {
+        if let GFn::NotYet(why) = g.function {
             return Err(step.alarm(Rule::NotSupported, w.span, format!("{} ({}): {why}", w.text(), g.meaning)));
         }
         // The programme runs G65 before a block reaches the interpreter: one that comes here is
@@ -863,6 +863,7 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
                     | GFn::MachineCoordinates
                     | GFn::ReferenceReturn
                     | GFn::OtherReferenceReturn
+                    | GFn::FromReference
                     | GFn::LatheCoordinateSet
                     | GFn::MillCoordinateSet
                     | GFn::DataSetting
@@ -983,10 +984,10 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
                     codes.motion = Some((w.span, Motion::Rapid));
                 }
             }
-            GFn::Dwell | GFn::DataSetting | GFn::OffsetMove(_) | GFn::ReferenceCheck | GFn::Skip | GFn::ToolMeasure(_) | GFn::SingleDirection | GFn::ReferenceReturn | GFn::OtherReferenceReturn | GFn::LocalCoordinates | GFn::MachineCoordinates | GFn::LatheCoordinateSet | GFn::MillCoordinateSet | GFn::CompoundThread(_) | GFn::PeckCycle(_) | GFn::Rough(_) | GFn::Finish => {
+            GFn::Dwell | GFn::DataSetting | GFn::OffsetMove(_) | GFn::ReferenceCheck | GFn::Skip | GFn::ToolMeasure(_) | GFn::SingleDirection | GFn::ReferenceReturn | GFn::OtherReferenceReturn | GFn::FromReference | GFn::LocalCoordinates | GFn::MachineCoordinates | GFn::LatheCoordinateSet | GFn::MillCoordinateSet | GFn::CompoundThread(_) | GFn::PeckCycle(_) | GFn::Rough(_) | GFn::Finish => {
                 codes.non_modal = Some((w.span, g.function))
             }
-            GFn::NotYet(_) | GFn::NotYetReference(_) | GFn::MacroCall | GFn::ModalMacroCall | GFn::ModalMacroCancel => unreachable!("rejected above"),
+            GFn::NotYet(_) | GFn::MacroCall | GFn::ModalMacroCall | GFn::ModalMacroCancel => unreachable!("rejected above"),
         }
     }
     // Help text G84/88: no axis move between M29 and the G84/G88 block (a dwell's X is a time).
@@ -1316,6 +1317,7 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
         Some((_, GFn::Rough(kind))) => rough::block(step, &mut words, kind)?,
         Some((_, GFn::Finish)) => rough::finishing(step, &mut words)?,
         Some((span, GFn::ReferenceReturn)) => frame::reference_return(step, &mut words, 1, span)?,
+        Some((span, GFn::FromReference)) => frame::from_reference(step, &mut words, span)?,
         Some((span, GFn::OtherReferenceReturn)) => {
             let n = frame::other_reference(step, &mut words)?;
             frame::reference_return(step, &mut words, n, span)?;
@@ -1441,6 +1443,7 @@ fn describe_command(step: &Step, codes: &Codes) -> String {
     let (_, m) = match codes.non_modal {
         Some((_, f @ GFn::Dwell)) => return format!("{} (dwell)", name(f)),
         Some((_, f @ (GFn::ReferenceReturn | GFn::OtherReferenceReturn))) => return format!("{} (reference return)", name(f)),
+        Some((_, f @ GFn::FromReference)) => return format!("{} (return from the reference point)", name(f)),
         Some((_, f @ GFn::LocalCoordinates)) => return format!("{} (local coordinate system)", name(f)),
         Some((_, f @ GFn::DataSetting)) => return format!("{} (data setting)", name(f)),
         Some((_, f @ GFn::OffsetMove(_))) => return format!("{} (tool offset increase/decrease)", name(f)),

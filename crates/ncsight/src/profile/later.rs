@@ -7,8 +7,6 @@ use super::common::{g, gp};
 use super::{GDef, GFn, Group};
 
 const LATER: GFn = GFn::NotYet("not simulated by ncsight yet");
-/// A reference-point code not simulated yet (it still counts for FANUC alarm 0044).
-const LATER_REF: GFn = GFn::NotYetReference("not simulated by ncsight yet");
 
 /// FANUC 0-M (the 0-M list as the FANUC 0i-MC manual gives it; seed 003's table of contents
 /// names G27-G30, G52, G53, G92).
@@ -20,7 +18,7 @@ pub(super) const FANUC_0M: &[GDef] = &[
     g(22, Group::StrokeCheck, GFn::StrokeCheck(true), "stored stroke check 2 on: X Y Z the upper limits, I J K the lower, machine coordinates"),
     g(23, Group::StrokeCheck, GFn::StrokeCheck(false), "stored stroke check 2 off"),
     g(27, Group::NonModal, GFn::ReferenceCheck, "reference point return check"),
-    g(29, Group::NonModal, LATER_REF, "return from the reference point via the G28 intermediate point"),
+    g(29, Group::NonModal, GFn::FromReference, "return from the reference point through the last G28/G30 intermediate point"),
     g(30, Group::NonModal, GFn::OtherReferenceReturn, "return to the 2nd, 3rd or 4th reference point"),
     g(31, Group::NonModal, GFn::Skip, "skip function (feed until the skip signal)"),
     g(33, Group::Motion, LATER, "thread cutting"),
@@ -129,7 +127,7 @@ pub(super) const YASNAC_LX3: &[GDef] = &[
     g(22, Group::StrokeCheck, GFn::StrokeCheck(true), "stored stroke check 2 on: X Y Z the upper limits, I J K the lower, machine coordinates (inferred)"),
     g(23, Group::StrokeCheck, GFn::StrokeCheck(false), "stored stroke check 2 off (inferred)"),
     g(27, Group::NonModal, GFn::ReferenceCheck, "reference point return check (inferred)"),
-    g(29, Group::NonModal, LATER_REF, "return from the reference point (inferred)"),
+    g(29, Group::NonModal, GFn::FromReference, "return from the reference point through the last G28/G30 intermediate point (inferred)"),
     g(30, Group::NonModal, GFn::OtherReferenceReturn, "return to the 2nd reference point (inferred)"),
     g(31, Group::NonModal, GFn::Skip, "skip function (inferred)"),
     g(65, Group::NonModal, GFn::MacroCall, "custom macro call (inferred)"),

@@ -151,6 +151,9 @@ pub enum GFn {
     ConstantRpm,
     /// G28: via an intermediate point to the reference point.
     ReferenceReturn,
+    /// G29: from the reference point through the last G28/G30's intermediate point to the point
+    /// given.
+    FromReference,
     /// G50 (lathe, system A): set the current position's coordinates; with S, the spindle clamp.
     LatheCoordinateSet,
     /// G92 (mill): set the current position's coordinates.
@@ -227,9 +230,6 @@ pub enum GFn {
     /// programme, as G65).
     ModalMacroCall,
     ModalMacroCancel,
-    /// A reference-point code (G27, G29, G30) known to the controller, not yet simulated: an
-    /// alarm that says so, after the rules that every reference-point code follows (FANUC 0044).
-    NotYetReference(&'static str),
 }
 
 /// The curves the GSK980TDi cuts besides the circle (help text G05/G05.1, G6.2/G6.3, G7.2/G7.3).
@@ -781,7 +781,7 @@ pub enum CodeStatus {
 impl GFn {
     pub fn status(self) -> CodeStatus {
         match self {
-            GFn::NotYet(_) | GFn::NotYetReference(_) => CodeStatus::NotYet,
+            GFn::NotYet(_) => CodeStatus::NotYet,
             GFn::Skip => CodeStatus::Assumed("no skip signal comes: the move runs to its end (NCS-W34)"),
             GFn::ToolMeasure(_) => CodeStatus::Assumed("no measuring signal comes: the tool reaches the measuring position, the offset stays (NCS-W35)"),
             _ => CodeStatus::Simulated,

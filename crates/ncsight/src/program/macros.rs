@@ -153,7 +153,7 @@ impl Reading<'_> {
         }
         // The last code commanded in the group, else its power-on code: only for a group whose
         // codes the profile simulates (G61/G64 are not simulated on the lathes yet).
-        let simulated = p.g_defs().any(|d| d.group == group && !matches!(d.function, GFn::NotYet(_) | GFn::NotYetReference(_)));
+        let simulated = p.g_defs().any(|d| d.group == group && !matches!(d.function, GFn::NotYet(_)));
         match m.group_codes[group as usize] {
             0 if !simulated => Err(no_such(number, "the codes of this group are not simulated by ncsight yet")),
             0 => match POWER_ON.iter().find(|(g, _)| *g == group) {

@@ -1,3 +1,0 @@
-(expect NCS-E38 line 2 col 1 on fanuc0m)
-G29 Z0.
-M30
