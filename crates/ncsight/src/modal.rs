@@ -316,6 +316,17 @@ pub struct Modal {
     /// The intermediate point of the last G28 or G30, per axis it named, in the coordinates the
     /// programme gave it (G29 goes through it; a coordinate change shifts it with the system).
     pub reference_mid: [Option<f64>; 3],
+    /// Between `G10 L3` / `G10 L50` (`L52`) and `G11`, the lines are data, not motion.
+    pub data_input: Option<DataInput>,
+}
+
+/// What the lines between G10 and G11 are.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum DataInput {
+    /// GSK980TDi `G10 L3`: tool life management data (read, not kept).
+    ToolLife,
+    /// `G10 L50` (FANUC) or `G10 L52` (GSK): one parameter a line.
+    Parameters(crate::profile::ParamEntry),
 }
 
 /// Words a macro reads back as modal information (FANUC #4102-#4113).
@@ -378,6 +389,7 @@ impl Modal {
             group_codes: [0; crate::profile::Group::COUNT],
             last_words: LastWords::default(),
             reference_mid: [None; 3],
+            data_input: None,
         }
     }
 

@@ -8,7 +8,7 @@
 
 use super::{axis_target, Step, Words};
 use crate::alarm::{Diagnostic, Rule};
-use crate::modal::Frame;
+use crate::modal::{DataInput, Frame};
 use crate::motion::{Op, Vec3};
 use crate::profile::Profile;
 use crate::setup::{Offset, Point, Setup};
@@ -359,6 +359,90 @@ pub(super) fn from_reference(step: &mut Step, words: &mut Words, span: Span) -> 
     Ok(())
 }
 
+/// A line between G10 L3/L50/L52 and G11. G11 ends the lines. A tool life line is dropped (GSK
+/// help text, G10 L3 note 1: its words are ignored). A parameter line is `N<number> [P<axis>]
+/// <value letter><value>`, or on the GSK `N<number> R<variable>` to read the parameter into a
+/// macro variable. A bit parameter's value is its bits as binary digits (`R00000100` sets bit
+/// 2), the FANUC 0i manual's example and GSK note 1. ncsight keeps one value for an axis
+/// parameter: P names the axis and the value is the parameter's for every axis (docs).
+pub(super) fn data_line(step: &mut Step, block: &crate::read::Block, mode: DataInput) -> Result<(), Diagnostic> {
+    let ends = block.words.iter().any(|w| w.letter == b'G' && !w.expr && w.is_code() && w.code() == (11, None));
+    if ends {
+        step.st.data_input = None;
+        return Ok(());
+    }
+    let DataInput::Parameters(entry) = mode else { return Ok(()) };
+    let Some(number) = block.sequence else {
+        return Err(step.alarm(Rule::MissingWord, block.span, "a parameter line between G10 and G11 needs N, the parameter's number"));
+    };
+    let (mut value, mut read, mut axis) = (None, None, None);
+    for w in &block.words {
+        match w.letter {
+            l if l == entry.value && value.is_none() => value = Some(w),
+            l if Some(l) == entry.read_into && read.is_none() => read = Some(w),
+            b'P' if axis.is_none() => axis = Some(w),
+            // GSK: K and D name PLC parameters, which ncsight does not have.
+            b'K' | b'D' if entry.read_into.is_some() => {
+                let msg = format!("{}: PLC parameters (K, D) are not modelled by ncsight; the line changes nothing here", w.text());
+                step.warn(Rule::NotSimulated, w.span, msg);
+                return Ok(());
+            }
+            _ => return Err(step.alarm(Rule::WordNotTaken, w.span, format!("{}: a parameter line between G10 L{} and G11 takes N, P and {} only", w.text(), entry.l, std::iter::once(entry.value).chain(entry.read_into).map(|c| (c as char).to_string()).collect::<Vec<_>>().join(" and ")))),
+        }
+    }
+    if let Some(p) = axis {
+        if p.decimal || p.value < 1.0 || p.value > 8.0 {
+            return Err(step.alarm(Rule::ValueOutOfRange, p.span, format!("{}: P is the axis number, 1 to 8", p.text())));
+        }
+    }
+    // The profile's parameters of this number: one value, or bits.
+    let defs = step.profile.params_numbered(number);
+    match (value, read) {
+        (Some(a), Some(b)) => Err(step.alarm(Rule::DuplicateWord, b.span, format!("{} and {}: a parameter line writes or reads, not both", a.text(), b.text()))),
+        (None, None) => Err(step.alarm(Rule::MissingWord, block.span, format!("parameter line N{number}: {} gives the value to write", entry.value as char))),
+        (Some(w), None) => {
+            if defs.is_empty() {
+                let msg = format!("parameter {number} is not one ncsight models: writing it changes nothing here");
+                step.warn(Rule::NotSimulated, w.span, msg);
+                return Ok(());
+            }
+            for (key, bit) in defs {
+                let v = match bit {
+                    // The bits as binary digits: bit b is the digit b places from the right.
+                    Some(b) => {
+                        let digits = w.value.abs().round() as u64;
+                        if w.decimal || digits.to_string().bytes().any(|c| c > b'1') || digits > 11_111_111 {
+                            return Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("{}: parameter {number} is a bit parameter: its value is eight binary digits (as 00000100)", w.text())));
+                        }
+                        ((digits / 10u64.pow(u32::from(b))) % 10) as f64
+                    }
+                    None => w.value,
+                };
+                if let Err(e) = step.params.check(key, v) {
+                    return Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("{}: {e}", w.text())));
+                }
+                step.out.param_writes.push((key, v));
+            }
+            Ok(())
+        }
+        (None, Some(r)) => {
+            if r.decimal || r.value < 1.0 || r.value > 9999.0 {
+                return Err(step.alarm(Rule::ValueOutOfRange, r.span, format!("{}: R names the macro variable the parameter is read into (R100 reads into #100; inferred)", r.text())));
+            }
+            if defs.is_empty() {
+                return Err(step.alarm(Rule::NotSupported, block.span, format!("parameter {number} is not one ncsight models: its value cannot be read")));
+            }
+            // A bit parameter reads as its binary digits; the bits ncsight does not model read 0.
+            let v = defs.iter().map(|(key, bit)| match bit {
+                Some(b) => step.params.get(*key) * 10f64.powi(i32::from(*b)),
+                None => step.params.get(*key),
+            });
+            step.out.var_write = Some((r.value as u32, v.sum()));
+            Ok(())
+        }
+    }
+}
+
 /// G30's P: the reference point 2-4 (2 when omitted), as far as the profile has them.
 pub(super) fn other_reference(step: &mut Step, words: &mut Words) -> Result<usize, Diagnostic> {
     let last = step.profile.frame.last_reference;
@@ -449,13 +533,21 @@ pub(super) fn data_setting(step: &mut Step, words: &mut Words, span: Span) -> Re
         Some(w) => Some(w.value as u32),
         None => None,
     };
+    // The parameter lines follow, up to G11 (FANUC 0i manual, G10 L50; GSK980TDi help text,
+    // parameter reading and writing, G10 L52).
+    if let Some(entry) = step.profile.frame.parameter_entry.filter(|e| l == Some(e.l)) {
+        step.st.data_input = Some(DataInput::Parameters(entry));
+        return Ok(None);
+    }
     if forms == G10Forms::ToolLifeAndParameters {
-        // GSK980TDi help text: G10 L3 (tool life, HT:567) and G10 L52 (parameters, HT:1525).
-        return Err(match l {
-            Some(3) => step.alarm(Rule::NotSupported, span, "G10 L3 (tool life management data): not simulated by ncsight yet"),
-            Some(52) => step.alarm(Rule::NotSupported, span, "G10 L52 (parameter writing): not simulated by ncsight yet"),
-            _ => step.alarm(Rule::ImproperGCode, span, format!("G10 on {}: its help text has G10 L3 (tool life) and G10 L52 (parameters) only, no work or tool offset setting", step.profile.name)),
-        });
+        // GSK980TDi help text, G10 L3: the tool life data up to G11; every other word there is
+        // ignored (note 1). ncsight does not count tool life: the lines are read and dropped.
+        if l == Some(3) {
+            step.warn(Rule::NotSimulated, span, "G10 L3: the tool life management data up to G11 are read and not kept (ncsight does not count tool life)");
+            step.st.data_input = Some(DataInput::ToolLife);
+            return Ok(None);
+        }
+        return Err(step.alarm(Rule::ImproperGCode, span, format!("G10 on {}: its help text has G10 L3 (tool life) and G10 L52 (parameters) only, no work or tool offset setting", step.profile.name)));
     }
     let p = match words.take(b'P') {
         Some(w) if w.decimal || w.value < 0.0 => return Err(step.alarm(Rule::IllegalDecimalPoint, w.span, format!("{}: P is a whole number", w.text()))),

@@ -69,6 +69,11 @@ pub struct Outcome {
     stroke_hit: Option<(Span, String)>,
     /// What a G10 block writes into the machine's tables, once it has run.
     table_write: Option<TableWrite>,
+    /// What a parameter line between G10 L50/L52 and G11 writes, once it has run.
+    param_writes: Vec<(crate::profile::ParamKey, f64)>,
+    /// A macro variable a GSK parameter line reads a parameter into (`N_ R_`): the programme
+    /// sets it after the block.
+    pub var_write: Option<(u32, f64)>,
     /// Radius compensation found no path (the block alarms).
     comp_error: Option<Diagnostic>,
     /// The block made a move in the plane in compensation.
@@ -88,6 +93,8 @@ impl Outcome {
         self.overtravel = None;
         self.stroke_hit = None;
         self.table_write = None;
+        self.param_writes.clear();
+        self.var_write = None;
         self.comp_error = None;
         self.comp_plane_move = false;
         self.comp_spans.clear();
@@ -612,6 +619,10 @@ impl Interpreter {
         } else if let Some(last) = step.out.records.iter_mut().rev().find(|r| r.span == block.span) {
             last.block_end = true;
         }
+        // A parameter line: checked when it was read (frame::data_line).
+        for (key, value) in out.param_writes.drain(..) {
+            self.params.set(key, value).expect("checked by the parameter line");
+        }
         // G10: the tables change; the tool stays where it is on the machine.
         if let Some(w) = out.table_write.take() {
             let moved = self.tables.write(w, &self.state.frame);
@@ -758,6 +769,10 @@ struct Codes {
 ///     mode in force: drilling cycle, thread, box cycle, G00-G03.
 /// 11. M codes that act after the motion (stops, ends), then every word must have been used.
 fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), Diagnostic> {
+    // Between G10 L3/L50/L52 and G11 a block is a line of data.
+    if let Some(mode) = step.st.data_input {
+        return frame::data_line(step, block, mode);
+    }
     // 0. Under G16 the plane's two words are a radius and an angle: the block is read with the
     // X, Y, Z words they stand for (not in a block that sets or ends a transform, or G15's own).
     // The block's own G16/G15, G90/G91 and plane count: its words are read in its modes.
@@ -984,7 +999,7 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
                     codes.motion = Some((w.span, Motion::Rapid));
                 }
             }
-            GFn::Dwell | GFn::DataSetting | GFn::OffsetMove(_) | GFn::ReferenceCheck | GFn::Skip | GFn::ToolMeasure(_) | GFn::SingleDirection | GFn::ReferenceReturn | GFn::OtherReferenceReturn | GFn::FromReference | GFn::LocalCoordinates | GFn::MachineCoordinates | GFn::LatheCoordinateSet | GFn::MillCoordinateSet | GFn::CompoundThread(_) | GFn::PeckCycle(_) | GFn::Rough(_) | GFn::Finish => {
+            GFn::Dwell | GFn::DataSetting | GFn::OffsetMove(_) | GFn::ReferenceCheck | GFn::Skip | GFn::ToolMeasure(_) | GFn::SingleDirection | GFn::ReferenceReturn | GFn::OtherReferenceReturn | GFn::FromReference | GFn::DataSettingEnd | GFn::LocalCoordinates | GFn::MachineCoordinates | GFn::LatheCoordinateSet | GFn::MillCoordinateSet | GFn::CompoundThread(_) | GFn::PeckCycle(_) | GFn::Rough(_) | GFn::Finish => {
                 codes.non_modal = Some((w.span, g.function))
             }
             GFn::NotYet(_) | GFn::MacroCall | GFn::ModalMacroCall | GFn::ModalMacroCancel => unreachable!("rejected above"),
@@ -1325,6 +1340,8 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
         Some((_, GFn::LatheCoordinateSet | GFn::MillCoordinateSet)) => frame::set_coordinates(step, &mut words)?,
         Some((_, GFn::LocalCoordinates)) => frame::local(step, &mut words)?,
         Some((span, GFn::DataSetting)) => step.out.table_write = frame::data_setting(step, &mut words, span)?,
+        // G11 outside the data lines: nothing to end (FANUC and GSK texts say nothing; inferred).
+        Some((_, GFn::DataSettingEnd)) => {}
         Some((span, GFn::OffsetMove(factor))) => frame::offset_move(step, &mut words, factor, span)?,
         Some((span, GFn::ReferenceCheck)) => frame::reference_check(step, &mut words, span)?,
         Some((span, GFn::Skip)) => skip(step, &mut words, span)?,
@@ -1446,6 +1463,7 @@ fn describe_command(step: &Step, codes: &Codes) -> String {
         Some((_, f @ GFn::FromReference)) => return format!("{} (return from the reference point)", name(f)),
         Some((_, f @ GFn::LocalCoordinates)) => return format!("{} (local coordinate system)", name(f)),
         Some((_, f @ GFn::DataSetting)) => return format!("{} (data setting)", name(f)),
+        Some((_, f @ GFn::DataSettingEnd)) => return format!("{} (data setting end)", name(f)),
         Some((_, f @ GFn::OffsetMove(_))) => return format!("{} (tool offset increase/decrease)", name(f)),
         Some((_, f @ GFn::ReferenceCheck)) => return format!("{} (reference point return check)", name(f)),
         Some((_, f @ GFn::Skip)) => return format!("{} (skip function)", name(f)),

@@ -12,7 +12,8 @@ const LATER: GFn = GFn::NotYet("not simulated by ncsight yet");
 /// names G27-G30, G52, G53, G92).
 pub(super) const FANUC_0M: &[GDef] = &[
     g(9, Group::NonModal, GFn::PathControl, "exact stop for one block (no effect here: every move of ncsight's time model ends at rest)"),
-    g(10, Group::NonModal, GFn::DataSetting, "programmable data input (offsets, work offsets)"),
+    g(10, Group::NonModal, GFn::DataSetting, "programmable data input (offsets, work offsets; L50 parameters)"),
+    g(11, Group::NonModal, GFn::DataSettingEnd, "programmable data input cancel (the end of G10 L50's parameter lines)"),
     g(15, Group::Polar, GFn::PolarCoordinates(false), "polar coordinate command off"),
     g(16, Group::Polar, GFn::PolarCoordinates(true), "polar coordinate command on: the plane's first word a radius, the second an angle"),
     g(22, Group::StrokeCheck, GFn::StrokeCheck(true), "stored stroke check 2 on: X Y Z the upper limits, I J K the lower, machine coordinates"),
@@ -48,8 +49,8 @@ pub(super) const FANUC_0M: &[GDef] = &[
 /// FANUC 0-T, G-code system A (the FANUC 0-TC G-code table; the 0i-TC for what it lacks).
 pub(super) const FANUC_0T: &[GDef] = &[
     gp(7, 1, "G07.1", Group::NonModal, LATER, "cylindrical interpolation (C axis)"),
-    g(10, Group::NonModal, GFn::DataSetting, "programmable data input (offsets, work offsets)"),
-    g(11, Group::NonModal, LATER, "programmable data input cancel"),
+    g(10, Group::NonModal, GFn::DataSetting, "programmable data input (offsets, work offsets; L50 parameters)"),
+    g(11, Group::NonModal, GFn::DataSettingEnd, "programmable data input cancel (the end of G10 L50's parameter lines)"),
     gp(12, 1, "G12.1", Group::Polar, LATER, "polar coordinate interpolation on (C axis)"),
     gp(13, 1, "G13.1", Group::Polar, LATER, "polar coordinate interpolation off"),
     g(22, Group::StrokeCheck, GFn::StrokeCheck(true), "stored stroke check 2 on: X Y Z the upper limits, I J K the lower, machine coordinates"),
@@ -75,7 +76,7 @@ pub(super) const GSK980TDI: &[GDef] = &[
     gp(7, 1, "G07.1", Group::NonModal, LATER, "cylindrical interpolation"),
     g(9, Group::NonModal, GFn::PathControl, "exact stop for one block (no effect here: every move of ncsight's time model ends at rest)"),
     g(10, Group::NonModal, GFn::DataSetting, "data input from the programme (L3: tool life; L52: parameters)"),
-    g(11, Group::NonModal, LATER, "data input cancel"),
+    g(11, Group::NonModal, GFn::DataSettingEnd, "data input cancel (the end of G10 L3's or L52's lines)"),
     gp(12, 1, "G12.1", Group::Polar, LATER, "polar coordinate interpolation on"),
     gp(13, 1, "G13.1", Group::Polar, LATER, "polar coordinate interpolation off"),
     g(15, Group::Polar2, LATER, "polar coordinate command off"),
@@ -96,8 +97,8 @@ pub(super) const GSK980TDI: &[GDef] = &[
 
 /// GSK988T: G12.1/G13.1 from its G-code table; the rest inferred from the GSK980TDi help text.
 pub(super) const GSK988T: &[GDef] = &[
-    g(10, Group::NonModal, LATER, "data input from the programme (inferred)"),
-    g(11, Group::NonModal, LATER, "data input cancel (inferred)"),
+    g(10, Group::NonModal, GFn::DataSetting, "data input from the programme: L3 tool life, L52 parameters (inferred)"),
+    g(11, Group::NonModal, GFn::DataSettingEnd, "data input cancel (inferred)"),
     gp(12, 1, "G12.1", Group::Polar, LATER, "polar coordinate interpolation on"),
     gp(13, 1, "G13.1", Group::Polar, LATER, "polar coordinate interpolation off"),
     g(22, Group::StrokeCheck, GFn::StrokeCheck(true), "stored stroke check 2 on: X Y Z the upper limits, I J K the lower, machine coordinates (inferred)"),
@@ -123,7 +124,8 @@ pub(super) const GSK988T: &[GDef] = &[
 
 /// YASNAC LX3: no G-code table was found; FANUC 0-T-style lathe codes (inferred).
 pub(super) const YASNAC_LX3: &[GDef] = &[
-    g(10, Group::NonModal, LATER, "data setting (inferred)"),
+    g(10, Group::NonModal, GFn::DataSetting, "data setting: offsets, work offsets, L50 parameters (inferred)"),
+    g(11, Group::NonModal, GFn::DataSettingEnd, "data setting cancel (inferred)"),
     g(22, Group::StrokeCheck, GFn::StrokeCheck(true), "stored stroke check 2 on: X Y Z the upper limits, I J K the lower, machine coordinates (inferred)"),
     g(23, Group::StrokeCheck, GFn::StrokeCheck(false), "stored stroke check 2 off (inferred)"),
     g(27, Group::NonModal, GFn::ReferenceCheck, "reference point return check (inferred)"),

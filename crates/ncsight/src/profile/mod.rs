@@ -164,6 +164,8 @@ pub enum GFn {
     LengthComp(i8),
     /// G10: data setting (work offsets, tool offsets) in the forms of the profile's `G10Forms`.
     DataSetting,
+    /// G11: the end of G10's parameter (or tool life) lines.
+    DataSettingEnd,
     /// G45 (+1), G46 (-1), G47 (+2), G48 (-2): the block's move lengthened (shortened) by the
     /// offset D once (twice).
     OffsetMove(i8),
@@ -477,6 +479,8 @@ pub struct FrameRules {
     pub lathe_offset_keys: Option<(ParamKey, ParamKey)>,
     /// What G10 sets, where the profile simulates it.
     pub g10: G10Forms,
+    /// `G10 L_` ... `G11`: the parameter-writing mode, where the profile has one.
+    pub parameter_entry: Option<ParamEntry>,
     /// Radius compensation looks ahead across this many blocks without a move in the plane
     /// before the held move ends perpendicular (FANUC: 1, as its manuals draw it).
     pub comp_lookahead: u8,
@@ -492,6 +496,18 @@ pub struct FrameRules {
     /// The parameters of the coordinate transforms (G68, G51), where the profile has them.
     pub transform_keys: TransformKeys,
     pub source: &'static str,
+}
+
+/// The programmable parameter mode: `G10 L<l>`, then one parameter a line (`N` the number, `P`
+/// the axis, the value), then `G11`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct ParamEntry {
+    pub l: u32,
+    /// The letter of the value written: R on the FANUC (0i manual, G10 L50), W on the GSK
+    /// (GSK980TDi help text, parameter reading and writing).
+    pub value: u8,
+    /// The letter naming a macro variable the parameter is read into (GSK: R).
+    pub read_into: Option<u8>,
 }
 
 /// The parameters G68 and G51 read.
@@ -520,8 +536,6 @@ pub enum G10Forms {
     MillOffsets,
     /// GSK980TDi: only `G10 L3` (tool life) and `G10 L52` (parameters); no offsets.
     ToolLifeAndParameters,
-    /// Not simulated (G10 is "not simulated yet" in the code table).
-    None,
 }
 
 impl FrameRules {
@@ -531,6 +545,7 @@ impl FrameRules {
         last_reference: 4,
         lathe_offset_keys: Some((ParamKey::Number(5002, Some(4)), ParamKey::Number(5002, Some(6)))),
         g10: G10Forms::LatheOffsets,
+        parameter_entry: Some(ParamEntry { l: 50, value: b'R', read_into: None }),
         comp_lookahead: 1,
         comp_idle_alarm: None,
         rough_cancels_comp: false,
@@ -544,6 +559,7 @@ impl FrameRules {
         last_reference: 4,
         lathe_offset_keys: Some((ParamKey::Setting("geometry_by_movement"), ParamKey::Setting("wear_with_next_move"))),
         g10: G10Forms::ToolLifeAndParameters,
+        parameter_entry: Some(ParamEntry { l: 52, value: b'W', read_into: Some(b'R') }),
         comp_lookahead: 6,
         comp_idle_alarm: Some(7),
         rough_cancels_comp: true,
@@ -1172,10 +1188,12 @@ impl Profile {
     }
 
     /// How far ncsight simulates `g` on this profile: the function's status, and for G10 the
-    /// forms the profile has (the GSK980TDi's L3 and L52 are not simulated yet).
+    /// forms the profile has (the GSK980TDi's L3 tool life data are read and not kept).
     pub fn code_status(&self, g: &GDef) -> CodeStatus {
         match g.function {
-            GFn::DataSetting if self.frame.g10 == G10Forms::ToolLifeAndParameters => CodeStatus::NotYet,
+            GFn::DataSetting if self.frame.g10 == G10Forms::ToolLifeAndParameters => {
+                CodeStatus::Assumed("G10 L3's tool life data are read and not kept: ncsight does not count tool life")
+            }
             f => f.status(),
         }
     }
@@ -1202,6 +1220,18 @@ impl Profile {
 
     pub fn m_code(&self, code: u32) -> Option<&'static MDef> {
         self.m_defs().find(|m| m.code == code)
+    }
+
+    /// The parameters a manual's number names: one value, or its bits (key, bit).
+    pub fn params_numbered(&self, number: u32) -> Vec<(ParamKey, Option<u8>)> {
+        self.params
+            .iter()
+            .flat_map(|t| t.iter())
+            .filter_map(|d| match d.key {
+                ParamKey::Number(n, bit) if n == number => Some((d.key, bit)),
+                _ => None,
+            })
+            .collect()
     }
 
     pub fn param(&self, key: ParamKey) -> Option<(usize, &'static ParamDef)> {
@@ -1341,6 +1371,14 @@ impl Params {
     }
 
     pub fn set(&mut self, key: ParamKey, value: f64) -> Result<(), ParamError> {
+        let i = self.check(key, value)?;
+        self.values[i] = value;
+        self.cache();
+        Ok(())
+    }
+
+    /// Whether `value` may be set for `key`: its index when it may.
+    pub fn check(&self, key: ParamKey, value: f64) -> Result<usize, ParamError> {
         let (i, def) = self.profile.param(key).ok_or_else(|| ParamError::Unknown(key.to_string()))?;
         if value < def.min || value > def.max {
             return Err(ParamError::OutOfRange { key: key.to_string(), value, min: def.min, max: def.max, unit: def.unit });
@@ -1348,9 +1386,7 @@ impl Params {
         if def.whole() && value.fract() != 0.0 {
             return Err(ParamError::NotWhole { key: key.to_string(), value, unit: def.unit });
         }
-        self.values[i] = value;
-        self.cache();
-        Ok(())
+        Ok(i)
     }
 
     /// Refresh the values kept for the blocks that read them all the time.

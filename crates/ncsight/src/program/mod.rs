@@ -1441,6 +1441,16 @@ impl Core {
         match self.interp.execute_into(block, &mut self.outcome) {
             Ok(()) => {
                 let flow = self.outcome.flow.take();
+                // A GSK parameter line read a parameter into a macro variable.
+                if let Some((number, value)) = self.outcome.var_write.take() {
+                    let style = self.interp.profile().alarm_style;
+                    if let Err((rule, msg)) = self.vars.write(i64::from(number), Some(value), self.clock_s) {
+                        self.alarm(Diagnostic::new(rule, style, block.span, msg), sink);
+                        if self.mode == Mode::Run {
+                            return false;
+                        }
+                    }
+                }
                 self.pass_on(sink);
                 if self.interp.state().ended {
                     self.status = Status::Ended;
