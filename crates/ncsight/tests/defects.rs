@@ -53,7 +53,7 @@ fn fanuc_0044_reference_return_in_a_canned_cycle() {
 fn codes_of_the_manual_are_not_simulated_yet_not_unknown() {
     for (machine, block) in [
         ("fanuc0m", "G62"),
-        ("fanuc0m", "G33"),
+        ("fanuc0m", "G63"),
         ("fanuc0m", "G39"),
         ("fanuc0t", "G12.1"),
         ("gsk980tdi", "G12.1"),

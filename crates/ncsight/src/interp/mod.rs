@@ -1490,7 +1490,7 @@ fn describe_command(step: &Step, codes: &Codes) -> String {
         Motion::Linear => format!("{} (linear interpolation)", name(GFn::Linear)),
         Motion::ArcCw => format!("{} in the {plane} plane", name(GFn::ArcCw)),
         Motion::ArcCcw => format!("{} in the {plane} plane", name(GFn::ArcCcw)),
-        Motion::Thread(cmd) => format!("{} (thread cutting)", thread::name(cmd)),
+        Motion::Thread(cmd) => format!("{} (thread cutting)", thread::name(step.profile, cmd)),
         Motion::Box(kind) => format!("{} (single turning/facing cycle)", kind.code()),
         Motion::Curve(kind) => format!("{} in the {plane} plane", name(GFn::Curve(kind))),
     }

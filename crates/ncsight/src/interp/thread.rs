@@ -18,7 +18,14 @@ pub const MAX_LEAD_MM: f64 = 500.0;
 /// Largest lead of an arc thread (seed 002 F table: 0.001-9999 mm).
 pub const MAX_ARC_LEAD_MM: f64 = 9999.0;
 
-pub(super) fn name(cmd: ThreadCmd) -> &'static str {
+/// The command's code as this profile names it (G33 is the FANUC 0-M's G32), else as the
+/// lathes do.
+pub(super) fn name(profile: &crate::profile::Profile, cmd: ThreadCmd) -> &'static str {
+    let code = profile.name_of(crate::profile::GFn::Thread(cmd));
+    if code == "?" { default_name(cmd) } else { code }
+}
+
+fn default_name(cmd: ThreadCmd) -> &'static str {
     match cmd {
         ThreadCmd::Lead => "G32",
         ThreadCmd::Rigid => "G32.1",
@@ -316,7 +323,7 @@ pub(super) fn block(step: &mut Step, words: &mut Words, cmd: ThreadCmd, explicit
 /// G32 (TDi help) and G32.1 (seed 001 section 2).
 fn straight(step: &mut Step, words: &mut Words, cmd: ThreadCmd, run_deg: Option<f64>) -> Result<(), Diagnostic> {
     let rigid = cmd == ThreadCmd::Rigid;
-    let gname = name(cmd);
+    let gname = name(step.profile, cmd);
     let lead = step.read_lead(words, gname, !rigid && step.profile.thread.g32_pull_out, !rigid && step.profile.thread.g32_lead_e, MAX_LEAD_MM)?;
     // G32.1: J signed, K unsigned (seed 001 notes); G32: J signed, K as written taken positive.
     // FANUC's G32 has no J/K.
@@ -387,7 +394,7 @@ fn straight(step: &mut Step, words: &mut Words, cmd: ThreadCmd, run_deg: Option<
 
 /// G32.2 / G32.3 (seed 002).
 fn arc(step: &mut Step, words: &mut Words, dir: ArcDir, run_deg: Option<f64>) -> Result<(), Diagnostic> {
-    let gname = name(ThreadCmd::Arc(dir));
+    let gname = name(step.profile, ThreadCmd::Arc(dir));
     // I is taken by the centre, so F is the only lead word: F[25.4/n] for inch (seed 002).
     let lead = step.read_lead(words, gname, false, false, MAX_ARC_LEAD_MM)?;
     let unit = step.profile.thread.arc_q_unit_deg;

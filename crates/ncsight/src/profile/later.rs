@@ -22,7 +22,7 @@ pub(super) const FANUC_0M: &[GDef] = &[
     g(29, Group::NonModal, GFn::FromReference, "return from the reference point through the last G28/G30 intermediate point"),
     g(30, Group::NonModal, GFn::OtherReferenceReturn, "return to the 2nd, 3rd or 4th reference point"),
     g(31, Group::NonModal, GFn::Skip, "skip function (feed until the skip signal)"),
-    g(33, Group::Motion, LATER, "thread cutting"),
+    g(33, Group::Motion, GFn::Thread(crate::profile::ThreadCmd::Lead), "thread cutting: F the lead along the long axis, Q the start angle"),
     g(37, Group::NonModal, GFn::ToolMeasure(2), "automatic tool length measurement: G37 Z_, the measuring position"),
     g(39, Group::NonModal, LATER, "corner circular interpolation in cutter compensation"),
     g(45, Group::NonModal, GFn::OffsetMove(1), "tool offset increase"),
