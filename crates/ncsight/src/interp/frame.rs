@@ -371,7 +371,14 @@ pub(super) fn data_line(step: &mut Step, block: &crate::read::Block, mode: DataI
         step.st.data_input = None;
         return Ok(());
     }
-    let DataInput::Parameters(entry) = mode else { return Ok(()) };
+    let DataInput::Parameters(entry) = mode else {
+        // A programme end among the tool life lines is data too: G11 is probably missing.
+        if let Some(w) = block.words.iter().find(|w| w.letter == b'M' && !w.expr && matches!(w.value as u32, 2 | 30) && w.value.fract() == 0.0) {
+            let msg = format!("{}: read as tool life data (the lines after G10 L3 are data up to G11): the programme has not ended; is G11 missing?", w.text());
+            step.warn(Rule::TextIgnored, w.span, msg);
+        }
+        return Ok(());
+    };
     let Some(number) = block.sequence else {
         return Err(step.alarm(Rule::MissingWord, block.span, "a parameter line between G10 and G11 needs N, the parameter's number"));
     };
