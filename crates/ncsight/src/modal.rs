@@ -318,6 +318,16 @@ pub struct Modal {
     pub reference_mid: [Option<f64>; 3],
     /// Between `G10 L3` / `G10 L50` (`L52`) and `G11`, the lines are data, not motion.
     pub data_input: Option<DataInput>,
+    /// G12.1 polar coordinate interpolation in force.
+    pub polar_interp: Option<PolarInterp>,
+}
+
+/// G12.1 in force: the plane and the machine's Y before it (the plane's Y is the hypothetical
+/// C meanwhile; interp/polar.rs).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PolarInterp {
+    pub plane_before: Plane,
+    pub y_before: f64,
 }
 
 /// What the lines between G10 and G11 are.
@@ -390,6 +400,7 @@ impl Modal {
             last_words: LastWords::default(),
             reference_mid: [None; 3],
             data_input: None,
+            polar_interp: None,
         }
     }
 

@@ -193,7 +193,7 @@ impl TimeModel {
                 if *rapid {
                     trapezoid_s(turn, self.rotary_rapid_deg_min, self.rapid_accel_s)
                 } else {
-                    trapezoid_s(turn, self.feed_speed(r, *rate_deg_min), self.feed_accel_s)
+                    trapezoid_s(turn, self.feed_speed(r, *rate_deg_min), self.accel_s(r))
                 }
             }
             Op::Spindle { .. } | Op::Tool { .. } | Op::Stop { .. } | Op::End { .. } => 0.0,

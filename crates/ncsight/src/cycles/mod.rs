@@ -4,6 +4,7 @@
 pub mod curve;
 pub mod drill;
 pub mod groove;
+pub mod polar;
 pub mod rough;
 pub mod tap;
 pub mod thread;

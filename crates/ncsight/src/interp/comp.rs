@@ -64,7 +64,8 @@ pub(super) fn command(step: &mut Step, side: i8, d: Option<u32>, span: Span, arc
     if radius < 0.0 {
         return Err(step.alarm(Rule::ValueOutOfRange, span, format!("offset {number}: the radius with its wear is negative ({radius:.3} mm)")));
     }
-    let tip = if lathe {
+    // In polar coordinate interpolation the tip direction is 0 (GSK980TDi help text, G12.1 note 6).
+    let tip = if lathe && step.st.polar_interp.is_none() {
         let (dx, dz) = comp::tip_direction(e.tip);
         Vec3::new(radius * dx, 0.0, radius * dz)
     } else {

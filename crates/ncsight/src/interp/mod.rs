@@ -6,6 +6,7 @@ mod call;
 mod comp;
 mod compound;
 mod curve;
+mod polar;
 mod drill;
 mod frame;
 mod groove;
@@ -217,8 +218,17 @@ impl Step<'_> {
         self.push_record(span, n, op);
     }
 
-    /// Put a record in the block's outcome as it is (positions as the controller moves).
+    /// Put a record in the block's outcome: as it is, or in G12.1 as the machine makes it.
     fn push_record(&mut self, span: Span, n: Option<u32>, op: Op) {
+        match self.st.polar_interp {
+            Some(p) => polar::push(self, span, n, op, p.y_before),
+            None => self.push_machine(span, n, op, None),
+        }
+    }
+
+    /// Put a record in the block's outcome as it is (positions as the controller moves), with
+    /// its own time constant where it has one.
+    fn push_machine(&mut self, span: Span, n: Option<u32>, op: Op, accel_s: Option<f64>) {
         self.out.emitted += 1;
         if self.out.emitted > MAX_MOTIONS_PER_BLOCK {
             return;
@@ -251,6 +261,9 @@ impl Step<'_> {
         if !self.out.discard_records {
             let mut r = Record::of_block(span, n, op);
             r.to_machine = to_machine;
+            if accel_s.is_some() {
+                r.accel_s = accel_s;
+            }
             self.out.records.push(r);
         }
     }
@@ -676,7 +689,9 @@ fn collect<'w>(
     };
     for (i, w) in all.iter().enumerate() {
         let letter = w.letter;
-        if !profile.takes_address(letter) && !step.tables.added_addresses.contains(letter) && !not_yet() {
+        // In G12.1 the hypothetical C is read as the plane's Y (V incremental; interp/polar.rs).
+        let hypothetical = step.st.polar_interp.is_some() && matches!(letter, b'Y' | b'V');
+        if !profile.takes_address(letter) && !step.tables.added_addresses.contains(letter) && !hypothetical && !not_yet() {
             return Err(step.alarm(
                 Rule::ImproperAddress,
                 w.span,
@@ -747,6 +762,8 @@ struct Codes {
     work: Option<u8>,
     /// G68/G69, G51.1/G50.1, G51/G50 and G22/G23 in this block, in order.
     transforms: Vec<(Span, GFn)>,
+    /// G12.1 (true) or G13.1 in this block.
+    polar_interp: Option<(Span, bool)>,
 }
 
 /// One block, in the order the controller executes it (the steps as grbl's `gc_execute_line`
@@ -795,16 +812,24 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
         step.st.transform.polar_radius = 0.0;
         step.st.transform.polar_angle_deg = 0.0;
     }
+    // In G12.1 the hypothetical C is the plane's Y (interp/polar.rs).
+    let plane_words;
+    let block_words: &[Word] = if step.st.polar_interp.is_some() {
+        plane_words = polar::plane_words(step, &block.words)?;
+        &plane_words
+    } else {
+        &block.words
+    };
     let all: &[Word] = if polar_on && polar_reads(step, block) {
-        match transform::polar_words(step, &block.words, incremental, plane)? {
+        match transform::polar_words(step, block_words, incremental, plane)? {
             Some(w) => {
                 polar = w;
                 &polar
             }
-            None => &block.words,
+            None => block_words,
         }
     } else {
-        &block.words
+        block_words
     };
     // 1. Collect the words.
     let mut words = Words::new(all);
@@ -834,6 +859,10 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
                 w.span,
                 format!("{}: a reference-point return while a drilling canned cycle is in force; cancel it with G80 first", w.text()),
             ));
+        }
+        // FANUC 0i-T manual: the codes a block may use in polar coordinate interpolation.
+        if step.st.polar_interp.is_some() && !polar::allowed(g.function) {
+            return Err(step.alarm(Rule::ImproperGCode, w.span, format!("{}: in polar coordinate interpolation (G12.1) a block may use G01, G02, G03, G04, G40-G42, G65-G67, G98, G99 and G13.1 only", w.text())));
         }
         if let GFn::NotYet(why) = g.function {
             return Err(step.alarm(Rule::NotSupported, w.span, format!("{} ({}): {why}", w.text(), g.meaning)));
@@ -986,6 +1015,7 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
             GFn::Rotation(_) | GFn::MirrorImage(_) | GFn::Scaling(_) | GFn::StrokeCheck(_) => codes.transforms.push((w.span, g.function)),
             // Step 0 turned it on (from a radius and angle of 0) before reading the block.
             GFn::PolarCoordinates(on) => st.transform.polar = on,
+            GFn::PolarInterpolation(on) => codes.polar_interp = Some((w.span, on)),
             GFn::ReturnInitial => st.return_initial = true,
             GFn::ReturnR => st.return_initial = false,
             // G80: the cycle and its hole data end; F stays (seed 003 8.1.4).
@@ -1349,8 +1379,15 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
         Some((_, GFn::SingleDirection)) => single_direction(step, &mut words)?,
         Some(_) => unreachable!("only one-shot functions are stored"),
         None => {
+            if let Some((span, on)) = codes.polar_interp {
+                polar::switch(step, &words, on, span)?;
+                return finish_block(step, &words, &codes, after, switches);
+            }
             if let Some((_, m)) = codes.motion {
                 step.st.motion = m;
+            }
+            if step.st.polar_interp.is_some() && has_axis && !matches!(step.st.motion, Motion::Linear | Motion::ArcCw | Motion::ArcCcw) {
+                return Err(step.alarm(Rule::ImproperGCode, step.span, "a move in polar coordinate interpolation (G12.1) is G01, G02 or G03 (FANUC 0i-T manual)"));
             }
             let drill_kind = codes.drill.or(step.st.drill.kind);
             if let Some(kind) = drill_kind {
