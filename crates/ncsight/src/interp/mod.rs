@@ -1014,7 +1014,14 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
             GFn::LengthComp(_) | GFn::PathControl => {}
             GFn::Rotation(_) | GFn::MirrorImage(_) | GFn::Scaling(_) | GFn::StrokeCheck(_) => codes.transforms.push((w.span, g.function)),
             // Step 0 turned it on (from a radius and angle of 0) before reading the block.
-            GFn::PolarCoordinates(on) => st.transform.polar = on,
+            GFn::PolarCoordinates(on) => {
+                // On a lathe G16 is the polar interpolation plane's (GSK980TDi help text,
+                // G12.1/13.1: G15/G16 in that plane).
+                if on && profile.is_lathe() && st.polar_interp.is_none() {
+                    return Err(step.alarm(Rule::PlaneMismatch, w.span, format!("{}: polar coordinate command on a lathe is for the polar interpolation plane: G12.1 first", w.text())));
+                }
+                st.transform.polar = on;
+            }
             GFn::PolarInterpolation(on) => codes.polar_interp = Some((w.span, on)),
             GFn::ReturnInitial => st.return_initial = true,
             GFn::ReturnR => st.return_initial = false,

@@ -24,7 +24,7 @@ const C: usize = 2;
 
 /// The functions a block may use in the mode (FANUC 0i-T manual: G01, G02, G03, G04, G40-G42,
 /// G65-G67, G98, G99; and G13.1 to end it). The GSK help text gives no list: the same
-/// (inferred).
+/// (inferred), with its G15/G16 (Cartesian or polar programming in the plane).
 pub(super) fn allowed(f: GFn) -> bool {
     matches!(
         f,
@@ -39,6 +39,7 @@ pub(super) fn allowed(f: GFn) -> bool {
             | GFn::FeedPerMinute
             | GFn::FeedPerRevolution
             | GFn::PolarInterpolation(false)
+            | GFn::PolarCoordinates(_)
     )
 }
 

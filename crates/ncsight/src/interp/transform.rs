@@ -276,7 +276,9 @@ pub(super) fn polar_words(step: &mut Step, all: &[Word], incremental: bool, plan
         let axis = if k == 0 { a } else { b };
         let value = if incremental { point[k] - here.axis(axis) } else { point[k] };
         let w = w.expect("one of the two is given");
-        out.push(Word { letter, value: value / unit, decimal: true, expr: false, ..w.clone() });
+        // X words are diameters where X is programmed so (the polar radius is a radius).
+        let scale = if letter == b'X' && step.profile.diameter_x { 2.0 } else { 1.0 };
+        out.push(Word { letter, value: value / unit * scale, decimal: true, expr: false, ..w.clone() });
     }
     Ok(Some(out))
 }
