@@ -322,12 +322,23 @@ pub struct Modal {
     pub polar_interp: Option<PolarInterp>,
 }
 
-/// G12.1 in force: the plane and the machine's Y before it (the plane's Y is the hypothetical
-/// C meanwhile; interp/polar.rs).
+/// G12.1 or G07.1 in force: the plane and the machine's Y before it (the plane's Y is the
+/// hypothetical C meanwhile; interp/polar.rs).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct PolarInterp {
+    pub kind: Hypothetical,
     pub plane_before: Plane,
     pub y_before: f64,
+}
+
+/// What the hypothetical C of the plane is.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Hypothetical {
+    /// G12.1: Cartesian with X on the face; the machine's C is the angle of (x, c).
+    Polar,
+    /// G07.1: the cylinder of `radius_mm` unrolled; the plane's Y is `sign` times the arc length
+    /// of C (the sign keeps the programme's plane turning the way it turned).
+    Cylinder { radius_mm: f64, sign: f64 },
 }
 
 /// What the lines between G10 and G11 are.

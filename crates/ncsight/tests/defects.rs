@@ -55,7 +55,7 @@ fn codes_of_the_manual_are_not_simulated_yet_not_unknown() {
         ("fanuc0m", "G62"),
         ("fanuc0m", "G63"),
         ("fanuc0m", "G39"),
-        ("fanuc0t", "G07.1 C20."),
+        ("fanuc0t", "G68"),
         ("gsk980tdi", "G89 Z-10"),
         ("gsk988t", "G83 Z-10"),
         ("yasnac-lx3", "G68"),

@@ -40,9 +40,8 @@ pub fn pieces(at: &dyn Fn(f64) -> (f64, f64, f64), length_mm: f64, curvature: f6
         r_max = r_max.max(x.hypot(c));
     }
     let angle_step = if r_max > 0.0 { (8.0 * tol_mm / r_max).sqrt().to_degrees() } else { 360.0 };
-    let by_angle = (turn / angle_step).ceil();
-    let by_curve = if curvature > 0.0 { (length_mm / (8.0 * tol_mm / curvature).sqrt()).ceil() } else { 1.0 };
-    let n = (by_angle.max(by_curve) as usize).clamp(1, MAX_PIECES);
+    let by_angle = ((turn / angle_step).ceil() as usize).min(MAX_PIECES);
+    let n = by_angle.max(chords(length_mm, curvature, tol_mm));
     let mut out = Vec::with_capacity(n);
     let mut angle = start_deg;
     for i in 1..=n {
@@ -51,6 +50,27 @@ pub fn pieces(at: &dyn Fn(f64) -> (f64, f64, f64), length_mm: f64, curvature: f6
         out.push(Piece { radius_mm: x.hypot(c), angle_deg: angle, z, path_mm: length_mm / n as f64 });
     }
     out
+}
+
+/// How many chords of a path `length_mm` long, of largest curvature `curvature` (1/mm), keep
+/// within `tol_mm` of it: 1 for a line, at most [`MAX_PIECES`].
+fn chords(length_mm: f64, curvature: f64, tol_mm: f64) -> usize {
+    let n = if curvature > 0.0 { (length_mm / (8.0 * tol_mm / curvature).sqrt()).ceil() } else { 1.0 };
+    if n.is_finite() { (n as usize).clamp(1, MAX_PIECES) } else { MAX_PIECES }
+}
+
+/// Cylindrical interpolation (G07.1): the pieces of a move on the cylinder of `radius_mm`
+/// unrolled, `at(u)` = (x, y, z) with y `sign` times the arc length of C. The machine's C is
+/// linear in y, so a line of the unrolled plane is one piece and an arc is chords of it.
+pub fn unrolled(at: &dyn Fn(f64) -> (f64, f64, f64), length_mm: f64, curvature: f64, radius_mm: f64, sign: f64, tol_mm: f64) -> Vec<Piece> {
+    let n = chords(length_mm, curvature, tol_mm);
+    (1..=n)
+        .map(|i| {
+            let (x, y, z) = at(i as f64 / n as f64);
+            let angle_deg = if radius_mm > 0.0 { (sign * y / radius_mm).to_degrees() } else { 0.0 };
+            Piece { radius_mm: x, angle_deg, z, path_mm: length_mm / n as f64 }
+        })
+        .collect()
 }
 
 #[cfg(test)]
@@ -72,6 +92,17 @@ mod tests {
             assert!(c >= -10.0 - 1e-9 && c <= 10.0 + 1e-9);
         }
         assert!((p.iter().map(|q| q.path_mm).sum::<f64>() - 20.0).abs() < 1e-9);
+    }
+
+    #[test]
+    fn unrolled_line_is_one_piece() {
+        // Radius 20: 10 mm along the unrolled C is 28.648 degrees; Z moves with it.
+        let at = |u: f64| (20.0, 10.0 * u, -5.0 * u);
+        let p = unrolled(&at, 125f64.sqrt(), 0.0, 20.0, 1.0, 0.001);
+        assert_eq!(p.len(), 1);
+        assert!((p[0].angle_deg - 28.64788975654116).abs() < 1e-9 && p[0].z == -5.0 && p[0].radius_mm == 20.0);
+        let q = unrolled(&at, 125f64.sqrt(), 0.0, 20.0, -1.0, 0.001);
+        assert!((q[0].angle_deg + 28.64788975654116).abs() < 1e-9);
     }
 
     #[test]

@@ -221,7 +221,7 @@ impl Step<'_> {
     /// Put a record in the block's outcome: as it is, or in G12.1 as the machine makes it.
     fn push_record(&mut self, span: Span, n: Option<u32>, op: Op) {
         match self.st.polar_interp {
-            Some(p) => polar::push(self, span, n, op, p.y_before),
+            Some(p) => polar::push(self, span, n, op, p),
             None => self.push_machine(span, n, op, None),
         }
     }
@@ -762,8 +762,8 @@ struct Codes {
     work: Option<u8>,
     /// G68/G69, G51.1/G50.1, G51/G50 and G22/G23 in this block, in order.
     transforms: Vec<(Span, GFn)>,
-    /// G12.1 (true) or G13.1 in this block.
-    polar_interp: Option<(Span, bool)>,
+    /// G12.1, G13.1 or G07.1 in this block.
+    polar_interp: Option<(Span, GFn)>,
 }
 
 /// One block, in the order the controller executes it (the steps as grbl's `gc_execute_line`
@@ -1022,7 +1022,7 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
                 }
                 st.transform.polar = on;
             }
-            GFn::PolarInterpolation(on) => codes.polar_interp = Some((w.span, on)),
+            GFn::PolarInterpolation(_) | GFn::CylindricalInterpolation => codes.polar_interp = Some((w.span, g.function)),
             GFn::ReturnInitial => st.return_initial = true,
             GFn::ReturnR => st.return_initial = false,
             // G80: the cycle and its hole data end; F stays (seed 003 8.1.4).
@@ -1386,8 +1386,8 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
         Some((_, GFn::SingleDirection)) => single_direction(step, &mut words)?,
         Some(_) => unreachable!("only one-shot functions are stored"),
         None => {
-            if let Some((span, on)) = codes.polar_interp {
-                polar::switch(step, &words, on, span)?;
+            if let Some((span, f)) = codes.polar_interp {
+                polar::switch(step, &mut words, f, span)?;
                 return finish_block(step, &words, &codes, after, switches);
             }
             if let Some((_, m)) = codes.motion {

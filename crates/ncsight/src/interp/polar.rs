@@ -1,7 +1,8 @@
-//! G12.1/G13.1 polar coordinate interpolation on a lathe with a C axis (FANUC 0i-T manual;
-//! GSK980TDi help text G12.1/13.1). Between them the programme is written in the Cartesian
-//! plane of X (a diameter, as X always is) and the hypothetical axis C (a length, in radius),
-//! and the machine makes it with X and the C axis's turn.
+//! G12.1/G13.1 polar coordinate interpolation and G07.1 cylindrical interpolation on a lathe
+//! with a C axis (FANUC 0i-T manual; GSK980TDi help text G12.1/13.1 and G7.1). In G12.1 the
+//! programme is written in the Cartesian plane of X (a diameter, as X always is) and the
+//! hypothetical axis C (a length, in radius); in G07.1 in the plane of Z and C (degrees) on the
+//! cylinder unrolled. The machine makes either with X, Z and the C axis's turn.
 //!
 //! ncsight keeps the hypothetical C as the Y of the plane XY while the mode is in force, so that
 //! arcs (I, J), radius compensation and the checks work in that plane unchanged; the records
@@ -9,9 +10,9 @@
 
 use super::{Step, Words};
 use crate::alarm::{Diagnostic, Rule};
-use crate::cycles::polar::{angle_near, pieces};
+use crate::cycles::polar::{angle_near, pieces, unrolled};
 use crate::geom;
-use crate::modal::PolarInterp;
+use crate::modal::{Hypothetical, PolarInterp};
 use crate::motion::{Op, Plane, Vec3};
 use crate::profile::GFn;
 use crate::read::Word;
@@ -40,56 +41,137 @@ pub(super) fn allowed(f: GFn) -> bool {
             | GFn::FeedPerRevolution
             | GFn::PolarInterpolation(false)
             | GFn::PolarCoordinates(_)
+            | GFn::CylindricalInterpolation
     )
 }
 
 /// A block's words in the mode: C (and H, its incremental address) are the plane's second
-/// axis, kept as Y (V). A Y word of the machine itself is not simulated in the mode.
+/// axis, kept as Y (V): a length in G12.1, degrees turned into the unrolled length in G07.1.
+/// A Y word of the machine itself is not simulated in the mode. The block of G07.1 itself (the
+/// cancel, `G07.1 C0`) keeps its C.
 pub(super) fn plane_words(step: &Step, all: &[Word]) -> Result<Vec<Word>, Diagnostic> {
+    let Some(mode) = step.st.polar_interp else { return Ok(all.to_vec()) };
+    let switches = all.iter().any(|w| w.letter == b'G' && !w.expr && w.is_code() && step.profile.g_code(w.code().0, w.code().1).is_some_and(|g| g.function == GFn::CylindricalInterpolation));
+    if switches {
+        return Ok(all.to_vec());
+    }
+    let unit = if step.st.inch { 25.4 } else { 1.0 };
     let mut out = Vec::with_capacity(all.len());
     for w in all {
         let letter = match w.letter {
             b'C' => b'Y',
             b'H' => b'V',
             b'Y' | b'V' => {
-                return Err(step.alarm(Rule::NotSupported, w.span, format!("{}: a Y axis move in polar coordinate interpolation (G12.1) is not simulated", w.text())));
+                return Err(step.alarm(Rule::NotSupported, w.span, format!("{}: a Y axis move in polar coordinate or cylindrical interpolation is not simulated", w.text())));
+            }
+            // FANUC 0i-T manual, cylindrical interpolation: an arc's radius is R; I, J, K are
+            // not used.
+            b'I' | b'J' | b'K' if matches!(mode.kind, Hypothetical::Cylinder { .. }) => {
+                return Err(step.alarm(Rule::ArcDataMissing, w.span, format!("{}: an arc in cylindrical interpolation (G07.1) takes R, not I, J or K", w.text())));
             }
             l => l,
         };
-        out.push(Word { letter, ..w.clone() });
+        let w = match (letter, mode.kind) {
+            (b'Y' | b'V', Hypothetical::Cylinder { radius_mm, sign }) => {
+                let arc_mm = sign * step.degrees(w).to_radians() * radius_mm;
+                Word { letter, value: arc_mm / unit, decimal: true, expr: false, ..w.clone() }
+            }
+            _ => Word { letter, ..w.clone() },
+        };
+        out.push(w);
     }
     Ok(out)
 }
 
-/// G12.1 (`on`) or G13.1, alone in their block (GSK980TDi help text, G12.1 note 1).
-pub(super) fn switch(step: &mut Step, words: &Words, on: bool, span: Span) -> Result<(), Diagnostic> {
-    let code = if on { "G12.1" } else { "G13.1" };
+/// G12.1 or G13.1, alone in their block (GSK980TDi help text, G12.1 note 1); `G07.1 C<radius>`
+/// or `G07.1 C0` (FANUC 0i-T manual; GSK980TDi help text G7.1, type I).
+pub(super) fn switch(step: &mut Step, words: &mut Words, f: GFn, span: Span) -> Result<(), Diagnostic> {
+    let (code, on) = match f {
+        GFn::PolarInterpolation(on) => (if on { "G12.1" } else { "G13.1" }, on),
+        _ => ("G07.1", true),
+    };
+    // G07.1's C: the cylinder's radius, 0 to end the mode.
+    let radius_mm = match f {
+        GFn::CylindricalInterpolation => match words.take(b'C') {
+            Some(w) => Some(step.length(w)?),
+            None => return Err(step.alarm(Rule::MissingWord, span, "G07.1 needs C: the cylinder's radius (G07.1 C0 ends the mode)")),
+        },
+        _ => None,
+    };
+    // GSK980TDi help text G7.1: type II, the roughing cycle, adds J, L, R, K.
+    if radius_mm.is_some() {
+        if let Some(w) = [b'J', b'L', b'R', b'K'].into_iter().find_map(|l| words.peek(l)) {
+            return Err(step.alarm(Rule::NotSupported, w.span, format!("{}: G07.1 type II (the cylindrical interpolation roughing cycle) is not simulated by ncsight yet", w.text())));
+        }
+    }
     if let Some(w) = words.first_unused() {
         return Err(step.alarm(Rule::WordNotTaken, w.span, format!("{}: {code} stands alone in its block (help text G12.1 note 1)", w.text())));
     }
+    let on = on && radius_mm.is_none_or(|r| r != 0.0);
     // Help text note 3; FANUC likewise: radius compensation is started and ended inside.
     if step.st.comp.side != 0 {
         return Err(step.alarm(Rule::CompPlaneChange, span, format!("{code} in radius compensation: cancel it (G40) first")));
     }
     if on {
-        if step.st.polar_interp.is_some() {
-            return Ok(());
+        if let Some(m) = step.st.polar_interp {
+            let same = matches!((m.kind, f), (Hypothetical::Polar, GFn::PolarInterpolation(_)) | (Hypothetical::Cylinder { .. }, GFn::CylindricalInterpolation));
+            if same && radius_mm.is_none() {
+                return Ok(());
+            }
+            return Err(step.alarm(Rule::ImproperGCode, span, format!("{code} while polar coordinate or cylindrical interpolation is in force: end it first")));
         }
         if !step.tables.rotary[C] {
-            return Err(step.alarm(Rule::ImproperAddress, span, "G12.1 needs the C axis: declare it in the setup ([machine] axes = [\"X\", \"Z\", \"C\"])"));
+            return Err(step.alarm(Rule::ImproperAddress, span, format!("{code} needs the C axis: declare it in the setup ([machine] axes = [\"X\", \"Z\", \"C\"])")));
         }
-        // Note 4: the interpolation starts with the C axis at 0 degrees.
         let c_deg = step.st.rotary_deg[C];
-        if (c_deg / 360.0).fract().abs() > 1e-9 {
-            return Err(step.alarm(Rule::ImproperGCode, span, format!("G12.1 with C at {} degrees: polar coordinate interpolation starts at C0 (help text G12.1 note 4)", crate::alarm::shown(c_deg, 3))));
+        let kind = match radius_mm {
+            None => {
+                // Note 4: polar coordinate interpolation starts with the C axis at 0 degrees.
+                if (c_deg / 360.0).fract().abs() > 1e-9 {
+                    return Err(step.alarm(Rule::ImproperGCode, span, format!("G12.1 with C at {} degrees: polar coordinate interpolation starts at C0 (help text G12.1 note 4)", crate::alarm::shown(c_deg, 3))));
+                }
+                Hypothetical::Polar
+            }
+            Some(r) => {
+                if r < 0.0 {
+                    return Err(step.alarm(Rule::ValueOutOfRange, span, "G07.1 C: the cylinder's radius cannot be negative"));
+                }
+                // The unrolled plane: Z and C as the programme's plane has them. In G19 (C
+                // parallel to Y) C comes first; in G18 (C in X's place) Z does, so C is kept as
+                // -Y to turn the same way in the plane YZ.
+                let sign = match step.st.plane {
+                    Plane::YZ => 1.0,
+                    Plane::ZX => -1.0,
+                    Plane::XY => return Err(step.alarm(Rule::PlaneMismatch, span, "G07.1 in the XY plane (G17): cylindrical interpolation is in the plane of Z and C (G18 or G19)")),
+                };
+                Hypothetical::Cylinder { radius_mm: r, sign }
+            }
+        };
+        step.st.polar_interp = Some(PolarInterp { kind, plane_before: step.st.plane, y_before: step.st.pos.y });
+        step.st.pos.y = match kind {
+            Hypothetical::Polar => 0.0,
+            Hypothetical::Cylinder { radius_mm, sign } => sign * c_deg.to_radians() * radius_mm,
+        };
+        step.st.plane = match kind {
+            Hypothetical::Polar => Plane::XY,
+            Hypothetical::Cylinder { .. } => Plane::YZ,
+        };
+    } else if let Some(p) = step.st.polar_interp {
+        let ends = matches!((p.kind, f), (Hypothetical::Polar, GFn::PolarInterpolation(false)) | (Hypothetical::Cylinder { .. }, GFn::CylindricalInterpolation));
+        if !ends {
+            return Err(step.alarm(Rule::ImproperGCode, span, format!("{code} does not end the interpolation in force")));
         }
-        step.st.polar_interp = Some(PolarInterp { plane_before: step.st.plane, y_before: step.st.pos.y });
-        step.st.plane = Plane::XY;
-        step.st.pos.y = 0.0;
-    } else if let Some(p) = step.st.polar_interp.take() {
         let (x, c) = (step.st.pos.x, step.st.pos.y);
-        step.st.rotary_deg[C] = angle_near(x, c, step.st.rotary_deg[C]);
-        step.st.pos.x = x.hypot(c);
+        match p.kind {
+            Hypothetical::Polar => {
+                step.st.rotary_deg[C] = angle_near(x, c, step.st.rotary_deg[C]);
+                step.st.pos.x = x.hypot(c);
+            }
+            Hypothetical::Cylinder { radius_mm, sign } => {
+                step.st.rotary_deg[C] = if radius_mm > 0.0 { (sign * c / radius_mm).to_degrees() } else { step.st.rotary_deg[C] };
+            }
+        }
+        step.st.polar_interp = None;
         step.st.pos.y = p.y_before;
         step.st.plane = p.plane_before;
     }
@@ -99,7 +181,8 @@ pub(super) fn switch(step: &mut Step, words: &Words, on: bool, span: Span) -> Re
 /// Record a move of the plane as the machine makes it: pieces of a radius change (X, Z) with
 /// the C turn made together with it, the time of each the path's length at F. The first piece
 /// accelerates; the others go on at speed (the move is one interpolation).
-pub(super) fn push(step: &mut Step, span: Span, n: Option<u32>, op: Op, y_machine: f64) {
+pub(super) fn push(step: &mut Step, span: Span, n: Option<u32>, op: Op, mode: PolarInterp) {
+    let y_machine = mode.y_before;
     let (from, to, feed) = match op {
         Op::Feed { from, to, feed_mm_min } | Op::Arc { from, to, feed_mm_min, .. } => (from, to, feed_mm_min),
         other => return step.push_machine(span, n, other, None),
@@ -117,9 +200,12 @@ pub(super) fn push(step: &mut Step, span: Span, n: Option<u32>, op: Op, y_machin
         (p.x, p.y, p.z)
     };
     let start_deg = step.st.rotary_deg[C];
-    let mut r0 = from.x.hypot(from.y);
+    let (list, mut r0) = match mode.kind {
+        Hypothetical::Polar => (pieces(&at, length, curvature, start_deg, PIECE_TOLERANCE_MM), from.x.hypot(from.y)),
+        Hypothetical::Cylinder { radius_mm, sign } => (unrolled(&at, length, curvature, radius_mm, sign, PIECE_TOLERANCE_MM), from.x),
+    };
     let (mut a0, mut z0) = (start_deg, from.z);
-    for (k, piece) in pieces(&at, length, curvature, start_deg, PIECE_TOLERANCE_MM).into_iter().enumerate() {
+    for (k, piece) in list.into_iter().enumerate() {
         let accel = if k == 0 { None } else { Some(0.0) };
         let seconds = piece.path_mm / feed.max(1e-9);
         let (a, b) = (Vec3::new(r0, y_machine, z0), Vec3::new(piece.radius_mm, y_machine, piece.z));

@@ -48,7 +48,7 @@ pub(super) const FANUC_0M: &[GDef] = &[
 
 /// FANUC 0-T, G-code system A (the FANUC 0-TC G-code table; the 0i-TC for what it lacks).
 pub(super) const FANUC_0T: &[GDef] = &[
-    gp(7, 1, "G07.1", Group::NonModal, LATER, "cylindrical interpolation (C axis)"),
+    gp(7, 1, "G07.1", Group::NonModal, GFn::CylindricalInterpolation, "cylindrical interpolation: G07.1 C<radius> on, G07.1 C0 off; Z and C (degrees) on the unrolled cylinder"),
     g(10, Group::NonModal, GFn::DataSetting, "programmable data input (offsets, work offsets; L50 parameters)"),
     g(11, Group::NonModal, GFn::DataSettingEnd, "programmable data input cancel (the end of G10 L50's parameter lines)"),
     gp(12, 1, "G12.1", Group::Polar, GFn::PolarInterpolation(true), "polar coordinate interpolation on: X (a diameter) and the hypothetical C (a length) made by X and the C axis"),
@@ -73,7 +73,7 @@ pub(super) const FANUC_0T: &[GDef] = &[
 
 /// GSK980TDi (every code of the on-line help text).
 pub(super) const GSK980TDI: &[GDef] = &[
-    gp(7, 1, "G07.1", Group::NonModal, LATER, "cylindrical interpolation"),
+    gp(7, 1, "G07.1", Group::NonModal, GFn::CylindricalInterpolation, "cylindrical interpolation, type I: G07.1 C<radius> on, G07.1 C0 off (type II, the roughing cycle, is not simulated)"),
     g(9, Group::NonModal, GFn::PathControl, "exact stop for one block (no effect here: every move of ncsight's time model ends at rest)"),
     g(10, Group::NonModal, GFn::DataSetting, "data input from the programme (L3: tool life; L52: parameters)"),
     g(11, Group::NonModal, GFn::DataSettingEnd, "data input cancel (the end of G10 L3's or L52's lines)"),

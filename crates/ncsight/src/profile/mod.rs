@@ -220,6 +220,8 @@ pub enum GFn {
     PolarCoordinates(bool),
     /// G12.1 (on) / G13.1 (off): polar coordinate interpolation with the C axis.
     PolarInterpolation(bool),
+    /// G07.1 C<radius> (on; C0 off): cylindrical interpolation with the C axis.
+    CylindricalInterpolation,
     /// G22 (on) / G23 (off): stored stroke check 2, a forbidden area.
     StrokeCheck(bool),
     /// G36 (X, 0) / G37 (Z, 2): automatic tool compensation or tool length measurement, a
