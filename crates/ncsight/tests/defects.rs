@@ -57,7 +57,6 @@ fn codes_of_the_manual_are_not_simulated_yet_not_unknown() {
         ("fanuc0m", "G39"),
         ("fanuc0t", "G68"),
         ("gsk980tdi", "G89 Z-10"),
-        ("gsk988t", "G83 Z-10"),
         ("yasnac-lx3", "G68"),
     ] {
         let a = first_alarm(machine, &format!("{block}\nM30\n")).unwrap_or_else(|| panic!("{machine} {block}: no alarm"));

@@ -10,7 +10,6 @@ use super::{FANUC_RATES, Compound,
     ThreadRules, TimeKeys, DRY_RUN, SETTINGS,
 };
 use crate::alarm::AlarmStyle;
-use crate::codes::DrillKind;
 
 /// G92 (FANUC 0i-T, inferred): R taper, F lead, Q start angle; the thread chamfer of parameters
 /// 5130/5131 (no J/K words); without the thread-cutting retract option FEED HOLD waits for the
@@ -38,43 +37,9 @@ const EXTRA: &[GDef] = &[
     g(92, Group::Motion, GFn::Thread(ThreadCmd::Cycle(&G92)), "thread cutting cycle: R taper, F lead, Q start angle"),
     g(76, Group::NonModal, GFn::CompoundThread(Compound::G76), "compound thread cutting cycle, two blocks"),
     g(34, Group::Motion, GFn::Thread(ThreadCmd::VariableLead), "variable-lead thread cutting: F (or E) the lead at the start, K its change per revolution, Q start angle"),
-    g(80, Group::CannedCycle, GFn::CycleCancel, "cancel a drilling cycle (group 10 on the FANUC)"),
-    g(83, Group::CannedCycle, GFn::Drill(DrillKind::FaceFromR), "face drilling cycle; with Q, peck drilling (5101#2)"),
-    g(84, Group::CannedCycle, GFn::Drill(DrillKind::FaceTapR), "face tapping cycle: the spindle reversed at the bottom"),
-    g(85, Group::CannedCycle, GFn::Drill(DrillKind::FaceBoreR), "face boring cycle: feed out to R"),
-    g(87, Group::CannedCycle, GFn::Drill(DrillKind::SideFromR), "side drilling cycle; with Q, peck drilling (5101#2)"),
-    g(88, Group::CannedCycle, GFn::Drill(DrillKind::SideTapR), "side tapping cycle: the spindle reversed at the bottom"),
-    g(89, Group::CannedCycle, GFn::Drill(DrillKind::SideBoreR), "side boring cycle: feed out to R"),
 ];
 
 const PARAMS: &[ParamDef] = &[
-    ParamDef {
-        key: ParamKey::Number(5101, Some(2)),
-        meaning: "RTR: G83/G87 with Q: 0 = high-speed peck (back off 5114 after each peck), 1 = peck drilling (back to R, down again to 5115 short of the last depth)",
-        unit: "bit",
-        min: 0.0,
-        max: 1.0,
-        default: 0.0,
-        source: "FANUC 0i-T numbering (inferred: the bit's meaning from FANUC lathe documentation not read in a page)",
-    },
-    ParamDef {
-        key: ParamKey::Number(5114, None),
-        meaning: "G83/G87 high-speed peck: back-off d after each peck",
-        unit: "0.001 mm",
-        min: 0.0,
-        max: 32767.0,
-        default: 500.0,
-        source: "FANUC 0i numbering (inferred); default assumed",
-    },
-    ParamDef {
-        key: ParamKey::Number(5115, None),
-        meaning: "G83/G87 peck drilling: clearance d above the last depth when the drill comes back down",
-        unit: "0.001 mm",
-        min: 0.0,
-        max: 32767.0,
-        default: 500.0,
-        source: "FANUC 0i numbering (inferred, as the 0i-M G83's d); default assumed",
-    },
     ParamDef {
         key: ParamKey::Number(5139, None),
         meaning: "G74/G75 return amount e at power on; their first block R rewrites it",
@@ -120,9 +85,9 @@ pub static PROFILE: Profile = Profile {
     reference_point_mm: crate::motion::Vec3::new(100.0, 0.0, 200.0),
     addresses: super::Letters::new("GMSTFXZUWRIKPQLN"),
     peck_back_off: Some(ParamKey::Number(5139, None)),
-    g_codes: &[super::Codes { source: "the FANUC 0-TC G-code table, system A (the 0i-TC where it lacks)", codes: common::G_CODES }, super::Codes { source: "the FANUC 0-TC G-code table, system A (the 0i-TC where it lacks)", codes: lathe_a::G_CODES }, super::Codes { source: "FANUC 0i-T documentation (inferred for the 0-T; docs/profiles.md)", codes: EXTRA }, super::Codes { source: "the FANUC 0-TC G-code table, system A (the 0i-TC where it lacks)", codes: super::later::FANUC_0T }],
+    g_codes: &[super::Codes { source: "the FANUC 0-TC G-code table, system A (the 0i-TC where it lacks)", codes: common::G_CODES }, super::Codes { source: "the FANUC 0-TC G-code table, system A (the 0i-TC where it lacks)", codes: lathe_a::G_CODES }, super::Codes { source: "FANUC 0i-T documentation (inferred for the 0-T; docs/profiles.md)", codes: EXTRA }, super::Codes { source: "FANUC 0i-T documentation (inferred for the 0-T; docs/commands/g83_g87_lathe.md)", codes: super::lathe_drill::CODES }, super::Codes { source: "the FANUC 0-TC G-code table, system A (the 0i-TC where it lacks)", codes: super::later::FANUC_0T }],
     m_codes: &[super::Codes { source: "FANUC 0i-TC M codes (inferred for the 0-T)", codes: common::M_CODES }, super::Codes { source: "FANUC 0i-TC M codes (inferred for the 0-T)", codes: lathe_a::M_CODES }],
-    params: &[FANUC_RATES, PARAMS, super::FANUC_G76, super::FANUC_INPUT, DRY_RUN, super::builder::FANUC, super::FANUC_MACRO, super::FANUC_LATHE_OFFSETS, SETTINGS],
+    params: &[FANUC_RATES, PARAMS, super::lathe_drill::PARAMS, super::FANUC_G76, super::FANUC_INPUT, DRY_RUN, super::builder::FANUC, super::FANUC_MACRO, super::FANUC_LATHE_OFFSETS, SETTINGS],
     time: TimeKeys {
         rapid: [ParamKey::Number(1420, None), ParamKey::Number(1420, None), ParamKey::Number(1420, None)],
         dry_run: ParamKey::Setting("dry_run_mm_min"),
@@ -140,12 +105,7 @@ pub static PROFILE: Profile = Profile {
         g76: Some(super::FANUC_G76_KEYS),
         g34: super::G34_FANUC,
     },
-    drill: super::DrillRules {
-        g73_retract_um: Some(ParamKey::Number(5114, None)),
-        g83_clearance_um: Some(ParamKey::Number(5115, None)),
-        shift_bits: None,
-        lathe_peck_full_return: Some(ParamKey::Number(5101, Some(2))),
-    },
+    drill: super::lathe_drill::RULES,
     calls: super::CallRules::FANUC,
     macros: super::MacroRules::FANUC,
     frame: super::FrameRules::FANUC,

@@ -128,9 +128,9 @@ pub static PROFILE: Profile = Profile {
     reference_point_mm: crate::motion::Vec3::new(100.0, 0.0, 200.0),
     addresses: super::Letters::new("GMSTFXYZUVWRIJKPQLN"),
     peck_back_off: None,
-    g_codes: &[super::Codes { source: "inferred from the GSK980TDi help text (the GSK988T G-code table was not at hand)", codes: common::G_CODES }, super::Codes { source: "inferred from the GSK980TDi help text (the GSK988T G-code table was not at hand)", codes: lathe_a::G_CODES }, super::Codes { source: "GSK988T manual: G32.1, G92.1, G32.2/G32.3, thread repair (seeds 001, 002); G92 of the GSK988TA/TB manual; G34 of the GSK988T manual", codes: EXTRA }, super::Codes { source: "inferred from the GSK980TDi help text (the GSK988T page was not at hand)", codes: AS_GSK980TDI }, super::Codes { source: "GSK988T manual G-code table (G12.1/G13.1); the rest inferred from the GSK980TDi help text", codes: super::later::GSK988T }],
+    g_codes: &[super::Codes { source: "inferred from the GSK980TDi help text (the GSK988T G-code table was not at hand)", codes: common::G_CODES }, super::Codes { source: "inferred from the GSK980TDi help text (the GSK988T G-code table was not at hand)", codes: lathe_a::G_CODES }, super::Codes { source: "GSK988T manual: G32.1, G92.1, G32.2/G32.3, thread repair (seeds 001, 002); G92 of the GSK988TA/TB manual; G34 of the GSK988T manual", codes: EXTRA }, super::Codes { source: "inferred from the GSK980TDi help text (the GSK988T page was not at hand)", codes: AS_GSK980TDI }, super::Codes { source: "GSK988T manual G-code table (G12.1/G13.1); the rest inferred from the GSK980TDi help text", codes: super::later::GSK988T }, super::Codes { source: "inferred: the FANUC 0-T's drilling cycles (the GSK988T follows FANUC's numbering; its drilling page was not at hand)", codes: super::lathe_drill::CODES }],
     m_codes: &[super::Codes { source: "inferred from the GSK980TDi help text (M-code list)", codes: common::M_CODES }, super::Codes { source: "inferred from the GSK980TDi help text (M-code list)", codes: lathe_a::M_CODES }, super::Codes { source: "GSK988T manual, G32.1 (M14/M15); the rest inferred from the GSK980TDi help text", codes: lathe_a::GSK_M_CODES }],
-    params: &[FANUC_RATES, PARAMS, super::FANUC_G76, super::GSK_LATHE_OFFSETS, SETTINGS],
+    params: &[FANUC_RATES, PARAMS, super::lathe_drill::PARAMS, super::FANUC_G76, super::GSK_LATHE_OFFSETS, SETTINGS],
     time: TimeKeys {
         rapid: [ParamKey::Number(1420, None), ParamKey::Number(1420, None), ParamKey::Number(1420, None)],
         dry_run: ParamKey::Number(1410, None),
@@ -140,7 +140,7 @@ pub static PROFILE: Profile = Profile {
         // The GSK988T numbers its parameters as FANUC does (1022, 1422 on its G01/G02 page;
         // 5130/5131 in G92.1): the FANUC 0i-T G76 numbers are assumed.
         g76: Some(super::FANUC_G76_KEYS), g34: super::G34_GSK },
-    drill: super::DrillRules::NONE,
+    drill: super::lathe_drill::RULES,
     calls: super::CallRules {
         max_count: 9999,
         l_count: false,

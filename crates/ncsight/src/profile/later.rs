@@ -113,13 +113,6 @@ pub(super) const GSK988T: &[GDef] = &[
     g(65, Group::NonModal, GFn::MacroCall, "macro call (inferred)"),
     g(66, Group::MacroCall, GFn::ModalMacroCall, "macro modal call (inferred)"),
     g(67, Group::MacroCall, GFn::ModalMacroCancel, "macro modal call cancel (inferred)"),
-    g(80, Group::Motion, LATER, "drilling cycle cancel (inferred)"),
-    g(83, Group::Motion, LATER, "end face drilling cycle (inferred)"),
-    g(84, Group::Motion, LATER, "end face tapping cycle (inferred)"),
-    g(85, Group::Motion, LATER, "end face boring cycle (inferred)"),
-    g(87, Group::Motion, LATER, "side drilling cycle (inferred)"),
-    g(88, Group::Motion, LATER, "side tapping cycle (inferred)"),
-    g(89, Group::Motion, LATER, "side boring cycle (inferred)"),
 ];
 
 /// YASNAC LX3: no G-code table was found; FANUC 0-T-style lathe codes (inferred).

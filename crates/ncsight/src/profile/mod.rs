@@ -13,6 +13,7 @@ mod fanuc0t;
 mod gsk980tdi;
 mod gsk988t;
 mod lathe_a;
+mod lathe_drill;
 mod later;
 mod yasnac_lx3;
 
