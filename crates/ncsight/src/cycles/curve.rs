@@ -14,7 +14,8 @@ use crate::motion::ArcDir;
 /// A point in the plane: (first axis, second axis).
 pub type Pt = (f64, f64);
 
-/// At most this many chords per curve; a longer curve gets longer chords (docs/curves.md).
+/// At most this many chords per curve; a longer curve gets longer chords
+/// (docs/commands/g05_g6_g7.md).
 pub const MAX_CHORDS: usize = 20_000;
 
 /// Why the words do not make the curve.
@@ -188,6 +189,17 @@ mod tests {
             assert!((p.0 * p.0 / 100.0 + p.1 * p.1 / 400.0 - 1.0).abs() < 1e-9, "{p:?}");
         }
         assert!(matches!(ellipse((0.0, 0.0), (50.0, 0.0), 20.0, 10.0, 0.0, ArcDir::Ccw, 0.001), Err(CurveError::EllipseTooSmall(..))));
+        // Q 45 degrees turns the long axis from the first axis the Cw way (as G02 turns): along
+        // (1, -1)/sqrt 2. Its ends are then at (14.142, -14.142) and the opposite point; from
+        // the first end to the short axis's end (7.071, 7.071) about the origin, Ccw, every
+        // point lies on the tilted ellipse. With the other sense the ends would not fit.
+        let (c, s) = (std::f64::consts::FRAC_1_SQRT_2, std::f64::consts::FRAC_1_SQRT_2);
+        let pts = ellipse((20.0 * c, -20.0 * s), (10.0 * s, 10.0 * c), 20.0, 10.0, std::f64::consts::FRAC_PI_4, ArcDir::Ccw, 0.001).unwrap();
+        for p in &pts {
+            let (u, v) = (p.0 * c - p.1 * s, p.0 * s + p.1 * c);
+            assert!((u * u / 400.0 + v * v / 100.0 - 1.0).abs() < 1e-9, "{p:?}");
+        }
+        assert!(pts.iter().all(|p| p.0 >= -1e-9));
     }
 
     #[test]

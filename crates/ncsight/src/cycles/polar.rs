@@ -24,32 +24,39 @@ pub fn angle_near(x: f64, c: f64, near_deg: f64) -> f64 {
 }
 
 /// The pieces of a move whose point at fraction `u` (0..1) is `at(u)` = (x, c, z), `length_mm`
-/// long along the path, from the machine angle `start_deg`. Pieces follow the path at most
-/// `tol_mm` off it, both as chords of the path (`curvature` the path's largest curvature, 1/mm,
-/// 0 for a line) and as the polar straight line between its ends (the angle step at most
-/// sqrt(8 tol / r)).
+/// long along the path, from the machine angle `start_deg`. Each piece's end lies on the path;
+/// its course, straight in radius and angle, stays about `tol_mm` from the path: chords of the
+/// path's curve (`curvature` its largest, 1/mm, 0 for a line), each halved while its turn
+/// `dθ` at its larger radius `r` departs by more than `r dθ² / 8` (near the centre the angle
+/// turns fast: the pieces there are short).
 pub fn pieces(at: &dyn Fn(f64) -> (f64, f64, f64), length_mm: f64, curvature: f64, start_deg: f64, tol_mm: f64) -> Vec<Piece> {
-    // The turn and the largest radius along the path, from a fine sampling.
-    const PROBE: usize = 64;
-    let (mut turn, mut r_max, mut last) = (0.0f64, 0.0f64, start_deg);
-    for i in 0..=PROBE {
-        let (x, c, _) = at(i as f64 / PROBE as f64);
-        let a = angle_near(x, c, last);
-        turn += (a - last).abs();
-        last = a;
-        r_max = r_max.max(x.hypot(c));
-    }
-    let angle_step = if r_max > 0.0 { (8.0 * tol_mm / r_max).sqrt().to_degrees() } else { 360.0 };
-    let by_angle = ((turn / angle_step).ceil() as usize).min(MAX_PIECES);
-    let n = by_angle.max(chords(length_mm, curvature, tol_mm));
+    let n = chords(length_mm, curvature, tol_mm);
     let mut out = Vec::with_capacity(n);
     let mut angle = start_deg;
+    let mut from = (0.0, at(0.0));
     for i in 1..=n {
-        let (x, c, z) = at(i as f64 / n as f64);
-        angle = angle_near(x, c, angle);
-        out.push(Piece { radius_mm: x.hypot(c), angle_deg: angle, z, path_mm: length_mm / n as f64 });
+        let u = i as f64 / n as f64;
+        from = split(at, from, u, &mut angle, length_mm, tol_mm, 0, &mut out);
     }
     out
+}
+
+/// The piece from `from` (its fraction and point) to fraction `u`, halved until it is close
+/// enough (or 40 halvings, or [`MAX_PIECES`] pieces); returns the end.
+#[allow(clippy::too_many_arguments)]
+fn split(at: &dyn Fn(f64) -> (f64, f64, f64), from: (f64, (f64, f64, f64)), u: f64, angle: &mut f64, length_mm: f64, tol_mm: f64, depth: u32, out: &mut Vec<Piece>) -> (f64, (f64, f64, f64)) {
+    let (u0, p0) = from;
+    let p1 = at(u);
+    let a1 = angle_near(p1.0, p1.1, *angle);
+    let r = p0.0.hypot(p0.1).max(p1.0.hypot(p1.1));
+    let turn = (a1 - *angle).abs().to_radians();
+    if r * turn * turn / 8.0 <= tol_mm || depth >= 40 || out.len() >= MAX_PIECES {
+        *angle = a1;
+        out.push(Piece { radius_mm: p1.0.hypot(p1.1), angle_deg: a1, z: p1.2, path_mm: length_mm * (u - u0) });
+        return (u, p1);
+    }
+    let mid = split(at, from, (u0 + u) / 2.0, angle, length_mm, tol_mm, depth + 1, out);
+    split(at, mid, u, angle, length_mm, tol_mm, depth + 1, out)
 }
 
 /// How many chords of a path `length_mm` long, of largest curvature `curvature` (1/mm), keep
@@ -103,6 +110,22 @@ mod tests {
         assert!((p[0].angle_deg - 28.64788975654116).abs() < 1e-9 && p[0].z == -5.0 && p[0].radius_mm == 20.0);
         let q = unrolled(&at, 125f64.sqrt(), 0.0, 20.0, -1.0, 0.001);
         assert!((q[0].angle_deg + 28.64788975654116).abs() < 1e-9);
+    }
+
+    #[test]
+    fn near_the_centre_the_pieces_are_short() {
+        // A line 0.01 mm from the centre of a 10 mm radius: the angle turns nearly 180 degrees
+        // within 0.1 mm. Every piece's turn at its radius stays within the tolerance.
+        let at = |u: f64| (0.01, -10.0 + 20.0 * u, 0.0);
+        let p = pieces(&at, 20.0, 0.0, angle_near(0.01, -10.0, 0.0), 0.001);
+        let mut prev = (0.01f64.hypot(10.0), angle_near(0.01, -10.0, 0.0));
+        for q in &p {
+            let turn = (q.angle_deg - prev.1).abs().to_radians();
+            assert!(prev.0.max(q.radius_mm) * turn * turn / 8.0 <= 0.001 + 1e-12, "{q:?} after {prev:?}");
+            prev = (q.radius_mm, q.angle_deg);
+        }
+        assert!((p.last().unwrap().angle_deg - prev.1).abs() < 1e-12);
+        assert!((p.iter().map(|q| q.path_mm).sum::<f64>() - 20.0).abs() < 1e-9);
     }
 
     #[test]

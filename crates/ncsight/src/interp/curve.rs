@@ -9,7 +9,8 @@ use crate::geom;
 use crate::motion::{Op, Vec3};
 use crate::profile::{Curve, GFn};
 
-/// How far a chord may depart from the curve, mm (the least input increment; docs/curves.md).
+/// How far a chord may depart from the curve, mm (the least input increment;
+/// docs/commands/g05_g6_g7.md).
 pub const CHORD_TOLERANCE_MM: f64 = 0.001;
 
 fn local(p: &Vec3, a: usize, b: usize) -> Pt {
@@ -61,8 +62,14 @@ pub(super) fn block(step: &mut Step, words: &mut Words, kind: Curve) -> Result<(
         Curve::Parabola(dir) => {
             // P: the parabola's Y² = 2PX, in least input increments, its sign ignored (notes 1-2).
             let p = match words.take(b'P') {
-                Some(w) if w.value != 0.0 => {
-                    let v = if w.decimal { w.value } else { w.value * 0.001 };
+                Some(w) if w.value != 0.0 && w.value.is_finite() => {
+                    // Least input increment: 0.001 mm, or 0.0001 inch under G20.
+                    let (unit, increment) = if step.st.inch { (25.4, 0.0001) } else { (1.0, 0.001) };
+                    let v = if w.decimal { w.value } else { w.value * increment } * unit;
+                    if !w.decimal && w.value.abs() < 100.0 {
+                        let msg = format!("{}: P is in least input increments without a decimal point: {} mm (P2000 is 2 mm)", w.text(), shown(v.abs(), 4));
+                        step.warn(Rule::IntegerLength, w.span, msg);
+                    }
                     v.abs()
                 }
                 w => {
@@ -156,18 +163,30 @@ fn three_point(step: &mut Step, words: &mut Words, code: &'static str, mid_absol
 fn chords(step: &mut Step, code: &'static str, from: Vec3, to: Vec3, pts: &[Pt]) -> Result<(), Diagnostic> {
     let plane = step.st.plane;
     let (a, b, n) = plane.axes();
-    let first = step.out.records.len();
-    let mut prev = from;
     let count = pts.len();
-    for (i, p) in pts.iter().enumerate() {
-        let mut q = if i + 1 == count { to } else { from };
-        if i + 1 < count {
-            q.set_axis(a, p.0);
-            q.set_axis(b, p.1);
-            q.set_axis(n, from.axis(n) + (to.axis(n) - from.axis(n)) * (i + 1) as f64 / count as f64);
-        }
-        step.emit_cut(code, Op::Feed { from: prev, to: q, feed_mm_min: 0.0 })?;
-        prev = q;
+    let corners: Vec<Vec3> = std::iter::once(from)
+        .chain(pts.iter().enumerate().map(|(i, p)| {
+            let mut q = to;
+            if i + 1 < count {
+                q.set_axis(a, p.0);
+                q.set_axis(b, p.1);
+                q.set_axis(n, from.axis(n) + (to.axis(n) - from.axis(n)) * (i + 1) as f64 / count as f64);
+            }
+            q
+        }))
+        .collect();
+    // One feed for the curve (F per revolution at the speed of its points under G96): one
+    // interpolation, one warning if it is clamped.
+    let along = |u: f64| {
+        let k = ((u * count as f64).floor() as usize).min(count - 1);
+        let f = u * count as f64 - k as f64;
+        let (p, q) = (corners[k], corners[k + 1]);
+        Vec3::new(p.x + (q.x - p.x) * f, p.y + (q.y - p.y) * f, p.z + (q.z - p.z) * f)
+    };
+    let feed = step.cutting_feed(code, &along)?;
+    let first = step.out.records.len();
+    for w in corners.windows(2) {
+        step.emit(Op::Feed { from: w[0], to: w[1], feed_mm_min: feed });
     }
     let span = step.span;
     let mut later = false;

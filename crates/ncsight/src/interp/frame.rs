@@ -366,7 +366,7 @@ pub(super) fn from_reference(step: &mut Step, words: &mut Words, span: Span) -> 
 /// 2), the FANUC 0i manual's example and GSK note 1. ncsight keeps one value for an axis
 /// parameter: P names the axis and the value is the parameter's for every axis (docs).
 pub(super) fn data_line(step: &mut Step, block: &crate::read::Block, mode: DataInput) -> Result<(), Diagnostic> {
-    let ends = block.words.iter().any(|w| w.letter == b'G' && !w.expr && w.is_code() && w.code() == (11, None));
+    let ends = block.words.iter().any(|w| w.letter == b'G' && !w.expr && w.is_code() && step.profile.g_code(w.code().0, w.code().1).is_some_and(|g| g.function == crate::profile::GFn::DataSettingEnd));
     if ends {
         step.st.data_input = None;
         return Ok(());
@@ -388,6 +388,10 @@ pub(super) fn data_line(step: &mut Step, block: &crate::read::Block, mode: DataI
             l if l == entry.value && value.is_none() => value = Some(w),
             l if Some(l) == entry.read_into && read.is_none() => read = Some(w),
             b'P' if axis.is_none() => axis = Some(w),
+            // A programme end among the lines: G11 is probably missing.
+            b'M' => {
+                return Err(step.alarm(Rule::WordNotTaken, w.span, format!("{}: a parameter line between G10 L{} and G11 takes no M code: is G11 missing?", w.text(), entry.l)));
+            }
             // GSK: K and D name PLC parameters, which ncsight does not have.
             b'K' | b'D' if entry.read_into.is_some() => {
                 let msg = format!("{}: PLC parameters (K, D) are not modelled by ncsight; the line changes nothing here", w.text());
@@ -417,8 +421,8 @@ pub(super) fn data_line(step: &mut Step, block: &crate::read::Block, mode: DataI
                 let v = match bit {
                     // The bits as binary digits: bit b is the digit b places from the right.
                     Some(b) => {
-                        let digits = w.value.abs().round() as u64;
-                        if w.decimal || digits.to_string().bytes().any(|c| c > b'1') || digits > 11_111_111 {
+                        let digits = w.value.round() as u64;
+                        if w.decimal || w.value < 0.0 || digits.to_string().bytes().any(|c| c > b'1') || digits > 11_111_111 {
                             return Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("{}: parameter {number} is a bit parameter: its value is eight binary digits (as 00000100)", w.text())));
                         }
                         ((digits / 10u64.pow(u32::from(b))) % 10) as f64

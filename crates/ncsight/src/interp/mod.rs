@@ -1414,7 +1414,9 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
                 return finish_block(step, &words, &codes, after, switches);
             }
             if let Motion::Curve(kind) = step.st.motion {
-                if has_axis || b"IJKABPQ".iter().any(|l| words.has(*l)) {
+                // Without an end point the curve's own words still count (help text G6.2 note 6);
+                // P is left out: M98/M99 and the spindle selection take it too.
+                if has_axis || b"IJKABQ".iter().any(|l| words.has_unused(*l)) {
                     curve::block(step, &mut words, kind)?;
                 }
                 return finish_block(step, &words, &codes, after, switches);

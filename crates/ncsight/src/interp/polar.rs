@@ -49,16 +49,31 @@ pub(super) fn allowed(f: GFn) -> bool {
 /// axis, kept as Y (V): a length in G12.1, degrees turned into the unrolled length in G07.1.
 /// A Y word of the machine itself is not simulated in the mode. The block of G07.1 itself (the
 /// cancel, `G07.1 C0`) keeps its C.
-pub(super) fn plane_words(step: &Step, all: &[Word]) -> Result<Vec<Word>, Diagnostic> {
+pub(super) fn plane_words(step: &mut Step, all: &[Word]) -> Result<Vec<Word>, Diagnostic> {
     let Some(mode) = step.st.polar_interp else { return Ok(all.to_vec()) };
-    let switches = all.iter().any(|w| w.letter == b'G' && !w.expr && w.is_code() && step.profile.g_code(w.code().0, w.code().1).is_some_and(|g| g.function == GFn::CylindricalInterpolation));
-    if switches {
+    let functions: Vec<GFn> = all.iter().filter(|w| w.letter == b'G' && !w.expr && w.is_code()).filter_map(|w| step.profile.g_code(w.code().0, w.code().1)).map(|g| g.function).collect();
+    if functions.contains(&GFn::CylindricalInterpolation) {
         return Ok(all.to_vec());
     }
+    // Help text G12.1, "limits": an axis off the plane moves in G01, and is ignored in an arc.
+    let motion = functions.iter().rev().find(|f| matches!(f, GFn::Rapid | GFn::Linear | GFn::ArcCw | GFn::ArcCcw)).copied();
+    let arc = match motion {
+        Some(f) => matches!(f, GFn::ArcCw | GFn::ArcCcw),
+        None => matches!(step.st.motion, crate::modal::Motion::ArcCw | crate::modal::Motion::ArcCcw),
+    };
     let unit = if step.st.inch { 25.4 } else { 1.0 };
     let mut out = Vec::with_capacity(all.len());
     for w in all {
         let letter = match w.letter {
+            b'Z' | b'W' if arc && mode.kind == Hypothetical::Polar => {
+                let msg = format!("{}: an axis off the polar interpolation plane is ignored in an arc (help text G12.1, limits)", w.text());
+                step.warn(Rule::TextIgnored, w.span, msg);
+                continue;
+            }
+            // Help text G12.1 notes 2 and 5: no tool change and no change of the tool offset.
+            b'T' => {
+                return Err(step.alarm(Rule::ImproperAddress, w.span, format!("{}: no tool change or offset change in polar coordinate or cylindrical interpolation (help text G12.1 notes 2 and 5)", w.text())));
+            }
             b'C' => b'Y',
             b'H' => b'V',
             b'Y' | b'V' => {
@@ -126,6 +141,9 @@ pub(super) fn switch(step: &mut Step, words: &mut Words, f: GFn, span: Span) -> 
         let c_deg = step.st.rotary_deg[C];
         let kind = match radius_mm {
             None => {
+                if step.st.per_rev && step.profile.frame.polar_refuses_per_rev {
+                    return Err(step.alarm(Rule::ImproperGCode, span, "G12.1 under feed per revolution (G99): polar coordinate interpolation is in G98 (help text G12.1 note 3)"));
+                }
                 // Note 4: polar coordinate interpolation starts with the C axis at 0 degrees.
                 if (c_deg / 360.0).fract().abs() > 1e-9 {
                     return Err(step.alarm(Rule::ImproperGCode, span, format!("G12.1 with C at {} degrees: polar coordinate interpolation starts at C0 (help text G12.1 note 4)", crate::alarm::shown(c_deg, 3))));
@@ -147,11 +165,17 @@ pub(super) fn switch(step: &mut Step, words: &mut Words, f: GFn, span: Span) -> 
                 Hypothetical::Cylinder { radius_mm: r, sign }
             }
         };
-        step.st.polar_interp = Some(PolarInterp { kind, plane_before: step.st.plane, y_before: step.st.pos.y });
-        step.st.pos.y = match kind {
+        let mode = PolarInterp { kind, plane_before: step.st.plane, y_before: step.st.pos.y };
+        step.st.polar_interp = Some(mode);
+        let c_plane = match kind {
             Hypothetical::Polar => 0.0,
             Hypothetical::Cylinder { radius_mm, sign } => sign * c_deg.to_radians() * radius_mm,
         };
+        step.st.pos.y = c_plane;
+        // Where compensation last left the tool (a G40 without a move), in the plane too.
+        if let Some(a) = step.st.comp.actual.as_mut() {
+            a.y = c_plane;
+        }
         step.st.plane = match kind {
             Hypothetical::Polar => Plane::XY,
             Hypothetical::Cylinder { .. } => Plane::YZ,
@@ -171,9 +195,17 @@ pub(super) fn switch(step: &mut Step, words: &mut Words, f: GFn, span: Span) -> 
                 step.st.rotary_deg[C] = if radius_mm > 0.0 { (sign * c / radius_mm).to_degrees() } else { step.st.rotary_deg[C] };
             }
         }
+        if let Some(a) = step.st.comp.actual.as_mut() {
+            if p.kind == Hypothetical::Polar {
+                a.x = a.x.hypot(a.y);
+            }
+            a.y = p.y_before;
+        }
         step.st.polar_interp = None;
         step.st.pos.y = p.y_before;
         step.st.plane = p.plane_before;
+        // G16 belongs to the plane that ends here.
+        step.st.transform.polar = false;
     }
     Ok(())
 }

@@ -236,6 +236,10 @@ impl Interpreter {
             let mut no_queue = Vec::new();
             let mut step = Step { profile: self.profile, params: &self.params, tables: &self.tables, queue: &mut no_queue, bypass_comp: true, repair: None, span: b.span, n: b.sequence, st: &mut st, carry: None, out: &mut scratch };
             run_block(&mut step, b, self.switches)?;
+            // The contour's blocks share one outcome: past the limit its moves would be lost.
+            if scratch.emitted > super::MAX_MOTIONS_PER_BLOCK {
+                return Err(self.contour_alarm(Rule::MotionLimit, b.span, format!("{code}: the contour makes more than {} moves", super::MAX_MOTIONS_PER_BLOCK)));
+            }
             if scratch.rough_request.is_some() || scratch.finish_request.is_some() {
                 return Err(self.contour_alarm(Rule::ContourCommand, b.span, format!("{code}: a contour block cannot call a cycle itself")));
             }

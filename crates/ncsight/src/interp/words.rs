@@ -42,6 +42,11 @@ impl<'w> Words<'w> {
         self.present & (1 << idx(letter)) != 0
     }
 
+    /// A word of this address is in the block and no command has taken it yet.
+    pub fn has_unused(&self, letter: u8) -> bool {
+        (self.present & !self.used) & (1 << idx(letter)) != 0
+    }
+
     /// Look at a word without taking it.
     pub fn peek(&self, letter: u8) -> Option<&'w Word> {
         self.slot(idx(letter))

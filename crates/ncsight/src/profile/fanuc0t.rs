@@ -36,7 +36,7 @@ const EXTRA: &[GDef] = &[
     g(32, Group::Motion, GFn::Thread(ThreadCmd::Lead), "thread cutting: F lead, Q start angle"),
     g(92, Group::Motion, GFn::Thread(ThreadCmd::Cycle(&G92)), "thread cutting cycle: R taper, F lead, Q start angle"),
     g(76, Group::NonModal, GFn::CompoundThread(Compound::G76), "compound thread cutting cycle, two blocks"),
-    g(34, Group::Motion, GFn::Thread(ThreadCmd::VariableLead), "variable-lead thread cutting: F (or E) the lead at the start, K its change per revolution, Q start angle"),
+    g(34, Group::Motion, GFn::Thread(ThreadCmd::VariableLead), "variable-lead thread cutting: F the lead at the start, K its change per revolution, Q start angle"),
 ];
 
 const PARAMS: &[ParamDef] = &[

@@ -486,6 +486,8 @@ pub struct FrameRules {
     pub g10: G10Forms,
     /// `G10 L_` ... `G11`: the parameter-writing mode, where the profile has one.
     pub parameter_entry: Option<ParamEntry>,
+    /// G12.1 under feed per revolution (G99) is an alarm (GSK980TDi help text, G12.1 note 3).
+    pub polar_refuses_per_rev: bool,
     /// Radius compensation looks ahead across this many blocks without a move in the plane
     /// before the held move ends perpendicular (FANUC: 1, as its manuals draw it).
     pub comp_lookahead: u8,
@@ -553,6 +555,7 @@ impl FrameRules {
         parameter_entry: Some(ParamEntry { l: 50, value: b'R', read_into: None }),
         comp_lookahead: 1,
         comp_idle_alarm: None,
+        polar_refuses_per_rev: false,
         rough_cancels_comp: false,
         box_by_tip: true,
         transform_keys: TransformKeys::NONE,
@@ -567,6 +570,7 @@ impl FrameRules {
         parameter_entry: Some(ParamEntry { l: 52, value: b'W', read_into: Some(b'R') }),
         comp_lookahead: 6,
         comp_idle_alarm: Some(7),
+        polar_refuses_per_rev: true,
         rough_cancels_comp: true,
         box_by_tip: false,
         transform_keys: TransformKeys::NONE,
