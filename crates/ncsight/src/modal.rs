@@ -239,6 +239,9 @@ pub struct CompState {
     pub actual: Option<Vec3>,
     /// Blocks run since the held move without a move in the plane.
     pub idle_blocks: u8,
+    /// G39 came after the held move: the outer corner to the next move is an arc about the
+    /// corner point.
+    pub round_corner: bool,
 }
 
 /// Spindle rotation commanded by M03/M04/M05.
@@ -318,6 +321,8 @@ pub struct Modal {
     pub reference_mid: [Option<f64>; 3],
     /// Between `G10 L3` / `G10 L50` (`L52`) and `G11`, the lines are data, not motion.
     pub data_input: Option<DataInput>,
+    /// G63 tapping mode in force (group 15).
+    pub tapping_mode: bool,
     /// G12.1 polar coordinate interpolation in force.
     pub polar_interp: Option<PolarInterp>,
 }
@@ -412,6 +417,7 @@ impl Modal {
             reference_mid: [None; 3],
             data_input: None,
             polar_interp: None,
+            tapping_mode: false,
         }
     }
 

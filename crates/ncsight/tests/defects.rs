@@ -52,9 +52,7 @@ fn fanuc_0044_reference_return_in_a_canned_cycle() {
 #[test]
 fn codes_of_the_manual_are_not_simulated_yet_not_unknown() {
     for (machine, block) in [
-        ("fanuc0m", "G62"),
-        ("fanuc0m", "G63"),
-        ("fanuc0m", "G39"),
+        ("fanuc0m", "G41 D1 X1.\nG39 I1."),
         ("fanuc0t", "G68"),
         ("gsk980tdi", "G89 Z-10"),
         ("yasnac-lx3", "G68"),

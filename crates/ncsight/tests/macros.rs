@@ -348,17 +348,15 @@ fn single_block_stops_at_macro_statements_with_sbm() {
 /// Mill (fanuc0m), line 2 sets G41 D7 G43 H3 G55 G61 M08: line 3 reads group 07 (G41), 08
 /// (G43), 14 (G55); line 4 group 15 (G61), D 7, H 3; line 5 M 8, group 12 (G67: no G66),
 /// group 10 (G98 at power on). Inside G99 G81, #4009 is 81 and #4010 99; after G80 G40 G49,
-/// #4009 is 80, #4007 40, #4008 49 and group 01 is G00 (0). Group 13 (G96/G97) are codes
-/// ncsight does not simulate on the mill: alarm 115, never a silent 0.
+/// #4009 is 80, #4007 40, #4008 49 and group 01 is G00 (0). Group 13 reads G97, then G96.
 #[test]
 fn modal_information_by_group_number() {
     let text = "G21 G17 G90 G00 X0. Y0. Z0.\nG41 D7 G43 H3 G55 G61 M08 X1.\nG00 X#4007 Y#4008 Z#4014\nG00 X#4015 Y#4107 Z#4111\nG00 X#4113 Y#4012 Z#4010\nG99 G81 X1. Y1. Z-5. R2. F100.\n#1 = #4009\n#2 = #4010\nG80 G40 G49\nG00 X#1 Y#2 Z#4009\nG00 X#4007 Y#4008 Z#4001\nM30\n";
     let moves: Vec<String> = trace("fanuc0m", text).into_iter().filter(|s| s.starts_with("3:") || s.starts_with("4:") || s.starts_with("5:") || s.starts_with("10:") || s.starts_with("11:")).collect();
     assert_eq!(moves, t(&["3:41,43,55", "4:61,7,3", "5:8,67,98", "10:81,99,80", "11:40,49,0"]));
-    for var in ["#4013"] {
-        let e = trace("fanuc0m", &format!("G00 X0 Y0 Z0\n#1 = {var}\nM30\n"));
-        assert_eq!(e, t(&["PS0115"]), "{var}");
-    }
+    // Group 13 (G96/G97): G97 at power on, G96 once given.
+    let e = trace("fanuc0m", "G00 X0 Y0 Z0\nG00 X#4013\nG96 S100 M03\nG00 X#4013\nM30\n");
+    assert_eq!(e, t(&["2:97,0,0", "4:96,0,0"]));
     // Group 04 (G22/G23): G23 at power on, G22 once given.
     let e = trace("fanuc0m", "G00 X0 Y0 Z0\nG00 X#4004\nG22 X100. Y100. Z100. I50. J50. K50.\nG00 X#4004\nM30\n");
     assert_eq!(e, t(&["2:23,0,0", "4:22,0,0"]));

@@ -12,7 +12,7 @@ use super::frame;
 use super::Step;
 use crate::alarm::{Diagnostic, Rule};
 use crate::comp::{self, CompError, Seg, P2};
-use crate::motion::{Op, Record, Vec3};
+use crate::motion::{ArcDir, Op, Record, Vec3};
 use crate::source::Span;
 
 /// The alarm rule of a compensation error.
@@ -168,6 +168,28 @@ fn plane_move(step: &mut Step, span: Span, n: Option<u32>, op: Op, seg: Seg) {
     let Some(hseg) = Seg::of(&held.op, plane) else {
         unreachable!("the queue's first record is a move in the plane")
     };
+    // G39 between the held move and this one: an outer corner is an arc about the corner point,
+    // from the held move's end perpendicular to this move's start perpendicular (FANUC 0i-M
+    // manual, corner circular interpolation). An inner corner is as without it.
+    if std::mem::take(&mut step.st.comp.round_corner) && !step.st.comp.held_startup && r > 0.0 {
+        let p = hseg.to();
+        let turn = hseg.tangent(true).cross(seg.tangent(false));
+        if turn * side < -1e-12 {
+            let (e, s) = (p.plus(comp::vector(&hseg, true, side, r)), p.plus(comp::vector(&seg, false, side, r)));
+            if let Err(err) = make_held(step, e) {
+                return fail(step, err, held.span);
+            }
+            let tip = step.st.comp.tip;
+            let (a, b, c) = (comp::with_local(&start3, e, plane), comp::with_local(&start3, s, plane), comp::with_local(&start3, p, plane));
+            let dir = if turn > 0.0 { ArcDir::Ccw } else { ArcDir::Cw };
+            step.push_record(span, n, Op::Arc { from: a + tip, to: b + tip, center: c + tip, plane, dir, feed_mm_min: feed_of(&op) });
+            note_span(step, span);
+            step.st.comp.held_start = b;
+            step.st.comp.held_startup = false;
+            step.queue.push(Record::of_block(span, n, op));
+            return;
+        }
+    }
     let corner = if step.st.comp.held_startup {
         // Type A: the start-up ends perpendicular to the next move at its start.
         let e = seg.from().plus(comp::vector(&seg, false, side, r));
@@ -282,6 +304,24 @@ pub(super) fn break_off(step: &mut Step) {
         }
     }
     step.st.comp.idle_blocks = 0;
+}
+
+/// G39 (FANUC 0i-M manual, corner circular interpolation): the corner between the move held
+/// and the next one is an arc of the cutter's radius about the corner point. Outside
+/// compensation there is no corner to round: a warning. `G39 I_ J_` (the direction of a corner
+/// not followed by a move) is not simulated.
+pub(super) fn corner_arc(step: &mut Step, words: &mut super::Words, span: Span) -> Result<(), Diagnostic> {
+    for l in [b'I', b'J', b'K'] {
+        if let Some(w) = words.take(l) {
+            return Err(step.alarm(Rule::NotSupported, w.span, format!("{}: G39 with a direction (I, J, K) is not simulated by ncsight yet", w.text())));
+        }
+    }
+    if step.st.comp.side == 0 {
+        step.warn(Rule::TextIgnored, span, "G39 outside cutter compensation (G41/G42): no corner to round");
+        return Ok(());
+    }
+    step.st.comp.round_corner = true;
+    Ok(())
 }
 
 /// After a block in compensation: count it if it had no move in the plane; past the look-ahead

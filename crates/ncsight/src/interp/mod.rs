@@ -264,6 +264,12 @@ impl Step<'_> {
             if accel_s.is_some() {
                 r.accel_s = accel_s;
             }
+            // G63: a tap fed by G01 in a floating holder; the override is 100 % and FEED HOLD
+            // lets the move end (FANUC group 15, "tapping mode").
+            if self.st.tapping_mode && matches!(r.op, Op::Feed { .. } | Op::Arc { .. }) {
+                r.override_free = true;
+                r.hold = crate::motion::Hold::AfterRecord;
+            }
             self.out.records.push(r);
         }
     }
@@ -381,7 +387,12 @@ impl Step<'_> {
 
     /// Spindle speed at a point (G96 makes it depend on the diameter), signed.
     fn rpm_at(&self, p: &Vec3) -> f64 {
-        let dia = if self.profile.diameter_x { 2.0 * p.x } else { 0.0 };
+        let dia = match self.profile.css_axis {
+            // A machining centre: the axis the parameter names (a facing head's radius).
+            Some(k) => 2.0 * p.axis((self.params.get(k) as usize).clamp(1, 3) - 1),
+            None if self.profile.diameter_x => 2.0 * p.x,
+            None => 0.0,
+        };
         self.st.rpm_at(dia, MAX_RPM)
     }
 
@@ -974,6 +985,10 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
         if g.group != Group::NonModal {
             st.group_codes[g.group as usize] = (w.value * 10.0).round() as u16;
         }
+        // G63 holds until another code of its group (G61, G62, G64).
+        if g.group == Group::PathMode {
+            st.tapping_mode = g.function == GFn::TappingMode;
+        }
         match g.function {
             GFn::Rapid => codes.motion = Some((w.span, Motion::Rapid)),
             GFn::Linear => codes.motion = Some((w.span, Motion::Linear)),
@@ -1011,7 +1026,11 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
             // After step 5: a thread run held back from the block before is made in its frame.
             GFn::WorkOffset(n) => codes.work = Some(n),
             // Step 6 puts the length offset in force, with the H of the block.
-            GFn::LengthComp(_) | GFn::PathControl => {}
+            GFn::LengthComp(_) | GFn::PathControl | GFn::TappingMode => {}
+            GFn::CornerOverride => {
+                let msg = format!("{}: automatic corner override: the path is as in G64; the lower feed at inner corners is not in the time model", w.text());
+                step.warn(Rule::NotSimulated, w.span, msg);
+            }
             GFn::Rotation(_) | GFn::MirrorImage(_) | GFn::Scaling(_) | GFn::StrokeCheck(_) => codes.transforms.push((w.span, g.function)),
             // Step 0 turned it on (from a radius and angle of 0) before reading the block.
             GFn::PolarCoordinates(on) => {
@@ -1036,7 +1055,7 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
                     codes.motion = Some((w.span, Motion::Rapid));
                 }
             }
-            GFn::Dwell | GFn::DataSetting | GFn::OffsetMove(_) | GFn::ReferenceCheck | GFn::Skip | GFn::ToolMeasure(_) | GFn::SingleDirection | GFn::ReferenceReturn | GFn::OtherReferenceReturn | GFn::FromReference | GFn::DataSettingEnd | GFn::LocalCoordinates | GFn::MachineCoordinates | GFn::LatheCoordinateSet | GFn::MillCoordinateSet | GFn::CompoundThread(_) | GFn::PeckCycle(_) | GFn::Rough(_) | GFn::Finish => {
+            GFn::Dwell | GFn::DataSetting | GFn::OffsetMove(_) | GFn::ReferenceCheck | GFn::Skip | GFn::ToolMeasure(_) | GFn::SingleDirection | GFn::ReferenceReturn | GFn::OtherReferenceReturn | GFn::FromReference | GFn::DataSettingEnd | GFn::CornerArc | GFn::LocalCoordinates | GFn::MachineCoordinates | GFn::LatheCoordinateSet | GFn::MillCoordinateSet | GFn::CompoundThread(_) | GFn::PeckCycle(_) | GFn::Rough(_) | GFn::Finish => {
                 codes.non_modal = Some((w.span, g.function))
             }
             GFn::NotYet(_) | GFn::MacroCall | GFn::ModalMacroCall | GFn::ModalMacroCancel => unreachable!("rejected above"),
@@ -1379,6 +1398,7 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
         Some((span, GFn::DataSetting)) => step.out.table_write = frame::data_setting(step, &mut words, span)?,
         // G11 outside the data lines: nothing to end (FANUC and GSK texts say nothing; inferred).
         Some((_, GFn::DataSettingEnd)) => {}
+        Some((span, GFn::CornerArc)) => comp::corner_arc(step, &mut words, span)?,
         Some((span, GFn::OffsetMove(factor))) => frame::offset_move(step, &mut words, factor, span)?,
         Some((span, GFn::ReferenceCheck)) => frame::reference_check(step, &mut words, span)?,
         Some((span, GFn::Skip)) => skip(step, &mut words, span)?,
@@ -1510,6 +1530,7 @@ fn describe_command(step: &Step, codes: &Codes) -> String {
         Some((_, f @ GFn::LocalCoordinates)) => return format!("{} (local coordinate system)", name(f)),
         Some((_, f @ GFn::DataSetting)) => return format!("{} (data setting)", name(f)),
         Some((_, f @ GFn::DataSettingEnd)) => return format!("{} (data setting end)", name(f)),
+        Some((_, f @ GFn::CornerArc)) => return format!("{} (corner circular interpolation)", name(f)),
         Some((_, f @ GFn::OffsetMove(_))) => return format!("{} (tool offset increase/decrease)", name(f)),
         Some((_, f @ GFn::ReferenceCheck)) => return format!("{} (reference point return check)", name(f)),
         Some((_, f @ GFn::Skip)) => return format!("{} (skip function)", name(f)),

@@ -82,6 +82,15 @@ const TRANSFORMS: &[ParamDef] = &[
 
 const PARAMS: &[ParamDef] = &[
     ParamDef {
+        key: ParamKey::Number(3770, None),
+        meaning: "G96 on a machining centre: the axis whose coordinate is the radius of the surface speed (1 = X, 2 = Y, 3 = Z)",
+        unit: "axis",
+        min: 1.0,
+        max: 3.0,
+        default: 1.0,
+        source: "FANUC 0i-MC numbering, as recalled (the 0-M's number not found); default assumed",
+    },
+    ParamDef {
         key: ParamKey::Number(2, Some(4)),
         meaning: "G76/G87 shift direction, with bit 5: (bit 5, bit 4) 00 = +X, 01 = -X, 10 = +Y, 11 = -Y",
         unit: "bit",
@@ -160,6 +169,7 @@ pub static PROFILE: Profile = Profile {
     title: "FANUC 0-M machining centre",
     kind: MachineKind::Mill,
     diameter_x: false,
+    css_axis: Some(ParamKey::Number(3770, None)),
     integer_lengths: IntegerLengths::LeastIncrement,
     calculator_input: Some(ParamKey::Number(3401, Some(0))),
     alarm_style: AlarmStyle::Fanuc,

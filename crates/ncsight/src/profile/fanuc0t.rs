@@ -74,6 +74,7 @@ pub static PROFILE: Profile = Profile {
     title: "FANUC 0-T lathe (G-code system A)",
     kind: MachineKind::Lathe,
     diameter_x: true,
+    css_axis: None,
     integer_lengths: IntegerLengths::LeastIncrement,
     calculator_input: Some(ParamKey::Number(3401, Some(0))),
     alarm_style: AlarmStyle::Fanuc,

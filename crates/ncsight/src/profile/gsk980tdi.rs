@@ -200,6 +200,7 @@ pub static PROFILE: Profile = Profile {
     title: "GSK980TDi lathe (G-code system A)",
     kind: MachineKind::Lathe,
     diameter_x: true,
+    css_axis: None,
     integer_lengths: IntegerLengths::Millimetres,
     calculator_input: None,
     alarm_style: AlarmStyle::Project,

@@ -115,6 +115,7 @@ pub static PROFILE: Profile = Profile {
     title: "GSK988T lathe with servo spindle (A set of G codes)",
     kind: MachineKind::Lathe,
     diameter_x: true,
+    css_axis: None,
     integer_lengths: IntegerLengths::Millimetres,
     calculator_input: None,
     alarm_style: AlarmStyle::Project,

@@ -24,7 +24,7 @@ pub(super) const FANUC_0M: &[GDef] = &[
     g(31, Group::NonModal, GFn::Skip, "skip function (feed until the skip signal)"),
     g(33, Group::Motion, GFn::Thread(crate::profile::ThreadCmd::Lead), "thread cutting: F the lead along the long axis, Q the start angle"),
     g(37, Group::NonModal, GFn::ToolMeasure(2), "automatic tool length measurement: G37 Z_, the measuring position"),
-    g(39, Group::NonModal, LATER, "corner circular interpolation in cutter compensation"),
+    g(39, Group::NonModal, GFn::CornerArc, "corner circular interpolation in cutter compensation: the next outer corner an arc of the cutter's radius"),
     g(45, Group::NonModal, GFn::OffsetMove(1), "tool offset increase"),
     g(46, Group::NonModal, GFn::OffsetMove(-1), "tool offset decrease"),
     g(47, Group::NonModal, GFn::OffsetMove(2), "tool offset double increase"),
@@ -35,15 +35,15 @@ pub(super) const FANUC_0M: &[GDef] = &[
     gp(51, 1, "G51.1", Group::MirrorImage, GFn::MirrorImage(true), "programmable mirror image on"),
     g(52, Group::NonModal, GFn::LocalCoordinates, "local coordinate system"),
     g(60, Group::NonModal, GFn::SingleDirection, "single direction positioning"),
-    g(62, Group::PathMode, LATER, "automatic corner override"),
-    g(63, Group::PathMode, LATER, "tapping mode"),
+    g(62, Group::PathMode, GFn::CornerOverride, "automatic corner override: the feed lowered at inner corners in cutter compensation (not timed)"),
+    g(63, Group::PathMode, GFn::TappingMode, "tapping mode: feed override 100 %, FEED HOLD at the block's end"),
     g(65, Group::NonModal, GFn::MacroCall, "custom macro call"),
     g(66, Group::MacroCall, GFn::ModalMacroCall, "custom macro modal call"),
     g(67, Group::MacroCall, GFn::ModalMacroCancel, "custom macro modal call cancel"),
     g(68, Group::Rotation, GFn::Rotation(true), "coordinate system rotation"),
     g(69, Group::Rotation, GFn::Rotation(false), "coordinate system rotation cancel"),
-    g(96, Group::SpindleSpeedMode, LATER, "constant surface speed control"),
-    g(97, Group::SpindleSpeedMode, LATER, "constant surface speed control cancel"),
+    g(96, Group::SpindleSpeedMode, GFn::ConstantSurfaceSpeed, "constant surface speed control: S in m/min at the radius of the axis parameter 3770 names"),
+    g(97, Group::SpindleSpeedMode, GFn::ConstantRpm, "constant surface speed control cancel: S in rpm"),
 ];
 
 /// FANUC 0-T, G-code system A (the FANUC 0-TC G-code table; the 0i-TC for what it lacks).

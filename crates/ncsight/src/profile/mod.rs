@@ -219,6 +219,13 @@ pub enum GFn {
     Scaling(bool),
     /// G16 (on) / G15 (off): polar coordinate command.
     PolarCoordinates(bool),
+    /// G63: tapping mode (a tap in a floating holder fed by G01): the feed override is 100 % and
+    /// FEED HOLD waits for the block's end. G61, G62 and G64 end it (group 15).
+    TappingMode,
+    /// G62: automatic override of the feed at inner corners in cutter compensation.
+    CornerOverride,
+    /// G39: the next outer corner of the compensated path is an arc about the corner.
+    CornerArc,
     /// G12.1 (on) / G13.1 (off): polar coordinate interpolation with the C axis.
     PolarInterpolation(bool),
     /// G07.1 C<radius> (on; C0 off): cylindrical interpolation with the C axis.
@@ -809,6 +816,7 @@ impl GFn {
             GFn::NotYet(_) => CodeStatus::NotYet,
             GFn::Skip => CodeStatus::Assumed("no skip signal comes: the move runs to its end (NCS-W34)"),
             GFn::ToolMeasure(_) => CodeStatus::Assumed("no measuring signal comes: the tool reaches the measuring position, the offset stays (NCS-W35)"),
+            GFn::CornerOverride => CodeStatus::Assumed("the path is as G64's; the slower feed at inner corners is not in the time model (NCS-W12)"),
             _ => CodeStatus::Simulated,
         }
     }
@@ -1049,6 +1057,9 @@ pub struct Profile {
     pub kind: MachineKind,
     /// X words are diameters (lathes).
     pub diameter_x: bool,
+    /// Constant surface speed on a machining centre: the parameter naming the axis whose
+    /// coordinate is the radius (FANUC 3770: 1 X, 2 Y, 3 Z); lathes take the X diameter.
+    pub css_axis: Option<ParamKey>,
     pub integer_lengths: IntegerLengths,
     /// The parameter that makes a length without a decimal point millimetres (inches) instead
     /// (FANUC 3401#0 DPI, "calculator-type" input), if the profile knows one.

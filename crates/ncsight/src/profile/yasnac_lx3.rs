@@ -69,6 +69,7 @@ pub static PROFILE: Profile = Profile {
     title: "YASKAWA YASNAC LX3 lathe",
     kind: MachineKind::Lathe,
     diameter_x: true,
+    css_axis: None,
     integer_lengths: IntegerLengths::LeastIncrement,
     calculator_input: None,
     alarm_style: AlarmStyle::Project,

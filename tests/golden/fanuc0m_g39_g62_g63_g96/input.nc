@@ -1,0 +1,23 @@
+O0391 (FANUC 0-M - G39 corner arcs, G62, G63 tapping mode and G96/G97 - run with the feed override at 50 %)
+(Hand check - FANUC 0i-M manual - G39 between two moves in cutter compensation makes the outer corner an arc of the cutter radius about the corner point; G63 keeps the feed at 100 % and lets FEED HOLD wait for the block's end; G96 S is m/min at the radius of the axis parameter 3770 names - X.)
+G21 G17 G90 G00 X-20. Y0 Z5.
+G01 Z-2. F200.
+(G41 D1 - radius 5 - the start-up to X-5 Y0 - perpendicular to the next move.)
+G41 G01 X0 Y0 D1
+Y20.
+(G39 - the corner at X0 Y20 turns right, away from the cutter - an outer corner: the first move ends at X-5 Y20, an arc clockwise about X0 Y20 to X0 Y25, then along Y25.)
+G39
+X30.
+G39
+Y0
+G40 X50.
+(G62 - warning NCS-W12: the path is as G64's; the slower inner corners are not timed.)
+G62
+(G63 - Z-2 to Z-10 at F100 - 8 mm - 4.8 s + 0.05 even at 50 % override; the moves above take twice their time.)
+G63 G01 Z-10. F100.
+G64 G00 Z5.
+(G96 S100 at X50 - the diameter 100 - 100000 / [pi x 100] = 318.3 rpm; G97 S500 - 500 rpm.)
+G96 S100 M03
+G01 X20. F100.
+G97 S500
+M30
