@@ -395,3 +395,24 @@ fn a_second_thread_hold_in_a_restarted_cycle_restarts_it_once() {
     }
     assert!(matches!(r.last().unwrap().op, Op::End { .. }));
 }
+
+/// FANUC 0i-M manual, tapping mode (G63): the feed override does not apply and FEED HOLD lets
+/// the move end; G64 ends the mode. G01 Z-10 from Z0 at F100: 6 s + 0.05 s at any override; the
+/// G01 after G64 takes twice as long at 50 %.
+#[test]
+fn g63_tapping_mode_ignores_the_override_and_finishes_the_move_on_hold() {
+    let prog = "G00 X1. Y0 Z0\nG63 G01 Z-10. F100.\nG64 G01 Z0\nM30\n";
+    let plain = run("fanuc0m", &[], Options::default(), prog);
+    let slow = run("fanuc0m", &[], Options { overrides: Overrides { feed_pct: 50.0, ..Overrides::default() }, ..Options::default() }, prog);
+    let dur = |r: &[Record], line_index: usize| r[line_index].t_s - r[line_index - 1].t_s;
+    let tap = plain.iter().position(|r| r.op.kind() == "feed").unwrap();
+    assert_eq!(tap, 1, "{plain:?}");
+    assert!((dur(&plain, tap) - 6.05).abs() < 1e-9);
+    assert!((dur(&slow, tap) - 6.05).abs() < 1e-9);
+    assert!((dur(&slow, tap + 1) - 2.0 * 6.0 - 0.05).abs() < 1e-9);
+    // FEED HOLD 2 s into the tap: the stop comes at its end, Z-10.
+    let h = plain[tap - 1].t_s + 2.0;
+    let r = run("fanuc0m", &[], hold_at(h), prog);
+    let i = stops(&r)[0].0;
+    assert_eq!(r[i - 1].op.end_point().unwrap().z, -10.0);
+}

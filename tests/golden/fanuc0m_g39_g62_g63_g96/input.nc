@@ -1,4 +1,4 @@
-O0391 (FANUC 0-M - G39 corner arcs, G62, G63 tapping mode and G96/G97 - run with the feed override at 50 %)
+O0391 (FANUC 0-M - G39 corner arcs, G62, G63 tapping mode and G96/G97)
 (Hand check - FANUC 0i-M manual - G39 between two moves in cutter compensation makes the outer corner an arc of the cutter radius about the corner point; G63 keeps the feed at 100 % and lets FEED HOLD wait for the block's end; G96 S is m/min at the radius of the axis parameter 3770 names - X.)
 G21 G17 G90 G00 X-20. Y0 Z5.
 G01 Z-2. F200.
@@ -13,7 +13,7 @@ Y0
 G40 X50.
 (G62 - warning NCS-W12: the path is as G64's; the slower inner corners are not timed.)
 G62
-(G63 - Z-2 to Z-10 at F100 - 8 mm - 4.8 s + 0.05 even at 50 % override; the moves above take twice their time.)
+(G63 - Z-2 to Z-10 at F100 - 8 mm - 4.8 s + 0.05, at any feed override - crates/ncsight/tests/operator.rs runs it at 50 %.)
 G63 G01 Z-10. F100.
 G64 G00 Z5.
 (G96 S100 at X50 - the diameter 100 - 100000 / [pi x 100] = 318.3 rpm; G97 S500 - 500 rpm.)
