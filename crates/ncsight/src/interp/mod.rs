@@ -698,11 +698,18 @@ fn collect<'w>(
                 && matches!(profile.g_code(w.code().0, w.code().1).map(|g| g.function), Some(GFn::NotYet(_)))
         })
     };
+    // G32.1 in the block, or in force.
+    let rigid_block = || {
+        step.st.motion == Motion::Thread(crate::profile::ThreadCmd::Rigid)
+            || all.iter().any(|w| w.letter == b'G' && !w.expr && w.is_code() && profile.g_code(w.code().0, w.code().1).is_some_and(|g| g.function == GFn::Thread(crate::profile::ThreadCmd::Rigid)))
+    };
     for (i, w) in all.iter().enumerate() {
         let letter = w.letter;
         // In G12.1 the hypothetical C is read as the plane's Y (V incremental; interp/polar.rs).
         let hypothetical = step.st.polar_interp.is_some() && matches!(letter, b'Y' | b'V');
-        if !profile.takes_address(letter) && !step.tables.added_addresses.contains(letter) && !hypothetical && !not_yet() {
+        // The GSK980TDi's G32.1 gives its start angle with C (help text G32.1), C axis or not.
+        let rigid_start = letter == b'C' && profile.thread.g32_1.start_c && rigid_block();
+        if !profile.takes_address(letter) && !step.tables.added_addresses.contains(letter) && !hypothetical && !rigid_start && !not_yet() {
             return Err(step.alarm(
                 Rule::ImproperAddress,
                 w.span,

@@ -69,6 +69,26 @@ impl Step<'_> {
     }
 
     /// Read F (and I threads per inch, E) into the lead in force; return the lead to use.
+    /// The lead, and the hand where a negative F gives a left-hand thread (GSK980TDi G92.1 and
+    /// G32.1: "F > 0 right hand, F < 0 left hand": the spindle turns the other way): -1.0 then.
+    pub(super) fn read_hand_lead(&mut self, words: &mut Words, gname: &str, negative_f_left_hand: bool, inch_i: bool, e_word: bool) -> Result<(f64, f64), Diagnostic> {
+        if negative_f_left_hand {
+            if let Some(w) = words.peek(b'F').filter(|w| w.value < 0.0) {
+                let mut positive = *w;
+                positive.value = -w.value;
+                words.take(b'F');
+                let lead = self.lead_word(&positive);
+                if lead > MAX_LEAD_MM {
+                    return Err(self.alarm(Rule::ValueOutOfRange, w.span, format!("{}: the lead of {gname} must be at most {MAX_LEAD_MM} mm", w.text())));
+                }
+                self.st.feed = Some(lead);
+                self.st.thread.lead_mm = None;
+                return Ok((lead, -1.0));
+            }
+        }
+        Ok((self.read_lead(words, gname, inch_i, e_word, MAX_LEAD_MM)?, 1.0))
+    }
+
     pub(super) fn read_lead(&mut self, words: &mut Words, gname: &str, inch_i: bool, e_word: bool, max_mm: f64) -> Result<f64, Diagnostic> {
         let f = words.take(b'F');
         let i = if inch_i { words.take(b'I') } else { None };
@@ -200,7 +220,7 @@ impl Step<'_> {
             return Err(self.alarm(
                 Rule::SpindleMode,
                 self.span,
-                format!("{gname} needs the spindle in position mode: program M14 first (GSK988T manual)"),
+                format!("{gname} needs the spindle in position mode: program M14 first (GSK988T manual; GSK980TDi help text, G32.1 note 1)"),
             ));
         }
         if let Some(w) = words.take(b'S') {
@@ -324,12 +344,32 @@ pub(super) fn block(step: &mut Step, words: &mut Words, cmd: ThreadCmd, explicit
 fn straight(step: &mut Step, words: &mut Words, cmd: ThreadCmd, run_deg: Option<f64>) -> Result<(), Diagnostic> {
     let rigid = cmd == ThreadCmd::Rigid;
     let gname = name(step.profile, cmd);
-    let lead = step.read_lead(words, gname, !rigid && step.profile.thread.g32_pull_out, !rigid && step.profile.thread.g32_lead_e, MAX_LEAD_MM)?;
+    let rules = step.profile.thread.g32_1;
+    let (lead, hand) = if rigid {
+        step.read_hand_lead(words, gname, rules.negative_f_left_hand, rules.lead_i, false)?
+    } else {
+        (step.read_lead(words, gname, step.profile.thread.g32_pull_out, step.profile.thread.g32_lead_e, MAX_LEAD_MM)?, 1.0)
+    };
     // G32.1: J signed, K unsigned (seed 001 notes); G32: J signed, K as written taken positive.
-    // FANUC's G32 has no J/K.
-    let (j_given, k_given) = if rigid || step.profile.thread.g32_pull_out { step.read_jk(words, gname, true, !rigid)? } else { (false, false) };
-    let q = step.read_q(words, 0.001, false)?;
-    let rpm = if rigid { step.rigid_rpm(words, gname)? } else { step.follow_rpm(gname)? };
+    // The GSK980TDi's G32.1 takes J and K as its G32 does (inferred). FANUC's G32 has no J/K.
+    let g32_style_k = !rigid || !rules.k_zero_after_end;
+    let (j_given, k_given) = if rigid || step.profile.thread.g32_pull_out { step.read_jk(words, gname, true, g32_style_k)? } else { (false, false) };
+    // The start angle: Q, or on the GSK980TDi's G32.1 C, the spindle's position in degrees.
+    let q = if rigid && rules.start_c {
+        match words.take(b'C') {
+            Some(w) => {
+                if words.has_unused(b'Q') {
+                    let q = words.take(b'Q').expect("present");
+                    return Err(step.alarm(Rule::WordNotTaken, q.span, format!("{}: {gname} gives its start angle with C on {}", q.text(), step.profile.name)));
+                }
+                Some((step.degrees(w).rem_euclid(360.0), *w))
+            }
+            None => None,
+        }
+    } else {
+        step.read_q(words, 0.001, false)?
+    };
+    let rpm = if rigid { hand * step.rigid_rpm(words, gname)? } else { step.follow_rpm(gname)? };
     let (target, _) = axis_target(step, words)?;
     let from = step.st.pos;
     if target == from {
@@ -356,7 +396,7 @@ fn straight(step: &mut Step, words: &mut Words, cmd: ThreadCmd, run_deg: Option<
         Some(j) if j == 0.0 => None,
         Some(j) => {
             let k = k.map(f64::abs).unwrap_or(0.0);
-            if rigid {
+            if rigid && rules.k_zero_after_end {
                 if k == 0.0 {
                     // Seed 001 G32.1 notes 3 and 5: no long-axis pull-out; out along the short
                     // axis after the end point at parameter 1466's speed.
@@ -451,28 +491,7 @@ fn arc(step: &mut Step, words: &mut Words, dir: ArcDir, run_deg: Option<f64>) ->
 /// G92 (seed 000; seed 004 for the YASNAC) and G92.1 (seed 001 section 3).
 fn cycle(step: &mut Step, words: &mut Words, rules: &'static CycleRules, explicit: bool) -> Result<(), Diagnostic> {
     let gname = rules.code;
-    // GSK980TDi G92.1: "F > 0 right hand, F < 0 left hand": the spindle turns the other way.
-    let mut hand = 1.0;
-    let mut left_lead = None;
-    if rules.negative_f_left_hand {
-        if let Some(w) = words.peek(b'F').filter(|w| w.value < 0.0) {
-            hand = -1.0;
-            let mut positive = *w;
-            positive.value = -w.value;
-            words.take(b'F');
-            let lead = step.lead_word(&positive);
-            if lead > MAX_LEAD_MM {
-                return Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("{}: the lead of {gname} must be at most {MAX_LEAD_MM} mm", w.text())));
-            }
-            step.st.feed = Some(lead);
-            step.st.thread.lead_mm = None;
-            left_lead = Some(lead);
-        }
-    }
-    let lead = match left_lead {
-        Some(l) => l,
-        None => step.read_lead(words, gname, rules.lead_i, rules.lead_e, MAX_LEAD_MM)?,
-    };
+    let (lead, hand) = step.read_hand_lead(words, gname, rules.negative_f_left_hand, rules.lead_i, rules.lead_e)?;
     let repair_word = if rules.repair_p { words.take(b'P') } else { None };
     if let Some(w) = repair_word {
         let enabled = step.profile.thread.repair_enable.is_some_and(|k| step.params.get(k) != 0.0);

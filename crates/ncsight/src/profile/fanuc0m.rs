@@ -189,7 +189,7 @@ pub static PROFILE: Profile = Profile {
         dry_run: ParamKey::Setting("dry_run_mm_min"),
         feed_max: ParamKey::Number(527, None),
     },
-    thread: ThreadRules { q_point: QPoint::Alarm, arc_q_unit_deg: 0.001, pull_out_speed: None, after_end_feed: None, pull_out_accel: None, repair_enable: None, g32_pull_out: false, g32_lead_e: false, g76: None, g34: super::G34_FANUC },
+    thread: ThreadRules { q_point: QPoint::Alarm, arc_q_unit_deg: 0.001, pull_out_speed: None, after_end_feed: None, pull_out_accel: None, repair_enable: None, g32_pull_out: false, g32_lead_e: false, g76: None, g34: super::G34_FANUC, g32_1: super::G32_1_GSK988T },
     drill: super::DrillRules {
         g73_retract_um: Some(ParamKey::Number(531, None)),
         g83_clearance_um: Some(ParamKey::Number(532, None)),

@@ -105,6 +105,7 @@ pub static PROFILE: Profile = Profile {
         g32_lead_e: false,
         g76: Some(super::FANUC_G76_KEYS),
         g34: super::G34_FANUC,
+        g32_1: super::G32_1_GSK988T,
     },
     drill: super::lathe_drill::RULES,
     calls: super::CallRules::FANUC,

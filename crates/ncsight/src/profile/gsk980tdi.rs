@@ -1,7 +1,7 @@
 //! GSK980TDi lathe, G-code system A. Seed 000 (G92) and the on-line help text.
 
 use super::common::{self, g, gp};
-use super::lathe_a::{self, LATER_THREAD};
+use super::lathe_a;
 use super::{Compound, Curve, G76Keys, SETTINGS, DRY_RUN, CycleRules, HoldRule, JkWords, PullOutRule, QPoint, ThreadCmd, ThreadRules, GDef, GFn, Group, IntegerLengths, MachineKind, ParamDef, ParamKey, Profile, TimeKeys};
 use crate::alarm::AlarmStyle;
 use crate::codes::DrillKind;
@@ -57,7 +57,7 @@ static G92_1: CycleRules = CycleRules {
 const EXTRA: &[GDef] = &[
     g(32, Group::Motion, GFn::Thread(ThreadCmd::Lead), "thread cutting: F lead or I threads per inch, J/K pull-out, Q start angle"),
     g(92, Group::Motion, GFn::Thread(ThreadCmd::Cycle(&G92)), "thread cutting cycle (GSK980TDi manual, G92)"),
-    gp(32, 1, "G32.1", Group::Motion, LATER_THREAD, "rigid thread cutting (GSK980TDi form with C)"),
+    gp(32, 1, "G32.1", Group::Motion, GFn::Thread(ThreadCmd::Rigid), "rigid thread cutting: C the start angle, F(I) the lead (negative: left hand), J/K pull-out, S the speed; M14 first"),
     gp(32, 2, "G32.2", Group::Motion, GFn::Thread(ThreadCmd::Arc(ArcDir::Cw)), "arc thread, clockwise"),
     gp(32, 3, "G32.3", Group::Motion, GFn::Thread(ThreadCmd::Arc(ArcDir::Ccw)), "arc thread, counter-clockwise"),
     g(76, Group::NonModal, GFn::CompoundThread(Compound::G76), "compound thread cutting cycle, two blocks"),
@@ -220,7 +220,7 @@ pub static PROFILE: Profile = Profile {
         dry_run: ParamKey::Setting("dry_run_mm_min"),
         feed_max: ParamKey::Number(27, None),
     },
-    thread: ThreadRules { q_point: QPoint::Ignored, arc_q_unit_deg: 0.001, pull_out_speed: Some(ParamKey::Number(107, None)), after_end_feed: None, pull_out_accel: None, repair_enable: Some(ParamKey::Number(174, Some(4))), g32_pull_out: true, g32_lead_e: false, g76: Some(G76Keys { finishing: ParamKey::Number(57, None), pull_out: ParamKey::Number(19, None), angle: ParamKey::Number(58, None), dmin_um: ParamKey::Number(59, None), allowance: ParamKey::Number(60, None), allowance_to_mm: 1.0, pull_out_angle: None }), g34: super::G34_GSK },
+    thread: ThreadRules { q_point: QPoint::Ignored, arc_q_unit_deg: 0.001, pull_out_speed: Some(ParamKey::Number(107, None)), after_end_feed: None, pull_out_accel: None, repair_enable: Some(ParamKey::Number(174, Some(4))), g32_pull_out: true, g32_lead_e: false, g76: Some(G76Keys { finishing: ParamKey::Number(57, None), pull_out: ParamKey::Number(19, None), angle: ParamKey::Number(58, None), dmin_um: ParamKey::Number(59, None), allowance: ParamKey::Number(60, None), allowance_to_mm: 1.0, pull_out_angle: None }), g34: super::G34_GSK, g32_1: super::G32_1_GSK980TDI },
     drill: super::DrillRules::NONE,
     calls: super::CallRules {
         max_count: 9999,

@@ -140,7 +140,7 @@ pub static PROFILE: Profile = Profile {
     thread: ThreadRules { q_point: QPoint::Alarm, arc_q_unit_deg: 1.0, pull_out_speed: None, after_end_feed: Some(ParamKey::Number(1466, None)), pull_out_accel: Some(ParamKey::Number(1628, None)), repair_enable: Some(ParamKey::Number(8135, Some(7))), g32_pull_out: true, g32_lead_e: false,
         // The GSK988T numbers its parameters as FANUC does (1022, 1422 on its G01/G02 page;
         // 5130/5131 in G92.1): the FANUC 0i-T G76 numbers are assumed.
-        g76: Some(super::FANUC_G76_KEYS), g34: super::G34_GSK },
+        g76: Some(super::FANUC_G76_KEYS), g34: super::G34_GSK, g32_1: super::G32_1_GSK988T },
     drill: super::lathe_drill::RULES,
     calls: super::CallRules {
         max_count: 9999,

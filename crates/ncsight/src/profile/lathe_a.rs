@@ -8,7 +8,6 @@ use crate::codes::PeckKind;
 use crate::codes::RoughKind;
 use crate::codes::BoxKind;
 
-pub(super) const LATER_THREAD: GFn = GFn::NotYet("this thread command is not simulated by ncsight yet");
 pub(super) const LATER_G76: GFn = GFn::NotYet("the G76 compound threading cycle is not simulated by ncsight yet");
 
 /// Shared by all three lathe profiles.

@@ -662,7 +662,29 @@ pub struct ThreadRules {
     pub g76: Option<G76Keys>,
     /// G34: the words of variable-lead thread cutting.
     pub g34: VariableLeadRules,
+    /// G32.1: the words of rigid thread cutting.
+    pub g32_1: RigidRules,
 }
+
+/// The words of G32.1 as a manual gives them.
+#[derive(Debug, Clone, Copy)]
+pub struct RigidRules {
+    /// The start angle: Q in 0.001 degree (GSK988T manual, G32.1), or C, the spindle's position
+    /// as a C axis in degrees (GSK980TDi help text, G32.1).
+    pub start_c: bool,
+    /// F < 0 is a left-hand thread, the spindle turning the other way (GSK980TDi help text).
+    pub negative_f_left_hand: bool,
+    /// I gives threads per inch (GSK980TDi: F(I)).
+    pub lead_i: bool,
+    /// K omitted or 0 with J: out along the short axis after the end point at the pull-out
+    /// speed (GSK988T notes 3 and 5); otherwise K = J, as G32 (GSK980TDi, inferred).
+    pub k_zero_after_end: bool,
+}
+
+/// G32.1 of the GSK988T manual (seed 001 section 2).
+pub const G32_1_GSK988T: RigidRules = RigidRules { start_c: false, negative_f_left_hand: false, lead_i: false, k_zero_after_end: true };
+/// G32.1 of the GSK980TDi help text: C the start angle, F(I) signed by the hand, J/K as G32.
+pub const G32_1_GSK980TDI: RigidRules = RigidRules { start_c: true, negative_f_left_hand: true, lead_i: true, k_zero_after_end: false };
 
 /// The words of G34 as a manual gives them.
 #[derive(Debug, Clone, Copy)]

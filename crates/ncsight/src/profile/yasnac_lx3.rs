@@ -89,7 +89,7 @@ pub static PROFILE: Profile = Profile {
         dry_run: ParamKey::Setting("dry_run_mm_min"),
         feed_max: ParamKey::Setting("feed_max_mm_min"),
     },
-    thread: ThreadRules { q_point: QPoint::Ignored, arc_q_unit_deg: 0.001, pull_out_speed: None, after_end_feed: None, pull_out_accel: None, repair_enable: None, g32_pull_out: false, g32_lead_e: true, g76: None, g34: super::G34_FANUC },
+    thread: ThreadRules { q_point: QPoint::Ignored, arc_q_unit_deg: 0.001, pull_out_speed: None, after_end_feed: None, pull_out_accel: None, repair_enable: None, g32_pull_out: false, g32_lead_e: true, g76: None, g34: super::G34_FANUC, g32_1: super::G32_1_GSK988T },
     drill: super::DrillRules::NONE,
     calls: super::CallRules {
         l_count: true,
