@@ -46,6 +46,11 @@ pub enum DrillKind {
     FaceBoreR,
     /// FANUC 0-T lathe G89: the same along X.
     SideBoreR,
+    /// GSK980TDi G85: boring along Z from the start point: feed in, dwell P, feed out (the help
+    /// text names it only; inferred from its G83 and the FANUC G85).
+    FaceBoreStart,
+    /// GSK980TDi G89: the same along X.
+    SideBoreStart,
     /// GSK980TDi G84: rigid tapping along Z from the start point (help text G84/88).
     TapFace,
     /// GSK980TDi G88: rigid tapping along X from the start point.
@@ -71,8 +76,8 @@ impl DrillKind {
             DrillKind::SideG87 | DrillKind::SideFromR => "G87",
             DrillKind::TapFace | DrillKind::FaceTapR => "G84",
             DrillKind::TapSide | DrillKind::SideTapR => "G88",
-            DrillKind::FaceBoreR => "G85",
-            DrillKind::SideBoreR => "G89",
+            DrillKind::FaceBoreR | DrillKind::FaceBoreStart => "G85",
+            DrillKind::SideBoreR | DrillKind::SideBoreStart => "G89",
         }
     }
 
@@ -86,9 +91,14 @@ impl DrillKind {
         matches!(self, DrillKind::G76 | DrillKind::G87)
     }
 
-    /// A lathe cycle that drills from the start point (GSK980TDi G83/G87).
+    /// A lathe cycle that drills from the start point (GSK980TDi G83/G87, G85/G89).
     pub fn from_start(self) -> bool {
-        matches!(self, DrillKind::FaceG83 | DrillKind::SideG87)
+        matches!(self, DrillKind::FaceG83 | DrillKind::SideG87 | DrillKind::FaceBoreStart | DrillKind::SideBoreStart)
+    }
+
+    /// A boring cycle from the start point: feed in and feed out, no pecks.
+    pub fn bores_from_start(self) -> bool {
+        matches!(self, DrillKind::FaceBoreStart | DrillKind::SideBoreStart)
     }
 
     /// A lathe cycle: it drills along Z (G83) or X (G87) of the lathe, not along a plane's normal.
@@ -97,6 +107,8 @@ impl DrillKind {
             self,
             DrillKind::FaceG83
                 | DrillKind::SideG87
+                | DrillKind::FaceBoreStart
+                | DrillKind::SideBoreStart
                 | DrillKind::FaceFromR
                 | DrillKind::SideFromR
                 | DrillKind::TapFace
@@ -110,7 +122,7 @@ impl DrillKind {
 
     /// The lathe cycles that drill along X.
     pub fn along_x(self) -> bool {
-        matches!(self, DrillKind::SideG87 | DrillKind::SideFromR | DrillKind::TapSide | DrillKind::SideTapR | DrillKind::SideBoreR)
+        matches!(self, DrillKind::SideG87 | DrillKind::SideFromR | DrillKind::TapSide | DrillKind::SideTapR | DrillKind::SideBoreR | DrillKind::SideBoreStart)
     }
 
     /// GSK980TDi rigid tapping G84/G88: spindle-synchronised, not laid out by the hole cycles of `cycles::drill`.

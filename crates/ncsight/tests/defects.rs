@@ -54,7 +54,7 @@ fn codes_of_the_manual_are_not_simulated_yet_not_unknown() {
     for (machine, block) in [
         ("fanuc0m", "G41 D1 X1.\nG39 I1."),
         ("fanuc0t", "G68"),
-        ("gsk980tdi", "G89 Z-10"),
+
         ("yasnac-lx3", "G68"),
     ] {
         let a = first_alarm(machine, &format!("{block}\nM30\n")).unwrap_or_else(|| panic!("{machine} {block}: no alarm"));

@@ -189,7 +189,7 @@ pub fn expand_each(h: &Hole, s: &mut dyn FnMut(Step)) {
             s(Step::Rapid(p(ret)));
             s(Step::Spindle(h.rpm));
         }
-        DrillKind::G87 | DrillKind::FaceG83 | DrillKind::SideG87 => unreachable!("handled above"),
+        DrillKind::G87 | DrillKind::FaceG83 | DrillKind::SideG87 | DrillKind::FaceBoreStart | DrillKind::SideBoreStart => unreachable!("handled above"),
         DrillKind::TapFace | DrillKind::TapSide => unreachable!("rigid tapping is laid out by the interpreter"),
     }
 }
@@ -201,6 +201,15 @@ pub fn expand_each(h: &Hole, s: &mut dyn FnMut(Step)) {
 /// the start.
 fn from_start(h: &Hole, p: &impl Fn(f64) -> Local, s: &mut dyn FnMut(Step)) {
     let start = h.r;
+    if h.kind.bores_from_start() {
+        // G85/G89 (inferred): feed to the bottom, dwell, feed back to the start.
+        s(Step::Feed(p(h.bottom), h.feed));
+        if h.dwell_s > 0.0 {
+            s(Step::Dwell(h.dwell_s));
+        }
+        s(Step::Feed(p(h.initial), h.feed));
+        return;
+    }
     let down = if h.bottom < start { -1.0 } else { 1.0 };
     // d short of `depth`, clamped at the start (J0 step 3).
     let back = |depth: f64| {

@@ -118,7 +118,10 @@ fn emit_hole(step: &mut Step, hole: &Hole, global: impl Fn(drill::Local, &Vec3) 
 fn from_start_block(step: &mut Step, words: &mut Words, kind: DrillKind) -> Result<(), Diagnostic> {
     let code = kind.code();
     let (place, along) = lathe_axes(step, kind)?;
-    if let Some(w) = words.take(b'Q') {
+    // G85/G89 take no Q, R or J (they bore in one feed).
+    let pecks = !kind.bores_from_start();
+    let word = if pecks { words.take(b'Q') } else { None };
+    if let Some(w) = word {
         // Q in least input increments, a radius value.
         let q = super::compound::increments(step, w, code)?;
         if q < 0.0 {
@@ -126,7 +129,8 @@ fn from_start_block(step: &mut Step, words: &mut Words, kind: DrillKind) -> Resu
         }
         step.st.drill.q = Some(q);
     }
-    if let Some(w) = words.take(b'R') {
+    let word = if pecks { words.take(b'R') } else { None };
+    if let Some(w) = word {
         let r = step.length(w)?;
         if r < 0.0 {
             return Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("{}: the retract R of {code} cannot be negative", w.text())));
@@ -134,7 +138,8 @@ fn from_start_block(step: &mut Step, words: &mut Words, kind: DrillKind) -> Resu
         step.st.drill.r = Some((r, false));
     }
     take_dwell(step, words)?;
-    if let Some(w) = words.take(b'J') {
+    let word = if pecks { words.take(b'J') } else { None };
+    if let Some(w) = word {
         if w.decimal || (w.value != 0.0 && w.value != 1.0) {
             return Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("{}: J of {code} is 0 (high-speed peck) or 1 (deep hole)", w.text())));
         }

@@ -7,7 +7,6 @@ use crate::alarm::AlarmStyle;
 use crate::codes::DrillKind;
 use crate::motion::ArcDir;
 
-const LATER_DRILL: GFn = GFn::NotYet("the lathe boring cycles (G85, G89) are not simulated by ncsight yet: the help text has no page for them");
 
 /// M29 S_: rigid tapping mode (help text G84/88).
 const TAPPING_M: &[super::MDef] = &[super::MDef { code: 29, function: super::MFn::RigidTapping, meaning: "rigid tapping mode: with S, before G84/G88" }];
@@ -67,10 +66,10 @@ const EXTRA: &[GDef] = &[
     g(80, Group::Motion, GFn::CycleCancel, "cancel a drilling cycle"),
     g(83, Group::Motion, GFn::Drill(DrillKind::FaceG83), "end face peck drilling cycle"),
     g(84, Group::Motion, GFn::Drill(DrillKind::TapFace), "end face rigid tapping cycle (after M29 S_)"),
-    g(85, Group::Motion, LATER_DRILL, "end face boring cycle"),
+    g(85, Group::Motion, GFn::Drill(DrillKind::FaceBoreStart), "end face boring cycle: feed in along Z, dwell P, feed out (inferred)"),
     g(87, Group::Motion, GFn::Drill(DrillKind::SideG87), "side peck drilling cycle"),
     g(88, Group::Motion, GFn::Drill(DrillKind::TapSide), "side rigid tapping cycle (after M29 S_)"),
-    g(89, Group::Motion, LATER_DRILL, "side boring cycle"),
+    g(89, Group::Motion, GFn::Drill(DrillKind::SideBoreStart), "side boring cycle: feed in along X, dwell P, feed out (inferred)"),
     g(78, Group::NonModal, GFn::CompoundThread(Compound::G78), "compound thread cutting cycle with infeed modes, two blocks"),
 ];
 
