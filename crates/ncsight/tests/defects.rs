@@ -53,9 +53,8 @@ fn fanuc_0044_reference_return_in_a_canned_cycle() {
 fn codes_of_the_manual_are_not_simulated_yet_not_unknown() {
     for (machine, block) in [
         ("fanuc0m", "G41 D1 X1.\nG39 I1."),
-        ("fanuc0t", "G68"),
 
-        ("yasnac-lx3", "G68"),
+        ("yasnac-lx3", "G76 X10. Z-10."),
     ] {
         let a = first_alarm(machine, &format!("{block}\nM30\n")).unwrap_or_else(|| panic!("{machine} {block}: no alarm"));
         assert_eq!(a.code, "NCS-E38", "{machine} {block}: {a:?}");

@@ -1038,7 +1038,7 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
                 let msg = format!("{}: automatic corner override: the path is as in G64; the lower feed at inner corners is not in the time model", w.text());
                 step.warn(Rule::NotSimulated, w.span, msg);
             }
-            GFn::Rotation(_) | GFn::MirrorImage(_) | GFn::Scaling(_) | GFn::StrokeCheck(_) => codes.transforms.push((w.span, g.function)),
+            GFn::Rotation(_) | GFn::MirrorImage(_) | GFn::TurretMirror(_) | GFn::Scaling(_) | GFn::StrokeCheck(_) => codes.transforms.push((w.span, g.function)),
             // Step 0 turned it on (from a radius and angle of 0) before reading the block.
             GFn::PolarCoordinates(on) => {
                 // On a lathe G16 is the polar interpolation plane's (GSK980TDi help text,
@@ -1317,7 +1317,7 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
         let t = step.st.transform;
         // The codes that set an area or a transform take the block's axis words: one of them
         // per block; the cancels run first.
-        let sets = |f: &GFn| matches!(f, GFn::Rotation(true) | GFn::MirrorImage(_) | GFn::Scaling(true) | GFn::StrokeCheck(true));
+        let sets = |f: &GFn| matches!(f, GFn::Rotation(true) | GFn::MirrorImage(_) | GFn::TurretMirror(_) | GFn::Scaling(true) | GFn::StrokeCheck(true));
         if let Some(&(span, _)) = codes.transforms.iter().filter(|(_, f)| sets(f)).nth(1) {
             return Err(step.alarm(Rule::NotSupported, span, "two of G68, G51, G51.1/G50.1 and G22 in one block are not simulated: give each its own block"));
         }
@@ -1337,6 +1337,7 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
             set = match f {
                 GFn::Rotation(on) => transform::rotation(step, &mut words, on, span).map(|_| on),
                 GFn::MirrorImage(on) => transform::mirror_image(step, &mut words, on, span).map(|_| true),
+                GFn::TurretMirror(on) => transform::turret_mirror(step, on, span).map(|_| true),
                 GFn::Scaling(on) => transform::scaling(step, &mut words, on, span).map(|_| on),
                 GFn::StrokeCheck(on) => stroke::set(step, &mut words, on, span).map(|_| on),
                 _ => unreachable!("only transform codes are noted here"),

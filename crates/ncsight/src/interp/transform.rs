@@ -192,6 +192,24 @@ pub(super) fn mirror_image(step: &mut Step, words: &mut Words, on: bool, span: c
     Ok(())
 }
 
+/// G68 (on) / G69 (off) on a lathe: X mirrored about the spindle's centre line, X = 0 (YASNAC
+/// LX3 manual 2.8.24, program mirror image: X, U and I inverted, G02 and G03 exchanged, the
+/// tool nose's side with them; the FANUC 0-T's mirror image for double turrets likewise). The
+/// block makes no move. In tool nose radius compensation it is an alarm (2.8.24 (3) c).
+pub(super) fn turret_mirror(step: &mut Step, on: bool, span: crate::source::Span) -> Result<(), Diagnostic> {
+    if step.st.comp.side != 0 {
+        let code = if on { "G68" } else { "G69" };
+        return Err(step.alarm(Rule::ImproperGCode, span, format!("{code} in tool nose radius compensation: cancel it (G40) first (YASNAC LX3 manual 2.8.24)")));
+    }
+    if on {
+        step.st.transform.mirror_at.x = 0.0;
+        step.st.transform.mirror_axes |= 1;
+    } else {
+        step.st.transform.mirror_axes &= !1;
+    }
+    Ok(())
+}
+
 /// G51 (on) / G50 (off) scaling, where the machine has the option (a setting): `G51 X Y Z P`
 /// the same magnification on every axis, `G51 X Y Z I J K` one per axis (negative: mirrored);
 /// P, I, J, K in 0.001 without a decimal point; P omitted is the profile's magnification

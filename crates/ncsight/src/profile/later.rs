@@ -6,7 +6,6 @@
 use super::common::{g, gp};
 use super::{GDef, GFn, Group};
 
-const LATER: GFn = GFn::NotYet("not simulated by ncsight yet");
 
 /// FANUC 0-M (the 0-M list as the FANUC 0i-MC manual gives it; seed 003's table of contents
 /// names G27-G30, G52, G53, G92).
@@ -67,8 +66,8 @@ pub(super) const FANUC_0T: &[GDef] = &[
     g(65, Group::NonModal, GFn::MacroCall, "custom macro call"),
     g(66, Group::MacroCall, GFn::ModalMacroCall, "custom macro modal call"),
     g(67, Group::MacroCall, GFn::ModalMacroCancel, "custom macro modal call cancel"),
-    g(68, Group::Rotation, LATER, "mirror image for double turrets on"),
-    g(69, Group::Rotation, LATER, "mirror image for double turrets off"),
+    g(68, Group::Rotation, GFn::TurretMirror(true), "mirror image for double turrets on: X mirrored about the centre line (the turret shift, parameter 1290, not applied)"),
+    g(69, Group::Rotation, GFn::TurretMirror(false), "mirror image for double turrets off"),
 ];
 
 /// GSK980TDi (every code of the on-line help text).
@@ -128,6 +127,6 @@ pub(super) const YASNAC_LX3: &[GDef] = &[
     g(65, Group::NonModal, GFn::MacroCall, "custom macro call (inferred)"),
     g(66, Group::MacroCall, GFn::ModalMacroCall, "custom macro modal call (inferred)"),
     g(67, Group::MacroCall, GFn::ModalMacroCancel, "custom macro modal call cancel (inferred)"),
-    g(68, Group::Rotation, LATER, "mirror image for an opposed turret on (inferred)"),
-    g(69, Group::Rotation, LATER, "mirror image for an opposed turret off (inferred)"),
+    g(68, Group::Rotation, GFn::TurretMirror(true), "program mirror image on: X mirrored about the centre line (YASNAC LX3 manual 2.8.24)"),
+    g(69, Group::Rotation, GFn::TurretMirror(false), "program mirror image off (YASNAC LX3 manual 2.8.24)"),
 ];

@@ -215,6 +215,9 @@ pub enum GFn {
     Rotation(bool),
     /// G51.1 (on) / G50.1 (off): programmable mirror image.
     MirrorImage(bool),
+    /// G68 (on) / G69 (off) on a lathe: X mirrored about the spindle's centre line (YASNAC LX3
+    /// program mirror image; FANUC 0-T mirror image for double turrets).
+    TurretMirror(bool),
     /// G51 (on) / G50 (off) on a machining centre: scaling (an option).
     Scaling(bool),
     /// G16 (on) / G15 (off): polar coordinate command.
