@@ -94,6 +94,9 @@ pub struct BoxMemory {
 /// Thread words and memories that last from block to block.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ThreadState {
+    /// The last lead was written with a negative F (a left-hand thread, GSK980TDi G92.1 and
+    /// G32.1): a later block that takes the lead from memory is left-hand too.
+    pub left_hand: bool,
     /// Lead in force (F, I or E of a thread block), mm.
     pub lead_mm: Option<f64>,
     /// J and K in force, as written (mm): modal, cancelled by a non-thread group 01 code.
@@ -409,6 +412,7 @@ impl Modal {
                 repair: false,
                 g76: None,
                 g78: None,
+                left_hand: false,
             },
             drill: DrillData::default(),
             ended: false,

@@ -416,3 +416,27 @@ fn g63_tapping_mode_ignores_the_override_and_finishes_the_move_on_hold() {
     let i = stops(&r)[0].0;
     assert_eq!(r[i - 1].op.end_point().unwrap().z, -10.0);
 }
+
+/// GSK980TDi G92.1 and G32.1: a negative F is a left-hand thread, and the hand stays with the
+/// lead: the passes that take the lead from memory turn the same way.
+#[test]
+fn a_left_hand_lead_stays_left_hand() {
+    let rpms = |r: &[Record]| r.iter().filter_map(|r| if let Op::Thread { rpm, .. } = r.op { Some(rpm) } else { None }).collect::<Vec<_>>();
+    let cycle = run("gsk980tdi", &[], Options::default(), "M14\nG00 X35 Z5\nG92.1 X29 Z-20 F-2 S500\nX28.5\nG92.1 X28 Z-20 F2 S500\nM15\nM30\n");
+    assert_eq!(rpms(&cycle), vec![-500.0, -500.0, 500.0]);
+    let run_g32_1 = run("gsk980tdi", &[], Options::default(), "M14\nG00 X29 Z5\nG32.1 W-10 F-2 S500\nW-10\nG00 X40\nM15\nM30\n");
+    assert!(rpms(&run_g32_1).iter().all(|r| *r == -500.0), "{:?}", rpms(&run_g32_1));
+}
+
+/// G39 before a rapid: the rapid has no feed for the arc, so the corner is made as without G39
+/// and every time stays finite.
+#[test]
+fn g39_before_a_rapid_makes_no_arc() {
+    let setup = "[[offset]]\nnumber = 1\nradius_mm = 5.0\n";
+    let (r, _) = common::run_setup("fanuc0m", setup, "G00 X-20. Y0\nG41 G01 X0 Y0 D1 F100.\nY20.\nG39\nG00 X30.\nG40 X50.\nM30\n", false);
+    assert!(r.iter().all(|r| r.t_s.is_finite()));
+    assert!(!r.iter().any(|r| r.op.kind() == "arc"));
+    // With a feed after it, the arc is there.
+    let (r, _) = common::run_setup("fanuc0m", setup, "G00 X-20. Y0\nG41 G01 X0 Y0 D1 F100.\nY20.\nG39\nX30.\nG40 X50.\nM30\n", false);
+    assert_eq!(r.iter().filter(|r| r.op.kind() == "arc").count(), 1);
+}

@@ -7,7 +7,7 @@ G32.1 W-20 F2 S500 C90
 G00 X40
 Z5
 X29
-(F-2 - a left-hand thread: the spindle turns the other way, -500 rpm; J2 K2 - the pull-out, 2 mm out on the radius over the last 2 mm of Z, as G32's - the thread to Z-13, then to X33 at Z-15.)
+(F-2 - a left-hand thread: the spindle turns the other way, -500 rpm; J2 K2 - the pull-out, 2 mm out on the radius over the last 2 mm of Z, as G32's - the thread to Z-13, then to X33 at Z-15; warning NCS-W16: this pass turns the other way from the first.)
 G32.1 W-20 F-2 S500 C90. J2 K2
 G00 X40
 M15

@@ -171,7 +171,9 @@ fn plane_move(step: &mut Step, span: Span, n: Option<u32>, op: Op, seg: Seg) {
     // G39 between the held move and this one: an outer corner is an arc about the corner point,
     // from the held move's end perpendicular to this move's start perpendicular (FANUC 0i-M
     // manual, corner circular interpolation). An inner corner is as without it.
-    if std::mem::take(&mut step.st.comp.round_corner) && !step.st.comp.held_startup && r > 0.0 {
+    // A rapid after G39 has no feed for the arc: the corner is made as without G39 (FANUC's
+    // G39 is for cutting moves; inferred).
+    if std::mem::take(&mut step.st.comp.round_corner) && !step.st.comp.held_startup && r > 0.0 && !matches!(op, Op::Rapid { .. }) {
         let p = hseg.to();
         let turn = hseg.tangent(true).cross(seg.tangent(false));
         if turn * side < -1e-12 {
@@ -282,6 +284,8 @@ fn make_held(step: &mut Step, end: P2) -> Result<Vec3, CompError> {
 /// block compensation does not act in, the look-ahead run out), and the tool stays there until
 /// the next move.
 pub(super) fn break_off(step: &mut Step) {
+    // A G39 before the break has no corner left to round.
+    step.st.comp.round_corner = false;
     if step.queue.is_empty() {
         return;
     }
@@ -321,6 +325,9 @@ pub(super) fn corner_arc(step: &mut Step, words: &mut super::Words, span: Span) 
         return Ok(());
     }
     step.st.comp.round_corner = true;
+    // G39 stands between the two moves it joins: it is not a block without a move for the
+    // look-ahead (or the path would end perpendicular before the corner it rounds).
+    step.out.comp_plane_move = true;
     Ok(())
 }
 

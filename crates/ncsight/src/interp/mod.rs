@@ -700,8 +700,12 @@ fn collect<'w>(
     };
     // G32.1 in the block, or in force.
     let rigid_block = || {
-        step.st.motion == Motion::Thread(crate::profile::ThreadCmd::Rigid)
-            || all.iter().any(|w| w.letter == b'G' && !w.expr && w.is_code() && profile.g_code(w.code().0, w.code().1).is_some_and(|g| g.function == GFn::Thread(crate::profile::ThreadCmd::Rigid)))
+        let rigid = GFn::Thread(crate::profile::ThreadCmd::Rigid);
+        let motion_code = all.iter().filter(|w| w.letter == b'G' && !w.expr && w.is_code()).filter_map(|w| profile.g_code(w.code().0, w.code().1)).filter(|g| g.group == Group::Motion).last();
+        match motion_code {
+            Some(g) => g.function == rigid,
+            None => step.st.motion == Motion::Thread(crate::profile::ThreadCmd::Rigid),
+        }
     };
     for (i, w) in all.iter().enumerate() {
         let letter = w.letter;
@@ -992,7 +996,11 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
         if g.group != Group::NonModal {
             st.group_codes[g.group as usize] = (w.value * 10.0).round() as u16;
         }
-        // G63 holds until another code of its group (G61, G62, G64).
+        // G63 holds until another code of its group (G61, G62, G64). A tap in cutter
+        // compensation is not simulated: the held moves would take the wrong block's rules.
+        if g.function == GFn::TappingMode && st.comp.side != 0 {
+            return Err(step.alarm(Rule::NotSupported, w.span, format!("{}: tapping mode in cutter compensation (G41/G42) is not simulated: G40 first", w.text())));
+        }
         if g.group == Group::PathMode {
             st.tapping_mode = g.function == GFn::TappingMode;
         }
@@ -1199,7 +1207,9 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
             }
         }
     }
-    let g50_clamp = matches!(codes.non_modal, Some((_, GFn::LatheCoordinateSet)));
+    // G50 S on the lathes, G92 S on a machining centre with constant surface speed (FANUC 0i-M,
+    // inferred for the 0-M): the maximum spindle speed.
+    let g50_clamp = matches!(codes.non_modal, Some((_, GFn::LatheCoordinateSet))) || (matches!(codes.non_modal, Some((_, GFn::MillCoordinateSet))) && profile.css_axis.is_some());
     let spindle_before = (step.st.spindle, step.st.s_word, step.st.css, step.st.spindle_position_mode);
     let s_word = if rigid_thread { None } else { words.take(b'S') };
     if let Some(w) = s_word {

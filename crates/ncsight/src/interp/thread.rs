@@ -83,8 +83,16 @@ impl Step<'_> {
                 }
                 self.st.feed = Some(lead);
                 self.st.thread.lead_mm = None;
+                self.st.thread.left_hand = true;
                 return Ok((lead, -1.0));
             }
+            // A lead written now is right-hand; one taken from memory keeps its hand.
+            let written = words.has(b'F') || (inch_i && words.has(b'I'));
+            let lead = self.read_lead(words, gname, inch_i, e_word, MAX_LEAD_MM)?;
+            if written {
+                self.st.thread.left_hand = false;
+            }
+            return Ok((lead, if self.st.thread.left_hand { -1.0 } else { 1.0 }));
         }
         Ok((self.read_lead(words, gname, inch_i, e_word, MAX_LEAD_MM)?, 1.0))
     }
@@ -362,7 +370,8 @@ fn straight(step: &mut Step, words: &mut Words, cmd: ThreadCmd, run_deg: Option<
                     let q = words.take(b'Q').expect("present");
                     return Err(step.alarm(Rule::WordNotTaken, q.span, format!("{}: {gname} gives its start angle with C on {}", q.text(), step.profile.name)));
                 }
-                Some((step.degrees(w).rem_euclid(360.0), *w))
+                let deg = step.degrees(w).rem_euclid(360.0);
+                Some((if deg >= 360.0 { 0.0 } else { deg }, *w))
             }
             None => None,
         }
@@ -425,7 +434,8 @@ fn straight(step: &mut Step, words: &mut Words, cmd: ThreadCmd, run_deg: Option<
     // G32.1: a block that writes J or K (other than J0 K0) ends the run (seed 001 G32.1 note 1).
     // G32: J/K are modal and the run's pull-out uses the values in force at its end (TDi help
     // G32 note 1), so writing them does not end a run.
-    let ends_run = rigid && (j_given || k_given) && (j.unwrap_or(0.0) != 0.0 || k.unwrap_or(0.0) != 0.0);
+    // The GSK980TDi's G32.1 takes J/K as its G32 (inferred): they do not end the run there.
+    let ends_run = rigid && rules.k_zero_after_end && (j_given || k_given) && (j.unwrap_or(0.0) != 0.0 || k.unwrap_or(0.0) != 0.0);
     let end_deg = phase_after(start_deg, length, lead);
     step.st.pos = target;
     step.st.thread.pending = Some(PendingThread { span: step.span, n: step.n, body: PendingBody::Straight(pass), ends_run, rigid, end_deg });
