@@ -120,6 +120,8 @@ rules! {
     // message (FANUC 0 numbered them per axis; docs/setup.md).
     OvertravelPlus => Alarm, "NCS-E77", Some("OT0500"), "+ OVERTRAVEL (SOFT 1)";
     OvertravelMinus => Alarm, "NCS-E78", Some("OT0501"), "- OVERTRAVEL (SOFT 1)";
+    // GSK980TDi chamfer function, case 2 (its alarm number not at hand).
+    CornerTooLarge => Alarm, "NCS-E89", None, "CHAMFER OR CORNER TOO LARGE FOR THE MOVES";
     // G29 with an axis no G28/G30 has given an intermediate point (no controller text found).
     NoIntermediatePoint => Alarm, "NCS-E88", None, "NO INTERMEDIATE POINT FOR G29";
     // FANUC 0-T variable lead (G34): the number and text as recalled (not verified).

@@ -150,6 +150,27 @@ pub enum CompError {
     ArcTooSmall,
 }
 
+/// A chamfer or corner arc between two straight moves (GSK980TDi help text, chamfer function):
+/// the points where it leaves the first and joins the second, and for an arc its centre and
+/// whether it turns counter-clockwise. `t` is how far those points lie from the corner. `None`
+/// when the moves go on in one direction (case 1: no chamfer).
+pub fn chamfer_points(first: &Seg, second: &Seg, t_of: &dyn Fn(P2, P2) -> f64, radius: Option<f64>) -> Option<(P2, P2, Option<(P2, bool)>)> {
+    let p = first.to();
+    let (u1, u2) = (first.tangent(true), second.tangent(false));
+    let (sin, cos) = (u1.cross(u2), u1.dot(u2));
+    if sin.abs() < TANGENT_RAD && cos > 0.0 {
+        return None;
+    }
+    let t = t_of(u1, u2);
+    let (a, b) = (p.minus(u1.scale(t)), p.plus(u2.scale(t)));
+    let arc = radius.map(|r| {
+        let ccw = sin > 0.0;
+        let n = if ccw { u1.left() } else { u1.left().scale(-1.0) };
+        (a.plus(n.scale(r)), ccw)
+    });
+    Some((a, b, arc))
+}
+
 /// Two moves whose directions differ by less than this (radians) meet without a corner.
 pub const TANGENT_RAD: f64 = 1e-4;
 

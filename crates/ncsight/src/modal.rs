@@ -245,6 +245,25 @@ pub struct CompState {
     /// G39 came after the held move: the outer corner to the next move is an arc about the
     /// corner point.
     pub round_corner: bool,
+    /// A chamfer or corner arc this block asks for at the end of its move (GSK980TDi L, D).
+    pub corner_for_next: Option<CornerRequest>,
+    /// The one asked for at the end of the move held in the queue.
+    pub held_corner: Option<CornerRequest>,
+}
+
+/// A chamfer (L) or a corner arc (D) between a block's move and the next (GSK980TDi help text,
+/// chamfer function).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CornerRequest {
+    /// The chamfer's L, or the corner arc's radius D, mm.
+    pub size_mm: f64,
+    /// D: a corner arc; else a chamfer.
+    pub round: bool,
+    /// A chamfer's L is the distance from the corner to each end (type II, No.181.0 = 1);
+    /// else the chamfer's length (type I).
+    pub from_corner: bool,
+    /// The block that asked.
+    pub span: crate::source::Span,
 }
 
 /// Spindle rotation commanded by M03/M04/M05.

@@ -133,6 +133,9 @@ pub(super) fn take(step: &mut Step, span: Span, n: Option<u32>, op: Op) {
 }
 
 fn plane_move(step: &mut Step, span: Span, n: Option<u32>, op: Op, seg: Seg) {
+    if step.st.comp.side == 0 {
+        return corner_move(step, span, n, op, seg);
+    }
     let plane = step.st.plane;
     let (side, r) = (step.st.comp.side as f64, step.st.comp.radius_mm);
     step.out.comp_plane_move = true;
@@ -286,6 +289,10 @@ fn make_held(step: &mut Step, end: P2) -> Result<Vec3, CompError> {
 pub(super) fn break_off(step: &mut Step) {
     // A G39 before the break has no corner left to round.
     step.st.comp.round_corner = false;
+    if let Some(c) = step.st.comp.held_corner.take() {
+        let what = if c.round { "D (corner arc)" } else { "L (chamfer)" };
+        step.warn(Rule::TextIgnored, c.span, format!("{what}: the next block makes no G01, G02 or G03 move: no corner is made"));
+    }
     if step.queue.is_empty() {
         return;
     }
@@ -308,6 +315,108 @@ pub(super) fn break_off(step: &mut Step) {
         }
     }
     step.st.comp.idle_blocks = 0;
+}
+
+/// L (chamfer) or D (corner arc) in a G01/G02/G03 block (GSK980TDi help text, chamfer
+/// function): asked for the corner between this block's move and the next. ncsight makes it
+/// between two straight moves (G01 to G01); with an arc on either side it is not simulated yet.
+pub(super) fn corner_words(step: &mut Step, words: &mut super::Words, type_key: crate::profile::ParamKey) -> Result<(), Diagnostic> {
+    let (l, d) = (words.take(b'L'), words.take(b'D'));
+    let (w, round) = match (l, d) {
+        (None, None) => return Ok(()),
+        (Some(a), Some(b)) => return Err(step.alarm(Rule::DuplicateWord, b.span, format!("{} and {}: a corner is a chamfer (L) or an arc (D), not both", a.text(), b.text()))),
+        (Some(w), None) => (w, false),
+        (None, Some(w)) => (w, true),
+    };
+    let size = step.length(w)?;
+    if size <= 0.0 {
+        return Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("{}: a chamfer or corner arc is longer than 0", w.text())));
+    }
+    if step.bypass_comp {
+        return Err(step.alarm(Rule::NotSupported, w.span, format!("{}: a chamfer or corner arc in a cycle's contour is not simulated by ncsight yet", w.text())));
+    }
+    if step.st.comp.side != 0 {
+        return Err(step.alarm(Rule::NotSupported, w.span, format!("{}: a chamfer or corner arc in nose radius compensation is not simulated by ncsight yet", w.text())));
+    }
+    if step.st.motion != crate::modal::Motion::Linear {
+        return Err(step.alarm(Rule::NotSupported, w.span, format!("{}: a chamfer or corner arc after an arc is not simulated by ncsight yet (G01 to G01 only)", w.text())));
+    }
+    // The stage adds no tip vector outside compensation: where the tool is stays where it is.
+    let tip = step.st.comp.tip;
+    if let Some(a) = step.st.comp.actual.as_mut() {
+        *a = *a + tip;
+    }
+    step.st.comp.tip = Vec3::default();
+    let from_corner = step.params.get(type_key) != 0.0;
+    step.st.comp.corner_for_next = Some(crate::modal::CornerRequest { size_mm: size, round, from_corner, span: step.span });
+    Ok(())
+}
+
+/// A move outside compensation while a chamfer waits (`plane_move` with side 0): the move held
+/// is made to the chamfer's start, the chamfer (a line, or an arc tangent to both moves), and
+/// this move waits from its end; a move held without a chamfer is made whole.
+fn corner_move(step: &mut Step, span: Span, n: Option<u32>, op: Op, seg: Seg) {
+    let plane = step.st.plane;
+    let start3 = op.start_point().unwrap_or_default();
+    let mut next_start = start3;
+    if !step.queue.is_empty() {
+        let held = step.queue[0].clone();
+        let hseg = Seg::of(&held.op, plane).expect("the queue's first record is a move in the plane");
+        let mut end = hseg.to();
+        if let Some(c) = step.st.comp.held_corner.take() {
+            let lines = matches!((hseg, seg), (Seg::Line { .. }, Seg::Line { .. }));
+            if !lines {
+                let d = step.alarm(Rule::NotSupported, span, "a chamfer or corner arc before an arc is not simulated by ncsight yet (G01 to G01 only)");
+                step.out.comp_error.get_or_insert(d);
+                return;
+            }
+            let t_of = |u1: P2, u2: P2| {
+                if c.round {
+                    // Tangent to both: D tan(half the turn) from the corner.
+                    c.size_mm * u1.cross(u2).abs() / (1.0 + u1.dot(u2))
+                } else if c.from_corner {
+                    c.size_mm
+                } else {
+                    c.size_mm / u1.plus(u2).len()
+                }
+            };
+            if let Some((a, b, arc)) = comp::chamfer_points(&hseg, &seg, &t_of, c.round.then_some(c.size_mm)) {
+                // Case 2: the chamfer cannot join the two moves.
+                let t = a.dist(hseg.to());
+                if t > hseg.from().dist(hseg.to()) + 1e-9 || t > seg.from().dist(seg.to()) + 1e-9 || !t.is_finite() {
+                    let msg = format!("{} {}: the corner needs {} mm of each move, more than a move has (help text, chamfer function, case 2)", if c.round { "D" } else { "L" }, crate::alarm::shown(c.size_mm, 4), crate::alarm::shown(t, 4));
+                    let d = step.alarm(Rule::CornerTooLarge, c.span, msg);
+                    step.out.comp_error.get_or_insert(d);
+                    return;
+                }
+                if let Err(e) = make_held(step, a) {
+                    return fail(step, e, held.span);
+                }
+                let (a3, b3) = (comp::with_local(&start3, a, plane), comp::with_local(&start3, b, plane));
+                let feed = feed_of(&held.op);
+                let link = match arc {
+                    Some((centre, ccw)) => Op::Arc { from: a3, to: b3, center: comp::with_local(&start3, centre, plane), plane, dir: if ccw { ArcDir::Ccw } else { ArcDir::Cw }, feed_mm_min: feed },
+                    None => Op::Feed { from: a3, to: b3, feed_mm_min: feed },
+                };
+                step.push_record(held.span, held.n, link);
+                note_span(step, held.span);
+                next_start = b3;
+                end = a;
+            }
+        }
+        if step.queue.is_empty() {
+            // Made above.
+        } else if let Err(e) = make_held(step, end) {
+            return fail(step, e, held.span);
+        }
+    } else if let Some(a) = step.st.comp.actual.take() {
+        next_start = a;
+    }
+    step.st.comp.held_start = next_start;
+    step.st.comp.held_startup = false;
+    step.st.comp.held_corner = step.st.comp.corner_for_next.take();
+    step.out.comp_plane_move = true;
+    step.queue.push(Record::of_block(span, n, op));
 }
 
 /// G39 (FANUC 0i-M manual, corner circular interpolation): the corner between the move held
@@ -338,6 +447,13 @@ pub(super) fn end_of_block(step: &mut Step) -> Result<(), Diagnostic> {
     if step.st.ended {
         break_off(step);
         step.st.comp.side = 0;
+        return Ok(());
+    }
+    if step.st.comp.side == 0 {
+        // A chamfer's move waits for the next block's move; anything else is made now.
+        if !step.queue.is_empty() && !step.st.comp.held_corner.is_some_and(|c| c.span == step.span) {
+            break_off(step);
+        }
         return Ok(());
     }
     if step.queue.is_empty() || step.out.comp_plane_move {

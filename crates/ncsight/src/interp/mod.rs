@@ -211,7 +211,10 @@ impl Step<'_> {
         };
         // Radius compensation: the move goes through the look-ahead stage; a move outside it
         // starts where the tool is.
-        if self.st.comp.side != 0 && !self.bypass_comp {
+        // A chamfer or corner arc (GSK980TDi L, D) holds its move in the same stage until the
+        // next move shows the corner.
+        let corner = self.st.comp.corner_for_next.is_some() || (!self.queue.is_empty() && self.st.comp.side == 0);
+        if (self.st.comp.side != 0 || corner) && !self.bypass_comp {
             return comp::take(self, span, n, op);
         }
         let op = if self.st.comp.actual.is_some() { comp::from_actual(self, span, n, op) } else { op };
@@ -1785,6 +1788,11 @@ fn emit_rotary(step: &mut Step, to_deg: [f64; 3], rapid: bool, rate_per_unit: f6
 }
 
 fn motion(step: &mut Step, words: &mut Words) -> Result<(), Diagnostic> {
+    if let Some(key) = step.profile.frame.chamfer_type {
+        if matches!(step.st.motion, Motion::Linear | Motion::ArcCw | Motion::ArcCcw) {
+            comp::corner_words(step, words, key)?;
+        }
+    }
     let rotary = if matches!(step.st.motion, Motion::Rapid | Motion::Linear) { rotary_target(step, words)? } else { None };
     let (target, _) = axis_target(step, words)?;
     let from = step.st.pos;

@@ -85,6 +85,15 @@ const CURVES: &[GDef] = &[
 
 const PARAMS: &[ParamDef] = &[
     ParamDef {
+        key: ParamKey::Number(181, Some(0)),
+        meaning: "what a chamfer's L measures: 0 = the chamfer's length (type I), 1 = the distance from the corner to each end of the chamfer (type II)",
+        unit: "bit",
+        min: 0.0,
+        max: 1.0,
+        default: 0.0,
+        source: "GSK980TDi help text, chamfer function (the bit named; which value is which type inferred); default assumed",
+    },
+    ParamDef {
         key: ParamKey::Number(18, Some(6)),
         meaning: "feed hold during a G92 thread: 0 = pull out at once and return to the start, 1 = finish the thread with its pull-out, then stop",
         unit: "bit",

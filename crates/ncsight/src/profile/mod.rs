@@ -498,6 +498,9 @@ pub struct FrameRules {
     pub parameter_entry: Option<ParamEntry>,
     /// G12.1 under feed per revolution (G99) is an alarm (GSK980TDi help text, G12.1 note 3).
     pub polar_refuses_per_rev: bool,
+    /// L (chamfer) and D (corner arc) in G01/G02/G03 blocks, and the bit that says what L
+    /// measures (GSK980TDi help text, chamfer function: No.181.0).
+    pub chamfer_type: Option<ParamKey>,
     /// Radius compensation looks ahead across this many blocks without a move in the plane
     /// before the held move ends perpendicular (FANUC: 1, as its manuals draw it).
     pub comp_lookahead: u8,
@@ -566,6 +569,7 @@ impl FrameRules {
         comp_lookahead: 1,
         comp_idle_alarm: None,
         polar_refuses_per_rev: false,
+        chamfer_type: None,
         rough_cancels_comp: false,
         box_by_tip: true,
         transform_keys: TransformKeys::NONE,
@@ -581,6 +585,7 @@ impl FrameRules {
         comp_lookahead: 6,
         comp_idle_alarm: Some(7),
         polar_refuses_per_rev: true,
+        chamfer_type: Some(ParamKey::Number(181, Some(0))),
         rough_cancels_comp: true,
         box_by_tip: false,
         transform_keys: TransformKeys::NONE,
