@@ -52,10 +52,17 @@ pub(super) fn command(step: &mut Step, side: i8, d: Option<u32>, span: Span, arc
             // FANUC 034; GSK980TDi help text, G40-G42 note 2.
             return Err(step.alarm(Rule::CompStartupArc, span, "G40: compensation is cancelled in a G00 or G01 block only, not in an arc"));
         }
-        break_off(step);
+        // G40 with compensation off leaves a chamfer's held move for the block's move.
+        if c.side != 0 {
+            break_off(step);
+        }
         step.st.comp.side = 0;
         step.st.comp.started = false;
         return Ok(());
+    }
+    // Compensation starting after a chamfer's move: that move is made first, with no corner.
+    if c.side == 0 && !step.queue.is_empty() {
+        break_off(step);
     }
     let lathe = step.profile.is_lathe();
     let number = if lathe { step.st.frame.offset_number } else { d.unwrap_or(c.d) };
@@ -291,7 +298,7 @@ pub(super) fn break_off(step: &mut Step) {
     step.st.comp.round_corner = false;
     if let Some(c) = step.st.comp.held_corner.take() {
         let what = if c.round { "D (corner arc)" } else { "L (chamfer)" };
-        step.warn(Rule::TextIgnored, c.span, format!("{what}: the next block makes no G01, G02 or G03 move: no corner is made"));
+        step.warn(Rule::TextIgnored, c.span, format!("{what}: no G01 move follows it: no corner is made"));
     }
     if step.queue.is_empty() {
         return;
@@ -339,7 +346,7 @@ pub(super) fn corner_words(step: &mut Step, words: &mut super::Words, type_key: 
         return Err(step.alarm(Rule::NotSupported, w.span, format!("{}: a chamfer or corner arc in nose radius compensation is not simulated by ncsight yet", w.text())));
     }
     if step.st.motion != crate::modal::Motion::Linear {
-        return Err(step.alarm(Rule::NotSupported, w.span, format!("{}: a chamfer or corner arc after an arc is not simulated by ncsight yet (G01 to G01 only)", w.text())));
+        return Err(step.alarm(Rule::NotSupported, w.span, format!("{}: a chamfer or corner arc at the end of an arc (G02/G03) is not simulated by ncsight yet (G01 to G01 only)", w.text())));
     }
     // The stage adds no tip vector outside compensation: where the tool is stays where it is.
     let tip = step.st.comp.tip;
@@ -363,10 +370,17 @@ fn corner_move(step: &mut Step, span: Span, n: Option<u32>, op: Op, seg: Seg) {
         let held = step.queue[0].clone();
         let hseg = Seg::of(&held.op, plane).expect("the queue's first record is a move in the plane");
         let mut end = hseg.to();
-        if let Some(c) = step.st.comp.held_corner.take() {
+        let mut corner = step.st.comp.held_corner.take();
+        if let (Some(c), Op::Rapid { .. }) = (corner, &op) {
+            // The help text joins G01, G02 and G03 moves: a G00 next gets no corner.
+            let what = if c.round { "D (corner arc)" } else { "L (chamfer)" };
+            step.warn(Rule::TextIgnored, c.span, format!("{what}: the next move is a G00: no corner is made"));
+            corner = None;
+        }
+        if let Some(c) = corner {
             let lines = matches!((hseg, seg), (Seg::Line { .. }, Seg::Line { .. }));
             if !lines {
-                let d = step.alarm(Rule::NotSupported, span, "a chamfer or corner arc before an arc is not simulated by ncsight yet (G01 to G01 only)");
+                let d = step.alarm(Rule::NotSupported, span, "a chamfer or corner arc next to an arc (G02/G03) is not simulated by ncsight yet (G01 to G01 only)");
                 step.out.comp_error.get_or_insert(d);
                 return;
             }
@@ -381,14 +395,19 @@ fn corner_move(step: &mut Step, span: Span, n: Option<u32>, op: Op, seg: Seg) {
                 }
             };
             if let Some((a, b, arc)) = comp::chamfer_points(&hseg, &seg, &t_of, c.round.then_some(c.size_mm)) {
-                // Case 2: the chamfer cannot join the two moves.
+                // Case 2: the chamfer cannot join the two moves (the held move starts where an
+                // earlier chamfer ended, if one did).
                 let t = a.dist(hseg.to());
-                if t > hseg.from().dist(hseg.to()) + 1e-9 || t > seg.from().dist(seg.to()) + 1e-9 || !t.is_finite() {
-                    let msg = format!("{} {}: the corner needs {} mm of each move, more than a move has (help text, chamfer function, case 2)", if c.round { "D" } else { "L" }, crate::alarm::shown(c.size_mm, 4), crate::alarm::shown(t, 4));
+                let held_length = comp::local(&step.st.comp.held_start, plane).dist(hseg.to());
+                if !t.is_finite() || t > held_length + 1e-9 || t > seg.from().dist(seg.to()) + 1e-9 {
+                    let needs = if t.is_finite() { format!("needs {} mm of each move, more than a move has", crate::alarm::shown(t, 4)) } else { "cannot join two moves that turn straight back".to_string() };
+                    let msg = format!("{} {}: the corner {needs} (help text, chamfer function, case 2)", if c.round { "D" } else { "L" }, crate::alarm::shown(c.size_mm, 4));
                     let d = step.alarm(Rule::CornerTooLarge, c.span, msg);
                     step.out.comp_error.get_or_insert(d);
                     return;
                 }
+                // The held move, its chamfer, then what waited behind the move (an S, an M code).
+                let waiting: Vec<Record> = step.queue.drain(1..).collect();
                 if let Err(e) = make_held(step, a) {
                     return fail(step, e, held.span);
                 }
@@ -400,6 +419,11 @@ fn corner_move(step: &mut Step, span: Span, n: Option<u32>, op: Op, seg: Seg) {
                 };
                 step.push_record(held.span, held.n, link);
                 note_span(step, held.span);
+                for rec in waiting {
+                    note_span(step, rec.span);
+                    let op = at_point(step, rec.op, b);
+                    step.push_record(rec.span, rec.n, op);
+                }
                 next_start = b3;
                 end = a;
             }

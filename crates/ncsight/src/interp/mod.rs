@@ -923,6 +923,13 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
     // Radius compensation acts on plain moves only: a block with a cycle, a thread, a reference
     // return, a coordinate change or a T word runs uncompensated; the compensated path ends
     // before it (GSK980TDi help text, G40-G42 notes 5-6; FANUC threading likewise, inferred).
+    // A chamfer's held move is made before the plane or the C-axis interpolation changes.
+    if step.st.comp.side == 0
+        && !step.queue.is_empty()
+        && last_of.iter().any(|(_, _, g)| matches!(g.function, GFn::PolarInterpolation(_) | GFn::CylindricalInterpolation | GFn::PlaneXY | GFn::PlaneZX | GFn::PlaneYZ))
+    {
+        comp::break_off(step);
+    }
     if step.st.comp.side != 0 || !step.queue.is_empty() {
         let suspends = |f: GFn| {
             matches!(
@@ -1499,6 +1506,11 @@ fn codes_css(last_of: &[(Group, &Word, &GDef)]) -> Option<bool> {
 
 /// 11. M codes that act after the motion, then the check that every word was used.
 fn finish_block(step: &mut Step, words: &Words, codes: &Codes, after: Vec<(&Word, MFn)>, switches: Switches) -> Result<(), Diagnostic> {
+    // An L or D whose block made no move in the plane has no corner to make.
+    if let Some(c) = step.st.comp.corner_for_next.take() {
+        let what = if c.round { "D (corner arc)" } else { "L (chamfer)" };
+        step.warn(Rule::TextIgnored, c.span, format!("{what}: the block makes no move in the plane: no corner is made"));
+    }
     // A block worked out in programmed coordinates ends where its records took the tool.
     if let Some(t) = step.carry.take() {
         step.st.pos = transform::apply(&t, step.st.pos);
