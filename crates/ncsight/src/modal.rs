@@ -266,6 +266,13 @@ pub struct CornerRequest {
     pub span: crate::source::Span,
 }
 
+impl CornerRequest {
+    /// The word that asked, as a message names it.
+    pub fn word(&self) -> &'static str {
+        if self.round { "D (corner arc)" } else { "L (chamfer)" }
+    }
+}
+
 /// Spindle rotation commanded by M03/M04/M05.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum SpindleDir {

@@ -188,7 +188,7 @@ fn plane_move(step: &mut Step, span: Span, n: Option<u32>, op: Op, seg: Seg) {
         let turn = hseg.tangent(true).cross(seg.tangent(false));
         if turn * side < -1e-12 {
             let (e, s) = (p.plus(comp::vector(&hseg, true, side, r)), p.plus(comp::vector(&seg, false, side, r)));
-            if let Err(err) = make_held(step, e) {
+            if let Err(err) = make_held(step, e, None) {
                 return fail(step, err, held.span);
             }
             let tip = step.st.comp.tip;
@@ -212,7 +212,7 @@ fn plane_move(step: &mut Step, span: Span, n: Option<u32>, op: Op, seg: Seg) {
             Err(e) => return fail(step, e, span),
         }
     };
-    if let Err(e) = make_held(step, corner.first_end) {
+    if let Err(e) = make_held(step, corner.first_end, None) {
         return fail(step, e, held.span);
     }
     // The moves around an outer corner, at the next move's rate.
@@ -249,9 +249,10 @@ fn feed_of(op: &Op) -> f64 {
 }
 
 /// Make the held move, compensated from its start to `end` (nose centre in the plane), then
-/// the records that waited behind it, there. The queue is left empty. Returns where the nose
-/// centre ends (the waiting moves along the normal axis included).
-fn make_held(step: &mut Step, end: P2) -> Result<Vec3, CompError> {
+/// `then` (a chamfer of the held move's block, and where it ends in the plane), then the
+/// records that waited behind it, where the tool is by then. The queue is left empty. Returns
+/// where the nose centre ends (the waiting moves along the normal axis included).
+fn make_held(step: &mut Step, end: P2, then: Option<(Op, P2)>) -> Result<Vec3, CompError> {
     let plane = step.st.plane;
     let (side, r) = (step.st.comp.side as f64, step.st.comp.radius_mm);
     let queue = std::mem::take(step.queue);
@@ -275,10 +276,15 @@ fn make_held(step: &mut Step, end: P2) -> Result<Vec3, CompError> {
     }
     step.push_record(held.span, held.n, made);
     note_span(step, held.span);
-    let mut last = end3;
+    let (mut last, mut at) = (end3, end);
+    if let Some((link, link_end)) = then {
+        last = link.end_point().map_or(last, |e| e - tip);
+        at = link_end;
+        step.push_record(held.span, held.n, link);
+    }
     for rec in rest {
         note_span(step, rec.span);
-        let op = at_point(step, rec.op, end);
+        let op = at_point(step, rec.op, at);
         if let Some(e) = op.end_point() {
             last = e - tip;
         }
@@ -297,8 +303,7 @@ pub(super) fn break_off(step: &mut Step) {
     // A G39 before the break has no corner left to round.
     step.st.comp.round_corner = false;
     if let Some(c) = step.st.comp.held_corner.take() {
-        let what = if c.round { "D (corner arc)" } else { "L (chamfer)" };
-        step.warn(Rule::TextIgnored, c.span, format!("{what}: no G01 move follows it: no corner is made"));
+        step.warn(Rule::TextIgnored, c.span, format!("{}: no G01 move follows it: no corner is made", c.word()));
     }
     if step.queue.is_empty() {
         return;
@@ -308,7 +313,7 @@ pub(super) fn break_off(step: &mut Step) {
     let hseg = Seg::of(&held.op, plane).expect("the queue's first record is a move in the plane");
     let (side, r) = (step.st.comp.side as f64, step.st.comp.radius_mm);
     let end = hseg.to().plus(comp::vector(&hseg, true, side, r));
-    match make_held(step, end) {
+    match make_held(step, end, None) {
         Ok(last) => step.st.comp.actual = Some(last),
         Err(e) => {
             // The held move cannot be made: what waited behind it still happens, where it was
@@ -370,11 +375,11 @@ fn corner_move(step: &mut Step, span: Span, n: Option<u32>, op: Op, seg: Seg) {
         let held = step.queue[0].clone();
         let hseg = Seg::of(&held.op, plane).expect("the queue's first record is a move in the plane");
         let mut end = hseg.to();
+        let mut chamfer = None;
         let mut corner = step.st.comp.held_corner.take();
         if let (Some(c), Op::Rapid { .. }) = (corner, &op) {
             // The help text joins G01, G02 and G03 moves: a G00 next gets no corner.
-            let what = if c.round { "D (corner arc)" } else { "L (chamfer)" };
-            step.warn(Rule::TextIgnored, c.span, format!("{what}: the next move is a G00: no corner is made"));
+            step.warn(Rule::TextIgnored, c.span, format!("{}: the next move is a G00: no corner is made", c.word()));
             corner = None;
         }
         if let Some(c) = corner {
@@ -401,36 +406,24 @@ fn corner_move(step: &mut Step, span: Span, n: Option<u32>, op: Op, seg: Seg) {
                 let held_length = comp::local(&step.st.comp.held_start, plane).dist(hseg.to());
                 if !t.is_finite() || t > held_length + 1e-9 || t > seg.from().dist(seg.to()) + 1e-9 {
                     let needs = if t.is_finite() { format!("needs {} mm of each move, more than a move has", crate::alarm::shown(t, 4)) } else { "cannot join two moves that turn straight back".to_string() };
-                    let msg = format!("{} {}: the corner {needs} (help text, chamfer function, case 2)", if c.round { "D" } else { "L" }, crate::alarm::shown(c.size_mm, 4));
+                    let msg = format!("{} {}: the corner {needs} (help text, chamfer function, case 2)", &c.word()[..1], crate::alarm::shown(c.size_mm, 4));
                     let d = step.alarm(Rule::CornerTooLarge, c.span, msg);
                     step.out.comp_error.get_or_insert(d);
                     return;
                 }
                 // The held move, its chamfer, then what waited behind the move (an S, an M code).
-                let waiting: Vec<Record> = step.queue.drain(1..).collect();
-                if let Err(e) = make_held(step, a) {
-                    return fail(step, e, held.span);
-                }
                 let (a3, b3) = (comp::with_local(&start3, a, plane), comp::with_local(&start3, b, plane));
                 let feed = feed_of(&held.op);
                 let link = match arc {
                     Some((centre, ccw)) => Op::Arc { from: a3, to: b3, center: comp::with_local(&start3, centre, plane), plane, dir: if ccw { ArcDir::Ccw } else { ArcDir::Cw }, feed_mm_min: feed },
                     None => Op::Feed { from: a3, to: b3, feed_mm_min: feed },
                 };
-                step.push_record(held.span, held.n, link);
-                note_span(step, held.span);
-                for rec in waiting {
-                    note_span(step, rec.span);
-                    let op = at_point(step, rec.op, b);
-                    step.push_record(rec.span, rec.n, op);
-                }
+                chamfer = Some((link, b));
                 next_start = b3;
                 end = a;
             }
         }
-        if step.queue.is_empty() {
-            // Made above.
-        } else if let Err(e) = make_held(step, end) {
+        if let Err(e) = make_held(step, end, chamfer) {
             return fail(step, e, held.span);
         }
     } else if let Some(a) = step.st.comp.actual.take() {

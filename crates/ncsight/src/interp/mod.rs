@@ -1508,8 +1508,7 @@ fn codes_css(last_of: &[(Group, &Word, &GDef)]) -> Option<bool> {
 fn finish_block(step: &mut Step, words: &Words, codes: &Codes, after: Vec<(&Word, MFn)>, switches: Switches) -> Result<(), Diagnostic> {
     // An L or D whose block made no move in the plane has no corner to make.
     if let Some(c) = step.st.comp.corner_for_next.take() {
-        let what = if c.round { "D (corner arc)" } else { "L (chamfer)" };
-        step.warn(Rule::TextIgnored, c.span, format!("{what}: the block makes no move in the plane: no corner is made"));
+        step.warn(Rule::TextIgnored, c.span, format!("{}: the block makes no move in the plane: no corner is made", c.word()));
     }
     // A block worked out in programmed coordinates ends where its records took the tool.
     if let Some(t) = step.carry.take() {
