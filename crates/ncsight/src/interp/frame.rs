@@ -366,7 +366,7 @@ pub(super) fn from_reference(step: &mut Step, words: &mut Words, span: Span) -> 
 /// 2), the FANUC 0i manual's example and GSK note 1. ncsight keeps one value for an axis
 /// parameter: P names the axis and the value is the parameter's for every axis (docs).
 pub(super) fn data_line(step: &mut Step, block: &crate::read::Block, mode: DataInput) -> Result<(), Diagnostic> {
-    let ends = block.words.iter().any(|w| w.letter == b'G' && !w.expr && w.is_code() && step.profile.g_code(w.code().0, w.code().1).is_some_and(|g| g.function == crate::profile::GFn::DataSettingEnd));
+    let ends = super::codes_of(step.profile, &block.words).any(|g| g.function == crate::profile::GFn::DataSettingEnd);
     if ends {
         step.st.data_input = None;
         return Ok(());

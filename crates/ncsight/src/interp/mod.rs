@@ -704,7 +704,7 @@ fn collect<'w>(
     // G32.1 in the block, or in force.
     let rigid_block = || {
         let rigid = GFn::Thread(crate::profile::ThreadCmd::Rigid);
-        let motion_code = all.iter().filter(|w| w.letter == b'G' && !w.expr && w.is_code()).filter_map(|w| profile.g_code(w.code().0, w.code().1)).filter(|g| g.group == Group::Motion).last();
+        let motion_code = codes_of(profile, all).filter(|g| g.group == Group::Motion).last();
         match motion_code {
             Some(g) => g.function == rigid,
             None => step.st.motion == Motion::Thread(crate::profile::ThreadCmd::Rigid),
@@ -820,14 +820,14 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
     // The block's own G16/G15, G90/G91 and plane count: its words are read in its modes.
     let polar;
     let (mut incremental, mut plane, mut polar_on) = (step.st.incremental, step.st.plane, step.st.transform.polar);
-    for w in block.words.iter().filter(|w| w.letter == b'G' && !w.expr && w.is_code()) {
-        match step.profile.g_code(w.code().0, w.code().1).map(|g| g.function) {
-            Some(GFn::Absolute) => incremental = false,
-            Some(GFn::Incremental) => incremental = true,
-            Some(GFn::PlaneXY) => plane = Plane::XY,
-            Some(GFn::PlaneZX) => plane = Plane::ZX,
-            Some(GFn::PlaneYZ) => plane = Plane::YZ,
-            Some(GFn::PolarCoordinates(on)) => polar_on = on,
+    for g in codes_of(step.profile, &block.words) {
+        match g.function {
+            GFn::Absolute => incremental = false,
+            GFn::Incremental => incremental = true,
+            GFn::PlaneXY => plane = Plane::XY,
+            GFn::PlaneZX => plane = Plane::ZX,
+            GFn::PlaneYZ => plane = Plane::YZ,
+            GFn::PolarCoordinates(on) => polar_on = on,
             _ => {}
         }
     }
@@ -1482,16 +1482,18 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
     finish_block(step, &words, &codes, after, switches)
 }
 
+/// The G codes of the profile a block's words name, in the order written (words that are not a
+/// code of the table are left for the block's reading to judge).
+pub(super) fn codes_of<'a>(profile: &'a Profile, words: &'a [Word]) -> impl Iterator<Item = &'static GDef> + 'a {
+    words.iter().filter(|w| w.letter == b'G' && !w.expr && w.is_code()).filter_map(move |w| profile.g_code(w.code().0, w.code().1))
+}
+
 /// Whether a block's plane words are polar coordinates under G16: not when the block ends
 /// G16, sets or ends another transform, or has a one-shot code (G04's X is a time; the others'
 /// words are not a point of the path).
 fn polar_reads(step: &Step, block: &Block) -> bool {
-    block.words.iter().filter(|w| w.letter == b'G' && !w.expr && w.is_code()).all(|w| {
-        let (major, minor) = w.code();
-        !matches!(
-            step.profile.g_code(major, minor).map(|g| (g.group, g.function)),
-            Some((_, GFn::PolarCoordinates(false) | GFn::Rotation(_) | GFn::MirrorImage(_) | GFn::Scaling(_) | GFn::StrokeCheck(_))) | Some((Group::NonModal, _))
-        )
+    codes_of(step.profile, &block.words).all(|g| {
+        !matches!((g.group, g.function), (_, GFn::PolarCoordinates(false) | GFn::Rotation(_) | GFn::MirrorImage(_) | GFn::Scaling(_) | GFn::StrokeCheck(_)) | (Group::NonModal, _))
     })
 }
 

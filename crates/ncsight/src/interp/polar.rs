@@ -51,7 +51,7 @@ pub(super) fn allowed(f: GFn) -> bool {
 /// cancel, `G07.1 C0`) keeps its C.
 pub(super) fn plane_words(step: &mut Step, all: &[Word]) -> Result<Vec<Word>, Diagnostic> {
     let Some(mode) = step.st.polar_interp else { return Ok(all.to_vec()) };
-    let functions: Vec<GFn> = all.iter().filter(|w| w.letter == b'G' && !w.expr && w.is_code()).filter_map(|w| step.profile.g_code(w.code().0, w.code().1)).map(|g| g.function).collect();
+    let functions: Vec<GFn> = super::codes_of(step.profile, all).map(|g| g.function).collect();
     if functions.contains(&GFn::CylindricalInterpolation) {
         return Ok(all.to_vec());
     }
