@@ -120,8 +120,16 @@ rules! {
     // message (FANUC 0 numbered them per axis; docs/setup.md).
     OvertravelPlus => Alarm, "NCS-E77", Some("OT0500"), "+ OVERTRAVEL (SOFT 1)";
     OvertravelMinus => Alarm, "NCS-E78", Some("OT0501"), "- OVERTRAVEL (SOFT 1)";
-    // GSK980TDi chamfer function, case 2 (its alarm number not at hand).
-    CornerTooLarge => Alarm, "NCS-E89", None, "CHAMFER OR CORNER TOO LARGE FOR THE MOVES";
+    // A chamfer or corner arc larger than its moves (GSK980TDi chamfer function, case 2; its
+    // number not at hand) and FANUC's chamfer and corner R (,C ,R) and direct drawing
+    // dimension alarms (numbers and texts from a FANUC 0i alarm list; docs/commands/drawing.md).
+    CornerTooLarge => Alarm, "NCS-E89", Some("PS0055"), "MISSING MOVE VALUE IN CHF/CNR";
+    CornerNoMove => Alarm, "NCS-E90", Some("PS0051"), "MISSING MOVE AFTER CNR/CHF";
+    CornerNotLinear => Alarm, "NCS-E91", Some("PS0052"), "CODE IS NOT G01 AFTER CHF/CNR";
+    DrawingEndMissing => Alarm, "NCS-E92", Some("PS0056"), "NO END POINT & ANGLE IN CHF/CNR";
+    DrawingNoSolution => Alarm, "NCS-E93", Some("PS0057"), "NO SOLUTION OF BLOCK END";
+    DrawingEndNotFound => Alarm, "NCS-E94", Some("PS0058"), "END POINT NOT FOUND";
+    IllegalPlane => Alarm, "NCS-E95", Some("PS0212"), "ILLEGAL PLANE SELECT";
     // G29 with an axis no G28/G30 has given an intermediate point (no controller text found).
     NoIntermediatePoint => Alarm, "NCS-E88", None, "NO INTERMEDIATE POINT FOR G29";
     // FANUC 0-T variable lead (G34): the number and text as recalled (not verified).

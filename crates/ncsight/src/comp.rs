@@ -174,6 +174,59 @@ pub fn chamfer_points(first: &Seg, second: &Seg, t_of: &dyn Fn(P2, P2) -> f64, r
 /// Two moves whose directions differ by less than this (radians) meet without a corner.
 pub const TANGENT_RAD: f64 = 1e-4;
 
+/// Lines as a drawing dimensions them (GSK980TDi help text, angle programming; FANUC 0-T direct
+/// drawing dimension programming): an angle from the plane's first axis toward its second
+/// (counter-clockwise: from +Z toward +X in G18), in degrees.
+pub fn direction(angle_deg: f64) -> P2 {
+    let r = angle_deg.to_radians();
+    P2::new(r.cos(), r.sin())
+}
+
+/// How far from parallel a line must be to meet the coordinate or the line it is given with:
+/// 1 degree (GSK980TDi help text, angle programming notes 2-5).
+pub const DRAWING_TOLERANCE_DEG: f64 = 1.0;
+
+/// Why a line given by its angle has no end.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum DrawingError {
+    /// The line runs within the tolerance of parallel to the axis whose coordinate is given.
+    AlongAxis,
+    /// The two lines are within the tolerance of parallel.
+    Parallel,
+}
+
+/// Angle between two directions, as lines (0..=90 degrees).
+fn line_angle_deg(u: P2, v: P2) -> f64 {
+    u.cross(v).abs().atan2(u.dot(v).abs()).to_degrees()
+}
+
+/// The end of the line through `start` at `angle_deg` where its first-axis coordinate is `a`
+/// or its second-axis one is `b` (one of the two; the line runs either way along its angle).
+pub fn end_by_angle(start: P2, angle_deg: f64, a: Option<f64>, b: Option<f64>) -> Result<P2, DrawingError> {
+    let u = direction(angle_deg);
+    let (axis, along, to) = match (a, b) {
+        (Some(a), _) => (P2::new(0.0, 1.0), u.a, a - start.a),
+        (None, Some(b)) => (P2::new(1.0, 0.0), u.b, b - start.b),
+        (None, None) => return Ok(start),
+    };
+    // Within a degree of the other axis: the coordinate given is (nearly) never reached.
+    if line_angle_deg(u, axis) < DRAWING_TOLERANCE_DEG {
+        return Err(DrawingError::AlongAxis);
+    }
+    Ok(start.plus(u.scale(to / along)))
+}
+
+/// Where the line from `start` at `first_deg` meets the line through `end` at `second_deg`.
+pub fn meet(start: P2, first_deg: f64, end: P2, second_deg: f64) -> Result<P2, DrawingError> {
+    let (u, v) = (direction(first_deg), direction(second_deg));
+    if line_angle_deg(u, v) < DRAWING_TOLERANCE_DEG {
+        return Err(DrawingError::Parallel);
+    }
+    // start + s u = end + t v: s = ((end - start) x v) / (u x v).
+    let s = end.minus(start).cross(v) / u.cross(v);
+    Ok(start.plus(u.scale(s)))
+}
+
 /// The offset vector of length `r` on `side` (+1 left: G41, -1 right: G42) of a move's start or
 /// end.
 pub fn vector(seg: &Seg, at_end: bool, side: f64, r: f64) -> P2 {

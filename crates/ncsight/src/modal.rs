@@ -249,13 +249,32 @@ pub struct CompState {
     pub corner_for_next: Option<CornerRequest>,
     /// The one asked for at the end of the move held in the queue.
     pub held_corner: Option<CornerRequest>,
+    /// A line given by its angle alone, held in the queue until the next block's line shows
+    /// where it ends.
+    pub angle_line: Option<AngleLine>,
 }
 
-/// A chamfer (L) or a corner arc (D) between a block's move and the next (GSK980TDi help text,
-/// chamfer function).
+/// A G01 (or G00) line given by its angle alone (FANUC `,A1`; GSK `Q`): it ends where it meets
+/// the next block's line, which gives its end point and its angle (GSK980TDi help text, angle
+/// programming note 6).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct AngleLine {
+    pub angle_deg: f64,
+    /// Where it starts (programme coordinates).
+    pub from: Vec3,
+    /// The block that gave it.
+    pub span: crate::source::Span,
+    /// Blocks without a move since (a G04, an M, S or T block: at most one, note 7).
+    pub between: u8,
+}
+
+/// A chamfer or a corner arc between a block's move and the next (GSK980TDi help text, chamfer
+/// function: L, D; FANUC 0-T: ,C ,R).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct CornerRequest {
-    /// The chamfer's L, or the corner arc's radius D, mm.
+    /// The address that asked (as the reader stores it: `b'c'` for `,C`).
+    pub letter: u8,
+    /// The chamfer's size, or the corner arc's radius, mm.
     pub size_mm: f64,
     /// D: a corner arc; else a chamfer.
     pub round: bool,
@@ -268,8 +287,8 @@ pub struct CornerRequest {
 
 impl CornerRequest {
     /// The word that asked, as a message names it.
-    pub fn word(&self) -> &'static str {
-        if self.round { "D (corner arc)" } else { "L (chamfer)" }
+    pub fn word(&self) -> String {
+        format!("{} ({})", crate::read::address_name(self.letter), if self.round { "corner arc" } else { "chamfer" })
     }
 }
 

@@ -143,7 +143,7 @@ fn a_colon_is_the_iso_programme_number() {
 /// An alarm in a contour block that G73 and G70 both read is reported once by `check`.
 #[test]
 fn a_contour_alarm_is_reported_once() {
-    let text = "G99 G97 S800 M03\nG0 X42. Z2.\nG73 U3. W0. R3\nG73 P10 Q20 U0.4 W0.1 F0.2\nN10 G0 X20. Z2.\nG1 Z-20. Q5\nN20 X42. Z-25.\nG70 P10 Q20\nG0 X100. Z100.\nM30\n";
+    let text = "G99 G97 S800 M03\nG0 X42. Z2.\nG73 U3. W0. R3\nG73 P10 Q20 U0.4 W0.1 F0.2\nN10 G0 X20. Z2.\nG1 Z-20. K5\nN20 X42. Z-25.\nG70 P10 Q20\nG0 X100. Z100.\nM30\n";
     let params = common::params("gsk980tdi", &[]);
     let events = ncsight::run_text(params, ncsight::Switches::default(), ncsight::Mode::Check, text.as_bytes());
     let alarms: Vec<_> = events.iter().filter_map(|e| if let ncsight::Event::Diagnostic(d) = e { d.is_alarm().then_some(d) } else { None }).collect();

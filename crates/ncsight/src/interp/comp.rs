@@ -13,6 +13,7 @@ use super::Step;
 use crate::alarm::{Diagnostic, Rule};
 use crate::comp::{self, CompError, Seg, P2};
 use crate::motion::{ArcDir, Op, Record, Vec3};
+use crate::read;
 use crate::source::Span;
 
 /// The alarm rule of a compensation error.
@@ -300,10 +301,19 @@ fn make_held(step: &mut Step, end: P2, then: Option<(Op, P2)>) -> Result<Vec3, C
 /// block compensation does not act in, the look-ahead run out), and the tool stays there until
 /// the next move.
 pub(super) fn break_off(step: &mut Step) {
+    // A line of an angle alone has no end yet: this block was to give it.
+    if step.st.comp.angle_line.is_some() {
+        return super::drawing::refuse(step);
+    }
     // A G39 before the break has no corner left to round.
     step.st.comp.round_corner = false;
     if let Some(c) = step.st.comp.held_corner.take() {
-        step.warn(Rule::TextIgnored, c.span, format!("{}: no G01 move follows it: no corner is made", c.word()));
+        if step.profile.frame.drawing.is_some_and(|d| d.corner_needs_g01) {
+            let d = step.alarm(Rule::CornerNoMove, step.span, format!("the block after {} makes no G01 move: the corner has no second move to join (FANUC alarm 051)", c.word()));
+            step.out.comp_error.get_or_insert(d);
+        } else {
+            step.warn(Rule::TextIgnored, c.span, format!("{}: no G01 move follows it: no corner is made", c.word()));
+        }
     }
     if step.queue.is_empty() {
         return;
@@ -329,14 +339,18 @@ pub(super) fn break_off(step: &mut Step) {
     step.st.comp.idle_blocks = 0;
 }
 
-/// L (chamfer) or D (corner arc) in a G01/G02/G03 block (GSK980TDi help text, chamfer
-/// function): asked for the corner between this block's move and the next. ncsight makes it
-/// between two straight moves (G01 to G01); with an arc on either side it is not simulated yet.
-pub(super) fn corner_words(step: &mut Step, words: &mut super::Words, type_key: crate::profile::ParamKey) -> Result<(), Diagnostic> {
-    let (l, d) = (words.take(b'L'), words.take(b'D'));
+/// A chamfer or corner arc asked for in a G01/G02/G03 block (GSK980TDi help text, chamfer
+/// function: L, D; FANUC 0-T direct drawing dimension programming: ,C ,R): the corner between
+/// this block's move and the next. ncsight makes it between two straight moves (G01 to G01);
+/// with an arc on either side it is not simulated yet.
+pub(super) fn corner_words(step: &mut Step, words: &mut super::Words, rules: crate::profile::DrawingRules) -> Result<(), Diagnostic> {
+    let (l, d) = (words.take(rules.chamfer), words.take(rules.round));
     let (w, round) = match (l, d) {
         (None, None) => return Ok(()),
-        (Some(a), Some(b)) => return Err(step.alarm(Rule::DuplicateWord, b.span, format!("{} and {}: a corner is a chamfer (L) or an arc (D), not both", a.text(), b.text()))),
+        (Some(a), Some(b)) => {
+            // FANUC alarm 053 is for two of I, K, R; here: one corner, one word (inferred).
+            return Err(step.alarm(Rule::DuplicateWord, b.span, format!("{} and {}: a corner is a chamfer ({}) or an arc ({}), not both", a.text(), b.text(), read::address_name(rules.chamfer), read::address_name(rules.round))));
+        }
         (Some(w), None) => (w, false),
         (None, Some(w)) => (w, true),
     };
@@ -359,8 +373,8 @@ pub(super) fn corner_words(step: &mut Step, words: &mut super::Words, type_key: 
         *a = *a + tip;
     }
     step.st.comp.tip = Vec3::default();
-    let from_corner = step.params.get(type_key) != 0.0;
-    step.st.comp.corner_for_next = Some(crate::modal::CornerRequest { size_mm: size, round, from_corner, span: step.span });
+    let from_corner = rules.chamfer_type.is_none_or(|key| step.params.get(key) != 0.0);
+    step.st.comp.corner_for_next = Some(crate::modal::CornerRequest { letter: w.letter, size_mm: size, round, from_corner, span: step.span });
     Ok(())
 }
 
@@ -368,6 +382,9 @@ pub(super) fn corner_words(step: &mut Step, words: &mut super::Words, type_key: 
 /// is made to the chamfer's start, the chamfer (a line, or an arc tangent to both moves), and
 /// this move waits from its end; a move held without a chamfer is made whole.
 fn corner_move(step: &mut Step, span: Span, n: Option<u32>, op: Op, seg: Seg) {
+    if step.st.comp.angle_line.is_some() {
+        return super::drawing::refuse(step);
+    }
     let plane = step.st.plane;
     let start3 = op.start_point().unwrap_or_default();
     let mut next_start = start3;
@@ -377,6 +394,13 @@ fn corner_move(step: &mut Step, span: Span, n: Option<u32>, op: Op, seg: Seg) {
         let mut end = hseg.to();
         let mut chamfer = None;
         let mut corner = step.st.comp.held_corner.take();
+        let strict = step.profile.frame.drawing.is_some_and(|d| d.corner_needs_g01);
+        if let (Some(c), true) = (corner, strict && !matches!(op, Op::Feed { .. })) {
+            // FANUC alarm 052: the block after a chamfer or corner R is a G01.
+            let d = step.alarm(Rule::CornerNotLinear, span, format!("{} asks for a corner with a G01 move: this block's move is a {} (FANUC alarm 052)", c.word(), if matches!(op, Op::Rapid { .. }) { "G00" } else { "G02/G03" }));
+            step.out.comp_error.get_or_insert(d);
+            return;
+        }
         if let (Some(c), Op::Rapid { .. }) = (corner, &op) {
             // The help text joins G01, G02 and G03 moves: a G00 next gets no corner.
             step.warn(Rule::TextIgnored, c.span, format!("{}: the next move is a G00: no corner is made", c.word()));
@@ -406,7 +430,7 @@ fn corner_move(step: &mut Step, span: Span, n: Option<u32>, op: Op, seg: Seg) {
                 let held_length = comp::local(&step.st.comp.held_start, plane).dist(hseg.to());
                 if !t.is_finite() || t > held_length + 1e-9 || t > seg.from().dist(seg.to()) + 1e-9 {
                     let needs = if t.is_finite() { format!("needs {} mm of each move, more than a move has", crate::alarm::shown(t, 4)) } else { "cannot join two moves that turn straight back".to_string() };
-                    let msg = format!("{} {}: the corner {needs} (help text, chamfer function, case 2)", &c.word()[..1], crate::alarm::shown(c.size_mm, 4));
+                    let msg = format!("{}{}: the corner {needs} (GSK980TDi help text, chamfer function, case 2; FANUC alarm 055)", read::address_name(c.letter), crate::alarm::shown(c.size_mm, 4));
                     let d = step.alarm(Rule::CornerTooLarge, c.span, msg);
                     step.out.comp_error.get_or_insert(d);
                     return;
@@ -465,6 +489,9 @@ pub(super) fn end_of_block(step: &mut Step) -> Result<(), Diagnostic> {
         break_off(step);
         step.st.comp.side = 0;
         return Ok(());
+    }
+    if let Some(held) = step.st.comp.angle_line {
+        return super::drawing::end_of_block(step, held);
     }
     if step.st.comp.side == 0 {
         // A chamfer's move waits for the next block's move; anything else is made now.

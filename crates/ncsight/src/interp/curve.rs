@@ -91,12 +91,7 @@ pub(super) fn block(step: &mut Step, words: &mut Words, kind: Curve) -> Result<(
 /// Q180. is 0.18 degree, the GSK980TDc manual says), turning as G02 does (cycles/curve.rs).
 fn tilt(step: &mut Step, words: &mut Words, code: &str) -> f64 {
     let Some(w) = words.take(b'Q') else { return 0.0 };
-    let deg = w.value * 0.001;
-    if w.decimal {
-        let msg = format!("{}: {code}'s Q is in 0.001 degree even with a decimal point (GSK980TDc manual): {} degree", w.text(), shown(deg, 4));
-        step.warn(Rule::Implausible, w.span, msg);
-    }
-    deg.to_radians()
+    step.thousandths_deg(w, &format!("{code}'s Q")).to_radians()
 }
 
 fn curve_alarm(step: &Step, code: &str, e: CurveError) -> Diagnostic {

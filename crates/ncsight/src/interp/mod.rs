@@ -6,6 +6,7 @@ mod call;
 mod comp;
 mod compound;
 mod curve;
+mod drawing;
 mod polar;
 mod drill;
 mod frame;
@@ -310,6 +311,17 @@ impl Step<'_> {
         if !w.decimal && self.params.integer_lengths() == IntegerLengths::LeastIncrement { w.value * 0.001 } else { w.value }
     }
 
+    /// An angle word in 0.001 degree, with a decimal point too (the GSK980TDi's Q: `Q180.` is
+    /// 0.18 degree, the GSK980TDc manual says), with a warning when it has one.
+    fn thousandths_deg(&mut self, w: &Word, what: &str) -> f64 {
+        let deg = w.value * 0.001;
+        if w.decimal {
+            let msg = format!("{}: {what} is in 0.001 degree even with a decimal point (GSK980TDc manual): {} degree", w.text(), crate::alarm::shown(deg, 4));
+            self.warn(Rule::Implausible, w.span, msg);
+        }
+        deg
+    }
+
     /// A length word in mm, read by the profile's decimal-point rule and the units in force.
     #[inline]
     fn length(&mut self, w: &Word) -> Result<f64, Diagnostic> {
@@ -544,6 +556,14 @@ impl Interpreter {
             thread::flush(&mut step, p, true);
             step.bypass_comp = false;
         }
+        // A line of an angle alone has no end: the next block alarmed (and said so), or the
+        // input ended without M30 (W13). It is not made; what waited behind it still happens.
+        if let (true, Some(_)) = (with_comp, step.st.comp.angle_line.take()) {
+            let rest: Vec<Record> = step.queue.drain(..).skip(1).collect();
+            for rec in rest {
+                step.push_record(rec.span, rec.n, rec.op);
+            }
+        }
         // The input ended (or the next block alarmed) in compensation: the held move ends
         // perpendicular.
         if with_comp {
@@ -723,7 +743,7 @@ fn collect<'w>(
                 if matches!(letter, b'A' | b'B' | b'C' | b'Y') {
                     format!("address {} is not used on {} ({}): a machine with this axis declares it in the setup ([machine] axes)", letter as char, profile.name, w.text())
                 } else {
-                    format!("address {} is not used on {} ({})", letter as char, profile.name, w.text())
+                    format!("address {} is not used on {} ({})", crate::read::address_name(letter), profile.name, w.text())
                 },
             ));
         }
@@ -765,7 +785,7 @@ fn collect<'w>(
                     return Err(step.alarm(
                         Rule::DuplicateWord,
                         w.span,
-                        format!("address {} appears twice in the block ({} and {})", letter as char, old.text(), w.text()),
+                        format!("address {} appears twice in the block ({} and {})", crate::read::address_name(letter), old.text(), w.text()),
                     ));
                 }
             }
@@ -1472,7 +1492,9 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
             let arc_words = matches!(step.st.motion, Motion::ArcCw | Motion::ArcCcw) && b"RIJK".iter().any(|l| words.has(*l));
             // A rotary axis the setup declares moves in G00/G01 alone too (FANUC 0-M G91 A45.).
             let rotary_words = step.tables.rotary.iter().any(|r| *r) && b"ABCH".iter().any(|l| step.tables.added_addresses.contains(*l) && words.has(*l));
-            let motion_words = has_axis || arc_words || (rotary_words && matches!(step.st.motion, Motion::Rapid | Motion::Linear));
+            // A line given by its angle alone (docs/commands/drawing.md) moves too.
+            let angle_word = step.profile.frame.drawing.is_some_and(|d| words.has(d.angle)) && matches!(step.st.motion, Motion::Rapid | Motion::Linear);
+            let motion_words = has_axis || arc_words || angle_word || (rotary_words && matches!(step.st.motion, Motion::Rapid | Motion::Linear));
             if motion_words {
                 motion(step, &mut words)?;
             }
@@ -1550,7 +1572,7 @@ fn finish_block(step: &mut Step, words: &Words, codes: &Codes, after: Vec<(&Word
 
     if let Some(w) = words.first_unused() {
         let cmd = describe_command(step, codes);
-        return Err(step.alarm(Rule::WordNotTaken, w.span, format!("{}: {cmd} does not take address {}", w.text(), w.letter as char)));
+        return Err(step.alarm(Rule::WordNotTaken, w.span, format!("{}: {cmd} does not take address {}", w.text(), crate::read::address_name(w.letter))));
     }
     Ok(())
 }
@@ -1801,13 +1823,32 @@ fn emit_rotary(step: &mut Step, to_deg: [f64; 3], rapid: bool, rate_per_unit: f6
 }
 
 fn motion(step: &mut Step, words: &mut Words) -> Result<(), Diagnostic> {
-    if let Some(key) = step.profile.frame.chamfer_type {
+    if let Some(rules) = step.profile.frame.drawing {
         if matches!(step.st.motion, Motion::Linear | Motion::ArcCw | Motion::ArcCcw) {
-            comp::corner_words(step, words, key)?;
+            comp::corner_words(step, words, rules)?;
         }
     }
     let rotary = if matches!(step.st.motion, Motion::Rapid | Motion::Linear) { rotary_target(step, words)? } else { None };
-    let (target, _) = axis_target(step, words)?;
+    // A line given by its angle (docs/commands/drawing.md): the end it gives, or none yet.
+    let drawing = step.profile.frame.drawing;
+    let angle = match drawing {
+        Some(rules) => drawing::angle(step, words, rules),
+        None => None,
+    };
+    let absolute = [b'X', b'Y', b'Z'].map(|l| words.peek(l).is_some() && !step.st.incremental);
+    let (target, given) = axis_target(step, words)?;
+    let target = match drawing {
+        Some(rules) if angle.is_some() || step.st.comp.angle_line.is_some() => {
+            let Some(t) = drawing::line(step, rules, angle, target, given, absolute)? else {
+                if rotary.is_some() {
+                    return Err(step.alarm(Rule::NotSupported, step.span, "a rotary axis turned with a line of an angle alone is not simulated by ncsight yet"));
+                }
+                return Ok(());
+            };
+            t
+        }
+        _ => target,
+    };
     let from = step.st.pos;
     match step.st.motion {
         Motion::Rapid => {

@@ -7,20 +7,25 @@ use crate::read::Word;
 #[derive(Debug)]
 pub struct Words<'w> {
     all: &'w [Word],
-    /// 1 + the index in `all` of each address's word; 0 for none.
-    slots: [u16; 26],
-    present: u32,
-    used: u32,
+    /// 1 + the index in `all` of each address's word; 0 for none (A-Z, then the comma words
+    /// ,A-,Z).
+    slots: [u16; 52],
+    present: u64,
+    used: u64,
 }
 
 fn idx(letter: u8) -> usize {
-    (letter - b'A') as usize
+    if letter.is_ascii_lowercase() {
+        26 + (letter - b'a') as usize
+    } else {
+        (letter - b'A') as usize
+    }
 }
 
 impl<'w> Words<'w> {
     /// An empty table over a block's words.
     pub fn new(all: &'w [Word]) -> Words<'w> {
-        Words { all, slots: [0; 26], present: 0, used: 0 }
+        Words { all, slots: [0; 52], present: 0, used: 0 }
     }
 
     fn slot(&self, i: usize) -> Option<&'w Word> {
@@ -66,6 +71,6 @@ impl<'w> Words<'w> {
         if unused == 0 {
             return None;
         }
-        (0..26).filter(|i| unused & (1 << i) != 0).filter_map(|i| self.slot(i)).min_by_key(|w| w.span.col)
+        (0..52).filter(|i| unused & (1 << i) != 0).filter_map(|i| self.slot(i)).min_by_key(|w| w.span.col)
     }
 }

@@ -110,7 +110,7 @@ pub static PROFILE: Profile = Profile {
     drill: super::lathe_drill::RULES,
     calls: super::CallRules::FANUC,
     macros: super::MacroRules::FANUC,
-    frame: super::FrameRules::FANUC,
+    frame: super::FrameRules { drawing: Some(super::DrawingRules::FANUC_T), ..super::FrameRules::FANUC },
     summary: "FANUC 0-T turning centre, G-code system A. X is a diameter, U/W incremental; lengths without \
 a decimal point are least input increments (X100 = 0.1 mm, X1 = 0.0001 inch under G20). Feed per \
 revolution (G99) at power on.",

@@ -157,7 +157,7 @@ pub static PROFILE: Profile = Profile {
         source: "inferred from the GSK980TDi help text, G65 (P right after G65); five bracket levels as FANUC (inferred)",
         ..super::MacroRules::FANUC
     },
-    frame: super::FrameRules { source: "inferred: as the GSK980TDi help text (G54-G59 note 6, G28 note 2, G30 note 3)", chamfer_type: None, ..super::FrameRules::GSK },
+    frame: super::FrameRules { source: "inferred: as the GSK980TDi help text (G54-G59 note 6, G28 note 2, G30 note 3)", drawing: None, ..super::FrameRules::GSK },
     summary: "GSK988T turning centre with a servo (CS) spindle: M14 position mode, M15 speed mode. \
 X is a diameter, U/W incremental; lengths without a decimal point are millimetres.",
 };

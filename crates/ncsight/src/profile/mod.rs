@@ -498,9 +498,9 @@ pub struct FrameRules {
     pub parameter_entry: Option<ParamEntry>,
     /// G12.1 under feed per revolution (G99) is an alarm (GSK980TDi help text, G12.1 note 3).
     pub polar_refuses_per_rev: bool,
-    /// L (chamfer) and D (corner arc) in G01/G02/G03 blocks, and the bit that says what L
-    /// measures (GSK980TDi help text, chamfer function: No.181.0).
-    pub chamfer_type: Option<ParamKey>,
+    /// Corners and line angles written as the drawing gives them, where the controller has
+    /// them (lathes).
+    pub drawing: Option<DrawingRules>,
     /// Radius compensation looks ahead across this many blocks without a move in the plane
     /// before the held move ends perpendicular (FANUC: 1, as its manuals draw it).
     pub comp_lookahead: u8,
@@ -558,6 +558,66 @@ pub enum G10Forms {
     ToolLifeAndParameters,
 }
 
+/// A chamfer or corner arc between a block's move and the next, and a line given by its angle
+/// with one coordinate (or with none: its end is where it meets the next line), as a drawing
+/// dimensions them. Addresses as the reader stores them: `b'c'` is `,C`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct DrawingRules {
+    /// The chamfer's address.
+    pub chamfer: u8,
+    /// The corner arc's address (its radius).
+    pub round: u8,
+    /// The bit that says what the chamfer's value measures (0: the chamfer's length; 1: the
+    /// distance from the corner to each end); `None`: always the distance from the corner.
+    pub chamfer_type: Option<ParamKey>,
+    /// The line's angle from the plane's first axis (Z in G18), counter-clockwise.
+    pub angle: u8,
+    /// The angle's word counts 0.001 degree, with a decimal point too; else degrees as an
+    /// angle word reads.
+    pub angle_thousandths: bool,
+    /// The angle forms work in G00 blocks too (positioning only).
+    pub angle_in_rapid: bool,
+    /// A corner's block must be followed by a G01 move: another move is an alarm, as is no
+    /// move; else a G00 next or no move makes the move whole, with a warning.
+    pub corner_needs_g01: bool,
+    /// G17 and G19 have the angle forms too; else only G18 (the ZX plane).
+    pub any_plane: bool,
+    pub source: &'static str,
+}
+
+impl DrawingRules {
+    /// GSK980TDi help text, chamfer function (L, D; No.181.0) and angle programming (Q).
+    pub const GSK: DrawingRules = DrawingRules {
+        chamfer: b'L',
+        round: b'D',
+        chamfer_type: Some(ParamKey::Number(181, Some(0))),
+        angle: b'Q',
+        angle_thousandths: true,
+        angle_in_rapid: true,
+        corner_needs_g01: false,
+        any_plane: true,
+        source: "GSK980TDi help text: chamfer function; angle programming notes 1-8",
+    };
+    /// FANUC 0-T direct drawing dimension programming (`,A` `,C` `,R`): the forms and alarms
+    /// 051-058 of the FANUC lathe manuals (docs/commands/drawing.md says which were verified).
+    pub const FANUC_T: DrawingRules = DrawingRules {
+        chamfer: b'c',
+        round: b'r',
+        chamfer_type: None,
+        angle: b'a',
+        angle_thousandths: false,
+        angle_in_rapid: false,
+        corner_needs_g01: true,
+        any_plane: false,
+        source: "FANUC lathe manuals, direct drawing dimension programming (the forms from a secondary source; alarms 051-058, 212)",
+    };
+
+    /// The address is one of these words.
+    pub fn takes(&self, letter: u8) -> bool {
+        letter == self.chamfer || letter == self.round || letter == self.angle
+    }
+}
+
 impl FrameRules {
     pub const FANUC: FrameRules = FrameRules {
         coordinate_set_wins: false,
@@ -569,7 +629,7 @@ impl FrameRules {
         comp_lookahead: 1,
         comp_idle_alarm: None,
         polar_refuses_per_rev: false,
-        chamfer_type: None,
+        drawing: None,
         rough_cancels_comp: false,
         box_by_tip: true,
         transform_keys: TransformKeys::NONE,
@@ -585,7 +645,7 @@ impl FrameRules {
         comp_lookahead: 6,
         comp_idle_alarm: Some(7),
         polar_refuses_per_rev: true,
-        chamfer_type: Some(ParamKey::Number(181, Some(0))),
+        drawing: Some(DrawingRules::GSK),
         rough_cancels_comp: true,
         box_by_tip: false,
         transform_keys: TransformKeys::NONE,
@@ -1304,6 +1364,10 @@ impl Profile {
     }
 
     pub fn takes_address(&self, letter: u8) -> bool {
+        if letter.is_ascii_lowercase() {
+            // A comma word (`,A`): the drawing's words only.
+            return self.frame.drawing.is_some_and(|d| d.takes(letter));
+        }
         self.addresses.contains(letter)
     }
 

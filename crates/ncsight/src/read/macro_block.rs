@@ -298,11 +298,17 @@ impl Reader {
                     i += 1;
                     continue;
                 }
+                // A comma word (`,R#1`): the letter in lower case (read/mod.rs).
+                let comma = b == b',' && c.get(i + 1).is_some_and(u8::is_ascii_alphabetic);
+                let start = i;
+                if comma {
+                    i += 1;
+                }
+                let b = c[i];
                 if !b.is_ascii_alphabetic() {
                     return Err(Diagnostic::new(Rule::ImproperAddress, self.style, span_at(at(i), at(i) + 1), format!("{whole}: '{}' is not an address letter", b as char)));
                 }
-                let letter = b.to_ascii_uppercase();
-                let start = i;
+                let letter = if comma { b.to_ascii_lowercase() } else { b.to_ascii_uppercase() };
                 i += 1;
                 skip_ws(&mut i);
                 let value_start = i;

@@ -67,7 +67,8 @@ fn has_variable(s: &[u8]) -> bool {
 /// One address with its value, e.g. `X-12.5` or `F[25.4/10]`.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Word {
-    /// Upper-case ASCII letter.
+    /// Upper-case ASCII letter; lower case for a word written after a comma (`,A30.` is `a`:
+    /// FANUC's drawing dimensions, a corner's `,C` and `,R`), an address of its own.
     pub letter: u8,
     /// The value as written (sign applied; no unit conversion).
     pub value: f64,
@@ -100,7 +101,7 @@ impl Word {
 
     /// The word as a person would write it, for messages.
     pub fn text(&self) -> String {
-        let letter = self.letter as char;
+        let letter = address_name(self.letter);
         if self.expr {
             return format!("{letter}[...]");
         }
@@ -110,6 +111,15 @@ impl Word {
         } else {
             format!("{letter}{}", self.value)
         }
+    }
+}
+
+/// An address as written: `X`, or `,A` for the comma word stored as `a`.
+pub fn address_name(letter: u8) -> String {
+    if letter.is_ascii_lowercase() {
+        format!(",{}", letter.to_ascii_uppercase() as char)
+    } else {
+        (letter as char).to_string()
     }
 }
 
@@ -386,6 +396,24 @@ impl Reader {
                     i += 1 + digits;
                     block_end = i;
                 }
+                // A comma word (`,A30.` `,C1.` `,R2.`: FANUC's drawing dimensions): the word
+                // after the comma, its letter kept in lower case as an address of its own.
+                b',' if s.get(i + 1).is_some_and(u8::is_ascii_alphabetic) => {
+                    block_start.get_or_insert(i);
+                    match self.word(line_no, s, i + 1) {
+                        Ok((mut w, next)) => {
+                            w.letter = w.letter.to_ascii_lowercase();
+                            w.span = Span::new(line_no, i as u32 + 1, (next - i) as u32);
+                            block.words.push(w);
+                            i = next;
+                            block_end = next;
+                        }
+                        Err(d) => {
+                            out.blocks.push(Err(d));
+                            return;
+                        }
+                    }
+                }
                 _ if c.is_ascii_alphabetic() => {
                     block_start.get_or_insert(i);
                     // A macro statement starts its block (after N); inside a block two letters
@@ -651,6 +679,23 @@ fn decimal_value(mantissa: u64, fraction_digits: i32, text: &[u8]) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// `,A30.` is its own address (`a`), its span from the comma; a comma with no letter is a
+    /// character not allowed.
+    #[test]
+    fn comma_words_are_addresses_of_their_own() {
+        let r = Reader::new(AlarmStyle::Fanuc);
+        let line = r.read_line(1, b"G01 X10. ,A30. ,C1.");
+        let b = line.blocks[0].as_ref().unwrap();
+        assert_eq!(b.words.iter().map(|w| w.letter).collect::<Vec<_>>(), vec![b'G', b'X', b'a', b'c']);
+        assert_eq!((b.words[2].span.col, b.words[2].span.len), (10, 5));
+        assert_eq!(b.words[2].text(), ",A30.");
+        let line = r.read_line(1, b"G01 X#1 ,R#2");
+        let m = line.blocks[0].as_ref().unwrap().macro_block.as_ref().unwrap();
+        let Stmt::Words(words) = &m.stmt else { panic!("{m:?}") };
+        assert_eq!(words[2].letter, b'r');
+        assert!(r.read_line(1, b"G01 X10.,").blocks[0].is_err());
+    }
 
     #[test]
     fn numbers_as_str_parse_reads_them() {

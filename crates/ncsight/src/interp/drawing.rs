@@ -1,0 +1,203 @@
+//! Lines given as the drawing gives them (docs/commands/drawing.md): a G01 (or G00) block with
+//! an angle and one coordinate ends where its line reaches that coordinate; a block with the
+//! angle alone ends where its line meets the next block's, which gives its end point and its
+//! angle (GSK980TDi help text, angle programming, Q; FANUC 0-T direct drawing dimension
+//! programming, `,A`). The corners between such lines (L/D, `,C`/`,R`) are the look-ahead
+//! stage's (interp/comp.rs).
+//!
+//! A line given by its angle alone is held in that stage's queue with its direction and no end
+//! yet; what comes between (at most one block without a move: note 7) waits behind it, and the
+//! next block's line sets its end.
+
+use super::{comp, Step, Words};
+use crate::alarm::{shown, Diagnostic, Rule};
+use crate::comp::{self as geometry, DrawingError};
+use crate::modal::{AngleLine, Motion};
+use crate::motion::{Op, Plane, Vec3};
+use crate::profile::DrawingRules;
+use crate::read::Word;
+
+/// How far the held line of an angle alone reaches before its end is known. Never made: the
+/// next block's line sets its end, or the block alarms.
+const UNKNOWN_REACH_MM: f64 = 1.0e4;
+
+/// The angle word of a G01 block (or G00, where the profile has the forms there), degrees.
+pub(super) fn angle<'w>(step: &mut Step, words: &mut Words<'w>, rules: DrawingRules) -> Option<(f64, &'w Word)> {
+    let rapid = step.st.motion == Motion::Rapid;
+    if !(step.st.motion == Motion::Linear || rapid && rules.angle_in_rapid) {
+        return None;
+    }
+    let w = words.take(rules.angle)?;
+    let deg = if rules.angle_thousandths { step.thousandths_deg(w, "the line's angle") } else { step.degrees(w) };
+    Some((deg, w))
+}
+
+/// What the block's line does: go to `target` (an end worked out from the angle, or as
+/// written), or wait for the next block (`None`: its angle alone).
+pub(super) fn line(step: &mut Step, rules: DrawingRules, angle: Option<(f64, &Word)>, target: Vec3, given: [bool; 3], absolute: [bool; 3]) -> Result<Option<Vec3>, Diagnostic> {
+    let plane = step.st.plane;
+    let (ia, ib, _) = plane.axes();
+    if let Some(held) = step.st.comp.angle_line {
+        return close(step, held, angle, target, given[ia] && given[ib] && absolute[ia] && absolute[ib]).map(Some);
+    }
+    let Some((deg, w)) = angle else {
+        return Ok(Some(target));
+    };
+    if !rules.any_plane && plane != Plane::ZX {
+        // FANUC alarm 212: direct drawing dimensions in the ZX plane only.
+        return Err(step.alarm(Rule::IllegalPlane, w.span, format!("{}: a line given by its angle is programmed in the ZX plane (G18) only", w.text())));
+    }
+    let start = step.st.pos + step.st.frame.unmoved;
+    let from = geometry::local(&start, plane);
+    let names = plane_names(plane);
+    match (given[ia], given[ib]) {
+        (true, true) => {
+            // Note 1: with both coordinates the block is an ordinary line; the angle is not used.
+            step.warn(Rule::TextIgnored, w.span, format!("{}: the block gives both {} and {}: an ordinary line, the angle is not used (GSK980TDi help text, angle programming note 1)", w.text(), names.0, names.1));
+            Ok(Some(target))
+        }
+        (false, false) => {
+            open(step, deg, w)?;
+            Ok(None)
+        }
+        (a_given, _) => {
+            let to = geometry::local(&target, plane);
+            let (a, b) = if a_given { (Some(to.a), None) } else { (None, Some(to.b)) };
+            match geometry::end_by_angle(from, deg, a, b) {
+                Ok(end) => Ok(Some(geometry::with_local(&target, end, plane))),
+                Err(_) => {
+                    let (other, along) = if a_given { (names.1, names.0) } else { (names.0, names.1) };
+                    let msg = format!(
+                        "{}: a line within {} degree of the {other} axis does not reach the {along} given (GSK980TDi help text, angle programming notes 3-4; FANUC alarm 057)",
+                        w.text(),
+                        shown(geometry::DRAWING_TOLERANCE_DEG, 1)
+                    );
+                    Err(step.alarm(Rule::DrawingNoSolution, w.span, msg))
+                }
+            }
+        }
+    }
+}
+
+/// The addresses of the plane's first and second axes, as a message names them.
+fn plane_names(plane: Plane) -> (&'static str, &'static str) {
+    let name = |axis: usize| ["X", "Y", "Z"][axis];
+    let (a, b, _) = plane.axes();
+    (name(a), name(b))
+}
+
+/// A line given by its angle alone: held, pointing along its angle, until the next block.
+fn open(step: &mut Step, deg: f64, w: &Word) -> Result<(), Diagnostic> {
+    let why = if step.st.comp.side != 0 {
+        Some("in nose radius compensation")
+    } else if step.bypass_comp {
+        Some("in a cycle's contour")
+    } else if step.carry.is_some() || step.st.polar_interp.is_some() {
+        Some("under a coordinate transform or G12.1/G07.1")
+    } else {
+        None
+    };
+    if let Some(why) = why {
+        return Err(step.alarm(Rule::NotSupported, w.span, format!("{}: a line given by its angle alone {why} is not simulated by ncsight yet", w.text())));
+    }
+    let plane = step.st.plane;
+    let from = step.st.pos;
+    let reach = geometry::with_local(&from, geometry::local(&from, plane).plus(geometry::direction(deg).scale(UNKNOWN_REACH_MM)), plane);
+    let op = match step.st.motion {
+        Motion::Rapid => Op::Rapid { from, to: reach },
+        // Under G96 the feed per minute is the start point's (the end is not known yet).
+        _ => Op::Feed { from, to: reach, feed_mm_min: step.cutting_feed(super::What::Code(crate::profile::GFn::Linear), &|_| from)? },
+    };
+    comp::take(step, step.span, step.n, op);
+    step.st.comp.angle_line = Some(AngleLine { angle_deg: deg, from, span: step.span, between: 0 });
+    Ok(())
+}
+
+/// The block after a line of an angle alone: its absolute end point and its angle give its line;
+/// the held line ends where the two meet, and this block's line starts there.
+fn close(step: &mut Step, held: AngleLine, angle: Option<(f64, &Word)>, target: Vec3, end_given: bool) -> Result<Vec3, Diagnostic> {
+    let plane = step.st.plane;
+    let names = plane_names(plane);
+    let Some((deg, w)) = angle.filter(|_| end_given) else {
+        let msg = format!(
+            "the line before (its angle alone) ends where it meets this block's line: this block gives its end point as absolute {} and {} and its angle (GSK980TDi help text, angle programming note 6; FANUC alarm 056)",
+            names.0, names.1
+        );
+        return Err(step.alarm(Rule::DrawingEndMissing, step.span, msg));
+    };
+    let start = geometry::local(&held.from, plane);
+    let u = geometry::direction(held.angle_deg);
+    let meet = match geometry::meet(start, held.angle_deg, geometry::local(&target, plane), deg) {
+        Ok(p) => p,
+        Err(DrawingError::Parallel | DrawingError::AlongAxis) => {
+            let msg = format!(
+                "{}: this line and the one before are within {} degree of parallel: they do not meet (GSK980TDi help text, angle programming note 5; FANUC alarm 057)",
+                w.text(),
+                shown(geometry::DRAWING_TOLERANCE_DEG, 1)
+            );
+            return Err(step.alarm(Rule::DrawingNoSolution, w.span, msg));
+        }
+    };
+    // The line before runs along its angle from its start (the direction its angle gives:
+    // inferred from the FANUC forms' drawings).
+    if meet.minus(start).dot(u) <= 1e-9 {
+        let msg = format!(
+            "{}: the two lines meet behind the start of the line before (its angle points away from where they meet; FANUC alarm 057)",
+            w.text()
+        );
+        return Err(step.alarm(Rule::DrawingNoSolution, w.span, msg));
+    }
+    // A chamfer or corner arc before it took the start of the held line: it must leave some.
+    let held_start = geometry::local(&step.st.comp.held_start, plane);
+    if meet.minus(held_start).dot(u) < -1e-9 {
+        let msg = format!("the corner before the line of an angle alone needs more of it than it has (it ends {} mm from its start)", shown(meet.dist(start), 4));
+        return Err(step.alarm(Rule::CornerTooLarge, held.span, msg));
+    }
+    let end = geometry::with_local(&held.from, meet, plane);
+    let first = step.queue.first_mut().expect("a line of an angle alone is held in the queue");
+    first.op = match first.op {
+        Op::Rapid { from, .. } => Op::Rapid { from, to: end },
+        Op::Feed { from, feed_mm_min, .. } => Op::Feed { from, to: end, feed_mm_min },
+        other => other,
+    };
+    step.st.comp.angle_line = None;
+    step.st.pos = end;
+    Ok(target)
+}
+
+/// After a block while a line of an angle alone waits for its end: one block without a move may
+/// come between (note 7); the programme's end may not.
+pub(super) fn end_of_block(step: &mut Step, mut held: AngleLine) -> Result<(), Diagnostic> {
+    if step.st.ended {
+        return Err(step.alarm(Rule::DrawingEndNotFound, step.span, "the programme ends before the line of an angle alone is given its end (the next block's line; FANUC alarm 058)"));
+    }
+    if held.span != step.span {
+        held.between += 1;
+        if held.between > 1 {
+            let msg = "a second block without a move after a line of an angle alone: at most one (G04, M, S, T) may come before the line that ends it (GSK980TDi help text, angle programming note 7; FANUC alarm 058)";
+            return Err(step.alarm(Rule::DrawingEndNotFound, step.span, msg));
+        }
+        step.st.comp.angle_line = Some(held);
+    }
+    Ok(())
+}
+
+/// A move or a break that the held line of an angle alone cannot take: the block alarms.
+pub(super) fn refuse(step: &mut Step) {
+    let msg = "the line before (its angle alone) ends where it meets the next line: this block gives a G01 line with its absolute end point and its angle (GSK980TDi help text, angle programming note 6; FANUC alarm 056)";
+    let d = step.alarm(Rule::DrawingEndMissing, step.span, msg);
+    step.out.comp_error.get_or_insert(d);
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::comp::P2;
+
+    #[test]
+    fn lines_meet_where_the_worked_example_says() {
+        // X50 Z50 (radius 25), ,A30. then X0 Z150 ,A-45.: Z97.548, X104.904 (diameter).
+        let p = geometry::meet(P2::new(50.0, 25.0), 30.0, P2::new(150.0, 0.0), -45.0).unwrap();
+        assert!((p.a - 97.548).abs() < 5e-4 && (p.b * 2.0 - 104.904).abs() < 5e-4, "{p:?}");
+    }
+}

@@ -1,0 +1,7 @@
+(expect PS0058 line 5 col 1 on fanuc0t)
+G98 M03 S800 G00 X20. Z2.
+G01 ,A150. F100.
+M08
+S500
+X60. Z-20. ,A180.
+M30
