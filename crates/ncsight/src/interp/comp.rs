@@ -102,11 +102,30 @@ pub(super) fn command(step: &mut Step, side: i8, d: Option<u32>, span: Span, arc
     Ok(())
 }
 
+/// The tip vector the stage adds: none in a contour worked out for roughing (its path is the
+/// programmed one).
+fn tip_of(step: &Step) -> Vec3 {
+    if step.contour {
+        Vec3::default()
+    } else {
+        step.st.comp.tip
+    }
+}
+
+/// The side and radius the stage offsets by: none in a contour worked out for roughing.
+fn side_radius(step: &Step) -> (f64, f64) {
+    if step.contour {
+        (0.0, 0.0)
+    } else {
+        (step.st.comp.side as f64, step.st.comp.radius_mm)
+    }
+}
+
 /// `op` (a move) with its in-plane coordinates at centre `c` (its normal-axis ones kept), as the
 /// controller positions it.
 fn at_point(step: &Step, op: Op, c: P2) -> Op {
     let plane = step.st.plane;
-    let tip = step.st.comp.tip;
+    let tip = tip_of(step);
     let place = |p: Vec3| comp::with_local(&p, c, plane) + tip;
     match op {
         Op::Rapid { from, to } => Op::Rapid { from: place(from), to: place(to) },
@@ -130,7 +149,7 @@ pub(super) fn take(step: &mut Step, span: Span, n: Option<u32>, op: Op) {
                 (Some(c), Some(_)) => {
                     let op = at_point(step, op, comp::local(&c, plane));
                     // The tool is now at the move's end (a move along the normal axis).
-                    step.st.comp.actual = op.end_point().map(|e| e - step.st.comp.tip);
+                    step.st.comp.actual = op.end_point().map(|e| e - tip_of(step));
                     op
                 }
                 _ => op,
@@ -141,7 +160,7 @@ pub(super) fn take(step: &mut Step, span: Span, n: Option<u32>, op: Op) {
 }
 
 fn plane_move(step: &mut Step, span: Span, n: Option<u32>, op: Op, seg: Seg) {
-    if step.st.comp.side == 0 {
+    if step.st.comp.side == 0 || step.contour {
         return corner_move(step, span, n, op, seg);
     }
     let plane = step.st.plane;
@@ -255,7 +274,7 @@ fn feed_of(op: &Op) -> f64 {
 /// where the nose centre ends (the waiting moves along the normal axis included).
 fn make_held(step: &mut Step, end: P2, then: Option<(Op, P2)>) -> Result<Vec3, CompError> {
     let plane = step.st.plane;
-    let (side, r) = (step.st.comp.side as f64, step.st.comp.radius_mm);
+    let (side, r) = side_radius(step);
     let queue = std::mem::take(step.queue);
     let Some((held, rest)) = queue.split_first() else {
         return Ok(step.st.comp.held_start);
@@ -264,7 +283,7 @@ fn make_held(step: &mut Step, end: P2, then: Option<(Op, P2)>) -> Result<Vec3, C
     let start = step.st.comp.held_start;
     let end3 = comp::with_local(&held.op.end_point().unwrap_or_default(), end, plane);
     let result = comp::offset(&hseg, comp::local(&start, plane), end, side, r);
-    let tip = step.st.comp.tip;
+    let tip = tip_of(step);
     let made = match held.op {
         Op::Rapid { .. } => Op::Rapid { from: start + tip, to: end3 + tip },
         Op::Feed { feed_mm_min, .. } => Op::Feed { from: start + tip, to: end3 + tip, feed_mm_min },
@@ -321,7 +340,7 @@ pub(super) fn break_off(step: &mut Step) {
     let plane = step.st.plane;
     let held = step.queue[0].clone();
     let hseg = Seg::of(&held.op, plane).expect("the queue's first record is a move in the plane");
-    let (side, r) = (step.st.comp.side as f64, step.st.comp.radius_mm);
+    let (side, r) = side_radius(step);
     let end = hseg.to().plus(comp::vector(&hseg, true, side, r));
     match make_held(step, end, None) {
         Ok(last) => step.st.comp.actual = Some(last),
@@ -358,21 +377,24 @@ pub(super) fn corner_words(step: &mut Step, words: &mut super::Words, rules: cra
     if size <= 0.0 {
         return Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("{}: a chamfer or corner arc is longer than 0", w.text())));
     }
-    if step.bypass_comp {
-        return Err(step.alarm(Rule::NotSupported, w.span, format!("{}: a chamfer or corner arc in a cycle's contour is not simulated by ncsight yet", w.text())));
+    if step.bypass_comp && !step.contour {
+        return Err(step.alarm(Rule::NotSupported, w.span, format!("{}: a chamfer or corner arc in a block that radius compensation does not act in (a T word, a cycle) is not simulated by ncsight yet", w.text())));
     }
-    if step.st.comp.side != 0 {
+    if step.st.comp.side != 0 && !step.contour {
         return Err(step.alarm(Rule::NotSupported, w.span, format!("{}: a chamfer or corner arc in nose radius compensation is not simulated by ncsight yet", w.text())));
     }
     if step.st.motion != crate::modal::Motion::Linear {
         return Err(step.alarm(Rule::NotSupported, w.span, format!("{}: a chamfer or corner arc at the end of an arc (G02/G03) is not simulated by ncsight yet (G01 to G01 only)", w.text())));
     }
     // The stage adds no tip vector outside compensation: where the tool is stays where it is.
-    let tip = step.st.comp.tip;
-    if let Some(a) = step.st.comp.actual.as_mut() {
-        *a = *a + tip;
+    // (A contour for roughing keeps its compensation's data for the finishing shape.)
+    if !step.contour {
+        let tip = step.st.comp.tip;
+        if let Some(a) = step.st.comp.actual.as_mut() {
+            *a = *a + tip;
+        }
+        step.st.comp.tip = Vec3::default();
     }
-    step.st.comp.tip = Vec3::default();
     let from_corner = rules.chamfer_type.is_none_or(|key| step.params.get(key) != 0.0);
     step.st.comp.corner_for_next = Some(crate::modal::CornerRequest { letter: w.letter, size_mm: size, round, from_corner, span: step.span });
     Ok(())
@@ -493,7 +515,7 @@ pub(super) fn end_of_block(step: &mut Step) -> Result<(), Diagnostic> {
     if let Some(held) = step.st.comp.angle_line {
         return super::drawing::end_of_block(step, held);
     }
-    if step.st.comp.side == 0 {
+    if step.st.comp.side == 0 || step.contour {
         // A chamfer's move waits for the next block's move; anything else is made now.
         if !step.queue.is_empty() && !step.st.comp.held_corner.is_some_and(|c| c.span == step.span) {
             break_off(step);

@@ -88,10 +88,10 @@ fn plane_names(plane: Plane) -> (&'static str, &'static str) {
 
 /// A line given by its angle alone: held, pointing along its angle, until the next block.
 fn open(step: &mut Step, deg: f64, w: &Word) -> Result<(), Diagnostic> {
-    let why = if step.st.comp.side != 0 {
+    let why = if step.st.comp.side != 0 && !step.contour {
         Some("in nose radius compensation")
-    } else if step.bypass_comp {
-        Some("in a cycle's contour")
+    } else if step.bypass_comp && !step.contour {
+        Some("in a block that radius compensation does not act in (a T word, a cycle)")
     } else if step.carry.is_some() || step.st.polar_interp.is_some() {
         Some("under a coordinate transform or G12.1/G07.1")
     } else {

@@ -166,6 +166,10 @@ struct Step<'a> {
     queue: &'a mut Vec<Record>,
     /// This block runs outside radius compensation (a cycle, a reference return...).
     bypass_comp: bool,
+    /// A G71-G73 contour's blocks worked out for roughing: the programmed path, its corners
+    /// (chamfers, corner arcs, lines of an angle alone) made by the look-ahead stage, which
+    /// compensates nothing.
+    contour: bool,
     /// The recorded thread repair position, if any.
     repair: Option<crate::repair::Recorded>,
     span: Span,
@@ -214,8 +218,9 @@ impl Step<'_> {
         // starts where the tool is.
         // A chamfer or corner arc (GSK980TDi L, D) holds its move in the same stage until the
         // next move shows the corner.
-        let corner = self.st.comp.corner_for_next.is_some() || (!self.queue.is_empty() && self.st.comp.side == 0);
-        if (self.st.comp.side != 0 || corner) && !self.bypass_comp {
+        let corner = self.st.comp.corner_for_next.is_some() || (!self.queue.is_empty() && (self.st.comp.side == 0 || self.contour));
+        let stage = if self.contour { corner } else { (self.st.comp.side != 0 || corner) && !self.bypass_comp };
+        if stage {
             return comp::take(self, span, n, op);
         }
         let op = if self.st.comp.actual.is_some() { comp::from_actual(self, span, n, op) } else { op };
@@ -550,7 +555,7 @@ impl Interpreter {
             return;
         }
         let repair = self.switches.repair_position;
-        let mut step = Step { profile: self.profile, params: &self.params, tables: &self.tables, queue: &mut self.comp_queue, bypass_comp: false, repair, span: Span::default(), n: None, st: &mut self.state, carry: None, out };
+        let mut step = Step { profile: self.profile, params: &self.params, tables: &self.tables, queue: &mut self.comp_queue, bypass_comp: false, contour: false, repair, span: Span::default(), n: None, st: &mut self.state, carry: None, out };
         if let Some(p) = step.st.thread.pending.take() {
             step.bypass_comp = true;
             thread::flush(&mut step, p, true);
@@ -600,7 +605,7 @@ impl Interpreter {
         let before = self.state;
         let queue_before = if self.comp_queue.is_empty() { None } else { Some(self.comp_queue.clone()) };
         let repair = self.switches.repair_position;
-        let mut step = Step { profile: self.profile, params: &self.params, tables: &self.tables, queue: &mut self.comp_queue, bypass_comp: false, repair, span: block.span, n: block.sequence, st: &mut self.state, carry: None, out };
+        let mut step = Step { profile: self.profile, params: &self.params, tables: &self.tables, queue: &mut self.comp_queue, bypass_comp: false, contour: false, repair, span: block.span, n: block.sequence, st: &mut self.state, carry: None, out };
         let result = run_block(&mut step, block, self.switches).and_then(|()| {
             if step.out.emitted > MAX_MOTIONS_PER_BLOCK {
                 return Err(step.alarm(

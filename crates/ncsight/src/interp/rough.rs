@@ -220,6 +220,8 @@ impl Interpreter {
         // no record).
         let mut after_ns = None;
         let mut comp_at_ns = st.comp;
+        // The look-ahead stage's held move (a chamfer's, a line of an angle alone) across blocks.
+        let mut queue = Vec::new();
         for (k, b) in blocks.iter().enumerate() {
             if b.block_delete && self.switches.block_delete {
                 continue;
@@ -232,10 +234,16 @@ impl Interpreter {
             if let Some(g) = drilling {
                 return Err(self.contour_alarm(Rule::ContourCommand, b.span, format!("{code}: a contour block cannot run the drilling cycle G{}", g.major)));
             }
-            // The contour is the programmed one (compensation of the finishing shape: docs/compensation.md).
-            let mut no_queue = Vec::new();
-            let mut step = Step { profile: self.profile, params: &self.params, tables: &self.tables, queue: &mut no_queue, bypass_comp: true, repair: None, span: b.span, n: b.sequence, st: &mut st, carry: None, out: &mut scratch };
+            // The contour is the programmed one (compensation of the finishing shape: docs/compensation.md);
+            // its chamfers and corner arcs are made as in a run (docs/commands/drawing.md).
+            let mut step = Step { profile: self.profile, params: &self.params, tables: &self.tables, queue: &mut queue, bypass_comp: true, contour: true, repair: None, span: b.span, n: b.sequence, st: &mut st, carry: None, out: &mut scratch };
             run_block(&mut step, b, self.switches)?;
+            if !step.queue.is_empty() {
+                super::comp::end_of_block(&mut step)?;
+            }
+            if let Some(d) = step.out.comp_error.take() {
+                return Err(d);
+            }
             // The contour's blocks share one outcome: past the limit its moves would be lost.
             if scratch.emitted > super::MAX_MOTIONS_PER_BLOCK {
                 return Err(self.contour_alarm(Rule::MotionLimit, b.span, format!("{code}: the contour makes more than {} moves", super::MAX_MOTIONS_PER_BLOCK)));
@@ -250,6 +258,22 @@ impl Interpreter {
             if k == 0 {
                 after_ns = Some((st.motion, st.pos));
                 comp_at_ns = st.comp;
+            }
+        }
+        // The last block may not leave a corner or a line without its end (FANUC alarm 069;
+        // GSK980TDi help text, angle programming note 8).
+        if let Some(last) = blocks.last() {
+            let (corner, line) = (st.comp.held_corner, st.comp.angle_line);
+            if corner.is_some() || line.is_some() {
+                let what = match corner {
+                    Some(c) => c.word(),
+                    None => "a line of an angle alone".to_string(),
+                };
+                return Err(self.contour_alarm(Rule::ContourEndsInCorner, last.span, format!("{code}: the contour's last block leaves {what} without the move that ends it (FANUC alarm 069)")));
+            }
+            if !queue.is_empty() {
+                let mut step = Step { profile: self.profile, params: &self.params, tables: &self.tables, queue: &mut queue, bypass_comp: true, contour: true, repair: None, span: last.span, n: last.sequence, st: &mut st, carry: None, out: &mut scratch };
+                super::comp::break_off(&mut step);
             }
         }
         // Help text notes 1 and 2: the ns block makes one G00 or G01 move.
@@ -380,7 +404,7 @@ impl Interpreter {
     fn emit_cycle(&mut self, req: &RoughRequest, ops: Vec<Op>, out: &mut Outcome) -> Result<(), Diagnostic> {
         let code = req.kind.code();
         let before = self.state.clone();
-        let mut step = Step { profile: self.profile, params: &self.params, tables: &self.tables, queue: &mut self.comp_queue, bypass_comp: true, repair: None, span: req.span, n: req.n, st: &mut self.state, carry: None, out };
+        let mut step = Step { profile: self.profile, params: &self.params, tables: &self.tables, queue: &mut self.comp_queue, bypass_comp: true, contour: false, repair: None, span: req.span, n: req.n, st: &mut self.state, carry: None, out };
         let result = ops.into_iter().try_for_each(|op| step.emit_cut(code, op)).and_then(|()| {
             // The per-block limit (the cycle's moves come here, not through `execute_into`).
             if step.out.emitted > super::MAX_MOTIONS_PER_BLOCK {
@@ -441,7 +465,7 @@ impl Interpreter {
         let from = self.state.pos;
         let before = self.state;
         let mut scratch = Outcome::default();
-        let mut step = Step { profile: self.profile, params: &self.params, tables: &self.tables, queue: &mut self.comp_queue, bypass_comp: true, repair: None, span: req.span, n: req.n, st: &mut self.state, carry: None, out: &mut scratch };
+        let mut step = Step { profile: self.profile, params: &self.params, tables: &self.tables, queue: &mut self.comp_queue, bypass_comp: true, contour: false, repair: None, span: req.span, n: req.n, st: &mut self.state, carry: None, out: &mut scratch };
         super::comp::break_off(&mut step);
         if from != req.start || step.st.comp.actual.is_some() {
             step.emit(Op::Rapid { from, to: req.start });
