@@ -189,7 +189,8 @@ pub const DRAWING_TOLERANCE_DEG: f64 = 1.0;
 /// Why a line given by its angle has no end.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum DrawingError {
-    /// The line runs within the tolerance of parallel to the axis whose coordinate is given.
+    /// The line runs within the tolerance of parallel to the other axis (a line along Z never
+    /// reaches the X given).
     AlongAxis,
     /// The two lines are within the tolerance of parallel.
     Parallel,

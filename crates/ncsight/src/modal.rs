@@ -247,8 +247,11 @@ pub struct CompState {
     pub round_corner: bool,
     /// A chamfer or corner arc this block asks for at the end of its move (GSK980TDi L, D).
     pub corner_for_next: Option<CornerRequest>,
-    /// The one asked for at the end of the move held in the queue.
+    /// The one asked for at the end of the move held in the corner stage.
     pub held_corner: Option<CornerRequest>,
+    /// Where the move held in the corner stage starts (the end of the chamfer before it, if one
+    /// was made).
+    pub corner_start: Vec3,
     /// A line given by its angle alone, held in the queue until the next block's line shows
     /// where it ends.
     pub angle_line: Option<AngleLine>,

@@ -13,7 +13,6 @@ use super::Step;
 use crate::alarm::{Diagnostic, Rule};
 use crate::comp::{self, CompError, Seg, P2};
 use crate::motion::{ArcDir, Op, Record, Vec3};
-use crate::read;
 use crate::source::Span;
 
 /// The alarm rule of a compensation error.
@@ -53,8 +52,10 @@ pub(super) fn command(step: &mut Step, side: i8, d: Option<u32>, span: Span, arc
             // FANUC 034; GSK980TDi help text, G40-G42 note 2.
             return Err(step.alarm(Rule::CompStartupArc, span, "G40: compensation is cancelled in a G00 or G01 block only, not in an arc"));
         }
-        // G40 with compensation off leaves a chamfer's held move for the block's move.
+        // The corner stage's held move is made first, in the mode it was programmed in (a
+        // corner across G40 is not made: FANUC alarm 039 forbids one there).
         if c.side != 0 {
+            super::corner::break_off(step);
             break_off(step);
         }
         step.st.comp.side = 0;
@@ -62,8 +63,8 @@ pub(super) fn command(step: &mut Step, side: i8, d: Option<u32>, span: Span, arc
         return Ok(());
     }
     // Compensation starting after a chamfer's move: that move is made first, with no corner.
-    if c.side == 0 && !step.queue.is_empty() {
-        break_off(step);
+    if c.side != side {
+        super::corner::break_off(step);
     }
     let lathe = step.profile.is_lathe();
     let number = if lathe { step.st.frame.offset_number } else { d.unwrap_or(c.d) };
@@ -102,30 +103,11 @@ pub(super) fn command(step: &mut Step, side: i8, d: Option<u32>, span: Span, arc
     Ok(())
 }
 
-/// The tip vector the stage adds: none in a contour worked out for roughing (its path is the
-/// programmed one).
-fn tip_of(step: &Step) -> Vec3 {
-    if step.contour {
-        Vec3::default()
-    } else {
-        step.st.comp.tip
-    }
-}
-
-/// The side and radius the stage offsets by: none in a contour worked out for roughing.
-fn side_radius(step: &Step) -> (f64, f64) {
-    if step.contour {
-        (0.0, 0.0)
-    } else {
-        (step.st.comp.side as f64, step.st.comp.radius_mm)
-    }
-}
-
 /// `op` (a move) with its in-plane coordinates at centre `c` (its normal-axis ones kept), as the
 /// controller positions it.
 fn at_point(step: &Step, op: Op, c: P2) -> Op {
     let plane = step.st.plane;
-    let tip = tip_of(step);
+    let tip = step.st.comp.tip;
     let place = |p: Vec3| comp::with_local(&p, c, plane) + tip;
     match op {
         Op::Rapid { from, to } => Op::Rapid { from: place(from), to: place(to) },
@@ -149,7 +131,7 @@ pub(super) fn take(step: &mut Step, span: Span, n: Option<u32>, op: Op) {
                 (Some(c), Some(_)) => {
                     let op = at_point(step, op, comp::local(&c, plane));
                     // The tool is now at the move's end (a move along the normal axis).
-                    step.st.comp.actual = op.end_point().map(|e| e - tip_of(step));
+                    step.st.comp.actual = op.end_point().map(|e| e - step.st.comp.tip);
                     op
                 }
                 _ => op,
@@ -160,8 +142,9 @@ pub(super) fn take(step: &mut Step, span: Span, n: Option<u32>, op: Op) {
 }
 
 fn plane_move(step: &mut Step, span: Span, n: Option<u32>, op: Op, seg: Seg) {
-    if step.st.comp.side == 0 || step.contour {
-        return corner_move(step, span, n, op, seg);
+    if step.st.comp.side == 0 {
+        // Nothing to hold: compensation is off (G40 made the held move already).
+        return step.push_record(span, n, op);
     }
     let plane = step.st.plane;
     let (side, r) = (step.st.comp.side as f64, step.st.comp.radius_mm);
@@ -208,7 +191,7 @@ fn plane_move(step: &mut Step, span: Span, n: Option<u32>, op: Op, seg: Seg) {
         let turn = hseg.tangent(true).cross(seg.tangent(false));
         if turn * side < -1e-12 {
             let (e, s) = (p.plus(comp::vector(&hseg, true, side, r)), p.plus(comp::vector(&seg, false, side, r)));
-            if let Err(err) = make_held(step, e, None) {
+            if let Err(err) = make_held(step, e) {
                 return fail(step, err, held.span);
             }
             let tip = step.st.comp.tip;
@@ -232,7 +215,7 @@ fn plane_move(step: &mut Step, span: Span, n: Option<u32>, op: Op, seg: Seg) {
             Err(e) => return fail(step, e, span),
         }
     };
-    if let Err(e) = make_held(step, corner.first_end, None) {
+    if let Err(e) = make_held(step, corner.first_end) {
         return fail(step, e, held.span);
     }
     // The moves around an outer corner, at the next move's rate.
@@ -269,12 +252,11 @@ fn feed_of(op: &Op) -> f64 {
 }
 
 /// Make the held move, compensated from its start to `end` (nose centre in the plane), then
-/// `then` (a chamfer of the held move's block, and where it ends in the plane), then the
-/// records that waited behind it, where the tool is by then. The queue is left empty. Returns
-/// where the nose centre ends (the waiting moves along the normal axis included).
-fn make_held(step: &mut Step, end: P2, then: Option<(Op, P2)>) -> Result<Vec3, CompError> {
+/// the records that waited behind it, where the tool is by then. The queue is left empty.
+/// Returns where the nose centre ends (the waiting moves along the normal axis included).
+fn make_held(step: &mut Step, end: P2) -> Result<Vec3, CompError> {
     let plane = step.st.plane;
-    let (side, r) = side_radius(step);
+    let (side, r) = (step.st.comp.side as f64, step.st.comp.radius_mm);
     let queue = std::mem::take(step.queue);
     let Some((held, rest)) = queue.split_first() else {
         return Ok(step.st.comp.held_start);
@@ -283,7 +265,7 @@ fn make_held(step: &mut Step, end: P2, then: Option<(Op, P2)>) -> Result<Vec3, C
     let start = step.st.comp.held_start;
     let end3 = comp::with_local(&held.op.end_point().unwrap_or_default(), end, plane);
     let result = comp::offset(&hseg, comp::local(&start, plane), end, side, r);
-    let tip = tip_of(step);
+    let tip = step.st.comp.tip;
     let made = match held.op {
         Op::Rapid { .. } => Op::Rapid { from: start + tip, to: end3 + tip },
         Op::Feed { feed_mm_min, .. } => Op::Feed { from: start + tip, to: end3 + tip, feed_mm_min },
@@ -296,15 +278,10 @@ fn make_held(step: &mut Step, end: P2, then: Option<(Op, P2)>) -> Result<Vec3, C
     }
     step.push_record(held.span, held.n, made);
     note_span(step, held.span);
-    let (mut last, mut at) = (end3, end);
-    if let Some((link, link_end)) = then {
-        last = link.end_point().map_or(last, |e| e - tip);
-        at = link_end;
-        step.push_record(held.span, held.n, link);
-    }
+    let mut last = end3;
     for rec in rest {
         note_span(step, rec.span);
-        let op = at_point(step, rec.op, at);
+        let op = at_point(step, rec.op, end);
         if let Some(e) = op.end_point() {
             last = e - tip;
         }
@@ -320,29 +297,17 @@ fn make_held(step: &mut Step, end: P2, then: Option<(Op, P2)>) -> Result<Vec3, C
 /// block compensation does not act in, the look-ahead run out), and the tool stays there until
 /// the next move.
 pub(super) fn break_off(step: &mut Step) {
-    // A line of an angle alone has no end yet: this block was to give it.
-    if step.st.comp.angle_line.is_some() {
-        return super::drawing::refuse(step);
-    }
     // A G39 before the break has no corner left to round.
     step.st.comp.round_corner = false;
-    if let Some(c) = step.st.comp.held_corner.take() {
-        if step.profile.frame.drawing.is_some_and(|d| d.corner_needs_g01) {
-            let d = step.alarm(Rule::CornerNoMove, step.span, format!("the block after {} makes no G01 move: the corner has no second move to join (FANUC alarm 051)", c.word()));
-            step.out.comp_error.get_or_insert(d);
-        } else {
-            step.warn(Rule::TextIgnored, c.span, format!("{}: no G01 move follows it: no corner is made", c.word()));
-        }
-    }
     if step.queue.is_empty() {
         return;
     }
     let plane = step.st.plane;
     let held = step.queue[0].clone();
     let hseg = Seg::of(&held.op, plane).expect("the queue's first record is a move in the plane");
-    let (side, r) = side_radius(step);
+    let (side, r) = (step.st.comp.side as f64, step.st.comp.radius_mm);
     let end = hseg.to().plus(comp::vector(&hseg, true, side, r));
-    match make_held(step, end, None) {
+    match make_held(step, end) {
         Ok(last) => step.st.comp.actual = Some(last),
         Err(e) => {
             // The held move cannot be made: what waited behind it still happens, where it was
@@ -356,130 +321,6 @@ pub(super) fn break_off(step: &mut Step) {
         }
     }
     step.st.comp.idle_blocks = 0;
-}
-
-/// A chamfer or corner arc asked for in a G01/G02/G03 block (GSK980TDi help text, chamfer
-/// function: L, D; FANUC 0-T direct drawing dimension programming: ,C ,R): the corner between
-/// this block's move and the next. ncsight makes it between two straight moves (G01 to G01);
-/// with an arc on either side it is not simulated yet.
-pub(super) fn corner_words(step: &mut Step, words: &mut super::Words, rules: crate::profile::DrawingRules) -> Result<(), Diagnostic> {
-    let (l, d) = (words.take(rules.chamfer), words.take(rules.round));
-    let (w, round) = match (l, d) {
-        (None, None) => return Ok(()),
-        (Some(a), Some(b)) => {
-            // FANUC alarm 053 is for two of I, K, R; here: one corner, one word (inferred).
-            return Err(step.alarm(Rule::DuplicateWord, b.span, format!("{} and {}: a corner is a chamfer ({}) or an arc ({}), not both", a.text(), b.text(), read::address_name(rules.chamfer), read::address_name(rules.round))));
-        }
-        (Some(w), None) => (w, false),
-        (None, Some(w)) => (w, true),
-    };
-    let size = step.length(w)?;
-    if size <= 0.0 {
-        return Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("{}: a chamfer or corner arc is longer than 0", w.text())));
-    }
-    if step.bypass_comp && !step.contour {
-        return Err(step.alarm(Rule::NotSupported, w.span, format!("{}: a chamfer or corner arc in a block that radius compensation does not act in (a T word, a cycle) is not simulated by ncsight yet", w.text())));
-    }
-    if step.st.comp.side != 0 && !step.contour {
-        return Err(step.alarm(Rule::NotSupported, w.span, format!("{}: a chamfer or corner arc in nose radius compensation is not simulated by ncsight yet", w.text())));
-    }
-    if step.st.motion != crate::modal::Motion::Linear {
-        return Err(step.alarm(Rule::NotSupported, w.span, format!("{}: a chamfer or corner arc at the end of an arc (G02/G03) is not simulated by ncsight yet (G01 to G01 only)", w.text())));
-    }
-    // The stage adds no tip vector outside compensation: where the tool is stays where it is.
-    // (A contour for roughing keeps its compensation's data for the finishing shape.)
-    if !step.contour {
-        let tip = step.st.comp.tip;
-        if let Some(a) = step.st.comp.actual.as_mut() {
-            *a = *a + tip;
-        }
-        step.st.comp.tip = Vec3::default();
-    }
-    let from_corner = rules.chamfer_type.is_none_or(|key| step.params.get(key) != 0.0);
-    step.st.comp.corner_for_next = Some(crate::modal::CornerRequest { letter: w.letter, size_mm: size, round, from_corner, span: step.span });
-    Ok(())
-}
-
-/// A move outside compensation while a chamfer waits (`plane_move` with side 0): the move held
-/// is made to the chamfer's start, the chamfer (a line, or an arc tangent to both moves), and
-/// this move waits from its end; a move held without a chamfer is made whole.
-fn corner_move(step: &mut Step, span: Span, n: Option<u32>, op: Op, seg: Seg) {
-    if step.st.comp.angle_line.is_some() {
-        return super::drawing::refuse(step);
-    }
-    let plane = step.st.plane;
-    let start3 = op.start_point().unwrap_or_default();
-    let mut next_start = start3;
-    if !step.queue.is_empty() {
-        let held = step.queue[0].clone();
-        let hseg = Seg::of(&held.op, plane).expect("the queue's first record is a move in the plane");
-        let mut end = hseg.to();
-        let mut chamfer = None;
-        let mut corner = step.st.comp.held_corner.take();
-        let strict = step.profile.frame.drawing.is_some_and(|d| d.corner_needs_g01);
-        if let (Some(c), true) = (corner, strict && !matches!(op, Op::Feed { .. })) {
-            // FANUC alarm 052: the block after a chamfer or corner R is a G01.
-            let d = step.alarm(Rule::CornerNotLinear, span, format!("{} asks for a corner with a G01 move: this block's move is a {} (FANUC alarm 052)", c.word(), if matches!(op, Op::Rapid { .. }) { "G00" } else { "G02/G03" }));
-            step.out.comp_error.get_or_insert(d);
-            return;
-        }
-        if let (Some(c), Op::Rapid { .. }) = (corner, &op) {
-            // The help text joins G01, G02 and G03 moves: a G00 next gets no corner.
-            step.warn(Rule::TextIgnored, c.span, format!("{}: the next move is a G00: no corner is made", c.word()));
-            corner = None;
-        }
-        if let Some(c) = corner {
-            let lines = matches!((hseg, seg), (Seg::Line { .. }, Seg::Line { .. }));
-            if !lines {
-                let d = step.alarm(Rule::NotSupported, span, "a chamfer or corner arc next to an arc (G02/G03) is not simulated by ncsight yet (G01 to G01 only)");
-                step.out.comp_error.get_or_insert(d);
-                return;
-            }
-            let t_of = |u1: P2, u2: P2| {
-                if c.round {
-                    // Tangent to both: D tan(half the turn) from the corner.
-                    c.size_mm * u1.cross(u2).abs() / (1.0 + u1.dot(u2))
-                } else if c.from_corner {
-                    c.size_mm
-                } else {
-                    c.size_mm / u1.plus(u2).len()
-                }
-            };
-            if let Some((a, b, arc)) = comp::chamfer_points(&hseg, &seg, &t_of, c.round.then_some(c.size_mm)) {
-                // Case 2: the chamfer cannot join the two moves (the held move starts where an
-                // earlier chamfer ended, if one did).
-                let t = a.dist(hseg.to());
-                let held_length = comp::local(&step.st.comp.held_start, plane).dist(hseg.to());
-                if !t.is_finite() || t > held_length + 1e-9 || t > seg.from().dist(seg.to()) + 1e-9 {
-                    let needs = if t.is_finite() { format!("needs {} mm of each move, more than a move has", crate::alarm::shown(t, 4)) } else { "cannot join two moves that turn straight back".to_string() };
-                    let msg = format!("{}{}: the corner {needs} (GSK980TDi help text, chamfer function, case 2; FANUC alarm 055)", read::address_name(c.letter), crate::alarm::shown(c.size_mm, 4));
-                    let d = step.alarm(Rule::CornerTooLarge, c.span, msg);
-                    step.out.comp_error.get_or_insert(d);
-                    return;
-                }
-                // The held move, its chamfer, then what waited behind the move (an S, an M code).
-                let (a3, b3) = (comp::with_local(&start3, a, plane), comp::with_local(&start3, b, plane));
-                let feed = feed_of(&held.op);
-                let link = match arc {
-                    Some((centre, ccw)) => Op::Arc { from: a3, to: b3, center: comp::with_local(&start3, centre, plane), plane, dir: if ccw { ArcDir::Ccw } else { ArcDir::Cw }, feed_mm_min: feed },
-                    None => Op::Feed { from: a3, to: b3, feed_mm_min: feed },
-                };
-                chamfer = Some((link, b));
-                next_start = b3;
-                end = a;
-            }
-        }
-        if let Err(e) = make_held(step, end, chamfer) {
-            return fail(step, e, held.span);
-        }
-    } else if let Some(a) = step.st.comp.actual.take() {
-        next_start = a;
-    }
-    step.st.comp.held_start = next_start;
-    step.st.comp.held_startup = false;
-    step.st.comp.held_corner = step.st.comp.corner_for_next.take();
-    step.out.comp_plane_move = true;
-    step.queue.push(Record::of_block(span, n, op));
 }
 
 /// G39 (FANUC 0i-M manual, corner circular interpolation): the corner between the move held
@@ -512,17 +353,7 @@ pub(super) fn end_of_block(step: &mut Step) -> Result<(), Diagnostic> {
         step.st.comp.side = 0;
         return Ok(());
     }
-    if let Some(held) = step.st.comp.angle_line {
-        return super::drawing::end_of_block(step, held);
-    }
-    if step.st.comp.side == 0 || step.contour {
-        // A chamfer's move waits for the next block's move; anything else is made now.
-        if !step.queue.is_empty() && !step.st.comp.held_corner.is_some_and(|c| c.span == step.span) {
-            break_off(step);
-        }
-        return Ok(());
-    }
-    if step.queue.is_empty() || step.out.comp_plane_move {
+    if step.st.comp.side == 0 || step.queue.is_empty() || step.out.comp_plane_move {
         return Ok(());
     }
     step.st.comp.idle_blocks = step.st.comp.idle_blocks.saturating_add(1);

@@ -9,7 +9,7 @@
 //! yet; what comes between (at most one block without a move: note 7) waits behind it, and the
 //! next block's line sets its end.
 
-use super::{comp, Step, Words};
+use super::{corner, Step, Words};
 use crate::alarm::{shown, Diagnostic, Rule};
 use crate::comp::{self as geometry, DrawingError};
 use crate::modal::{AngleLine, Motion};
@@ -38,7 +38,7 @@ pub(super) fn line(step: &mut Step, rules: DrawingRules, angle: Option<(f64, &Wo
     let plane = step.st.plane;
     let (ia, ib, _) = plane.axes();
     if let Some(held) = step.st.comp.angle_line {
-        return close(step, held, angle, target, given[ia] && given[ib] && absolute[ia] && absolute[ib]).map(Some);
+        return close(step, held, angle, target, given, given[ia] && given[ib] && absolute[ia] && absolute[ib]).map(Some);
     }
     let Some((deg, w)) = angle else {
         return Ok(Some(target));
@@ -57,7 +57,7 @@ pub(super) fn line(step: &mut Step, rules: DrawingRules, angle: Option<(f64, &Wo
             Ok(Some(target))
         }
         (false, false) => {
-            open(step, deg, w)?;
+            open(step, deg, w, target)?;
             Ok(None)
         }
         (a_given, _) => {
@@ -86,11 +86,10 @@ fn plane_names(plane: Plane) -> (&'static str, &'static str) {
     (name(a), name(b))
 }
 
-/// A line given by its angle alone: held, pointing along its angle, until the next block.
-fn open(step: &mut Step, deg: f64, w: &Word) -> Result<(), Diagnostic> {
-    let why = if step.st.comp.side != 0 && !step.contour {
-        Some("in nose radius compensation")
-    } else if step.bypass_comp && !step.contour {
+/// A line given by its angle alone: held, pointing along its angle, until the next block. An
+/// axis off the plane in its block (`target`) moves with it.
+fn open(step: &mut Step, deg: f64, w: &Word, target: Vec3) -> Result<(), Diagnostic> {
+    let why = if step.bypass_comp && !step.contour {
         Some("in a block that radius compensation does not act in (a T word, a cycle)")
     } else if step.carry.is_some() || step.st.polar_interp.is_some() {
         Some("under a coordinate transform or G12.1/G07.1")
@@ -102,20 +101,24 @@ fn open(step: &mut Step, deg: f64, w: &Word) -> Result<(), Diagnostic> {
     }
     let plane = step.st.plane;
     let from = step.st.pos;
-    let reach = geometry::with_local(&from, geometry::local(&from, plane).plus(geometry::direction(deg).scale(UNKNOWN_REACH_MM)), plane);
+    // The line starts where the controller shows the tool (a tool offset's movement not made
+    // yet is made with it, as with any move).
+    let start = geometry::local(&target, plane);
+    let reach = geometry::with_local(&target, start.plus(geometry::direction(deg).scale(UNKNOWN_REACH_MM)), plane);
+    step.st.frame.unmoved = Vec3::default();
     let op = match step.st.motion {
         Motion::Rapid => Op::Rapid { from, to: reach },
         // Under G96 the feed per minute is the start point's (the end is not known yet).
         _ => Op::Feed { from, to: reach, feed_mm_min: step.cutting_feed(super::What::Code(crate::profile::GFn::Linear), &|_| from)? },
     };
-    comp::take(step, step.span, step.n, op);
-    step.st.comp.angle_line = Some(AngleLine { angle_deg: deg, from, span: step.span, between: 0 });
+    corner::take(step, step.span, step.n, op);
+    step.st.comp.angle_line = Some(AngleLine { angle_deg: deg, from: target, span: step.span, between: 0 });
     Ok(())
 }
 
 /// The block after a line of an angle alone: its absolute end point and its angle give its line;
 /// the held line ends where the two meet, and this block's line starts there.
-fn close(step: &mut Step, held: AngleLine, angle: Option<(f64, &Word)>, target: Vec3, end_given: bool) -> Result<Vec3, Diagnostic> {
+fn close(step: &mut Step, held: AngleLine, angle: Option<(f64, &Word)>, target: Vec3, given: [bool; 3], end_given: bool) -> Result<Vec3, Diagnostic> {
     let plane = step.st.plane;
     let names = plane_names(plane);
     let Some((deg, w)) = angle.filter(|_| end_given) else {
@@ -138,23 +141,15 @@ fn close(step: &mut Step, held: AngleLine, angle: Option<(f64, &Word)>, target: 
             return Err(step.alarm(Rule::DrawingNoSolution, w.span, msg));
         }
     };
-    // The line before runs along its angle from its start (the direction its angle gives:
-    // inferred from the FANUC forms' drawings).
-    if meet.minus(start).dot(u) <= 1e-9 {
-        let msg = format!(
-            "{}: the two lines meet behind the start of the line before (its angle points away from where they meet; FANUC alarm 057)",
-            w.text()
-        );
-        return Err(step.alarm(Rule::DrawingNoSolution, w.span, msg));
-    }
-    // A chamfer or corner arc before it took the start of the held line: it must leave some.
-    let held_start = geometry::local(&step.st.comp.held_start, plane);
-    if meet.minus(held_start).dot(u) < -1e-9 {
-        let msg = format!("the corner before the line of an angle alone needs more of it than it has (it ends {} mm from its start)", shown(meet.dist(start), 4));
+    // A line runs either way along its angle, as in form 1. A chamfer or corner arc before it
+    // was made for the way its angle points: it must leave some of the line that way.
+    let held_start = geometry::local(&step.st.comp.corner_start, plane);
+    if held_start.dist(start) > 1e-9 && meet.minus(held_start).dot(u) < -1e-9 {
+        let msg = format!("the corner before this line (its angle alone) needs more of it than it has: it ends {} mm from the corner", shown(meet.dist(start), 4));
         return Err(step.alarm(Rule::CornerTooLarge, held.span, msg));
     }
     let end = geometry::with_local(&held.from, meet, plane);
-    let first = step.queue.first_mut().expect("a line of an angle alone is held in the queue");
+    let first = step.corners.first_mut().expect("a line of an angle alone is held in the corner stage");
     first.op = match first.op {
         Op::Rapid { from, .. } => Op::Rapid { from, to: end },
         Op::Feed { from, feed_mm_min, .. } => Op::Feed { from, to: end, feed_mm_min },
@@ -162,6 +157,14 @@ fn close(step: &mut Step, held: AngleLine, angle: Option<(f64, &Word)>, target: 
     };
     step.st.comp.angle_line = None;
     step.st.pos = end;
+    // This block's axes not written count from there.
+    let (ia, ib, _) = plane.axes();
+    let mut target = target;
+    for axis in [0, 1, 2] {
+        if axis != ia && axis != ib && !given[axis] {
+            target.set_axis(axis, end.axis(axis));
+        }
+    }
     Ok(target)
 }
 
@@ -184,7 +187,7 @@ pub(super) fn end_of_block(step: &mut Step, mut held: AngleLine) -> Result<(), D
 
 /// A move or a break that the held line of an angle alone cannot take: the block alarms.
 pub(super) fn refuse(step: &mut Step) {
-    let msg = "the line before (its angle alone) ends where it meets the next line: this block gives a G01 line with its absolute end point and its angle (GSK980TDi help text, angle programming note 6; FANUC alarm 056)";
+    let msg = "the line before (its angle alone) ends where it meets the next line: this block gives that line (G01) with its absolute end point and its angle (GSK980TDi help text, angle programming note 6; FANUC alarm 056)";
     let d = step.alarm(Rule::DrawingEndMissing, step.span, msg);
     step.out.comp_error.get_or_insert(d);
 }

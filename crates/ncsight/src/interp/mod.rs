@@ -5,6 +5,7 @@
 mod call;
 mod comp;
 mod compound;
+mod corner;
 mod curve;
 mod drawing;
 mod polar;
@@ -124,6 +125,8 @@ pub struct Interpreter {
     tables: Tables,
     /// Radius compensation's held move and the records waiting behind it.
     comp_queue: Vec<Record>,
+    /// The corner stage's held records.
+    corner_queue: Vec<Record>,
     state: Modal,
     switches: Switches,
     /// A G71/G72 block is collecting its contour blocks (they follow it).
@@ -164,6 +167,9 @@ struct Step<'a> {
     tables: &'a Tables,
     /// Radius compensation's held records.
     queue: &'a mut Vec<Record>,
+    /// The corner stage's held records (a move waiting for its chamfer, a line of an angle
+    /// alone, what waits behind them).
+    corners: &'a mut Vec<Record>,
     /// This block runs outside radius compensation (a cycle, a reference return...).
     bypass_comp: bool,
     /// A G71-G73 contour's blocks worked out for roughing: the programmed path, its corners
@@ -216,11 +222,12 @@ impl Step<'_> {
         };
         // Radius compensation: the move goes through the look-ahead stage; a move outside it
         // starts where the tool is.
-        // A chamfer or corner arc (GSK980TDi L, D) holds its move in the same stage until the
-        // next move shows the corner.
-        let corner = self.st.comp.corner_for_next.is_some() || (!self.queue.is_empty() && (self.st.comp.side == 0 || self.contour));
-        let stage = if self.contour { corner } else { (self.st.comp.side != 0 || corner) && !self.bypass_comp };
-        if stage {
+        // A chamfer or corner arc (GSK980TDi L, D; FANUC ,C ,R) holds its move in the corner
+        // stage first, until the next move shows the corner.
+        if corner::active(self) && (!self.bypass_comp || self.contour || corner::waits(self, &op)) {
+            return corner::take(self, span, n, op);
+        }
+        if self.st.comp.side != 0 && !self.bypass_comp {
             return comp::take(self, span, n, op);
         }
         let op = if self.st.comp.actual.is_some() { comp::from_actual(self, span, n, op) } else { op };
@@ -481,7 +488,7 @@ impl Step<'_> {
 impl Interpreter {
     pub fn new(params: Params, switches: Switches) -> Interpreter {
         let profile = params.profile();
-        Interpreter { profile, state: Modal::power_on(profile), params, tables: Tables::none(profile), comp_queue: Vec::new(), switches, collecting: None, contours: Vec::new(), replaying: false }
+        Interpreter { profile, state: Modal::power_on(profile), params, tables: Tables::none(profile), comp_queue: Vec::new(), corner_queue: Vec::new(), switches, collecting: None, contours: Vec::new(), replaying: false }
     }
 
     /// Take the machine's tables from a setup (before the first block): the offsets, reference
@@ -551,11 +558,11 @@ impl Interpreter {
 
     fn flush_into(&mut self, out: &mut Outcome, with_comp: bool) {
         out.clear();
-        if self.state.thread.pending.is_none() && (!with_comp || self.comp_queue.is_empty()) {
+        if self.state.thread.pending.is_none() && (!with_comp || (self.comp_queue.is_empty() && self.corner_queue.is_empty())) {
             return;
         }
         let repair = self.switches.repair_position;
-        let mut step = Step { profile: self.profile, params: &self.params, tables: &self.tables, queue: &mut self.comp_queue, bypass_comp: false, contour: false, repair, span: Span::default(), n: None, st: &mut self.state, carry: None, out };
+        let mut step = Step { profile: self.profile, params: &self.params, tables: &self.tables, queue: &mut self.comp_queue, corners: &mut self.corner_queue, bypass_comp: false, contour: false, repair, span: Span::default(), n: None, st: &mut self.state, carry: None, out };
         if let Some(p) = step.st.thread.pending.take() {
             step.bypass_comp = true;
             thread::flush(&mut step, p, true);
@@ -564,7 +571,7 @@ impl Interpreter {
         // A line of an angle alone has no end: the next block alarmed (and said so), or the
         // input ended without M30 (W13). It is not made; what waited behind it still happens.
         if let (true, Some(_)) = (with_comp, step.st.comp.angle_line.take()) {
-            let rest: Vec<Record> = step.queue.drain(..).skip(1).collect();
+            let rest: Vec<Record> = step.corners.drain(..).skip(1).collect();
             for rec in rest {
                 step.push_record(rec.span, rec.n, rec.op);
             }
@@ -572,6 +579,8 @@ impl Interpreter {
         // The input ended (or the next block alarmed) in compensation: the held move ends
         // perpendicular.
         if with_comp {
+            corner::break_off(&mut step);
+            step.corners.clear();
             comp::break_off(&mut step);
             // A held move that cannot be made was the next block's alarm already (or, at the
             // end of the input, ends where the path stops): not told twice.
@@ -604,8 +613,9 @@ impl Interpreter {
         }
         let before = self.state;
         let queue_before = if self.comp_queue.is_empty() { None } else { Some(self.comp_queue.clone()) };
+        let corners_before = if self.corner_queue.is_empty() { None } else { Some(self.corner_queue.clone()) };
         let repair = self.switches.repair_position;
-        let mut step = Step { profile: self.profile, params: &self.params, tables: &self.tables, queue: &mut self.comp_queue, bypass_comp: false, contour: false, repair, span: block.span, n: block.sequence, st: &mut self.state, carry: None, out };
+        let mut step = Step { profile: self.profile, params: &self.params, tables: &self.tables, queue: &mut self.comp_queue, corners: &mut self.corner_queue, bypass_comp: false, contour: false, repair, span: block.span, n: block.sequence, st: &mut self.state, carry: None, out };
         let result = run_block(&mut step, block, self.switches).and_then(|()| {
             if step.out.emitted > MAX_MOTIONS_PER_BLOCK {
                 return Err(step.alarm(
@@ -630,6 +640,9 @@ impl Interpreter {
         // Compensation's block end and the stage's or the limits' alarm (rare: tested before
         // anything is moved).
         let mut result = result;
+        if result.is_ok() && (!step.corners.is_empty() || step.st.ended) {
+            result = corner::end_of_block(&mut step);
+        }
         if result.is_ok() && (!step.queue.is_empty() || step.st.ended) {
             result = comp::end_of_block(&mut step);
         }
@@ -646,16 +659,17 @@ impl Interpreter {
             step.out.clear();
             self.state = before;
             self.comp_queue = queue_before.unwrap_or_default();
+            self.corner_queue = corners_before.unwrap_or_default();
             return Err(d);
         }
         // Single block stops after the block's last record (a held-back thread run end carries
         // its own mark). In radius compensation a block's move is made during a later block: each
         // block's last record made here is its end, unless a move of it is still held.
-        if !step.out.comp_spans.is_empty() {
+        if !step.out.comp_spans.is_empty() || !step.queue.is_empty() || !step.corners.is_empty() {
             // Marked: this block's last record and the last of each block whose moves the
             // compensation stage made here, unless a move of it is still held (a thread run left
             // open keeps its own mark). Backwards, once per span.
-            let held: Vec<Span> = step.queue.iter().map(|r| r.span).collect();
+            let held: Vec<Span> = step.queue.iter().chain(step.corners.iter()).map(|r| r.span).collect();
             let mut wanted: Vec<Span> = step.out.comp_spans.clone();
             wanted.push(block.span);
             wanted.retain(|s| !held.contains(s));
@@ -687,6 +701,7 @@ impl Interpreter {
             if self.replaying {
                 self.state = before;
                 self.comp_queue = queue_before.unwrap_or_default();
+                self.corner_queue = corners_before.unwrap_or_default();
                 out.clear();
                 return Err(self.contour_alarm(Rule::ContourCommand, block.span, format!("{} cannot run inside the contour that G70 is finishing", req.kind.code())));
             }
@@ -696,6 +711,7 @@ impl Interpreter {
             if let Err(d) = self.finish_contour(req, out) {
                 self.state = before;
                 self.comp_queue = queue_before.unwrap_or_default();
+                self.corner_queue = corners_before.unwrap_or_default();
                 out.clear();
                 return Err(d);
             }
@@ -949,13 +965,10 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
     // return, a coordinate change or a T word runs uncompensated; the compensated path ends
     // before it (GSK980TDi help text, G40-G42 notes 5-6; FANUC threading likewise, inferred).
     // A chamfer's held move is made before the plane or the C-axis interpolation changes.
-    if step.st.comp.side == 0
-        && !step.queue.is_empty()
-        && last_of.iter().any(|(_, _, g)| matches!(g.function, GFn::PolarInterpolation(_) | GFn::CylindricalInterpolation | GFn::PlaneXY | GFn::PlaneZX | GFn::PlaneYZ))
-    {
-        comp::break_off(step);
+    if !step.corners.is_empty() && last_of.iter().any(|(_, _, g)| matches!(g.function, GFn::PolarInterpolation(_) | GFn::CylindricalInterpolation | GFn::PlaneXY | GFn::PlaneZX | GFn::PlaneYZ)) {
+        corner::break_off(step);
     }
-    if step.st.comp.side != 0 || !step.queue.is_empty() {
+    if step.st.comp.side != 0 || !step.queue.is_empty() || !step.corners.is_empty() {
         let suspends = |f: GFn| {
             matches!(
                 f,
@@ -985,6 +998,7 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
         let plain_motion = last_of.iter().any(|(_, _, g)| matches!(g.function, GFn::Rapid | GFn::Linear | GFn::ArcCw | GFn::ArcCcw));
         let mode_suspends = !plain_motion && (matches!(step.st.motion, Motion::Thread(_) | Motion::Box(_)) || step.st.drill.kind.is_some());
         if let Some((_, w, g)) = last_of.iter().find(|(_, _, g)| suspends(g.function)) {
+            corner::break_off(step);
             comp::break_off(step);
             step.bypass_comp = true;
             // GSK980TDi help text, G40-G42 note 6: G71-G73 cancel the mode; the finishing
@@ -1001,6 +1015,11 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
                 step.warn(Rule::NotSimulated, w.span, msg);
             }
         } else if mode_suspends || words.has(b'T') {
+            // A T block without a move waits behind the corner stage's held move, as an M code
+            // does (a line of an angle alone allows one such block: docs/commands/drawing.md).
+            if mode_suspends || b"XYZUVW".iter().any(|l| words.has(*l)) {
+                corner::break_off(step);
+            }
             comp::break_off(step);
             step.bypass_comp = true;
         }
@@ -1830,7 +1849,7 @@ fn emit_rotary(step: &mut Step, to_deg: [f64; 3], rapid: bool, rate_per_unit: f6
 fn motion(step: &mut Step, words: &mut Words) -> Result<(), Diagnostic> {
     if let Some(rules) = step.profile.frame.drawing {
         if matches!(step.st.motion, Motion::Linear | Motion::ArcCw | Motion::ArcCcw) {
-            comp::corner_words(step, words, rules)?;
+            corner::words(step, words, rules)?;
         }
     }
     let rotary = if matches!(step.st.motion, Motion::Rapid | Motion::Linear) { rotary_target(step, words)? } else { None };

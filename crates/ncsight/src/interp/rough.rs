@@ -220,8 +220,8 @@ impl Interpreter {
         // no record).
         let mut after_ns = None;
         let mut comp_at_ns = st.comp;
-        // The look-ahead stage's held move (a chamfer's, a line of an angle alone) across blocks.
-        let mut queue = Vec::new();
+        // The corner stage's held move (a chamfer's, a line of an angle alone) across blocks.
+        let (mut no_queue, mut corners) = (Vec::new(), Vec::new());
         for (k, b) in blocks.iter().enumerate() {
             if b.block_delete && self.switches.block_delete {
                 continue;
@@ -236,10 +236,10 @@ impl Interpreter {
             }
             // The contour is the programmed one (compensation of the finishing shape: docs/compensation.md);
             // its chamfers and corner arcs are made as in a run (docs/commands/drawing.md).
-            let mut step = Step { profile: self.profile, params: &self.params, tables: &self.tables, queue: &mut queue, bypass_comp: true, contour: true, repair: None, span: b.span, n: b.sequence, st: &mut st, carry: None, out: &mut scratch };
+            let mut step = Step { profile: self.profile, params: &self.params, tables: &self.tables, queue: &mut no_queue, corners: &mut corners, bypass_comp: true, contour: true, repair: None, span: b.span, n: b.sequence, st: &mut st, carry: None, out: &mut scratch };
             run_block(&mut step, b, self.switches)?;
-            if !step.queue.is_empty() {
-                super::comp::end_of_block(&mut step)?;
+            if !step.corners.is_empty() {
+                super::corner::end_of_block(&mut step)?;
             }
             if let Some(d) = step.out.comp_error.take() {
                 return Err(d);
@@ -271,9 +271,9 @@ impl Interpreter {
                 };
                 return Err(self.contour_alarm(Rule::ContourEndsInCorner, last.span, format!("{code}: the contour's last block leaves {what} without the move that ends it (FANUC alarm 069)")));
             }
-            if !queue.is_empty() {
-                let mut step = Step { profile: self.profile, params: &self.params, tables: &self.tables, queue: &mut queue, bypass_comp: true, contour: true, repair: None, span: last.span, n: last.sequence, st: &mut st, carry: None, out: &mut scratch };
-                super::comp::break_off(&mut step);
+            if !corners.is_empty() {
+                let mut step = Step { profile: self.profile, params: &self.params, tables: &self.tables, queue: &mut no_queue, corners: &mut corners, bypass_comp: true, contour: true, repair: None, span: last.span, n: last.sequence, st: &mut st, carry: None, out: &mut scratch };
+                super::corner::break_off(&mut step);
             }
         }
         // Help text notes 1 and 2: the ns block makes one G00 or G01 move.
@@ -404,7 +404,7 @@ impl Interpreter {
     fn emit_cycle(&mut self, req: &RoughRequest, ops: Vec<Op>, out: &mut Outcome) -> Result<(), Diagnostic> {
         let code = req.kind.code();
         let before = self.state.clone();
-        let mut step = Step { profile: self.profile, params: &self.params, tables: &self.tables, queue: &mut self.comp_queue, bypass_comp: true, contour: false, repair: None, span: req.span, n: req.n, st: &mut self.state, carry: None, out };
+        let mut step = Step { profile: self.profile, params: &self.params, tables: &self.tables, queue: &mut self.comp_queue, corners: &mut self.corner_queue, bypass_comp: true, contour: false, repair: None, span: req.span, n: req.n, st: &mut self.state, carry: None, out };
         let result = ops.into_iter().try_for_each(|op| step.emit_cut(code, op)).and_then(|()| {
             // The per-block limit (the cycle's moves come here, not through `execute_into`).
             if step.out.emitted > super::MAX_MOTIONS_PER_BLOCK {
@@ -465,7 +465,8 @@ impl Interpreter {
         let from = self.state.pos;
         let before = self.state;
         let mut scratch = Outcome::default();
-        let mut step = Step { profile: self.profile, params: &self.params, tables: &self.tables, queue: &mut self.comp_queue, bypass_comp: true, contour: false, repair: None, span: req.span, n: req.n, st: &mut self.state, carry: None, out: &mut scratch };
+        let mut step = Step { profile: self.profile, params: &self.params, tables: &self.tables, queue: &mut self.comp_queue, corners: &mut self.corner_queue, bypass_comp: true, contour: false, repair: None, span: req.span, n: req.n, st: &mut self.state, carry: None, out: &mut scratch };
+        super::corner::break_off(&mut step);
         super::comp::break_off(&mut step);
         if from != req.start || step.st.comp.actual.is_some() {
             step.emit(Op::Rapid { from, to: req.start });

@@ -1665,7 +1665,7 @@ impl Core {
                 b'H' => 11,
                 b'M' => 13,
                 l @ b'Q'..=b'Z' => 17 + (l - b'Q') as usize,
-                _ => return Err(Diagnostic::new(Rule::ArgumentAddress, style, w.span, format!("{}: {} is not a {code} argument", w.text(), w.letter as char))),
+                _ => return Err(Diagnostic::new(Rule::ArgumentAddress, style, w.span, format!("{}: {} is not a {code} argument", w.text(), crate::read::address_name(w.letter)))),
             };
             if slot > 33 {
                 return Err(Diagnostic::new(Rule::ArgumentAddress, style, w.span, format!("{}: more than ten I J K sets", w.text())));

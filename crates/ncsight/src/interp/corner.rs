@@ -1,0 +1,219 @@
+//! The corner stage (docs/commands/chamfer.md, drawing.md): a move whose block asks for a
+//! chamfer or a corner arc (GSK980TDi L, D; FANUC 0-T ,C ,R) is held until the next block's move
+//! shows the corner; a line given by its angle alone is held until the next block gives its end
+//! (interp/drawing.rs). The stage works on the programmed path; what it makes goes on to radius
+//! compensation's look-ahead (interp/comp.rs) when that is on, else out. Records that come while
+//! a move is held (a move along the normal axis, a dwell, an M code) wait behind it, so the
+//! stream stays in time order. The held records live in the interpreter's corner queue
+//! (restored when a block alarms); the scalar state in `Modal::comp`.
+
+use super::{comp, Step};
+use crate::alarm::{Diagnostic, Rule};
+use crate::comp::{self as geometry, Seg};
+use crate::motion::{ArcDir, Op, Record};
+use crate::read;
+use crate::source::Span;
+
+/// A chamfer or corner arc asked for in a G01/G02/G03 block: the corner between this block's
+/// move and the next. ncsight makes it between two straight moves (G01 to G01); with an arc on
+/// either side it is not simulated yet.
+pub(super) fn words(step: &mut Step, words: &mut super::Words, rules: crate::profile::DrawingRules) -> Result<(), Diagnostic> {
+    let (l, d) = (words.take(rules.chamfer), words.take(rules.round));
+    let (w, round) = match (l, d) {
+        (None, None) => return Ok(()),
+        (Some(a), Some(b)) => {
+            // FANUC alarm 053 is for two of I, K, R; here: one corner, one word (inferred).
+            return Err(step.alarm(Rule::DuplicateWord, b.span, format!("{} and {}: a corner is a chamfer ({}) or an arc ({}), not both", a.text(), b.text(), read::address_name(rules.chamfer), read::address_name(rules.round))));
+        }
+        (Some(w), None) => (w, false),
+        (None, Some(w)) => (w, true),
+    };
+    let size = step.length(w)?;
+    if size <= 0.0 {
+        return Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("{}: a chamfer or corner arc is longer than 0", w.text())));
+    }
+    if step.bypass_comp && !step.contour {
+        return Err(step.alarm(Rule::NotSupported, w.span, format!("{}: a chamfer or corner arc in a block that radius compensation does not act in (a T word, a cycle) is not simulated by ncsight yet", w.text())));
+    }
+    if step.st.motion != crate::modal::Motion::Linear {
+        return Err(step.alarm(Rule::NotSupported, w.span, format!("{}: a chamfer or corner arc at the end of an arc (G02/G03) is not simulated by ncsight yet (G01 to G01 only)", w.text())));
+    }
+    let from_corner = rules.chamfer_type.is_none_or(|key| step.params.get(key) != 0.0);
+    step.st.comp.corner_for_next = Some(crate::modal::CornerRequest { letter: w.letter, size_mm: size, round, from_corner, span: step.span });
+    Ok(())
+}
+
+/// The stage is at work: a corner is asked for, or a move is held.
+pub(super) fn active(step: &Step) -> bool {
+    step.st.comp.corner_for_next.is_some() || !step.corners.is_empty()
+}
+
+/// A record that is no move in the plane waits behind a held move, whatever its block (a T
+/// word's tool record too).
+pub(super) fn waits(step: &Step, op: &Op) -> bool {
+    !step.corners.is_empty() && Seg::of(op, step.st.plane).is_none_or(|s| s.is_point())
+}
+
+/// A record the stage takes: a move in the plane is held (the one held before is made, with
+/// the corner between); anything else waits behind a held move, or goes on now.
+pub(super) fn take(step: &mut Step, span: Span, n: Option<u32>, op: Op) {
+    match Seg::of(&op, step.st.plane) {
+        Some(seg) if !seg.is_point() => plane_move(step, span, n, op, seg),
+        _ if !step.corners.is_empty() => step.corners.push(Record::of_block(span, n, op)),
+        _ => pass(step, span, n, op),
+    }
+}
+
+/// A record the stage has made (or lets by) goes on: to compensation's look-ahead when that
+/// acts in this block, else out where the tool is.
+fn pass(step: &mut Step, span: Span, n: Option<u32>, op: Op) {
+    if span != step.span && !step.out.comp_spans.contains(&span) {
+        // Made during a later block: its block's single-block mark is placed here.
+        step.out.comp_spans.push(span);
+    }
+    if step.st.comp.side != 0 && !step.bypass_comp {
+        return comp::take(step, span, n, op);
+    }
+    let op = if step.st.comp.actual.is_some() { comp::from_actual(step, span, n, op) } else { op };
+    step.push_record(span, n, op);
+}
+
+/// Make the held move from where it starts to `end` (in the plane), then `then` (its chamfer
+/// or corner arc), then what waited behind it. The queue is left empty.
+fn make_held(step: &mut Step, end: geometry::P2, then: Option<Op>) {
+    let plane = step.st.plane;
+    let queue = std::mem::take(step.corners);
+    let Some((held, rest)) = queue.split_first() else {
+        return;
+    };
+    let from = step.st.comp.corner_start;
+    let to = geometry::with_local(&held.op.end_point().unwrap_or_default(), end, plane);
+    let made = match held.op {
+        Op::Rapid { .. } => Op::Rapid { from, to },
+        Op::Feed { feed_mm_min, .. } => Op::Feed { from, to, feed_mm_min },
+        other => other,
+    };
+    pass(step, held.span, held.n, made);
+    if let Some(link) = then {
+        pass(step, held.span, held.n, link);
+    }
+    for rec in rest {
+        pass(step, rec.span, rec.n, rec.op.clone());
+    }
+    let mut reuse = queue;
+    reuse.clear();
+    *step.corners = reuse;
+}
+
+/// A move in the plane while the stage is at work: the move held is made to the chamfer's start,
+/// the chamfer (a line, or an arc tangent to both moves), and this move waits from its end; a
+/// move held without a chamfer is made whole.
+fn plane_move(step: &mut Step, span: Span, n: Option<u32>, op: Op, seg: Seg) {
+    if step.st.comp.angle_line.is_some() {
+        return super::drawing::refuse(step);
+    }
+    let plane = step.st.plane;
+    let start3 = op.start_point().unwrap_or_default();
+    let mut next_start = start3;
+    if let Some(held) = step.corners.first().cloned() {
+        let hseg = Seg::of(&held.op, plane).expect("the corner queue's first record is a move in the plane");
+        let mut end = hseg.to();
+        let mut chamfer = None;
+        let mut corner = step.st.comp.held_corner.take();
+        let strict = step.profile.frame.drawing.is_some_and(|d| d.corner_needs_g01);
+        if let (Some(c), true) = (corner, strict && !matches!(op, Op::Feed { .. })) {
+            // FANUC alarm 052: the block after a chamfer or corner R is a G01.
+            let d = step.alarm(Rule::CornerNotLinear, span, format!("{} asks for a corner with a G01 move: this block's move is a {} (FANUC alarm 052)", c.word(), if matches!(op, Op::Rapid { .. }) { "G00" } else { "G02/G03" }));
+            step.out.comp_error.get_or_insert(d);
+            return;
+        }
+        if let (Some(c), Op::Rapid { .. }) = (corner, &op) {
+            // The help text joins G01, G02 and G03 moves: a G00 next gets no corner.
+            step.warn(Rule::TextIgnored, c.span, format!("{}: the next move is a G00: no corner is made", c.word()));
+            corner = None;
+        }
+        if let Some(c) = corner {
+            let lines = matches!((hseg, seg), (Seg::Line { .. }, Seg::Line { .. }));
+            if !lines {
+                let d = step.alarm(Rule::NotSupported, span, "a chamfer or corner arc next to an arc (G02/G03) is not simulated by ncsight yet (G01 to G01 only)");
+                step.out.comp_error.get_or_insert(d);
+                return;
+            }
+            let t_of = |u1: geometry::P2, u2: geometry::P2| {
+                if c.round {
+                    // Tangent to both: D tan(half the turn) from the corner.
+                    c.size_mm * u1.cross(u2).abs() / (1.0 + u1.dot(u2))
+                } else if c.from_corner {
+                    c.size_mm
+                } else {
+                    c.size_mm / u1.plus(u2).len()
+                }
+            };
+            if let Some((a, b, arc)) = geometry::chamfer_points(&hseg, &seg, &t_of, c.round.then_some(c.size_mm)) {
+                // Case 2: the chamfer cannot join the two moves (the held move starts where an
+                // earlier chamfer ended, if one did).
+                let t = a.dist(hseg.to());
+                let held_length = geometry::local(&step.st.comp.corner_start, plane).dist(hseg.to());
+                if !t.is_finite() || t > held_length + 1e-9 || t > seg.from().dist(seg.to()) + 1e-9 {
+                    let needs = if t.is_finite() { format!("needs {} mm of each move, more than a move has", crate::alarm::shown(t, 4)) } else { "cannot join two moves that turn straight back".to_string() };
+                    let msg = format!("{}{}: the corner {needs} (GSK980TDi help text, chamfer function, case 2; FANUC alarm 055)", read::address_name(c.letter), crate::alarm::shown(c.size_mm, 4));
+                    let d = step.alarm(Rule::CornerTooLarge, c.span, msg);
+                    step.out.comp_error.get_or_insert(d);
+                    return;
+                }
+                let (a3, b3) = (geometry::with_local(&start3, a, plane), geometry::with_local(&start3, b, plane));
+                let feed_mm_min = match held.op {
+                    Op::Feed { feed_mm_min, .. } => feed_mm_min,
+                    _ => 0.0,
+                };
+                chamfer = Some(match arc {
+                    Some((centre, ccw)) => Op::Arc { from: a3, to: b3, center: geometry::with_local(&start3, centre, plane), plane, dir: if ccw { ArcDir::Ccw } else { ArcDir::Cw }, feed_mm_min },
+                    None => Op::Feed { from: a3, to: b3, feed_mm_min },
+                });
+                next_start = b3;
+                end = a;
+            }
+        }
+        make_held(step, end, chamfer);
+    }
+    step.st.comp.corner_start = next_start;
+    step.st.comp.held_corner = step.st.comp.corner_for_next.take();
+    // The block made a move in the plane, though it waits here (compensation's look-ahead
+    // counts it as one).
+    step.out.comp_plane_move = true;
+    step.corners.push(Record::of_block(span, n, op));
+}
+
+/// The held move is made whole: no move follows it in time (a G00, a cycle, a block without a
+/// move, the programme's end). A corner it asked for is not made: warning NCS-W04, or on FANUC
+/// alarm 051.
+pub(super) fn break_off(step: &mut Step) {
+    // A line of an angle alone has no end yet: this block was to give it.
+    if step.st.comp.angle_line.is_some() {
+        return super::drawing::refuse(step);
+    }
+    if let Some(c) = step.st.comp.held_corner.take() {
+        if step.profile.frame.drawing.is_some_and(|d| d.corner_needs_g01) {
+            let d = step.alarm(Rule::CornerNoMove, step.span, format!("the block after {} makes no G01 move: the corner has no second move to join (FANUC alarm 051)", c.word()));
+            step.out.comp_error.get_or_insert(d);
+        } else {
+            step.warn(Rule::TextIgnored, c.span, format!("{}: no G01 move follows it: no corner is made", c.word()));
+        }
+    }
+    if let Some(held) = step.corners.first() {
+        let end = Seg::of(&held.op, step.st.plane).expect("the corner queue's first record is a move in the plane").to();
+        make_held(step, end, None);
+    }
+}
+
+/// After a block: a held move waits only for the block right after its own; a line of an angle
+/// alone for one block without a move at most.
+pub(super) fn end_of_block(step: &mut Step) -> Result<(), Diagnostic> {
+    if let Some(held) = step.st.comp.angle_line {
+        return super::drawing::end_of_block(step, held);
+    }
+    if step.st.ended || !step.st.comp.held_corner.is_some_and(|c| c.span == step.span) {
+        break_off(step);
+    }
+    Ok(())
+}
