@@ -150,25 +150,147 @@ pub enum CompError {
     ArcTooSmall,
 }
 
-/// A chamfer or corner arc between two straight moves (GSK980TDi help text, chamfer function):
-/// the points where it leaves the first and joins the second, and for an arc its centre and
-/// whether it turns counter-clockwise. `t` is how far those points lie from the corner. `None`
-/// when the moves go on in one direction (case 1: no chamfer).
-pub fn chamfer_points(first: &Seg, second: &Seg, t_of: &dyn Fn(P2, P2) -> f64, radius: Option<f64>) -> Option<(P2, P2, Option<(P2, bool)>)> {
+/// What a corner asks for between two moves (GSK980TDi help text, chamfer function: L, D;
+/// FANUC 0-T ,C ,R).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum CornerCut {
+    /// A chamfer whose ends lie this far from the corner (a chord on an arc).
+    FromCorner(f64),
+    /// A chamfer this long (its ends equally far from the corner).
+    Length(f64),
+    /// An arc of this radius tangent to both moves.
+    Round(f64),
+}
+
+/// Where a corner cut leaves the first move and joins the second, and for a round its centre
+/// and whether it turns counter-clockwise.
+pub type CornerPoints = (P2, P2, Option<(P2, bool)>);
+
+/// The angle swept from `s` to `e` about `center` in the arc's direction, 0..2 pi.
+fn arc_sweep(center: P2, ccw: bool, s: P2, e: P2) -> f64 {
+    let (a0, a1) = ((s.b - center.b).atan2(s.a - center.a), (e.b - center.b).atan2(e.a - center.a));
+    let d = if ccw { a1 - a0 } else { a0 - a1 };
+    d.rem_euclid(std::f64::consts::TAU)
+}
+
+/// The point of `seg` a chord `t` from its end (`back`) or its start; `None` past the move.
+fn along(seg: &Seg, t: f64, back: bool) -> Option<P2> {
+    match *seg {
+        Seg::Line { from, to } => {
+            let u = to.minus(from).unit();
+            (t <= from.dist(to) + 1e-9).then(|| if back { to.minus(u.scale(t)) } else { from.plus(u.scale(t)) })
+        }
+        Seg::Arc { from, to, center, ccw } => {
+            let r = from.dist(center);
+            if t > 2.0 * r {
+                return None;
+            }
+            let delta = 2.0 * (t / (2.0 * r)).asin();
+            if delta > arc_sweep(center, ccw, from, to) + 1e-12 {
+                return None;
+            }
+            // Forward on a counter-clockwise arc turns positively.
+            let (p, turn) = if back { (to, if ccw { -delta } else { delta }) } else { (from, if ccw { delta } else { -delta }) };
+            let v = p.minus(center);
+            let (sin, cos) = turn.sin_cos();
+            Some(center.plus(P2::new(v.a * cos - v.b * sin, v.a * sin + v.b * cos)))
+        }
+    }
+}
+
+/// The longest chord from an end of `seg` that stays on it.
+fn max_chord(seg: &Seg) -> f64 {
+    match *seg {
+        Seg::Line { from, to } => from.dist(to),
+        Seg::Arc { from, to, center, ccw } => {
+            let (r, sweep) = (from.dist(center), arc_sweep(center, ccw, from, to));
+            if sweep >= std::f64::consts::PI { 2.0 * r } else { 2.0 * r * (sweep / 2.0).sin() }
+        }
+    }
+}
+
+/// The point of `seg`'s line or circle nearest `c` (the foot of the perpendicular; on an arc's
+/// circle, along the ray from its centre), and whether it lies on the move.
+fn foot(seg: &Seg, c: P2) -> (P2, bool) {
+    match *seg {
+        Seg::Line { from, to } => {
+            let u = to.minus(from).unit();
+            let k = c.minus(from).dot(u);
+            (from.plus(u.scale(k)), k >= -1e-9 && k <= from.dist(to) + 1e-9)
+        }
+        Seg::Arc { from, to, center, ccw } => {
+            let q = center.plus(c.minus(center).unit().scale(from.dist(center)));
+            let whole = arc_sweep(center, ccw, from, to);
+            let at = arc_sweep(center, ccw, from, q);
+            (q, at <= whole + 1e-9 || at >= std::f64::consts::TAU - 1e-9)
+        }
+    }
+}
+
+/// A chamfer or corner arc between `first` (from where it starts now to the corner) and
+/// `second` (from the corner), each a line or an arc: where it leaves the first and joins the
+/// second. `Ok(None)` when the moves go on in one direction (case 1: no corner); `Err` when it
+/// needs more of a move than the move has (case 2), with how far from the corner it reaches.
+pub fn corner_cut(first: &Seg, second: &Seg, cut: CornerCut) -> Result<Option<CornerPoints>, f64> {
     let p = first.to();
     let (u1, u2) = (first.tangent(true), second.tangent(false));
     let (sin, cos) = (u1.cross(u2), u1.dot(u2));
     if sin.abs() < TANGENT_RAD && cos > 0.0 {
-        return None;
+        return Ok(None);
     }
-    let t = t_of(u1, u2);
-    let (a, b) = (p.minus(u1.scale(t)), p.plus(u2.scale(t)));
-    let arc = radius.map(|r| {
-        let ccw = sin > 0.0;
-        let n = if ccw { u1.left() } else { u1.left().scale(-1.0) };
-        (a.plus(n.scale(r)), ccw)
-    });
-    Some((a, b, arc))
+    let lines = matches!((first, second), (Seg::Line { .. }, Seg::Line { .. }));
+    let ccw = sin > 0.0;
+    let points = match cut {
+        CornerCut::Round(d) if lines => {
+            // Tangent to both: D tan(half the turn) from the corner.
+            let t = d * sin.abs() / (1.0 + cos);
+            let a = p.minus(u1.scale(t));
+            let n = if ccw { u1.left() } else { u1.left().scale(-1.0) };
+            (along(first, t, true).ok_or(t)?, along(second, t, false).ok_or(t)?, Some((a.plus(n.scale(d)), ccw)))
+        }
+        CornerCut::Round(d) => {
+            // The centre lies D inside both moves: where their offsets toward the turn meet.
+            let side = if ccw { 1.0 } else { -1.0 };
+            let centre = corner(first, second, side, d).map(|c| c.first_end).map_err(|_| f64::INFINITY)?;
+            let ((a, a_on), (b, b_on)) = (foot(first, centre), foot(second, centre));
+            if !(a_on && b_on) {
+                return Err(a.dist(p).max(b.dist(p)));
+            }
+            (a, b, Some((centre, ccw)))
+        }
+        CornerCut::FromCorner(t) => (along(first, t, true).ok_or(t)?, along(second, t, false).ok_or(t)?, None),
+        CornerCut::Length(l) if lines => {
+            let t = l / u1.plus(u2).len();
+            if !t.is_finite() {
+                return Err(t);
+            }
+            (along(first, t, true).ok_or(t)?, along(second, t, false).ok_or(t)?, None)
+        }
+        CornerCut::Length(l) => {
+            // Equal chords from the corner whose ends lie `l` apart: the gap grows with the
+            // chord, found by halving up to the longest chord both moves have.
+            let gap = |t: f64| match (along(first, t, true), along(second, t, false)) {
+                (Some(a), Some(b)) => a.dist(b),
+                _ => f64::INFINITY,
+            };
+            let longest = max_chord(first).min(max_chord(second));
+            if gap(longest * (1.0 - 1e-12)) < l {
+                return Err(longest);
+            }
+            let (mut lo, mut hi) = (0.0, longest * (1.0 - 1e-12));
+            for _ in 0..80 {
+                let mid = 0.5 * (lo + hi);
+                if gap(mid) < l {
+                    lo = mid;
+                } else {
+                    hi = mid;
+                }
+            }
+            let t = 0.5 * (lo + hi);
+            (along(first, t, true).ok_or(t)?, along(second, t, false).ok_or(t)?, None)
+        }
+    };
+    Ok(Some(points))
 }
 
 /// Two moves whose directions differ by less than this (radians) meet without a corner.
@@ -371,11 +493,7 @@ pub fn offset(seg: &Seg, start: P2, end: P2, side: f64, r: f64) -> Result<Seg, C
             if offset_radius(seg, side, r).is_none() {
                 return Err(CompError::ArcTooSmall);
             }
-            let sweep = |s: P2, e: P2| {
-                let (a0, a1) = ((s.b - center.b).atan2(s.a - center.a), (e.b - center.b).atan2(e.a - center.a));
-                let d = if ccw { a1 - a0 } else { a0 - a1 };
-                d.rem_euclid(std::f64::consts::TAU)
-            };
+            let sweep = |s: P2, e: P2| arc_sweep(center, ccw, s, e);
             // Corners only shorten an arc (an outer one ends it perpendicular, as programmed):
             // its start moves forward by a, its end back by b. When a + b is more than the
             // programmed sweep the two cross: the compensated arc would run backwards. (A

@@ -3,7 +3,7 @@
 //! the coordinate given; two lines that meet, meet on both; what they refuse is within the
 //! 1-degree tolerance of the notes.
 
-use ncsight::comp::{direction, end_by_angle, meet, P2, DRAWING_TOLERANCE_DEG};
+use ncsight::comp::{corner_cut, direction, end_by_angle, meet, CornerCut, Seg, P2, DRAWING_TOLERANCE_DEG};
 use proptest::prelude::*;
 
 /// How far `p` is from the line through `s` along `u` (a unit vector).
@@ -48,6 +48,72 @@ proptest! {
                 prop_assert!(off_line(p, e, direction(a2)) < 1e-7 * scale, "{p:?}");
             }
             Err(_) => prop_assert!(between(a1, a2) < DRAWING_TOLERANCE_DEG + 1e-9),
+        }
+    }
+}
+
+/// A move from `s`: a line to `e`, or an arc to `e` about a centre `k` times the half chord
+/// off the chord's middle (either side), turning either way.
+fn seg(s: P2, e: P2, arc: Option<(f64, bool)>) -> Seg {
+    match arc {
+        None => Seg::Line { from: s, to: e },
+        Some((k, ccw)) => {
+            let mid = s.plus(e).scale(0.5);
+            let half = e.minus(s).scale(0.5);
+            Seg::Arc { from: s, to: e, center: mid.plus(half.left().scale(k)), ccw }
+        }
+    }
+}
+
+/// `p` lies on the move (on its line within its length, or on its arc within its sweep).
+fn on(m: &Seg, p: P2) -> bool {
+    match *m {
+        Seg::Line { from, to } => {
+            let u = to.minus(from).unit();
+            let k = p.minus(from).dot(u);
+            off_line(p, from, u) < 1e-6 && k > -1e-6 && k < from.dist(to) + 1e-6
+        }
+        Seg::Arc { from, to, center, ccw } => {
+            let ang = |q: P2| (q.b - center.b).atan2(q.a - center.a);
+            let sweep = |a: f64, b: f64| if ccw { (b - a).rem_euclid(std::f64::consts::TAU) } else { (a - b).rem_euclid(std::f64::consts::TAU) };
+            let (whole, at) = (sweep(ang(from), ang(to)), sweep(ang(from), ang(p)));
+            (p.dist(center) - from.dist(center)).abs() < 1e-6 * (1.0 + from.dist(center)) && (at <= whole + 1e-6 || at > std::f64::consts::TAU - 1e-6)
+        }
+    }
+}
+
+fn kind() -> impl Strategy<Value = Option<(f64, bool)>> {
+    prop_oneof![Just(None), (-3.0..3.0f64, any::<bool>()).prop_map(Some)]
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 800, .. ProptestConfig::default() })]
+
+    /// Whatever two moves and corner: a chamfer's ends lie on the moves, as far from the
+    /// corner or as far apart as asked; a corner arc's ends lie on the moves, its centre its
+    /// radius from both ends, and it leaves and joins each move along it (tangent).
+    #[test]
+    fn corners_lie_on_their_moves(s in (-50.0..50.0f64, -50.0..50.0f64), p in (-50.0..50.0f64, -50.0..50.0f64), e in (-50.0..50.0f64, -50.0..50.0f64), k1 in kind(), k2 in kind(), size in 0.01..20.0f64, which in 0..3u8) {
+        let (s, p, e) = (P2::new(s.0, s.1), P2::new(p.0, p.1), P2::new(e.0, e.1));
+        prop_assume!(s.dist(p) > 0.1 && p.dist(e) > 0.1);
+        let (first, second) = (seg(s, p, k1), seg(p, e, k2));
+        let cut = [CornerCut::FromCorner(size), CornerCut::Length(size), CornerCut::Round(size)][which as usize];
+        if let Ok(Some((a, b, arc))) = corner_cut(&first, &second, cut) {
+            prop_assert!(on(&first, a), "{a:?} not on {first:?}");
+            prop_assert!(on(&second, b), "{b:?} not on {second:?}");
+            match (cut, arc) {
+                (CornerCut::FromCorner(t), None) => {
+                    prop_assert!((a.dist(p) - t).abs() < 1e-6 && (b.dist(p) - t).abs() < 1e-6);
+                }
+                (CornerCut::Length(l), None) => {
+                    prop_assert!((a.dist(b) - l).abs() < 1e-6 * (1.0 + l), "{} vs {l}", a.dist(b));
+                    prop_assert!((a.dist(p) - b.dist(p)).abs() < 1e-6);
+                }
+                (CornerCut::Round(d), Some((c, _))) => {
+                    prop_assert!((c.dist(a) - d).abs() < 1e-6 * (1.0 + d) && (c.dist(b) - d).abs() < 1e-6 * (1.0 + d), "{c:?} {a:?} {b:?}");
+                }
+                other => prop_assert!(false, "{other:?}"),
+            }
         }
     }
 }

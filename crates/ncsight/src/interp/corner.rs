@@ -14,9 +14,8 @@ use crate::motion::{ArcDir, Op, Record};
 use crate::read;
 use crate::source::Span;
 
-/// A chamfer or corner arc asked for in a G01/G02/G03 block: the corner between this block's
-/// move and the next. ncsight makes it between two straight moves (G01 to G01); with an arc on
-/// either side it is not simulated yet.
+/// A chamfer or corner arc asked for in a G01 block (G02/G03 too where the profile allows): the
+/// corner between this block's move and the next, each a line or an arc.
 pub(super) fn words(step: &mut Step, words: &mut super::Words, rules: crate::profile::DrawingRules) -> Result<(), Diagnostic> {
     let (l, d) = (words.take(rules.chamfer), words.take(rules.round));
     let (w, round) = match (l, d) {
@@ -35,9 +34,7 @@ pub(super) fn words(step: &mut Step, words: &mut super::Words, rules: crate::pro
     if step.bypass_comp && !step.contour {
         return Err(step.alarm(Rule::NotSupported, w.span, format!("{}: a chamfer or corner arc in a block that radius compensation does not act in (a T word, a cycle) is not simulated by ncsight yet", w.text())));
     }
-    if step.st.motion != crate::modal::Motion::Linear {
-        return Err(step.alarm(Rule::NotSupported, w.span, format!("{}: a chamfer or corner arc at the end of an arc (G02/G03) is not simulated by ncsight yet (G01 to G01 only)", w.text())));
-    }
+
     let from_corner = rules.chamfer_type.is_none_or(|key| step.params.get(key) != 0.0);
     step.st.comp.corner_for_next = Some(crate::modal::CornerRequest { letter: w.letter, size_mm: size, round, from_corner, span: step.span });
     Ok(())
@@ -91,6 +88,7 @@ fn make_held(step: &mut Step, end: geometry::P2, then: Option<Op>) {
     let made = match held.op {
         Op::Rapid { .. } => Op::Rapid { from, to },
         Op::Feed { feed_mm_min, .. } => Op::Feed { from, to, feed_mm_min },
+        Op::Arc { center, plane, dir, feed_mm_min, .. } => Op::Arc { from, to, center, plane, dir, feed_mm_min },
         other => other,
     };
     pass(step, held.span, held.n, made);
@@ -106,8 +104,9 @@ fn make_held(step: &mut Step, end: geometry::P2, then: Option<Op>) {
 }
 
 /// A move in the plane while the stage is at work: the move held is made to the chamfer's start,
-/// the chamfer (a line, or an arc tangent to both moves), and this move waits from its end; a
-/// move held without a chamfer is made whole.
+/// the chamfer (a line, or an arc tangent to both moves; GSK980TDi help text: line to line, line
+/// to arc, arc to arc, arc to line), and this move waits from its end; a move held without a
+/// chamfer is made whole.
 fn plane_move(step: &mut Step, span: Span, n: Option<u32>, op: Op, seg: Seg) {
     if step.st.comp.angle_line.is_some() {
         return super::drawing::refuse(step);
@@ -133,45 +132,42 @@ fn plane_move(step: &mut Step, span: Span, n: Option<u32>, op: Op, seg: Seg) {
             corner = None;
         }
         if let Some(c) = corner {
-            let lines = matches!((hseg, seg), (Seg::Line { .. }, Seg::Line { .. }));
-            if !lines {
-                let d = step.alarm(Rule::NotSupported, span, "a chamfer or corner arc next to an arc (G02/G03) is not simulated by ncsight yet (G01 to G01 only)");
-                step.out.comp_error.get_or_insert(d);
-                return;
-            }
-            let t_of = |u1: geometry::P2, u2: geometry::P2| {
-                if c.round {
-                    // Tangent to both: D tan(half the turn) from the corner.
-                    c.size_mm * u1.cross(u2).abs() / (1.0 + u1.dot(u2))
-                } else if c.from_corner {
-                    c.size_mm
-                } else {
-                    c.size_mm / u1.plus(u2).len()
-                }
+            let cut = if c.round {
+                geometry::CornerCut::Round(c.size_mm)
+            } else if c.from_corner {
+                geometry::CornerCut::FromCorner(c.size_mm)
+            } else {
+                geometry::CornerCut::Length(c.size_mm)
             };
-            if let Some((a, b, arc)) = geometry::chamfer_points(&hseg, &seg, &t_of, c.round.then_some(c.size_mm)) {
-                // Case 2: the chamfer cannot join the two moves (the held move starts where an
-                // earlier chamfer ended, if one did).
-                let t = a.dist(hseg.to());
-                let held_length = geometry::local(&step.st.comp.corner_start, plane).dist(hseg.to());
-                if !t.is_finite() || t > held_length + 1e-9 || t > seg.from().dist(seg.to()) + 1e-9 {
-                    let needs = if t.is_finite() { format!("needs {} mm of each move, more than a move has", crate::alarm::shown(t, 4)) } else { "cannot join two moves that turn straight back".to_string() };
+            // The held move as it is left: from where an earlier corner ended, if one did.
+            let from = geometry::local(&step.st.comp.corner_start, plane);
+            let first = match hseg {
+                Seg::Line { to, .. } => Seg::Line { from, to },
+                Seg::Arc { to, center, ccw, .. } => Seg::Arc { from, to, center, ccw },
+            };
+            match geometry::corner_cut(&first, &seg, cut) {
+                Ok(None) => {}
+                Ok(Some((a, b, arc))) => {
+                    let (a3, b3) = (geometry::with_local(&start3, a, plane), geometry::with_local(&start3, b, plane));
+                    let feed_mm_min = match held.op {
+                        Op::Feed { feed_mm_min, .. } | Op::Arc { feed_mm_min, .. } => feed_mm_min,
+                        _ => 0.0,
+                    };
+                    chamfer = Some(match arc {
+                        Some((centre, ccw)) => Op::Arc { from: a3, to: b3, center: geometry::with_local(&start3, centre, plane), plane, dir: if ccw { ArcDir::Ccw } else { ArcDir::Cw }, feed_mm_min },
+                        None => Op::Feed { from: a3, to: b3, feed_mm_min },
+                    });
+                    next_start = b3;
+                    end = a;
+                }
+                Err(reach) => {
+                    // Case 2: the chamfer cannot join the two moves.
+                    let needs = if reach.is_finite() { format!("reaches {} mm from the corner, more than a move has", crate::alarm::shown(reach, 4)) } else { "cannot join these two moves".to_string() };
                     let msg = format!("{}{}: the corner {needs} (GSK980TDi help text, chamfer function, case 2; FANUC alarm 055)", read::address_name(c.letter), crate::alarm::shown(c.size_mm, 4));
                     let d = step.alarm(Rule::CornerTooLarge, c.span, msg);
                     step.out.comp_error.get_or_insert(d);
                     return;
                 }
-                let (a3, b3) = (geometry::with_local(&start3, a, plane), geometry::with_local(&start3, b, plane));
-                let feed_mm_min = match held.op {
-                    Op::Feed { feed_mm_min, .. } => feed_mm_min,
-                    _ => 0.0,
-                };
-                chamfer = Some(match arc {
-                    Some((centre, ccw)) => Op::Arc { from: a3, to: b3, center: geometry::with_local(&start3, centre, plane), plane, dir: if ccw { ArcDir::Ccw } else { ArcDir::Cw }, feed_mm_min },
-                    None => Op::Feed { from: a3, to: b3, feed_mm_min },
-                });
-                next_start = b3;
-                end = a;
             }
         }
         make_held(step, end, chamfer);

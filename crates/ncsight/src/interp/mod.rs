@@ -1848,7 +1848,8 @@ fn emit_rotary(step: &mut Step, to_deg: [f64; 3], rapid: bool, rate_per_unit: f6
 
 fn motion(step: &mut Step, words: &mut Words) -> Result<(), Diagnostic> {
     if let Some(rules) = step.profile.frame.drawing {
-        if matches!(step.st.motion, Motion::Linear | Motion::ArcCw | Motion::ArcCcw) {
+        // FANUC's corners follow G01 lines only (alarm 052): in an arc their words are not taken.
+        if step.st.motion == Motion::Linear || (matches!(step.st.motion, Motion::ArcCw | Motion::ArcCcw) && !rules.corner_needs_g01) {
             corner::words(step, words, rules)?;
         }
     }
