@@ -45,17 +45,19 @@ pub(super) fn active(step: &Step) -> bool {
     step.st.comp.corner_for_next.is_some() || !step.corners.is_empty()
 }
 
-/// A record that is no move in the plane waits behind a held move, whatever its block (a T
-/// word's tool record too).
-pub(super) fn waits(step: &Step, op: &Op) -> bool {
-    !step.corners.is_empty() && Seg::of(op, step.st.plane).is_none_or(|s| s.is_point())
+/// A record of a block that radius compensation does not act in waits behind a held move (a
+/// T block's tool record and its offset's movement: nothing else of such a block comes while a
+/// move is held, run_block makes the held move first).
+pub(super) fn waits(step: &Step, _op: &Op) -> bool {
+    !step.corners.is_empty()
 }
 
 /// A record the stage takes: a move in the plane is held (the one held before is made, with
 /// the corner between); anything else waits behind a held move, or goes on now.
 pub(super) fn take(step: &mut Step, span: Span, n: Option<u32>, op: Op) {
     match Seg::of(&op, step.st.plane) {
-        Some(seg) if !seg.is_point() => plane_move(step, span, n, op, seg),
+        // A T block's offset movement (the block bypasses compensation) waits as it is.
+        Some(seg) if !seg.is_point() && !(step.bypass_comp && !step.contour) => plane_move(step, span, n, op, seg),
         _ if !step.corners.is_empty() => step.corners.push(Record::of_block(span, n, op)),
         _ => pass(step, span, n, op),
     }
@@ -177,6 +179,7 @@ fn plane_move(step: &mut Step, span: Span, n: Option<u32>, op: Op, seg: Seg) {
     // The block made a move in the plane, though it waits here (compensation's look-ahead
     // counts it as one).
     step.out.comp_plane_move = true;
+    step.st.comp.idle_blocks = 0;
     step.corners.push(Record::of_block(span, n, op));
 }
 
@@ -190,7 +193,7 @@ pub(super) fn break_off(step: &mut Step) {
     }
     if let Some(c) = step.st.comp.held_corner.take() {
         if step.profile.frame.drawing.is_some_and(|d| d.corner_needs_g01) {
-            let d = step.alarm(Rule::CornerNoMove, step.span, format!("the block after {} makes no G01 move: the corner has no second move to join (FANUC alarm 051)", c.word()));
+            let d = step.alarm(Rule::CornerNoMove, step.span, format!("no G01 move follows {} to make the corner with: this block makes none, or first ends the path (G40/G41/G42, a plane change, a T word, a cycle) (FANUC alarm 051)", c.word()));
             step.out.comp_error.get_or_insert(d);
         } else {
             step.warn(Rule::TextIgnored, c.span, format!("{}: no G01 move follows it: no corner is made", c.word()));

@@ -144,7 +144,8 @@ fn close(step: &mut Step, held: AngleLine, angle: Option<(f64, &Word)>, target: 
     // A line runs either way along its angle, as in form 1. A chamfer or corner arc before it
     // was made for the way its angle points: it must leave some of the line that way.
     let held_start = geometry::local(&step.st.comp.corner_start, plane);
-    if held_start.dist(start) > 1e-9 && meet.minus(held_start).dot(u) < -1e-9 {
+    let placed = step.corners.first().and_then(|r| r.op.start_point()).map_or(start, |p| geometry::local(&p, plane));
+    if held_start.dist(placed) > 1e-9 && meet.minus(held_start).dot(u) < -1e-9 {
         let msg = format!("the corner before this line (its angle alone) needs more of it than it has: it ends {} mm from the corner", shown(meet.dist(start), 4));
         return Err(step.alarm(Rule::CornerTooLarge, held.span, msg));
     }
@@ -187,7 +188,7 @@ pub(super) fn end_of_block(step: &mut Step, mut held: AngleLine) -> Result<(), D
 
 /// A move or a break that the held line of an angle alone cannot take: the block alarms.
 pub(super) fn refuse(step: &mut Step) {
-    let msg = "the line before (its angle alone) ends where it meets the next line: this block gives that line (G01) with its absolute end point and its angle (GSK980TDi help text, angle programming note 6; FANUC alarm 056)";
+    let msg = "the line before (its angle alone) ends where it meets the next line: this block gives that line (G01) with its absolute end point and its angle, and does not first end the path (G40/G41/G42, a plane change, a cycle) (GSK980TDi help text, angle programming note 6; FANUC alarm 056)";
     let d = step.alarm(Rule::DrawingEndMissing, step.span, msg);
     step.out.comp_error.get_or_insert(d);
 }

@@ -570,12 +570,10 @@ impl Interpreter {
         }
         // A line of an angle alone has no end: the next block alarmed (and said so), or the
         // input ended without M30 (W13). It is not made; what waited behind it still happens.
-        if let (true, Some(_)) = (with_comp, step.st.comp.angle_line.take()) {
-            let rest: Vec<Record> = step.corners.drain(..).skip(1).collect();
-            for rec in rest {
-                step.push_record(rec.span, rec.n, rec.op);
-            }
-        }
+        let behind_line: Vec<Record> = match (with_comp, step.st.comp.angle_line.take()) {
+            (true, Some(_)) => step.corners.drain(..).skip(1).collect(),
+            _ => Vec::new(),
+        };
         // The input ended (or the next block alarmed) in compensation: the held move ends
         // perpendicular.
         if with_comp {
@@ -586,6 +584,9 @@ impl Interpreter {
             // end of the input, ends where the path stops): not told twice.
             step.out.comp_error = None;
             step.queue.clear();
+        }
+        for rec in behind_line {
+            step.push_record(rec.span, rec.n, rec.op);
         }
         // The run has ended: a pull-out beyond a limit is told, with nothing left to stop.
         if let Some(hit) = out.overtravel.take() {
@@ -1015,9 +1016,11 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
                 step.warn(Rule::NotSimulated, w.span, msg);
             }
         } else if mode_suspends || words.has(b'T') {
-            // A T block without a move waits behind the corner stage's held move, as an M code
-            // does (a line of an angle alone allows one such block: docs/commands/drawing.md).
-            if mode_suspends || b"XYZUVW".iter().any(|l| words.has(*l)) {
+            // Outside compensation a T block without a move waits behind the corner stage's held
+            // move, as an M code does, its records too (a line of an angle alone allows one such
+            // block: docs/commands/drawing.md). In compensation it ends the compensated path:
+            // the held move is made first.
+            if mode_suspends || step.st.comp.side != 0 || b"XYZUVW".iter().any(|l| words.has(*l)) {
                 corner::break_off(step);
             }
             comp::break_off(step);

@@ -222,6 +222,7 @@ impl Interpreter {
         let mut comp_at_ns = st.comp;
         // The corner stage's held move (a chamfer's, a line of an angle alone) across blocks.
         let (mut no_queue, mut corners) = (Vec::new(), Vec::new());
+        let mut ns_corner = false;
         for (k, b) in blocks.iter().enumerate() {
             if b.block_delete && self.switches.block_delete {
                 continue;
@@ -258,6 +259,7 @@ impl Interpreter {
             if k == 0 {
                 after_ns = Some((st.motion, st.pos));
                 comp_at_ns = st.comp;
+                ns_corner = st.comp.held_corner.is_some_and(|c| c.span == b.span);
             }
         }
         // The last block may not leave a corner or a line without its end (FANUC alarm 069;
@@ -278,7 +280,10 @@ impl Interpreter {
         }
         // Help text notes 1 and 2: the ns block makes one G00 or G01 move.
         let ns_span = blocks[0].span;
-        let ns_moves: Vec<&Op> = scratch.records.iter().filter(|r| r.span == ns_span && r.op.end_point().is_some()).map(|r| &r.op).collect();
+        // A corner asked for in the ns block (its chamfer, after its move) belongs to the contour.
+        let first_ns = scratch.records.iter().position(|r| r.span == ns_span && r.op.end_point().is_some());
+        let in_contour = |i: usize, r: &crate::motion::Record| r.span != ns_span || (ns_corner && first_ns.is_some_and(|f| i > f) && r.op.end_point().is_some());
+        let ns_moves: Vec<&Op> = scratch.records.iter().enumerate().filter(|(i, r)| r.span == ns_span && r.op.end_point().is_some() && !in_contour(*i, r)).map(|(_, r)| &r.op).collect();
         let axis_word = blocks[0].words.iter().any(|w| b"XZUW".contains(&w.letter));
         let ns_move = match (ns_moves.as_slice(), after_ns) {
             ([op @ (Op::Rapid { .. } | Op::Feed { .. })], _) => (*op).clone(),
@@ -296,7 +301,7 @@ impl Interpreter {
             }
         };
         let mut moves = Vec::new();
-        for r in scratch.records.iter().filter(|r| r.span != ns_span) {
+        for r in scratch.records.iter().enumerate().filter(|(i, r)| in_contour(*i, r)).map(|(_, r)| r) {
             match r.op {
                 Op::Rapid { .. } | Op::Feed { .. } | Op::Arc { .. } => moves.push(r.op.clone()),
                 // Note 7: S, T and M in the contour do nothing during roughing.
