@@ -127,6 +127,8 @@ rules! {
     CornerTooLarge => Alarm, "NCS-E89", Some("PS0055"), "MISSING MOVE VALUE IN CHF/CNR";
     CornerNoMove => Alarm, "NCS-E90", Some("PS0051"), "MISSING MOVE AFTER CNR/CHF";
     CornerNotLinear => Alarm, "NCS-E91", Some("PS0052"), "CODE IS NOT G01 AFTER CHF/CNR";
+    CornerWords => Alarm, "NCS-E97", Some("PS0053"), "TOO MANY ADDRESS COMMANDS";
+    CornerTaper => Alarm, "NCS-E98", Some("PS0054"), "NO TAPER ALLOWED AFTER CHF/CNR";
     DrawingEndMissing => Alarm, "NCS-E92", Some("PS0056"), "NO END POINT & ANGLE IN CHF/CNR";
     DrawingNoSolution => Alarm, "NCS-E93", Some("PS0057"), "NO SOLUTION OF BLOCK END";
     DrawingEndNotFound => Alarm, "NCS-E94", Some("PS0058"), "END POINT NOT FOUND";

@@ -286,6 +286,19 @@ pub struct CornerRequest {
     pub from_corner: bool,
     /// The block that asked.
     pub span: crate::source::Span,
+    /// FANUC's chamfer or corner R between two moves at a right angle (I, K, R in G01): the
+    /// next move's axis and way.
+    pub right_angle: Option<RightAngle>,
+}
+
+/// The next move of a right-angle chamfer or corner R: along the plane's second axis (X in
+/// G18: after I, or R after a move along Z) or its first, the way the word's sign gives.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RightAngle {
+    /// `None` until this block's move shows it (R follows either axis).
+    pub next_along_second: Option<bool>,
+    /// +1 or -1.
+    pub sign: f64,
 }
 
 impl CornerRequest {

@@ -11,12 +11,18 @@ use super::{comp, Step};
 use crate::alarm::{Diagnostic, Rule};
 use crate::comp::{self as geometry, Seg};
 use crate::motion::{ArcDir, Op, Record};
-use crate::read;
+use crate::read::{self, Word};
 use crate::source::Span;
 
 /// A chamfer or corner arc asked for in a G01 block (G02/G03 too where the profile allows): the
 /// corner between this block's move and the next, each a line or an arc.
 pub(super) fn words(step: &mut Step, words: &mut super::Words, rules: crate::profile::DrawingRules) -> Result<(), Diagnostic> {
+    if rules.right_angle && step.st.motion == crate::modal::Motion::Linear {
+        right_angle_words(step, words, rules)?;
+        if step.st.comp.corner_for_next.is_some() {
+            return Ok(());
+        }
+    }
     let (l, d) = (words.take(rules.chamfer), words.take(rules.round));
     let (w, round) = match (l, d) {
         (None, None) => return Ok(()),
@@ -36,7 +42,81 @@ pub(super) fn words(step: &mut Step, words: &mut super::Words, rules: crate::pro
     }
 
     let from_corner = rules.chamfer_type.is_none_or(|key| step.params.get(key) != 0.0);
-    step.st.comp.corner_for_next = Some(crate::modal::CornerRequest { letter: w.letter, size_mm: size, round, from_corner, span: step.span });
+    step.st.comp.corner_for_next = Some(crate::modal::CornerRequest { letter: w.letter, size_mm: size, round, from_corner, span: step.span, right_angle: None });
+    Ok(())
+}
+
+/// FANUC's chamfering and corner R at a right angle (the FANUC 0i-T and 30i manuals: `G01 Z_ I_`,
+/// `G01 X_ K_`, `G01 Z_ R_`, `G01 X_ R_`): a 45-degree chamfer whose legs are |I| or |K| (a
+/// radius value), or a corner arc of radius |R|, to a next move along the other axis the way
+/// the sign says. One of I, K, R, and none with `,C` or `,R` (alarm 053).
+fn right_angle_words(step: &mut Step, words: &mut super::Words, rules: crate::profile::DrawingRules) -> Result<(), Diagnostic> {
+    let given: Vec<&Word> = [b'I', b'K', b'R', rules.chamfer, rules.round].iter().filter_map(|l| words.peek(*l)).collect();
+    let Some(&w) = given.iter().find(|w| matches!(w.letter, b'I' | b'K' | b'R')) else {
+        return Ok(());
+    };
+    if given.len() > 1 {
+        let names: Vec<String> = given.iter().map(|w| w.text()).collect();
+        return Err(step.alarm(Rule::CornerWords, given[1].span, format!("{}: one chamfer or corner R a block (FANUC alarm 053)", names.join(" and "))));
+    }
+    let w = words.take(w.letter).expect("peeked above");
+    let v = step.length(w)?;
+    if v == 0.0 {
+        return Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("{}: a chamfer or corner R is longer than 0", w.text())));
+    }
+    if step.bypass_comp && !step.contour {
+        return Err(step.alarm(Rule::NotSupported, w.span, format!("{}: a chamfer or corner R in a block that radius compensation does not act in (a T word, a cycle) is not simulated by ncsight yet", w.text())));
+    }
+    let next_along_second = match w.letter {
+        b'I' => Some(true),
+        b'K' => Some(false),
+        _ => None,
+    };
+    let right_angle = Some(crate::modal::RightAngle { next_along_second, sign: v.signum() });
+    step.st.comp.corner_for_next = Some(crate::modal::CornerRequest { letter: w.letter, size_mm: v.abs(), round: w.letter == b'R', from_corner: true, span: step.span, right_angle });
+    Ok(())
+}
+
+/// The move of a block with a right-angle chamfer or corner R runs along one axis, the one its
+/// word follows (alarm 054); the next move's axis is then known.
+fn right_angle_first(step: &Step, c: &mut crate::modal::CornerRequest, seg: &Seg) -> Result<(), Diagnostic> {
+    let Some(ra) = c.right_angle.as_mut() else { return Ok(()) };
+    let u = seg.tangent(false);
+    let along = match *seg {
+        Seg::Line { .. } if u.b.abs() < 1e-9 => Some(false),
+        Seg::Line { .. } if u.a.abs() < 1e-9 => Some(true),
+        _ => None,
+    };
+    let names = ["Z", "X"];
+    match (along, ra.next_along_second) {
+        (Some(first_along_second), None) => ra.next_along_second = Some(!first_along_second),
+        (Some(first_along_second), Some(next)) if first_along_second != next => {}
+        _ => {
+            let msg = match ra.next_along_second {
+                Some(next) => format!("{}: the move of its block runs along {} only (its corner leads to a move along {}; FANUC alarm 054)", crate::read::address_name(c.letter), names[usize::from(!next)], names[usize::from(next)]),
+                None => format!("{}: the move of its block runs along one axis, Z or X (FANUC alarm 054)", crate::read::address_name(c.letter)),
+            };
+            return Err(step.alarm(Rule::CornerTaper, c.span, msg));
+        }
+    }
+    Ok(())
+}
+
+/// The next move after a right-angle chamfer or corner R: a line along the other axis (alarm
+/// 052), the way the word's sign says (alarm 051).
+fn right_angle_next(step: &Step, c: &crate::modal::CornerRequest, span: Span, seg: &Seg) -> Result<(), Diagnostic> {
+    let Some(ra) = c.right_angle else { return Ok(()) };
+    let next = ra.next_along_second.expect("the first move showed it");
+    let u = seg.tangent(false);
+    let (along, across) = if next { (u.b, u.a) } else { (u.a, u.b) };
+    let axis = if next { "X" } else { "Z" };
+    if !matches!(seg, Seg::Line { .. }) || across.abs() > 1e-9 {
+        return Err(step.alarm(Rule::CornerNotLinear, span, format!("{} asks for a corner with a G01 move along {axis} only (FANUC alarm 052)", c.word())));
+    }
+    if along * ra.sign < 0.0 {
+        let way = if ra.sign > 0.0 { "+" } else { "-" };
+        return Err(step.alarm(Rule::CornerNoMove, span, format!("{}: its sign asks for the next move toward {way}{axis}; this one goes the other way (FANUC alarm 051)", c.word())));
+    }
     Ok(())
 }
 
@@ -134,6 +214,10 @@ fn plane_move(step: &mut Step, span: Span, n: Option<u32>, op: Op, seg: Seg) {
             corner = None;
         }
         if let Some(c) = corner {
+            if let Err(d) = right_angle_next(step, &c, span, &seg) {
+                step.out.comp_error.get_or_insert(d);
+                return;
+            }
             let cut = if c.round {
                 geometry::CornerCut::Round(c.size_mm)
             } else if c.from_corner {
@@ -175,7 +259,14 @@ fn plane_move(step: &mut Step, span: Span, n: Option<u32>, op: Op, seg: Seg) {
         make_held(step, end, chamfer);
     }
     step.st.comp.corner_start = next_start;
-    step.st.comp.held_corner = step.st.comp.corner_for_next.take();
+    let mut asked = step.st.comp.corner_for_next.take();
+    if let Some(c) = asked.as_mut() {
+        if let Err(d) = right_angle_first(step, c, &seg) {
+            step.out.comp_error.get_or_insert(d);
+            return;
+        }
+    }
+    step.st.comp.held_corner = asked;
     // The block made a move in the plane, though it waits here (compensation's look-ahead
     // counts it as one).
     step.out.comp_plane_move = true;

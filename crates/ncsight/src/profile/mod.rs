@@ -582,6 +582,10 @@ pub struct DrawingRules {
     pub corner_needs_g01: bool,
     /// G17 and G19 have the angle forms too; else only G18 (the ZX plane).
     pub any_plane: bool,
+    /// FANUC's chamfering and corner R between two moves at a right angle: `G01 Z_ I_` (a 45
+    /// degree chamfer to an X move), `G01 X_ K_` (to a Z move), `G01 Z_ R_` or `X_ R_` (a corner
+    /// arc), the sign the next move's way.
+    pub right_angle: bool,
     pub source: &'static str,
 }
 
@@ -596,6 +600,7 @@ impl DrawingRules {
         angle_in_rapid: true,
         corner_needs_g01: false,
         any_plane: true,
+        right_angle: false,
         source: "GSK980TDi help text: chamfer function; angle programming notes 1-8",
     };
     /// FANUC 0-T direct drawing dimension programming (`,A` `,C` `,R`): the forms and alarms
@@ -609,6 +614,7 @@ impl DrawingRules {
         angle_in_rapid: false,
         corner_needs_g01: true,
         any_plane: false,
+        right_angle: true,
         source: "FANUC lathe manuals, direct drawing dimension programming (the forms from a secondary source; alarms 051-058, 212)",
     };
 
