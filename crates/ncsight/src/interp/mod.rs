@@ -1503,7 +1503,7 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
                 return finish_block(step, &words, &codes, after, switches);
             }
             if let Motion::Box(kind) = step.st.motion {
-                if has_axis || words.has(b'R') {
+                if has_axis || words.has(step.profile.box_taper) {
                     turning::block(step, &mut words, kind)?;
                 }
                 return finish_block(step, &words, &codes, after, switches);

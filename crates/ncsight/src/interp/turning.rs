@@ -10,7 +10,7 @@ use crate::modal::BoxMemory;
 /// One G90 or G94 block, naming the code or repeating the cycle in force.
 pub(super) fn block(step: &mut Step, words: &mut Words, kind: BoxKind) -> Result<(), Diagnostic> {
     let name = kind.code();
-    let taper_word = words.take(b'R');
+    let taper_word = words.take(step.profile.box_taper);
     let a = step.st.pos;
     let given_x = words.has(b'X') || words.has(b'U');
     let given_z = words.has(b'Z') || words.has(b'W');
@@ -41,7 +41,7 @@ pub(super) fn block(step: &mut Step, words: &mut Words, kind: BoxKind) -> Result
         return Err(step.alarm(
             Rule::TaperTooLarge,
             span,
-            format!("{name}: R and the step to the end point differ in sign, so |R| may be at most |{letter}| = {shown:.3} mm"),
+            format!("{name}: {} and the step to the end point differ in sign, so its size may be at most |{letter}| = {shown:.3} mm", step.profile.box_taper as char),
         ));
     }
     step.st.box_cycle = BoxMemory { end: Some(c), taper_mm };

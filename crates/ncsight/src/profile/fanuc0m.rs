@@ -181,6 +181,7 @@ pub static PROFILE: Profile = Profile {
     reference_point_mm: crate::motion::Vec3::new(0.0, 0.0, 0.0),
     addresses: super::Letters::new("GMSTFXYZIJKRPQLHDN"),
     peck_back_off: None,
+    box_taper: b'R',
     g_codes: &[super::Codes { source: "FANUC 0-M manual, canned cycles (seed 003) and the FANUC 0i-MC G-code table", codes: common::G_CODES }, super::Codes { source: "FANUC 0-M manual, canned cycles (seed 003) and the FANUC 0i-MC G-code table", codes: G_CODES }, super::Codes { source: "the FANUC 0i-MC G-code table (the 0-M's own table was not at hand)", codes: super::later::FANUC_0M }],
     m_codes: &[super::Codes { source: "FANUC 0-M manual (seed 003: M03-M05 in the tapping cycles); FANUC 0i-MC M codes", codes: common::M_CODES }, super::Codes { source: "FANUC 0-M manual (seed 003) and FANUC 0i-MC M codes", codes: M_CODES }],
     params: &[PARAMS, TRANSFORMS, super::FANUC_INPUT, DRY_RUN, super::builder::FANUC, super::FANUC_MACRO, super::FANUC_G60, SETTINGS],

@@ -86,6 +86,7 @@ pub static PROFILE: Profile = Profile {
     reference_point_mm: crate::motion::Vec3::new(100.0, 0.0, 200.0),
     addresses: super::Letters::new("GMSTFXZUWRIKPQLN"),
     peck_back_off: Some(ParamKey::Number(5139, None)),
+    box_taper: b'R',
     g_codes: &[super::Codes { source: "the FANUC 0-TC G-code table, system A (the 0i-TC where it lacks)", codes: common::G_CODES }, super::Codes { source: "the FANUC 0-TC G-code table, system A (the 0i-TC where it lacks)", codes: lathe_a::G_CODES }, super::Codes { source: "FANUC 0i-T documentation (inferred for the 0-T; docs/profiles.md)", codes: EXTRA }, super::Codes { source: "FANUC 0i-T documentation (inferred for the 0-T; docs/commands/g83_g87_lathe.md)", codes: super::lathe_drill::CODES }, super::Codes { source: "the FANUC 0-TC G-code table, system A (the 0i-TC where it lacks)", codes: super::later::FANUC_0T }],
     m_codes: &[super::Codes { source: "FANUC 0i-TC M codes (inferred for the 0-T)", codes: common::M_CODES }, super::Codes { source: "FANUC 0i-TC M codes (inferred for the 0-T)", codes: lathe_a::M_CODES }],
     params: &[FANUC_RATES, PARAMS, super::lathe_drill::PARAMS, super::FANUC_G76, super::FANUC_INPUT, DRY_RUN, super::builder::FANUC, super::FANUC_MACRO, super::FANUC_LATHE_OFFSETS, SETTINGS],

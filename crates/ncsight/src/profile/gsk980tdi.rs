@@ -220,6 +220,7 @@ pub static PROFILE: Profile = Profile {
     reference_point_mm: crate::motion::Vec3::new(100.0, 0.0, 200.0),
     addresses: super::Letters::new("GMSTFXZUWRIJKPQLNDEAB"),
     peck_back_off: Some(ParamKey::Number(56, None)),
+    box_taper: b'R',
     g_codes: &[super::Codes { source: "GSK980TDi help text (G-code list)", codes: common::G_CODES }, super::Codes { source: "GSK980TDi help text (G-code list)", codes: lathe_a::G_CODES }, super::Codes { source: "GSK980TDi manual, G92 (seed 000) and help text", codes: EXTRA }, super::Codes { source: "GSK980TDi help text, G05/05.1, G6.2/6.3, G7.2/7.3; Q's sense from the GSK980TDc manual", codes: CURVES }, super::Codes { source: "GSK980TDi help text (G-code list)", codes: super::later::GSK980TDI }],
     m_codes: &[super::Codes { source: "GSK980TDi help text (M-code list)", codes: common::M_CODES }, super::Codes { source: "GSK980TDi help text (M-code list)", codes: lathe_a::M_CODES }, super::Codes { source: "GSK980TDi help text (M-code list)", codes: lathe_a::GSK_M_CODES }, super::Codes { source: "GSK980TDi help text, G84/G88", codes: TAPPING_M }],
     params: &[PARAMS, DRY_RUN, super::builder::GSK980TDI, super::GSK_LATHE_OFFSETS, SETTINGS],

@@ -1180,6 +1180,10 @@ pub struct Profile {
     /// The parameter with the power-on back-off e of the lathe peck cycles G74/G75 (one value
     /// for both; their first block rewrites it), if the profile knows it.
     pub peck_back_off: Option<ParamKey>,
+    /// The address of G90/G94's taper (the cut start's offset from the end point): R on the
+    /// FANUC 0-T and the GSKs; I on the YASNAC LX3 (its manual, G68 mirror image: "I command
+    /// for canned cycle taper", and its G92).
+    pub box_taper: u8,
     /// The G codes, table by table, each table with the manual it comes from.
     pub g_codes: &'static [Codes<GDef>],
     pub m_codes: &'static [Codes<MDef>],
