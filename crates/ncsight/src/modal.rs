@@ -245,6 +245,11 @@ pub struct CompState {
     /// G39 came after the held move: the outer corner to the next move is an arc about the
     /// corner point.
     pub round_corner: bool,
+    /// G62 (automatic corner override) is the path mode.
+    pub corner_override: bool,
+    /// The held move starts after an inner corner under G62: this much of it runs at the
+    /// overridden feed.
+    pub slow_start_mm: f64,
     /// A chamfer or corner arc this block asks for at the end of its move (GSK980TDi L, D).
     pub corner_for_next: Option<CornerRequest>,
     /// The one asked for at the end of the move held in the corner stage.

@@ -11,7 +11,7 @@ X30.
 G39
 Y0
 G40 X50.
-(G62 - warning NCS-W12: the path is as G64's; the slower inner corners are not timed.)
+(G62 - automatic corner override - here outside cutter compensation: nothing to slow.)
 G62
 (G63 - Z-2 to Z-10 at F100 - 8 mm - 4.8 s + 0.05, at any feed override - crates/ncsight/tests/operator.rs runs it at 50 %.)
 G63 G01 Z-10. F100.
@@ -20,4 +20,12 @@ G64 G00 Z5.
 G96 S100 M03
 G01 X20. F100.
 G97 S500
+(G62 in cutter compensation - an inner corner of at most 91 degrees [1711] on the work side runs at 50 % [1712] from Ls = 1 mm [1714] before it to Le = 1 mm [1713] after it on the cutter centre path. The start-up to X0 Y5 - its corner is not slowed. X40. then Y40. turn left with the cutter on the left - an inner corner of 90 degrees at X35 Y5: X34 to X35 at F100 - 1 mm in 0.6 s - running on from F200 without a stop; Y5 to Y6 at F100; on to Y40 at F200; G40 X50. - Y40 ends perpendicular at X35 Y40.)
+G62 G00 X-10. Y-10.
+G01 Z-2. F200.
+G41 X0 Y0 D1
+X40.
+Y40.
+G40 X50.
+G64 G00 Z5.
 M30

@@ -191,7 +191,7 @@ fn plane_move(step: &mut Step, span: Span, n: Option<u32>, op: Op, seg: Seg) {
         let turn = hseg.tangent(true).cross(seg.tangent(false));
         if turn * side < -1e-12 {
             let (e, s) = (p.plus(comp::vector(&hseg, true, side, r)), p.plus(comp::vector(&seg, false, side, r)));
-            if let Err(err) = make_held(step, e) {
+            if let Err(err) = make_held(step, e, 0.0) {
                 return fail(step, err, held.span);
             }
             let tip = step.st.comp.tip;
@@ -215,9 +215,21 @@ fn plane_move(step: &mut Step, span: Span, n: Option<u32>, op: Op, seg: Seg) {
             Err(e) => return fail(step, e, span),
         }
     };
-    if let Err(e) = make_held(step, corner.first_end) {
+    // G62: an inner corner no wider than the parameter's angle slows the feed about it (FANUC
+    // 16i manual, inside-corner override: not after a start-up, not for rapids).
+    let slow = match step.profile.frame.corner_override {
+        Some(keys) if step.st.comp.corner_override && !step.st.comp.held_startup && r > 0.0 && !matches!(op, Op::Rapid { .. }) && !matches!(held.op, Op::Rapid { .. }) => {
+            let (d1, d2) = (hseg.tangent(true), seg.tangent(false));
+            let inner = d1.cross(d2) * side > 1e-12;
+            let work_angle_deg = 180.0 - d1.dot(d2).clamp(-1.0, 1.0).acos().to_degrees();
+            (inner && (2.0..=step.params.get(keys.angle)).contains(&work_angle_deg)).then(|| (step.params.get(keys.before), step.params.get(keys.after)))
+        }
+        _ => None,
+    };
+    if let Err(e) = make_held(step, corner.first_end, slow.map_or(0.0, |s| s.0)) {
         return fail(step, e, held.span);
     }
+    step.st.comp.slow_start_mm = slow.map_or(0.0, |s| s.1);
     // The moves around an outer corner, at the next move's rate.
     let mut at = corner.first_end;
     for p in corner.between.iter().copied().chain(std::iter::once(corner.second_start)) {
@@ -237,6 +249,39 @@ fn plane_move(step: &mut Step, span: Span, n: Option<u32>, op: Op, seg: Seg) {
     step.queue.push(Record::of_block(span, n, op));
 }
 
+/// `op` cut in pieces: its first `start_mm` and last `end_mm` (along its path) at `factor` times
+/// its feed, the rest as it is (G62).
+fn slowed(op: Op, start_mm: f64, end_mm: f64, factor: f64) -> Vec<Op> {
+    let (from, to) = match (op.start_point(), op.end_point()) {
+        (Some(a), Some(b)) => (a, b),
+        _ => return vec![op],
+    };
+    let geometry = crate::geom::arc_geom_of(&op);
+    let length = match (&op, &geometry) {
+        (Op::Feed { .. }, _) => from.dist(&to),
+        (Op::Arc { plane, .. }, Some(g)) => crate::geom::arc_length(&from, &to, *plane, g),
+        _ => return vec![op],
+    };
+    if length < 1e-9 {
+        return vec![op];
+    }
+    let a = (start_mm / length).min(1.0);
+    let b = (1.0 - end_mm / length).max(a);
+    let point = |u: f64| match (&op, &geometry) {
+        (Op::Arc { plane, dir, .. }, Some(g)) => crate::geom::arc_point(&from, &to, *plane, *dir, g, u),
+        _ => super::lerp(&from, &to, u),
+    };
+    let piece = |u0: f64, u1: f64, slow: bool| {
+        let (p, q) = (if u0 <= 0.0 { from } else { point(u0) }, if u1 >= 1.0 { to } else { point(u1) });
+        match op {
+            Op::Feed { feed_mm_min, .. } => Op::Feed { from: p, to: q, feed_mm_min: if slow { feed_mm_min * factor } else { feed_mm_min } },
+            Op::Arc { center, plane, dir, feed_mm_min, .. } => Op::Arc { from: p, to: q, center, plane, dir, feed_mm_min: if slow { feed_mm_min * factor } else { feed_mm_min } },
+            other => other,
+        }
+    };
+    [(0.0, a, true), (a, b, false), (b, 1.0, true)].into_iter().filter(|(u0, u1, _)| u1 - u0 > 1e-12).map(|(u0, u1, slow)| piece(u0, u1, slow)).collect()
+}
+
 /// A block whose records the stage made in this block (for the single-block marks).
 fn note_span(step: &mut Step, span: Span) {
     if !step.out.comp_spans.contains(&span) {
@@ -254,7 +299,9 @@ fn feed_of(op: &Op) -> f64 {
 /// Make the held move, compensated from its start to `end` (nose centre in the plane), then
 /// the records that waited behind it, where the tool is by then. The queue is left empty.
 /// Returns where the nose centre ends (the waiting moves along the normal axis included).
-fn make_held(step: &mut Step, end: P2) -> Result<Vec3, CompError> {
+/// `slow_end_mm`: the last this much of it runs at G62's inner-corner override (and its first
+/// `slow_start_mm`, when an inner corner came before it).
+fn make_held(step: &mut Step, end: P2, slow_end_mm: f64) -> Result<Vec3, CompError> {
     let plane = step.st.plane;
     let (side, r) = (step.st.comp.side as f64, step.st.comp.radius_mm);
     let queue = std::mem::take(step.queue);
@@ -276,7 +323,20 @@ fn make_held(step: &mut Step, end: P2) -> Result<Vec3, CompError> {
         *step.queue = queue;
         return Err(e);
     }
-    step.push_record(held.span, held.n, made);
+    let slow_start_mm = std::mem::take(&mut step.st.comp.slow_start_mm);
+    if slow_start_mm > 0.0 || slow_end_mm > 0.0 {
+        let percent = step.profile.frame.corner_override.map_or(100.0, |k| step.params.get(k.percent));
+        for (k, piece) in slowed(made, slow_start_mm, slow_end_mm, percent / 100.0).into_iter().enumerate() {
+            // The pieces run on without stopping: only the first accelerates.
+            if k == 0 || step.st.polar_interp.is_some() {
+                step.push_record(held.span, held.n, piece);
+            } else {
+                step.push_machine(held.span, held.n, piece, Some(0.0));
+            }
+        }
+    } else {
+        step.push_record(held.span, held.n, made);
+    }
     note_span(step, held.span);
     let mut last = end3;
     for rec in rest {
@@ -307,7 +367,7 @@ pub(super) fn break_off(step: &mut Step) {
     let hseg = Seg::of(&held.op, plane).expect("the queue's first record is a move in the plane");
     let (side, r) = (step.st.comp.side as f64, step.st.comp.radius_mm);
     let end = hseg.to().plus(comp::vector(&hseg, true, side, r));
-    match make_held(step, end) {
+    match make_held(step, end, 0.0) {
         Ok(last) => step.st.comp.actual = Some(last),
         Err(e) => {
             // The held move cannot be made: what waited behind it still happens, where it was

@@ -1060,6 +1060,7 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
         }
         if g.group == Group::PathMode {
             st.tapping_mode = g.function == GFn::TappingMode;
+            st.comp.corner_override = g.function == GFn::CornerOverride;
         }
         match g.function {
             GFn::Rapid => codes.motion = Some((w.span, Motion::Rapid)),
@@ -1098,11 +1099,8 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
             // After step 5: a thread run held back from the block before is made in its frame.
             GFn::WorkOffset(n) => codes.work = Some(n),
             // Step 6 puts the length offset in force, with the H of the block.
-            GFn::LengthComp(_) | GFn::PathControl | GFn::TappingMode => {}
-            GFn::CornerOverride => {
-                let msg = format!("{}: automatic corner override: the path is as in G64; the lower feed at inner corners is not in the time model", w.text());
-                step.warn(Rule::NotSimulated, w.span, msg);
-            }
+            // G62 slows inner corners in cutter compensation (interp/comp.rs).
+            GFn::LengthComp(_) | GFn::PathControl | GFn::TappingMode | GFn::CornerOverride => {}
             GFn::Rotation(_) | GFn::MirrorImage(_) | GFn::TurretMirror(_) | GFn::Scaling(_) | GFn::StrokeCheck(_) => codes.transforms.push((w.span, g.function)),
             // Step 0 turned it on (from a radius and angle of 0) before reading the block.
             GFn::PolarCoordinates(on) => {

@@ -82,6 +82,42 @@ const TRANSFORMS: &[ParamDef] = &[
 
 const PARAMS: &[ParamDef] = &[
     ParamDef {
+        key: ParamKey::Number(1711, None),
+        meaning: "G62: an inner corner whose angle on the work side is at most this is overridden (2-178)",
+        unit: "deg",
+        min: 2.0,
+        max: 178.0,
+        default: 91.0,
+        source: "FANUC 16i operator's manual, inside-corner override (No. 1711; 0i numbering, inferred for the FANUC 0-M); default assumed",
+    },
+    ParamDef {
+        key: ParamKey::Number(1712, None),
+        meaning: "G62: the override at inner corners",
+        unit: "%",
+        min: 1.0,
+        max: 100.0,
+        default: 50.0,
+        source: "FANUC 16i operator's manual, inside-corner override (No. 1712); default assumed",
+    },
+    ParamDef {
+        key: ParamKey::Number(1713, None),
+        meaning: "G62: Le, how far after an inner corner the override lasts (cutter centre path)",
+        unit: "mm",
+        min: 0.0,
+        max: 3999.0,
+        default: 1.0,
+        source: "FANUC 0i numbering as recalled (No. 1713, Le from the start of the next block); default assumed",
+    },
+    ParamDef {
+        key: ParamKey::Number(1714, None),
+        meaning: "G62: Ls, how far before an inner corner the override starts (cutter centre path)",
+        unit: "mm",
+        min: 0.0,
+        max: 3999.0,
+        default: 1.0,
+        source: "FANUC 0i numbering as recalled (No. 1714, Ls up to the end of the block); default assumed",
+    },
+    ParamDef {
         key: ParamKey::Number(3770, None),
         meaning: "G96 on a machining centre: the axis whose coordinate is the radius of the surface speed (1 = X, 2 = Y, 3 = Z)",
         unit: "axis",
@@ -208,6 +244,12 @@ pub static PROFILE: Profile = Profile {
             magnification: Some(ParamKey::Number(5411, None)),
             scaling_option: Some(ParamKey::Setting("scaling_option")),
         },
+        corner_override: Some(super::CornerOverrideKeys {
+            angle: ParamKey::Number(1711, None),
+            percent: ParamKey::Number(1712, None),
+            after: ParamKey::Number(1713, None),
+            before: ParamKey::Number(1714, None),
+        }),
         ..super::FrameRules::FANUC
     },
     summary: "FANUC 0-M machining centre. G90/G91, G17 at power on. Lengths without a decimal point \

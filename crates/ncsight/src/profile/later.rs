@@ -34,7 +34,7 @@ pub(super) const FANUC_0M: &[GDef] = &[
     gp(51, 1, "G51.1", Group::MirrorImage, GFn::MirrorImage(true), "programmable mirror image on"),
     g(52, Group::NonModal, GFn::LocalCoordinates, "local coordinate system"),
     g(60, Group::NonModal, GFn::SingleDirection, "single direction positioning"),
-    g(62, Group::PathMode, GFn::CornerOverride, "automatic corner override: the feed lowered at inner corners in cutter compensation (not timed)"),
+    g(62, Group::PathMode, GFn::CornerOverride, "automatic corner override: the feed lowered about inner corners in cutter compensation (parameters 1711-1714)"),
     g(63, Group::PathMode, GFn::TappingMode, "tapping mode: feed override 100 %, FEED HOLD at the block's end"),
     g(65, Group::NonModal, GFn::MacroCall, "custom macro call"),
     g(66, Group::MacroCall, GFn::ModalMacroCall, "custom macro modal call"),

@@ -515,7 +515,21 @@ pub struct FrameRules {
     pub box_by_tip: bool,
     /// The parameters of the coordinate transforms (G68, G51), where the profile has them.
     pub transform_keys: TransformKeys,
+    /// G62's inner-corner override, where the profile has it.
+    pub corner_override: Option<CornerOverrideKeys>,
     pub source: &'static str,
+}
+
+/// G62, automatic corner override (FANUC 16i manual, inside-corner override; 0i numbering): in
+/// cutter compensation the feed at an inner corner of at most `angle` degrees on the work side is
+/// overridden by `percent` from `before` mm before the corner to `after` mm after it, on the
+/// cutter centre path.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CornerOverrideKeys {
+    pub angle: ParamKey,
+    pub percent: ParamKey,
+    pub after: ParamKey,
+    pub before: ParamKey,
 }
 
 /// The programmable parameter mode: `G10 L<l>`, then one parameter a line (`N` the number, `P`
@@ -639,6 +653,7 @@ impl FrameRules {
         rough_cancels_comp: false,
         box_by_tip: true,
         transform_keys: TransformKeys::NONE,
+        corner_override: None,
         source: "FANUC 0i manuals as recalled (G30 P2-P4; G92 after G54 in one block sets the system selected; 5002#4 LGT, #6 LWM; G10 forms); MACRO.md 10",
     };
     pub const GSK: FrameRules = FrameRules {
@@ -655,6 +670,7 @@ impl FrameRules {
         rough_cancels_comp: true,
         box_by_tip: false,
         transform_keys: TransformKeys::NONE,
+        corner_override: None,
         source: "GSK980TDi help text: G54-G59 note 6, G28 note 2, G30 (P2-P4) note 3, G10 L3 and L52 only; the offset mode's parameter number not found (an ncsight setting)",
     };
 }
@@ -912,7 +928,6 @@ impl GFn {
             GFn::NotYet(_) => CodeStatus::NotYet,
             GFn::Skip => CodeStatus::Assumed("no skip signal comes: the move runs to its end (NCS-W34)"),
             GFn::ToolMeasure(_) => CodeStatus::Assumed("no measuring signal comes: the tool reaches the measuring position, the offset stays (NCS-W35)"),
-            GFn::CornerOverride => CodeStatus::Assumed("the path is as G64's; the slower feed at inner corners is not in the time model (NCS-W12)"),
             _ => CodeStatus::Simulated,
         }
     }
