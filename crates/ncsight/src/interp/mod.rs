@@ -759,7 +759,7 @@ fn collect<'w>(
         // The GSK980TDi's G32.1 gives its start angle with C (help text G32.1), C axis or not.
         let rigid_start = letter == b'C' && profile.thread.g32_1.start_c && rigid_block();
         if !profile.takes_address(letter) && !step.tables.added_addresses.contains(letter) && !hypothetical && !rigid_start && !not_yet() {
-            return Err(step.alarm(
+            let d = step.alarm(
                 Rule::ImproperAddress,
                 w.span,
                 if matches!(letter, b'A' | b'B' | b'C' | b'Y') {
@@ -767,7 +767,22 @@ fn collect<'w>(
                 } else {
                     format!("address {} is not used on {} ({})", crate::read::address_name(letter), profile.name, w.text())
                 },
-            ));
+            );
+            // A comma word is FANUC's drawing dimensions: say how this controller writes them.
+            return Err(if letter.is_ascii_lowercase() {
+                d.with_hint(match profile.frame.drawing {
+                    Some(r) => format!(
+                        "{} writes a chamfer as {}, a corner arc as {} and a line's angle as {} (docs/commands/drawing.md)",
+                        profile.name,
+                        crate::read::address_name(r.chamfer),
+                        crate::read::address_name(r.round),
+                        crate::read::address_name(r.angle)
+                    ),
+                    None => "',A', ',C' and ',R' are FANUC's drawing dimensions; this controller has none: program the corner's moves".to_string(),
+                })
+            } else {
+                d
+            });
         }
         match letter {
             b'G' => {
