@@ -9,7 +9,7 @@
 //! yet; what comes between (at most one block without a move: note 7) waits behind it, and the
 //! next block's line sets its end.
 
-use super::{corner, Step, Words};
+use super::{corner, Given, Step, Words};
 use crate::alarm::{shown, Diagnostic, Rule};
 use crate::comp::{self as geometry, DrawingError};
 use crate::modal::{AngleLine, Motion};
@@ -34,11 +34,13 @@ pub(super) fn angle<'w>(step: &mut Step, words: &mut Words<'w>, rules: DrawingRu
 
 /// What the block's line does: go to `target` (an end worked out from the angle, or as
 /// written), or wait for the next block (`None`: its angle alone).
-pub(super) fn line(step: &mut Step, rules: DrawingRules, angle: Option<(f64, &Word)>, target: Vec3, given: [bool; 3], absolute: [bool; 3]) -> Result<Option<Vec3>, Diagnostic> {
+pub(super) fn line(step: &mut Step, rules: DrawingRules, angle: Option<(f64, &Word)>, target: Vec3, how: [Option<Given>; 3]) -> Result<Option<Vec3>, Diagnostic> {
     let plane = step.st.plane;
     let (ia, ib, _) = plane.axes();
+    let given = how.map(|g| g.is_some());
     if let Some(held) = step.st.comp.angle_line {
-        return close(step, held, angle, target, given, given[ia] && given[ib] && absolute[ia] && absolute[ib]).map(Some);
+        let absolute = |a: usize| how[a] == Some(Given::Absolute);
+        return close(step, held, angle, target, given, absolute(ia) && absolute(ib)).map(Some);
     }
     let Some((deg, w)) = angle else {
         return Ok(Some(target));

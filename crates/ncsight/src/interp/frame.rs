@@ -201,7 +201,7 @@ pub(super) fn set_coordinates(step: &mut Step, words: &mut Words) -> Result<(), 
     let st = &mut *step.st;
     // The position shown (the tool's plus an offset's movement not made yet) gets the values.
     let shown = st.pos + st.frame.unmoved;
-    for (a, _) in given.iter().enumerate().filter(|(_, g)| **g) {
+    for (a, _) in given.iter().enumerate().filter(|(_, g)| g.is_some()) {
         let shift = st.frame.shift.axis(a) + st.frame.local.axis(a) + shown.axis(a) - target.axis(a);
         st.frame.shift.set_axis(a, shift);
         st.frame.local.set_axis(a, 0.0);
@@ -281,7 +281,7 @@ pub(super) fn machine_move(step: &mut Step, words: &mut Words, span: Span) -> Re
 /// cancelled (help text G28 note 2, G30 note 3).
 pub(super) fn reference_return(step: &mut Step, words: &mut Words, n: usize, span: Span) -> Result<(), Diagnostic> {
     let (mid, given) = axis_target(step, words)?;
-    if !given.iter().any(|g| *g) {
+    if !given.iter().any(Option::is_some) {
         return Ok(());
     }
     let reference = match step.tables.reference_mm[n - 1] {
@@ -300,7 +300,7 @@ pub(super) fn reference_return(step: &mut Step, words: &mut Words, n: usize, spa
         step.emit(Op::Rapid { from: step.st.pos, to: mid });
     }
     // Kept for G29, per axis named (FANUC 0i manual, G29: the G28 or G30 before it).
-    for (a, _) in given.iter().enumerate().filter(|(_, g)| **g) {
+    for (a, _) in given.iter().enumerate().filter(|(_, g)| g.is_some()) {
         step.st.reference_mid[a] = Some(mid.axis(a));
     }
     if step.profile.frame.reference_cancels_tool_offset {
@@ -313,7 +313,7 @@ pub(super) fn reference_return(step: &mut Step, words: &mut Words, n: usize, spa
     }
     let origin = step.tables.to_machine(&step.st.frame);
     let mut home = step.st.pos;
-    for (a, _) in given.iter().enumerate().filter(|(_, g)| **g) {
+    for (a, _) in given.iter().enumerate().filter(|(_, g)| g.is_some()) {
         {
             home.set_axis(a, reference.axis(a) - origin.axis(a));
         }
@@ -331,24 +331,19 @@ pub(super) fn reference_return(step: &mut Step, words: &mut Words, n: usize, spa
 /// An axis no G28/G30 has named since power on has no intermediate point: alarm NCS-E88
 /// (ncsight's rule; what the control does then was not found).
 pub(super) fn from_reference(step: &mut Step, words: &mut Words, span: Span) -> Result<(), Diagnostic> {
-    let inc_letters: [u8; 3] = [b'U', b'V', b'W'];
-    let abs_letters: [u8; 3] = [b'X', b'Y', b'Z'];
-    let incremental: [bool; 3] = std::array::from_fn(|a| {
-        (step.profile.incremental_addresses && words.has(inc_letters[a])) || (step.st.incremental && words.has(abs_letters[a]))
-    });
     let shown = step.st.pos + step.st.frame.unmoved;
     let (written, given) = axis_target(step, words)?;
-    if !given.iter().any(|g| *g) {
+    if !given.iter().any(Option::is_some) {
         return Ok(());
     }
     let (mut mid, mut end) = (step.st.pos, step.st.pos);
-    for a in (0..3).filter(|a| given[*a]) {
+    for (a, how) in given.iter().enumerate().filter_map(|(a, g)| g.map(|g| (a, g))) {
         let Some(m) = step.st.reference_mid[a] else {
-            let letter = abs_letters[a] as char;
+            let letter = ['X', 'Y', 'Z'][a];
             return Err(step.alarm(Rule::NoIntermediatePoint, span, format!("G29 names {letter}, and no G28 or G30 has given {letter} an intermediate point since the start")));
         };
         mid.set_axis(a, m);
-        end.set_axis(a, if incremental[a] { m + (written.axis(a) - shown.axis(a)) } else { written.axis(a) });
+        end.set_axis(a, if how == super::Given::Incremental { m + (written.axis(a) - shown.axis(a)) } else { written.axis(a) });
     }
     if mid != step.st.pos {
         step.emit(Op::Rapid { from: step.st.pos, to: mid });
@@ -678,7 +673,7 @@ pub(super) fn offset_move(step: &mut Step, words: &mut Words, factor: i8, span: 
     let (target, given) = axis_target(step, words)?;
     let shown = step.st.pos + step.st.frame.unmoved;
     let mut to = target;
-    for (a, _) in given.iter().enumerate().filter(|(_, g)| **g) {
+    for (a, _) in given.iter().enumerate().filter(|(_, g)| g.is_some()) {
         let delta = target.axis(a) - shown.axis(a);
         let scale = if a == 0 && step.profile.diameter_x { 0.5 } else { 1.0 };
         if delta != 0.0 {
@@ -713,7 +708,7 @@ pub(super) fn reference_check(step: &mut Step, words: &mut Words, span: Span) ->
     let reference = step.tables.reference_mm[0].unwrap_or_default();
     let machine = target + step.tables.to_machine(&step.st.frame);
     let x_scale = if step.profile.diameter_x { 2.0 } else { 1.0 };
-    for (a, _) in given.iter().enumerate().filter(|(_, g)| **g) {
+    for (a, _) in given.iter().enumerate().filter(|(_, g)| g.is_some()) {
         if (machine.axis(a) - reference.axis(a)).abs() > 0.001 {
             let scale = if a == 0 { x_scale } else { 1.0 };
             let name = ["X", "Y", "Z"][a];

@@ -1693,13 +1693,21 @@ fn dwell(step: &mut Step, words: &mut Words) -> Result<(), Diagnostic> {
     Ok(())
 }
 
-/// The end point a block's axis words name, and which axes were given.
-fn axis_target(step: &mut Step, words: &mut Words) -> Result<(Vec3, [bool; 3]), Diagnostic> {
+/// How a block's word gave an axis: as a coordinate, or as a distance from where the tool is
+/// (U/V/W, or X/Y/Z in G91).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Given {
+    Absolute,
+    Incremental,
+}
+
+/// The end point a block's axis words name, and how each axis was given.
+fn axis_target(step: &mut Step, words: &mut Words) -> Result<(Vec3, [Option<Given>; 3]), Diagnostic> {
     let profile = step.profile;
     // From the position the controller shows: an axis not written goes there too (a tool
     // offset's movement not made yet is made with this move, on every axis).
     let mut target = step.st.pos + step.st.frame.unmoved;
-    let mut given = [false; 3];
+    let mut given = [None; 3];
     let pairs: [(u8, u8, usize); 3] = [(b'X', b'U', 0), (b'Y', b'V', 1), (b'Z', b'W', 2)];
     for (abs_l, inc_l, axis) in pairs {
         let abs_w = words.take(abs_l);
@@ -1718,11 +1726,11 @@ fn axis_target(step: &mut Step, words: &mut Words) -> Result<(Vec3, [bool; 3]), 
         if let Some(w) = abs_w {
             let v = step.length(w)? * scale;
             target.set_axis(axis, if step.st.incremental { shown + v } else { v });
-            given[axis] = true;
+            given[axis] = Some(if step.st.incremental { Given::Incremental } else { Given::Absolute });
         } else if let Some(w) = inc_w {
             let v = step.length(w)? * scale;
             target.set_axis(axis, shown + v);
-            given[axis] = true;
+            given[axis] = Some(Given::Incremental);
         }
     }
     Ok((target, given))
@@ -1794,7 +1802,7 @@ fn single_direction(step: &mut Step, words: &mut Words) -> Result<(), Diagnostic
     let from = step.st.pos;
     let keys = [ParamKey::Setting("g60_overrun_x_mm"), ParamKey::Setting("g60_overrun_y_mm"), ParamKey::Setting("g60_overrun_z_mm")];
     let mut via = target;
-    for (a, _) in given.iter().enumerate().filter(|(_, g)| **g) {
+    for (a, _) in given.iter().enumerate().filter(|(_, g)| g.is_some()) {
         let overrun = if step.profile.param(keys[a]).is_some() { step.params.get(keys[a]) } else { 0.0 };
         if target.axis(a) != from.axis(a) {
             via.set_axis(a, target.axis(a) - overrun);
@@ -1876,11 +1884,10 @@ fn motion(step: &mut Step, words: &mut Words) -> Result<(), Diagnostic> {
         Some(rules) => drawing::angle(step, words, rules),
         None => None,
     };
-    let absolute = [b'X', b'Y', b'Z'].map(|l| words.peek(l).is_some() && !step.st.incremental);
     let (target, given) = axis_target(step, words)?;
     let target = match drawing {
         Some(rules) if angle.is_some() || step.st.comp.angle_line.is_some() => {
-            let Some(t) = drawing::line(step, rules, angle, target, given, absolute)? else {
+            let Some(t) = drawing::line(step, rules, angle, target, given)? else {
                 if rotary.is_some() {
                     return Err(step.alarm(Rule::NotSupported, step.span, "a rotary axis turned with a line of an angle alone is not simulated by ncsight yet"));
                 }
