@@ -222,7 +222,14 @@ fn foot(seg: &Seg, c: P2) -> (P2, bool) {
             let q = center.plus(c.minus(center).unit().scale(from.dist(center)));
             let whole = arc_sweep(center, ccw, from, to);
             let at = arc_sweep(center, ccw, from, q);
-            (q, at <= whole + 1e-9 || at >= std::f64::consts::TAU - 1e-9)
+            // A point within the tolerance of an end is that end (not a turn short of a circle).
+            if at >= std::f64::consts::TAU - 1e-9 {
+                (from, true)
+            } else if at > whole {
+                (to, at <= whole + 1e-9)
+            } else {
+                (q, true)
+            }
         }
     }
 }
@@ -267,17 +274,19 @@ pub fn corner_cut(first: &Seg, second: &Seg, cut: CornerCut) -> Result<Option<Co
             (along(first, t, true).ok_or(t)?, along(second, t, false).ok_or(t)?, None)
         }
         CornerCut::Length(l) => {
-            // Equal chords from the corner whose ends lie `l` apart: the gap grows with the
-            // chord, found by halving up to the longest chord both moves have.
+            // Equal chords from the corner whose ends lie `l` apart: the shortest such chord.
+            // The gap need not grow all the way (an arc may curl back toward the other move):
+            // stepped out from the corner to the first chord whose gap reaches `l`, then halved.
             let gap = |t: f64| match (along(first, t, true), along(second, t, false)) {
                 (Some(a), Some(b)) => a.dist(b),
-                _ => f64::INFINITY,
+                _ => f64::NEG_INFINITY,
             };
-            let longest = max_chord(first).min(max_chord(second));
-            if gap(longest * (1.0 - 1e-12)) < l {
+            let longest = max_chord(first).min(max_chord(second)) * (1.0 - 1e-12);
+            const STEPS: usize = 256;
+            let Some(k) = (1..=STEPS).find(|k| gap(longest * *k as f64 / STEPS as f64) >= l) else {
                 return Err(longest);
-            }
-            let (mut lo, mut hi) = (0.0, longest * (1.0 - 1e-12));
+            };
+            let (mut lo, mut hi) = (longest * (k - 1) as f64 / STEPS as f64, longest * k as f64 / STEPS as f64);
             for _ in 0..80 {
                 let mid = 0.5 * (lo + hi);
                 if gap(mid) < l {

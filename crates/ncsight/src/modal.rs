@@ -300,7 +300,6 @@ pub struct CornerRequest {
 /// G18: after I, or R after a move along Z) or its first, the way the word's sign gives.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct RightAngle {
-    /// `None` until this block's move shows it (R follows either axis).
     pub next_along_second: Option<bool>,
     /// +1 or -1.
     pub sign: f64,

@@ -117,3 +117,27 @@ proptest! {
         }
     }
 }
+
+/// An arc that curls back toward the line before it: the chamfer of length 1 is the one
+/// nearest the corner (chords 0.7564), though longer chords close up again.
+#[test]
+fn a_chamfer_takes_the_shortest_chords() {
+    // The line Z2 to Z-10 at radius 10, then a clockwise half circle back to Z-4 about Z-7.
+    let line = Seg::Line { from: P2::new(2.0, 10.0), to: P2::new(-10.0, 10.0) };
+    let arc = Seg::Arc { from: P2::new(-10.0, 10.0), to: P2::new(-4.0, 10.0), center: P2::new(-7.0, 10.0), ccw: false };
+    let (a, b, _) = corner_cut(&line, &arc, CornerCut::Length(1.0)).unwrap().unwrap();
+    assert!((a.a + 9.2436).abs() < 1e-4 && (a.b - 10.0).abs() < 1e-9, "{a:?}");
+    assert!((b.a + 9.9046).abs() < 1e-4 && (b.b - 10.75035).abs() < 1e-4, "{b:?}");
+}
+
+/// A corner arc that touches an arc at its very start takes the whole arc: its tangent point
+/// is that start, not a point a turn short of it.
+#[test]
+fn a_corner_arc_may_take_a_whole_arc() {
+    let arc = Seg::Arc { from: P2::new(-10.0, 15.0), to: P2::new(-20.0, 25.0), center: P2::new(-20.0, 15.0), ccw: true };
+    let line = Seg::Line { from: P2::new(-20.0, 25.0), to: P2::new(-20.0, 5.0) };
+    let (a, b, arc_of) = corner_cut(&arc, &line, CornerCut::Round(5.0)).unwrap().unwrap();
+    assert!(a.dist(P2::new(-10.0, 15.0)) < 1e-9, "{a:?}");
+    assert!(b.dist(P2::new(-20.0, 15.0)) < 1e-9, "{b:?}");
+    assert!(arc_of.unwrap().0.dist(P2::new(-15.0, 15.0)) < 1e-9);
+}

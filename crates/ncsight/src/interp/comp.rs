@@ -265,8 +265,19 @@ fn slowed(op: Op, start_mm: f64, end_mm: f64, factor: f64) -> Vec<Op> {
     if length < 1e-9 {
         return vec![op];
     }
-    let a = (start_mm / length).min(1.0);
-    let b = (1.0 - end_mm / length).max(a);
+    let mut a = (start_mm / length).min(1.0);
+    let mut b = (1.0 - end_mm / length).max(a);
+    // Break points within a micrometre of another are one (no piece shorter than that: an
+    // arc from a point to itself would be a whole circle).
+    if a * length < 1e-6 {
+        a = 0.0;
+    }
+    if (1.0 - b) * length < 1e-6 {
+        b = 1.0;
+    }
+    if (b - a) * length < 1e-6 {
+        b = a;
+    }
     let point = |u: f64| match (&op, &geometry) {
         (Op::Arc { plane, dir, .. }, Some(g)) => crate::geom::arc_point(&from, &to, *plane, *dir, g, u),
         _ => super::lerp(&from, &to, u),
@@ -279,7 +290,7 @@ fn slowed(op: Op, start_mm: f64, end_mm: f64, factor: f64) -> Vec<Op> {
             other => other,
         }
     };
-    [(0.0, a, true), (a, b, false), (b, 1.0, true)].into_iter().filter(|(u0, u1, _)| u1 - u0 > 1e-12).map(|(u0, u1, slow)| piece(u0, u1, slow)).collect()
+    [(0.0, a, true), (a, b, false), (b, 1.0, true)].into_iter().filter(|(u0, u1, _)| u1 > u0).map(|(u0, u1, slow)| piece(u0, u1, slow)).collect()
 }
 
 /// A block whose records the stage made in this block (for the single-block marks).

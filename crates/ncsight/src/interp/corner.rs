@@ -67,38 +67,23 @@ fn right_angle_words(step: &mut Step, words: &mut super::Words, rules: crate::pr
     if step.bypass_comp && !step.contour {
         return Err(step.alarm(Rule::NotSupported, w.span, format!("{}: a chamfer or corner R in a block that radius compensation does not act in (a T word, a cycle) is not simulated by ncsight yet", w.text())));
     }
-    let next_along_second = match w.letter {
-        b'I' => Some(true),
-        b'K' => Some(false),
-        _ => None,
-    };
-    let right_angle = Some(crate::modal::RightAngle { next_along_second, sign: v.signum() });
-    step.st.comp.corner_for_next = Some(crate::modal::CornerRequest { letter: w.letter, size_mm: v.abs(), round: w.letter == b'R', from_corner: true, span: step.span, right_angle });
-    Ok(())
-}
-
-/// The move of a block with a right-angle chamfer or corner R runs along one axis, the one its
-/// word follows (alarm 054); the next move's axis is then known.
-fn right_angle_first(step: &Step, c: &mut crate::modal::CornerRequest, seg: &Seg) -> Result<(), Diagnostic> {
-    let Some(ra) = c.right_angle.as_mut() else { return Ok(()) };
-    let u = seg.tangent(false);
-    let along = match *seg {
-        Seg::Line { .. } if u.b.abs() < 1e-9 => Some(false),
-        Seg::Line { .. } if u.a.abs() < 1e-9 => Some(true),
-        _ => None,
-    };
-    let names = ["Z", "X"];
-    match (along, ra.next_along_second) {
-        (Some(first_along_second), None) => ra.next_along_second = Some(!first_along_second),
-        (Some(first_along_second), Some(next)) if first_along_second != next => {}
+    // The block's programmed move runs along one axis, the one the word follows (alarm 054):
+    // the words decide, not the move (a tool offset's movement may ride along with it).
+    let (along_z, along_x) = ([b'Z', b'W'].iter().any(|l| words.has(*l)), [b'X', b'U'].iter().any(|l| words.has(*l)));
+    let next_along_second = match (w.letter, along_z, along_x) {
+        (b'I' | b'R', true, false) => true,
+        (b'K' | b'R', false, true) => false,
         _ => {
-            let msg = match ra.next_along_second {
-                Some(next) => format!("{}: the move of its block runs along {} only (its corner leads to a move along {}; FANUC alarm 054)", crate::read::address_name(c.letter), names[usize::from(!next)], names[usize::from(next)]),
-                None => format!("{}: the move of its block runs along one axis, Z or X (FANUC alarm 054)", crate::read::address_name(c.letter)),
+            let msg = match w.letter {
+                b'I' => format!("{}: the move of its block is along Z only (Z or W), its chamfer leading to a move along X (FANUC alarm 054)", w.text()),
+                b'K' => format!("{}: the move of its block is along X only (X or U), its chamfer leading to a move along Z (FANUC alarm 054)", w.text()),
+                _ => format!("{}: the move of its block is along one axis, Z or X (FANUC alarm 054)", w.text()),
             };
-            return Err(step.alarm(Rule::CornerTaper, c.span, msg));
+            return Err(step.alarm(Rule::CornerTaper, step.span, msg));
         }
-    }
+    };
+    let right_angle = Some(crate::modal::RightAngle { next_along_second: Some(next_along_second), sign: v.signum() });
+    step.st.comp.corner_for_next = Some(crate::modal::CornerRequest { letter: w.letter, size_mm: v.abs(), round: w.letter == b'R', from_corner: true, span: step.span, right_angle });
     Ok(())
 }
 
@@ -173,7 +158,13 @@ fn make_held(step: &mut Step, end: geometry::P2, then: Option<Op>) {
         Op::Arc { center, plane, dir, feed_mm_min, .. } => Op::Arc { from, to, center, plane, dir, feed_mm_min },
         other => other,
     };
-    pass(step, held.span, held.n, made);
+    // A corner may take the whole move (a corner arc touching an arc at its start): nothing of
+    // it is left to make (an arc from a point to itself would be a whole circle).
+    let programmed_length = held.op.start_point().zip(held.op.end_point()).map_or(0.0, |(s, e)| s.dist(&e));
+    let taken_whole = from.dist(&to) < 1e-9 && programmed_length > 1e-9;
+    if !taken_whole {
+        pass(step, held.span, held.n, made);
+    }
     if let Some(link) = then {
         pass(step, held.span, held.n, link);
     }
@@ -259,14 +250,7 @@ fn plane_move(step: &mut Step, span: Span, n: Option<u32>, op: Op, seg: Seg) {
         make_held(step, end, chamfer);
     }
     step.st.comp.corner_start = next_start;
-    let mut asked = step.st.comp.corner_for_next.take();
-    if let Some(c) = asked.as_mut() {
-        if let Err(d) = right_angle_first(step, c, &seg) {
-            step.out.comp_error.get_or_insert(d);
-            return;
-        }
-    }
-    step.st.comp.held_corner = asked;
+    step.st.comp.held_corner = step.st.comp.corner_for_next.take();
     // The block made a move in the plane, though it waits here (compensation's look-ahead
     // counts it as one).
     step.out.comp_plane_move = true;
