@@ -11,6 +11,25 @@ use crate::motion::ArcDir;
 /// M29 S_: rigid tapping mode (help text G84/88).
 const TAPPING_M: &[super::MDef] = &[super::MDef { code: 29, function: super::MFn::RigidTapping, meaning: "rigid tapping mode: with S, before G84/G88" }];
 
+/// The help text's second spindle and spindle positioning codes: machine functions without a
+/// motion of the tool (the second spindle and the positioning time are not modelled).
+const SECOND_SPINDLE_M: &[super::MDef] = &[
+    common::m(24, super::MFn::Auxiliary, "second spindle to position control"),
+    common::m(25, super::MFn::Auxiliary, "second spindle to speed control"),
+    common::m(50, super::MFn::Auxiliary, "spindle positioning cancelled"),
+    common::m(51, super::MFn::Auxiliary, "spindle positioned to point 1"),
+    common::m(52, super::MFn::Auxiliary, "spindle positioned to point 2"),
+    common::m(53, super::MFn::Auxiliary, "spindle positioned to point 3"),
+    common::m(54, super::MFn::Auxiliary, "spindle positioned to point 4"),
+    common::m(55, super::MFn::Auxiliary, "spindle positioned to point 5"),
+    common::m(56, super::MFn::Auxiliary, "spindle positioned to point 6"),
+    common::m(57, super::MFn::Auxiliary, "spindle positioned to point 7"),
+    common::m(58, super::MFn::Auxiliary, "spindle positioned to point 8"),
+    common::m(63, super::MFn::Auxiliary, "second spindle forward"),
+    common::m(64, super::MFn::Auxiliary, "second spindle reverse"),
+    common::m(65, super::MFn::Auxiliary, "second spindle stop"),
+];
+
 /// G92 (GSK980TDi manual, G92): R taper, F lead or I threads per inch, J/K pull-out with No.19
 /// for what is omitted (note 10: negative J, K count as positive), L starts, P1 repair; FEED HOLD
 /// by NO.0018 bit 6 (note 1).
@@ -222,7 +241,7 @@ pub static PROFILE: Profile = Profile {
     peck_back_off: Some(ParamKey::Number(56, None)),
     box_taper: b'R',
     g_codes: &[super::Codes { source: "GSK980TDi help text (G-code list)", codes: common::G_CODES }, super::Codes { source: "GSK980TDi help text (G-code list)", codes: lathe_a::G_CODES }, super::Codes { source: "GSK980TDi manual, G92 (seed 000) and help text", codes: EXTRA }, super::Codes { source: "GSK980TDi help text, G05/05.1, G6.2/6.3, G7.2/7.3; Q's sense from the GSK980TDc manual", codes: CURVES }, super::Codes { source: "GSK980TDi help text (G-code list)", codes: super::later::GSK980TDI }],
-    m_codes: &[super::Codes { source: "GSK980TDi help text (M-code list)", codes: common::M_CODES }, super::Codes { source: "GSK980TDi help text (M-code list)", codes: lathe_a::M_CODES }, super::Codes { source: "GSK980TDi help text (M-code list)", codes: lathe_a::GSK_M_CODES }, super::Codes { source: "GSK980TDi help text, G84/G88", codes: TAPPING_M }],
+    m_codes: &[super::Codes { source: "GSK980TDi help text (M-code list)", codes: common::M_CODES }, super::Codes { source: "GSK980TDi help text (M-code list)", codes: lathe_a::M_CODES }, super::Codes { source: "GSK980TDi help text (M-code list)", codes: lathe_a::GSK_M_CODES }, super::Codes { source: "GSK980TDi help text, G84/G88", codes: TAPPING_M }, super::Codes { source: "GSK980TDi help text, M24/25, M50-58, M63/64/65", codes: SECOND_SPINDLE_M }],
     params: &[PARAMS, DRY_RUN, super::builder::GSK980TDI, super::GSK_LATHE_OFFSETS, SETTINGS],
     time: TimeKeys {
         rapid: [ParamKey::Number(22, None), ParamKey::Number(22, None), ParamKey::Number(22, None)],
