@@ -440,3 +440,23 @@ fn g39_before_a_rapid_makes_no_arc() {
     let (r, _) = common::run_setup("fanuc0m", setup, "G00 X-20. Y0\nG41 G01 X0 Y0 D1 F100.\nY20.\nG39\nX30.\nG40 X50.\nM30\n", false);
     assert_eq!(r.iter().filter(|r| r.op.kind() == "arc").count(), 1);
 }
+
+/// Single block with corners and lines of an angle alone (docs/commands/drawing.md): a block
+/// whose move waits for the next block stops once, after its own move and its corner, not
+/// before them; the block between a line of an angle alone and the line that ends it stops
+/// after the held line is made.
+#[test]
+fn single_block_stops_after_held_corners_and_lines() {
+    let sb = Options { single_block: true, ..Options::default() };
+    let text = "G98 M03 S800 G00 X20. Z2.\nG01 Z0 F100.\nX40. ,C2.\nZ-20.\n,A90.\nS500\nX60. Z-30. ,A180.\nM30\n";
+    let r = run("fanuc0t", &[], sb, text);
+    let lines: Vec<u32> = stops(&r).iter().map(|(i, _)| r[*i].span.line).collect();
+    assert_eq!(lines, vec![1, 2, 3, 4, 5, 6, 7, 8], "{lines:?}");
+    // Each stop follows the last record of its block: line 3's chamfer, line 5's held line.
+    for (i, _) in stops(&r) {
+        let before = &r[i - 1];
+        assert_eq!(before.span.line, r[i].span.line, "stop {:?} after a record of line {}", r[i].span, before.span.line);
+    }
+    let chamfer_end = stops(&r).iter().find(|(i, _)| r[*i].span.line == 3).map(|(i, _)| r[i - 1].op.end_point().map(dia_z)).unwrap();
+    assert_eq!(chamfer_end, Some((40.0, -2.0)));
+}
