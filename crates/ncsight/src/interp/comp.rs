@@ -327,7 +327,18 @@ fn make_held(step: &mut Step, end: P2, slow_end_mm: f64) -> Result<Vec3, CompErr
     let made = match held.op {
         Op::Rapid { .. } => Op::Rapid { from: start + tip, to: end3 + tip },
         Op::Feed { feed_mm_min, .. } => Op::Feed { from: start + tip, to: end3 + tip, feed_mm_min },
-        Op::Arc { center, plane, dir, feed_mm_min, .. } => Op::Arc { from: start + tip, to: end3 + tip, center: center + tip, plane, dir, feed_mm_min },
+        Op::Arc { from, center, plane, dir, feed_mm_min, .. } => {
+            // Inside an arc the cutter centre runs on a smaller circle: the control slows it so
+            // that the programmed path keeps F, down to parameter 1710 per cent at the least (the
+            // FANUC 0i-M and 16i manuals, internal circular cutting feedrate change: in cutter
+            // compensation whether G62 is on or not).
+            let (programmed, centre_path) = (comp::local(&from, plane).dist(comp::local(&center, plane)), comp::local(&start, plane).dist(comp::local(&center, plane)));
+            let feed_mm_min = match step.profile.frame.corner_override {
+                Some(keys) if centre_path < programmed - 1e-9 && programmed > 0.0 => feed_mm_min * (centre_path / programmed).max(step.params.get(keys.arc_min_percent) / 100.0),
+                _ => feed_mm_min,
+            };
+            Op::Arc { from: start + tip, to: end3 + tip, center: center + tip, plane, dir, feed_mm_min }
+        }
         other => other,
     };
     if let Err(e) = result {

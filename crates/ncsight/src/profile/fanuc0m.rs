@@ -82,6 +82,15 @@ const TRANSFORMS: &[ParamDef] = &[
 
 const PARAMS: &[ParamDef] = &[
     ParamDef {
+        key: ParamKey::Number(1710, None),
+        meaning: "MDR: inside an arc in cutter compensation the centre path runs at F times its radius over the programmed radius, at least this",
+        unit: "%",
+        min: 1.0,
+        max: 100.0,
+        default: 10.0,
+        source: "FANUC 0i numbering as recalled (No. 1710, minimum deceleration ratio of inner circular cutting; inferred for the FANUC 0-M); default assumed",
+    },
+    ParamDef {
         key: ParamKey::Number(1711, None),
         meaning: "G62: an inner corner whose angle on the work side is at most this is overridden (2-178)",
         unit: "deg",
@@ -245,6 +254,7 @@ pub static PROFILE: Profile = Profile {
             scaling_option: Some(ParamKey::Setting("scaling_option")),
         },
         corner_override: Some(super::CornerOverrideKeys {
+            arc_min_percent: ParamKey::Number(1710, None),
             angle: ParamKey::Number(1711, None),
             percent: ParamKey::Number(1712, None),
             after: ParamKey::Number(1713, None),

@@ -523,9 +523,12 @@ pub struct FrameRules {
 /// G62, automatic corner override (FANUC 16i manual, inside-corner override; 0i numbering): in
 /// cutter compensation the feed at an inner corner of at most `angle` degrees on the work side is
 /// overridden by `percent` from `before` mm before the corner to `after` mm after it, on the
-/// cutter centre path.
+/// cutter centre path. And inside an arc in cutter compensation (with or without G62) the
+/// centre path runs at F times its radius over the programmed one, `arc_min_percent` at least.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct CornerOverrideKeys {
+    /// The least a cutter centre path inside an arc is slowed to, per cent (FANUC 1710 MDR).
+    pub arc_min_percent: ParamKey,
     pub angle: ParamKey,
     pub percent: ParamKey,
     pub after: ParamKey,
