@@ -245,6 +245,9 @@ pub struct CompState {
     /// G39 came after the held move: the outer corner to the next move is an arc about the
     /// corner point.
     pub round_corner: bool,
+    /// The path goes on from `actual` (after G39 with a direction): the next move is not a
+    /// start-up.
+    pub resume: bool,
     /// G62 (automatic corner override) is the path mode.
     pub corner_override: bool,
     /// The held move starts after an inner corner under G62: this much of it runs at the

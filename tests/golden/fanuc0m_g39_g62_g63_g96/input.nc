@@ -28,4 +28,14 @@ X40.
 Y40.
 G40 X50.
 G64 G00 Z5.
+(G39 I10. J0 - FANUC 16-MC manual - a direction from the corner - +X: Y20. ends at its old vector X-5 Y20 at once, an arc clockwise [G41] about X0 Y20 to the new vector left of +X - X0 Y25; the path goes on from there: X30. meets Y0 at the ordinary corner X35 Y25 - not a start-up.)
+G00 X-20. Y0
+G01 Z-2. F200.
+G41 G01 X0 Y0 D1
+Y20.
+G39 I10. J0
+X30.
+Y0
+G40 X50.
+G00 Z5.
 M30

@@ -60,6 +60,7 @@ pub(super) fn command(step: &mut Step, side: i8, d: Option<u32>, span: Span, arc
         }
         step.st.comp.side = 0;
         step.st.comp.started = false;
+        step.st.comp.resume = false;
         return Ok(());
     }
     // Compensation starting after a chamfer's move: that move is made first, with no corner.
@@ -93,6 +94,7 @@ pub(super) fn command(step: &mut Step, side: i8, d: Option<u32>, span: Span, arc
     if st.side != side {
         // A new start: the next move is the start-up (type A).
         st.started = false;
+        st.resume = false;
     }
     st.side = side;
     st.radius_mm = radius;
@@ -171,7 +173,8 @@ fn plane_move(step: &mut Step, span: Span, n: Option<u32>, op: Op, seg: Seg) {
             step.st.comp.held_startup = false;
         } else {
             step.st.comp.held_start = centre;
-            step.st.comp.held_startup = true;
+            // After G39 with a direction the path goes on: the next corner is an ordinary one.
+            step.st.comp.held_startup = !std::mem::take(&mut step.st.comp.resume);
         }
         step.st.comp.started = true;
         step.queue.push(Record::of_block(span, n, op));
@@ -381,6 +384,7 @@ fn make_held(step: &mut Step, end: P2, slow_end_mm: f64) -> Result<Vec3, CompErr
 pub(super) fn break_off(step: &mut Step) {
     // A G39 before the break has no corner left to round.
     step.st.comp.round_corner = false;
+    step.st.comp.resume = false;
     if step.queue.is_empty() {
         return;
     }
@@ -407,21 +411,67 @@ pub(super) fn break_off(step: &mut Step) {
 
 /// G39 (FANUC 0i-M manual, corner circular interpolation): the corner between the move held
 /// and the next one is an arc of the cutter's radius about the corner point. Outside
-/// compensation there is no corner to round: a warning. `G39 I_ J_` (the direction of a corner
-/// not followed by a move) is not simulated.
+/// compensation there is no corner to round: a warning. With a direction (`G39 I_ J_`, from the
+/// corner; or `G39 X_ Y_`, a point toward which, absolute or incremental: the FANUC 16-MC
+/// manual) the arc is made at once, to the new offset vector at right angles to that direction
+/// on the compensated side, clockwise with G41 and counter-clockwise with G42; the path goes on
+/// from there.
 pub(super) fn corner_arc(step: &mut Step, words: &mut super::Words, span: Span) -> Result<(), Diagnostic> {
-    for l in [b'I', b'J', b'K'] {
-        if let Some(w) = words.take(l) {
-            return Err(step.alarm(Rule::NotSupported, w.span, format!("{}: G39 with a direction (I, J, K) is not simulated by ncsight yet", w.text())));
-        }
+    let plane = step.st.plane;
+    let (ia, ib, _) = plane.axes();
+    let centre_letters = [b'I', b'J', b'K'];
+    let (la, lb) = (centre_letters[ia], centre_letters[ib]);
+    let corner = step.st.pos;
+    let direction = if words.has(la) || words.has(lb) {
+        let a = words.take(la).map(|w| step.length(w)).transpose()?.unwrap_or(0.0);
+        let b = words.take(lb).map(|w| step.length(w)).transpose()?.unwrap_or(0.0);
+        Some(P2::new(a, b))
+    } else {
+        let (target, given) = super::axis_target(step, words)?;
+        given.iter().any(Option::is_some).then(|| comp::local(&target, plane).minus(comp::local(&corner, plane)))
+    };
+    if let Some(w) = centre_letters.iter().filter(|l| **l != la && **l != lb).find_map(|l| words.take(*l)) {
+        return Err(step.alarm(Rule::WordNotTaken, w.span, format!("{}: G39's direction is given in the plane's I, J or K", w.text())));
     }
     if step.st.comp.side == 0 {
         step.warn(Rule::TextIgnored, span, "G39 outside cutter compensation (G41/G42): no corner to round");
         return Ok(());
     }
+    if let Some(d) = direction {
+        return directed_corner_arc(step, span, d, corner);
+    }
     step.st.comp.round_corner = true;
     // G39 stands between the two moves it joins: it is not a block without a move for the
     // look-ahead (or the path would end perpendicular before the corner it rounds).
+    step.out.comp_plane_move = true;
+    Ok(())
+}
+
+/// G39 with a direction `d` from the corner (the held move's programmed end `corner`).
+fn directed_corner_arc(step: &mut Step, span: Span, d: P2, corner: Vec3) -> Result<(), Diagnostic> {
+    let plane = step.st.plane;
+    let (side, r) = (step.st.comp.side as f64, step.st.comp.radius_mm);
+    if d.len() < 1e-9 {
+        return Err(step.alarm(Rule::ValueOutOfRange, span, "G39: the direction given is of length 0"));
+    }
+    let feed = step.cutting_feed(super::What::from("G39"), &|_| corner)?;
+    // The held move ends at right angles to itself at the corner (its old vector).
+    break_off(step);
+    if step.out.comp_error.is_some() {
+        return Ok(());
+    }
+    let tip = step.st.comp.tip;
+    let from = step.st.comp.actual.unwrap_or(corner - tip);
+    let p = comp::local(&corner, plane);
+    let new_vector = d.unit().left().scale(side * r);
+    let to = comp::with_local(&from, p.plus(new_vector), plane);
+    if from.dist(&to) > 1e-9 {
+        // G41 turns clockwise, G42 counter-clockwise (FANUC 16-MC manual).
+        let dir = if side > 0.0 { ArcDir::Cw } else { ArcDir::Ccw };
+        step.push_record(span, step.n, Op::Arc { from: from + tip, to: to + tip, center: comp::with_local(&from, p, plane) + tip, plane, dir, feed_mm_min: feed });
+    }
+    step.st.comp.actual = Some(to);
+    step.st.comp.resume = true;
     step.out.comp_plane_move = true;
     Ok(())
 }
