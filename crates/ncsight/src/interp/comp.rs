@@ -272,12 +272,9 @@ fn slowed(op: Op, start_mm: f64, end_mm: f64, factor: f64) -> Vec<Op> {
     let mut b = (1.0 - end_mm / length).max(a);
     // Break points within a micrometre of another are one (no piece shorter than that: an
     // arc from a point to itself would be a whole circle).
-    if a * length < 1e-6 {
-        a = 0.0;
-    }
-    if (1.0 - b) * length < 1e-6 {
-        b = 1.0;
-    }
+    let snap = |u: f64| if u * length < 1e-6 { 0.0 } else if (1.0 - u) * length < 1e-6 { 1.0 } else { u };
+    a = snap(a);
+    b = snap(b).max(a);
     if (b - a) * length < 1e-6 {
         b = a;
     }
@@ -428,6 +425,12 @@ pub(super) fn corner_arc(step: &mut Step, words: &mut super::Words, span: Span) 
         Some(P2::new(a, b))
     } else {
         let (target, given) = super::axis_target(step, words)?;
+        let (_, _, normal) = plane.axes();
+        if given[normal].is_some() {
+            let w = words.peek([b'X', b'Y', b'Z'][normal]).or(words.peek([b'U', b'V', b'W'][normal]));
+            let span = w.map_or(span, |w| w.span);
+            return Err(step.alarm(Rule::WordNotTaken, span, "G39: its direction is a point in the plane; an axis off the plane moves nothing here"));
+        }
         given.iter().any(Option::is_some).then(|| comp::local(&target, plane).minus(comp::local(&corner, plane)))
     };
     if let Some(w) = centre_letters.iter().filter(|l| **l != la && **l != lb).find_map(|l| words.take(*l)) {
@@ -454,6 +457,11 @@ fn directed_corner_arc(step: &mut Step, span: Span, d: P2, corner: Vec3) -> Resu
     if d.len() < 1e-9 {
         return Err(step.alarm(Rule::ValueOutOfRange, span, "G39: the direction given is of length 0"));
     }
+    if step.queue.is_empty() && step.st.comp.actual.is_none() {
+        // No offset vector yet (G41/G42 without a move, or the path started anew): an arc in
+        // the start-up is FANUC alarm 034.
+        return Err(step.alarm(Rule::CompStartupArc, span, "G39 with a direction: no compensated move comes before it to turn from (an arc may not start compensation)"));
+    }
     let feed = step.cutting_feed(super::What::from("G39"), &|_| corner)?;
     // The held move ends at right angles to itself at the corner (its old vector).
     break_off(step);
@@ -463,7 +471,9 @@ fn directed_corner_arc(step: &mut Step, span: Span, d: P2, corner: Vec3) -> Resu
     let tip = step.st.comp.tip;
     let from = step.st.comp.actual.unwrap_or(corner - tip);
     let p = comp::local(&corner, plane);
-    let new_vector = d.unit().left().scale(side * r);
+    // The arc keeps the radius the tool is at (after a D change the old one, until a move).
+    let at_radius = comp::local(&from, plane).dist(p);
+    let new_vector = d.unit().left().scale(side * if at_radius > 1e-9 { at_radius } else { r });
     let to = comp::with_local(&from, p.plus(new_vector), plane);
     if from.dist(&to) > 1e-9 {
         // G41 turns clockwise, G42 counter-clockwise (FANUC 16-MC manual).

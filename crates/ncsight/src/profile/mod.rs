@@ -939,7 +939,7 @@ impl GFn {
 impl MFn {
     pub fn status(self) -> CodeStatus {
         match self {
-            MFn::Auxiliary => CodeStatus::Assumed("a machine function with no motion: recorded, nothing moves"),
+            MFn::Auxiliary => CodeStatus::Assumed("a machine function with no motion of the tool: accepted, nothing moves and no record is made"),
             _ => CodeStatus::Simulated,
         }
     }
