@@ -185,6 +185,7 @@ rules! {
     CompRadiusZero => Warning, "NCS-W33", None, "RADIUS COMPENSATION WITH RADIUS 0";
     NoSkipSignal => Warning, "NCS-W34", None, "NO SKIP SIGNAL: THE MOVE RUNS TO ITS END";
     NoMeasuringSignal => Warning, "NCS-W35", None, "NO MEASURING SIGNAL: THE OFFSET STAYS";
+    CornerArcOvercut => Warning, "NCS-W36", None, "G39 AT AN INNER CORNER: OVERCUT";
 }
 
 impl Rule {

@@ -460,3 +460,19 @@ fn single_block_stops_after_held_corners_and_lines() {
     let chamfer_end = stops(&r).iter().find(|(i, _)| r[*i].span.line == 3).map(|(i, _)| r[i - 1].op.end_point().map(dia_z)).unwrap();
     assert_eq!(chamfer_end, Some((40.0, -2.0)));
 }
+
+/// G39 at an inner corner overcuts on the machine (the FANUC manuals): warned, with its
+/// direction (the arc loops round, 270 degrees) and without (the corner as without G39).
+#[test]
+fn g39_at_an_inner_corner_is_an_overcut_warning() {
+    let setup = "[[offset]]\nnumber = 1\nradius_mm = 5.0\n";
+    for (g39, arcs) in [("G39 I-10. J0", 1), ("G39", 0)] {
+        let text = format!("G00 X-20. Y0\nG41 G01 X0 Y0 D1 F100.\nY20.\n{g39}\nX-30.\nG40 X-50.\nM30\n");
+        let (r, d) = common::run_setup("fanuc0m", setup, &text, false);
+        assert_eq!(d.iter().filter(|d| d.code == "NCS-W36").count(), 1, "{g39}: {d:?}");
+        assert_eq!(r.iter().filter(|r| r.op.kind() == "arc").count(), arcs, "{g39}");
+    }
+    // An outer corner: no warning.
+    let (_, d) = common::run_setup("fanuc0m", setup, "G00 X-20. Y0\nG41 G01 X0 Y0 D1 F100.\nY20.\nG39 I10. J0\nX30.\nG40 X50.\nM30\n", false);
+    assert!(d.iter().all(|d| d.code != "NCS-W36"), "{d:?}");
+}

@@ -192,6 +192,9 @@ fn plane_move(step: &mut Step, span: Span, n: Option<u32>, op: Op, seg: Seg) {
     if std::mem::take(&mut step.st.comp.round_corner) && !step.st.comp.held_startup && r > 0.0 && !matches!(op, Op::Rapid { .. }) {
         let p = hseg.to();
         let turn = hseg.tangent(true).cross(seg.tangent(false));
+        if turn * side > 1e-12 {
+            step.warn(Rule::CornerArcOvercut, span, "G39 at an inner corner: the FANUC manuals say the cutter overcuts here; ncsight makes the corner as without G39");
+        }
         if turn * side < -1e-12 {
             let (e, s) = (p.plus(comp::vector(&hseg, true, side, r)), p.plus(comp::vector(&seg, false, side, r)));
             if let Err(err) = make_held(step, e, 0.0) {
@@ -475,6 +478,13 @@ fn directed_corner_arc(step: &mut Step, span: Span, d: P2, corner: Vec3) -> Resu
     let at_radius = comp::local(&from, plane).dist(p);
     let new_vector = d.unit().left().scale(side * if at_radius > 1e-9 { at_radius } else { r });
     let to = comp::with_local(&from, p.plus(new_vector), plane);
+    // The path turning toward the cutter (an inner corner): the arc loops round through the
+    // part (the FANUC 15i manual: G39 overcuts at an inner corner).
+    let old_vector = comp::local(&from, plane).minus(p);
+    let came_along = old_vector.left().scale(-side);
+    if came_along.cross(d) * side > 1e-9 * old_vector.len().max(1.0) {
+        step.warn(Rule::CornerArcOvercut, span, "G39 at an inner corner: the arc loops round through the part (the FANUC manuals: G39 overcuts there)");
+    }
     if from.dist(&to) > 1e-9 {
         // G41 turns clockwise, G42 counter-clockwise (FANUC 16-MC manual).
         let dir = if side > 0.0 { ArcDir::Cw } else { ArcDir::Ccw };
