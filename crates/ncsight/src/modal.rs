@@ -303,7 +303,7 @@ pub struct CornerRequest {
 /// G18: after I, or R after a move along Z) or its first, the way the word's sign gives.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct RightAngle {
-    pub next_along_second: Option<bool>,
+    pub next_along_second: bool,
     /// +1 or -1.
     pub sign: f64,
 }

@@ -248,6 +248,17 @@ impl Op {
         }
     }
 
+    /// A move (G00, G01, G02/G03) from `from` to `to`, of the same kind, feed and centre; any
+    /// other record as it is.
+    pub fn with_ends(&self, from: Vec3, to: Vec3) -> Op {
+        match *self {
+            Op::Rapid { .. } => Op::Rapid { from, to },
+            Op::Feed { feed_mm_min, .. } => Op::Feed { from, to, feed_mm_min },
+            Op::Arc { center, plane, dir, feed_mm_min, .. } => Op::Arc { from, to, center, plane, dir, feed_mm_min },
+            ref other => other.clone(),
+        }
+    }
+
     /// Spindle-synchronised (thread) motion.
     pub fn is_thread(&self) -> bool {
         matches!(self, Op::Thread { .. } | Op::ThreadArc { .. })

@@ -144,10 +144,6 @@ pub(super) fn take(step: &mut Step, span: Span, n: Option<u32>, op: Op) {
 }
 
 fn plane_move(step: &mut Step, span: Span, n: Option<u32>, op: Op, seg: Seg) {
-    if step.st.comp.side == 0 {
-        // Nothing to hold: compensation is off (G40 made the held move already).
-        return step.push_record(span, n, op);
-    }
     let plane = step.st.plane;
     let (side, r) = (step.st.comp.side as f64, step.st.comp.radius_mm);
     step.out.comp_plane_move = true;
@@ -303,7 +299,7 @@ fn note_span(step: &mut Step, span: Span) {
     }
 }
 
-fn feed_of(op: &Op) -> f64 {
+pub(super) fn feed_of(op: &Op) -> f64 {
     match op {
         Op::Feed { feed_mm_min, .. } | Op::Arc { feed_mm_min, .. } => *feed_mm_min,
         _ => 0.0,
@@ -505,7 +501,7 @@ pub(super) fn end_of_block(step: &mut Step) -> Result<(), Diagnostic> {
         step.st.comp.side = 0;
         return Ok(());
     }
-    if step.st.comp.side == 0 || step.queue.is_empty() || step.out.comp_plane_move {
+    if step.queue.is_empty() || step.out.comp_plane_move {
         return Ok(());
     }
     step.st.comp.idle_blocks = step.st.comp.idle_blocks.saturating_add(1);
@@ -538,9 +534,7 @@ pub(super) fn from_actual(step: &mut Step, span: Span, n: Option<u32>, op: Op) -
     let from = c + step.st.comp.tip;
     match op {
         // A plain move (the move after G40, a cycle's first rapid) goes from where the tool is.
-        Op::Rapid { to, .. } => Op::Rapid { from, to },
-        Op::Feed { to, feed_mm_min, .. } => Op::Feed { from, to, feed_mm_min },
-        Op::Arc { to, center, plane, dir, feed_mm_min, .. } => Op::Arc { from, to, center, plane, dir, feed_mm_min },
+        Op::Rapid { to, .. } | Op::Feed { to, .. } | Op::Arc { to, .. } => op.with_ends(from, to),
         // A thread starts where it is written: the tool goes there first, at rapid.
         other => {
             if let Some(start) = other.start_point() {

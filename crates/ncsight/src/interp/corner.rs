@@ -10,6 +10,7 @@
 use super::{comp, Step};
 use crate::alarm::{Diagnostic, Rule};
 use crate::comp::{self as geometry, Seg};
+use crate::modal::{CornerRequest, RightAngle};
 use crate::motion::{ArcDir, Op, Record};
 use crate::read::{self, Word};
 use crate::source::Span;
@@ -17,15 +18,32 @@ use crate::source::Span;
 /// A chamfer or corner arc asked for in a G01 block (G02/G03 too where the profile allows): the
 /// corner between this block's move and the next, each a line or an arc.
 pub(super) fn words(step: &mut Step, words: &mut super::Words, rules: crate::profile::DrawingRules) -> Result<(), Diagnostic> {
-    if rules.right_angle && step.st.motion == crate::modal::Motion::Linear {
-        right_angle_words(step, words, rules)?;
-        if step.st.comp.corner_for_next.is_some() {
-            return Ok(());
-        }
+    let right_angle = if rules.right_angle && step.st.motion == crate::modal::Motion::Linear { right_angle_words(step, words, rules)? } else { None };
+    let asked = match right_angle {
+        Some(asked) => Some(asked),
+        None => drawing_words(step, words, rules)?,
+    };
+    if asked.is_some() {
+        step.st.comp.corner_for_next = asked;
     }
+    Ok(())
+}
+
+/// A corner in a block that radius compensation does not act in (a T word, a cycle) is not
+/// simulated; in a roughing contour it is.
+fn refuse_bypassed(step: &Step, w: &Word) -> Result<(), Diagnostic> {
+    if step.bypass_comp && !step.contour {
+        return Err(step.alarm(Rule::NotSupported, w.span, format!("{}: a chamfer or corner arc in a block that radius compensation does not act in (a T word, a cycle) is not simulated by ncsight yet", w.text())));
+    }
+    Ok(())
+}
+
+/// L/D (GSK) or ,C/,R (FANUC): the chamfer's size or the arc's radius, measured as the profile
+/// says.
+fn drawing_words(step: &mut Step, words: &mut super::Words, rules: crate::profile::DrawingRules) -> Result<Option<CornerRequest>, Diagnostic> {
     let (l, d) = (words.take(rules.chamfer), words.take(rules.round));
     let (w, round) = match (l, d) {
-        (None, None) => return Ok(()),
+        (None, None) => return Ok(None),
         (Some(a), Some(b)) => {
             // FANUC alarm 053 is for two of I, K, R; here: one corner, one word (inferred).
             return Err(step.alarm(Rule::DuplicateWord, b.span, format!("{} and {}: a corner is a chamfer ({}) or an arc ({}), not both", a.text(), b.text(), read::address_name(rules.chamfer), read::address_name(rules.round))));
@@ -37,23 +55,19 @@ pub(super) fn words(step: &mut Step, words: &mut super::Words, rules: crate::pro
     if size <= 0.0 {
         return Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("{}: a chamfer or corner arc is longer than 0", w.text())));
     }
-    if step.bypass_comp && !step.contour {
-        return Err(step.alarm(Rule::NotSupported, w.span, format!("{}: a chamfer or corner arc in a block that radius compensation does not act in (a T word, a cycle) is not simulated by ncsight yet", w.text())));
-    }
-
+    refuse_bypassed(step, w)?;
     let from_corner = rules.chamfer_type.is_none_or(|key| step.params.get(key) != 0.0);
-    step.st.comp.corner_for_next = Some(crate::modal::CornerRequest { letter: w.letter, size_mm: size, round, from_corner, span: step.span, right_angle: None });
-    Ok(())
+    Ok(Some(CornerRequest { letter: w.letter, size_mm: size, round, from_corner, span: step.span, right_angle: None }))
 }
 
 /// FANUC's chamfering and corner R at a right angle (the FANUC 0i-T and 30i manuals: `G01 Z_ I_`,
 /// `G01 X_ K_`, `G01 Z_ R_`, `G01 X_ R_`): a 45-degree chamfer whose legs are |I| or |K| (a
 /// radius value), or a corner arc of radius |R|, to a next move along the other axis the way
 /// the sign says. One of I, K, R, and none with `,C` or `,R` (alarm 053).
-fn right_angle_words(step: &mut Step, words: &mut super::Words, rules: crate::profile::DrawingRules) -> Result<(), Diagnostic> {
+fn right_angle_words(step: &mut Step, words: &mut super::Words, rules: crate::profile::DrawingRules) -> Result<Option<CornerRequest>, Diagnostic> {
     let given: Vec<&Word> = [b'I', b'K', b'R', rules.chamfer, rules.round].iter().filter_map(|l| words.peek(*l)).collect();
     let Some(&w) = given.iter().find(|w| matches!(w.letter, b'I' | b'K' | b'R')) else {
-        return Ok(());
+        return Ok(None);
     };
     if given.len() > 1 {
         let names: Vec<String> = given.iter().map(|w| w.text()).collect();
@@ -64,9 +78,7 @@ fn right_angle_words(step: &mut Step, words: &mut super::Words, rules: crate::pr
     if v == 0.0 {
         return Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("{}: a chamfer or corner R is longer than 0", w.text())));
     }
-    if step.bypass_comp && !step.contour {
-        return Err(step.alarm(Rule::NotSupported, w.span, format!("{}: a chamfer or corner R in a block that radius compensation does not act in (a T word, a cycle) is not simulated by ncsight yet", w.text())));
-    }
+    refuse_bypassed(step, w)?;
     // The block's programmed move runs along one axis, the one the word follows (alarm 054):
     // the words decide, not the move (a tool offset's movement may ride along with it).
     let (along_z, along_x) = ([b'Z', b'W'].iter().any(|l| words.has(*l)), [b'X', b'U'].iter().any(|l| words.has(*l)));
@@ -82,16 +94,15 @@ fn right_angle_words(step: &mut Step, words: &mut super::Words, rules: crate::pr
             return Err(step.alarm(Rule::CornerTaper, step.span, msg));
         }
     };
-    let right_angle = Some(crate::modal::RightAngle { next_along_second: Some(next_along_second), sign: v.signum() });
-    step.st.comp.corner_for_next = Some(crate::modal::CornerRequest { letter: w.letter, size_mm: v.abs(), round: w.letter == b'R', from_corner: true, span: step.span, right_angle });
-    Ok(())
+    let right_angle = Some(RightAngle { next_along_second, sign: v.signum() });
+    Ok(Some(CornerRequest { letter: w.letter, size_mm: v.abs(), round: w.letter == b'R', from_corner: true, span: step.span, right_angle }))
 }
 
 /// The next move after a right-angle chamfer or corner R: a line along the other axis (alarm
 /// 052), the way the word's sign says (alarm 051).
-fn right_angle_next(step: &Step, c: &crate::modal::CornerRequest, span: Span, seg: &Seg) -> Result<(), Diagnostic> {
+fn right_angle_next(step: &Step, c: &CornerRequest, span: Span, seg: &Seg) -> Result<(), Diagnostic> {
     let Some(ra) = c.right_angle else { return Ok(()) };
-    let next = ra.next_along_second.expect("the first move showed it");
+    let next = ra.next_along_second;
     let u = seg.tangent(false);
     let (along, across) = if next { (u.b, u.a) } else { (u.a, u.b) };
     let axis = if next { "X" } else { "Z" };
@@ -110,10 +121,10 @@ pub(super) fn active(step: &Step) -> bool {
     step.st.comp.corner_for_next.is_some() || !step.corners.is_empty()
 }
 
-/// A record of a block that radius compensation does not act in waits behind a held move (a
-/// T block's tool record and its offset's movement: nothing else of such a block comes while a
-/// move is held, run_block makes the held move first).
-pub(super) fn waits(step: &Step, _op: &Op) -> bool {
+/// Whatever a block that radius compensation does not act in records waits behind a held move
+/// (a T block's tool record and its offset's movement: nothing else of such a block comes while
+/// a move is held, run_block makes the held move first).
+pub(super) fn waits(step: &Step) -> bool {
     !step.corners.is_empty()
 }
 
@@ -152,12 +163,7 @@ fn make_held(step: &mut Step, end: geometry::P2, then: Option<Op>) {
     };
     let from = step.st.comp.corner_start;
     let to = geometry::with_local(&held.op.end_point().unwrap_or_default(), end, plane);
-    let made = match held.op {
-        Op::Rapid { .. } => Op::Rapid { from, to },
-        Op::Feed { feed_mm_min, .. } => Op::Feed { from, to, feed_mm_min },
-        Op::Arc { center, plane, dir, feed_mm_min, .. } => Op::Arc { from, to, center, plane, dir, feed_mm_min },
-        other => other,
-    };
+    let made = held.op.with_ends(from, to);
     // A corner may take the whole move (a corner arc touching an arc at its start): nothing of
     // it is left to make (an arc from a point to itself would be a whole circle).
     let programmed_length = held.op.start_point().zip(held.op.end_point()).map_or(0.0, |(s, e)| s.dist(&e));
@@ -226,10 +232,7 @@ fn plane_move(step: &mut Step, span: Span, n: Option<u32>, op: Op, seg: Seg) {
                 Ok(None) => {}
                 Ok(Some((a, b, arc))) => {
                     let (a3, b3) = (geometry::with_local(&start3, a, plane), geometry::with_local(&start3, b, plane));
-                    let feed_mm_min = match held.op {
-                        Op::Feed { feed_mm_min, .. } | Op::Arc { feed_mm_min, .. } => feed_mm_min,
-                        _ => 0.0,
-                    };
+                    let feed_mm_min = comp::feed_of(&held.op);
                     chamfer = Some(match arc {
                         Some((centre, ccw)) => Op::Arc { from: a3, to: b3, center: geometry::with_local(&start3, centre, plane), plane, dir: if ccw { ArcDir::Ccw } else { ArcDir::Cw }, feed_mm_min },
                         None => Op::Feed { from: a3, to: b3, feed_mm_min },

@@ -37,11 +37,10 @@ pub(super) fn angle<'w>(step: &mut Step, words: &mut Words<'w>, rules: DrawingRu
 pub(super) fn line(step: &mut Step, rules: DrawingRules, angle: Option<(f64, &Word)>, target: Vec3, how: [Option<Given>; 3]) -> Result<Option<Vec3>, Diagnostic> {
     let plane = step.st.plane;
     let (ia, ib, _) = plane.axes();
-    let given = how.map(|g| g.is_some());
     if let Some(held) = step.st.comp.angle_line {
-        let absolute = |a: usize| how[a] == Some(Given::Absolute);
-        return close(step, held, angle, target, given, absolute(ia) && absolute(ib)).map(Some);
+        return close(step, held, angle, target, how).map(Some);
     }
+    let given = how.map(|g| g.is_some());
     let Some((deg, w)) = angle else {
         return Ok(Some(target));
     };
@@ -120,9 +119,11 @@ fn open(step: &mut Step, deg: f64, w: &Word, target: Vec3) -> Result<(), Diagnos
 
 /// The block after a line of an angle alone: its absolute end point and its angle give its line;
 /// the held line ends where the two meet, and this block's line starts there.
-fn close(step: &mut Step, held: AngleLine, angle: Option<(f64, &Word)>, target: Vec3, given: [bool; 3], end_given: bool) -> Result<Vec3, Diagnostic> {
+fn close(step: &mut Step, held: AngleLine, angle: Option<(f64, &Word)>, target: Vec3, how: [Option<Given>; 3]) -> Result<Vec3, Diagnostic> {
     let plane = step.st.plane;
+    let (ia, ib, _) = plane.axes();
     let names = plane_names(plane);
+    let end_given = how[ia] == Some(Given::Absolute) && how[ib] == Some(Given::Absolute);
     let Some((deg, w)) = angle.filter(|_| end_given) else {
         let msg = format!(
             "the line before (its angle alone) ends where it meets this block's line: this block gives its end point as absolute {} and {} and its angle (GSK980TDi help text, angle programming note 6; FANUC alarm 056)",
@@ -153,18 +154,13 @@ fn close(step: &mut Step, held: AngleLine, angle: Option<(f64, &Word)>, target: 
     }
     let end = geometry::with_local(&held.from, meet, plane);
     let first = step.corners.first_mut().expect("a line of an angle alone is held in the corner stage");
-    first.op = match first.op {
-        Op::Rapid { from, .. } => Op::Rapid { from, to: end },
-        Op::Feed { from, feed_mm_min, .. } => Op::Feed { from, to: end, feed_mm_min },
-        other => other,
-    };
+    first.op = first.op.with_ends(first.op.start_point().expect("the held line is a move"), end);
     step.st.comp.angle_line = None;
     step.st.pos = end;
     // This block's axes not written count from there.
-    let (ia, ib, _) = plane.axes();
     let mut target = target;
     for axis in [0, 1, 2] {
-        if axis != ia && axis != ib && !given[axis] {
+        if axis != ia && axis != ib && how[axis].is_none() {
             target.set_axis(axis, end.axis(axis));
         }
     }

@@ -224,7 +224,7 @@ impl Step<'_> {
         // starts where the tool is.
         // A chamfer or corner arc (GSK980TDi L, D; FANUC ,C ,R) holds its move in the corner
         // stage first, until the next move shows the corner.
-        if corner::active(self) && (!self.bypass_comp || self.contour || corner::waits(self, &op)) {
+        if corner::active(self) && (!self.bypass_comp || self.contour || corner::waits(self)) {
             return corner::take(self, span, n, op);
         }
         if self.st.comp.side != 0 && !self.bypass_comp {
