@@ -595,6 +595,20 @@ impl Interpreter {
         }
     }
 
+    /// The records both look-ahead stages hold (the corner stage's, compensation's), kept before
+    /// a block so that a block that alarms changes nothing (cloned only when there are some).
+    fn held(&self) -> [Option<Vec<Record>>; 2] {
+        let keep = |q: &Vec<Record>| (!q.is_empty()).then(|| q.clone());
+        [keep(&self.comp_queue), keep(&self.corner_queue)]
+    }
+
+    /// Put back the modal state and the held records as they were before a block that alarmed.
+    fn roll_back(&mut self, before: Modal, [comp, corners]: [Option<Vec<Record>>; 2]) {
+        self.state = before;
+        self.comp_queue = comp.unwrap_or_default();
+        self.corner_queue = corners.unwrap_or_default();
+    }
+
     /// Execute one block. On an alarm nothing changes.
     pub fn execute(&mut self, block: &Block) -> Result<Outcome, Diagnostic> {
         let mut out = Outcome::default();
@@ -613,8 +627,7 @@ impl Interpreter {
             return self.collect_contour(block, out);
         }
         let before = self.state;
-        let queue_before = if self.comp_queue.is_empty() { None } else { Some(self.comp_queue.clone()) };
-        let corners_before = if self.corner_queue.is_empty() { None } else { Some(self.corner_queue.clone()) };
+        let held_before = self.held();
         let repair = self.switches.repair_position;
         let mut step = Step { profile: self.profile, params: &self.params, tables: &self.tables, queue: &mut self.comp_queue, corners: &mut self.corner_queue, bypass_comp: false, contour: false, repair, span: block.span, n: block.sequence, st: &mut self.state, carry: None, out };
         let result = run_block(&mut step, block, self.switches).and_then(|()| {
@@ -658,9 +671,7 @@ impl Interpreter {
         }
         if let Err(d) = result {
             step.out.clear();
-            self.state = before;
-            self.comp_queue = queue_before.unwrap_or_default();
-            self.corner_queue = corners_before.unwrap_or_default();
+            self.roll_back(before, held_before);
             return Err(d);
         }
         // Single block stops after the block's last record (a held-back thread run end carries
@@ -700,9 +711,7 @@ impl Interpreter {
         }
         if let Some(req) = out.rough_request.take() {
             if self.replaying {
-                self.state = before;
-                self.comp_queue = queue_before.unwrap_or_default();
-                self.corner_queue = corners_before.unwrap_or_default();
+                self.roll_back(before, held_before);
                 out.clear();
                 return Err(self.contour_alarm(Rule::ContourCommand, block.span, format!("{} cannot run inside the contour that G70 is finishing", req.kind.code())));
             }
@@ -710,9 +719,7 @@ impl Interpreter {
         }
         if let Some(req) = out.finish_request.take() {
             if let Err(d) = self.finish_contour(req, out) {
-                self.state = before;
-                self.comp_queue = queue_before.unwrap_or_default();
-                self.corner_queue = corners_before.unwrap_or_default();
+                self.roll_back(before, held_before);
                 out.clear();
                 return Err(d);
             }
