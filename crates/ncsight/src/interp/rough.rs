@@ -273,10 +273,8 @@ impl Interpreter {
                 };
                 return Err(self.contour_alarm(Rule::ContourEndsInCorner, last.span, format!("{code}: the contour's last block leaves {what} without the move that ends it (FANUC alarm 069)")));
             }
-            if !corners.is_empty() {
-                let mut step = Step { profile: self.profile, params: &self.params, tables: &self.tables, queue: &mut no_queue, corners: &mut corners, bypass_comp: true, contour: true, repair: None, span: last.span, n: last.sequence, st: &mut st, carry: None, out: &mut scratch };
-                super::corner::break_off(&mut step);
-            }
+            // Otherwise each block's end made its move (corner::end_of_block): nothing is held.
+            debug_assert!(corners.is_empty());
         }
         // Help text notes 1 and 2: the ns block makes one G00 or G01 move.
         let ns_span = blocks[0].span;
