@@ -354,9 +354,7 @@ pub fn meet(start: P2, first_deg: f64, end: P2, second_deg: f64) -> Result<P2, D
     if line_angle_deg(u, v) < DRAWING_TOLERANCE_DEG {
         return Err(DrawingError::Parallel);
     }
-    // start + s u = end + t v: s = ((end - start) x v) / (u x v).
-    let s = end.minus(start).cross(v) / u.cross(v);
-    Ok(start.plus(u.scale(s)))
+    line_line(start, u, end, v).ok_or(DrawingError::Parallel)
 }
 
 /// The offset vector of length `r` on `side` (+1 left: G41, -1 right: G42) of a move's start or
