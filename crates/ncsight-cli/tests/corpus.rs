@@ -1,8 +1,17 @@
-//! Every programme of ../shared/corpus goes through `ncsight check` on the profile closest to
-//! its dialect, never panics, and gives the diagnostics committed in tests/corpus/<file>.check
-//! (NCSIGHT_BLESS=1 rewrites them).
+//! Every programme of the corpus of real programmes written by others (the folder named by
+//! `NCSIGHT_CORPUS`, kept outside the repository; without it these tests are skipped, said in one
+//! line) goes through `ncsight check` on the profile closest to its dialect, never panics, and
+//! gives the diagnostics committed in tests/corpus/<file>.check (NCSIGHT_BLESS=1 rewrites them).
 
 mod common;
+mod roundtrip;
+
+/// The tests of this file, named in the line that says they were skipped.
+const TESTS: &str = "corpus_checks_give_clear_answers, corpus_programme_libraries_run_from_each_entry, corpus_programmes_expand_for_linuxcnc_and_grbl";
+
+fn corpus() -> Option<std::path::PathBuf> {
+    common::corpus(TESTS)
+}
 
 /// Milling programmes go to fanuc0m, FANUC-style lathe programmes to fanuc0t, the rest (GSK
 /// shop notes, LinuxCNC and other dialects) to the GSK lathe.
@@ -38,7 +47,7 @@ fn params_for(name: &str) -> &'static [&'static str] {
 
 #[test]
 fn corpus_checks_give_clear_answers() {
-    let corpus = common::shared().join("corpus");
+    let Some(corpus) = corpus() else { return };
     let mut files: Vec<_> = std::fs::read_dir(&corpus).unwrap().map(|e| e.unwrap().path()).collect();
     files.retain(|p| {
         let n = p.file_name().unwrap().to_str().unwrap();
@@ -87,7 +96,7 @@ fn corpus_programme_libraries_run_from_each_entry() {
         ("sk7420-fanuc__ALL-PROG.TXT", "8100", &[]),
         ("sk7420-fanuc__ALL-PROG.TXT", "8200", &[]),
     ];
-    let corpus = common::shared().join("corpus");
+    let Some(corpus) = corpus() else { return };
     let out_dir = common::root().join("tests/corpus");
     for (name, main, extra) in ENTRIES {
         let f = corpus.join(name);
@@ -106,4 +115,21 @@ fn corpus_programme_libraries_run_from_each_entry() {
         }
         common::expect_file(&out_dir.join(format!("{name}.O{main}.check")), &format!("$ ncsight check {shown} --machine {machine} --main {main}{shown_args}\n{out}"));
     }
+}
+
+/// The corpus programmes that run to their end expand for LinuxCNC (read back by rs274 as the
+/// original moves) and for grbl (its words only; their threads alarm).
+#[test]
+fn corpus_programmes_expand_for_linuxcnc_and_grbl() {
+    let Some(corpus) = corpus() else { return };
+    let programmes: Vec<roundtrip::Programme> = ["doosan-lynx300__O0201.nc", "doosan-lynx300__O3380.nc"]
+        .into_iter()
+        .map(|name| (name.to_string(), corpus.join(name), vec!["--machine".into(), "fanuc0t".into()]))
+        .collect();
+    let (files, compared) = roundtrip::linuxcnc_round_trip(&programmes);
+    if roundtrip::rs274().is_some() {
+        assert!(files == 2 && compared > 100, "only {files} programmes, {compared} calls compared");
+    }
+    let (refused, lines) = roundtrip::grbl_check(&programmes);
+    assert!(refused >= 1 && lines > 100, "{refused} threaded programmes refused, {lines} lines checked");
 }

@@ -33,7 +33,7 @@ fn each_diagnostic_is_printed_once() {
     assert_eq!(out.lines().count(), 2, "{out}");
 }
 
-/// `check --format jsonl` as INTERFACE.md specifies: file, line, col, severity, code, message, hint.
+/// `check --format jsonl` as docs/reference/interface.md specifies: file, line, col, severity, code, message, hint.
 #[test]
 fn check_jsonl_fields() {
     let p = tmp("jsonl.nc", b"GO X10.\nG0 X10\nM30\n");

@@ -73,7 +73,7 @@ fn bad_programmes_raise_their_alarm() {
     }
 }
 
-/// `--format jsonl` follows ../shared/spec/INTERFACE.md field for field on every golden trace.
+/// `--format jsonl` follows docs/reference/interface.md field for field on every golden trace.
 #[test]
 fn jsonl_follows_the_interface() {
     let dir = common::root().join("tests/golden");

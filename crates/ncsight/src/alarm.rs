@@ -1,7 +1,7 @@
 //! Diagnostics: alarms (execution stops, as on the controller) and warnings (execution goes on).
 //!
 //! Every rule has a stable code. Where the controller's own alarm number is known from a manual
-//! (../shared/reference/params_alarms.md) the FANUC-family profile uses it (`PS0007`); everything
+//! (docs/reference/parameters.md) the FANUC-family profile uses it (`PS0007`); everything
 //! else carries a project code `NCS-Enn` (alarm) or `NCS-Wnn` (warning), listed in docs/alarms.md.
 
 use crate::source::Span;
@@ -16,7 +16,7 @@ pub enum Severity {
 /// Which numbering the profile's alarms follow.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum AlarmStyle {
-    /// FANUC PS numbers where known (params_alarms.md section 4).
+    /// FANUC PS numbers where known (docs/reference/parameters.md section 4).
     Fanuc,
     /// No public numbered list was found (GSK 980TDi, GSK 988T, YASNAC LX3): project codes only.
     Project,
@@ -56,7 +56,7 @@ macro_rules! rules {
 }
 
 rules! {
-    // --- reading words (params_alarms.md section 4, "Fanuc alarms") ---
+    // --- reading words (docs/reference/parameters.md section 4, "Fanuc alarms") ---
     TooManyDigits => Alarm, "NCS-E03", Some("PS0003"), "TOO MANY DIGIT";
     NoDataAfterAddress => Alarm, "NCS-E05", Some("PS0005"), "NO DATA AFTER ADDRESS";
     IllegalMinus => Alarm, "NCS-E06", Some("PS0006"), "ILLEGAL USE OF MINUS SIGN";
@@ -74,11 +74,11 @@ rules! {
     PlaneMismatch => Alarm, "NCS-E56", None, "CYCLE NOT AVAILABLE IN THIS PLANE";
     RigidTapOrder => Alarm, "NCS-E57", None, "RIGID TAPPING: M29 S_ FIRST, THEN G84/G88";
     ReferenceInCannedCycle => Alarm, "NCS-E58", Some("PS0044"), "G27-G30 NOT ALLOWED IN FIXED CYC";
-    // FANUC 0 numbering (MACRO.md section 9: the 0i-F reuses 076-078 with other meanings).
+    // FANUC 0 numbering (docs/reference/macro.md section 9: the 0i-F reuses 076-078 with other meanings).
     AddressPMissing => Alarm, "NCS-E59", Some("PS0076"), "ADDRESS P NOT DEFINED";
     CallNesting => Alarm, "NCS-E60", Some("PS0077"), "SUB PROGRAM NESTING ERROR";
     NumberNotFound => Alarm, "NCS-E61", Some("PS0078"), "NUMBER NOT FOUND";
-    // Custom macro B, FANUC 0 numbering (MACRO.md section 9; the texts are the old list's).
+    // Custom macro B, FANUC 0 numbering (docs/reference/macro.md section 9; the texts are the old list's).
     MacroOverflow => Alarm, "NCS-E64", Some("PS0111"), "CALCULATED DATA OVERFLOW";
     DivideByZero => Alarm, "NCS-E65", Some("PS0112"), "DIVIDED BY ZERO";
     MacroFormat => Alarm, "NCS-E66", Some("PS0114"), "FORMAT ERROR IN MACRO";
@@ -141,7 +141,7 @@ rules! {
     CurveData => Alarm, "NCS-E86", None, "CURVE DATA DO NOT DEFINE THE CURVE";
     // G22 stored stroke check 2 (no alarm number of these controllers at hand).
     StrokeCheck2 => Alarm, "NCS-E85", None, "FORBIDDEN AREA (STORED STROKE CHECK 2)";
-    // Tool radius compensation: the FANUC 0 P/S numbers (MACRO.md 10.3; texts as recalled).
+    // Tool radius compensation: the FANUC 0 P/S numbers (docs/reference/macro.md 10.3; texts as recalled).
     CompNoSolution => Alarm, "NCS-E79", Some("PS0033"), "NO SOLUTION AT CRC";
     CompStartupArc => Alarm, "NCS-E80", Some("PS0034"), "NO CIRC ALLOWED IN STUP/EXT BLK";
     CompPlaneChange => Alarm, "NCS-E81", Some("PS0037"), "CAN NOT CHANGE PLANE IN CRC";

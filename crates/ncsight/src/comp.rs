@@ -1,4 +1,4 @@
-//! Tool radius compensation's geometry (G41/G42; MACRO.md 10.3, docs/compensation.md), written
+//! Tool radius compensation's geometry (G41/G42; docs/reference/macro.md 10.3, docs/compensation.md), written
 //! once in plane-local coordinates: the offset of a line or an arc, and what happens where two
 //! compensated moves meet. Pure functions; the interpreter's stage (`interp/comp.rs`) holds a
 //! move back until the next one shows the corner.
@@ -73,7 +73,7 @@ pub fn with_local(p: &Vec3, q: P2, plane: Plane) -> Vec3 {
 }
 
 /// The direction of imaginary tool nose `tip` from the nose centre, as (X, Z) signs, seen with
-/// +X up and +Z to the right (MACRO.md 10.3: 1-4 the corners, 5-8 the sides [inferred], 0 and 9
+/// +X up and +Z to the right (docs/reference/macro.md 10.3: 1-4 the corners, 5-8 the sides [inferred], 0 and 9
 /// the centre).
 pub fn tip_direction(tip: u8) -> (f64, f64) {
     match tip {

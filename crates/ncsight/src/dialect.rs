@@ -1,7 +1,8 @@
 //! Programmes written for another control: one clear answer instead of a cascade of alarms
 //! (issue 10). Okuma OSP and Sinumerik programmes reuse the G numbers of FANUC's cycles with other
-//! meanings (../shared/corpus/INDEX.md, section C), LinuxCNC programmes use `o` words and
-//! `#<name>` parameters. A line that only another dialect writes names it.
+//! meanings (Okuma OSP7000L: G85 rough turning, G87 finish turning, G81/G80 a contour's start and
+//! end; Sinumerik 850: G71 metric, R-parameter drilling cycles), LinuxCNC programmes use `o` words
+//! and `#<name>` parameters. A line that only another dialect writes names it.
 
 /// A dialect other than the profile's, recognised on a line.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

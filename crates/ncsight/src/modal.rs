@@ -216,7 +216,7 @@ impl Frame {
     }
 }
 
-/// Tool radius compensation in force (MACRO.md 10.3; docs/compensation.md). The move held
+/// Tool radius compensation in force (docs/reference/macro.md 10.3; docs/compensation.md). The move held
 /// back until the next one shows its corner is in the interpreter's queue; this is its scalar
 /// part.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]

@@ -91,7 +91,7 @@ pub enum ArcDir {
 }
 
 /// The long axis of a thread: the one with the larger travel (X counted as a radius); on
-/// equality Z (../shared/spec/BEHAVIOUR.md, "Thread pull-out"). Y only for arc threads in G17/G19.
+/// equality Z (docs/reference/behaviour.md, "Thread pull-out"). Y only for arc threads in G17/G19.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum LongAxis {
     X,

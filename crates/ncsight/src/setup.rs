@@ -1,4 +1,4 @@
-//! The job setup (`--setup FILE.toml`, ../shared/spec/INTERFACE.md "The setup file"): the
+//! The job setup (`--setup FILE.toml`, docs/reference/interface.md "The setup file"): the
 //! machine, its work offsets, tool and offset tables, and the stock. Plain data read from TOML and
 //! checked; the interpreter takes the machine's frame from it, the stock simulation the stock and
 //! the tools' shapes.

@@ -299,7 +299,7 @@ fn searches_count_for_the_runaway_guard() {
     assert!(e.iter().all(|e| !matches!(e, Event::Diagnostic(d) if d.is_alarm())), "{:?}", trace(&e).last());
 }
 
-/// `%` closes the record (MACRO.md section 1, inferred): the text after the closing `%` is not
+/// `%` closes the record (docs/reference/macro.md section 1, inferred): the text after the closing `%` is not
 /// read, the first `%` only opens it. Line 6 (after the closing mark on line 5) gives neither a
 /// move nor the after-the-end warning; without M30 the run ends at the mark with the
 /// no-programme-end warning (NCS-W.. at the last block). A subprogramme that reaches the

@@ -29,7 +29,7 @@ fn k_repeats_under_g91_are_equally_spaced_and_k0_stores_only() {
     // Seed 003: "G91 G81 X Y Z R F K5": the first hole at X Y from the tool, then equally spaced.
     let (r, _) = run(&[], &format!("{START}G91 G99 G81 X10. Y5. Z-10. R-48. F100. K5\nM30\n"));
     assert_eq!(holes(&r, -8.0), vec![(10.0, 5.0), (20.0, 10.0), (30.0, 15.0), (40.0, 20.0), (50.0, 25.0)]);
-    // K0: the data is stored, nothing moves, not even the positioning (params_alarms.md); the
+    // K0: the data is stored, nothing moves, not even the positioning (docs/reference/parameters.md); the
     // next block drills with the data.
     let (r, _) = run(&[], &format!("{START}G81 X10. Y10. Z-5. R2. F100. K0\nX20.\nM30\n"));
     assert_eq!(holes(&r, -5.0), vec![(20.0, 0.0)]);
@@ -52,7 +52,7 @@ fn g98_returns_to_the_initial_level_g99_to_r() {
 
 #[test]
 fn incremental_r_is_from_the_initial_level_and_z_from_r() {
-    // BEHAVIOUR.md: under G91, R from the initial level, Z from the R point.
+    // docs/reference/behaviour.md: under G91, R from the initial level, Z from the R point.
     let (r, _) = run(&[], &format!("{START}G91 G81 X0. Y0. R-40. Z-15. F100.\nM30\n"));
     assert_eq!(holes(&r, -5.0).len(), 1);
 }

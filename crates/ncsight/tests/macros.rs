@@ -1,5 +1,5 @@
 //! Custom macro B: variables, vacancy, expressions, IF/WHILE/GOTO, G65 and the system
-//! variables, each expected value worked out by hand in its comment (MACRO.md sections 3-9).
+//! variables, each expected value worked out by hand in its comment (docs/reference/macro.md sections 3-9).
 
 use ncsight::motion::Op;
 use ncsight::profile::{self, Params};
@@ -30,7 +30,7 @@ fn t(v: &[&str]) -> Vec<String> {
 
 /// (The first move of these programmes, to X0 Y0 Z0 from there, has no length: no record.)
 /// A value from a variable has a decimal point: `#1=100; X#1` is 100 mm on FANUC, where `X100`
-/// is 0.1 mm (MACRO.md section 4.4). A vacant bare variable makes its word disappear: `Y#5`
+/// is 0.1 mm (docs/reference/macro.md section 4.4). A vacant bare variable makes its word disappear: `Y#5`
 /// is not written, Y stays. Arithmetic on vacant gives 0: `Z[#5+2]` is Z2.
 #[test]
 fn values_from_variables_and_vacant_words() {
@@ -44,7 +44,7 @@ fn values_from_variables_and_vacant_words() {
 }
 
 /// FIX toward zero, FUP away from zero, ROUND half away from zero, on negative values too
-/// (MACRO.md section 5): FIX[-1.7] = -1, FUP[-1.2] = -2, ROUND[-2.5] = -3, ROUND[2.4] = 2.
+/// (docs/reference/macro.md section 5): FIX[-1.7] = -1, FUP[-1.2] = -2, ROUND[-2.5] = -3, ROUND[2.4] = 2.
 #[test]
 fn rounding_functions_on_negative_values() {
     let text = "G90 G00 X0 Y0 Z0\n#1 = FIX[-1.7]\n#2 = FUP[-1.2]\n#3 = ROUND[-2.5]\n#4 = ROUND[2.4]\nG00 X#1 Y#2 Z#3\nX#4\nM30\n";
@@ -76,7 +76,7 @@ fn computed_goto_and_if() {
 }
 
 /// G65 gives the macro a new level of locals set from its arguments; M98 shares the caller's
-/// (F16i manual; MACRO.md section 2). After G65 returns, the caller's #1 is as it was.
+/// (F16i manual; docs/reference/macro.md section 2). After G65 returns, the caller's #1 is as it was.
 #[test]
 fn g65_has_its_own_locals_and_m98_shares_them() {
     // Main: #1 = 5. G65 P100 A7. -> in O0100 #1 = 7 -> X7, and it sets #1 = 99 (its own).
@@ -305,7 +305,7 @@ fn more_system_variables() {
     assert_eq!(trace("fanuc0m", text), t(&["5:95,99,1"]));
 }
 
-/// Single block and macro statements (MACRO.md section 6): a FANUC stops only after NC blocks
+/// Single block and macro statements (docs/reference/macro.md section 6): a FANUC stops only after NC blocks
 /// unless 6000#5 SBM is 1; then also after `#3 = 5.` (line 3) and the IF (line 4). The GSK980TDi
 /// has no such parameter (not found in its help text): NC blocks only.
 #[test]

@@ -219,7 +219,7 @@ fn single_block_stops_after_whole_cycles_runs_and_holes() {
     let r = run("gsk988t", &[], sb.clone(), O0009_RUN);
     let lines: Vec<u32> = stops(&r).iter().map(|(i, _)| r[*i].span.line).collect();
     assert!(!lines.contains(&3) && lines.contains(&4), "{lines:?}");
-    // BEHAVIOUR.md: drilling cycles stop after each hole.
+    // docs/reference/behaviour.md: drilling cycles stop after each hole.
     let r = run("fanuc0m", &[], sb, "G21 G0 X0. Y0. Z50.\nS500 M3\nG91 G81 X10. Z-10. R-40. F500. K3\nG90 G80\nM30\n");
     assert_eq!(stops(&r).iter().filter(|(i, _)| r[*i].span.line == 3).count(), 3);
 }

@@ -84,7 +84,7 @@ fn a_part_finished_under_g42_has_its_programmed_diameters() {
 }
 
 /// FANUC: G42 before G71, G40 after G70: the roughing runs along the compensated shape too
-/// (MACRO.md 10.3, inferred), and the finished part has its programmed diameters.
+/// (docs/reference/macro.md 10.3, inferred), and the finished part has its programmed diameters.
 #[test]
 fn fanuc_roughs_and_finishes_along_the_compensated_shape() {
     let setup = Setup::from_toml(SETUP).unwrap();

@@ -419,7 +419,7 @@ fn seed_002_arc_threads_in_g17_and_g19() {
 #[test]
 fn seed_004_yasnac_k_flank_infeed_and_e_lead() {
     let base = "G97 S300 M03\nG00 X80. Z80.8\n";
-    // K shifts the cut's start along Z by K for that pass; the end point stays (BEHAVIOUR.md).
+    // K shifts the cut's start along Z by K for that pass; the end point stays (docs/reference/behaviour.md).
     let r = run("yasnac-lx3", &[], &format!("{base}G92 X70. W-50.8 K-0.3 F2.\nM30\n")).ok();
     let e = r.ends();
     assert_eq!(e[1], ("rapid", 70.0, 80.5));

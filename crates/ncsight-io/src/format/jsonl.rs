@@ -1,4 +1,4 @@
-//! `--format jsonl`: one JSON object per line, field for field as ../shared/spec/INTERFACE.md
+//! `--format jsonl`: one JSON object per line, field for field as docs/reference/interface.md
 //! says. Lathe X is shown as a diameter; axes the machine lacks are left out.
 
 use super::{push_num, Format};
@@ -103,7 +103,7 @@ fn calls_field(s: &mut String, calls: &[ncsight::source::Span]) {
     s.push(']');
 }
 
-/// One diagnostic as `check --format jsonl` writes it (INTERFACE.md, "check --format jsonl"):
+/// One diagnostic as `check --format jsonl` writes it (docs/reference/interface.md, "check --format jsonl"):
 /// file, line, col, severity, code, message and the hint where there is one.
 pub fn diagnostic_line(file: &str, d: &ncsight::Diagnostic) -> String {
     let mut s = String::with_capacity(160);

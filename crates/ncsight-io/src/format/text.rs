@@ -12,6 +12,8 @@ pub struct Text {
     what: String,
     line: String,
     axes: super::ShownAxes,
+    /// The time of the last record: the cycle time when the programme ends.
+    last_t_s: f64,
 }
 
 fn dir_name(dir: ArcDir) -> &'static str {
@@ -20,7 +22,7 @@ fn dir_name(dir: ArcDir) -> &'static str {
 
 impl Text {
     pub fn new(profile: &'static Profile) -> Text {
-        Text { profile, what: String::with_capacity(128), line: String::with_capacity(160), axes: super::ShownAxes::new(profile) }
+        Text { profile, what: String::with_capacity(128), line: String::with_capacity(160), axes: super::ShownAxes::new(profile), last_t_s: 0.0 }
     }
 
     fn point(&self, s: &mut String, p: &Vec3) {
@@ -146,8 +148,35 @@ impl Format for Text {
         }
         push_num(&mut line, r.t_s, 3);
         line.push('\n');
+        self.last_t_s = r.t_s;
         let written = w.write_all(line.as_bytes());
         (self.what, self.line) = (what, line);
         written
+    }
+
+    /// The last line says the time in h:mm:ss: the cycle time, or the time to where it stopped.
+    fn finish(&mut self, why: Option<&str>, w: &mut dyn Write) -> io::Result<()> {
+        let what = if why.is_some() { "time to the stop" } else { "cycle time" };
+        let mut line = format!("{what} {} (", hms(self.last_t_s));
+        push_num(&mut line, self.last_t_s, 3);
+        line.push_str(" s)\n");
+        w.write_all(line.as_bytes())
+    }
+}
+
+/// Seconds as h:mm:ss, rounded to the second (as a controller's run-time display shows it).
+pub fn hms(t_s: f64) -> String {
+    let whole = t_s.max(0.0).round() as u64;
+    format!("{}:{:02}:{:02}", whole / 3600, whole / 60 % 60, whole % 60)
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn hms_rounds_to_the_second() {
+        assert_eq!(super::hms(12.088), "0:00:12");
+        assert_eq!(super::hms(3599.6), "1:00:00");
+        assert_eq!(super::hms(7384.4), "2:03:04");
+        assert_eq!(super::hms(0.0), "0:00:00");
     }
 }

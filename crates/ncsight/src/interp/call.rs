@@ -11,7 +11,7 @@ use crate::source::Span;
 pub const MAX_PROGRAM_NUMBER: u32 = 9999;
 
 /// A jump a block asks the programme driver for, after its motion (the move first, then the
-/// call or the return: MACRO.md section 11, inferred).
+/// call or the return: docs/reference/macro.md section 11, inferred).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Flow {
     /// M98: run programme O`number` `count` times, then go on after the calling block.
@@ -61,7 +61,7 @@ pub(super) fn call(step: &Step, words: &mut Words, m: &Word) -> Result<Flow, Dia
             (value % 10_000, value / 10_000)
         }
     };
-    // A count of 0 calls once, as no count does (MACRO.md section 2, inferred).
+    // A count of 0 calls once, as no count does (docs/reference/macro.md section 2, inferred).
     Ok(Flow::Call { number, count: count.max(1), span })
 }
 

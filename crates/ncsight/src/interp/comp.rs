@@ -1,4 +1,4 @@
-//! The look-ahead stage of tool radius compensation (G40/G41/G42; MACRO.md 10.3,
+//! The look-ahead stage of tool radius compensation (G40/G41/G42; docs/reference/macro.md 10.3,
 //! docs/compensation.md). In compensation a move in the plane is held back until the next one
 //! shows the corner between them (`crate::comp` does the geometry); the records that come
 //! between (a move along the normal axis, a dwell, an M code) wait behind it, so the stream

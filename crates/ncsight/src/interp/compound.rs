@@ -15,7 +15,7 @@ use crate::motion::{Hold, Op};
 use crate::read::Word;
 
 /// Lengths the manual gives in least input increments whatever the profile's decimal-point
-/// rule: G76 P(k), Q(dd), Q(dmin) (BEHAVIOUR.md; TAC p139: `Q150` = 0.15 mm).
+/// rule: G76 P(k), Q(dd), Q(dmin) (docs/reference/behaviour.md; TAC p139: `Q150` = 0.15 mm).
 pub(super) fn increments(step: &Step, w: &Word, code: &str) -> Result<f64, Diagnostic> {
     if w.decimal && !w.expr {
         return Err(step.alarm(

@@ -460,7 +460,7 @@ pub(super) fn block(step: &mut Step, words: &mut Words, kind: DrillKind, enterin
     let plane = step.st.plane;
     let (a, b, n) = plane.axes();
     if entering && step.st.drill.kind.is_none() {
-        // The initial level is where the tool stands when the cycle mode is entered (BEHAVIOUR.md).
+        // The initial level is where the tool stands when the cycle mode is entered (docs/reference/behaviour.md).
         step.st.drill.initial = step.st.pos.axis(n);
     }
     step.st.drill.kind = Some(kind);
@@ -483,7 +483,7 @@ pub(super) fn block(step: &mut Step, words: &mut Words, kind: DrillKind, enterin
         }
     }
     if !drills || repeats == 0 {
-        // K0: the data is stored, nothing moves (seed 003; params_alarms.md: no positioning).
+        // K0: the data is stored, nothing moves (seed 003; docs/reference/parameters.md: no positioning).
         return Ok(());
     }
     let code = kind.code();
@@ -604,7 +604,7 @@ pub(super) fn block(step: &mut Step, words: &mut Words, kind: DrillKind, enterin
         };
         let first = emit_hole(step, &hole, |l, _| plane.from_local(l));
         // Tapping: feed hold and feed override are ignored until the cycle ends (seed 003 8.1.2);
-        // positioning to the hole still stops. Single block stops after each hole (BEHAVIOUR.md).
+        // positioning to the hole still stops. Single block stops after each hole (docs/reference/behaviour.md).
         if matches!(kind, DrillKind::G74 | DrillKind::G84) {
             hold_through_tapping(step, first, n);
         }

@@ -1,4 +1,4 @@
-//! Where the tool is on the machine (MACRO.md section 10.2; docs/setup.md): the machine's
+//! Where the tool is on the machine (docs/reference/macro.md section 10.2; docs/setup.md): the machine's
 //! tables from the setup, and the codes that move programme coordinates against machine
 //! coordinates: G54-G59, G50/G92, G52, G53, and the reference returns G28/G30.
 //!
@@ -481,7 +481,7 @@ pub(super) fn entry(step: &mut Step, number: u32, span: Span) -> Offset {
     }
 }
 
-/// Put a tool offset in force (MACRO.md 10.1). What shifts the coordinates changes the position
+/// Put a tool offset in force (docs/reference/macro.md 10.1). What shifts the coordinates changes the position
 /// the programme reads, with no motion; what moves the tool does so in this block (a rapid of
 /// the difference, when the block has no axis words of its own) or with the next move. Either
 /// way an absolute move then puts the new tool's tip at the point written, and an incremental
@@ -529,7 +529,7 @@ pub(super) fn length_offset(step: &mut Step, sign: i8, h: Option<u32>, span: Spa
     put_offset(step, Vec3::new(0.0, 0.0, length), Vec3::default(), number, false, false, has_axis);
 }
 
-/// G10: data setting, in the forms the profile has (MACRO.md 10.2). The values are written
+/// G10: data setting, in the forms the profile has (docs/reference/macro.md 10.2). The values are written
 /// when the block has run; later blocks see them.
 pub(super) fn data_setting(step: &mut Step, words: &mut Words, span: Span) -> Result<Option<TableWrite>, Diagnostic> {
     use crate::profile::G10Forms;
@@ -580,7 +580,7 @@ pub(super) fn data_setting(step: &mut Step, words: &mut Words, span: Span) -> Re
     }
     match (forms, l) {
         (G10Forms::LatheOffsets, None) => {
-            // P1-64 wear, P10001-10064 geometry (MACRO.md 10.2, inferred); R (C adds) the nose
+            // P1-64 wear, P10001-10064 geometry (docs/reference/macro.md 10.2, inferred); R (C adds) the nose
             // radius, Q the imaginary tip.
             let (number, geometry) = match n {
                 1..=64 => (n, false),

@@ -332,7 +332,7 @@ impl Interpreter {
         let first = &blocks[0];
         let ns_rapid = matches!(ns_move, Op::Rapid { .. });
         let mut contour: Vec<Op> = std::iter::once(ns_move.clone()).chain(rest).collect();
-        // FANUC roughs along the compensated finishing shape (MACRO.md 10.3, inferred); the GSK
+        // FANUC roughs along the compensated finishing shape (docs/reference/macro.md 10.3, inferred); the GSK
         // cancels compensation in G71-G73 (help text, G40-G42 note 6) and roughs the programmed
         // one.
         let c = notes.comp;

@@ -59,7 +59,7 @@ pub(super) fn continues(cmd: ThreadCmd, pending: &PendingThread) -> bool {
 
 impl Step<'_> {
     /// A lead word (F, E) in mm: GSK reads it in mm without a point; FANUC/YASNAC in least
-    /// input increments (BEHAVIOUR.md "Numbers and words").
+    /// input increments (docs/reference/behaviour.md "Numbers and words").
     pub(super) fn lead_word(&mut self, w: &Word) -> f64 {
         let mut v = w.value;
         if !w.decimal && self.params.integer_lengths() == IntegerLengths::LeastIncrement {
@@ -149,7 +149,7 @@ impl Step<'_> {
         }
     }
 
-    /// Q, the start angle in 0.001 degree (seed 001 G32.1 Q rules; BEHAVIOUR.md).
+    /// Q, the start angle in 0.001 degree (seed 001 G32.1 Q rules; docs/reference/behaviour.md).
     pub(super) fn read_q(&mut self, words: &mut Words, unit_deg: f64, point_ok: bool) -> Result<Option<(f64, Word)>, Diagnostic> {
         let Some(w) = words.take(b'Q') else { return Ok(None) };
         if w.value < 0.0 {
@@ -622,7 +622,7 @@ fn cycle(step: &mut Step, words: &mut Words, rules: &'static CycleRules, explici
         // axes and spindle together at the end point (help text, step 2).
         PullOutRule::None => None,
     };
-    // Seed 001 G92.1 note 11, applied to G92 too (BEHAVIOUR.md): J at most the retract distance.
+    // Seed 001 G92.1 note 11, applied to G92 too (docs/reference/behaviour.md): J at most the retract distance.
     let pull_out = pull_out.map(|mut p| {
         if p.short_mm > retract {
             p.short_mm = retract;

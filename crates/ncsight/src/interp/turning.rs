@@ -71,7 +71,7 @@ pub(super) fn block(step: &mut Step, words: &mut Words, kind: BoxKind) -> Result
 
 /// FANUC G90/G94 in nose radius compensation: the box's moves in, along and out are
 /// compensated on the side the imaginary tool nose puts the nose centre, whatever G41/G42 say
-/// (MACRO.md 10.3 [inferred]); the rapid back to the start goes from where the tool is. A
+/// (docs/reference/macro.md 10.3 [inferred]); the rapid back to the start goes from where the tool is. A
 /// straight cycle then cuts where it is written (on its lines the nose's imaginary point stays
 /// on the programmed line); a taper is offset as a compensated taper is.
 fn by_tip(ops: &[crate::motion::Op], r: f64, tip: crate::motion::Vec3) -> Result<Option<Vec<crate::motion::Op>>, crate::comp::CompError> {

@@ -1,5 +1,5 @@
 //! Calls a machine builder sets up by parameter: a G or M code that runs a macro programme of
-//! the machine (O9001-O9029) as G65 or M98 would (MACRO.md section 2: FANUC 6050-6089; the
+//! the machine (O9001-O9029) as G65 or M98 would (docs/reference/macro.md section 2: FANUC 6050-6089; the
 //! GSK980TDi's data parameters No.86-95 and its M9000-M9999). All 0 (none) by default: a
 //! programme that relies on them is run with `--param 6050=100` and the machine's macros in
 //! `--subprogram-dir`.

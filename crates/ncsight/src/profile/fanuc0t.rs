@@ -1,5 +1,5 @@
 //! FANUC 0-T lathe, G-code system A (issue 11): G32, G92 with a start angle Q, the two-block G76,
-//! thread chamfering by parameters 5130/5131 (FANUC 0i-T numbering, params_alarms.md section 3:
+//! thread chamfering by parameters 5130/5131 (FANUC 0i-T numbering, docs/reference/parameters.md section 3:
 //! inferred). It is here so that the FANUC lathe programmes of the corpus (Doosan, ICNC) run on
 //! the profile they were written for.
 

@@ -262,7 +262,7 @@ pub static PROFILE: Profile = Profile {
         g65_cancels_g66: true,
         if_without_then: false,
         macro_a: true,
-        // Not found in the help text: single block stops only after NC blocks (MACRO.md section 6).
+        // Not found in the help text: single block stops only after NC blocks (docs/reference/macro.md section 6).
         single_block_param: None,
         source: "GSK980TDi help text, G65 (P right after G65; macro A with H); five bracket levels as FANUC (inferred)",
         ..super::MacroRules::FANUC

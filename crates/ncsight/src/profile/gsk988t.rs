@@ -1,6 +1,6 @@
 //! GSK lathe with a servo spindle (CS axis), A set of G codes: seed 001 (G32.1, G92.1, thread
 //! repair) and seed 002 (G32.2/G32.3). Parameter numbers follow FANUC's numbering, as the 988T
-//! manual does (params_alarms.md section 3).
+//! manual does (docs/reference/parameters.md section 3).
 
 use super::common::{self, g, gp};
 use super::lathe_a;

@@ -29,7 +29,7 @@ pub enum MachineKind {
     Mill,
 }
 
-/// How a length written without a decimal point is read (../shared/spec/BEHAVIOUR.md,
+/// How a length written without a decimal point is read (docs/reference/behaviour.md,
 /// "Numbers and words").
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum IntegerLengths {
@@ -85,7 +85,7 @@ impl Group {
 
 /// FANUC's numbers of the modal groups, which #4001-#4022 read (#4000 + the group number; the
 /// G-code lists of the FANUC 0i-MC and 0i-TC operator's manuals, inferred for the FANUC 0;
-/// MACRO.md section 8).
+/// docs/reference/macro.md section 8).
 pub const FANUC_M_GROUPS: &[(u8, Group)] = &[
     (1, Group::Motion),
     (2, Group::Plane),
@@ -359,7 +359,7 @@ pub enum HoldRule {
     AfterRun,
 }
 
-/// How a decimal point in the thread start angle Q is treated (BEHAVIOUR.md).
+/// How a decimal point in the thread start angle Q is treated (docs/reference/behaviour.md).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum QPoint {
     /// GSK988T: "Q cannot have a decimal point" (seed 001).
@@ -454,10 +454,10 @@ pub struct MacroRules {
     /// A G65 cancels a G66 modal call (GSK980TDi help text, G66; FANUC: not, inferred).
     pub g65_cancels_g66: bool,
     /// `IF [..] #i = ..` without THEN is taken as THEN (a FANUC 0i programme relies on it), with
-    /// warning NCS-W28; elsewhere it is alarm 114 (MACRO.md section 6, inferred).
+    /// warning NCS-W28; elsewhere it is alarm 114 (docs/reference/macro.md section 6, inferred).
     pub if_without_then: bool,
     /// The parameter that makes single block stop after a macro statement as well (FANUC 6000#5
-    /// SBM; MACRO.md section 6). Without one, or with it 0, single block stops only after NC
+    /// SBM; docs/reference/macro.md section 6). Without one, or with it 0, single block stops only after NC
     /// blocks.
     pub single_block_param: Option<ParamKey>,
     /// The group numbers #4001-#4022 read (`FANUC_M_GROUPS`, `FANUC_T_GROUPS`).
@@ -478,7 +478,7 @@ impl MacroRules {
     };
 }
 
-/// How the coordinate systems behave (MACRO.md section 10.2).
+/// How the coordinate systems behave (docs/reference/macro.md section 10.2).
 #[derive(Debug, Clone, Copy)]
 pub struct FrameRules {
     /// G50/G92 in the same block as G54-G59 wins: the work system stays as it was (GSK980TDi
@@ -564,7 +564,7 @@ impl TransformKeys {
     pub const NONE: TransformKeys = TransformKeys { rotation_incremental: None, rotation_angle: None, magnification: None, scaling_option: None };
 }
 
-/// The G10 forms a controller has (MACRO.md 10.2).
+/// The G10 forms a controller has (docs/reference/macro.md 10.2).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum G10Forms {
     /// FANUC 0-T: `G10 P_ X(U) Z(W) R(C) Q` (P1-64 wear, P10001-10064 geometry), `G10 L2 P0-6`.
@@ -657,7 +657,7 @@ impl FrameRules {
         box_by_tip: true,
         transform_keys: TransformKeys::NONE,
         corner_override: None,
-        source: "FANUC 0i manuals as recalled (G30 P2-P4; G92 after G54 in one block sets the system selected; 5002#4 LGT, #6 LWM; G10 forms); MACRO.md 10",
+        source: "FANUC 0i manuals as recalled (G30 P2-P4; G92 after G54 in one block sets the system selected; 5002#4 LGT, #6 LWM; G10 forms); docs/reference/macro.md 10",
     };
     pub const GSK: FrameRules = FrameRules {
         coordinate_set_wins: true,
@@ -678,7 +678,7 @@ impl FrameRules {
     };
 }
 
-/// FANUC 0i-T 5002: how a lathe's tool offsets act (MACRO.md 10.1).
+/// FANUC 0i-T 5002: how a lathe's tool offsets act (docs/reference/macro.md 10.1).
 pub const FANUC_LATHE_OFFSETS: &[ParamDef] = &[
     ParamDef {
         key: ParamKey::Number(5002, Some(4)),
@@ -687,7 +687,7 @@ pub const FANUC_LATHE_OFFSETS: &[ParamDef] = &[
         min: 0.0,
         max: 1.0,
         default: 0.0,
-        source: "FANUC 0i-T parameter manual, 5002#4 LGT, as recalled (MACRO.md 10.1; inferred for the FANUC 0-T)",
+        source: "FANUC 0i-T parameter manual, 5002#4 LGT, as recalled (docs/reference/macro.md 10.1; inferred for the FANUC 0-T)",
     },
     ParamDef {
         key: ParamKey::Number(5002, Some(6)),
@@ -696,7 +696,7 @@ pub const FANUC_LATHE_OFFSETS: &[ParamDef] = &[
         min: 0.0,
         max: 1.0,
         default: 0.0,
-        source: "FANUC 0i-T parameter manual, 5002#6 LWM, as recalled (MACRO.md 10.1; inferred for the FANUC 0-T)",
+        source: "FANUC 0i-T parameter manual, 5002#6 LWM, as recalled (docs/reference/macro.md 10.1; inferred for the FANUC 0-T)",
     },
 ];
 
@@ -715,7 +715,7 @@ pub const GSK_LATHE_OFFSETS: &[ParamDef] = &[
         "geometry_by_movement",
         "1 = the geometry offset moves the tool (GSK 'tool traverse'); 0 = it shifts the coordinates (GSK 'coordinate offset')",
         1.0,
-        "ncsight setting; GSK980TD/TDi have both modes by a state parameter whose number was not found (MACRO.md 10.1), traverse assumed",
+        "ncsight setting; GSK980TD/TDi have both modes by a state parameter whose number was not found (docs/reference/macro.md 10.1), traverse assumed",
     ),
     offset_bit("wear_with_next_move", WEAR_WITH_NEXT_MOVE, 0.0, "ncsight setting; assumed (in the T block, as FANUC's default)"),
 ];
@@ -1000,7 +1000,7 @@ impl ParamKey {
 }
 
 /// One parameter with the facts the manuals give. `source` says where the fact comes from and
-/// whether it was read or inferred (../shared/reference/params_alarms.md).
+/// whether it was read or inferred (docs/reference/parameters.md).
 #[derive(Debug, Clone, Copy)]
 pub struct ParamDef {
     pub key: ParamKey,
@@ -1035,7 +1035,7 @@ pub struct TimeKeys {
 }
 
 /// ncsight's own settings, on every profile: what the time model needs where no manual gave a
-/// parameter number (params_alarms.md: acc/dec time constants were not found).
+/// parameter number (docs/reference/parameters.md: acc/dec time constants were not found).
 /// The rapid rate and feed ceiling under their FANUC numbers (1420, 1422), shared by the
 /// profiles that use FANUC parameter numbering (fanuc0t; the GSK988T, whose manual numbers its
 /// parameters the FANUC way).
@@ -1060,7 +1060,7 @@ pub const FANUC_RATES: &[ParamDef] = &[
     },
 ];
 
-/// FANUC input format: 3401#0 DPI (params_alarms.md, FANUC: [inferred]).
+/// FANUC input format: 3401#0 DPI (docs/reference/parameters.md, FANUC: [inferred]).
 pub const FANUC_INPUT: &[ParamDef] = &[ParamDef {
     key: ParamKey::Number(3401, Some(0)),
     meaning: "DPI: 1 = a length without a decimal point is in mm (inch), calculator-type input; 0 = in least input increments",
@@ -1080,7 +1080,7 @@ pub const FANUC_G60: &[ParamDef] = &[
     ParamDef { key: ParamKey::Setting("g60_overrun_z_mm"), meaning: "G60: the same for Z", unit: "mm", min: -100.0, max: 100.0, default: 0.0, source: "ncsight setting; FANUC 0i parameter 5440 for Z" },
 ];
 
-/// FANUC custom macro: 6000#5 SBM (MACRO.md section 6; FANUC 0i parameter manual, inferred for
+/// FANUC custom macro: 6000#5 SBM (docs/reference/macro.md section 6; FANUC 0i parameter manual, inferred for
 /// the FANUC 0).
 pub const FANUC_MACRO: &[ParamDef] = &[ParamDef {
     key: ParamKey::Number(6000, Some(5)),

@@ -1,5 +1,5 @@
 //! YASKAWA YASNAC LX3 lathe: seed 004 (G92 with I, K, E). No LX3 parameter manual was found
-//! (params_alarms.md section 5): the time-model rates are ncsight settings, named, not numbered.
+//! (docs/reference/parameters.md section 5): the time-model rates are ncsight settings, named, not numbered.
 
 use super::common::{self, g};
 use super::lathe_a::{self, LATER_G76};

@@ -86,7 +86,7 @@ pub(super) enum Target {
 }
 
 /// A jump whose target has not been read yet: the blocks are read, not executed, until it is
-/// found. A controller searches forward, then from the top (MACRO.md section 6).
+/// found. A controller searches forward, then from the top (docs/reference/macro.md section 6).
 #[derive(Debug, Clone, Copy)]
 pub(super) struct Search {
     pub target: Target,

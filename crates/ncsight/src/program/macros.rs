@@ -13,7 +13,7 @@ use crate::source::Span;
 /// Local variables #1-#33 of one level.
 pub(super) type Locals = [Value; 33];
 
-/// Common variables kept: #100-#199 and #500-#999 (the FANUC option's ranges, MACRO.md section
+/// Common variables kept: #100-#199 and #500-#999 (the FANUC option's ranges, docs/reference/macro.md section
 /// 3: the large set avoids false alarms on real programmes; GSK988T manual, macro variables).
 const COMMON: [(i64, i64); 2] = [(100, 199), (500, 999)];
 
@@ -37,7 +37,7 @@ pub(super) struct Variables {
 }
 
 /// Interface signals (FANUC custom macro B; inferred for the GSK and YASNAC profiles, whose
-/// texts at hand list no numbers; MACRO.md section 3 "system: #1000 up").
+/// texts at hand list no numbers; docs/reference/macro.md section 3 "system: #1000 up").
 const INPUTS: std::ops::RangeInclusive<i64> = 1000..=1015;
 const INPUT_WORD: i64 = 1032;
 
@@ -113,7 +113,7 @@ impl Reading<'_> {
     }
 
     /// #4001-#4022: the code in force in FANUC group `number - 4000`, as the profile numbers
-    /// its groups (#4000 + the group number; MACRO.md section 8).
+    /// its groups (#4000 + the group number; docs/reference/macro.md section 8).
     fn group_code(&self, number: i64) -> Result<Value, ExprError> {
         let (m, p) = (self.modal, self.profile);
         let group = p.macros.group_numbers.iter().find(|(n, _)| i64::from(*n) + 4000 == number).map(|(_, g)| *g);
@@ -180,7 +180,7 @@ impl expr::Variables for Reading<'_> {
                 // A rotary axis: degrees, the same in every coordinate system (no offsets).
                 r => return Some(self.modal.rotary_deg[usize::from(r - b'A').min(2)]),
             };
-            // A diameter X reads as a diameter (MACRO.md section 8, inferred).
+            // A diameter X reads as a diameter (docs/reference/macro.md section 8, inferred).
             Some(if i == 0 && self.profile.diameter_x { v * 2.0 } else { v })
         };
         Ok(match number {
@@ -207,7 +207,7 @@ impl expr::Variables for Reading<'_> {
             4119 => Some(m.s_word),
             4120 => Some(f64::from(m.tool)),
             // Positions: the block end point, the machine and the current position. Without a
-            // setup (work and tool offsets) the three are the same (MACRO.md section 8); with
+            // setup (work and tool offsets) the three are the same (docs/reference/macro.md section 8); with
             // one, #5021-#5026 are in machine coordinates.
             // The controlled axes in their order: X Y Z on the mill, X Z on a lathe (#5002 is a
             // lathe's Z, as SK7420's `#681=#5022(Current Z ...)` reads it), or the setup's
@@ -344,8 +344,8 @@ fn whole_address(letter: u8) -> bool {
 }
 
 /// A word of an NC block in a macro, evaluated: `None` when it disappears (a bare vacant
-/// variable, MACRO.md section 4.2). A value from a variable has a decimal point and is rounded
-/// to the address's least increment (MACRO.md section 4.4).
+/// variable, docs/reference/macro.md section 4.2). A value from a variable has a decimal point and is rounded
+/// to the address's least increment (docs/reference/macro.md section 4.4).
 ///
 /// `arguments`: the block is a G65/G66 call, whose words are the macro's arguments: a value
 /// from a variable passes as it is (no rounding to a whole number, no scaling).

@@ -204,7 +204,7 @@ impl LineReader {
 /// the first `%` (the tape start) is the leader and is not read (FANUC 0i operator's manual,
 /// programme configuration; assumed for the GSK and YASNAC profiles as well). A file whose
 /// first lines are programme blocks has no leader: a `%` after them closes the record
-/// (MACRO.md section 1). So lines before the first `%` are the leader only when none of them
+/// (docs/reference/macro.md section 1). So lines before the first `%` are the leader only when none of them
 /// reads as a block or starts as one (`G0 X1,5` is a programme with a mistake, not a title), and
 /// at least one is text that is not a comment (a title, a CAM banner) or a punched tape's
 /// blank leader (NUL or DEL bytes, also before the `%` on its line).
@@ -448,7 +448,7 @@ impl Program {
         let style = params.profile().alarm_style;
         let builder_codes = Program::builder_codes(&params);
         let builders = !builder_codes.is_empty() || params.profile().calls.builder.m9000;
-        // FANUC 6000#5 SBM: single block stops after macro statements too (MACRO.md section 6).
+        // FANUC 6000#5 SBM: single block stops after macro statements too (docs/reference/macro.md section 6).
         let statement_stops = operator.single_block && params.profile().macros.single_block_param.is_some_and(|k| params.get(k) == 1.0);
         Program {
             machine: Machine::new(&params, operator),
@@ -838,7 +838,7 @@ impl Core {
             self.eof = true;
         }
         // A `%` after the first block closes the record: the text after it is not read
-        // (MACRO.md section 1, inferred). The one before is the record's start. A search for a
+        // (docs/reference/macro.md section 1, inferred). The one before is the record's start. A search for a
         // programme or a sequence number reads on past it (the controller's memory holds every
         // programme of the file; inferred).
         if tape_mark && self.executed_any && self.calls.search.is_none() {
@@ -1064,7 +1064,7 @@ impl Core {
                 Stmt::If { cond, then } => {
                     if let Then::Assign { written: false, .. } = then {
                         // IF [..] #i = .. without THEN: a FANUC 0i takes it (a real programme
-                        // relies on it), the others are not known to (MACRO.md section 6).
+                        // relies on it), the others are not known to (docs/reference/macro.md section 6).
                         if !profile.macros.if_without_then {
                             return Err(Diagnostic::new(Rule::MacroFormat, profile.alarm_style, block.span, "IF [..] #i = ..: THEN is missing (IF [..] THEN #i = ..)".to_string()));
                         }
@@ -1151,7 +1151,7 @@ impl Core {
         let number = crate::read::expr::variable_number(self.value(arena, var, block.span)?).map_err(|e| macros::expr_alarm(profile.alarm_style, block.span, &e))?;
         let v = self.value(arena, value, block.span)?;
         if number == 3000 {
-            // The user's alarm: 3000 + n with the comment's text (FANUC 0i; MACRO.md section 8).
+            // The user's alarm: 3000 + n with the comment's text (FANUC 0i; docs/reference/macro.md section 8).
             let n = v.unwrap_or(0.0).round() as i64;
             let text = block.comments.first().map(|c| format!(" ({})", c.trim())).unwrap_or_default();
             return Err(Diagnostic::new(Rule::UserAlarm, profile.alarm_style, block.span, format!("user alarm {}{text}: #3000 = {n}", 3000 + n)));
@@ -1509,7 +1509,7 @@ impl Core {
         }
     }
 
-    /// The runaway guard (MACRO.md section 6: a loop may never end on the machine): blocks
+    /// The runaway guard (docs/reference/macro.md section 6: a loop may never end on the machine): blocks
     /// executed again, and blocks a search reads again, past the limit stop the run. Whether
     /// the run goes on.
     fn guard(&mut self, span: Span, sink: &mut dyn FnMut(Event)) -> bool {
@@ -1877,7 +1877,7 @@ impl Core {
                 self.mode != Mode::Run
             }
             Some(frame) => {
-                // No manual says what a controller does here (MACRO.md section 1, inferred): an
+                // No manual says what a controller does here (docs/reference/macro.md section 1, inferred): an
                 // alarm; a check goes on as if M99 had been there.
                 let d = Diagnostic::new(Rule::NoReturn, profile.alarm_style, span, format!("O{:04} ends here without M99: a subprogramme returns with M99", frame.number));
                 self.alarm(d, sink);

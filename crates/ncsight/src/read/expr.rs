@@ -1,4 +1,4 @@
-//! Expressions: `[expr]` values and custom macro B (MACRO.md section 5). Parsed into a small
+//! Expressions: `[expr]` values and custom macro B (docs/reference/macro.md section 5). Parsed into a small
 //! tree held in an arena, evaluated later with the variables in force (or at once, for a word
 //! whose brackets hold constants only). Operators `* / AND` bind tighter than `+ - OR XOR`,
 //! functions tightest; comparisons (EQ NE GT GE LT LE) exist in conditions. Angles in degrees.
@@ -136,7 +136,7 @@ impl Arena {
     }
 
     /// Whether the tree at `root` is a bare variable (`#1`, `-#1`): a vacant one makes its word
-    /// disappear (MACRO.md section 4.2).
+    /// disappear (docs/reference/macro.md section 4.2).
     pub fn bare_variable(&self, root: u32) -> bool {
         match self.nodes[root as usize] {
             Node::Var(_) => true,
@@ -168,7 +168,7 @@ fn fail(kind: ErrorKind, message: impl Into<String>) -> ExprError {
     ExprError { at: 0, message: message.into(), kind }
 }
 
-/// The number of a variable: a whole number (rounded: `#[1.4]` is #1; MACRO.md section 3).
+/// The number of a variable: a whole number (rounded: `#[1.4]` is #1; docs/reference/macro.md section 3).
 pub fn variable_number(v: Value) -> Result<i64, ExprError> {
     let v = v.ok_or_else(|| fail(ErrorKind::Format, "a variable number is vacant"))?;
     if v.abs() > 1e9 {
@@ -183,7 +183,7 @@ fn whole(v: f64) -> i64 {
 }
 
 /// Evaluate the tree at `root`. Arithmetic treats vacant as 0; a bare variable keeps its
-/// vacancy; EQ and NE tell vacant from 0, GT GE LT LE do not (MACRO.md section 4).
+/// vacancy; EQ and NE tell vacant from 0, GT GE LT LE do not (docs/reference/macro.md section 4).
 pub fn eval(arena: &Arena, root: u32, vars: &mut dyn Variables) -> Result<Value, ExprError> {
     eval_rounding(arena, root, vars, 1.0)
 }
@@ -273,7 +273,7 @@ pub fn eval_rounding(arena: &Arena, root: u32, vars: &mut dyn Variables, round_s
                     x.sqrt()
                 }
                 Func::Abs => x.abs(),
-                // Half away from zero: ROUND[-1.5] = -2 (MACRO.md section 5).
+                // Half away from zero: ROUND[-1.5] = -2 (docs/reference/macro.md section 5).
                 Func::Round => round_to_step(x, round_step),
                 // Toward zero and away from zero: FIX[-1.2] = -1, FUP[-1.2] = -2.
                 Func::Fix => x.trunc(),
@@ -561,7 +561,7 @@ mod tests {
         assert!((evaluate(b"ATAN[1]/[1]").unwrap() - 45.0).abs() < 1e-12);
         assert!((evaluate(b"ATAN[-1]/[-1]").unwrap() - 225.0).abs() < 1e-12);
         assert_eq!(evaluate(b"sqrt[16]").unwrap(), 4.0);
-        // FIX toward zero, FUP away from zero, ROUND half away from zero (MACRO.md section 5).
+        // FIX toward zero, FUP away from zero, ROUND half away from zero (docs/reference/macro.md section 5).
         assert_eq!(evaluate(b"FIX[-1.5]").unwrap(), -1.0);
         assert_eq!(evaluate(b"FIX[1.2]").unwrap(), 1.0);
         assert_eq!(evaluate(b"FUP[1.2]").unwrap(), 2.0);
@@ -585,7 +585,7 @@ mod tests {
         assert!((evaluate(b"ACOS[0]").unwrap() - 90.0).abs() < 1e-12);
     }
 
-    /// Vacant (MACRO.md section 4): a bare variable keeps its vacancy, arithmetic reads 0,
+    /// Vacant (docs/reference/macro.md section 4): a bare variable keeps its vacancy, arithmetic reads 0,
     /// EQ and NE tell vacant from 0, GT GE LT LE do not.
     #[test]
     fn vacancy() {

@@ -1,4 +1,4 @@
-//! Blocks of custom macro B (MACRO.md sections 5 and 6): assignments `#1=...`, `IF [..] GOTO n`,
+//! Blocks of custom macro B (docs/reference/macro.md sections 5 and 6): assignments `#1=...`, `IF [..] GOTO n`,
 //! `IF [..] THEN #i=...`, `WHILE [..] DO m`, `END m`, `GOTO n`, and NC blocks whose words take
 //! their values from variables or expressions (`X#1`, `Z[#2-1.5]`). They are read into
 //! expression trees here; the programme evaluates them with the variables in force when the
@@ -256,7 +256,7 @@ impl Reader {
                     } else if c.get(i) == Some(&b'#') {
                         // `IF[#609GT0]#712=#609`: THEN left out, as a real FANUC 0i programme
                         // does (the SK7420 punch); the profile says whether that is read as THEN
-                        // (MACRO.md section 6, inferred).
+                        // (docs/reference/macro.md section 6, inferred).
                         let (var, value) = assignment(&mut arena, i)?;
                         Then::Assign { var, value, written: false }
                     } else {

@@ -6,7 +6,7 @@
 //! 4. Z rapid back to A.
 //!
 //! With L starts, one block cuts every start at the same depth, start k at `Q + k x 360 / L`,
-//! each as a full four-step cycle, in that order (BEHAVIOUR.md, "Multi-start threads").
+//! each as a full four-step cycle, in that order (docs/reference/behaviour.md, "Multi-start threads").
 
 use super::{expand, Pass, PassError, PullOut};
 use crate::motion::{Op, Vec3};

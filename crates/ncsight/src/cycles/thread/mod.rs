@@ -3,7 +3,7 @@
 //!
 //! A thread pass is spindle-synchronised motion: the long axis moves one lead per spindle
 //! revolution. Motion starts when the spindle passes its one-revolution signal plus the start
-//! angle Q (../shared/spec/BEHAVIOUR.md, "Multi-start threads and the spindle angle"), so the
+//! angle Q (docs/reference/behaviour.md, "Multi-start threads and the spindle angle"), so the
 //! spindle angle anywhere along a pass is `Q + 360 x (long-axis distance so far) / lead`.
 //!
 //! The pull-out (退尾) geometry is one function, [`pull_out`]; what differs per command (which of
