@@ -27,7 +27,11 @@ pub fn corpus(tests: &str) -> Option<PathBuf> {
     static SAID: std::sync::Once = std::sync::Once::new();
     SAID.call_once(|| {
         use std::io::Write;
-        let line = format!("skipped: the corpus tests ({tests}): no corpus of real programmes at {} (set NCSIGHT_CORPUS)\n", dir.display());
+        let place = match std::env::var_os("NCSIGHT_CORPUS") {
+            Some(_) => format!("at NCSIGHT_CORPUS={}", dir.display()),
+            None => "(NCSIGHT_CORPUS names its folder)".to_string(),
+        };
+        let line = format!("skipped: the corpus tests ({tests}): no corpus of real programmes {place}\n");
         let _ = std::io::stderr().lock().write_all(line.as_bytes());
     });
     None

@@ -12,7 +12,9 @@ G92 X38.5 Z-20 F2 J1 K0.5 L2 Q90000
 G0 X70 Z5
 G76 P020560 Q150 R0.1
 G76 X60.64 Z-62 P3680 Q1800 F6
-(G34 - the manual's example - from X60 Z4 after U-1.0 - W-78 F4 R0.2 - revolution n at lead 4 + 0.2 x [n + 0.5] - J5 K2 not simulated - warning.)
+(G34 - the manual's example - from X60 Z4 after U-1.0 - W-78 F4 R0.2 - revolution n at lead 4 + 0.2 x [n + 0.5].)
+(J5 K2 as G32 - 14 revolutions 4.1 to 6.7 make 75.6 mm to Z-71.6 - the 15th at 6.9 goes 0.4 mm to Z-72 - K2 before Z-74.)
+(Then the pull-out from X59 Z-72 to X69 Z-74 at lead 6.9 - from 360 x 0.4 / 6.9 = 20.87 degrees.)
 G0 X60 Z4
 G0 U-1.0
 G34 W-78 F4 J5 K2 R0.2

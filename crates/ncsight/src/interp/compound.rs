@@ -294,14 +294,13 @@ pub(super) fn variable_lead(step: &mut Step, words: &mut Words, run_deg: Option<
         }
         None => 0.0,
     };
-    if rules.pull_out_words {
-        for l in [b'J', b'K'] {
-            if let Some(w) = words.take(l) {
-                let msg = format!("{}: the pull-out of a variable-lead thread is not simulated; the thread ends at its end point", w.text());
-                step.warn(Rule::NotSimulated, w.span, msg);
-            }
-        }
-    }
+    // J and K as G32's, modal with G32's (help text G34: "J, K mean the same as in G32").
+    let pull_out = if rules.pull_out_words {
+        step.read_jk(words, "G34", true, true)?;
+        super::thread::g32_pull_out(step)
+    } else {
+        None
+    };
     let q = step.read_q(words, 0.001, false)?;
     let rpm = step.follow_rpm("G34")?;
     let from = step.st.pos;
@@ -312,13 +311,14 @@ pub(super) fn variable_lead(step: &mut Step, words: &mut Words, run_deg: Option<
     let start_deg = run_deg.or(q.map(|(d, _)| d)).unwrap_or(0.0);
     let max = super::thread::MAX_LEAD_MM;
     let limit = super::MAX_MOTIONS_PER_BLOCK;
-    let ops = variable_lead::expand(from, to, lead, change, start_deg, rpm, max, limit).map_err(|e| match e {
+    let ops = variable_lead::expand(from, to, lead, change, start_deg, rpm, pull_out, max, limit).map_err(|e| match e {
         VariableLeadError::LeadLeavesRange(n) => step.alarm(
             rules.lead_rule,
             step.span,
             format!("G34: after {n} revolutions the lead would leave 0 to {max} mm (F{} {}{})", crate::alarm::shown(lead, 4), rules.change as char, crate::alarm::shown(change, 4)),
         ),
         VariableLeadError::TooMany => step.alarm(Rule::MotionLimit, step.span, format!("G34: more than {limit} revolutions in one block")),
+        VariableLeadError::Pass(e) => step.pass_error("G34", e),
     })?;
     for op in ops {
         step.emit(op);

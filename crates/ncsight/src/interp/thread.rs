@@ -181,7 +181,7 @@ impl Step<'_> {
     }
 
     /// J and K into the values in force. Returns whether J or K was written in this block.
-    fn read_jk(&mut self, words: &mut Words, gname: &str, j_may_be_negative: bool, k_may_be_negative: bool) -> Result<(bool, bool), Diagnostic> {
+    pub(super) fn read_jk(&mut self, words: &mut Words, gname: &str, j_may_be_negative: bool, k_may_be_negative: bool) -> Result<(bool, bool), Diagnostic> {
         let j = words.take(b'J');
         let k = words.take(b'K');
         if let Some(w) = j {
@@ -397,29 +397,7 @@ fn straight(step: &mut Step, words: &mut Words, cmd: ThreadCmd, run_deg: Option<
         (Some(d), None) => d,
         (None, q) => q.map(|(d, _)| d).unwrap_or(0.0),
     };
-    let (j, k) = (step.st.thread.j, step.st.thread.k);
-    let short_sign = |j: f64| if j < 0.0 { -1.0 } else { 1.0 };
-    let pull_out = match j {
-        // No J in force, or J0: no pull-out (TDi p151; seed 001 notes 2 and 4).
-        None => None,
-        Some(j) if j == 0.0 => None,
-        Some(j) => {
-            let k = k.map(f64::abs).unwrap_or(0.0);
-            if rigid && rules.k_zero_after_end {
-                if k == 0.0 {
-                    // Seed 001 G32.1 notes 3 and 5: no long-axis pull-out; out along the short
-                    // axis after the end point at parameter 1466's speed.
-                    Some(PullOut { long_mm: 0.0, short_mm: j.abs(), short_sign: short_sign(j), mode: PullOutMode::Ratio, after_end_feed: Some(step.after_end_feed()) })
-                } else {
-                    Some(PullOut { long_mm: k, short_mm: j.abs(), short_sign: short_sign(j), mode: PullOutMode::Ratio, after_end_feed: None })
-                }
-            } else {
-                // TDi p151: K omitted or 0 with J: K = J.
-                let long = if k == 0.0 { j.abs() } else { k };
-                Some(PullOut { long_mm: long, short_mm: j.abs(), short_sign: short_sign(j), mode: step.pull_out_mode(), after_end_feed: None })
-            }
-        }
-    };
+    let pull_out = if rigid && rules.k_zero_after_end { rigid_pull_out(step) } else { g32_pull_out(step) };
     if let Some(po) = pull_out {
         if po.long_mm > length + 1e-9 {
             // Seed 001 G32.1 note 9.
@@ -435,11 +413,36 @@ fn straight(step: &mut Step, words: &mut Words, cmd: ThreadCmd, run_deg: Option<
     // G32: J/K are modal and the run's pull-out uses the values in force at its end (TDi help
     // G32 note 1), so writing them does not end a run.
     // The GSK980TDi's G32.1 takes J/K as its G32 (inferred): they do not end the run there.
-    let ends_run = rigid && rules.k_zero_after_end && (j_given || k_given) && (j.unwrap_or(0.0) != 0.0 || k.unwrap_or(0.0) != 0.0);
+    let ends_run = rigid && rules.k_zero_after_end && (j_given || k_given) && (step.st.thread.j.unwrap_or(0.0) != 0.0 || step.st.thread.k.unwrap_or(0.0) != 0.0);
     let end_deg = phase_after(start_deg, length, lead);
     step.st.pos = target;
     step.st.thread.pending = Some(PendingThread { span: step.span, n: step.n, body: PendingBody::Straight(pass), ends_run, rigid, end_deg });
     Ok(())
+}
+
+/// The sign of J: which way the short axis goes out.
+fn short_sign(j: f64) -> f64 {
+    if j < 0.0 { -1.0 } else { 1.0 }
+}
+
+/// G32.1's pull-out on the GSK988T from the J and K in force. No J in force, or J0: none (seed
+/// 001 notes 2 and 4). K omitted or 0: no long-axis pull-out; out along the short axis after the
+/// end point at parameter 1466's speed (seed 001 G32.1 notes 3 and 5).
+fn rigid_pull_out(step: &Step) -> Option<PullOut> {
+    let j = step.st.thread.j.filter(|j| *j != 0.0)?;
+    let k = step.st.thread.k.map(f64::abs).unwrap_or(0.0);
+    let after_end_feed = if k == 0.0 { Some(step.after_end_feed()) } else { None };
+    Some(PullOut { long_mm: k, short_mm: j.abs(), short_sign: short_sign(j), mode: PullOutMode::Ratio, after_end_feed })
+}
+
+/// G32's pull-out from the J and K in force, as G34 takes it too (TDi help G34: "X(U), Z(W),
+/// J, K mean the same as in G32"). No J in force, or J0: none (TDi p151); K omitted or 0 with J:
+/// K = J (TDi p151).
+pub(super) fn g32_pull_out(step: &Step) -> Option<PullOut> {
+    let j = step.st.thread.j.filter(|j| *j != 0.0)?;
+    let k = step.st.thread.k.map(f64::abs).unwrap_or(0.0);
+    let long = if k == 0.0 { j.abs() } else { k };
+    Some(PullOut { long_mm: long, short_mm: j.abs(), short_sign: short_sign(j), mode: step.pull_out_mode(), after_end_feed: None })
 }
 
 /// G32.2 / G32.3 (seed 002).
