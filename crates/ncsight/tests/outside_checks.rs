@@ -24,3 +24,42 @@ fn g34_pulls_out_as_g32() {
     let last = records.iter().filter_map(|r| if let Op::Thread { to, .. } = r.op { Some(to) } else { None }).last().unwrap();
     assert!((last.x - 15.0).abs() < 1e-9 && (last.z + 20.0).abs() < 1e-9);
 }
+
+fn first_alarm(machine: &str, text: &str) -> Option<ncsight::Diagnostic> {
+    let (_, d) = common::run_plain(machine, &[], text);
+    d.into_iter().find(|d| d.is_alarm())
+}
+
+/// A subprogramme call inside a G71 contour is refused by the roughing itself (GSK980TDi help
+/// text, G71 note 4: "no subprogramme call codes (such as M98/M99) between ns and nf"), with no
+/// G70 after it, before anything is roughed.
+#[test]
+fn a_call_in_a_roughing_contour_alarms_in_the_roughing() {
+    let text = "O0001\nG0 X40. Z2.\nG71 U1. R0.5\nG71 P10 Q30 U0.5 W0.1 F0.2\nN10 G0 X20.\nG1 Z-10.\nM98 P1000\nN30 X40.\nM30\nO1000\nM99\n";
+    let (records, diags) = common::run_plain("gsk980tdi", &[], text);
+    let a = diags.iter().find(|d| d.is_alarm()).expect("an alarm");
+    assert_eq!((a.code, a.span.line), ("NCS-E55", 7), "{a:?}");
+    assert!(a.message.contains("G71 note 4"), "{}", a.message);
+    assert!(!records.iter().any(|r| matches!(r.op, Op::Feed { .. })), "nothing is roughed");
+    // G72 and G73 likewise.
+    for head in ["G72 W1. R0.5\nG72 P10 Q30 U0.5 W0.1 F0.2", "G73 U2. W0. R2\nG73 P10 Q30 U0.5 W0.1 F0.2"] {
+        let t = text.replace("G71 U1. R0.5\nG71 P10 Q30 U0.5 W0.1 F0.2", head);
+        assert_eq!(first_alarm("gsk980tdi", &t).map(|a| (a.code, a.span.line)), Some(("NCS-E55", 7)), "{head}");
+    }
+}
+
+/// P in an M98 block is the programme to call, never the drilling cycle's dwell: on a FANUC the
+/// hole data P keeps its value (FANUC 0-M: M98 P is the programme number; the everyday practice
+/// of "a cycle's first hole, then M98 P with the others", M. Lynch, "Merging Subprograms with
+/// Canned Cycles", Modern Machine Shop). The called programme's holes dwell P500 = 0.5 s.
+#[test]
+fn m98_p_in_a_drilling_cycle_calls_and_keeps_the_dwell() {
+    let text = "G21 G17 G90 G0 X0. Y0. Z50.\nS500 M3\nG99 G82 X10. Y10. Z-10. R2. P500 F100.\nM98 P2100\nG80\nM30\nO2100\nX20. Y20.\nX30.\nM99\n";
+    let (records, diags) = common::run_plain("fanuc0m", &[], text);
+    assert!(!diags.iter().any(|d| d.is_alarm()), "{diags:?}");
+    let dwells: Vec<f64> = records.iter().filter_map(|r| if let Op::Dwell { seconds } = r.op { Some(seconds) } else { None }).collect();
+    assert_eq!(dwells, vec![0.5, 0.5, 0.5], "three holes, each 0.5 s");
+    // The M98 block itself drills no hole: the holes are at X10 Y10, X20 Y20 and X30 Y20.
+    let bottoms: Vec<(f64, f64)> = records.iter().filter_map(|r| if let Op::Feed { to, .. } = r.op { Some((to.x, to.y)) } else { None }).collect();
+    assert_eq!(bottoms, vec![(10.0, 10.0), (20.0, 20.0), (30.0, 20.0)]);
+}

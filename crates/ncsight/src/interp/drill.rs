@@ -57,8 +57,14 @@ fn repeats(step: &mut Step, words: &mut Words) -> Result<u32, Diagnostic> {
     }
 }
 
-/// The dwell P at the bottom, a whole number of ms (seed 003; GSK help text G83/87).
+/// The dwell P at the bottom, a whole number of ms (seed 003; GSK help text G83/87). A P that
+/// M98 or M99 took in this block is the programme or sequence number, not the dwell: the hole
+/// data P keeps its value (FANUC: `M98 P_` calls programme P; a cycle's first hole, then `M98 P_`
+/// for the others, is everyday practice).
 fn take_dwell(step: &mut Step, words: &mut Words) -> Result<(), Diagnostic> {
+    if !words.has_unused(b'P') {
+        return Ok(());
+    }
     if let Some(w) = words.take(b'P') {
         if w.decimal {
             return Err(step.alarm(Rule::IllegalDecimalPoint, w.span, format!("{}: the dwell P is a whole number of ms", w.text())));

@@ -6,6 +6,7 @@
 //! of the modal state, and roughs it. G70 P(ns) Q(nf) runs those blocks for real (their F, S
 //! and T count there) and returns to its start point.
 
+use super::call::Flow;
 use super::words::Words;
 use super::{run_block, Interpreter, Outcome, Step};
 use crate::alarm::{Diagnostic, Rule};
@@ -239,6 +240,11 @@ impl Interpreter {
             // its chamfers and corner arcs are made as in a run (docs/commands/drawing.md).
             let mut step = Step { profile: self.profile, params: &self.params, tables: &self.tables, queue: &mut no_queue, corners: &mut corners, bypass_comp: true, contour: true, repair: None, span: b.span, n: b.sequence, st: &mut st, carry: None, out: &mut scratch };
             run_block(&mut step, b, self.switches)?;
+            // GSK980TDi help text, G71 note 4 (G72, G73 likewise): no subprogramme call or
+            // return in the contour blocks ns to nf; the roughing refuses it as G70 does.
+            if let Some(Flow::Call { span, .. } | Flow::Return { span, .. }) = step.out.flow.take() {
+                return Err(self.contour_alarm(Rule::ContourCommand, span, format!("{code}: M98 and M99 may not be used in the contour blocks ns to nf (GSK980TDi manual, G71 note 4)")));
+            }
             if !step.corners.is_empty() {
                 super::corner::end_of_block(&mut step)?;
             }
