@@ -65,9 +65,10 @@ pub fn json(m: &Measurement) -> String {
         .collect();
     let flanks = m.flank_angles_deg.map(|(a, b)| format!("[{},{}]", num(a, 2), num(b, 2))).unwrap_or_else(|| "null".into());
     format!(
-        "{{\"assumed_tools\":[{}],\"stock_diameter_mm\":{},\"major_diameter_mm\":{},\"minor_diameter_mm\":{},\"depth_mm\":{},\"pitch_mm\":{},\"lead_mm\":{},\"hand\":{},\"starts\":{},\"start_spacing_deg\":{},\"flank_angles_deg\":{flanks},\"full_depth_length_mm\":{},\"runout_length_mm\":{},\"grid\":{{\"dz_mm\":{},\"dtheta_deg\":{},\"cell_updates\":{}}},\"findings\":[{}]}}\n",
+        "{{\"assumed_tools\":[{}],\"stock_diameter_mm\":{},\"stock_guessed\":{},\"major_diameter_mm\":{},\"minor_diameter_mm\":{},\"depth_mm\":{},\"pitch_mm\":{},\"lead_mm\":{},\"hand\":{},\"starts\":{},\"start_spacing_deg\":{},\"flank_angles_deg\":{flanks},\"full_depth_length_mm\":{},\"runout_length_mm\":{},\"grid\":{{\"dz_mm\":{},\"dtheta_deg\":{},\"cell_updates\":{}}},\"findings\":[{}]}}\n",
         assumed_tools(m).iter().map(|t| json_str(t)).collect::<Vec<_>>().join(","),
         num(m.stock_diameter_mm, 4),
+        m.stock_guessed.map(|b| format!("{{\"diameter_mm\":{},\"length_mm\":{},\"front_z_mm\":{},\"bore_mm\":{}}}", num(b.diameter_mm, 4), num(b.length_mm, 4), num(b.front_z_mm, 4), num(b.bore_mm, 4))).unwrap_or_else(|| "null".into()),
         opt(m.major_diameter_mm, 4),
         opt(m.minor_diameter_mm, 4),
         opt(m.depth_mm, 4),
@@ -126,6 +127,15 @@ pub fn text(m: &Measurement) -> String {
         s.push_str(&format!("{what:<22} {}\n", v.map(|v| format!("{} {unit}", num(v, 4))).unwrap_or_else(|| "-".into())));
     };
     line(&mut s, "stock diameter", Some(m.stock_diameter_mm), "mm");
+    if let Some(b) = m.stock_guessed {
+        s.push_str(&format!(
+            "{:<22} {} x {} mm from Z{} (guessed from the programme's cuts: give --stock DIAxLEN)\n",
+            "stock guessed",
+            num(b.diameter_mm, 3),
+            num(b.length_mm, 3),
+            num(b.front_z_mm, 3)
+        ));
+    }
     line(&mut s, "major diameter", m.major_diameter_mm, "mm");
     line(&mut s, "minor diameter", m.minor_diameter_mm, "mm");
     line(&mut s, "thread depth", m.depth_mm, "mm");

@@ -43,6 +43,8 @@ pub struct Measurement {
     pub dz_mm: f64,
     pub dtheta_deg: f64,
     pub cell_updates: u64,
+    /// The stock when it was guessed from the programme (no `--stock`, no setup stock).
+    pub stock_guessed: Option<Bar>,
 }
 
 /// A simulation: the stock after the programme and its measurement.
@@ -96,32 +98,58 @@ fn assume_tools(records: &[Record], setup: &Setup) -> Vec<(u32, Tool)> {
         .collect()
 }
 
-/// The stock a thread programme implies when none is given: the deepest external cut plus twice
-/// the ISO external thread height 0.61343 x lead (docs: an assumption; give `--stock` to be sure).
+/// How far behind the deepest cut a guessed stock ends (where the chuck is assumed): a part
+/// needs some length to be held by, and a parting tool's width goes past its programmed point.
+pub const GUESS_HOLD_MM: f64 = 5.0;
+
+/// The stock a programme implies when none is given (docs/commands/simulate.md, an assumption:
+/// give `--stock` to be sure), from the extents of its cutting moves (feeds, arcs, threads):
+/// - the diameter is the largest one the tool cuts along (for each cutting move the smaller of
+///   its two diameters, so a move coming in from outside, a facing cut or a retract, does not
+///   count beyond where it cuts), or the largest diameter of any cut when none runs along one;
+/// - the face is at Z0 where the cuts reach it (otherwise at the nearest cut), and the bar runs
+///   to the deepest cut plus [`GUESS_HOLD_MM`], where the chuck is assumed;
+/// - with an external thread, at least the thread's deepest pass plus twice the ISO external
+///   thread height 0.61343 x lead (a programme that only threads: the blank's diameter);
+/// - with an internal thread, the bore is the thread's deepest pass less twice that height, and
+///   the outside at least ten leads beyond the thread.
 fn infer_bar(records: &[Record], internal: bool) -> Option<Bar> {
-    let mut lead = 0.0f64;
-    let (mut deepest, mut zmin, mut zmax) = (if internal { f64::MIN } else { f64::MAX }, f64::MAX, f64::MIN);
+    let (mut along, mut widest) = (0.0f64, 0.0f64);
+    let (mut zmin, mut zmax) = (f64::MAX, f64::MIN);
+    let (mut lead, mut thread_max_x, mut thread_min_x) = (0.0f64, f64::MIN, f64::MAX);
     for r in records {
-        if let Op::Thread { from, to, lead_mm, .. } | Op::ThreadArc { from, to, lead_mm, .. } = r.op {
-            lead = lead.max(lead_mm);
-            for p in [from, to] {
-                deepest = if internal { deepest.max(p.x) } else { deepest.min(p.x) };
-                zmin = zmin.min(p.z);
-                zmax = zmax.max(p.z);
+        let (from, to) = match r.op {
+            Op::Feed { from, to, .. } | Op::Arc { from, to, .. } => (from, to),
+            Op::Thread { from, to, lead_mm, .. } | Op::ThreadArc { from, to, lead_mm, .. } => {
+                lead = lead.max(lead_mm);
+                thread_max_x = thread_max_x.max(from.x).max(to.x);
+                thread_min_x = thread_min_x.min(from.x).min(to.x);
+                (from, to)
             }
-        }
+            _ => continue,
+        };
+        along = along.max(from.x.min(to.x));
+        widest = widest.max(from.x).max(to.x);
+        zmin = zmin.min(from.z).min(to.z);
+        zmax = zmax.max(from.z).max(to.z);
     }
-    if lead == 0.0 {
+    if zmin > zmax {
         return None;
     }
+    let mut radius = if along > 0.0 { along } else { widest };
+    let mut bore = 0.0;
     let height = 0.61343 * lead;
+    if internal && lead > 0.0 {
+        radius = radius.max(thread_max_x + 10.0 * lead);
+        bore = 2.0 * (thread_max_x - height);
+    } else if lead > 0.0 {
+        radius = radius.max(thread_min_x + height);
+    }
+    if radius <= 0.0 {
+        return None;
+    }
     let front = zmax.min(0.0).max(zmin);
-    let length = (front - zmin) + 2.0 * lead;
-    Some(if internal {
-        Bar { diameter_mm: 2.0 * (deepest + 10.0 * lead), length_mm: length, bore_mm: 2.0 * (deepest - height), front_z_mm: front }
-    } else {
-        Bar { diameter_mm: 2.0 * (deepest + height), length_mm: length, bore_mm: 0.0, front_z_mm: front }
-    })
+    Some(Bar { diameter_mm: 2.0 * radius, length_mm: (front - zmin) + GUESS_HOLD_MM, bore_mm: bore.max(0.0), front_z_mm: front })
 }
 
 /// A drilling simulation on a machining centre.
@@ -230,9 +258,12 @@ pub fn simulate_with(records: &[Record], setup: &Setup, opts: &SimOptions, progr
         tool_of.push((tool, turning));
     }
     let internal = records.iter().zip(&tool_of).any(|(r, (t, _))| r.op.is_thread() && t.internal);
-    let bar = match setup.stock.or_else(|| infer_bar(records, internal)) {
-        Some(b) => b,
-        None => return Err("no stock: give --stock DIAxLEN or a setup (the programme cuts no thread to infer it from)".into()),
+    let (bar, guessed) = match setup.stock {
+        Some(b) => (b, false),
+        None => match infer_bar(records, internal) {
+            Some(b) => (b, true),
+            None => return Err("no stock: give --stock DIAxLEN or a setup (the programme cuts nothing to guess it from)".into()),
+        },
     };
     let max_lead = records
         .iter()
@@ -287,6 +318,13 @@ pub fn simulate_with(records: &[Record], setup: &Setup, opts: &SimOptions, progr
         deviation(&mut m, e, dz, records.iter().rev().find(|r| r.op.is_thread()));
     }
     m.findings.splice(0..0, stock.findings.iter().cloned());
+    if guessed {
+        m.stock_guessed = Some(bar);
+        // A chuck found against a stock nobody gave may not be there: said with each finding.
+        for f in m.findings.iter_mut().filter(|f| f.kind == "chuck") {
+            f.message.push_str(" (against a guessed stock: give --stock DIAxLEN for the real bar and chuck)");
+        }
+    }
     Ok(Simulation { stock, measurement: m })
 }
 
@@ -351,6 +389,7 @@ fn measure(stock: &LatheStock, records: &[Record], tools: &[Tool]) -> Measuremen
         dz_mm: g.dz_mm,
         dtheta_deg: g.dtheta_deg(),
         cell_updates: stock.updates,
+        stock_guessed: None,
         ..Measurement::default()
     };
     m.findings = phase_findings(records, tools);
