@@ -115,6 +115,19 @@ impl MachineArgs {
         Ok(self.job(machine)?.prepare(program)?)
     }
 
+    /// Every file a run of `file` with these arguments may read: the programme, the setup, and
+    /// each file of the subprogramme folders. No output may be one of them.
+    fn read_files(&self, file: &str) -> Vec<String> {
+        let mut files = vec![file.to_string()];
+        files.extend(self.setup.iter().cloned());
+        for d in &self.subprogram_dirs {
+            if let Ok(entries) = std::fs::read_dir(d) {
+                files.extend(entries.filter_map(|e| e.ok()).map(|e| e.path().to_string_lossy().into_owned()));
+            }
+        }
+        files
+    }
+
     fn decoding(&self) -> Result<diag::Decoding, Failure> {
         match &self.encoding {
             None => Ok(diag::Decoding::default()),
@@ -492,7 +505,7 @@ fn expand(file: &str, m: &MachineArgs, to: &str, output: Option<&str>, out: &mut
 fn run_into(file: &str, m: &MachineArgs, mut program: Program, fmt: &mut dyn format::Format, output: Option<&str>, out: &mut dyn Write, err: &mut dyn Write) -> Result<i32, Failure> {
     let decoding = m.decoding()?;
     // Refused before anything is read; created only when there is something to write.
-    let mut file_out = output.map(|path| output::LazyFile::new(path, &[file], OUTPUT_BUFFER_BYTES)).transpose().map_err(usage)?;
+    let mut file_out = output.map(|path| output::LazyFile::new(path, &m.read_files(file), OUTPUT_BUFFER_BYTES)).transpose().map_err(usage)?;
     let input = open(file)?;
     let mut stdout_buf;
     let writer: &mut dyn Write = match file_out.as_mut() {
@@ -685,7 +698,7 @@ fn report(
     }
     let (params, switches) = setup(m, err)?;
     let decoding = m.decoding()?;
-    let file_out = output.map(|path| output::LazyFile::new(path, &[file], 1 << 16)).transpose().map_err(usage)?;
+    let file_out = output.map(|path| output::LazyFile::new(path, &m.read_files(file), 1 << 16)).transpose().map_err(usage)?;
     let opts = operator.options()?;
     let job = job_setup(setup_file, stock)?;
     let sim_options = simulate::options(None, expect).map_err(usage)?;
@@ -801,7 +814,7 @@ fn app(output: Option<&str>, out: &mut dyn Write) -> Result<i32, Failure> {
     }
     match output {
         Some(path) => {
-            let mut w = output::LazyFile::new(path, &[], 1 << 16).map_err(usage)?;
+            let mut w = output::LazyFile::new::<&str>(path, &[], 1 << 16).map_err(usage)?;
             report::write(None, &mut w)?;
             w.flush()?;
         }
@@ -829,7 +842,7 @@ fn simulate(
     let (params, switches) = setup(m, err)?;
     let decoding = m.decoding()?;
     let job = job_setup(setup_file, stock)?;
-    let image_out = image.map(|path| output::LazyFile::new(path, &[file], 1 << 16)).transpose().map_err(usage)?;
+    let image_out = image.map(|path| output::LazyFile::new(path, &m.read_files(file), 1 << 16)).transpose().map_err(usage)?;
     if image_out.is_some() && !params.profile().is_lathe() {
         return Err(usage(format!(
             "--image draws the unrolled surface of a thread on a lathe; {} is a machining centre: the drilling simulation has no image (its holes are in the text or JSON output)",

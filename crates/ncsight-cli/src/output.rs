@@ -4,27 +4,14 @@
 use std::fs::File;
 use std::io::{self, BufWriter, Write};
 
-/// Whether two paths name the same file (the same device and inode: a link, `./a.nc` and
-/// `a.nc`, or another spelling of the path all count).
+/// Whether two paths name the same file (the same device and inode, or on Windows the same
+/// volume and file index: a link, `./a.nc` and `a.nc`, or another spelling of the path all
+/// count). A path that does not exist yet is no input.
 pub fn same_file(a: &str, b: &str) -> bool {
     if a == "-" || b == "-" {
         return false;
     }
-    match (std::fs::metadata(a), std::fs::metadata(b)) {
-        (Ok(x), Ok(y)) => {
-            #[cfg(unix)]
-            {
-                use std::os::unix::fs::MetadataExt;
-                x.dev() == y.dev() && x.ino() == y.ino()
-            }
-            #[cfg(not(unix))]
-            {
-                let _ = (x, y);
-                matches!((std::fs::canonicalize(a), std::fs::canonicalize(b)), (Ok(p), Ok(q)) if p == q)
-            }
-        }
-        _ => false,
-    }
+    same_file::is_same_file(a, b).unwrap_or(false)
 }
 
 /// A file created at its first write (or at the final flush), so that a run that fails before
@@ -36,10 +23,12 @@ pub struct LazyFile {
 }
 
 impl LazyFile {
-    /// `path` for output; an error when it is one of `inputs`.
-    pub fn new(path: &str, inputs: &[&str], capacity: usize) -> Result<LazyFile, String> {
-        if let Some(i) = inputs.iter().find(|i| same_file(path, i)) {
-            return Err(format!("the output {path} is the input file {i}: refusing to overwrite the programme"));
+    /// `path` for output; an error when it is one of `inputs` (every file the run may read: the
+    /// programme, the setup, the files of the subprogramme folders), checked before anything is
+    /// written.
+    pub fn new<S: AsRef<str>>(path: &str, inputs: &[S], capacity: usize) -> Result<LazyFile, String> {
+        if let Some(i) = inputs.iter().map(AsRef::as_ref).find(|i| same_file(path, i)) {
+            return Err(format!("the output {path} is {i}, a file this run reads: refusing to overwrite it"));
         }
         Ok(LazyFile { path: path.to_string(), file: None, capacity })
     }

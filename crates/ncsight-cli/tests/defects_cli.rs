@@ -150,7 +150,7 @@ fn output_is_never_the_input() {
     ] {
         let (code, _, err) = common::ncsight(&args);
         assert_eq!(code, 2, "{args:?}");
-        assert!(err.contains("is the input file"), "{err}");
+        assert!(err.contains("a file this run reads: refusing to overwrite it"), "{err}");
         assert_eq!(std::fs::read(&p).unwrap(), src, "{args:?} changed the programme");
     }
     // A run that fails before it has anything to write leaves an existing output as it was.

@@ -54,3 +54,37 @@ fn simulate_without_stock_guesses_it_from_the_cuts_and_says_so() {
     assert_eq!(code, 3, "{out}");
     assert!(!out.contains("stock guessed") && out.contains("chuck") && !out.contains("against a guessed stock"), "{out}");
 }
+
+/// No output may be a file the run reads: a subprogramme file of `--subprogram-dir`, the setup
+/// (`-o`, `--image`, for run, expand, simulate and report alike). Refused with exit 2 before
+/// anything is written; the files stay as they were.
+#[test]
+fn outputs_never_overwrite_a_subprogramme_or_the_setup() {
+    let dir = Scratch::new("outputs");
+    let main = dir.file("main.nc", "G97 S500 M03\nG00 X40. Z2.\nM98 P1234\nM30\n");
+    std::fs::create_dir_all(dir.path("sd")).unwrap();
+    let sub_text = "O1234\nG01 X30. Z-10. F100\nM99\n";
+    let sub = dir.file("sd/O1234.nc", sub_text);
+    let setup_text = "[stock]\ndiameter_mm = 60.0\nlength_mm = 80.0\n";
+    let setup = dir.file("s.toml", setup_text);
+    let sd = dir.path("sd");
+    let cases: Vec<Vec<&str>> = vec![
+        vec!["run", &main, "-m", "gsk980tdi", "--subprogram-dir", &sd, "-o", &sub],
+        vec!["expand", &main, "-m", "gsk980tdi", "--subprogram-dir", &sd, "--to", "linuxcnc", "-o", &sub],
+        vec!["report", &main, "-m", "gsk980tdi", "--subprogram-dir", &sd, "-o", &sub],
+        vec!["run", &main, "-m", "gsk980tdi", "--subprogram-dir", &sd, "--setup", &setup, "-o", &setup],
+        vec!["simulate", &main, "-m", "gsk980tdi", "--subprogram-dir", &sd, "--setup", &setup, "--image", &setup],
+        vec!["report", &main, "-m", "gsk980tdi", "--subprogram-dir", &sd, "--setup", &setup, "-o", &setup],
+    ];
+    for args in cases {
+        let (code, _, err) = common::ncsight(&args);
+        assert_eq!(code, 2, "{args:?}: {err}");
+        assert!(err.contains("a file this run reads: refusing to overwrite it"), "{args:?}: {err}");
+        assert_eq!(std::fs::read_to_string(&sub).unwrap(), sub_text, "{args:?} changed the subprogramme");
+        assert_eq!(std::fs::read_to_string(&setup).unwrap(), setup_text, "{args:?} changed the setup");
+    }
+    // Another file in the folder is fine.
+    let other = dir.path("sd/out.txt");
+    let (code, _, err) = common::ncsight(&["run", &main, "-m", "gsk980tdi", "--subprogram-dir", &sd, "-o", &other]);
+    assert_eq!(code, 0, "{err}");
+}
