@@ -86,6 +86,9 @@ struct MachineArgs {
     /// the tool and offset tables, the stock (docs/setup.md).
     #[arg(long, value_name = "FILE.toml")]
     setup: Option<String>,
+    /// The setup file's text, read once (a named pipe gives its data once).
+    #[arg(skip)]
+    setup_text: std::sync::OnceLock<Result<String, String>>,
 }
 
 impl MachineArgs {
@@ -104,9 +107,26 @@ impl MachineArgs {
             setup: None,
         };
         if let Some(path) = &self.setup {
-            job.read_setup(path)?;
+            let text = self.setup_text()?.expect("a setup is given");
+            job.set_setup_text(text, path)?;
         }
         Ok(job)
+    }
+
+    /// The text of `--setup`, read once and at most ncsight_io's bound, however many times it
+    /// is asked for.
+    fn setup_text(&self) -> Result<Option<&str>, Failure> {
+        let Some(path) = &self.setup else { return Ok(None) };
+        let read = self.setup_text.get_or_init(|| {
+            ncsight_io::read_setup_file(path).map_err(|e| match e {
+                ncsight_io::JobError::Usage(m) => m,
+                ncsight_io::JobError::Io(e) => format!("cannot read {path}: {e}"),
+            })
+        });
+        match read {
+            Ok(text) => Ok(Some(text.as_str())),
+            Err(m) => Err(usage(m.clone())),
+        }
     }
 
     /// The run's calls and variables as the arguments give them, set on `program`.
@@ -334,10 +354,10 @@ pub fn main_with(args: impl IntoIterator<Item = std::ffi::OsString>, out: &mut d
         Command::Expand { file, machine, to, output } => expand(&file, &machine, &to, output.as_deref(), out, err),
         Command::Machines { machine } => machines(machine.as_deref(), out),
         Command::Simulate { file, machine, stock, expect, format, image, resolution } => {
-            simulate(&file, &machine, machine.setup.as_deref(), stock.as_deref(), expect.as_deref(), &format, image.as_deref(), resolution.as_deref(), out, err)
+            simulate(&file, &machine, stock.as_deref(), expect.as_deref(), &format, image.as_deref(), resolution.as_deref(), out, err)
         }
         Command::Report { file, machine, operator, stock, expect, output } => {
-            report(&file, &machine, &operator, machine.setup.as_deref(), stock.as_deref(), expect.as_deref(), output.as_deref(), out, err)
+            report(&file, &machine, &operator, stock.as_deref(), expect.as_deref(), output.as_deref(), out, err)
         }
         Command::App { output } => app(output.as_deref(), out),
         Command::Repair { machine, start, end, lead, tpi, rpm, measured, j, k } => {
@@ -408,8 +428,7 @@ fn open(file: &str) -> Result<feed::Input, Failure> {
     if std::fs::metadata(file).is_ok_and(|m| m.is_dir()) {
         return Err(usage(format!("cannot read {file}: it is a directory, not a programme file")));
     }
-    std::fs::File::open(file).map_err(|e| usage(format!("cannot read {file}: {e}")))?;
-    Ok(feed::Input::File(file.into()))
+    feed::Input::open(std::path::Path::new(file)).map_err(|e| usage(format!("cannot read {file}: {e}")))
 }
 
 /// [`feed::drive`] with an error in reading the input named by its file.
@@ -511,7 +530,10 @@ fn run_into(file: &str, m: &MachineArgs, mut program: Program, fmt: &mut dyn for
     let writer: &mut dyn Write = match file_out.as_mut() {
         Some(f) => f,
         None => {
-            stdout_buf = Tolerant::new(io::BufWriter::with_capacity(OUTPUT_BUFFER_BYTES, Tolerant::new(out)));
+            // The output is what `run` and `expand` are for: when its reader goes away
+            // (`ncsight run big.nc | head`), the first failed write stops the run (exit 0, as
+            // any cut pipe: docs/commands/run.md).
+            stdout_buf = io::BufWriter::with_capacity(OUTPUT_BUFFER_BYTES, out);
             &mut stdout_buf
         }
     };
@@ -667,13 +689,10 @@ fn setup_notes(setup: Option<(&str, &ncsight::stock::Setup)>, profile: &ncsight:
 }
 
 /// The job setup from `--setup` and `--stock`.
-fn job_setup(setup_file: Option<&str>, stock: Option<&str>) -> Result<ncsight::stock::Setup, Failure> {
-    let mut job = match setup_file {
-        Some(path) => {
-            let text = std::fs::read_to_string(path).map_err(|e| usage(format!("cannot read {path}: {e}")))?;
-            ncsight::stock::Setup::from_toml(&text).map_err(|e| usage(format!("{path}: {e}")))?
-        }
-        None => ncsight::stock::Setup::default(),
+fn job_setup(m: &MachineArgs, stock: Option<&str>) -> Result<ncsight::stock::Setup, Failure> {
+    let mut job = match (m.setup.as_deref(), m.setup_text()?) {
+        (Some(path), Some(text)) => ncsight::stock::Setup::from_toml(text).map_err(|e| usage(format!("{path}: {}", ncsight_io::clip_lines(&e.to_string()))))?,
+        _ => ncsight::stock::Setup::default(),
     };
     if let Some(s) = stock {
         job.stock = Some(ncsight::stock::Setup::parse_stock(s).map_err(|e| usage(e.to_string()))?);
@@ -686,7 +705,6 @@ fn report(
     file: &str,
     m: &MachineArgs,
     operator: &OperatorArgs,
-    setup_file: Option<&str>,
     stock: Option<&str>,
     expect: Option<&str>,
     output: Option<&str>,
@@ -700,7 +718,7 @@ fn report(
     let decoding = m.decoding()?;
     let file_out = output.map(|path| output::LazyFile::new(path, &m.read_files(file), 1 << 16)).transpose().map_err(usage)?;
     let opts = operator.options()?;
-    let job = job_setup(setup_file, stock)?;
+    let job = job_setup(m, stock)?;
     let sim_options = simulate::options(None, expect).map_err(usage)?;
     let source = if file == "-" {
         let mut v = Vec::new();
@@ -756,7 +774,7 @@ fn report(
         text: editor_text(&source, &decoding),
         machine: params.profile().name,
         params: &m.params,
-        setup: m.setup.as_deref().map(std::fs::read_to_string).transpose().map_err(|e| usage(format!("cannot read the setup: {e}")))?,
+        setup: m.setup_text()?.map(str::to_string),
         options: &opts,
         switches,
         extra_options: extra,
@@ -827,7 +845,6 @@ fn app(output: Option<&str>, out: &mut dyn Write) -> Result<i32, Failure> {
 fn simulate(
     file: &str,
     m: &MachineArgs,
-    setup_file: Option<&str>,
     stock: Option<&str>,
     expect: Option<&str>,
     format: &str,
@@ -841,7 +858,7 @@ fn simulate(
     }
     let (params, switches) = setup(m, err)?;
     let decoding = m.decoding()?;
-    let job = job_setup(setup_file, stock)?;
+    let job = job_setup(m, stock)?;
     let image_out = image.map(|path| output::LazyFile::new(path, &m.read_files(file), 1 << 16)).transpose().map_err(usage)?;
     if image_out.is_some() && !params.profile().is_lathe() {
         return Err(usage(format!(

@@ -88,3 +88,111 @@ fn outputs_never_overwrite_a_subprogramme_or_the_setup() {
     let (code, _, err) = common::ncsight(&["run", &main, "-m", "gsk980tdi", "--subprogram-dir", &sd, "-o", &other]);
     assert_eq!(code, 0, "{err}");
 }
+
+/// A reader that goes away at once, as `head -c 0` does.
+struct CutPipe;
+
+impl std::io::Write for CutPipe {
+    fn write(&mut self, _: &[u8]) -> std::io::Result<usize> {
+        Err(std::io::Error::new(std::io::ErrorKind::BrokenPipe, "the reader went away"))
+    }
+    fn flush(&mut self) -> std::io::Result<()> {
+        Err(std::io::Error::new(std::io::ErrorKind::BrokenPipe, "the reader went away"))
+    }
+}
+
+/// `ncsight run big.nc | head`: the first failed write stops `run` and `expand` (exit 0, as for
+/// any cut pipe), instead of computing the whole programme for nobody. The programme's alarm at
+/// its end is never reached, so it is not reported; `check` (whose status is the point) still
+/// runs to the end.
+#[test]
+fn a_cut_output_pipe_stops_run_and_expand() {
+    let dir = Scratch::new("pipe");
+    let mut text = String::from("G21 G17 G90 G0 X0 Y0 Z10.\n");
+    for _ in 0..2000 {
+        text.push_str("G91 G81 X1. Y0 Z-1. R1. F100 K10\n");
+    }
+    text.push_str("G90 G02 X0 Y0 R0.1\nM30\n");
+    let f = dir.file("k.nc", &text);
+    for args in [vec!["run", f.as_str(), "-m", "fanuc0m", "--format", "canon"], vec!["expand", f.as_str(), "-m", "fanuc0m", "--to", "grbl"], vec!["check", f.as_str(), "-m", "fanuc0m"]] {
+        let mut err = Vec::new();
+        let argv = std::iter::once("ncsight").chain(args.iter().copied()).map(std::ffi::OsString::from);
+        let code = ncsight_cli::main_with(argv, &mut CutPipe, &mut err);
+        let err = String::from_utf8_lossy(&err);
+        if args[0] == "check" {
+            assert_eq!(code, 1, "check runs to its end and reports the alarm: {err}");
+        } else {
+            assert_eq!(code, 0, "{args:?}: {err}");
+            assert!(!err.contains("alarm"), "{args:?} ran on after the pipe was cut: {err}");
+        }
+    }
+}
+
+/// A named pipe as the programme or the setup is read once: `check`, `run`, `expand`,
+/// `simulate` and `report` return with the writer's data (they used to open the file twice and
+/// wait for a second writer for ever).
+#[cfg(unix)]
+#[test]
+fn a_named_pipe_is_read_once() {
+    use std::io::Write;
+    let dir = Scratch::new("fifo");
+    let fifo = |name: &str| {
+        let p = dir.path(name);
+        assert!(std::process::Command::new("mkfifo").arg(&p).status().unwrap().success());
+        p
+    };
+    let exe = env!("CARGO_BIN_EXE_ncsight");
+    let feed = |path: String, text: &'static str| std::thread::spawn(move || std::fs::File::options().write(true).open(path).unwrap().write_all(text.as_bytes()).unwrap());
+    let programme = "G97 S500 M03\nG0 X40. Z2.\nG1 X38. F0.2\nZ-10.\nM30\n";
+    for cmd in [&["check"][..], &["run"], &["expand", "--to", "linuxcnc"], &["simulate", "--stock", "40x20"]] {
+        let p = fifo(&format!("p{}", cmd[0]));
+        let writer = feed(p.clone(), programme);
+        let mut c = std::process::Command::new(exe);
+        c.arg(cmd[0]).arg(&p).args(["-m", "gsk980tdi"]).args(&cmd[1..]);
+        let mut child = c.stdout(std::process::Stdio::null()).stderr(std::process::Stdio::piped()).spawn().unwrap();
+        let status = wait_at_most(&mut child, 20);
+        writer.join().unwrap();
+        assert_eq!(status, Some(0), "{cmd:?} did not return with 0 from a named pipe");
+    }
+    let s = fifo("s.toml");
+    let writer = feed(s.clone(), "[stock]\ndiameter_mm = 40.0\nlength_mm = 20.0\n");
+    let main = dir.file("m.nc", programme);
+    let mut child = std::process::Command::new(exe).args(["simulate", &main, "-m", "gsk980tdi", "--setup", &s]).stdout(std::process::Stdio::null()).spawn().unwrap();
+    let status = wait_at_most(&mut child, 20);
+    writer.join().unwrap();
+    assert_eq!(status, Some(0), "--setup from a named pipe");
+}
+
+/// The exit status of a child, or None (and the child killed) after `secs` seconds: a hang is
+/// a failure, not a stuck test.
+fn wait_at_most(child: &mut std::process::Child, secs: u64) -> Option<i32> {
+    let until = std::time::Instant::now() + std::time::Duration::from_secs(secs);
+    while std::time::Instant::now() < until {
+        if let Some(s) = child.try_wait().unwrap() {
+            return s.code();
+        }
+        std::thread::sleep(std::time::Duration::from_millis(20));
+    }
+    let _ = child.kill();
+    let _ = child.wait();
+    None
+}
+
+/// The setup file is bounded: `--setup /dev/zero` is refused with the size, instead of growing
+/// until memory runs out; a parse error quotes a long line cut short.
+#[test]
+fn the_setup_file_is_bounded_and_long_lines_are_cut() {
+    let dir = Scratch::new("setup-size");
+    let main = dir.file("m.nc", "G0 X40. Z2.\nM30\n");
+    if cfg!(unix) {
+        let (code, _, err) = common::ncsight(&["run", &main, "-m", "gsk980tdi", "--setup", "/dev/zero"]);
+        assert_eq!(code, 2);
+        assert!(err.contains("a setup file holds at most 16 MiB (16777216 bytes); this one holds 16777217 bytes or more"), "{err}");
+    }
+    let long = format!("[stock]\ndiameter_mm = {}\n", "9".repeat(100_000));
+    let s = dir.file("long.toml", &long);
+    let (code, _, err) = common::ncsight(&["run", &main, "-m", "gsk980tdi", "--setup", &s]);
+    assert_eq!(code, 2);
+    assert!(err.len() < 5_000, "{} bytes of message", err.len());
+    assert!(err.contains("more characters)"), "{err}");
+}

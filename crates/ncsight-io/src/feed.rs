@@ -31,6 +31,18 @@ pub enum Input {
 }
 
 impl Input {
+    /// A programme file, opened once here. A named pipe or a device gives its data once, so it
+    /// is read from this opening as a stream (a jump back is then refused with a clear error);
+    /// a regular file is opened again by the reader, which reads it ahead and again after a
+    /// jump back.
+    pub fn open(path: &std::path::Path) -> io::Result<Input> {
+        let f = std::fs::File::open(path)?;
+        if f.metadata().is_ok_and(|m| !m.is_file()) {
+            return Ok(Input::Stream(Box::new(io::BufReader::with_capacity(1 << 16, f))));
+        }
+        Ok(Input::File(path.to_path_buf()))
+    }
+
     /// The stream the reading thread reads, and what the page cache reads a jump from.
     fn split(self) -> io::Result<(Box<dyn BufRead + Send>, Source)> {
         Ok(match self {

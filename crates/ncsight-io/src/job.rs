@@ -135,13 +135,16 @@ impl Job {
 
     /// Read the setup file at `path` (TOML) into the job.
     pub fn read_setup(&mut self, path: &str) -> Result<(), JobError> {
-        let text = std::fs::read_to_string(path).map_err(|e| usage(format!("cannot read {path}: {e}")))?;
+        let text = read_setup_file(path)?;
         self.set_setup_text(&text, path)
     }
 
     /// The setup from its TOML text; `name` says where it came from in a message.
     pub fn set_setup_text(&mut self, text: &str, name: &str) -> Result<(), JobError> {
-        self.setup = Some(ncsight::setup::Setup::from_toml(text).map_err(|e| usage(format!("{name}: {e}")))?);
+        if text.len() as u64 > MAX_SETUP_BYTES {
+            return Err(too_large(name, text.len() as u64));
+        }
+        self.setup = Some(ncsight::setup::Setup::from_toml(text).map_err(|e| usage(format!("{name}: {}", clip_lines(&e.to_string()))))?);
         Ok(())
     }
 
@@ -259,5 +262,58 @@ impl JsonlWriter<'_> {
             }
             (Mode::Check, Event::Record(_)) => Ok(()),
         }
+    }
+}
+
+/// The most a setup file may hold. A setup is a few kB; this bound keeps `--setup /dev/zero` or a
+/// runaway file from filling the memory.
+pub const MAX_SETUP_BYTES: u64 = 16 << 20;
+
+/// The longest line of a message quoted from a file: a parse error that quotes a 10 MB line
+/// shows its start.
+pub const MAX_MESSAGE_LINE_CHARS: usize = 200;
+
+fn too_large(name: &str, at_least: u64) -> JobError {
+    usage(format!("{name}: a setup file holds at most {} MiB ({MAX_SETUP_BYTES} bytes); this one holds {at_least} bytes or more (a setup is a few kB)", MAX_SETUP_BYTES >> 20))
+}
+
+/// The text of the setup file at `path`, read once (a named pipe gives its data once), at most
+/// [`MAX_SETUP_BYTES`].
+pub fn read_setup_file(path: &str) -> Result<String, JobError> {
+    use std::io::Read;
+    let f = std::fs::File::open(path).map_err(|e| usage(format!("cannot read {path}: {e}")))?;
+    let mut bytes = Vec::new();
+    f.take(MAX_SETUP_BYTES + 1).read_to_end(&mut bytes).map_err(|e| usage(format!("cannot read {path}: {e}")))?;
+    if bytes.len() as u64 > MAX_SETUP_BYTES {
+        return Err(too_large(path, bytes.len() as u64));
+    }
+    String::from_utf8(bytes).map_err(|e| usage(format!("{path}: the setup is not UTF-8 text (byte {} is not)", e.utf8_error().valid_up_to())))
+}
+
+/// Each line of a message cut to [`MAX_MESSAGE_LINE_CHARS`] characters, with how much was left out.
+pub fn clip_lines(message: &str) -> String {
+    let mut out = String::with_capacity(message.len().min(4096));
+    for (i, line) in message.lines().enumerate() {
+        if i > 0 {
+            out.push('\n');
+        }
+        let chars = line.chars().count();
+        if chars > MAX_MESSAGE_LINE_CHARS {
+            out.extend(line.chars().take(MAX_MESSAGE_LINE_CHARS));
+            out.push_str(&format!("... ({} more characters)", chars - MAX_MESSAGE_LINE_CHARS));
+        } else {
+            out.push_str(line);
+        }
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn long_lines_are_clipped() {
+        let long = "x".repeat(1000);
+        let m = super::clip_lines(&format!("first\n{long}\nlast"));
+        assert_eq!(m, format!("first\n{}... (800 more characters)\nlast", "x".repeat(200)));
     }
 }

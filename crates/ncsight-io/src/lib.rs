@@ -7,4 +7,4 @@ pub mod feed;
 pub mod format;
 mod job;
 
-pub use job::{check_operator, machine_names, Job, JobError, JsonlWriter};
+pub use job::{check_operator, clip_lines, machine_names, read_setup_file, Job, JobError, JsonlWriter, MAX_SETUP_BYTES};

@@ -79,14 +79,15 @@ fn mode_of(mode: &str) -> PyResult<Mode> {
 /// What a programme comes from: its text (str or bytes), or a file read as it runs.
 enum Source {
     Text(Vec<u8>),
-    File(PathBuf),
+    /// A file opened once (a named pipe is read from that opening).
+    File(Input),
 }
 
 impl Source {
     fn input(self) -> Input {
         match self {
             Source::Text(t) => Input::Memory(Arc::new(t)),
-            Source::File(p) => Input::File(p),
+            Source::File(input) => input,
         }
     }
 }
@@ -109,8 +110,8 @@ fn source(text: Option<&Bound<'_, PyAny>>, path: Option<PathBuf>) -> PyResult<So
             if p.is_dir() {
                 return Err(PyValueError::new_err(format!("cannot read {}: it is a directory, not a programme file", p.display())));
             }
-            std::fs::File::open(&p).map_err(|e| PyValueError::new_err(format!("cannot read {}: {e}", p.display())))?;
-            Ok(Source::File(p))
+            let input = Input::open(&p).map_err(|e| PyValueError::new_err(format!("cannot read {}: {e}", p.display())))?;
+            Ok(Source::File(input))
         }
         _ => Err(PyValueError::new_err("give the programme's text or its path, not both")),
     }
