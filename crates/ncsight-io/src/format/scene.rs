@@ -20,7 +20,8 @@
 //! hole_kind u8 x h   index into the header's `hole_kinds`
 //! ```
 //!
-//! The header holds `n` (`segments`), `h` (`holes`) and what is not per motion: the profile,
+//! The header holds `n` (`segments`), `h` (`holes`), `cut` (the run was cut at
+//! [`MAX_SCENE_RECORDS`]) and what is not per motion: the profile,
 //! the diagnostics (at most [`MAX_DIAGNOSTICS`], `diagnostics_total` says how many there were),
 //! the other records (spindle, tool, stop, dwell, rotary turn, end) with their line and time, and
 //! the threads' spindle angle, speed and pass.
@@ -34,6 +35,12 @@ use std::fmt::Write as _;
 
 /// Diagnostics the header lists; a programme with more says how many in all.
 pub const MAX_DIAGNOSTICS: usize = 10_000;
+
+/// Records (motions and the others) a scene holds at most: about 120 MB in the page's engine.
+/// A legal programme may make far more (`G81 ... K9999` on a thousand lines: 40 million holes);
+/// the scene then ends there, its header says `"cut":true`, and the page says that it shows the
+/// programme up to that point (the command line runs all of it).
+pub const MAX_SCENE_RECORDS: usize = 2_000_000;
 
 #[derive(Default)]
 struct Columns {
@@ -53,6 +60,11 @@ struct Columns {
 /// a programme the text calls but lacks is looked for in `library` (file name, text), by the
 /// programme numbers each holds.
 pub fn scene(job: &Job, text: &[u8], library: Vec<(String, &[u8])>) -> Result<Vec<u8>, JobError> {
+    scene_of_at_most(job, text, library, MAX_SCENE_RECORDS)
+}
+
+/// [`scene`], cut after `max_records` records.
+fn scene_of_at_most(job: &Job, text: &[u8], library: Vec<(String, &[u8])>, max_records: usize) -> Result<Vec<u8>, JobError> {
     let profile = job.profile()?;
     let (program, _) = job.program(Mode::Run)?;
     let mut events = ncsight::events_with_library(program, text, library);
@@ -64,11 +76,18 @@ pub fn scene(job: &Job, text: &[u8], library: Vec<(String, &[u8])>) -> Result<Ve
     let mut tool = 0u16;
     let mut pass = 0u32;
     let mut prev_thread_end = None;
-    // A hole is marked once, at its first feed; the hole ends with its block end.
+    // A hole is marked once, at its first feed, then moved to the deepest point its feeds reach
+    // (a peck hole's bottom, not its first peck); the hole ends with its block end.
     let mut in_hole = false;
+    let (mut hole_start, mut hole_reach) = (ncsight::Vec3::default(), 0.0f64);
+    let mut cut = false;
     let mut t_before = 0.0;
     let mut total_s = 0.0f64;
     while let Some(e) = events.next() {
+        if c.kind.len() + others.len() >= max_records {
+            cut = true;
+            break;
+        }
         let r = match e {
             Event::Diagnostic(d) => {
                 diagnostics_total += 1;
@@ -159,8 +178,17 @@ pub fn scene(job: &Job, text: &[u8], library: Vec<(String, &[u8])>) -> Result<Ve
         }
         // The drilling cycle in force marks its holes (the interpreter's state after the block).
         let drilling = events.program().interpreter().state().drill.kind;
-        if let (Some(k), false, 1) = (drilling, in_hole, kind & 7) {
+        if let (Some(_), true, 1) = (drilling, in_hole, kind & 7) {
+            let reach = hole_start.dist(&to);
+            if reach > hole_reach {
+                hole_reach = reach;
+                let at = c.hole_at.len() - 3;
+                c.hole_at[at..].copy_from_slice(&[to.x as f32, to.y as f32, to.z as f32]);
+                *c.hole_seg.last_mut().expect("a hole is open") = i;
+            }
+        } else if let (Some(k), false, 1) = (drilling, in_hole, kind & 7) {
             in_hole = true;
+            (hole_start, hole_reach) = (from, from.dist(&to));
             let code = k.code();
             let idx = hole_kinds.iter().position(|x| *x == code).unwrap_or_else(|| {
                 hole_kinds.push(code);
@@ -187,7 +215,7 @@ pub fn scene(job: &Job, text: &[u8], library: Vec<(String, &[u8])>) -> Result<Ve
     };
     let _ = write!(
         head,
-        "{{\"machine\":{},\"title\":{},\"lathe\":{},\"status\":\"{status}\",\"total_s\":{},\"segments\":{},\"holes\":{},\"hole_kinds\":[{}],\"diagnostics_total\":{diagnostics_total},\"alarms_total\":{alarms_total},\"diagnostics\":[{}],\"events\":[{}],\"threads\":[{}],\"passes\":{pass},\"params\":[{}]}}",
+        "{{\"machine\":{},\"title\":{},\"lathe\":{},\"status\":\"{status}\",\"cut\":{cut},\"total_s\":{},\"segments\":{},\"holes\":{},\"hole_kinds\":[{}],\"diagnostics_total\":{diagnostics_total},\"alarms_total\":{alarms_total},\"diagnostics\":[{}],\"events\":[{}],\"threads\":[{}],\"passes\":{pass},\"params\":[{}]}}",
         json_str(profile.name),
         json_str(profile.title),
         profile.is_lathe(),
@@ -301,6 +329,36 @@ mod tests {
         job.set_setup_text("[machine]\naxes = [\"X\", \"Y\", \"Z\", \"A\"]\n", "s.toml").unwrap();
         let h = head(&scene(&job, b"G91 G00 A45.\nM30\n", Vec::new()).unwrap());
         assert!(h.contains(r#"{"k":"rotary","axis":"A","deg":45,"s":0.35,"l":1"#), "{h}");
+    }
+
+    /// The holes' (f32) X Y Z from a scene.
+    fn holes(b: &[u8]) -> Vec<f32> {
+        let h = head(b);
+        let field = |name: &str| -> usize { h.split(&format!("\"{name}\":")).nth(1).unwrap().split([',', '}']).next().unwrap().parse().unwrap() };
+        let (n, holes) = (field("segments"), field("holes"));
+        let j = u32::from_le_bytes(b[4..8].try_into().unwrap()) as usize;
+        let at = ((8 + j).div_ceil(8) * 8 + n * (8 + 24 + 16 + 4 + 4 + 2 + 1)).div_ceil(4) * 4;
+        (0..3 * holes).map(|i| f32::from_le_bytes(b[at + 4 * i..at + 4 * i + 4].try_into().unwrap())).collect()
+    }
+
+    /// A peck hole is marked at its bottom (Z-30), not at the end of its first peck (Z-3): the
+    /// page's side views and its scene say "each hole's bottom".
+    #[test]
+    fn a_peck_hole_is_marked_at_its_bottom() {
+        let text = b"G21 G17 G90 G00 X0 Y0 Z10.\nG99 G83 X10. Y5. Z-30. R2. Q3. F100.\nG73 X20. Z-12. Q4.\nG80\nM30\n";
+        assert_eq!(holes(&scene(&Job::on("fanuc0m"), text, Vec::new()).unwrap()), [10.0, 5.0, -30.0, 20.0, 5.0, -12.0]);
+    }
+
+    /// A scene holds at most so many records: a legal programme that makes more (40 million
+    /// holes) is cut there and says so, instead of filling the page's memory.
+    #[test]
+    fn a_scene_is_cut_at_its_bound() {
+        let text = b"G21 G17 G90 G00 X0 Y0 Z10.\nG91 G99 G81 X1. Z-3. R-8. F100. K9999\nG90 G80\nM30\n";
+        let b = scene_of_at_most(&Job::on("fanuc0m"), text, Vec::new(), 1000).unwrap();
+        let h = head(&b);
+        assert!(h.contains("\"cut\":true") && h.contains("\"segments\":1000"), "{h}");
+        let whole = scene(&Job::on("fanuc0m"), b"G21 G90 G00 X0 Y0 Z10.\nM30\n", Vec::new()).unwrap();
+        assert!(head(&whole).contains("\"cut\":false"));
     }
 
     /// A check lists every alarm, where a run stops at the first.
