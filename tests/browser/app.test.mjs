@@ -49,7 +49,12 @@ async function open(file, options = {}) {
   const shownMs = Math.round((await page.evaluate(() => window.ncsightApp.firstPathMs)) || Date.now() - t0);
   return { page, context, requests, dialogs, errors, shownMs };
 }
-const app = (page, f, arg) => page.evaluate(f, arg);
+/** Evaluate `f` in the page once every run started so far is shown: the engine runs in a Web
+ * Worker, so a change (a key, a switch) shows a moment later. */
+const app = async (page, f, arg) => {
+  await page.evaluate(() => window.ncsightApp.settled());
+  return page.evaluate(f, arg);
+};
 /** Wait until `f` holds in the page (polled: the page's policy forbids the evaluated strings
  * waitForFunction uses). */
 async function until(page, f, arg, ms = 15000) {
@@ -66,13 +71,13 @@ async function shot(page, name, selector) {
   return decodePng(readFileSync(path));
 }
 /** The quickest of three zoom steps and of three player steps (block by block), in ms. */
-const stepTimes = (page) => page.evaluate(() => {
+const stepTimes = async (page) => (await page.evaluate(() => window.ncsightApp.settled()), page.evaluate(() => {
   const a = window.ncsightApp, time = (f) => { const t0 = performance.now(); f(); return performance.now() - t0; };
   const zoom = Math.min(time(() => a.zoom(1.25)), time(() => a.zoom(1.25)), time(() => a.zoom(0.8)));
   a.setTime(a.scene.head.total_s / 2);
   const step = Math.min(time(() => a.stepBlock(1)), time(() => a.stepBlock(1)), time(() => a.stepBlock(-1)));
   return { zoom, step };
-});
+}));
 const o0012 = readFileSync(join(root, "examples/gsk980tdi_o0012.nc"), "utf8");
 
 before(async () => {
@@ -120,7 +125,9 @@ test("ncsight app: choose the controller, paste O0012, four passes; F0 is an ala
   await app(page, (t) => window.ncsightApp.setTime(t), dwellAt);
   assert.equal(await app(page, () => window.ncsightApp.runLine), 2);
   assert.match(await page.textContent("#state"), /dwell/);
-  assert.deepEqual(requests.filter((u) => !u.startsWith("file://") && !u.startsWith("data:")), []);
+  // Nothing goes to the network: the page's own file, data: images and the engine's worker
+  // (a blob: URL the page makes from its own script).
+  assert.deepEqual(requests.filter((u) => !u.startsWith("file://") && !u.startsWith("data:") && !u.startsWith("blob:null/")), []);
   await context.close();
 });
 
@@ -479,5 +486,55 @@ test("1,000,000 moves: the path within 5 s, zoom and player steps under 100 ms",
   const steps = await stepTimes(page);
   console.log(`1,000,000 moves: zoom step ${steps.zoom.toFixed(1)} ms, player step ${steps.step.toFixed(1)} ms`);
   assert.ok(steps.zoom < 100 && steps.step < 100, `zoom step ${steps.zoom} ms, player step ${steps.step} ms`);
+  await context.close();
+});
+
+/** The longest time the page's own thread did not answer, in ms, while `during` runs: a timer
+ * every 10 ms notes the largest gap between its ticks. */
+async function longestFreezeMs(page, during) {
+  await page.evaluate(() => {
+    window.__gap = 0;
+    let last = performance.now();
+    window.__ticker = setInterval(() => { const now = performance.now(); window.__gap = Math.max(window.__gap, now - last); last = now; }, 10);
+  });
+  await during();
+  return page.evaluate(() => { clearInterval(window.__ticker); return window.__gap; });
+}
+
+test("the engine runs beside the page: a runaway loop never freezes it, and a new text cancels the run", async () => {
+  const file = join(work, "app-worker.html");
+  ncsight(["app", "-o", file]);
+  const { page, context, errors } = await open(file);
+  await page.selectOption("#machine", "fanuc0m");
+  // A loop without end: the runaway guard stops it after many blocks (seconds of work).
+  const runaway = "G21 G90 G00 X0 Y0 Z10.\n#1 = 0\nWHILE [#1 GE 0] DO 1\n#1 = #1 + 1\nEND 1\nM30\n";
+  const gap = await longestFreezeMs(page, async () => {
+    await page.fill("#text", runaway);
+    await until(page, () => window.ncsightApp.scene && window.ncsightApp.scene.head.status === "alarm", undefined, 120000);
+  });
+  console.log(`# a runaway loop: the page's longest frozen interval ${Math.round(gap)} ms`);
+  assert.ok(gap < 1000, `the page froze for ${Math.round(gap)} ms`);
+  assert.match(await page.textContent("#problems"), /NCS-E63/);
+  // Typing while a long run is under way: the run is dropped, the new text is shown.
+  await page.fill("#text", runaway);
+  await page.fill("#text", "G21 G90 G00 X0 Y0 Z10.\nG01 X20. F100.\nM30\n");
+  await until(page, () => window.ncsightApp.scene && window.ncsightApp.scene.head.status === "ended" && window.ncsightApp.scene.n === 2);
+  assert.deepEqual(errors, []);
+  await context.close();
+});
+
+test("40 million holes from a 10 kB programme: the page shows the first two million records and says so, and never traps", async () => {
+  const lines = ["G21 G17 G90 G00 X0 Y0 Z10."];
+  for (let i = 0; i < 1000; i++) lines.push("G91 G99 G81 X0.01 Z-3. R-8. F1000. K9999");
+  lines.push("G90 G80", "M30", "");
+  const prog = join(work, "k9999.nc");
+  writeFileSync(prog, lines.join("\n"));
+  const { page, context, errors } = await open(report(prog, "fanuc0m"));
+  await until(page, () => window.ncsightApp.scene && window.ncsightApp.scene.head.cut, undefined, 120000);
+  const n = await page.evaluate(() => window.ncsightApp.scene.n + window.ncsightApp.scene.head.events.length);
+  assert.equal(n, 2000000);
+  assert.match(await page.textContent("#banner"), /shows the programme's first 2,000,000 records/);
+  assert.doesNotMatch(await page.textContent("#banner"), /engine error|unreachable/);
+  assert.deepEqual(errors, []);
   await context.close();
 });

@@ -138,7 +138,7 @@ pub fn write(preload: Option<&Preload>, w: &mut dyn Write) -> io::Result<()> {
         w,
         "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n\
          <meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n\
-         <meta http-equiv=\"Content-Security-Policy\" content=\"default-src 'none'; img-src data:; style-src 'unsafe-inline'; script-src 'unsafe-inline' 'wasm-unsafe-eval'\">\n\
+         <meta http-equiv=\"Content-Security-Policy\" content=\"default-src 'none'; img-src data:; style-src 'unsafe-inline'; script-src 'unsafe-inline' 'wasm-unsafe-eval'; worker-src blob:\">\n\
          <title>{title}</title>\n<style>{}</style></head>\n<body>\n{}\n\
          <script type=\"application/json\" id=\"ncsight-job\">{}</script>\n<script type=\"application/octet-stream\" id=\"ncsight-engine\">",
         include_str!("app/style.css"),

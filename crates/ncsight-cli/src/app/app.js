@@ -93,6 +93,7 @@
     stockguess: ["stock from the programme (type DIAxLEN to set)", "按程序估计的毛坯（输入 直径x长度 设定）"],
     part: ["part", "工件"],
     notrun: ["Not run: the text is larger than auto-run allows; press Run.", "未运行：程序太大，不自动运行；请按“运行”。"],
+    cut: ["The page shows the programme's first {n} records; it goes on beyond them (ncsight run on the command line runs all of it).", "页面只显示程序的前 {n} 条记录，程序在此之后还有（用命令行 ncsight run 可运行全部）。"],
     passes: ["Thread passes, unrolled", "螺纹走刀展开图"],
     passes_axis: ["spindle angle at the tool's point, down; each pass in its colour (a pass out of phase shows as its own line)", "纵向为刀尖处的主轴角度；每刀一种颜色（相位不对的一刀自成一条线）"],
     pass: ["pass {n}", "第 {n} 刀"],
@@ -133,7 +134,6 @@
   }
 
   // ---- the engine -------------------------------------------------------------------------
-  let engine = null;
   const enc = new TextEncoder();
   function compileEngine() {
     try {
@@ -147,10 +147,56 @@
       return Promise.reject(e);
     }
   }
-  /** A fresh instance of the engine (again after a trap: its memory is then not to be trusted). */
-  async function loadEngine() {
-    const instance = await WebAssembly.instantiate(await compiled, {});
-    engine = instance.exports;
+  /** The engine runs in a Web Worker of its own, so the page stays responsive however long a
+   * run takes; a newer run ends the one in flight (the worker is stopped and a new one started).
+   * The worker is made from this function's text (a blob: URL, allowed by the page's policy). */
+  function engineWorker() {
+    let E = null;
+    self.onmessage = async (m) => {
+      const { id, module, name, bufs } = m.data;
+      try {
+        if (!E) E = (await WebAssembly.instantiate(module, {})).exports;
+        // Pointers come back as signed 32-bit numbers: >>> 0 reads those above 2 GB right.
+        const ptrs = bufs.map((b) => { const p = E.ncsight_alloc(b.length) >>> 0; new Uint8Array(E.memory.buffer, p, b.length).set(b); return p; });
+        const args = [];
+        ptrs.forEach((p, i) => args.push(p, bufs[i].length));
+        const at = E[name](...args) >>> 0;
+        const len = new DataView(E.memory.buffer).getUint32(at, true);
+        // A copy: the columns' typed arrays need offsets aligned from the buffer's start.
+        const out = E.memory.buffer.slice(at + 4, at + 4 + len);
+        E.ncsight_free(at, 4 + len);
+        ptrs.forEach((p, i) => E.ncsight_free(p, bufs[i].length));
+        self.postMessage({ id, out }, [out]);
+      } catch (e) {
+        // A trap: the instance's memory is not to be trusted any more; the next call makes a new one.
+        E = null;
+        self.postMessage({ id, error: String((e && e.message) || e) });
+      }
+    };
+  }
+  const CANCELLED = new Error("cancelled by a newer run");
+  let worker = null, nextCall = 0;
+  const pending = new Map();
+  function startWorker() {
+    const url = URL.createObjectURL(new Blob(["(" + engineWorker.toString() + ")()"], { type: "text/javascript" }));
+    worker = new Worker(url);
+    URL.revokeObjectURL(url);
+    worker.onmessage = (m) => {
+      const call = pending.get(m.data.id);
+      if (!call) return;
+      pending.delete(m.data.id);
+      if (m.data.error !== undefined) call.reject(new Error(m.data.error)); else call.resolve(m.data.out);
+    };
+    worker.onerror = (e) => { const calls = [...pending.values()]; pending.clear(); stopWorker(); calls.forEach((c) => c.reject(new Error(e.message || "the engine's worker failed"))); };
+  }
+  function stopWorker() { if (worker) worker.terminate(); worker = null; }
+  /** A run still in flight is ended (its answer would be for an older text). */
+  function cancelEngine() {
+    if (!pending.size) return;
+    stopWorker();
+    const calls = [...pending.values()];
+    pending.clear();
+    calls.forEach((c) => c.reject(CANCELLED));
   }
   /** The files where called programmes are looked for, as the engine takes them: a u32 length
    * and the name, a u32 length and the text, for each. */
@@ -164,20 +210,17 @@
     parts.forEach((b) => { out.set(b, at); at += b.length; });
     return (libraryCache = out);
   }
-  /** Call the engine's `ncsight_scene` or `ncsight_check` (same arguments); its answer's bytes. */
-  function callEngine(name, textBytes, machine, params, setup, options) {
-    const E = engine;
+  /** Call the engine's `ncsight_scene` or `ncsight_check` (same arguments) in the worker: a
+   * promise of its answer's bytes. */
+  async function callEngine(name, textBytes, machine, params, setup, options) {
+    const module = await compiled;
+    if (!worker) startWorker();
     const bufs = [textBytes, enc.encode(machine), enc.encode(params), enc.encode(setup), enc.encode(options), libraryBytes()];
-    // Pointers come back as signed 32-bit numbers: >>> 0 reads those above 2 GB right.
-    const ptrs = bufs.map((b) => { const p = E.ncsight_alloc(b.length) >>> 0; new Uint8Array(E.memory.buffer, p, b.length).set(b); return p; });
-    const r = E[name](ptrs[0], bufs[0].length, ptrs[1], bufs[1].length, ptrs[2], bufs[2].length, ptrs[3], bufs[3].length, ptrs[4], bufs[4].length, ptrs[5], bufs[5].length);
-    const at = r >>> 0;
-    const len = new DataView(E.memory.buffer).getUint32(at, true);
-    // A copy: the columns' typed arrays need offsets aligned from the buffer's start.
-    const out = E.memory.buffer.slice(at + 4, at + 4 + len);
-    E.ncsight_free(at, 4 + len);
-    ptrs.forEach((p, i) => E.ncsight_free(p, bufs[i].length));
-    return out;
+    const id = ++nextCall;
+    return new Promise((resolve, reject) => {
+      pending.set(id, { resolve, reject });
+      worker.postMessage({ id, module, name, bufs });
+    });
   }
   /** The scene's header and columns as typed arrays (see ncsight-io's format/scene.rs). */
   function parseScene(buf) {
@@ -388,27 +431,31 @@
     return o.join("\n");
   }
   function banner(cls, text) { const b = $("banner"); b.className = cls; b.textContent = text; }
+  /** Run the programme in the editor (in the worker) and show it; a promise of when it is shown,
+   * the check's diagnostics included. */
   function run() {
     const generation = ++runs;
-    if (!engine) {
-      // A new engine is on its way (after a trap): run when it is there.
-      banner("warning", t("running"));
-      loadEngine().then(run).catch((e) => engineFailed("", e));
-      return;
-    }
+    cancelEngine();
     const machine = $("machine").value, params = $("params").value, options = optionsText();
     const t0 = performance.now();
     const textBytes = enc.encode(programmeText());
-    let buf;
-    try {
-      buf = callEngine("ncsight_scene", textBytes, machine, params, JOB.setup || "", options);
-    } catch (e) {
-      engineFailed("engine error: ", e);
-      return;
-    }
-    const next = parseScene(buf);
+    // A run that takes a while says so (the page stays usable meanwhile).
+    const slow = setTimeout(() => { if (generation === runs) banner("warning", t("running")); }, 300);
+    const shown = callEngine("ncsight_scene", textBytes, machine, params, JOB.setup || "", options).then((buf) => {
+      clearTimeout(slow);
+      if (generation !== runs) return;
+      if (!show(parseScene(buf), t0)) return;
+      // Then every diagnostic of a check (the run stops at the first alarm; a check goes on),
+      // once the path is drawn.
+      return callEngine("ncsight_check", textBytes, machine, params, JOB.setup || "", options).then((b) => { if (generation === runs) addCheck(b); }, (e) => { if (e !== CANCELLED) engineFailed("engine error in the check: ", e); });
+    }, (e) => { if (e !== CANCELLED) engineFailed("engine error: ", e); });
+    inflight = shown;
+    return shown;
+  }
+  /** Show a run's scene; false when the run was refused (a usage mistake). */
+  function show(next, t0) {
     lastRunMs = performance.now() - t0;
-    if (next.usage) { banner("usage", t("usage", { msg: next.usage })); return; }
+    if (next.usage) { banner("usage", t("usage", { msg: next.usage })); return false; }
     const wasLathe = lathe;
     S = next;
     lathe = S.head.lathe;
@@ -422,19 +469,18 @@
     showProblems(); showTime(); showParams(); legend(); showPasses(); setTime(now, false); paintEditor();
     // When the first path was drawn, in ms from navigation (what the size tests measure).
     if (!firstPathMs) firstPathMs = performance.now();
-    // Then every diagnostic of a check (the run stops at the first alarm; a check goes on), once
-    // the path is drawn.
-    setTimeout(() => {
-      if (generation !== runs || !engine) return;
-      try { addCheck(callEngine("ncsight_check", textBytes, machine, params, JOB.setup || "", options)); } catch (e) { engineFailed("engine error in the check: ", e); }
-    }, 0);
+    return true;
   }
-  /** The engine stopped (a trap): say so, and start a fresh one for the next run. */
+  /** The run in flight (or the last one) and every later one: resolved when all are shown. */
+  let inflight = Promise.resolve();
+  async function settled() {
+    let p;
+    do { p = inflight; await p; } while (p !== inflight);
+  }
+  /** The engine stopped (a trap, a worker that failed): say so; the next run starts a new one. */
   function engineFailed(what, e) {
-    const say = (x) => banner("usage", t("usage", { msg: String(x.message || x) }));
-    say(what + String(e.message || e));
-    engine = null;
-    loadEngine().catch(say);
+    banner("usage", t("usage", { msg: what + String(e.message || e) }));
+    stopWorker();
   }
   let runs = 0;
   let firstPathMs = 0;
@@ -469,12 +515,14 @@
     const alarms = Math.max(H.alarms_total || 0, H.diagnostics.filter((d) => d.sev === "alarm").length);
     const warnings = Math.max(0, H.diagnostics_total - alarms);
     const nf = stockFindings().length;
+    const cut = H.cut ? " — " + t("cut", { n: (H.segments + H.events.length).toLocaleString() }) : "";
     if (nf) banner("alarm", t("findings", { n: nf }) + (H.diagnostics_total ? " — " + t("problems", { alarms, warnings }) : ""));
     else if (!H.diagnostics_total) {
-      banner("ok", programmeText().trim() ? t("ok", { status: t(H.status), time: hms(H.total_s) }) : t("empty"));
+      if (cut) banner("warning", t("ok", { status: t(H.status), time: hms(H.total_s) }) + cut);
+      else banner("ok", programmeText().trim() ? t("ok", { status: t(H.status), time: hms(H.total_s) }) : t("empty"));
     } else {
       const firstD = H.diagnostics[0];
-      banner(alarms ? "alarm" : "warning", t("problems", { alarms, warnings }) + " — " + t("first", { line: firstD.l, msg: firstD.code + " " + firstD.msg }));
+      banner(alarms ? "alarm" : "warning", t("problems", { alarms, warnings }) + " — " + t("first", { line: firstD.l, msg: firstD.code + " " + firstD.msg }) + cut);
     }
     const frag = document.createDocumentFragment();
     // What the stock simulation could not do, and its findings (crash, chuck, phase, deviation),
@@ -1326,9 +1374,10 @@
   // ---- start ------------------------------------------------------------------------------------
   applyWords();
   paintEditor(); draw(); showThread(); showPresses();
-  const ready = loadEngine().then(() => { if (programmeText().trim()) run(); else { banner("ok", t("empty")); } }).catch((e) => banner("usage", t("usage", { msg: String(e.message || e) })));
+  const ready = compiled.then(() => { if (programmeText().trim()) return run(); banner("ok", t("empty")); }).catch((e) => banner("usage", t("usage", { msg: String(e.message || e) })));
   window.ncsightApp = {
     ready,
+    settled,
     get scene() { return S && { head: S.head, n: S.n, h: S.h }; },
     get now() { return now; },
     get runLine() { return runLine; },
