@@ -196,3 +196,22 @@ fn the_setup_file_is_bounded_and_long_lines_are_cut() {
     assert!(err.len() < 5_000, "{} bytes of message", err.len());
     assert!(err.contains("more characters)"), "{err}");
 }
+
+/// `expand` never writes F0: a feed below the target's four decimals (0.0001 mm/rev at 0.4 rpm,
+/// 0.00004 mm/min) stops the expansion with NCS-E76 before its line is begun (both targets refuse
+/// G1 F0). The G96 note names the speed as the S word writes it (S0.2, not S0).
+#[test]
+fn expand_refuses_f0_and_names_the_speed_it_writes() {
+    let dir = Scratch::new("expand-f0");
+    let f = dir.file("f0.nc", "G99 G97 S0.4 M03\nG00 X20. Z2.\nG01 Z-10. F0.0001\nM30\n");
+    for to in ["linuxcnc", "grbl"] {
+        let (code, out, err) = common::ncsight(&["expand", &f, "-m", "gsk980tdi", "--to", to]);
+        assert_eq!(code, 1, "{out}{err}");
+        assert!(err.contains("NCS-E76") && err.contains("is F0 at the target's 4 decimals"), "{err}");
+        assert!(!out.contains(" F0") && !out.contains("G1 X10 Z-10"), "{out}");
+    }
+    let s = dir.file("s0.nc", "G99 G50 S0.2\nG96 S100 M03\nG00 X20. Z2.\nG01 Z-10. F0.2\nM30\n");
+    let (code, out, err) = common::ncsight(&["expand", &s, "-m", "gsk980tdi", "--to", "linuxcnc"]);
+    assert_eq!(code, 0, "{err}");
+    assert!(out.contains("S0.2 M3") && err.contains("the spindle speed of this moment, S0.2:"), "{err}");
+}

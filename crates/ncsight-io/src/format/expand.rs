@@ -163,6 +163,16 @@ impl Expand {
         }
     }
 
+    /// A feed that would be written as F0 (below 0.00005 mm/min, nothing at the target's four
+    /// decimals) is refused before its line is begun: both targets refuse G1 F0, and a rounded
+    /// feed would move at another speed than the programme's.
+    fn writable_feed(&self, f: f64, span: ncsight::source::Span) -> io::Result<()> {
+        if f.abs() < 0.5 * 10f64.powi(-(DECIMALS as i32)) {
+            return Err(self.refuse(span, &format!("a feed of {f:e} mm/min is F0 at the target's {DECIMALS} decimals")));
+        }
+        Ok(())
+    }
+
     fn feed(&mut self, s: &mut String, f: f64) {
         if self.feed != Some(f) {
             self.feed = Some(f);
@@ -291,11 +301,13 @@ impl Expand {
                 self.point(s, to);
             }
             Op::Feed { to, feed_mm_min, .. } => {
+                self.writable_feed(*feed_mm_min, r.span)?;
                 s.push_str("G1");
                 self.point(s, to);
                 self.feed(s, *feed_mm_min);
             }
             Op::Arc { from, to, center, plane, dir, feed_mm_min } => {
+                self.writable_feed(*feed_mm_min, r.span)?;
                 self.arc(s, from, to, center, *plane, *dir);
                 self.feed(s, *feed_mm_min);
             }
@@ -350,7 +362,10 @@ impl Expand {
             Op::Spindle { rpm, surface_m_min, .. } => {
                 if surface_m_min.is_some() && !self.warned_css {
                     self.warned_css = true;
-                    self.note(r.span, format!("constant surface speed (G96) is written as the spindle speed of this moment, S{:.0}: on the target it stays there while X changes (the feeds per minute are as ncsight computed them)", rpm.abs()));
+                    // The speed as the S word below writes it (S0.2 stays S0.2).
+                    let mut shown = String::new();
+                    push_num(&mut shown, rpm.abs(), 1);
+                    self.note(r.span, format!("constant surface speed (G96) is written as the spindle speed of this moment, S{shown}: on the target it stays there while X changes (the feeds per minute are as ncsight computed them)"));
                 }
                 self.spindle(s, *rpm);
             }
