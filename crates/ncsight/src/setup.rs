@@ -3,10 +3,27 @@
 //! checked; the interpreter takes the machine's frame from it, the stock simulation the stock and
 //! the tools' shapes.
 
-use serde::Deserialize;
+use serde::{Deserialize, Deserializer};
 
 /// The most spindles a setup may name (`[machine] spindle_p`).
 pub const MAX_SPINDLES: usize = 4;
+
+/// `N` numbers, exactly: a TOML array of another length is an error naming both (serde's own
+/// fixed-size arrays take three numbers where two are asked for).
+fn exactly<'de, D: Deserializer<'de>, const N: usize>(d: D) -> Result<[f64; N], D::Error> {
+    let v = Vec::<f64>::deserialize(d)?;
+    <[f64; N]>::try_from(v.as_slice()).map_err(|_| serde::de::Error::custom(format!("give exactly {N} numbers, not {}", v.len())))
+}
+
+/// [`exactly`] for a value that may be left out.
+fn exactly_opt<'de, D: Deserializer<'de>, const N: usize>(d: D) -> Result<Option<[f64; N]>, D::Error> {
+    exactly::<D, N>(d).map(Some)
+}
+
+/// A number as a message shows it: `inf`, `NaN`, `12.5`.
+fn shown(v: f64) -> String {
+    if v.is_nan() { "NaN".into() } else { format!("{v}") }
+}
 
 /// The job setup (`--setup FILE.toml`): the machine (axes, travel limits, reference points),
 /// the work offsets, the tool and offset tables, the stock. Every part is optional; without a
@@ -67,8 +84,11 @@ impl Point {
 #[derive(Debug, Clone, Copy, PartialEq, Deserialize, Default)]
 #[serde(deny_unknown_fields)]
 pub struct Limits {
+    #[serde(default, deserialize_with = "exactly_opt")]
     pub x_mm: Option<[f64; 2]>,
+    #[serde(default, deserialize_with = "exactly_opt")]
     pub y_mm: Option<[f64; 2]>,
+    #[serde(default, deserialize_with = "exactly_opt")]
     pub z_mm: Option<[f64; 2]>,
 }
 
@@ -138,7 +158,9 @@ pub struct Offset {
 #[derive(Debug, Clone, Copy, PartialEq, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Block {
+    #[serde(deserialize_with = "exactly")]
     pub min_mm: [f64; 3],
+    #[serde(deserialize_with = "exactly")]
     pub max_mm: [f64; 3],
 }
 
@@ -315,9 +337,13 @@ impl Setup {
         }
         let point_ok = |p: &Point| [p.x_mm, p.y_mm, p.z_mm].into_iter().flatten().all(length);
         if let Some(m) = &s.machine {
-            for a in &m.axes {
+            for (i, a) in m.axes.iter().enumerate() {
                 if !matches!(a.as_str(), "X" | "Y" | "Z" | "A" | "B" | "C") {
                     return Err(SetupError(format!("machine.axes: {a:?} is not an axis (X, Y, Z, A, B or C)")));
+                }
+                // Each axis once (so at most six).
+                if m.axes[..i].contains(a) {
+                    return Err(SetupError(format!("machine.axes: {a:?} is named twice; each axis once")));
                 }
             }
             if m.spindle_p.len() > MAX_SPINDLES {
@@ -335,7 +361,11 @@ impl Setup {
                 for (axis, r) in ["x", "y", "z"].into_iter().zip(l.by_axis()) {
                     if let Some([lo, hi]) = r {
                         if !(length(lo) && length(hi) && lo < hi) {
-                            return Err(SetupError(format!("machine.limits.{axis}_mm: give [min, max] with min less than max, finite, at most {MAX_MM} mm")));
+                            return Err(SetupError(format!(
+                                "machine.limits.{axis}_mm = [{}, {}]: give [min, max] with min less than max, finite, at most {MAX_MM} mm",
+                                shown(lo),
+                                shown(hi)
+                            )));
                         }
                     }
                 }
@@ -346,6 +376,18 @@ impl Setup {
             for (name, p) in names.into_iter().zip(w.all()) {
                 if p.is_some_and(|p| !point_ok(&p)) {
                     return Err(SetupError(format!("work.{name}: every coordinate must be a finite number of at most {MAX_MM} mm")));
+                }
+            }
+        }
+        if let Some(b) = s.block {
+            for (k, axis) in ["x", "y", "z"].into_iter().enumerate() {
+                let (lo, hi) = (b.min_mm[k], b.max_mm[k]);
+                if !(length(lo) && length(hi) && lo < hi) {
+                    return Err(SetupError(format!(
+                        "block: {axis} from {} to {} mm: each corner's coordinate must be a finite number of at most {MAX_MM} mm, min_mm less than max_mm",
+                        shown(lo),
+                        shown(hi)
+                    )));
                 }
             }
         }

@@ -63,3 +63,22 @@ fn m98_p_in_a_drilling_cycle_calls_and_keeps_the_dwell() {
     let bottoms: Vec<(f64, f64)> = records.iter().filter_map(|r| if let Op::Feed { to, .. } = r.op { Some((to.x, to.y)) } else { None }).collect();
     assert_eq!(bottoms, vec![(10.0, 10.0), (20.0, 20.0), (30.0, 20.0)]);
 }
+
+/// Setup shapes a machine cannot have are refused, naming the value: an axis twice (and so more
+/// than six), a limit of three numbers, a block corner of NaN or infinity or four numbers.
+#[test]
+fn setup_shapes_are_checked_and_named() {
+    use ncsight::setup::Setup;
+    let refused = |toml: &str| Setup::from_toml(toml).expect_err(toml).to_string();
+    assert!(refused("[machine]\naxes = [\"X\", \"X\"]\n").contains("\"X\" is named twice"));
+    let many = format!("[machine]\naxes = [{}]\n", vec!["\"A\""; 300].join(", "));
+    assert!(refused(&many).contains("\"A\" is named twice"));
+    assert!(refused("[machine]\nlimits = { x_mm = [1.0, 2.0, 3.0] }\n").contains("give exactly 2 numbers, not 3"));
+    assert!(refused("[block]\nmin_mm = [nan, 0.0, 0.0]\nmax_mm = [1.0, 1.0, 1.0]\n").contains("x from NaN to 1 mm"));
+    assert!(refused("[block]\nmin_mm = [0.0, 0.0, 0.0]\nmax_mm = [inf, 1.0, 1.0]\n").contains("x from 0 to inf mm"));
+    assert!(refused("[block]\nmin_mm = [0.0, 0.0, 0.0, 1.0]\nmax_mm = [1.0, 1.0, 1.0]\n").contains("give exactly 3 numbers, not 4"));
+    assert!(refused("[machine]\nlimits = { z_mm = [5.0, -5.0] }\n").contains("z_mm = [5, -5]"));
+    // What a machine can have still reads.
+    let s = Setup::from_toml("[machine]\naxes = [\"X\", \"Y\", \"Z\", \"C\"]\nlimits = { x_mm = [-1.0, 300.0] }\n[block]\nmin_mm = [0.0, 0.0, -20.0]\nmax_mm = [100.0, 50.0, 0.0]\n").unwrap();
+    assert_eq!(s.block.unwrap().max_mm, [100.0, 50.0, 0.0]);
+}
