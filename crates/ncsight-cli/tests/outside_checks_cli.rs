@@ -215,3 +215,20 @@ fn expand_refuses_f0_and_names_the_speed_it_writes() {
     assert_eq!(code, 0, "{err}");
     assert!(out.contains("S0.2 M3") && err.contains("the spindle speed of this moment, S0.2:"), "{err}");
 }
+
+/// Entries of `--subprogram-dir` named after the called programme but not readable as a
+/// programme file (a folder, a named pipe called `O1235.nc`) are named in the "not found" alarm,
+/// with why, instead of being passed over in silence (and a named pipe is never opened).
+#[cfg(unix)]
+#[test]
+fn unreadable_subprogramme_entries_are_named() {
+    let dir = Scratch::new("sd-entries");
+    std::fs::create_dir_all(dir.path("sd/O1234.nc")).unwrap();
+    assert!(std::process::Command::new("mkfifo").arg(dir.path("sd/O1235.nc")).status().unwrap().success());
+    let main = dir.file("m.nc", "G0 X1. Z1.\nM98 P1234\nM98 P1235\nM30\n");
+    let sd = dir.path("sd");
+    let (code, out, _) = common::ncsight(&["check", &main, "-m", "gsk980tdi", "--subprogram-dir", &sd]);
+    assert_eq!(code, 1, "{out}");
+    assert!(out.contains(&format!("passed over, not readable as a programme file: {sd}/O1234.nc (a folder)")), "{out}");
+    assert!(out.contains(&format!("{sd}/O1235.nc (a named pipe or a device, not a regular file)")), "{out}");
+}

@@ -110,6 +110,14 @@ fn numbered_line(source: &Source, line: u32, out: &mut Vec<u8>) {
     }
 }
 
+/// Whether a file's name is programme O`number`'s: `O1234`, `o1234.nc`, any extension, any
+/// case, leading zeros or not.
+fn named_after(p: &std::path::Path, number: u32) -> bool {
+    let stem = p.file_stem().and_then(|s| s.to_str()).unwrap_or("");
+    let digits = stem.strip_prefix('O').or_else(|| stem.strip_prefix('o'));
+    digits.is_some_and(|d| !d.is_empty() && d.bytes().all(|b| b.is_ascii_digit()) && d.parse::<u32>().ok() == Some(number))
+}
+
 /// Where a called programme that the text lacks is looked for (`--subprogram-dir`).
 #[derive(Debug, Default)]
 pub struct Library {
@@ -135,14 +143,35 @@ impl Library {
         files
     }
 
+    /// The entries of the directories named after programme O`number` that are no readable
+    /// file (a folder, a named pipe or device, a file that cannot be opened), each with why:
+    /// passed over by [`Library::find`], and named when the programme is not found.
+    pub fn passed_over(&self, number: u32) -> Vec<String> {
+        let mut out = Vec::new();
+        for d in &self.dirs {
+            let Ok(rd) = std::fs::read_dir(d) else { continue };
+            let mut entries: Vec<_> = rd.filter_map(|e| e.ok()).map(|e| e.path()).filter(|p| named_after(p, number)).collect();
+            entries.sort();
+            for p in entries {
+                let why = match std::fs::metadata(&p) {
+                    Ok(m) if m.is_dir() => "a folder".to_string(),
+                    Ok(m) if !m.is_file() => "a named pipe or a device, not a regular file".to_string(),
+                    Ok(_) => match std::fs::File::open(&p) {
+                        Ok(_) => continue,
+                        Err(e) => format!("cannot be read: {e}"),
+                    },
+                    Err(e) => format!("cannot be read: {e}"),
+                };
+                out.push(format!("{} ({why})", p.display()));
+            }
+        }
+        out
+    }
+
     /// The file that holds programme O`number`: one named after it (`O1234`, `o1234.nc`, any
     /// extension, any case, leading zeros or not), else one whose text holds it.
     pub fn find(&mut self, number: u32, reader: &LineReader) -> Option<std::path::PathBuf> {
-        let named = |p: &std::path::PathBuf| {
-            let stem = p.file_stem().and_then(|s| s.to_str()).unwrap_or("");
-            let digits = stem.strip_prefix('O').or_else(|| stem.strip_prefix('o'));
-            digits.is_some_and(|d| !d.is_empty() && d.bytes().all(|b| b.is_ascii_digit()) && d.parse::<u32>().ok() == Some(number))
-        };
+        let named = |p: &std::path::PathBuf| named_after(p, number);
         let files = self.files();
         if let Some(p) = files.iter().find(|p| named(p)) {
             return Some(p.clone());
@@ -407,7 +436,10 @@ fn follow_jumps(
                         Some(path) => {
                             program.open_file(path.display().to_string());
                         }
-                        None => program.no_file(&mut |e| deliver(e, b"", (u16::MAX, 0), &names, pages, &mut pending)),
+                        None => {
+                            let passed_over = library.passed_over(number);
+                            program.no_file_passing_over(&passed_over, &mut |e| deliver(e, b"", (u16::MAX, 0), &names, pages, &mut pending))
+                        }
                     }
                     request = program.take_request();
                 }

@@ -199,3 +199,26 @@ G55 = { x_mm = 0.0, z_mm = -350.0 }
     text = (tmp_path / "p.nc").read_text()
     assert ncsight.run(text, "gsk980tdi", setup=tmp_path / "setup.toml") == expected
     assert ncsight.run(text, "gsk980tdi", setup=mapping) == expected
+
+
+def test_out_of_range_options_are_value_errors(tmp_path):
+    """Issue 32: max_blocks past the native counter is a ValueError (not OverflowError); one folder
+    given as a string is that folder (not its letters); a setup mapping nested 5,000 deep is a
+    ValueError (not RecursionError)."""
+    text = "G00 X50 Z10\nM30\n"
+    with pytest.raises(ValueError, match="max_blocks"):
+        ncsight.run(text, "gsk980tdi", max_blocks=2**70)
+    (tmp_path / "O1234.nc").write_text("O1234\nG00 X40 Z5\nM99\n")
+    called = ncsight.run("G00 X50 Z10\nM98 P1234\nM30\n", "gsk980tdi", subprogram_dirs=str(tmp_path))
+    assert [r["kind"] for r in called][:2] == ["rapid", "rapid"], called
+    assert ncsight.run("G00 X50 Z10\nM98 P1234\nM30\n", "gsk980tdi", subprogram_dirs=tmp_path) == called
+    deep: dict = {}
+    inner = deep
+    for _ in range(5000):
+        inner["a"] = {}
+        inner = inner["a"]
+    with pytest.raises(ValueError, match="nested more than"):
+        ncsight.run(text, "gsk980tdi", setup={"machine": deep})
+    (tmp_path / "big.toml").write_bytes(b"#" * (16 * 1024 * 1024 + 10))
+    with pytest.raises(ValueError, match="at most 16 MiB"):
+        ncsight.run(text, "gsk980tdi", setup=tmp_path / "big.toml")

@@ -58,8 +58,17 @@ def _toml_key(k: Any) -> str:
     return k if k and all(c.isalnum() or c in "_-" for c in k) else json.dumps(k)
 
 
-def _toml_value(v: Any) -> str:
+# How deep a setup mapping may nest: a real setup nests three deep (``machine.limits.x_mm``).
+_MAX_SETUP_DEPTH = 8
+
+# The most blocks the runaway guard may allow: the native half's unsigned 64-bit counter.
+_MAX_BLOCKS = 2**64 - 1
+
+
+def _toml_value(v: Any, depth: int = 0) -> str:
     """A value as TOML writes it inline (tables as inline tables)."""
+    if depth > _MAX_SETUP_DEPTH:
+        raise ValueError(f"setup: nested more than {_MAX_SETUP_DEPTH} deep; a setup file nests three deep (machine.limits.x_mm)")
     if isinstance(v, bool):
         return "true" if v else "false"
     if isinstance(v, (int, float)):
@@ -67,9 +76,9 @@ def _toml_value(v: Any) -> str:
     if isinstance(v, str):
         return json.dumps(v)
     if isinstance(v, Mapping):
-        return "{ " + ", ".join(f"{_toml_key(k)} = {_toml_value(x)}" for k, x in v.items()) + " }"
+        return "{ " + ", ".join(f"{_toml_key(k)} = {_toml_value(x, depth + 1)}" for k, x in v.items()) + " }"
     if isinstance(v, (list, tuple)):
-        return "[" + ", ".join(_toml_value(x) for x in v) + "]"
+        return "[" + ", ".join(_toml_value(x, depth + 1) for x in v) + "]"
     raise ValueError(f"setup: {v!r} is not a number, string, list or mapping")
 
 
@@ -99,8 +108,15 @@ def _options(caller: str, machine: str, params: Params, setup: Any, options: Map
         raise ValueError(f"machine: one of {', '.join(machines())}")
     main = options.get("main")
     max_blocks = options.get("max_blocks")
-    if max_blocks is not None and (isinstance(max_blocks, bool) or not isinstance(max_blocks, int) or max_blocks < 0):
-        raise ValueError(f"max_blocks: a whole number of blocks, 0 or more, not {max_blocks!r}")
+    if max_blocks is not None and (isinstance(max_blocks, bool) or not isinstance(max_blocks, int) or not 0 <= max_blocks <= _MAX_BLOCKS):
+        raise ValueError(f"max_blocks: a whole number of blocks, 0 to {_MAX_BLOCKS}, not {max_blocks!r}")
+    subprogram_dirs = options.get("subprogram_dirs") or []
+    # One folder given as a string or path, not a list: taken as that folder (a string is not
+    # read letter by letter).
+    if isinstance(subprogram_dirs, (str, bytes, os.PathLike)):
+        subprogram_dirs = [subprogram_dirs]
+    if not isinstance(subprogram_dirs, (list, tuple)):
+        raise ValueError(f"subprogram_dirs: a list of folders, not {subprogram_dirs!r}")
     variables = options.get("variables")
     if variables is not None and not isinstance(variables, Mapping):
         raise ValueError("variables: a mapping such as {500: 1.5, 1002: 1}")
@@ -110,7 +126,7 @@ def _options(caller: str, machine: str, params: Params, setup: Any, options: Map
         machine,
         params=_params(params),
         main=None if main is None else str(main),
-        subprogram_dirs=[os.fspath(d) for d in (options.get("subprogram_dirs") or [])],
+        subprogram_dirs=[os.fsdecode(os.fspath(d)) for d in subprogram_dirs],
         skip_missing_subprograms=bool(options.get("skip_missing_subprograms", False)),
         max_blocks=max_blocks,
         variables=_variables(variables),

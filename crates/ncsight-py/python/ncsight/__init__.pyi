@@ -21,7 +21,7 @@ class _Options(TypedDict, total=False):
     --max-blocks, --var, --block-delete, --optional-stop."""
 
     main: Union[int, str]
-    subprogram_dirs: Sequence[PathLike]
+    subprogram_dirs: Union[PathLike, Sequence[PathLike]]
     skip_missing_subprograms: bool
     max_blocks: int
     variables: Mapping[int, float]

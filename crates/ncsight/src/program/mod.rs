@@ -582,9 +582,16 @@ impl Program {
 
     /// The answer to [`Request::Find`]: no file holds the programme.
     pub fn no_file(&mut self, sink: &mut dyn FnMut(Event)) {
+        self.no_file_passing_over(&[], sink);
+    }
+
+    /// [`Program::no_file`], naming the entries the driver passed over because they could not
+    /// be read as programme files (a folder or a named pipe called `O1234.nc`, a file it may not
+    /// read), each with why.
+    pub fn no_file_passing_over(&mut self, passed_over: &[String], sink: &mut dyn FnMut(Event)) {
         let Program { core, machine, .. } = self;
         let (chain, file) = (core.calls.chain(), core.file);
-        core.not_found(&mut |e| stamped(e, &chain, file, machine, sink));
+        core.not_found(passed_over, &mut |e| stamped(e, &chain, file, machine, sink));
     }
 
     /// The name a driver gave file `file` ([`Program::open_file`]); "" for the first file.
@@ -1800,13 +1807,13 @@ impl Core {
         }
         match s.target {
             Target::Program(number) if !s.once => self.calls.request = Some(Request::Find { number }),
-            _ => self.not_found(sink),
+            _ => self.not_found(&[], sink),
         }
     }
 
     /// The target is nowhere: the controller's alarm (FANUC 0 alarm 078), or with
     /// `skip_missing` a warning and the call does nothing.
-    fn not_found(&mut self, sink: &mut dyn FnMut(Event)) {
+    fn not_found(&mut self, passed_over: &[String], sink: &mut dyn FnMut(Event)) {
         let Some(s) = self.calls.search.take() else { return };
         let profile = self.interp.profile();
         let calling = matches!(s.target, Target::Program(_)) && self.calls.frames.last().is_some_and(|f| f.start.is_none());
@@ -1820,6 +1827,7 @@ impl Core {
             Target::Goto(n) => (format!("GOTO {n}: the programme has no block N{n}"), "the N of GOTO must be in the same programme"),
             Target::LoopEnd(m) => (format!("WHILE [..] DO{m}: no END{m} follows in the programme"), "each WHILE [..] DOm ends with ENDm"),
         };
+        let message = if passed_over.is_empty() { message } else { format!("{message}; passed over, not readable as a programme file: {}", passed_over.join(", ")) };
         if calling && self.call_options.skip_missing {
             let d = Diagnostic::new(Rule::CallSkipped, profile.alarm_style, s.asked_by, format!("{message}: the call is skipped (--skip-missing-subprograms)"));
             sink(Event::Diagnostic(d));
