@@ -82,3 +82,19 @@ fn setup_shapes_are_checked_and_named() {
     let s = Setup::from_toml("[machine]\naxes = [\"X\", \"Y\", \"Z\", \"C\"]\nlimits = { x_mm = [-1.0, 300.0] }\n[block]\nmin_mm = [0.0, 0.0, -20.0]\nmax_mm = [100.0, 50.0, 0.0]\n").unwrap();
     assert_eq!(s.block.unwrap().max_mm, [100.0, 50.0, 0.0]);
 }
+
+/// A WHILE whose END is missing is FANUC alarm 124 at the WHILE, found before its body runs
+/// (the controller's search for END), not a run through the body to M30 without alarm. With
+/// its END the loop runs as before, its body three times.
+#[test]
+fn a_while_without_end_alarms_before_its_body_runs() {
+    for cond in ["1 EQ 1", "#1 LT 3"] {
+        let (records, diags) = common::run_plain("fanuc0m", &[], &format!("O0001\n#1 = 0\nWHILE [{cond}] DO 1\nG0 X1. Y1.\n#1 = #1 + 1\nM30\n"));
+        let a = diags.iter().find(|d| d.is_alarm()).unwrap_or_else(|| panic!("{cond}: no alarm"));
+        assert_eq!((a.code, a.span.line), ("PS0124", 3), "{cond}: {a:?}");
+        assert!(!records.iter().any(|r| matches!(r.op, Op::Rapid { .. })), "{cond}: the body ran");
+    }
+    let (records, diags) = common::run_plain("fanuc0m", &[], "O0001\n#1 = 0\nWHILE [#1 LT 3] DO 1\nG0 X#1 Y1.\n#1 = #1 + 1\nEND 1\nM30\n");
+    assert!(diags.is_empty(), "{diags:?}");
+    assert_eq!(records.iter().filter(|r| matches!(r.op, Op::Rapid { .. })).count(), 3);
+}

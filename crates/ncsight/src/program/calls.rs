@@ -83,6 +83,10 @@ pub(super) enum Target {
     Goto(u32),
     /// The `END m` of a WHILE whose condition does not hold.
     LoopEnd(u32),
+    /// The `END m` of a WHILE whose body is about to run for the first time: read ahead only
+    /// to be sure it is there (alarm 124 before the body runs, as the controller's search for
+    /// END finds it), then back to the body.
+    LoopEndAhead(u32),
 }
 
 /// A jump whose target has not been read yet: the blocks are read, not executed, until it is

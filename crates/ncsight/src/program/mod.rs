@@ -1105,6 +1105,11 @@ impl Core {
                                 return Err(Diagnostic::new(Rule::LoopNumber, profile.alarm_style, block.span, "WHILE loops nest at most three deep".to_string()));
                             }
                             self.calls.loops.push(Loop { label: *label, place, depth });
+                            // Its END must follow in the programme: looked for now, not when the
+                            // body has run to the programme's end (FANUC alarm 124).
+                            let scope = self.calls.running().map_or(Place::start_of(self.file), |(_, s)| s);
+                            self.leave_linear();
+                            self.calls.search = Some(Search { target: Target::LoopEndAhead(*label), from: next, scope, wrapped: true, once: true, asked_by: block.span, resume: Some(next) });
                         }
                         return Ok(true);
                     }
@@ -1776,7 +1781,7 @@ impl Core {
                 }
                 Searched::Found
             }
-            Target::Sequence(_) | Target::Goto(_) | Target::LoopEnd(_) if b.program.is_some() && place != s.scope => {
+            Target::Sequence(_) | Target::Goto(_) | Target::LoopEnd(_) | Target::LoopEndAhead(_) if b.program.is_some() && place != s.scope => {
                 // The programme's text ends at the next programme's O.
                 self.search_ends(sink);
                 Searched::Stop
@@ -1790,6 +1795,14 @@ impl Core {
             Target::LoopEnd(label) if b.macro_block.as_ref().is_some_and(|m| m.stmt == Stmt::End { label }) => {
                 self.calls.search = None;
                 Searched::Passed
+            }
+            // The END of a loop about to run is there: back to its body.
+            Target::LoopEndAhead(label) if b.macro_block.as_ref().is_some_and(|m| m.stmt == Stmt::End { label }) => {
+                self.calls.search = None;
+                if let Some(body) = s.resume {
+                    self.seek(body);
+                }
+                Searched::Stop
             }
             _ => Searched::Passed,
         }
@@ -1825,7 +1838,7 @@ impl Core {
             Target::Program(n) => (format!("O{n:04}: the main programme named is not in the file"), "name a programme the file holds with --main"),
             Target::Sequence(n) => (format!("N{n}: M99 P returns to a block with this sequence number, and the calling programme has none"), "the N of M99 P must be in the calling programme"),
             Target::Goto(n) => (format!("GOTO {n}: the programme has no block N{n}"), "the N of GOTO must be in the same programme"),
-            Target::LoopEnd(m) => (format!("WHILE [..] DO{m}: no END{m} follows in the programme"), "each WHILE [..] DOm ends with ENDm"),
+            Target::LoopEnd(m) | Target::LoopEndAhead(m) => (format!("WHILE [..] DO{m}: no END{m} follows in the programme"), "each WHILE [..] DOm ends with ENDm"),
         };
         let message = if passed_over.is_empty() { message } else { format!("{message}; passed over, not readable as a programme file: {}", passed_over.join(", ")) };
         if calling && self.call_options.skip_missing {
@@ -1842,7 +1855,7 @@ impl Core {
         // FANUC 0: 078 for a programme or M99's N, 128 for GOTO's, 124 for a missing END.
         let rule = match s.target {
             Target::Goto(_) => Rule::MacroSequence,
-            Target::LoopEnd(_) => Rule::MissingEnd,
+            Target::LoopEnd(_) | Target::LoopEndAhead(_) => Rule::MissingEnd,
             _ => Rule::NumberNotFound,
         };
         let d = Diagnostic::new(rule, profile.alarm_style, s.asked_by, message).with_hint(hint);
