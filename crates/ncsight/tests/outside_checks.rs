@@ -98,3 +98,13 @@ fn a_while_without_end_alarms_before_its_body_runs() {
     assert!(diags.is_empty(), "{diags:?}");
     assert_eq!(records.iter().filter(|r| matches!(r.op, Op::Rapid { .. })).count(), 3);
 }
+
+/// A warning of a contour block is said once: by the roughing cycle that reads the contour
+/// first, not again (out of line order) when G70 runs the same blocks.
+#[test]
+fn a_contour_blocks_warning_is_said_once() {
+    let text = "G99 M03 S500\nG00 X40. Z2.\nG71 U1. R0.5\nG71 P10 Q30 U0.5 W0.1 F0.2\nN10 G00 X20.\nG01 Z-10. F200.\nN30 X40.\nG70 P10 Q30\nM30\n";
+    let (_, diags) = common::run_plain("gsk980tdi", &[], text);
+    let said: Vec<(u32, &str)> = diags.iter().map(|d| (d.span.line, d.code)).collect();
+    assert_eq!(said, [(6, "NCS-W25"), (6, "NCS-W11"), (7, "NCS-W11")], "{diags:?}");
+}

@@ -186,9 +186,18 @@ impl Interpreter {
             let (req, blocks) = self.collecting.take().expect("collecting");
             // Kept for G70 even when the roughing alarms (check mode reads on).
             self.contours.retain(|c| (c.ns, c.nf) != (req.ns, req.nf));
-            self.contours.push(Contour { ns: req.ns, nf: req.nf, blocks, failed: false });
+            self.contours.push(Contour { ns: req.ns, nf: req.nf, blocks, failed: false, warned: Vec::new() });
             let blocks = &self.contours.last().expect("just pushed").blocks.clone();
-            if let Err(d) = self.rough_contour(req, blocks, out) {
+            let result = self.rough_contour(req, blocks, out);
+            if result.is_ok() {
+                // The contour blocks' warnings were said with the roughing (not when it alarms:
+                // then only its hint names one, and G70 says them).
+                let warned: Vec<Diagnostic> = out.warnings.iter().filter(|w| blocks.iter().any(|b| b.span == w.span)).cloned().collect();
+                if let Some(c) = self.contours.last_mut() {
+                    c.warned = warned;
+                }
+            }
+            if let Err(d) = result {
                 // An alarm in one of the contour's own blocks: a G70 reading them again would
                 // only report it a second time (check mode reads on).
                 if blocks.iter().any(|b| b.span.line == d.span.line) {
@@ -453,6 +462,8 @@ impl Interpreter {
             return Ok(());
         }
         let blocks = contour.blocks.clone();
+        let warned = contour.warned.clone();
+        let said = |d: &Diagnostic| warned.iter().any(|w| w.code == d.code && w.span == d.span && w.message == d.message);
         self.replaying = true;
         let mut scratch = Outcome::default();
         let mut result = Ok(());
@@ -462,7 +473,8 @@ impl Interpreter {
                 break;
             }
             out.records.append(&mut scratch.records);
-            out.warnings.append(&mut scratch.warnings);
+            // What the roughing said of these blocks is not said twice (and out of line order).
+            out.warnings.extend(scratch.warnings.drain(..).filter(|d| !said(d)));
         }
         out.increment_words += scratch.increment_words;
         out.increment_words_small += scratch.increment_words_small;
@@ -505,6 +517,9 @@ pub(super) struct Contour {
     pub blocks: Vec<Block>,
     /// One of its blocks alarmed when the roughing cycle read it.
     pub failed: bool,
+    /// The warnings its blocks gave when the roughing cycle read them: G70 reading the same
+    /// blocks does not say them again.
+    pub warned: Vec<Diagnostic>,
 }
 
 /// What reading a contour's blocks on a copy of the modal state leaves behind for the programme.
