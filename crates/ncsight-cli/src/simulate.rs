@@ -165,7 +165,7 @@ pub fn image(sim: &Simulation, w: &mut dyn Write) -> io::Result<()> {
     let g = sim.stock.grid;
     let step = g.nz.div_ceil(2000).max(1);
     let width = g.nz.div_ceil(step);
-    let (lo, hi) = sim.stock.r.iter().fold((f32::MAX, f32::MIN), |(a, b), v| (a.min(*v), b.max(*v)));
+    let (lo, hi) = sim.stock.measured().iter().fold((f32::MAX, f32::MIN), |(a, b), v| (a.min(*v), b.max(*v)));
     let span = (hi - lo).max(1e-6);
     let mut data = Vec::with_capacity(width * g.ntheta);
     for j in 0..g.ntheta {

@@ -4,6 +4,8 @@ use ncsight::motion::Op;
 
 mod common;
 
+use common::first_alarm;
+
 fn spindle_rpms(machine: &str, text: &str) -> Vec<f64> {
     let (r, d) = common::run_plain(machine, &[], text);
     assert!(d.iter().all(|d| !d.is_alarm()), "{d:?}");
@@ -22,11 +24,6 @@ fn g96_under_g20_is_feet_per_minute() {
         let rpm = spindle_rpms(machine, "G21 G0 X50. Z2.\nG96 S150 M03\nG01 Z-10. F0.1\nM30\n");
         assert!((rpm.last().unwrap() - 150_000.0 / (std::f64::consts::PI * 50.0)).abs() < 0.01, "{machine}: {rpm:?}");
     }
-}
-
-fn first_alarm(machine: &str, text: &str) -> Option<ncsight::Diagnostic> {
-    let (_, d) = common::run_plain(machine, &[], text);
-    d.into_iter().find(|d| d.is_alarm())
 }
 
 /// FANUC alarm 0044: G27-G30 while a drilling cycle is in force (no extra hole drilled); after

@@ -4,6 +4,8 @@ use ncsight::motion::Op;
 
 mod common;
 
+use common::first_alarm;
+
 /// G34 pulls out as G32 does (GSK980TDi help text, G34: "X(U), Z(W), J, K mean the same as in
 /// G32"). From X30 Z5, `G34 Z-20 F2 R0.1 J1 K2`: 25 mm of thread; the revolutions, at 2.05,
 /// 2.15, ... (F + R(n + 1/2)), run to Z-18 (nine make 22.05 mm, the tenth's 0.95 mm of 2.95
@@ -23,11 +25,6 @@ fn g34_pulls_out_as_g32() {
     let (records, _) = common::run_plain("gsk980tdi", &[], "G97 S300 M03\nG0 X30. Z5.\nG34 Z-20. F2. R0.1\nM30\n");
     let last = records.iter().filter_map(|r| if let Op::Thread { to, .. } = r.op { Some(to) } else { None }).last().unwrap();
     assert!((last.x - 15.0).abs() < 1e-9 && (last.z + 20.0).abs() < 1e-9);
-}
-
-fn first_alarm(machine: &str, text: &str) -> Option<ncsight::Diagnostic> {
-    let (_, d) = common::run_plain(machine, &[], text);
-    d.into_iter().find(|d| d.is_alarm())
 }
 
 /// A subprogramme call inside a G71 contour is refused by the roughing itself (GSK980TDi help

@@ -107,12 +107,12 @@ fn repair_round_trip_removes_no_extra_material() {
         let g = sim.stock.grid;
         // Clamp again turned by `turn` degrees: the rows move round.
         let shift = (turn / dt).round() as usize % g.ntheta;
-        let mut turned = vec![0f32; sim.stock.r.len()];
+        let mut turned = vec![0f32; sim.stock.outer.len()];
         for j in 0..g.ntheta {
             let to = (j + shift) % g.ntheta;
             turned[to * g.nz..(to + 1) * g.nz].copy_from_slice(sim.stock.row(j));
         }
-        sim.stock.r = turned;
+        sim.stock.outer = turned;
         // Put the tool in the groove at Z-12: the angle where the surface there is deepest.
         let i = ((-12.0 - g.z0_mm) / g.dz_mm).round() as usize;
         let (jm, _) = (0..g.ntheta).map(|j| (j, sim.stock.row(j)[i])).fold((0, f32::MAX), |a, b| if b.1 < a.1 { b } else { a });
@@ -127,13 +127,13 @@ fn repair_round_trip_removes_no_extra_material() {
             recorded,
         };
         let repair = records("gsk988t", &["8135.7=1"], &format!("M14\n{}G0 X45\nM15\nM30\n", job.programme().unwrap()));
-        let before = sim.stock.r.clone();
+        let before = sim.stock.outer.clone();
         let tool = Setup::default().tool(0);
         let first_thread = repair.iter().position(|r| r.op.is_thread()).unwrap();
         for r in &repair[first_thread..] {
             sim.stock.apply(r, &tool, true);
         }
-        let removed = before.iter().zip(&sim.stock.r).map(|(a, b)| (a - b).abs()).fold(0f32, f32::max);
+        let removed = before.iter().zip(&sim.stock.outer).map(|(a, b)| (a - b).abs()).fold(0f32, f32::max);
         // The recorded angle is good to half a grid step around: that far along the thread, the
         // flank moves by lead x step / 360 / tan 30.
         let allowed = 2.0 * (2.0 * dt / 360.0 / 30f64.to_radians().tan() + dz) as f32;

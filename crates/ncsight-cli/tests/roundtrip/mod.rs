@@ -11,6 +11,13 @@ use std::path::{Path, PathBuf};
 /// A programme to expand: its name, file and `ncsight` arguments.
 pub type Programme = (String, PathBuf, Vec<String>);
 
+/// What `ncsight run --format canon` prints for the programme.
+pub fn canon_of(input: &Path, args: &[String]) -> String {
+    let mut run_args: Vec<&str> = vec!["run", input.to_str().unwrap(), "--format", "canon"];
+    run_args.extend(args.iter().map(String::as_str));
+    common::ncsight(&run_args).1
+}
+
 pub fn expand(input: &Path, args: &[String], to: &str) -> (i32, String, String) {
     let mut argv: Vec<&str> = vec!["expand", input.to_str().unwrap(), "--to", to];
     argv.extend(args.iter().map(String::as_str));
@@ -59,9 +66,7 @@ pub fn linuxcnc_round_trip(programmes: &[Programme]) -> (usize, usize) {
     std::fs::write(&tools, (1..=200).map(|n| format!("T{n} P{n} ;\n")).collect::<String>()).unwrap();
     let (mut compared, mut files) = (0, 0);
     for (name, input, args) in programmes {
-        let mut run_args: Vec<&str> = vec!["run", input.to_str().unwrap(), "--format", "canon"];
-        run_args.extend(args.iter().map(String::as_str));
-        let (_, canon, _) = common::ncsight(&run_args);
+        let canon = canon_of(input, args);
         let (code, text, err) = expand(input, args, "linuxcnc");
         if canon.contains("ARC_FEED") && threads(&canon) && err.contains("NCS-E76") {
             // An arc thread (GSK988T G32.2/G32.3): LinuxCNC cannot do it; the alarm says so.
@@ -151,9 +156,7 @@ pub fn words(line: &str) -> Vec<(char, String)> {
 pub fn grbl_check(programmes: &[Programme]) -> (usize, usize) {
     let (mut lines, mut refused) = (0, 0);
     for (name, input, args) in programmes {
-        let mut run_args: Vec<&str> = vec!["run", input.to_str().unwrap(), "--format", "canon"];
-        run_args.extend(args.iter().map(String::as_str));
-        let (_, canon, _) = common::ncsight(&run_args);
+        let canon = canon_of(input, args);
         let (code, text, err) = expand(input, args, "grbl");
         if threads(&canon) {
             assert_eq!(code, 1, "{name}: a thread must stop the grbl expansion");

@@ -1,11 +1,15 @@
-//! The lathe stock as a cylindrical height field: for every angle theta (the C axis's positive
-//! direction, 0 at the one-revolution signal) and every z, the radius of the surface.
+//! The lathe stock as a solid of revolution with a bore: for every angle theta (the C axis's
+//! positive direction, 0 at the one-revolution signal) and every z, the material lies between
+//! an inner radius (the bore, 0 where the part is solid to the axis) and an outer radius. A slice
+//! whose outer radius meets its inner one has been parted off or cut through.
 //!
 //! A thread record cuts each theta column where the tool passes it: the tool is at column theta
 //! when the spindle angle is theta, i.e. once per revolution, one lead apart, at the position
 //! the record's start angle and lead give (this is why `spindle_deg` must be right). Other
-//! cutting moves with the spindle turning sweep every column. External stock keeps the smallest
-//! radius the tool leaves; a bore (internal thread) keeps the largest.
+//! cutting moves with the spindle turning sweep every column. A tool that works outside (a
+//! turning, grooving or external threading tool) lowers the outer radius to what it leaves; one
+//! that works inside (a boring bar, an internal threading tool) raises the inner radius; a drill
+//! on the spindle axis raises the inner radius to its own, its point's cone at the bottom.
 
 use super::{Bar, Tool};
 use crate::motion::{LongAxis, Op, Record, Vec3};
@@ -77,15 +81,34 @@ impl Finding {
 pub struct LatheStock {
     pub grid: Grid,
     pub bar: Bar,
-    /// Works on the bore (internal thread) instead of the outside.
+    /// The surface the thread measurement reads: the bore (an internal thread) or the outside.
     pub internal: bool,
-    /// Surface radius, one row of `nz` cells per theta.
-    pub r: Vec<f32>,
+    /// The material's outer radius, one row of `nz` cells per theta.
+    pub outer: Vec<f32>,
+    /// The bore's radius (0 where the part is solid to the axis), one row of `nz` cells per theta.
+    pub inner: Vec<f32>,
     pub findings: Vec<Finding>,
     /// Cells the tool visited (for the benchmark's figure).
     pub updates: u64,
     /// Where the last thread record ended, if the record just applied was one.
     last_thread_end: Option<Vec3>,
+    /// Where the last rapid that crashed ended, if the record just applied was one: the rapid
+    /// after it starts in the material the crash reported, and is not a crash of its own.
+    last_crash_end: Option<Vec3>,
+    /// For each z cell, the smallest bore and the largest outside at any angle, and the range of
+    /// cells cut since they were last worked out (the rapids' crash check reads them).
+    least_inner: Vec<f32>,
+    most_outer: Vec<f32>,
+    stale: Option<(usize, usize)>,
+    /// Tools (T numbers) assumed without a setup, whose side is not known: each of their moves
+    /// cuts from the side of the material it is nearer to (a bar that feeds 1 mm from a bore's
+    /// wall and 11 mm below the outside is boring).
+    pub either_side: Vec<u32>,
+}
+
+/// Whether a tool works inside a bore (raising the inner radius) rather than outside.
+pub fn cuts_inside(tool: &Tool) -> bool {
+    tool.internal || tool.kind == super::ToolKind::Boring
 }
 
 /// An arc record (`Arc` or `ThreadArc`) as points from its start to its end, in `pieces(its
@@ -108,19 +131,69 @@ impl LatheStock {
     pub fn new(bar: Bar, internal: bool, dz_mm: f64, ntheta: usize) -> LatheStock {
         let nz = ((bar.length_mm / dz_mm).ceil() as usize).max(1) + 1;
         let grid = Grid { z0_mm: bar.front_z_mm - (nz - 1) as f64 * dz_mm, dz_mm, nz, ntheta: ntheta.max(4) };
-        let start = if internal { bar.bore_mm / 2.0 } else { bar.diameter_mm / 2.0 };
-        LatheStock { grid, bar, internal, r: vec![start as f32; nz * grid.ntheta], findings: Vec::new(), updates: 0, last_thread_end: None }
+        let cells = nz * grid.ntheta;
+        LatheStock {
+            grid,
+            bar,
+            internal,
+            outer: vec![(bar.diameter_mm / 2.0) as f32; cells],
+            inner: vec![(bar.bore_mm / 2.0) as f32; cells],
+            findings: Vec::new(),
+            updates: 0,
+            last_thread_end: None,
+            last_crash_end: None,
+            least_inner: vec![(bar.bore_mm / 2.0) as f32; nz],
+            most_outer: vec![(bar.diameter_mm / 2.0) as f32; nz],
+            stale: None,
+            either_side: Vec::new(),
+        }
     }
 
+    /// Cells `lo..=hi` were cut: their extremes are worked out again when next read.
+    fn cut_cells(&mut self, lo: usize, hi: usize) {
+        self.stale = Some(match self.stale {
+            Some((a, b)) => (a.min(lo), b.max(hi)),
+            None => (lo, hi),
+        });
+    }
+
+    /// The extremes of the cells cut since they were last read, worked out again.
+    fn refresh_extremes(&mut self) {
+        let Some((lo, hi)) = self.stale.take() else { return };
+        let nz = self.grid.nz;
+        for i in lo..=hi.min(nz - 1) {
+            let (mut least, mut most) = (f32::MAX, f32::MIN);
+            for j in 0..self.grid.ntheta {
+                least = least.min(self.inner[j * nz + i]);
+                most = most.max(self.outer[j * nz + i]);
+            }
+            self.least_inner[i] = least;
+            self.most_outer[i] = most;
+        }
+    }
+
+    /// The surface the thread measurement reads (see [`LatheStock::internal`]).
+    pub fn measured(&self) -> &[f32] {
+        if self.internal { &self.inner } else { &self.outer }
+    }
+
+    /// Row `j` (the column at theta = j x dtheta) of the measured surface.
     pub fn row(&self, j: usize) -> &[f32] {
-        &self.r[j * self.grid.nz..(j + 1) * self.grid.nz]
+        &self.measured()[j * self.grid.nz..(j + 1) * self.grid.nz]
+    }
+
+    /// The inner and outer radius at cell `i` of row `j`.
+    pub fn material(&self, j: usize, i: usize) -> (f32, f32) {
+        let k = j * self.grid.nz + i;
+        (self.inner[k], self.outer[k])
     }
 
     /// The tool's cut surface radius at axial offsets 0, dz, 2dz, ... out to where it leaves
     /// the stock (a table, so the hot loop only looks it up).
-    fn profile_table(&self, tool: &Tool, tip_r: f64) -> Vec<f32> {
-        // Beyond the radial distance to the untouched surface the tool cuts nothing.
-        let limit = if self.internal { tip_r - self.bar.bore_mm / 2.0 } else { self.bar.diameter_mm / 2.0 - tip_r };
+    fn profile_table(&self, tool: &Tool, tip_r: f64, inside: bool) -> Vec<f32> {
+        // Beyond the radial distance to the untouched surface (the axis, inside) the tool cuts
+        // nothing.
+        let limit = if inside { tip_r } else { self.bar.diameter_mm / 2.0 - tip_r };
         let mut t = Vec::new();
         let mut k = 0usize;
         loop {
@@ -210,11 +283,15 @@ impl LatheStock {
     /// Apply one record with the tool in the turret.
     pub fn apply(&mut self, rec: &Record, tool: &Tool, spindle_turning: bool) {
         let after_thread = self.last_thread_end.take();
+        let after_crash = self.last_crash_end.take();
         if tool.kind.on_spindle_axis() {
-            // A drill on the spindle axis bores the part from its face: the height field of the
-            // outside does not hold that (docs/commands/simulate.md); its moves are not cut.
+            self.apply_axial(rec, tool, spindle_turning);
             return;
         }
+        let inside = match (rec.op.start_point(), rec.op.end_point()) {
+            (Some(a), Some(b)) if tool.kind != super::ToolKind::Thread && self.either_side.contains(&tool.number) => self.nearer_inside(&[a, b]),
+            _ => cuts_inside(tool),
+        };
         match rec.op {
             Op::Thread { from, to, lead_mm, long_axis, spindle_deg, rpm } => {
                 if long_axis != LongAxis::Z {
@@ -222,7 +299,7 @@ impl LatheStock {
                     return;
                 }
                 self.chuck_check(rec, &from, &to);
-                self.cut_thread(from, to, lead_mm, spindle_deg, rpm, tool);
+                self.cut_thread(from, to, lead_mm, spindle_deg, rpm, tool, inside);
                 self.last_thread_end = Some(to);
             }
             Op::ThreadArc { from, to, long_axis, lead_mm, spindle_deg, rpm, plane, .. } => {
@@ -243,7 +320,7 @@ impl LatheStock {
                 for w in pts.windows(2) {
                     let (a, b) = (w[0], w[1]);
                     if b.z != a.z {
-                        self.cut_thread(a, b, lead_mm, deg, rpm, tool);
+                        self.cut_thread(a, b, lead_mm, deg, rpm, tool, inside);
                     }
                     deg = crate::cycles::thread::phase_after(deg, (b.z - a.z).abs(), lead_mm);
                 }
@@ -251,20 +328,28 @@ impl LatheStock {
             }
             Op::Feed { from, to, .. } if spindle_turning => {
                 self.chuck_check(rec, &from, &to);
-                self.sweep(&[from, to], tool);
+                self.sweep(&[from, to], tool, inside);
             }
             Op::Arc { from, to, .. } if spindle_turning => {
                 self.chuck_check(rec, &from, &to);
                 let half_cell = self.grid.dz_mm / 2.0;
                 let pts = arc_samples(&rec.op, |len| ((len / half_cell).ceil() as usize).clamp(2, 100_000));
-                self.sweep(&pts, tool);
+                self.sweep(&pts, tool, inside);
             }
             Op::Rapid { from, to } => {
                 // Where the rapid starts inside what is left of the stock, the thread's pull-out
                 // before it ended there.
-                let pull_out_inside = after_thread == Some(from) && self.inside(&from);
-                let cut = self.sweep(&[from, to], tool);
-                if cut > CRASH_MM {
+                let pull_out_inside = after_thread == Some(from) && self.in_material(&from);
+                // A rapid crashes when its cutting point goes into the material (the flanks of
+                // the insert's model are wider than a real insert's clearance: a rapid just in
+                // front of the face is no crash); then it cuts what it passes.
+                let into = self.depth_along(&[from, to]);
+                let cut = if into > CRASH_MM { self.sweep(&[from, to], tool, inside).max(into) } else { 0.0 };
+                if cut > CRASH_MM && after_crash == Some(from) {
+                    // Still in the material of the crash just reported.
+                    self.last_crash_end = Some(to);
+                } else if cut > CRASH_MM {
+                    self.last_crash_end = Some(to);
                     let message = match after_thread {
                         Some(_) if pull_out_inside => format!(
                             "a rapid move cuts {cut:.3} mm into the stock: the thread before it ends inside the stock at X{:.3} Z{:.3} (its pull-out, if any, does not bring the tool out)",
@@ -281,16 +366,116 @@ impl LatheStock {
         }
     }
 
-    /// Whether a point lies below the stock's surface as it is now (any angle).
-    fn inside(&self, p: &Vec3) -> bool {
+    /// A drill or tap on the spindle axis: a feed with the spindle turning drills (the bore
+    /// grows to the drill's radius, its point's cone at the bottom); a rapid into material is a
+    /// crash. A live tool (a mill) is not simulated on the lathe stock.
+    fn apply_axial(&mut self, rec: &Record, tool: &Tool, spindle_turning: bool) {
+        if tool.kind == super::ToolKind::Mill || tool.diameter_mm <= 0.0 {
+            return;
+        }
+        let (from, to, rapid) = match rec.op {
+            Op::Feed { from, to, .. } if spindle_turning => (from, to, false),
+            Op::Rapid { from, to } => (from, to, true),
+            _ => return,
+        };
+        if !rapid {
+            self.chuck_check(rec, &from, &to);
+        }
+        let cut = self.drill(&from, &to, tool);
+        if rapid && cut > CRASH_MM {
+            self.findings.push(Finding::at("crash", rec, from, true, None, format!("a rapid move of the drill cuts {cut:.3} mm into the stock")));
+        }
+    }
+
+    /// The drill from `from` to `to` (centred at the larger of their X: off the axis it bores a
+    /// larger hole): every slice it passes gets the bore of its body, the cone of its point at
+    /// the deepest end. Returns the most material removed, radially.
+    fn drill(&mut self, from: &Vec3, to: &Vec3, tool: &Tool) -> f64 {
+        let grid = self.grid;
+        let radius = tool.diameter_mm / 2.0 + from.x.abs().max(to.x.abs());
+        // The point: radius grows by tan(half the point angle) per mm behind the tip.
+        let tan = (tool.point_angle_deg.clamp(1.0, 179.0) / 2.0).to_radians().tan();
+        let tip = from.z.min(to.z);
+        let top = from.z.max(to.z);
+        let (lo, hi) = (grid.cell(tip).max(0), grid.cell(top).min(grid.nz as isize - 1));
+        if lo > hi {
+            return 0.0;
+        }
+        let (lo, hi) = (lo as usize, hi as usize);
+        let deepest = self
+            .inner
+            .par_chunks_mut(grid.nz)
+            .zip(self.outer.par_chunks(grid.nz))
+            .map(|(inner, outer)| {
+                let mut d = 0.0f32;
+                for i in lo..=hi {
+                    let need = (radius.min((grid.z(i) - tip).max(0.0) * tan)) as f32;
+                    if need > inner[i] {
+                        d = d.max(need.min(outer[i]) - inner[i]);
+                        inner[i] = need;
+                    }
+                }
+                d
+            })
+            .reduce(|| 0.0, f32::max);
+        self.updates += ((hi - lo + 1) * grid.ntheta) as u64;
+        self.cut_cells(lo, hi);
+        deepest as f64
+    }
+
+    /// How deep a path of the tool's point goes into the material as it is now: at each point
+    /// the nearer of the bore and the outside, the most at any angle and along the path (0 when
+    /// it stays in the air).
+    fn depth_along(&mut self, path: &[Vec3]) -> f64 {
+        self.refresh_extremes();
+        let g = self.grid;
+        let mut deepest = 0.0f32;
+        for w in path.windows(2) {
+            let len = (w[1].z - w[0].z).abs().max((w[1].x - w[0].x).abs());
+            let n = ((len / (g.dz_mm / 2.0)).ceil() as usize).clamp(1, 10_000_000);
+            for k in 0..=n {
+                let u = k as f64 / n as f64;
+                let c = g.cell(w[0].z + (w[1].z - w[0].z) * u);
+                if c < 0 || c >= g.nz as isize {
+                    continue;
+                }
+                let r = (w[0].x + (w[1].x - w[0].x) * u).abs() as f32;
+                deepest = deepest.max((r - self.least_inner[c as usize]).min(self.most_outer[c as usize] - r));
+            }
+        }
+        deepest as f64
+    }
+
+    /// Whether a path lies nearer the bore than the outside of the material: the most it would
+    /// cut from each side, compared.
+    fn nearer_inside(&mut self, path: &[Vec3]) -> bool {
+        self.refresh_extremes();
+        let g = self.grid;
+        let (mut from_inside, mut from_outside) = (f32::MIN, f32::MIN);
+        for p in path {
+            let c = g.cell(p.z);
+            if c < 0 || c >= g.nz as isize {
+                continue;
+            }
+            let r = p.x.abs() as f32;
+            from_inside = from_inside.max(r - self.least_inner[c as usize]);
+            from_outside = from_outside.max(self.most_outer[c as usize] - r);
+        }
+        from_inside < from_outside
+    }
+
+    /// Whether a point lies in the material as it is now (at any angle): between the bore and
+    /// the outside, by more than the crash tolerance.
+    fn in_material(&self, p: &Vec3) -> bool {
         let c = self.grid.cell(p.z);
         if c < 0 || c >= self.grid.nz as isize {
             return false;
         }
-        let r = p.x as f32;
+        let r = p.x.abs() as f32;
+        let tol = CRASH_MM as f32;
         (0..self.grid.ntheta).any(|j| {
-            let v = self.row(j)[c as usize];
-            if self.internal { r > v + CRASH_MM as f32 } else { r < v - CRASH_MM as f32 }
+            let (inner, outer) = self.material(j, c as usize);
+            r > inner + tol && r < outer - tol
         })
     }
 
@@ -311,19 +496,19 @@ impl LatheStock {
     }
 
     /// A thread record: every column at the places the tool passes it.
-    fn cut_thread(&mut self, from: Vec3, to: Vec3, lead: f64, start_deg: f64, rpm: f64, tool: &Tool) {
+    #[allow(clippy::too_many_arguments)]
+    fn cut_thread(&mut self, from: Vec3, to: Vec3, lead: f64, start_deg: f64, rpm: f64, tool: &Tool, internal: bool) {
         let grid = self.grid;
-        let internal = self.internal;
         let length = (to.z - from.z).abs();
         if length <= 0.0 || lead <= 0.0 {
             return;
         }
         let tip_min = from.x.min(to.x);
         let tip_max = from.x.max(to.x);
-        let table = self.profile_table(tool, if internal { tip_max } else { tip_min });
+        let table = self.profile_table(tool, if internal { tip_max } else { tip_min }, internal);
         let dtheta = grid.dtheta_deg();
-        let updates: u64 = self
-            .r
+        let field = if internal { &mut self.inner } else { &mut self.outer };
+        let updates: u64 = field
             .par_chunks_mut(grid.nz)
             .enumerate()
             .map(|(j, row)| {
@@ -343,16 +528,22 @@ impl LatheStock {
             })
             .sum();
         self.updates += updates;
+        // The cells the tool's profile reached, on either side of the thread.
+        let reach = table.len() as isize;
+        let (a, b) = (grid.cell(from.z.min(to.z)) - reach, grid.cell(from.z.max(to.z)) + reach);
+        if b >= 0 && a < grid.nz as isize {
+            self.cut_cells(a.max(0) as usize, b.min(grid.nz as isize - 1) as usize);
+        }
     }
 
-    /// A cut with the spindle turning along a path: the same on every column. Returns the
-    /// deepest cut.
-    fn sweep(&mut self, path: &[Vec3], tool: &Tool) -> f64 {
+    /// A cut with the spindle turning along a path: the same on every column. Returns the most
+    /// material it removed, radially (a cut in the air of a bore, or below what a parting cut
+    /// left, removes none).
+    fn sweep(&mut self, path: &[Vec3], tool: &Tool, internal: bool) -> f64 {
         let grid = self.grid;
-        let internal = self.internal;
         let mut env = vec![if internal { f32::MIN } else { f32::MAX }; grid.nz];
         let tip = path.iter().map(|p| p.x).fold(if internal { f64::MIN } else { f64::MAX }, |a, b| if internal { a.max(b) } else { a.min(b) });
-        let table = self.profile_table(tool, tip);
+        let table = self.profile_table(tool, tip, internal);
         for w in path.windows(2) {
             let len = (w[1].z - w[0].z).abs().max((w[1].x - w[0].x).abs());
             let n = ((len / (grid.dz_mm / 2.0)).ceil() as usize).clamp(1, 10_000_000);
@@ -363,23 +554,28 @@ impl LatheStock {
                 Self::stamp(&mut env, &grid, &table, internal, z, x);
             }
         }
-        // Only the cells the path can reach: where the tool came below the bar's surface.
-        let surface = if internal { (self.bar.bore_mm / 2.0) as f32 } else { (self.bar.diameter_mm / 2.0) as f32 };
+        // Only the cells the path can reach: where the tool came below the bar's surface (above
+        // the axis, inside).
+        let surface = if internal { 0.0 } else { (self.bar.diameter_mm / 2.0) as f32 };
         let reaches = |e: &f32| if internal { *e > surface } else { *e < surface };
         let (Some(lo), Some(hi)) = (env.iter().position(reaches), env.iter().rposition(reaches)) else {
             return 0.0;
         };
-        let deepest = self
-            .r
+        self.cut_cells(lo, hi);
+        let (cut, other) = if internal { (&mut self.inner, &self.outer) } else { (&mut self.outer, &self.inner) };
+        let deepest = cut
             .par_chunks_mut(grid.nz)
-            .map(|row| {
+            .zip(other.par_chunks(grid.nz))
+            .map(|(row, other)| {
                 let mut d = 0.0f32;
-                for (cell, e) in row[lo..=hi].iter_mut().zip(&env[lo..=hi]) {
+                for ((cell, e), o) in row[lo..=hi].iter_mut().zip(&env[lo..=hi]).zip(&other[lo..=hi]) {
+                    // The material removed lies between the new surface and the old one, within
+                    // what the other surface leaves.
                     if internal && *e > *cell {
-                        d = d.max(*e - *cell);
+                        d = d.max(e.min(*o) - *cell);
                         *cell = *e;
                     } else if !internal && *e < *cell {
-                        d = d.max(*cell - *e);
+                        d = d.max(*cell - e.max(*o));
                         *cell = *e;
                     }
                 }

@@ -53,16 +53,26 @@ pub struct Simulation {
     pub measurement: Measurement,
 }
 
-/// The tools a setup lacks, from what each does (issue 15: a drill at X0 is no threading
-/// insert): one that cuts a thread is a sharp 60-degree threading insert; one that only feeds
-/// along Z on the spindle axis is a drill (not cut in the lathe stock); any other turns, an
-/// 80-degree insert with a 0.4 mm nose radius (docs/commands/simulate.md).
+/// The tools a setup lacks, from what each does (docs/commands/simulate.md):
+/// - one that cuts a thread is a sharp 60-degree threading insert (internal when it threads
+///   inside a bore another tool drilled);
+/// - one that only feeds along Z on the spindle axis is a drill with a 118-degree point, as wide
+///   as the narrowest place a later tool that works inside reaches within its hole (10 mm when
+///   none does);
+/// - any other turns, an 80-degree insert with a 0.4 mm nose radius: a boring bar when it leaves
+///   its cuts toward the axis (its rapids straight after a cut go mostly along X, down), else a
+///   turning tool.
 fn assume_tools(records: &[Record], setup: &Setup) -> Vec<(u32, Tool)> {
     #[derive(Clone, Copy, Default)]
     struct Use {
         threads: bool,
         on_axis_feeds: bool,
         other_cuts: bool,
+        /// Rapids straight after a cut, mostly along X: toward the axis, away from it.
+        leaves_down: u32,
+        leaves_up: u32,
+        /// The drilled range along Z (a drill's feeds): deepest, highest.
+        drilled: Option<(f64, f64)>,
     }
     let mut uses: Vec<(u32, Use)> = Vec::new();
     let mut current = 0u32;
@@ -73,25 +83,64 @@ fn assume_tools(records: &[Record], setup: &Setup) -> Vec<(u32, Tool)> {
             uses.len() - 1
         }
     };
+    let mut after_cut = false;
     for r in records {
         let i = idx(current, &mut uses);
+        let u = &mut uses[i].1;
         match r.op {
             Op::Tool { number, .. } => current = number,
-            Op::Thread { .. } | Op::ThreadArc { .. } => uses[i].1.threads = true,
-            Op::Feed { from, to, .. } if from.x.abs() < 1e-3 && to.x.abs() < 1e-3 && from.z != to.z => uses[i].1.on_axis_feeds = true,
-            Op::Feed { .. } | Op::Arc { .. } => uses[i].1.other_cuts = true,
+            Op::Thread { .. } | Op::ThreadArc { .. } => u.threads = true,
+            Op::Feed { from, to, .. } if from.x.abs() < 1e-3 && to.x.abs() < 1e-3 && from.z != to.z => {
+                u.on_axis_feeds = true;
+                let (lo, hi) = u.drilled.unwrap_or((f64::MAX, f64::MIN));
+                u.drilled = Some((lo.min(from.z).min(to.z), hi.max(from.z).max(to.z)));
+            }
+            Op::Feed { .. } | Op::Arc { .. } => u.other_cuts = true,
+            Op::Rapid { from, to } if after_cut && (to.x - from.x).abs() > (to.z - from.z).abs() => {
+                if to.x < from.x { u.leaves_down += 1 } else { u.leaves_up += 1 }
+            }
             _ => {}
         }
+        after_cut = matches!(r.op, Op::Feed { .. } | Op::Arc { .. } | Op::Thread { .. } | Op::ThreadArc { .. });
     }
-    uses.into_iter()
-        .filter(|(n, u)| !setup.tools.iter().any(|t| t.number == *n) && (u.threads || u.on_axis_feeds || u.other_cuts))
-        .map(|(n, u)| {
+    let is_drill = |u: &Use| u.on_axis_feeds && !u.other_cuts && !u.threads;
+    let inside = |u: &Use| !is_drill(u) && u.leaves_down > u.leaves_up;
+    // A drill is as wide as the narrowest place that a later tool working inside reaches within
+    // its hole (below its top).
+    let drill_diameter = |k: usize, drilled: (f64, f64)| -> f64 {
+        let mut tool = 0u32;
+        let mut seen_drill = false;
+        let mut narrowest = f64::MAX;
+        for r in records {
+            if let Op::Tool { number, .. } = r.op {
+                tool = number;
+            }
+            seen_drill |= tool == uses[k].0;
+            let later_inside = seen_drill && tool != uses[k].0 && uses.iter().any(|(n, u)| *n == tool && (inside(u) || u.threads));
+            if let (true, Some(p)) = (later_inside, r.op.end_point()) {
+                if p.z < drilled.1 && p.z > drilled.0 && p.x > 1e-3 {
+                    narrowest = narrowest.min(2.0 * p.x);
+                }
+            }
+        }
+        if narrowest < f64::MAX { narrowest } else { 10.0 }
+    };
+    let drilled_any = uses.iter().any(|(_, u)| is_drill(u));
+    (0..uses.len())
+        .filter(|&k| {
+            let (n, u) = &uses[k];
+            !setup.tools.iter().any(|t| t.number == *n) && (u.threads || u.on_axis_feeds || u.other_cuts)
+        })
+        .map(|k| {
+            let (n, u) = uses[k];
             let tool = if u.threads {
-                Tool { number: n, ..Tool::default_thread() }
-            } else if u.on_axis_feeds && !u.other_cuts {
-                Tool { number: n, kind: super::ToolKind::Drill, diameter_mm: 10.0, ..Tool::default_thread() }
+                Tool { number: n, internal: drilled_any && u.leaves_down > u.leaves_up, ..Tool::default_thread() }
+            } else if is_drill(&u) {
+                let d = drill_diameter(k, u.drilled.expect("a drill has drilled"));
+                Tool { number: n, kind: super::ToolKind::Drill, diameter_mm: d, ..Tool::default_thread() }
             } else {
-                Tool { number: n, kind: super::ToolKind::Turning, included_angle_deg: 80.0, tip_radius_mm: 0.4, ..Tool::default_thread() }
+                let kind = if inside(&u) { super::ToolKind::Boring } else { super::ToolKind::Turning };
+                Tool { number: n, kind, included_angle_deg: 80.0, tip_radius_mm: 0.4, ..Tool::default_thread() }
             };
             (n, tool)
         })
@@ -288,6 +337,7 @@ pub fn simulate_with(records: &[Record], setup: &Setup, opts: &SimOptions, progr
         ));
     }
     let mut stock = LatheStock::new(bar, internal, dz, ntheta);
+    stock.either_side = assumed.iter().filter(|(_, t)| matches!(t.kind, crate::setup::ToolKind::Turning | crate::setup::ToolKind::Boring)).map(|(n, _)| *n).collect();
     // A turning tool with an imaginary tool nose (its `tip`) is positioned by that point: the
     // stock cuts with the nose, whose lowest point (highest in a bore) lies R x d(tip) and R
     // from it (docs/compensation.md). Without a tip, the record's point is the nose's.
@@ -298,7 +348,7 @@ pub fn simulate_with(records: &[Record], setup: &Setup, opts: &SimOptions, progr
         }
         let r = t.tip_radius_mm;
         let (dx, dz) = crate::comp::tip_direction(tip);
-        let side = if internal { 1.0 } else { -1.0 };
+        let side = if super::lathe::cuts_inside(t) { 1.0 } else { -1.0 };
         Some(crate::motion::Vec3::new(-r * dx + side * r, 0.0, -r * dz))
     };
     // Where the tool is before the first rapid is the machine's business, not the programme's
@@ -416,7 +466,7 @@ fn measure(stock: &LatheStock, records: &[Record], tools: &[Tool]) -> Measuremen
     let n = i_hi - i_lo + 1;
     let empty = || (vec![if internal { f32::MIN } else { f32::MAX }; n], vec![if internal { f32::MAX } else { f32::MIN }; n]);
     let (envelope, crest) = stock
-        .r
+        .measured()
         .par_chunks(g.nz)
         .fold(empty, |(mut env, mut top), row| {
             for ((e, t), &v) in env.iter_mut().zip(top.iter_mut()).zip(&row[i_lo..=i_hi]) {

@@ -43,3 +43,9 @@ pub fn run_with(machine: &str, given: &[&str], switches: Switches, opts: Options
 pub fn run_plain(machine: &str, given: &[&str], text: &str) -> (Vec<Record>, Vec<Diagnostic>) {
     run_with(machine, given, Switches::default(), Options::default(), text)
 }
+
+/// The first alarm of a plain run, if there is one.
+pub fn first_alarm(machine: &str, text: &str) -> Option<Diagnostic> {
+    let (_, d) = run_plain(machine, &[], text);
+    d.into_iter().find(|d| d.is_alarm())
+}
