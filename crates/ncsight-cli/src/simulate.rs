@@ -65,7 +65,7 @@ pub fn json(m: &Measurement) -> String {
         .collect();
     let flanks = m.flank_angles_deg.map(|(a, b)| format!("[{},{}]", num(a, 2), num(b, 2))).unwrap_or_else(|| "null".into());
     format!(
-        "{{\"assumed_tools\":[{}],\"stock_diameter_mm\":{},\"stock_guessed\":{},\"major_diameter_mm\":{},\"minor_diameter_mm\":{},\"depth_mm\":{},\"pitch_mm\":{},\"lead_mm\":{},\"hand\":{},\"starts\":{},\"start_spacing_deg\":{},\"flank_angles_deg\":{flanks},\"full_depth_length_mm\":{},\"runout_length_mm\":{},\"grid\":{{\"dz_mm\":{},\"dtheta_deg\":{},\"cell_updates\":{}}},\"findings\":[{}]}}\n",
+        "{{\"assumed_tools\":[{}],\"stock_diameter_mm\":{},\"stock_guessed\":{},\"major_diameter_mm\":{},\"minor_diameter_mm\":{},\"depth_mm\":{},\"pitch_mm\":{},\"lead_mm\":{},\"hand\":{},\"starts\":{},\"start_spacing_deg\":{},\"flank_angles_deg\":{flanks},\"full_depth_length_mm\":{},\"runout_length_mm\":{},\"grid\":{{\"dz_mm\":{},\"dtheta_deg\":{},\"cell_updates\":{}}},\"profile\":[{}],\"findings\":[{}]}}\n",
         assumed_tools(m).iter().map(|t| json_str(t)).collect::<Vec<_>>().join(","),
         num(m.stock_diameter_mm, 4),
         m.stock_guessed.map(|b| format!("{{\"diameter_mm\":{},\"length_mm\":{},\"front_z_mm\":{},\"bore_mm\":{}}}", num(b.diameter_mm, 4), num(b.length_mm, 4), num(b.front_z_mm, 4), num(b.bore_mm, 4))).unwrap_or_else(|| "null".into()),
@@ -82,6 +82,17 @@ pub fn json(m: &Measurement) -> String {
         num(m.dz_mm, 6),
         num(m.dtheta_deg, 6),
         m.cell_updates,
+        m.profile
+            .iter()
+            .map(|r| format!(
+                "{{\"z_from_mm\":{},\"z_to_mm\":{},\"outer_diameter_mm\":{},\"inner_diameter_mm\":{}}}",
+                num(r.z_from_mm, 4),
+                num(r.z_to_mm, 4),
+                num(r.outer_diameter_mm, 3),
+                num(r.inner_diameter_mm, 3)
+            ))
+            .collect::<Vec<_>>()
+            .join(","),
         findings.join(",")
     )
 }
@@ -150,6 +161,7 @@ pub fn text(m: &Measurement) -> String {
     ));
     line(&mut s, "full-depth length", m.full_depth_length_mm, "mm");
     line(&mut s, "run-out length", m.runout_length_mm, "mm");
+    profile_text(&mut s, &m.profile);
     s.push_str(&format!("{:<22} {} mm x {} deg, {} cell updates\n", "grid", num(m.dz_mm, 5), num(m.dtheta_deg, 4), m.cell_updates));
     if !m.findings.iter().any(|f| f.is_problem()) {
         s.push_str("findings               none\n");
@@ -195,6 +207,51 @@ pub fn options(res: Option<&str>, expect: Option<&str>) -> Result<SimOptions, St
         Some(r) => resolution(r).map(|(a, b)| (Some(a), Some(b))).ok_or_else(|| format!("--resolution {r}: write DZ,DTHETA in mm and degrees, e.g. 0.01,0.5"))?,
         None => (None, None),
     };
-    let expect = expect.map(ncsight::stock::standard::parse).transpose()?;
-    Ok(SimOptions { dz_mm: dz, dtheta_deg: dt, expect })
+    // `bore=D` and `od=D` are sizes; the rest names the thread (`M24x2`, `major=..,minor=..`).
+    let (mut bore, mut od, mut thread) = (None, None, Vec::new());
+    for piece in expect.unwrap_or("").split(',').map(str::trim).filter(|p| !p.is_empty()) {
+        let size = |v: &str| v.trim().parse::<f64>().ok().filter(|d| d.is_finite() && *d > 0.0).ok_or_else(|| format!("--expect {piece}: a diameter in mm"));
+        match piece.split_once('=') {
+            Some(("bore", v)) => bore = Some(size(v)?),
+            Some(("od", v)) => od = Some(size(v)?),
+            _ => thread.push(piece),
+        }
+    }
+    let expect = if thread.is_empty() { None } else { Some(ncsight::stock::standard::parse(&thread.join(","))?) };
+    Ok(SimOptions { dz_mm: dz, dtheta_deg: dt, expect, expect_bore_mm: bore, expect_od_mm: od })
+}
+
+/// The profile for a person: each section of 0.2 mm or longer on a line, the short rows between
+/// them (a radius, a chamfer, a drill's point) as one transition from where they start to where
+/// they end; at most 40 lines (`--format json` has every row).
+fn profile_text(s: &mut String, rows: &[ncsight::stock::lathe::ProfileRow]) {
+    const SECTION_MM: f64 = 0.2;
+    const SHOWN: usize = 40;
+    let size = |r: &ncsight::stock::lathe::ProfileRow| match (r.outer_diameter_mm > 0.0, r.inner_diameter_mm > 0.0) {
+        (false, _) => "no material".to_string(),
+        (true, false) => format!("diameter {}", num(r.outer_diameter_mm, 3)),
+        (true, true) => format!("diameter {}, bore {}", num(r.outer_diameter_mm, 3), num(r.inner_diameter_mm, 3)),
+    };
+    let mut lines: Vec<String> = Vec::new();
+    let mut k = 0;
+    while k < rows.len() {
+        let r = &rows[k];
+        if r.length_mm() >= SECTION_MM {
+            lines.push(format!("Z{} to Z{}: {}", num(r.z_from_mm, 3), num(r.z_to_mm, 3), size(r)));
+            k += 1;
+            continue;
+        }
+        let first = k;
+        while k < rows.len() && rows[k].length_mm() < SECTION_MM {
+            k += 1;
+        }
+        let last = &rows[k - 1];
+        lines.push(format!("Z{} to Z{}: from {} to {}", num(rows[first].z_from_mm, 3), num(last.z_to_mm, 3), size(&rows[first]), size(last)));
+    }
+    for l in lines.iter().take(SHOWN) {
+        s.push_str(&format!("{:<22} {l}\n", "profile"));
+    }
+    if lines.len() > SHOWN {
+        s.push_str(&format!("{:<22} {} more (--format json lists every row)\n", "profile", lines.len() - SHOWN));
+    }
 }

@@ -266,6 +266,26 @@ impl Tool {
     /// angle. `None` beyond the tool's reach is never returned: the flanks go on. A turning or
     /// boring tool with an imaginary tool nose (`tip`) cuts with its nose circle only: the
     /// insert's edges beyond it are clearance, not a symmetric V (docs/compensation.md).
+    /// [`Tool::profile`] on one side of the tip: `chuck_side` toward -Z (where a right-hand
+    /// turning tool's or boring bar's main edge faces as it feeds toward the chuck), else toward
+    /// +Z. A turning tool or boring bar is an 80-degree insert in a 95-degree holder (ISO C in
+    /// PCLNR/S..CLNR, the commonest): its main edge 5 degrees past the radial toward the chuck,
+    /// its end edge 5 degrees off the axis toward the face (180 - 95 - 80), the nose radius
+    /// between (an assumption where the setup gives no shape). Other tools are symmetric.
+    pub fn profile_toward(&self, u: f64, chuck_side: bool) -> f64 {
+        if !matches!(self.kind, ToolKind::Turning | ToolKind::Boring) || (self.tip.is_some() && self.tip_radius_mm > 0.0) {
+            return self.profile(u);
+        }
+        // The edge's angle from the axis: the main edge 85 degrees, the end edge 5.
+        let angle = if chuck_side { 85f64 } else { 5f64 }.to_radians();
+        let (u, rho) = (u.abs(), self.tip_radius_mm);
+        let u_t = rho * angle.sin();
+        if u <= u_t {
+            return rho - (rho * rho - u * u).max(0.0).sqrt();
+        }
+        rho * (1.0 - angle.cos()) + (u - u_t) * angle.tan()
+    }
+
     pub fn profile(&self, u: f64) -> f64 {
         let u = u.abs();
         if self.tip.is_some() && matches!(self.kind, ToolKind::Turning | ToolKind::Boring) && self.tip_radius_mm > 0.0 {

@@ -19,7 +19,7 @@ fn bar(d: f64, l: f64) -> Setup {
 }
 
 fn opts(dz: f64, dtheta: f64) -> SimOptions {
-    SimOptions { dz_mm: Some(dz), dtheta_deg: Some(dtheta), expect: None }
+    SimOptions { dz_mm: Some(dz), dtheta_deg: Some(dtheta), expect: None, ..SimOptions::default() }
 }
 
 #[test]

@@ -106,6 +106,29 @@ pub struct LatheStock {
     pub either_side: Vec<u32>,
 }
 
+/// A run of the part's profile (see [`LatheStock::profile`]), mm; X as diameters.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ProfileRow {
+    pub z_from_mm: f64,
+    pub z_to_mm: f64,
+    pub outer_diameter_mm: f64,
+    pub inner_diameter_mm: f64,
+}
+
+impl ProfileRow {
+    pub fn length_mm(&self) -> f64 {
+        (self.z_from_mm - self.z_to_mm).abs()
+    }
+}
+
+/// A tool's profile on both sides of its tip (see [`LatheStock::profile_table`]).
+struct Tables {
+    /// Toward -Z: cells below the tip's.
+    chuck: Vec<f32>,
+    /// Toward +Z: cells above the tip's.
+    face: Vec<f32>,
+}
+
 /// Whether a tool works inside a bore (raising the inner radius) rather than outside.
 pub fn cuts_inside(tool: &Tool) -> bool {
     tool.internal || tool.kind == super::ToolKind::Boring
@@ -189,46 +212,49 @@ impl LatheStock {
     }
 
     /// The tool's cut surface radius at axial offsets 0, dz, 2dz, ... out to where it leaves
-    /// the stock (a table, so the hot loop only looks it up).
-    fn profile_table(&self, tool: &Tool, tip_r: f64, inside: bool) -> Vec<f32> {
+    /// the stock (a table, so the hot loop only looks it up), on each side of its tip: toward
+    /// the chuck (-Z) and toward the face (+Z).
+    fn profile_table(&self, tool: &Tool, tip_r: f64, inside: bool) -> Tables {
         // Beyond the radial distance to the untouched surface (the axis, inside) the tool cuts
         // nothing.
         let limit = if inside { tip_r } else { self.bar.diameter_mm / 2.0 - tip_r };
-        let mut t = Vec::new();
-        let mut k = 0usize;
-        loop {
-            let p = tool.profile(k as f64 * self.grid.dz_mm);
-            t.push(p as f32);
-            if p > limit.max(0.0) || k > self.grid.nz {
-                break;
+        let side = |chuck_side: bool| {
+            let mut t = Vec::new();
+            let mut k = 0usize;
+            loop {
+                let p = tool.profile_toward(k as f64 * self.grid.dz_mm, chuck_side);
+                t.push(p as f32);
+                if p > limit.max(0.0) || k > self.grid.nz {
+                    break;
+                }
+                k += 1;
             }
-            k += 1;
-        }
-        t
+            t
+        };
+        Tables { chuck: side(true), face: side(false) }
     }
 
     /// Stamp the tool with its tip at (z, radius) on one row; returns how deep it cut the most.
     #[inline]
-    fn stamp(row: &mut [f32], grid: &Grid, table: &[f32], internal: bool, z: f64, tip_r: f64) -> (f32, u64) {
+    fn stamp(row: &mut [f32], grid: &Grid, t: &Tables, internal: bool, z: f64, tip_r: f64) -> (f32, u64) {
         let c = grid.cell(z);
-        let reach = table.len() as isize - 1;
-        let lo = (c - reach).max(0);
-        let hi = (c + reach).min(grid.nz as isize - 1);
+        let lo = (c - (t.chuck.len() as isize - 1)).max(0);
+        let hi = (c + (t.face.len() as isize - 1)).min(grid.nz as isize - 1);
         let mut deepest = 0.0f32;
         let mut n = 0u64;
         let tip = tip_r as f32;
         for i in lo..=hi {
-            let u = (i - c).unsigned_abs();
+            let e = if i < c { t.chuck[(c - i) as usize] } else { t.face[(i - c) as usize] };
             let cell = &mut row[i as usize];
             if internal {
-                let cut = tip - table[u];
+                let cut = tip - e;
                 if cut > *cell {
                     deepest = deepest.max(cut - *cell);
                     *cell = cut;
                     n += 1;
                 }
             } else {
-                let cut = tip + table[u];
+                let cut = tip + e;
                 if cut < *cell {
                     deepest = deepest.max(*cell - cut);
                     *cell = cut;
@@ -243,37 +269,37 @@ impl LatheStock {
     /// tip take the smaller (bore: larger) of themselves and the tool's edge, a branch-free loop
     /// over contiguous cells that the compiler vectorises. Returns the cells visited.
     #[inline]
-    fn stamp_fast(row: &mut [f32], grid: &Grid, table: &[f32], internal: bool, z: f64, tip_r: f64) -> u64 {
+    fn stamp_fast(row: &mut [f32], grid: &Grid, t: &Tables, internal: bool, z: f64, tip_r: f64) -> u64 {
         let c = grid.cell(z);
-        let reach = table.len() as isize - 1;
+        let (reach_face, reach_chuck) = (t.face.len() as isize - 1, t.chuck.len() as isize - 1);
         let n = grid.nz as isize;
-        if c + reach < 0 || c - reach >= n {
+        if c + reach_face < 0 || c - reach_chuck >= n {
             return 0;
         }
         let tip = tip_r as f32;
-        // Right of the tip (including it): table[0..], left: table[1..] going away.
+        // Toward the face (including the tip): face[0..]; toward the chuck: chuck[1..] going away.
         let r_lo = c.max(0);
-        let r_hi = (c + reach).min(n - 1);
-        let l_lo = (c - reach).max(0);
+        let r_hi = (c + reach_face).min(n - 1);
+        let l_lo = (c - reach_chuck).max(0);
         let l_hi = (c - 1).min(n - 1);
         let mut visited = 0u64;
         if r_lo <= r_hi {
             let cells = &mut row[r_lo as usize..=r_hi as usize];
-            let t = &table[(r_lo - c) as usize..];
+            let e = &t.face[(r_lo - c) as usize..];
             if internal {
-                cells.iter_mut().zip(t).for_each(|(v, e)| *v = v.max(tip - e));
+                cells.iter_mut().zip(e).for_each(|(v, e)| *v = v.max(tip - e));
             } else {
-                cells.iter_mut().zip(t).for_each(|(v, e)| *v = v.min(tip + e));
+                cells.iter_mut().zip(e).for_each(|(v, e)| *v = v.min(tip + e));
             }
             visited += cells.len() as u64;
         }
         if l_lo <= l_hi {
             let cells = &mut row[l_lo as usize..=l_hi as usize];
-            let t = &table[(c - l_hi) as usize..];
+            let e = &t.chuck[(c - l_hi) as usize..];
             if internal {
-                cells.iter_mut().rev().zip(t).for_each(|(v, e)| *v = v.max(tip - e));
+                cells.iter_mut().rev().zip(e).for_each(|(v, e)| *v = v.max(tip - e));
             } else {
-                cells.iter_mut().rev().zip(t).for_each(|(v, e)| *v = v.min(tip + e));
+                cells.iter_mut().rev().zip(e).for_each(|(v, e)| *v = v.min(tip + e));
             }
             visited += cells.len() as u64;
         }
@@ -388,15 +414,18 @@ impl LatheStock {
     }
 
     /// The drill from `from` to `to` (centred at the larger of their X: off the axis it bores a
-    /// larger hole): every slice it passes gets the bore of its body, the cone of its point at
-    /// the deepest end. Returns the most material removed, radially.
+    /// larger hole): every slice from its deepest point out to the face gets the bore of its
+    /// body, the cone of its point at the deepest end. Returns the most material removed,
+    /// radially.
     fn drill(&mut self, from: &Vec3, to: &Vec3, tool: &Tool) -> f64 {
         let grid = self.grid;
         let radius = tool.diameter_mm / 2.0 + from.x.abs().max(to.x.abs());
         // The point: radius grows by tan(half the point angle) per mm behind the tip.
         let tan = (tool.point_angle_deg.clamp(1.0, 179.0) / 2.0).to_radians().tan();
+        // The drill's body stands behind its tip all the way out of the part: every slice from
+        // the tip to the face is where the body is (long drills; a stubby one stops short).
         let tip = from.z.min(to.z);
-        let top = from.z.max(to.z);
+        let top = from.z.max(to.z).max(self.bar.front_z_mm);
         let (lo, hi) = (grid.cell(tip).max(0), grid.cell(top).min(grid.nz as isize - 1));
         if lo > hi {
             return 0.0;
@@ -444,6 +473,25 @@ impl LatheStock {
             }
         }
         deepest as f64
+    }
+
+    /// The part's profile from the face toward the chuck: for each run of Z cells alike, the
+    /// largest outer diameter at any angle (a thread's major diameter) and the smallest bore
+    /// (0 where solid to the axis); a slice with no material left has both 0.
+    pub fn profile(&mut self) -> Vec<ProfileRow> {
+        self.refresh_extremes();
+        let g = self.grid;
+        let mut rows: Vec<ProfileRow> = Vec::new();
+        for i in (0..g.nz).rev() {
+            let (inner, outer) = (self.least_inner[i] as f64, self.most_outer[i] as f64);
+            let (od, id) = if outer > inner + 1e-6 { (2.0 * outer, 2.0 * inner.max(0.0)) } else { (0.0, 0.0) };
+            let (od, id) = ((od * 1e3).round() / 1e3, (id * 1e3).round() / 1e3);
+            match rows.last_mut() {
+                Some(r) if r.outer_diameter_mm == od && r.inner_diameter_mm == id => r.z_to_mm = g.z(i),
+                _ => rows.push(ProfileRow { z_from_mm: g.z(i), z_to_mm: g.z(i), outer_diameter_mm: od, inner_diameter_mm: id }),
+            }
+        }
+        rows
     }
 
     /// Whether a path lies nearer the bore than the outside of the material: the most it would
@@ -529,8 +577,7 @@ impl LatheStock {
             .sum();
         self.updates += updates;
         // The cells the tool's profile reached, on either side of the thread.
-        let reach = table.len() as isize;
-        let (a, b) = (grid.cell(from.z.min(to.z)) - reach, grid.cell(from.z.max(to.z)) + reach);
+        let (a, b) = (grid.cell(from.z.min(to.z)) - table.chuck.len() as isize, grid.cell(from.z.max(to.z)) + table.face.len() as isize);
         if b >= 0 && a < grid.nz as isize {
             self.cut_cells(a.max(0) as usize, b.min(grid.nz as isize - 1) as usize);
         }

@@ -17,6 +17,9 @@ pub struct SimOptions {
     /// Grid spacing around, degrees (default 0.5).
     pub dtheta_deg: Option<f64>,
     pub expect: Option<Expected>,
+    /// `--expect bore=D` and `od=D`: the diameter of the longest bore, of the longest outside.
+    pub expect_bore_mm: Option<f64>,
+    pub expect_od_mm: Option<f64>,
 }
 
 /// What was measured.
@@ -45,6 +48,8 @@ pub struct Measurement {
     pub cell_updates: u64,
     /// The stock when it was guessed from the programme (no `--stock`, no setup stock).
     pub stock_guessed: Option<Bar>,
+    /// The part's profile from the face toward the chuck.
+    pub profile: Vec<super::lathe::ProfileRow>,
 }
 
 /// A simulation: the stock after the programme and its measurement.
@@ -368,6 +373,8 @@ pub fn simulate_with(records: &[Record], setup: &Setup, opts: &SimOptions, progr
         deviation(&mut m, e, dz, records.iter().rev().find(|r| r.op.is_thread()));
     }
     m.findings.splice(0..0, stock.findings.iter().cloned());
+    m.profile = stock.profile();
+    sizes(&mut m, opts);
     if guessed {
         m.stock_guessed = Some(bar);
         // A chuck found against a stock nobody gave may not be there: said with each finding.
@@ -387,6 +394,27 @@ fn shifted(r: &Record, d: crate::motion::Vec3) -> Record {
         other => other,
     };
     Record { op, ..r.clone() }
+}
+
+/// `--expect bore=D` / `od=D`: the diameter over the longest section of that kind (a bore: the
+/// inner diameter where there is one; the outside: where there is material) within 0.02 mm.
+fn sizes(m: &mut Measurement, opts: &SimOptions) {
+    let longest = |inside: bool| {
+        m.profile
+            .iter()
+            .filter(|r| r.outer_diameter_mm > 0.0 && (!inside || r.inner_diameter_mm > 0.0))
+            .max_by(|a, b| a.length_mm().total_cmp(&b.length_mm()))
+            .map(|r| if inside { r.inner_diameter_mm } else { r.outer_diameter_mm })
+    };
+    for (what, want, inside) in [("bore", opts.expect_bore_mm, true), ("outside diameter", opts.expect_od_mm, false)] {
+        let Some(want) = want else { continue };
+        let message = match longest(inside) {
+            Some(got) if (got - want).abs() <= 0.02 => continue,
+            Some(got) => format!("{what} {got:.3} mm over its longest section, {want:.3} mm expected ({:+.3} mm)", got - want),
+            None => format!("no {what} to compare with {want:.3} mm"),
+        };
+        m.findings.push(Finding { kind: "deviation", line: 0, message, at: None });
+    }
 }
 
 fn deviation(m: &mut Measurement, e: &Expected, dz: f64, last_thread: Option<&Record>) {

@@ -1,0 +1,116 @@
+//! The lathe stock holds its inside (issue 33): a drilled, bored and turned part, a crash in a
+//! bore, a part parted off, and cutting only ever removes material. Sizes are checked within one
+//! cell of the grid (0.02 mm on a diameter at dz = 0.01 mm: the nose's and the drill's samples).
+
+use ncsight::stock::measure::{simulate, SimOptions};
+use ncsight::stock::{Bar, Setup};
+use ncsight::Record;
+
+mod common;
+
+fn records(text: &str) -> Vec<Record> {
+    let (records, diags) = common::run_plain("gsk980tdi", &[], text);
+    assert!(diags.iter().all(|d| !d.is_alarm()), "{diags:?}");
+    records
+}
+
+/// A Ø40 x 50 bar, face at Z0, and the tools given where `tools` says (TOML).
+fn setup(tools: &str) -> Setup {
+    let mut s = Setup::from_toml(tools).unwrap();
+    s.stock = Some(Bar { diameter_mm: 40.0, length_mm: 50.0, bore_mm: 0.0, front_z_mm: 0.0 });
+    s
+}
+
+fn opts() -> SimOptions {
+    SimOptions { dz_mm: Some(0.01), dtheta_deg: Some(5.0), ..SimOptions::default() }
+}
+
+/// Drill Ø16 to Z-30 (T01), bore to Ø18 to Z-25 (T02, retracting toward the axis), turn the
+/// outside to Ø38 to Z-30 (T03).
+const PART: &str = "G99 M03 S600\nT0101\nG00 X0. Z2.\nG01 Z-30. F0.1\nG00 Z2.\nT0202\nG00 X18. Z2.\nG01 Z-25. F0.1\nG00 X16.\nG00 Z2.\nT0303\nG00 X42. Z2.\nG01 X38. F0.2\nG01 Z-30.\nG00 X42.\nG00 X100. Z100.\nM30\n";
+
+const TOOLS: &str = "[[tool]]\nnumber = 1\nkind = \"drill\"\ndiameter_mm = 16.0\n[[tool]]\nnumber = 2\nkind = \"boring\"\ntip_radius_mm = 0.4\nincluded_angle_deg = 80.0\n[[tool]]\nnumber = 3\nkind = \"turning\"\ntip_radius_mm = 0.4\nincluded_angle_deg = 80.0\n";
+
+/// By hand: from the face, Ø38 with a Ø18 bore down to Z-25 (the boring bar's main edge stops
+/// there, 5 degrees past the radial, its nose rounding the corner); below, the Ø16 drill's
+/// 118-degree point (8 / tan 59 = 4.807 mm of cone above the tip at Z-30: at Z-26, 4 mm above
+/// the tip, Ø 2 x 4 x tan 59 = 13.314); the outside Ø38 to Z-30, Ø40 beyond. No finding.
+#[test]
+fn a_drilled_bored_and_turned_part_is_measured_inside_and_out() {
+    for tools in [TOOLS, ""] {
+        let sim = simulate(&records(PART), &setup(tools), &SimOptions { expect_bore_mm: Some(18.0), expect_od_mm: Some(38.0), ..opts() }).unwrap();
+        let m = &sim.measurement;
+        assert!(m.findings.is_empty(), "tools {tools:?}: {:?}", m.findings);
+        let at = |z: f64| m.profile.iter().find(|r| r.z_from_mm + 0.005 >= z && z >= r.z_to_mm - 0.005).copied().unwrap_or_else(|| panic!("no row at Z{z}"));
+        let near = |a: f64, b: f64| (a - b).abs() <= 0.02;
+        let r = at(-10.0);
+        assert!(near(r.outer_diameter_mm, 38.0) && near(r.inner_diameter_mm, 18.0), "{r:?}");
+        // The bar's 0.4 mm nose rounds the bottom of the bore: 0.1 mm below Z-25 the bore is
+        // Ø 2 x (9 - (0.4 - sqrt(0.4^2 - 0.1^2))) = 17.975, above the drill's Ø16.
+        let r = at(-25.1);
+        assert!(near(r.outer_diameter_mm, 38.0) && near(r.inner_diameter_mm, 2.0 * (9.0 - (0.4 - (0.16f64 - 0.01).sqrt()))), "{r:?}");
+        let cone = |above_tip: f64| 2.0 * above_tip * 59f64.to_radians().tan();
+        let r = at(-26.0);
+        assert!(near(r.inner_diameter_mm, cone(4.0)), "{r:?}");
+        let r = at(-28.0);
+        assert!(near(r.inner_diameter_mm, cone(2.0)), "{r:?}");
+        let r = at(-40.0);
+        assert!(near(r.outer_diameter_mm, 40.0) && r.inner_diameter_mm == 0.0, "{r:?}");
+    }
+}
+
+/// The same part with the boring bar's retract moved into the wall (X16 -> X22: 2 mm into the
+/// Ø18 bore's wall), line 9: one crash, at that line, and none for the rapid that follows from
+/// there.
+#[test]
+fn a_retract_into_the_bore_wall_is_one_crash() {
+    for tools in [TOOLS, ""] {
+        let sim = simulate(&records(&PART.replace("G00 X16.\n", "G00 X22.\n")), &setup(tools), &opts()).unwrap();
+        let crashes: Vec<_> = sim.measurement.findings.iter().filter(|f| f.kind == "crash").collect();
+        assert_eq!(crashes.len(), 1, "tools {tools:?}: {crashes:?}");
+        assert_eq!(crashes[0].line, 9);
+        assert!(crashes[0].message.contains("cuts 2.000 mm into the stock"), "{}", crashes[0].message);
+    }
+}
+
+/// A drill rapids into the face (no hole there yet): a crash.
+#[test]
+fn a_drill_rapid_into_the_face_is_a_crash() {
+    let text = "G99 M03 S600\nT0101\nG00 X0. Z2.\nG00 Z-5.\nG01 Z-30. F0.1\nG00 Z2.\nM30\n";
+    let sim = simulate(&records(text), &setup(TOOLS), &opts()).unwrap();
+    let crashes: Vec<_> = sim.measurement.findings.iter().filter(|f| f.kind == "crash").collect();
+    assert_eq!(crashes.len(), 1, "{crashes:?}");
+    assert_eq!(crashes[0].line, 4);
+}
+
+/// A part drilled Ø16 to Z-45, then cut off at Z-20 by a tool fed from outside to X15, inside
+/// the bore: at Z-20 no material is left (the part is parted), and the profile says so.
+#[test]
+fn a_parting_cut_leaves_no_material() {
+    let text = "G99 M03 S600\nT0101\nG00 X0. Z2.\nG01 Z-45. F0.1\nG00 Z2.\nT0303\nG00 X42.\nG00 Z-20.\nG01 X15. F0.05\nG00 X42.\nM30\n";
+    let sim = simulate(&records(text), &setup(TOOLS), &opts()).unwrap();
+    assert!(sim.measurement.findings.is_empty(), "{:?}", sim.measurement.findings);
+    let cut = sim.measurement.profile.iter().find(|r| r.z_from_mm >= -20.0 && -20.0 >= r.z_to_mm).unwrap();
+    assert_eq!((cut.outer_diameter_mm, cut.inner_diameter_mm), (0.0, 0.0), "{cut:?}");
+}
+
+/// Cutting only removes material: after every record, no cell's outside grew and no bore
+/// shrank; and a move cut twice removes what it removes once.
+#[test]
+fn material_only_decreases_and_a_move_cut_twice_cuts_once() {
+    let recs = records(PART);
+    let s = setup(TOOLS);
+    let once = simulate(&recs, &s, &opts()).unwrap();
+    let mut twice_recs = Vec::new();
+    for r in &recs {
+        twice_recs.push(r.clone());
+        if matches!(r.op, ncsight::motion::Op::Feed { .. }) {
+            twice_recs.push(r.clone());
+        }
+    }
+    let twice = simulate(&twice_recs, &s, &opts()).unwrap();
+    assert_eq!(once.stock.outer, twice.stock.outer);
+    assert_eq!(once.stock.inner, twice.stock.inner);
+    let full = (40.0f32 / 2.0, 0.0f32);
+    assert!(once.stock.outer.iter().all(|r| *r <= full.0) && once.stock.inner.iter().all(|r| *r >= full.1));
+}
