@@ -114,3 +114,27 @@ fn material_only_decreases_and_a_move_cut_twice_cuts_once() {
     let full = (40.0f32 / 2.0, 0.0f32);
     assert!(once.stock.outer.iter().all(|r| *r <= full.0) && once.stock.inner.iter().all(|r| *r >= full.1));
 }
+
+/// Drilled Ø16, bored Ø18.376 (the minor diameter of M20x1.5 inside), an internal groove 3 mm
+/// wide to Ø22 at Z-10 to Z-13 (a groove tool working inside: its 3 mm flat is centred on its
+/// programmed point, Z-11.5, as ncsight models a flat tip), then an internal G92 M20x1.5
+/// thread from Z5 to Z-8 in four passes out to X20: the thread's major Ø20, minor Ø18.376,
+/// pitch 1.5 measured on the bore within one cell (dz 0.005 mm from the lead); the groove
+/// Ø22; the bore Ø18.376 below it. No finding.
+#[test]
+fn an_internal_groove_and_thread_are_measured_on_the_bore() {
+    let text = "G99 M03 S600\nT0101\nG00 X0. Z2.\nG01 Z-30. F0.1\nG00 Z2.\nT0202\nG00 X18.376 Z2.\nG01 Z-25. F0.1\nG00 X16.\nG00 Z2.\nT0303\nG00 X17. Z2.\nG00 Z-11.5\nG01 X22. F0.05\nG00 X17.\nG00 Z2.\nT0404\nG00 X17. Z5.\nG92 X18.8 Z-8. F1.5\nX19.3\nX19.7\nX20.\nX20.\nG00 X100. Z100.\nM30\n";
+    let tools = format!("{TOOLS}[[tool]]\nnumber = 3\nkind = \"groove\"\ninternal = true\nincluded_angle_deg = 2.0\ntip_flat_mm = 3.0\n[[tool]]\nnumber = 4\nkind = \"thread\"\ninternal = true\nincluded_angle_deg = 60.0\n");
+    let tools = tools.replace("number = 3\nkind = \"turning\"\ntip_radius_mm = 0.4\nincluded_angle_deg = 80.0\n", "number = 5\nkind = \"turning\"\n");
+    let sim = simulate(&records(text), &setup(&tools), &SimOptions { dz_mm: None, dtheta_deg: Some(2.0), ..SimOptions::default() }).unwrap();
+    let m = &sim.measurement;
+    assert!(m.findings.is_empty(), "{:?}", m.findings);
+    let cell = 2.0 * m.dz_mm + 0.002;
+    assert!((m.major_diameter_mm.unwrap() - 20.0).abs() <= cell, "{m:?}");
+    assert!((m.minor_diameter_mm.unwrap() - 18.376).abs() <= cell, "{m:?}");
+    assert!((m.pitch_mm.unwrap() - 1.5).abs() <= m.dz_mm + 0.001, "{m:?}");
+    let at = |z: f64| m.profile.iter().find(|r| r.z_from_mm + m.dz_mm / 2.0 >= z && z >= r.z_to_mm - m.dz_mm / 2.0).copied().unwrap();
+    assert!((at(-11.5).inner_diameter_mm - 22.0).abs() <= 0.02, "{:?}", at(-11.5));
+    assert!((at(-18.0).inner_diameter_mm - 18.376).abs() <= 0.02, "{:?}", at(-18.0));
+    assert!((at(-18.0).outer_diameter_mm - 40.0).abs() <= 0.02);
+}
