@@ -111,15 +111,44 @@ pub fn mill_json(sim: &ncsight::stock::measure::MillSimulation) -> String {
         .iter()
         .map(finding_json)
         .collect();
-    format!("{{\"holes\":[{}],\"grid\":{{\"cell_mm\":{}}},\"findings\":[{}]}}\n", holes.join(","), num(sim.stock.cell_mm, 4), findings.join(","))
+    let floors: Vec<String> = sim.stock.floors().iter().map(|(z, a)| format!("{{\"z_mm\":{},\"area_mm2\":{}}}", num(*z, 3), num(*a, 2))).collect();
+    let assumed: Vec<String> = mill_assumed(sim).iter().map(|t| json_str(t)).collect();
+    format!(
+        "{{\"assumed_tools\":[{}],\"holes\":[{}],\"floors\":[{}],\"removed_mm3\":{},\"grid\":{{\"cell_mm\":{}}},\"findings\":[{}]}}\n",
+        assumed.join(","),
+        holes.join(","),
+        floors.join(","),
+        num(sim.stock.removed_mm3(), 1),
+        num(sim.stock.cell_mm, 4),
+        findings.join(",")
+    )
+}
+
+/// A machining centre's assumed tools, for a person.
+fn mill_assumed(sim: &ncsight::stock::measure::MillSimulation) -> Vec<String> {
+    sim.assumed_tools
+        .iter()
+        .map(|(n, t)| match t.kind {
+            ToolKind::Mill => format!("T{n}: flat end mill {} mm", num(t.diameter_mm, 3)),
+            _ => format!("T{n}: drill {} mm, {}-degree point", num(t.diameter_mm, 3), num(t.point_angle_deg, 1)),
+        })
+        .collect()
 }
 
 /// A drilling simulation for a person.
 pub fn mill_text(sim: &ncsight::stock::measure::MillSimulation) -> String {
-    let mut s = format!("{} hole(s) on a {} mm grid\n", sim.holes.len(), num(sim.stock.cell_mm, 4));
+    let mut s = String::new();
+    for t in mill_assumed(sim) {
+        s.push_str(&format!("tool assumed: {t}\n"));
+    }
+    s.push_str(&format!("{} hole(s) on a {} mm grid\n", sim.holes.len(), num(sim.stock.cell_mm, 4)));
     for h in &sim.holes {
         s.push_str(&format!("hole at X{} Y{}: depth {} mm, diameter {} mm\n", num(h.x, 3), num(h.y, 3), num(h.depth_mm, 3), num(h.diameter_mm, 3)));
     }
+    for (z, area) in sim.stock.floors().iter().take(20) {
+        s.push_str(&format!("floor at Z{}: {} mm2\n", num(*z, 3), num(*area, 1)));
+    }
+    s.push_str(&format!("removed {} mm3\n", num(sim.stock.removed_mm3(), 1)));
     for f in &sim.findings {
         s.push_str(&finding_text(f, false));
     }

@@ -235,6 +235,25 @@ pub struct Tool {
     /// Drill point angle, degrees.
     #[serde(default = "one_eighteen")]
     pub point_angle_deg: f64,
+    /// A milling cutter's end (`kind = "mill"`): flat, ball or bull (a corner radius).
+    #[serde(default)]
+    pub shape: MillShape,
+    /// A bull-nose mill's corner radius, mm.
+    #[serde(default)]
+    pub corner_radius_mm: f64,
+}
+
+/// The end of a milling cutter.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Default)]
+#[serde(rename_all = "lowercase")]
+pub enum MillShape {
+    /// A flat end mill.
+    #[default]
+    Flat,
+    /// A ball-nose mill (its radius the cutter's).
+    Ball,
+    /// A bull-nose (toroidal) mill: flat with `corner_radius_mm` corners.
+    Bull,
 }
 
 fn sixty() -> f64 {
@@ -258,7 +277,29 @@ impl Tool {
             internal: false,
             diameter_mm: 0.0,
             point_angle_deg: 118.0,
+            shape: MillShape::Flat,
+            corner_radius_mm: 0.0,
         }
+    }
+
+    /// How far above the tool's tip its end is at distance `d` from its axis (a mill or a drill
+    /// cutting along Z), mm; None beyond its radius.
+    pub fn end_height(&self, d: f64) -> Option<f64> {
+        let r = self.diameter_mm / 2.0;
+        if d > r + 1e-9 {
+            return None;
+        }
+        Some(match (self.kind, self.shape) {
+            (ToolKind::Mill, MillShape::Flat) => 0.0,
+            (ToolKind::Mill, MillShape::Ball) => r - (r * r - d * d).max(0.0).sqrt(),
+            (ToolKind::Mill, MillShape::Bull) => {
+                let rc = self.corner_radius_mm.clamp(0.0, r);
+                let flat = r - rc;
+                if d <= flat { 0.0 } else { rc - (rc * rc - (d - flat).powi(2)).max(0.0).sqrt() }
+            }
+            // A drill or a tap: the cone of its point.
+            _ => d / (self.point_angle_deg.clamp(1.0, 179.0) / 2.0).to_radians().tan(),
+        })
     }
 
     /// How far the cut surface lies from the tip's radius at axial distance `u` from the tip

@@ -211,38 +211,37 @@ pub struct MillSimulation {
     pub stock: super::mill::MillStock,
     pub holes: Vec<super::mill::Hole>,
     pub findings: Vec<Finding>,
+    /// The tools the setup does not describe, as assumed from what they do.
+    pub assumed_tools: Vec<(u32, Tool)>,
 }
 
 /// Run a machining centre's records through a block (G17 drilling). Without a block in the
 /// setup: the holes' extent plus 10 mm around, its top at Z0, 5 mm below the deepest hole.
 pub fn simulate_mill(records: &[Record], setup: &Setup, cell_mm: Option<f64>) -> Result<MillSimulation, String> {
-    let plunges: Vec<(f64, f64, f64)> = records
-        .iter()
-        .filter_map(|r| match r.op {
-            Op::Feed { from, to, .. } if from.x == to.x && from.y == to.y && to.z < from.z => Some((to.x, to.y, to.z)),
-            _ => None,
-        })
-        .collect();
+    // What the cutting moves reach: their end points.
+    let cuts: Vec<crate::motion::Vec3> = records.iter().filter(|r| matches!(r.op, Op::Feed { .. } | Op::Arc { .. })).filter_map(|r| r.op.end_point()).collect();
     let block = match setup.block {
         Some(b) => b,
-        None if !plunges.is_empty() => {
-            let f = |k: usize, min: bool| plunges.iter().map(|p| [p.0, p.1, p.2][k]).fold(if min { f64::MAX } else { f64::MIN }, if min { f64::min } else { f64::max });
-            super::mill::Block { min_mm: [f(0, true) - 10.0, f(1, true) - 10.0, f(2, true) - 5.0], max_mm: [f(0, false) + 10.0, f(1, false) + 10.0, 0.0] }
+        None if !cuts.is_empty() => {
+            let f = |k: usize, min: bool| cuts.iter().map(|p| p.axis(k)).fold(if min { f64::MAX } else { f64::MIN }, if min { f64::min } else { f64::max });
+            super::mill::Block { min_mm: [f(0, true) - 10.0, f(1, true) - 10.0, f(2, true).min(0.0) - 5.0], max_mm: [f(0, false) + 10.0, f(1, false) + 10.0, 0.0] }
         }
-        None => return Err("no block: give one in the setup ([block] min_mm, max_mm); the programme drills nothing to infer it from".into()),
+        None => return Err("no block: give one in the setup ([block] min_mm, max_mm); the programme cuts nothing to infer it from".into()),
     };
     let cell = cell_mm.unwrap_or(0.1);
     let cells = ((block.max_mm[0] - block.min_mm[0]) / cell) * ((block.max_mm[1] - block.min_mm[1]) / cell);
     if !(cell > 0.0) || cells > 100e6 {
         return Err(format!("a grid of {cells:.0} cells: coarsen --resolution"));
     }
+    let assumed = assume_mill_tools(records, setup, block.max_mm[2]);
+    let tool_for = |n: u32| assumed.iter().find(|(m, _)| *m == n).map(|(_, t)| *t).unwrap_or_else(|| setup.mill_tool(n));
     let mut stock = super::mill::MillStock::new(block, cell);
-    let mut tool = setup.mill_tool(0);
+    let mut tool = tool_for(0);
     let mut turning = false;
     let first_rapid = records.iter().position(|r| matches!(r.op, Op::Rapid { .. })).unwrap_or(0);
     for (k, r) in records.iter().enumerate() {
         match r.op {
-            Op::Tool { number, .. } => tool = setup.mill_tool(number),
+            Op::Tool { number, .. } => tool = tool_for(number),
             Op::Spindle { rpm, .. } => turning = rpm != 0.0,
             _ if k > first_rapid => stock.apply(r, &tool, turning),
             _ => {}
@@ -250,7 +249,38 @@ pub fn simulate_mill(records: &[Record], setup: &Setup, cell_mm: Option<f64>) ->
     }
     let holes = stock.holes();
     let findings = std::mem::take(&mut stock.findings);
-    Ok(MillSimulation { stock, holes, findings })
+    Ok(MillSimulation { stock, holes, findings, assumed_tools: assumed })
+}
+
+/// The tools of a machining centre the setup lacks, from what each does: one that only feeds
+/// along Z is a 5 mm drill with a 118-degree point (as before); one that feeds across below the
+/// block's top (`top_z`) is a 10 mm flat end mill (docs/commands/simulate.md).
+fn assume_mill_tools(records: &[Record], setup: &Setup, top_z: f64) -> Vec<(u32, Tool)> {
+    let mut across: Vec<(u32, bool)> = Vec::new();
+    let mut current = 0u32;
+    for r in records {
+        let (from, to) = match r.op {
+            Op::Tool { number, .. } => {
+                current = number;
+                continue;
+            }
+            Op::Feed { from, to, .. } | Op::Arc { from, to, .. } => (from, to),
+            _ => continue,
+        };
+        let sideways = (matches!(r.op, Op::Arc { .. }) || (from.x - to.x).abs() > 1e-9 || (from.y - to.y).abs() > 1e-9) && from.z.min(to.z) < top_z;
+        match across.iter_mut().find(|(n, _)| *n == current) {
+            Some((_, a)) => *a |= sideways,
+            None => across.push((current, sideways)),
+        }
+    }
+    across
+        .into_iter()
+        .filter(|(n, _)| !setup.tools.iter().any(|t| t.number == *n))
+        .map(|(n, sideways)| {
+            let tool = if sideways { Tool { number: n, kind: crate::setup::ToolKind::Mill, diameter_mm: 10.0, ..Tool::default_thread() } } else { Tool { number: n, ..setup.mill_tool(n) } };
+            (n, tool)
+        })
+        .collect()
 }
 
 /// Run the records through the stock and measure.

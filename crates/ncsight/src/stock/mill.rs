@@ -1,8 +1,10 @@
-//! Mill stock for the drilling cycles (issue 7): a top-view height field, the top of the material
-//! at every (x, y) of a grid over the block. A feed along Z with the spindle turning removes
-//! what the drill sweeps: a cylinder of its diameter ending in the cone of its point angle.
-//! Only moves along Z are cut (the drilling cycles' feeds); a rapid that goes into material is a
-//! crash; the holes are measured from the cut surface.
+//! Mill stock: a top-view height field (dexels standing on a grid over the block), the top of
+//! the material at every (x, y). Every move of the tool sweeps its end along the path, sampled
+//! at half a cell: a flat, ball or bull-nose mill's end, a drill's cone; lines, arcs and
+//! helices in any plane (the tool's axis is Z). A cell is cut where the tool's end passes over
+//! its centre, so a wall stands within one cell of where it should (the error bound). A rapid
+//! whose tool end goes into material is a crash; a cut with the spindle stopped is a `spindle`
+//! finding. The holes, the floors and the volume removed are measured from the cut surface.
 
 use super::lathe::Finding;
 use super::Tool;
@@ -20,6 +22,12 @@ pub struct Hole {
     /// Across the cut at the top.
     pub diameter_mm: f64,
 }
+
+/// The least area of a floor, mm² (a 3 mm slot 3.3 mm long).
+pub const FLOOR_MM2: f64 = 10.0;
+
+/// How deep a move may touch the material without it counting (a rounding of the grid), mm.
+const CUT_MM: f64 = 0.01;
 
 pub struct MillStock {
     pub block: Block,
@@ -44,66 +52,115 @@ impl MillStock {
         (self.block.min_mm[0] + (i as f64 + 0.5) * self.cell_mm, self.block.min_mm[1] + (j as f64 + 0.5) * self.cell_mm)
     }
 
-    /// Cut a drill with its tip at `p`; returns how deep it went into material.
-    fn plunge(&mut self, p: &Vec3, tool: &Tool) -> f64 {
+    /// The tool's end with its tip at `p`: how deep it reaches into the material at the most;
+    /// with `cut`, the material there is removed.
+    fn stamp(&mut self, p: &Vec3, tool: &Tool, cut: bool) -> f64 {
         let r = (tool.diameter_mm / 2.0).max(self.cell_mm / 2.0);
-        let cot = 1.0 / (tool.point_angle_deg.clamp(1.0, 179.0) / 2.0).to_radians().tan();
-        let (i0, i1) = (((p.x - r - self.block.min_mm[0]) / self.cell_mm).floor().max(0.0) as usize, ((p.x + r - self.block.min_mm[0]) / self.cell_mm).ceil().max(0.0) as usize);
-        let (j0, j1) = (((p.y - r - self.block.min_mm[1]) / self.cell_mm).floor().max(0.0) as usize, ((p.y + r - self.block.min_mm[1]) / self.cell_mm).ceil().max(0.0) as usize);
+        let cell = self.cell_mm;
+        let to_index = |v: f64, min: f64| ((v - min) / cell).floor();
+        let (i0, i1) = (to_index(p.x - r, self.block.min_mm[0]).max(0.0) as usize, to_index(p.x + r, self.block.min_mm[0]) + 1.0);
+        let (j0, j1) = (to_index(p.y - r, self.block.min_mm[1]).max(0.0) as usize, to_index(p.y + r, self.block.min_mm[1]) + 1.0);
+        if i1 < 0.0 || j1 < 0.0 {
+            return 0.0;
+        }
+        let (i1, j1) = ((i1 as usize).min(self.nx), (j1 as usize).min(self.ny));
         let mut deepest = 0.0f64;
-        for j in j0..j1.min(self.ny) {
-            for i in i0..i1.min(self.nx) {
+        for j in j0..j1 {
+            for i in i0..i1 {
                 let (cx, cy) = self.centre(i, j);
                 let d = ((cx - p.x).powi(2) + (cy - p.y).powi(2)).sqrt();
-                if d > r {
-                    continue;
-                }
-                let z = (p.z + d * cot) as f32;
-                let cell = &mut self.top[j * self.nx + i];
-                if z < *cell {
-                    deepest = deepest.max((*cell - z) as f64);
-                    *cell = z;
+                // A tool narrower than a cell still cuts the cell it stands in.
+                let Some(h) = tool.end_height(d.min(tool.diameter_mm / 2.0)).filter(|_| d <= r) else { continue };
+                let z = (p.z + h) as f32;
+                let top = &mut self.top[j * self.nx + i];
+                if z < *top {
+                    deepest = deepest.max((*top - z) as f64);
+                    if cut {
+                        *top = z;
+                    }
                 }
             }
         }
         deepest
     }
 
-    /// Apply one record (G17 drilling along Z).
+    /// The points of a move's path, at most half a cell apart (an arc or a helix along its
+    /// curve).
+    fn path(&self, op: &Op) -> Vec<Vec3> {
+        let half = self.cell_mm / 2.0;
+        match *op {
+            Op::Arc { from, to, plane, dir, .. } => match crate::geom::arc_geom_of(op) {
+                Some(g) => {
+                    let n = ((crate::geom::arc_length(&from, &to, plane, &g) / half).ceil() as usize).clamp(1, 10_000_000);
+                    (0..=n).map(|k| crate::geom::arc_point(&from, &to, plane, dir, &g, k as f64 / n as f64)).collect()
+                }
+                None => vec![from, to],
+            },
+            _ => match (op.start_point(), op.end_point()) {
+                (Some(a), Some(b)) => {
+                    let n = ((a.dist(&b) / half).ceil() as usize).clamp(1, 10_000_000);
+                    (0..=n).map(|k| super::super::cycles::thread::lerp(&a, &b, k as f64 / n as f64)).collect()
+                }
+                _ => Vec::new(),
+            },
+        }
+    }
+
+    /// Apply one record.
     pub fn apply(&mut self, rec: &Record, tool: &Tool, turning: bool) {
         match rec.op {
-            Op::Feed { from, to, .. } if (from.x - to.x).abs() < 1e-9 && (from.y - to.y).abs() < 1e-9 && to.z < from.z => {
-                if !turning {
-                    self.findings.push(Finding::at("crash", rec, from, false, None, "a feed into the stock with the spindle stopped".into()));
+            Op::Feed { .. } | Op::Arc { .. } => {
+                let path = self.path(&rec.op);
+                let deepest = path.iter().fold(0.0f64, |d, p| d.max(self.stamp(p, tool, true)));
+                if deepest > CUT_MM && !turning {
+                    let at = path.first().copied().unwrap_or_default();
+                    self.findings.push(Finding::at("spindle", rec, at, false, None, format!("a cut {deepest:.3} mm deep with the spindle stopped")));
                 }
-                self.plunge(&to, tool);
-                self.tips.push(to);
-            }
-            Op::Rapid { from, to } => {
-                // Sample the rapid: anywhere below the material's top is a crash.
-                let n = ((from.dist(&to) / self.cell_mm).ceil() as usize).clamp(1, 200_000);
-                let mut worst = 0.0f64;
-                let mut worst_at = from;
-                for k in 0..=n {
-                    let u = k as f64 / n as f64;
-                    let p = Vec3::new(from.x + (to.x - from.x) * u, from.y + (to.y - from.y) * u, from.z + (to.z - from.z) * u);
-                    let i = ((p.x - self.block.min_mm[0]) / self.cell_mm).floor();
-                    let j = ((p.y - self.block.min_mm[1]) / self.cell_mm).floor();
-                    if i >= 0.0 && j >= 0.0 && (i as usize) < self.nx && (j as usize) < self.ny {
-                        let top = self.top[j as usize * self.nx + i as usize] as f64;
-                        if top - p.z > worst {
-                            worst = top - p.z;
-                            worst_at = p;
-                        }
+                if let Op::Feed { from, to, .. } = rec.op {
+                    if (from.x - to.x).abs() < 1e-9 && (from.y - to.y).abs() < 1e-9 && to.z < from.z {
+                        self.tips.push(to);
                     }
                 }
-                // The grid sees a drilled cone a cell wide: up to a cell's size is not a crash.
-                if worst > 0.01 + self.cell_mm {
+            }
+            Op::Rapid { .. } => {
+                // The tool's end along the rapid: into the material is a crash (a drilled cone's
+                // point is seen a cell wide: up to a cell is not one); then it cuts its way.
+                let path = self.path(&rec.op);
+                let (mut worst, mut worst_at) = (0.0f64, Vec3::default());
+                for p in &path {
+                    let d = self.stamp(p, tool, false);
+                    if d > worst {
+                        (worst, worst_at) = (d, *p);
+                    }
+                }
+                if worst > CUT_MM + self.cell_mm {
                     self.findings.push(Finding::at("crash", rec, worst_at, false, None, format!("a rapid move goes {worst:.3} mm into the stock")));
+                    for p in &path {
+                        self.stamp(p, tool, true);
+                    }
                 }
             }
             _ => {}
         }
+    }
+
+    /// The flat levels below the top: each height at which at least [`FLOOR_MM2`] of the cut
+    /// surface stands (a drill's cone or a ball mill's scallops do not make one), with its area,
+    /// highest first.
+    pub fn floors(&self) -> Vec<(f64, f64)> {
+        let top = self.block.max_mm[2] as f32;
+        let mut levels: std::collections::BTreeMap<i64, usize> = std::collections::BTreeMap::new();
+        for &z in self.top.iter().filter(|z| **z < top - 1e-4) {
+            *levels.entry((z as f64 * 1000.0).round() as i64).or_default() += 1;
+        }
+        let cell_area = self.cell_mm * self.cell_mm;
+        levels.into_iter().rev().map(|(z, n)| (z as f64 / 1000.0, n as f64 * cell_area)).filter(|(_, a)| *a >= FLOOR_MM2).collect()
+    }
+
+    /// The volume cut from the block, mm³.
+    pub fn removed_mm3(&self) -> f64 {
+        let top = self.block.max_mm[2] as f32;
+        self.top.iter().map(|z| (top - z).max(0.0) as f64).sum::<f64>() * self.cell_mm * self.cell_mm
     }
 
     /// The holes: connected cells cut below the top, each with its deepest point and width.
@@ -118,7 +175,7 @@ impl MillStock {
             let mut stack = vec![start];
             seen[start] = true;
             let (mut n, mut sx, mut sy, mut deep) = (0usize, 0.0, 0.0, 0.0f64);
-            let (mut xmin, mut xmax) = (f64::MAX, f64::MIN);
+            let (mut xmin, mut xmax, mut ymin, mut ymax) = (f64::MAX, f64::MIN, f64::MAX, f64::MIN);
             while let Some(k) = stack.pop() {
                 let (i, j) = (k % self.nx, k / self.nx);
                 let (cx, cy) = self.centre(i, j);
@@ -127,6 +184,8 @@ impl MillStock {
                 sy += cy;
                 xmin = xmin.min(cx);
                 xmax = xmax.max(cx);
+                ymin = ymin.min(cy);
+                ymax = ymax.max(cy);
                 deep = deep.max((top - self.top[k]) as f64);
                 let nb = [(i > 0).then(|| k - 1), (i + 1 < self.nx).then(|| k + 1), (j > 0).then(|| k - self.nx), (j + 1 < self.ny).then(|| k + self.nx)];
                 for m in nb.into_iter().flatten() {
@@ -136,17 +195,21 @@ impl MillStock {
                     }
                 }
             }
-            let (mut x, mut y) = (sx / n as f64, sy / n as f64);
+            let (x, y) = (sx / n as f64, sy / n as f64);
             let width = xmax - xmin + self.cell_mm;
-            // The deepest drill tip inside the hole gives its exact depth and centre.
-            let tip = self
-                .tips
-                .iter()
-                .filter(|t| (t.x - x).abs() <= width / 2.0 && (t.y - y).abs() <= width / 2.0)
-                .min_by(|a, b| a.z.total_cmp(&b.z));
+            // A hole is round (as wide both ways, and filling its circle: a drilled or helically
+            // bored hole); a pocket or a slot is a floor, not a hole.
+            let across = ymax - ymin + self.cell_mm;
+            let area = n as f64 * self.cell_mm * self.cell_mm;
+            let round = (width - across).abs() <= 2.0 * self.cell_mm + 0.02 * width && area >= 0.8 * std::f64::consts::PI * width * width / 4.0;
+            if !round {
+                continue;
+            }
+            // The deepest drill tip inside it gives a drilled hole's exact depth (the grid sees
+            // the cone's point a cell wide).
+            let tip = self.tips.iter().filter(|t| (t.x - x).abs() <= width / 2.0 && (t.y - y).abs() <= width / 2.0).min_by(|a, b| a.z.total_cmp(&b.z));
             if let Some(t) = tip {
                 deep = deep.max(top as f64 - t.z);
-                (x, y) = (t.x, t.y);
             }
             out.push(Hole { x, y, depth_mm: deep, diameter_mm: width });
         }
