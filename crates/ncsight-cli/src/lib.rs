@@ -268,6 +268,9 @@ enum Command {
         /// Write the unrolled surface (z across, angle down) as a PNG.
         #[arg(long)]
         image: Option<String>,
+        /// Write the cut stock as a closed binary STL mesh (mm, programme coordinates).
+        #[arg(long, value_name = "OUT.stl")]
+        stl: Option<String>,
         /// Grid spacing DZ,DTHETA (mm, degrees).
         #[arg(long)]
         resolution: Option<String>,
@@ -353,8 +356,9 @@ pub fn main_with(args: impl IntoIterator<Item = std::ffi::OsString>, out: &mut d
         Command::Check { files, machine, format } => check(&files, &machine, &format, out, err),
         Command::Expand { file, machine, to, output } => expand(&file, &machine, &to, output.as_deref(), out, err),
         Command::Machines { machine } => machines(machine.as_deref(), out),
-        Command::Simulate { file, machine, stock, expect, format, image, resolution } => {
-            simulate(&file, &machine, stock.as_deref(), expect.as_deref(), &format, image.as_deref(), resolution.as_deref(), out, err)
+        Command::Simulate { file, machine, stock, expect, format, image, stl, resolution } => {
+            let outputs = SimOutputs { image: image.as_deref(), stl: stl.as_deref() };
+            simulate(&file, &machine, stock.as_deref(), expect.as_deref(), &format, outputs, resolution.as_deref(), out, err)
         }
         Command::Report { file, machine, operator, stock, expect, output } => {
             report(&file, &machine, &operator, stock.as_deref(), expect.as_deref(), output.as_deref(), out, err)
@@ -848,11 +852,12 @@ fn simulate(
     stock: Option<&str>,
     expect: Option<&str>,
     format: &str,
-    image: Option<&str>,
+    outputs: SimOutputs,
     resolution: Option<&str>,
     out: &mut dyn Write,
     err: &mut dyn Write,
 ) -> Result<i32, Failure> {
+    let image = outputs.image;
     if format != "text" && format != "json" {
         return Err(usage(format!("unknown format '{format}': choose text or json")));
     }
@@ -860,6 +865,7 @@ fn simulate(
     let decoding = m.decoding()?;
     let job = job_setup(m, stock)?;
     let image_out = image.map(|path| output::LazyFile::new(path, &m.read_files(file), 1 << 16)).transpose().map_err(usage)?;
+    let stl_out = outputs.stl.map(|path| output::LazyFile::new(path, &m.read_files(file), 1 << 16)).transpose().map_err(usage)?;
     if image_out.is_some() && !params.profile().is_lathe() {
         return Err(usage(format!(
             "--image draws the unrolled surface of a thread on a lathe; {} is a machining centre: the drilling simulation has no image (its holes are in the text or JSON output)",
@@ -890,6 +896,10 @@ fn simulate(
         let sim = ncsight::stock::measure::simulate_mill(&records, &job, opts.dz_mm).map_err(usage)?;
         let body = if format == "json" { simulate::mill_json(&sim) } else { simulate::mill_text(&sim) };
         out.write_all(body.as_bytes())?;
+        if let Some(mut w) = stl_out {
+            simulate::stl(&mut w, &|each| ncsight::stock::mesh::mill(&sim.stock, each))?;
+            w.flush()?;
+        }
         return Ok(status_with_findings(program.status() == Status::Alarm, &sim.findings));
     }
     let sim = ncsight::stock::measure::simulate_with(&records, &job, &opts, &mut progress_on(err)).map_err(usage)?;
@@ -899,7 +909,17 @@ fn simulate(
         simulate::image(&sim, &mut w)?;
         w.flush()?;
     }
+    if let Some(mut w) = stl_out {
+        simulate::stl(&mut w, &|each| ncsight::stock::mesh::lathe(&sim.stock, each))?;
+        w.flush()?;
+    }
     Ok(status_with_findings(program.status() == Status::Alarm, &sim.measurement.findings))
+}
+
+/// The files `simulate` writes besides its report.
+struct SimOutputs<'a> {
+    image: Option<&'a str>,
+    stl: Option<&'a str>,
 }
 
 #[allow(clippy::too_many_arguments)]

@@ -21,6 +21,9 @@ fn finding_json(f: &Finding) -> String {
         }
         s.push_str(&format!(",\"t\":{}", num(p.t_s, 3)));
     }
+    if let Some(t) = f.tool {
+        s.push_str(&format!(",\"tool\":{t}"));
+    }
     s.push('}');
     s
 }
@@ -235,7 +238,12 @@ pub fn resolution(text: &str) -> Option<(f64, f64)> {
 /// Options from the command line.
 pub fn options(res: Option<&str>, expect: Option<&str>) -> Result<SimOptions, String> {
     let (dz, dt) = match res {
-        Some(r) => resolution(r).map(|(a, b)| (Some(a), Some(b))).ok_or_else(|| format!("--resolution {r}: write DZ,DTHETA in mm and degrees, e.g. 0.01,0.5"))?,
+        // One number: the cell (a machining centre's grid, or a lathe's DZ with the default angle).
+        Some(r) if !r.contains(',') => match r.trim().parse::<f64>() {
+            Ok(v) if v.is_finite() && v > 0.0 => (Some(v), None),
+            _ => return Err(format!("--resolution {r}: write MM (a mill's cell) or DZ,DTHETA in mm and degrees, e.g. 0.01,0.5")),
+        },
+        Some(r) => resolution(r).map(|(a, b)| (Some(a), Some(b))).ok_or_else(|| format!("--resolution {r}: write MM (a mill's cell) or DZ,DTHETA in mm and degrees, e.g. 0.01,0.5"))?,
         None => (None, None),
     };
     // `bore=D` and `od=D` are sizes; the rest names the thread (`M24x2`, `major=..,minor=..`).
@@ -285,4 +293,31 @@ fn profile_text(s: &mut String, rows: &[ncsight::stock::lathe::ProfileRow]) {
     if lines.len() > SHOWN {
         s.push_str(&format!("{:<22} {} more (--format json lists every row)\n", "profile", lines.len() - SHOWN));
     }
+}
+
+/// A mesh as binary STL: an 80-byte header, the count, then each triangle's normal and corners
+/// (f32, little-endian) and a zero attribute. `mesh` hands the triangles over and returns their
+/// count; it is run twice, once to count (nothing is held).
+pub fn stl(w: &mut dyn Write, mesh: &dyn Fn(&mut dyn FnMut(ncsight::stock::mesh::Triangle)) -> u32) -> io::Result<()> {
+    let n = mesh(&mut |_| {});
+    let mut header = [b' '; 80];
+    let title = b"ncsight simulate: the cut stock, mm, programme coordinates";
+    header[..title.len()].copy_from_slice(title);
+    w.write_all(&header)?;
+    w.write_all(&n.to_le_bytes())?;
+    let mut failed = Ok(());
+    let mut buf = [0u8; 50];
+    mesh(&mut |(normal, corners)| {
+        if failed.is_err() {
+            return;
+        }
+        for (k, p) in std::iter::once(normal).chain(corners).enumerate() {
+            for (c, v) in [p.x, p.y, p.z].into_iter().enumerate() {
+                let at = 12 * k + 4 * c;
+                buf[at..at + 4].copy_from_slice(&(v as f32).to_le_bytes());
+            }
+        }
+        failed = w.write_all(&buf);
+    });
+    failed
 }

@@ -50,3 +50,43 @@ fn simulate_drilling_on_a_mill() {
     assert!(holes.iter().any(|h| h["x"] == 50.0 && h["y"] == 40.0 && h["depth_mm"] == 10.0), "{out}");
     assert_eq!(v["findings"].as_array().unwrap().len(), 0, "{out}");
 }
+
+/// `--stl OUT.stl`: the cut stock as a binary STL, closed (every edge shared by two triangles in
+/// opposite directions), for a lathe part (a drilled bar) and a mill block (a slot).
+#[test]
+fn simulate_writes_a_closed_stl() {
+    let dir = std::env::temp_dir().join(format!("ncsight-stl-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let cases = [
+        ("lathe.nc", "G99 M03 S600\nG00 X0. Z2.\nG01 Z-10. F0.1\nG00 Z2.\nM30\n", vec!["-m", "gsk980tdi", "--stock", "20x20", "--resolution", "0.1,10"]),
+        ("mill.nc", "G21 G17 G90 G00 X0 Y0 Z5.\nS1000 M03\nG00 X5. Y5.\nG01 Z-2. F100.\nG01 X15. F300.\nG00 Z5.\nM30\n", vec!["-m", "fanuc0m", "--resolution", "0.5"]),
+    ];
+    for (name, text, args) in cases {
+        let f = dir.join(name);
+        std::fs::write(&f, text).unwrap();
+        let stl = dir.join(format!("{name}.stl"));
+        let mut argv = vec!["simulate", f.to_str().unwrap(), "--stl", stl.to_str().unwrap()];
+        argv.extend(args);
+        let (code, out, err) = common::ncsight(&argv);
+        assert_eq!(code, 0, "{name}: {out}{err}");
+        let b = std::fs::read(&stl).unwrap();
+        let n = u32::from_le_bytes(b[80..84].try_into().unwrap()) as usize;
+        assert!(n > 100 && b.len() == 84 + 50 * n, "{name}: {n} triangles in {} bytes", b.len());
+        let f32at = |at: usize| f32::from_le_bytes(b[at..at + 4].try_into().unwrap());
+        let key = |at: usize| ((f32at(at) * 1e3).round() as i64, (f32at(at + 4) * 1e3).round() as i64, (f32at(at + 8) * 1e3).round() as i64);
+        let mut edges = std::collections::HashMap::new();
+        for t in 0..n {
+            let base = 84 + 50 * t + 12;
+            let v = [key(base), key(base + 12), key(base + 24)];
+            for k in 0..3 {
+                let (a, c) = (v[k], v[(k + 1) % 3]);
+                if a != c {
+                    *edges.entry((a, c)).or_insert(0i32) += 1;
+                    *edges.entry((c, a)).or_insert(0i32) -= 1;
+                }
+            }
+        }
+        assert!(edges.values().all(|v| *v == 0), "{name}: the mesh is not closed");
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -50,6 +50,8 @@ pub struct Finding {
     /// Where and when: the tool's position (X a diameter on a lathe), the spindle angle where
     /// it matters (a thread), and the time from programme start.
     pub at: Option<Place>,
+    /// The tool's number (T), where one tool made it.
+    pub tool: Option<u32>,
 }
 
 /// Where a finding happened.
@@ -67,7 +69,7 @@ impl Finding {
     /// A finding of a record, placed at `p` (programme coordinates, X a radius on a lathe).
     pub fn at(kind: &'static str, rec: &Record, p: Vec3, diameter: bool, spindle_deg: Option<f64>, message: String) -> Finding {
         let x_mm = if diameter { 2.0 * p.x } else { p.x };
-        Finding { kind, line: rec.span.line, message, at: Some(Place { x_mm, y_mm: p.y, z_mm: p.z, spindle_deg, t_s: rec.t_s }) }
+        Finding { kind, line: rec.span.line, message, at: Some(Place { x_mm, y_mm: p.y, z_mm: p.z, spindle_deg, t_s: rec.t_s }), tool: None }
     }
 
     /// Whether the finding is a problem with the programme (crash, chuck, phase, deviation), as
@@ -306,8 +308,16 @@ impl LatheStock {
         visited
     }
 
-    /// Apply one record with the tool in the turret.
+    /// Apply one record with the tool in the turret; what it finds names the tool.
     pub fn apply(&mut self, rec: &Record, tool: &Tool, spindle_turning: bool) {
+        let before = self.findings.len();
+        self.apply_tool(rec, tool, spindle_turning);
+        for f in &mut self.findings[before..] {
+            f.tool = Some(tool.number);
+        }
+    }
+
+    fn apply_tool(&mut self, rec: &Record, tool: &Tool, spindle_turning: bool) {
         let after_thread = self.last_thread_end.take();
         let after_crash = self.last_crash_end.take();
         if tool.kind.on_spindle_axis() {

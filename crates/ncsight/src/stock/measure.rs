@@ -443,7 +443,7 @@ fn sizes(m: &mut Measurement, opts: &SimOptions) {
             Some(got) => format!("{what} {got:.3} mm over its longest section, {want:.3} mm expected ({:+.3} mm)", got - want),
             None => format!("no {what} to compare with {want:.3} mm"),
         };
-        m.findings.push(Finding { kind: "deviation", line: 0, message, at: None });
+        m.findings.push(Finding { kind: "deviation", line: 0, message, at: None, tool: None });
     }
 }
 
@@ -451,7 +451,7 @@ fn deviation(m: &mut Measurement, e: &Expected, dz: f64, last_thread: Option<&Re
     // Placed at the thread's last pass (its line, end point and time).
     let place = |kind, message: String| match last_thread {
         Some(r) => Finding::at(kind, r, r.op.end_point().unwrap_or_default(), true, None, message),
-        None => Finding { kind, line: 0, message, at: None },
+        None => Finding { kind, line: 0, message, at: None, tool: None },
     };
     let checks = [("major diameter", m.major_diameter_mm, e.major_mm, 2.0 * dz + 0.02), ("minor diameter", m.minor_diameter_mm, e.minor_mm, 2.0 * dz + 0.02), ("pitch", m.pitch_mm, e.pitch_mm, dz + 0.005)];
     for (what, got, want, tol) in checks {

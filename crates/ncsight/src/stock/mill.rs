@@ -106,8 +106,16 @@ impl MillStock {
         }
     }
 
-    /// Apply one record.
+    /// Apply one record; what it finds names the tool.
     pub fn apply(&mut self, rec: &Record, tool: &Tool, turning: bool) {
+        let before = self.findings.len();
+        self.apply_tool(rec, tool, turning);
+        for f in &mut self.findings[before..] {
+            f.tool = Some(tool.number);
+        }
+    }
+
+    fn apply_tool(&mut self, rec: &Record, tool: &Tool, turning: bool) {
         match rec.op {
             Op::Feed { .. } | Op::Arc { .. } => {
                 let path = self.path(&rec.op);

@@ -3,6 +3,7 @@
 //! and the measurement of the thread that results.
 
 pub mod lathe;
+pub mod mesh;
 pub mod measure;
 pub mod mill;
 pub mod standard;
