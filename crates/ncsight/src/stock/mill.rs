@@ -84,6 +84,66 @@ impl MillStock {
         deepest
     }
 
+    /// A straight move at one height, exactly: each cell within the tool's radius of the segment
+    /// takes the tool's end at its distance from the segment (a flat, ball or bull end and a
+    /// drill's cone depend only on that distance). The most it reaches into the material; with
+    /// `cut`, the material is removed. One pass over the move's cells instead of a stamp every
+    /// half cell.
+    fn level_segment(&mut self, a: &Vec3, b: &Vec3, tool: &Tool, cut: bool) -> f64 {
+        let r = (tool.diameter_mm / 2.0).max(self.cell_mm / 2.0);
+        let cell = self.cell_mm;
+        let index = |v: f64, min: f64| ((v - min) / cell).floor();
+        let (x0, x1) = (a.x.min(b.x) - r, a.x.max(b.x) + r);
+        let (y0, y1) = (a.y.min(b.y) - r, a.y.max(b.y) + r);
+        let (i0, i1) = (index(x0, self.block.min_mm[0]).max(0.0) as usize, index(x1, self.block.min_mm[0]) + 1.0);
+        let (j0, j1) = (index(y0, self.block.min_mm[1]).max(0.0) as usize, index(y1, self.block.min_mm[1]) + 1.0);
+        if i1 < 0.0 || j1 < 0.0 {
+            return 0.0;
+        }
+        let (i1, j1) = ((i1 as usize).min(self.nx), (j1 as usize).min(self.ny));
+        let (dx, dy) = (b.x - a.x, b.y - a.y);
+        let len2 = dx * dx + dy * dy;
+        let mut deepest = 0.0f64;
+        for j in j0..j1 {
+            for i in i0..i1 {
+                let (cx, cy) = self.centre(i, j);
+                let u = if len2 > 0.0 { (((cx - a.x) * dx + (cy - a.y) * dy) / len2).clamp(0.0, 1.0) } else { 0.0 };
+                let d = ((cx - a.x - u * dx).powi(2) + (cy - a.y - u * dy).powi(2)).sqrt();
+                if d > r {
+                    continue;
+                }
+                let Some(h) = tool.end_height(d.min(tool.diameter_mm / 2.0)) else { continue };
+                let z = (a.z + h) as f32;
+                let top = &mut self.top[j * self.nx + i];
+                if z < *top {
+                    deepest = deepest.max((*top - z) as f64);
+                    if cut {
+                        *top = z;
+                    }
+                }
+            }
+        }
+        deepest
+    }
+
+    /// How deep a move reaches into the material (and with `cut`, removes it): a straight move
+    /// at one height exactly, others stamped every half cell along their path.
+    fn sweep(&mut self, op: &Op, tool: &Tool, cut: bool) -> (f64, Vec3) {
+        if let Op::Feed { from, to, .. } | Op::Rapid { from, to } = *op {
+            if (from.z - to.z).abs() < 1e-9 {
+                return (self.level_segment(&from, &to, tool, cut), from);
+            }
+        }
+        let (mut worst, mut at) = (0.0f64, op.start_point().unwrap_or_default());
+        for p in self.path(op) {
+            let d = self.stamp(&p, tool, cut);
+            if d > worst {
+                (worst, at) = (d, p);
+            }
+        }
+        (worst, at)
+    }
+
     /// The points of a move's path, at most half a cell apart (an arc or a helix along its
     /// curve).
     fn path(&self, op: &Op) -> Vec<Vec3> {
@@ -118,10 +178,9 @@ impl MillStock {
     fn apply_tool(&mut self, rec: &Record, tool: &Tool, turning: bool) {
         match rec.op {
             Op::Feed { .. } | Op::Arc { .. } => {
-                let path = self.path(&rec.op);
-                let deepest = path.iter().fold(0.0f64, |d, p| d.max(self.stamp(p, tool, true)));
+                let (deepest, _) = self.sweep(&rec.op, tool, true);
                 if deepest > CUT_MM && !turning {
-                    let at = path.first().copied().unwrap_or_default();
+                    let at = rec.op.start_point().unwrap_or_default();
                     self.findings.push(Finding::at("spindle", rec, at, false, None, format!("a cut {deepest:.3} mm deep with the spindle stopped")));
                 }
                 if let Op::Feed { from, to, .. } = rec.op {
@@ -133,19 +192,10 @@ impl MillStock {
             Op::Rapid { .. } => {
                 // The tool's end along the rapid: into the material is a crash (a drilled cone's
                 // point is seen a cell wide: up to a cell is not one); then it cuts its way.
-                let path = self.path(&rec.op);
-                let (mut worst, mut worst_at) = (0.0f64, Vec3::default());
-                for p in &path {
-                    let d = self.stamp(p, tool, false);
-                    if d > worst {
-                        (worst, worst_at) = (d, *p);
-                    }
-                }
+                let (worst, worst_at) = self.sweep(&rec.op, tool, false);
                 if worst > CUT_MM + self.cell_mm {
                     self.findings.push(Finding::at("crash", rec, worst_at, false, None, format!("a rapid move goes {worst:.3} mm into the stock")));
-                    for p in &path {
-                        self.stamp(p, tool, true);
-                    }
+                    self.sweep(&rec.op, tool, true);
                 }
             }
             _ => {}
