@@ -101,7 +101,8 @@ pub struct LatheStock {
     /// cells cut since they were last worked out (the rapids' crash check reads them).
     least_inner: Vec<f32>,
     most_outer: Vec<f32>,
-    stale: Option<(usize, usize)>,
+    /// Cells cut since their extremes were last worked out.
+    stale: Vec<bool>,
     /// Tools (T numbers) assumed without a setup, whose side is not known: each of their moves
     /// cuts from the side of the material it is nearer to (a bar that feeds 1 mm from a bore's
     /// wall and 11 mm below the outside is boring).
@@ -169,32 +170,32 @@ impl LatheStock {
             last_crash_end: None,
             least_inner: vec![(bar.bore_mm / 2.0) as f32; nz],
             most_outer: vec![(bar.diameter_mm / 2.0) as f32; nz],
-            stale: None,
+            stale: vec![false; nz],
             either_side: Vec::new(),
         }
     }
 
     /// Cells `lo..=hi` were cut: their extremes are worked out again when next read.
     fn cut_cells(&mut self, lo: usize, hi: usize) {
-        self.stale = Some(match self.stale {
-            Some((a, b)) => (a.min(lo), b.max(hi)),
-            None => (lo, hi),
-        });
+        let hi = hi.min(self.grid.nz - 1);
+        if lo <= hi {
+            self.stale[lo..=hi].fill(true);
+        }
     }
 
-    /// The extremes of the cells cut since they were last read, worked out again.
-    fn refresh_extremes(&mut self) {
-        let Some((lo, hi)) = self.stale.take() else { return };
-        let nz = self.grid.nz;
-        for i in lo..=hi.min(nz - 1) {
+    /// The smallest bore and the largest outside of cell `i` at any angle.
+    fn extremes(&mut self, i: usize) -> (f32, f32) {
+        if self.stale[i] {
+            let nz = self.grid.nz;
             let (mut least, mut most) = (f32::MAX, f32::MIN);
             for j in 0..self.grid.ntheta {
                 least = least.min(self.inner[j * nz + i]);
                 most = most.max(self.outer[j * nz + i]);
             }
-            self.least_inner[i] = least;
-            self.most_outer[i] = most;
+            (self.least_inner[i], self.most_outer[i]) = (least, most);
+            self.stale[i] = false;
         }
+        (self.least_inner[i], self.most_outer[i])
     }
 
     /// The surface the thread measurement reads (see [`LatheStock::internal`]).
@@ -466,20 +467,25 @@ impl LatheStock {
     /// the nearer of the bore and the outside, the most at any angle and along the path (0 when
     /// it stays in the air).
     fn depth_along(&mut self, path: &[Vec3]) -> f64 {
-        self.refresh_extremes();
         let g = self.grid;
+        // No material was ever beyond the bar or inside its first bore.
+        let (bar_outer, bar_inner) = ((self.bar.diameter_mm / 2.0) as f32, (self.bar.bore_mm / 2.0) as f32);
         let mut deepest = 0.0f32;
         for w in path.windows(2) {
             let len = (w[1].z - w[0].z).abs().max((w[1].x - w[0].x).abs());
             let n = ((len / (g.dz_mm / 2.0)).ceil() as usize).clamp(1, 10_000_000);
             for k in 0..=n {
                 let u = k as f64 / n as f64;
+                let r = (w[0].x + (w[1].x - w[0].x) * u).abs() as f32;
+                if r >= bar_outer || r <= bar_inner {
+                    continue;
+                }
                 let c = g.cell(w[0].z + (w[1].z - w[0].z) * u);
                 if c < 0 || c >= g.nz as isize {
                     continue;
                 }
-                let r = (w[0].x + (w[1].x - w[0].x) * u).abs() as f32;
-                deepest = deepest.max((r - self.least_inner[c as usize]).min(self.most_outer[c as usize] - r));
+                let (inner, outer) = self.extremes(c as usize);
+                deepest = deepest.max((r - inner).min(outer - r));
             }
         }
         deepest as f64
@@ -489,11 +495,11 @@ impl LatheStock {
     /// largest outer diameter at any angle (a thread's major diameter) and the smallest bore
     /// (0 where solid to the axis); a slice with no material left has both 0.
     pub fn profile(&mut self) -> Vec<ProfileRow> {
-        self.refresh_extremes();
         let g = self.grid;
         let mut rows: Vec<ProfileRow> = Vec::new();
         for i in (0..g.nz).rev() {
-            let (inner, outer) = (self.least_inner[i] as f64, self.most_outer[i] as f64);
+            let (inner, outer) = self.extremes(i);
+            let (inner, outer) = (inner as f64, outer as f64);
             let (od, id) = if outer > inner + 1e-6 { (2.0 * outer, 2.0 * inner.max(0.0)) } else { (0.0, 0.0) };
             let (od, id) = ((od * 1e3).round() / 1e3, (id * 1e3).round() / 1e3);
             match rows.last_mut() {
@@ -507,7 +513,6 @@ impl LatheStock {
     /// Whether a path lies nearer the bore than the outside of the material: the most it would
     /// cut from each side, compared.
     fn nearer_inside(&mut self, path: &[Vec3]) -> bool {
-        self.refresh_extremes();
         let g = self.grid;
         let (mut from_inside, mut from_outside) = (f32::MIN, f32::MIN);
         for p in path {
@@ -516,8 +521,9 @@ impl LatheStock {
                 continue;
             }
             let r = p.x.abs() as f32;
-            from_inside = from_inside.max(r - self.least_inner[c as usize]);
-            from_outside = from_outside.max(self.most_outer[c as usize] - r);
+            let (inner, outer) = self.extremes(c as usize);
+            from_inside = from_inside.max(r - inner);
+            from_outside = from_outside.max(outer - r);
         }
         from_inside < from_outside
     }
