@@ -52,40 +52,8 @@ impl MillStock {
         (self.block.min_mm[0] + (i as f64 + 0.5) * self.cell_mm, self.block.min_mm[1] + (j as f64 + 0.5) * self.cell_mm)
     }
 
-    /// The tool's end with its tip at `p`: how deep it reaches into the material at the most;
-    /// with `cut`, the material there is removed.
-    fn stamp(&mut self, p: &Vec3, tool: &Tool, cut: bool) -> f64 {
-        let r = (tool.diameter_mm / 2.0).max(self.cell_mm / 2.0);
-        let cell = self.cell_mm;
-        let to_index = |v: f64, min: f64| ((v - min) / cell).floor();
-        let (i0, i1) = (to_index(p.x - r, self.block.min_mm[0]).max(0.0) as usize, to_index(p.x + r, self.block.min_mm[0]) + 1.0);
-        let (j0, j1) = (to_index(p.y - r, self.block.min_mm[1]).max(0.0) as usize, to_index(p.y + r, self.block.min_mm[1]) + 1.0);
-        if i1 < 0.0 || j1 < 0.0 {
-            return 0.0;
-        }
-        let (i1, j1) = ((i1 as usize).min(self.nx), (j1 as usize).min(self.ny));
-        let mut deepest = 0.0f64;
-        for j in j0..j1 {
-            for i in i0..i1 {
-                let (cx, cy) = self.centre(i, j);
-                let d = ((cx - p.x).powi(2) + (cy - p.y).powi(2)).sqrt();
-                // A tool narrower than a cell still cuts the cell it stands in.
-                let Some(h) = tool.end_height(d.min(tool.diameter_mm / 2.0)).filter(|_| d <= r) else { continue };
-                let z = (p.z + h) as f32;
-                let top = &mut self.top[j * self.nx + i];
-                if z < *top {
-                    deepest = deepest.max((*top - z) as f64);
-                    if cut {
-                        *top = z;
-                    }
-                }
-            }
-        }
-        deepest
-    }
-
-    /// A straight move at one height, exactly: each cell within the tool's radius of the segment
-    /// takes the tool's end at its distance from the segment (a flat, ball or bull end and a
+    /// A straight move at one height (a point when `a` is `b`), exactly: each cell within the
+    /// tool's radius of the segment takes the tool's end at its distance from the segment (a flat, ball or bull end and a
     /// drill's cone depend only on that distance). The most it reaches into the material; with
     /// `cut`, the material is removed. One pass over the move's cells instead of a stamp every
     /// half cell.
@@ -136,7 +104,7 @@ impl MillStock {
         }
         let (mut worst, mut at) = (0.0f64, op.start_point().unwrap_or_default());
         for p in self.path(op) {
-            let d = self.stamp(&p, tool, cut);
+            let d = self.level_segment(&p, &p, tool, cut);
             if d > worst {
                 (worst, at) = (d, p);
             }
