@@ -241,6 +241,30 @@ pub struct Tool {
     /// A bull-nose mill's corner radius, mm.
     #[serde(default)]
     pub corner_radius_mm: f64,
+    /// Whether a mill cuts at its centre (false: a plunge straight down is a `plunge` finding).
+    #[serde(default = "yes")]
+    pub centre_cutting: bool,
+    /// How deep the cutting edges reach up the tool, mm (0: not checked).
+    #[serde(default)]
+    pub flute_length_mm: f64,
+    /// From the holder's face to the tool's tip, mm (0: no holder checked).
+    #[serde(default)]
+    pub stick_out_mm: f64,
+    /// What holds the tool, which must not touch the part.
+    #[serde(default)]
+    pub holder: Option<Holder>,
+}
+
+/// A tool holder: a cylinder above the tool.
+#[derive(Debug, Clone, Copy, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Holder {
+    pub diameter_mm: f64,
+    pub length_mm: f64,
+}
+
+fn yes() -> bool {
+    true
 }
 
 /// The end of a milling cutter.
@@ -279,6 +303,10 @@ impl Tool {
             point_angle_deg: 118.0,
             shape: MillShape::Flat,
             corner_radius_mm: 0.0,
+            centre_cutting: true,
+            flute_length_mm: 0.0,
+            stick_out_mm: 0.0,
+            holder: None,
         }
     }
 
@@ -382,11 +410,12 @@ impl Setup {
             }
         }
         for t in &s.tools {
-            let lengths_ok = [t.tip_radius_mm, t.tip_flat_mm, t.diameter_mm].into_iter().all(|v| length(v) && v >= 0.0);
+            let holder = t.holder.map_or([0.0, 0.0], |h| [h.diameter_mm, h.length_mm]);
+            let lengths_ok = [t.tip_radius_mm, t.tip_flat_mm, t.diameter_mm, t.corner_radius_mm, t.flute_length_mm, t.stick_out_mm, holder[0], holder[1]].into_iter().all(|v| length(v) && v >= 0.0);
             let angles_ok = [t.included_angle_deg, t.point_angle_deg].into_iter().all(|a| a.is_finite() && a > 0.0 && a < 180.0);
             if !(lengths_ok && angles_ok) {
                 return Err(SetupError(format!(
-                    "tool {}: the included and point angles must be more than 0 and less than 180 degrees, the radius, flat and diameter finite, 0 or more",
+                    "tool {}: the included and point angles must be more than 0 and less than 180 degrees, every length (radius, flat, diameter, corner radius, flute length, stick-out, holder) finite, 0 or more",
                     t.number
                 )));
             }

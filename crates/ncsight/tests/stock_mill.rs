@@ -71,3 +71,28 @@ fn material_only_decreases_and_a_move_cut_twice_cuts_once() {
     assert_eq!(once.stock.top, twice.stock.top);
     assert!(once.stock.top.iter().all(|z| *z <= 0.0));
 }
+
+/// The tool's shape forbids what the same programme does with another tool: a mill that does not
+/// cut at its centre plunging (line 6, 3 mm into the block), flutes 2.5 mm long cutting 3 mm deep
+/// (line 6), and a Ø30 holder 3.5 mm above the tip coming down into the block when the helix
+/// reaches Z-4 (line 19: its face at Z-0.5, the block's top at Z0 within 15 mm).
+#[test]
+fn the_tools_shape_forbids_plunges_deep_cuts_and_holder_contact() {
+    let tool = |extra: &str| Setup::from_toml(&format!("[block]\nmin_mm = [0.0, 0.0, -20.0]\nmax_mm = [90.0, 60.0, 0.0]\n[[tool]]\nnumber = 1\nkind = \"mill\"\ndiameter_mm = 6.0\n{extra}")).unwrap();
+    let first = |s: &Setup, kind: &str| {
+        let sim = simulate_mill(&records(PROGRAMME), s, Some(0.1)).unwrap();
+        sim.findings.iter().find(|f| f.kind == kind).map(|f| (f.line, f.tool, f.message.clone()))
+    };
+    let (line, tool_n, msg) = first(&tool("centre_cutting = false\n"), "plunge").expect("a plunge finding");
+    assert_eq!((line, tool_n), (6, Some(1)));
+    assert!(msg.contains("plunges 3.000 mm"), "{msg}");
+    let (line, _, msg) = first(&tool("flute_length_mm = 2.5\n"), "flute").expect("a flute finding");
+    assert_eq!(line, 6);
+    assert!(msg.contains("reaches 3.000 mm up the tool, beyond its 2.500 mm flutes"), "{msg}");
+    let (line, _, msg) = first(&tool("stick_out_mm = 3.5\nholder = { diameter_mm = 30.0, length_mm = 50.0 }\n"), "holder").expect("a holder finding");
+    assert_eq!(line, 19);
+    assert!(msg.contains("comes 0.500 mm into the material"), "{msg}");
+    // With the flutes long enough, a centre-cutting mill and the holder high enough: none.
+    let fine = tool("flute_length_mm = 20.0\nstick_out_mm = 30.0\nholder = { diameter_mm = 30.0, length_mm = 50.0 }\n");
+    assert!(simulate_mill(&records(PROGRAMME), &fine, Some(0.1)).unwrap().findings.is_empty());
+}

@@ -144,6 +144,9 @@ impl MillStock {
     }
 
     fn apply_tool(&mut self, rec: &Record, tool: &Tool, turning: bool) {
+        if matches!(rec.op, Op::Feed { .. } | Op::Arc { .. } | Op::Rapid { .. }) {
+            self.tool_checks(rec, tool);
+        }
         match rec.op {
             Op::Feed { .. } | Op::Arc { .. } => {
                 let (deepest, _) = self.sweep(&rec.op, tool, true);
@@ -168,6 +171,64 @@ impl MillStock {
             }
             _ => {}
         }
+    }
+
+    /// What the tool's shape forbids, checked on the material before the move cuts it:
+    /// - `plunge`: a mill that does not cut at its centre fed straight down into material;
+    /// - `flute`: material engaged higher up the tool than its flutes reach;
+    /// - `holder`: the holder (from the stick-out up) over material it comes down to.
+    fn tool_checks(&mut self, rec: &Record, tool: &Tool) {
+        let (Some(from), Some(to)) = (rec.op.start_point(), rec.op.end_point()) else { return };
+        let is_feed = !matches!(rec.op, Op::Rapid { .. });
+        let straight_down = (from.x - to.x).abs() < 1e-9 && (from.y - to.y).abs() < 1e-9 && to.z < from.z;
+        if is_feed && straight_down && tool.kind == super::ToolKind::Mill && !tool.centre_cutting {
+            if let Some(top) = self.top_at(to.x, to.y).filter(|top| *top > to.z + CUT_MM) {
+                let msg = format!("a mill that does not cut at its centre plunges {:.3} mm into the material", top - to.z);
+                self.findings.push(Finding::at("plunge", rec, to, false, None, msg));
+            }
+        }
+        let low = if to.z < from.z { to } else { from };
+        if is_feed && tool.flute_length_mm > 0.0 {
+            let highest = self.highest_within(&low, tool.diameter_mm / 2.0);
+            if highest - low.z > tool.flute_length_mm + CUT_MM {
+                let msg = format!("the cut reaches {:.3} mm up the tool, beyond its {:.3} mm flutes", highest - low.z, tool.flute_length_mm);
+                self.findings.push(Finding::at("flute", rec, low, false, None, msg));
+            }
+        }
+        if let (Some(h), true) = (tool.holder, tool.stick_out_mm > 0.0) {
+            let face = low.z + tool.stick_out_mm;
+            if face < self.block.max_mm[2] {
+                let highest = self.highest_within(&low, h.diameter_mm / 2.0);
+                if highest > face + CUT_MM {
+                    let msg = format!("the holder (Ø{:.3} mm, {:.3} mm from the tip) comes {:.3} mm into the material", h.diameter_mm, tool.stick_out_mm, highest - face);
+                    self.findings.push(Finding::at("holder", rec, low, false, None, msg));
+                }
+            }
+        }
+    }
+
+    /// The material's top at (x, y), if it is over the block.
+    fn top_at(&self, x: f64, y: f64) -> Option<f64> {
+        let i = ((x - self.block.min_mm[0]) / self.cell_mm).floor();
+        let j = ((y - self.block.min_mm[1]) / self.cell_mm).floor();
+        (i >= 0.0 && j >= 0.0 && (i as usize) < self.nx && (j as usize) < self.ny).then(|| self.top[j as usize * self.nx + i as usize] as f64)
+    }
+
+    /// The highest top of the material within `r` of a point (-inf where there is none).
+    fn highest_within(&self, p: &Vec3, r: f64) -> f64 {
+        let cell = self.cell_mm;
+        let (i0, i1) = (((p.x - r - self.block.min_mm[0]) / cell).floor().max(0.0) as usize, (((p.x + r - self.block.min_mm[0]) / cell).ceil().max(0.0) as usize).min(self.nx));
+        let (j0, j1) = (((p.y - r - self.block.min_mm[1]) / cell).floor().max(0.0) as usize, (((p.y + r - self.block.min_mm[1]) / cell).ceil().max(0.0) as usize).min(self.ny));
+        let mut highest = f64::NEG_INFINITY;
+        for j in j0..j1 {
+            for i in i0..i1 {
+                let (cx, cy) = self.centre(i, j);
+                if (cx - p.x).powi(2) + (cy - p.y).powi(2) <= r * r {
+                    highest = highest.max(self.top[j * self.nx + i] as f64);
+                }
+            }
+        }
+        highest
     }
 
     /// The flat levels below the top: each height at which at least [`FLOOR_MM2`] of the cut
