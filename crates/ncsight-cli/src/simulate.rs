@@ -54,7 +54,7 @@ pub fn assumed_tools(m: &Measurement) -> Vec<String> {
             ToolKind::Thread => format!("T{n}: threading insert, {} degrees, sharp", num(t.included_angle_deg, 1)),
             ToolKind::Drill => format!("T{n}: drill {} mm on the spindle axis, {}-degree point", num(t.diameter_mm, 3), num(t.point_angle_deg, 1)),
             ToolKind::Turning => format!("T{n}: turning insert, {} degrees, nose radius {} mm (each move cuts the side of the material it is nearer to)", num(t.included_angle_deg, 1), num(t.tip_radius_mm, 3)),
-            ToolKind::Boring => format!("T{n}: boring bar, {}-degree insert, nose radius {} mm (each move cuts the side of the material it is nearer to)", num(t.included_angle_deg, 1), num(t.tip_radius_mm, 3)),
+            ToolKind::Boring => format!("T{n}: boring bar, {}-degree insert, nose radius {} mm", num(t.included_angle_deg, 1), num(t.tip_radius_mm, 3)),
             // Never assumed (measure.rs assumes the kinds above); named for completeness.
             other => format!("T{n}: {other:?}").to_lowercase(),
         })

@@ -130,7 +130,6 @@ fn assume_tools(records: &[Record], setup: &Setup) -> Vec<(u32, Tool)> {
         }
         if narrowest < f64::MAX { narrowest } else { 10.0 }
     };
-    let drilled_any = uses.iter().any(|(_, u)| is_drill(u));
     (0..uses.len())
         .filter(|&k| {
             let (n, u) = &uses[k];
@@ -139,7 +138,7 @@ fn assume_tools(records: &[Record], setup: &Setup) -> Vec<(u32, Tool)> {
         .map(|k| {
             let (n, u) = uses[k];
             let tool = if u.threads {
-                Tool { number: n, internal: drilled_any && u.leaves_down > u.leaves_up, ..Tool::default_thread() }
+                Tool { number: n, internal: u.leaves_down > u.leaves_up, ..Tool::default_thread() }
             } else if is_drill(&u) {
                 let d = drill_diameter(k, u.drilled.expect("a drill has drilled"));
                 Tool { number: n, kind: super::ToolKind::Drill, diameter_mm: d, ..Tool::default_thread() }
@@ -165,15 +164,21 @@ pub const GUESS_HOLD_MM: f64 = 5.0;
 ///   to the deepest cut plus [`GUESS_HOLD_MM`], where the chuck is assumed;
 /// - with an external thread, at least the thread's deepest pass plus twice the ISO external
 ///   thread height 0.61343 x lead (a programme that only threads: the blank's diameter);
-/// - with an internal thread, the bore is the thread's deepest pass less twice that height, and
-///   the outside at least ten leads beyond the thread.
+/// - a programme that only cuts an internal thread: the bore is its deepest pass less twice that
+///   height, the outside twice that height and 5 mm beyond it (a programme that also turns or
+///   bores makes its own bore: solid stock).
 fn infer_bar(records: &[Record], internal: bool) -> Option<Bar> {
     let (mut along, mut widest) = (0.0f64, 0.0f64);
+    // Whether anything but threads cuts (then the programme makes its own bore).
+    let mut other_cuts = false;
     let (mut zmin, mut zmax) = (f64::MAX, f64::MIN);
     let (mut lead, mut thread_max_x, mut thread_min_x) = (0.0f64, f64::MIN, f64::MAX);
     for r in records {
         let (from, to) = match r.op {
-            Op::Feed { from, to, .. } | Op::Arc { from, to, .. } => (from, to),
+            Op::Feed { from, to, .. } | Op::Arc { from, to, .. } => {
+                other_cuts = true;
+                (from, to)
+            }
             Op::Thread { from, to, lead_mm, .. } | Op::ThreadArc { from, to, lead_mm, .. } => {
                 lead = lead.max(lead_mm);
                 thread_max_x = thread_max_x.max(from.x).max(to.x);
@@ -193,10 +198,12 @@ fn infer_bar(records: &[Record], internal: bool) -> Option<Bar> {
     let mut radius = if along > 0.0 { along } else { widest };
     let mut bore = 0.0;
     let height = 0.61343 * lead;
-    if internal && lead > 0.0 {
-        radius = radius.max(thread_max_x + 10.0 * lead);
+    if internal && lead > 0.0 && !other_cuts {
+        // A programme that only threads inside: the bore it was written for, and a wall of twice
+        // the thread's height and 5 mm around it.
+        radius = radius.max(thread_max_x + 2.0 * height + 5.0);
         bore = 2.0 * (thread_max_x - height);
-    } else if lead > 0.0 {
+    } else if lead > 0.0 && !internal {
         radius = radius.max(thread_min_x + height);
     }
     if radius <= 0.0 {
@@ -372,7 +379,10 @@ pub fn simulate_with(records: &[Record], setup: &Setup, opts: &SimOptions, progr
         ));
     }
     let mut stock = LatheStock::new(bar, internal, dz, ntheta);
-    stock.either_side = assumed.iter().filter(|(_, t)| matches!(t.kind, crate::setup::ToolKind::Turning | crate::setup::ToolKind::Boring)).map(|(n, _)| *n).collect();
+    // A tool assumed to turn may be a boring bar whose retracts did not show it: each of its
+    // moves cuts the nearer side. One assumed to bore (it leaves its cuts toward the axis) works
+    // inside, as a boring bar in a tube the guessed stock does not know the bore of.
+    stock.either_side = assumed.iter().filter(|(_, t)| t.kind == crate::setup::ToolKind::Turning).map(|(n, _)| *n).collect();
     // A turning tool with an imaginary tool nose (its `tip`) is positioned by that point: the
     // stock cuts with the nose, whose lowest point (highest in a bore) lies R x d(tip) and R
     // from it (docs/compensation.md). Without a tip, the record's point is the nose's.
