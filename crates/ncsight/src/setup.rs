@@ -383,6 +383,62 @@ impl Tool {
     }
 }
 
+/// `[machine]`: its axes (each once), spindles, reference points and travel limits.
+fn check_machine(m: &MachineSetup) -> Result<(), SetupError> {
+    for (i, a) in m.axes.iter().enumerate() {
+        if !matches!(a.as_str(), "X" | "Y" | "Z" | "A" | "B" | "C") {
+            return Err(SetupError(format!("machine.axes: {a:?} is not an axis (X, Y, Z, A, B or C)")));
+        }
+        // Each axis once (so at most six).
+        if m.axes[..i].contains(a) {
+            return Err(SetupError(format!("machine.axes: {a:?} is named twice; each axis once")));
+        }
+    }
+    if m.spindle_p.len() > MAX_SPINDLES {
+        return Err(SetupError(format!("machine.spindle_p: at most {} spindles", MAX_SPINDLES)));
+    }
+    if m.spindle_p.iter().enumerate().any(|(i, p)| m.spindle_p[..i].contains(p)) {
+        return Err(SetupError("machine.spindle_p: each spindle's P once".into()));
+    }
+    for (name, p) in [("reference", m.reference), ("reference_2", m.reference_2), ("reference_3", m.reference_3), ("reference_4", m.reference_4)] {
+        if p.is_some_and(|p| !point_ok(&p)) {
+            return Err(SetupError(format!("machine.{name}: every coordinate must be a finite number of at most {MAX_MM} mm")));
+        }
+    }
+    if let Some(l) = m.limits {
+        for (axis, r) in ["x", "y", "z"].into_iter().zip(l.by_axis()) {
+            if let Some([lo, hi]) = r {
+                if !range_ok(lo, hi) {
+                    return Err(SetupError(format!(
+                        "machine.limits.{axis}_mm = [{}, {}]: give [min, max] with min less than max, finite, at most {MAX_MM} mm",
+                        shown(lo),
+                        shown(hi)
+                    )));
+                }
+            }
+        }
+    }
+    Ok(())
+}
+
+/// Lengths in a setup are at most 100 m.
+const MAX_MM: f64 = 100_000.0;
+
+/// A finite length of at most [`MAX_MM`].
+fn length(v: f64) -> bool {
+    v.is_finite() && v.abs() <= MAX_MM
+}
+
+/// A `[min, max]` of lengths, min below max.
+fn range_ok(lo: f64, hi: f64) -> bool {
+    length(lo) && length(hi) && lo < hi
+}
+
+/// A point whose given coordinates are lengths.
+fn point_ok(p: &Point) -> bool {
+    [p.x_mm, p.y_mm, p.z_mm].into_iter().flatten().all(length)
+}
+
 /// Why a setup cannot be used.
 #[derive(Debug, Clone, PartialEq)]
 pub struct SetupError(pub String);
@@ -398,10 +454,19 @@ impl Setup {
     pub fn from_toml(text: &str) -> Result<Setup, SetupError> {
         let s: Setup = toml::from_str(text).map_err(|e| SetupError(e.to_string()))?;
         // Every value is checked: NaN or infinity would make the simulation answer wrongly and
-        // silently. Lengths are at most 100 m.
-        const MAX_MM: f64 = 100_000.0;
-        let length = |v: f64| v.is_finite() && v.abs() <= MAX_MM;
-        if let Some(b) = s.stock {
+        // silently.
+        s.check_stock_and_tools()?;
+        if let Some(m) = &s.machine {
+            check_machine(m)?;
+        }
+        s.check_work_and_block()?;
+        s.check_offsets()?;
+        Ok(s)
+    }
+
+    /// The stock's and the tools' sizes.
+    fn check_stock_and_tools(&self) -> Result<(), SetupError> {
+        if let Some(b) = self.stock {
             if !(length(b.diameter_mm) && length(b.length_mm) && length(b.bore_mm) && length(b.front_z_mm)) {
                 return Err(SetupError(format!("stock: every length must be a finite number of at most {MAX_MM} mm")));
             }
@@ -409,7 +474,7 @@ impl Setup {
                 return Err(SetupError("stock: diameter and length must be more than 0, the bore less than the diameter".into()));
             }
         }
-        for t in &s.tools {
+        for t in &self.tools {
             let holder = t.holder.map_or([0.0, 0.0], |h| [h.diameter_mm, h.length_mm]);
             let lengths_ok = [t.tip_radius_mm, t.tip_flat_mm, t.diameter_mm, t.corner_radius_mm, t.flute_length_mm, t.stick_out_mm, holder[0], holder[1]].into_iter().all(|v| length(v) && v >= 0.0);
             let angles_ok = [t.included_angle_deg, t.point_angle_deg].into_iter().all(|a| a.is_finite() && a > 0.0 && a < 180.0);
@@ -420,48 +485,17 @@ impl Setup {
                 )));
             }
         }
-        for t in &s.tools {
+        for t in &self.tools {
             if t.tip.is_some_and(|n| n > 9) {
                 return Err(SetupError(format!("tool {}: tip is the imaginary tool nose number, 0 to 9", t.number)));
             }
         }
-        let point_ok = |p: &Point| [p.x_mm, p.y_mm, p.z_mm].into_iter().flatten().all(length);
-        if let Some(m) = &s.machine {
-            for (i, a) in m.axes.iter().enumerate() {
-                if !matches!(a.as_str(), "X" | "Y" | "Z" | "A" | "B" | "C") {
-                    return Err(SetupError(format!("machine.axes: {a:?} is not an axis (X, Y, Z, A, B or C)")));
-                }
-                // Each axis once (so at most six).
-                if m.axes[..i].contains(a) {
-                    return Err(SetupError(format!("machine.axes: {a:?} is named twice; each axis once")));
-                }
-            }
-            if m.spindle_p.len() > MAX_SPINDLES {
-                return Err(SetupError(format!("machine.spindle_p: at most {} spindles", MAX_SPINDLES)));
-            }
-            if m.spindle_p.iter().enumerate().any(|(i, p)| m.spindle_p[..i].contains(p)) {
-                return Err(SetupError("machine.spindle_p: each spindle's P once".into()));
-            }
-            for (name, p) in [("reference", m.reference), ("reference_2", m.reference_2), ("reference_3", m.reference_3), ("reference_4", m.reference_4)] {
-                if p.is_some_and(|p| !point_ok(&p)) {
-                    return Err(SetupError(format!("machine.{name}: every coordinate must be a finite number of at most {MAX_MM} mm")));
-                }
-            }
-            if let Some(l) = m.limits {
-                for (axis, r) in ["x", "y", "z"].into_iter().zip(l.by_axis()) {
-                    if let Some([lo, hi]) = r {
-                        if !(length(lo) && length(hi) && lo < hi) {
-                            return Err(SetupError(format!(
-                                "machine.limits.{axis}_mm = [{}, {}]: give [min, max] with min less than max, finite, at most {MAX_MM} mm",
-                                shown(lo),
-                                shown(hi)
-                            )));
-                        }
-                    }
-                }
-            }
-        }
-        if let Some(w) = &s.work {
+        Ok(())
+    }
+
+    /// The work offsets' points and the mill block's corners.
+    fn check_work_and_block(&self) -> Result<(), SetupError> {
+        if let Some(w) = &self.work {
             let names = ["external", "G54", "G55", "G56", "G57", "G58", "G59"];
             for (name, p) in names.into_iter().zip(w.all()) {
                 if p.is_some_and(|p| !point_ok(&p)) {
@@ -469,10 +503,10 @@ impl Setup {
                 }
             }
         }
-        if let Some(b) = s.block {
+        if let Some(b) = self.block {
             for (k, axis) in ["x", "y", "z"].into_iter().enumerate() {
                 let (lo, hi) = (b.min_mm[k], b.max_mm[k]);
-                if !(length(lo) && length(hi) && lo < hi) {
+                if !range_ok(lo, hi) {
                     return Err(SetupError(format!(
                         "block: {axis} from {} to {} mm: each corner's coordinate must be a finite number of at most {MAX_MM} mm, min_mm less than max_mm",
                         shown(lo),
@@ -481,8 +515,13 @@ impl Setup {
                 }
             }
         }
+        Ok(())
+    }
+
+    /// The offset table: finite values, tips 0-9, numbers in range and each once.
+    fn check_offsets(&self) -> Result<(), SetupError> {
         let mut seen = std::collections::BTreeSet::new();
-        for o in &s.offsets {
+        for o in &self.offsets {
             let values = [o.x_mm, o.y_mm, o.z_mm, o.wear_x_mm, o.wear_y_mm, o.wear_z_mm, o.radius_mm, o.wear_radius_mm, o.length_mm, o.wear_length_mm];
             if !values.into_iter().all(length) {
                 return Err(SetupError(format!("offset {}: every value must be a finite number of at most {MAX_MM} mm", o.number)));
@@ -497,7 +536,7 @@ impl Setup {
                 return Err(SetupError(format!("offset {} is given twice", o.number)));
             }
         }
-        Ok(s)
+        Ok(())
     }
 
     /// The offset table's entry `number`, if the setup gives it.
