@@ -97,8 +97,8 @@ pub struct LatheStock {
     /// Where the last rapid that crashed ended, if the record just applied was one: the rapid
     /// after it starts in the material the crash reported, and is not a crash of its own.
     last_crash_end: Option<Vec3>,
-    /// For each z cell, the smallest bore and the largest outside at any angle, and the range of
-    /// cells cut since they were last worked out (the rapids' crash check reads them).
+    /// For each z cell, the smallest bore and the largest outside at any angle (the rapids' crash
+    /// check and the profile read them).
     least_inner: Vec<f32>,
     most_outer: Vec<f32>,
     /// Cells cut since their extremes were last worked out.
@@ -382,11 +382,11 @@ impl LatheStock {
                 // front of the face is no crash); then it cuts what it passes.
                 let into = self.depth_along(&[from, to]);
                 let cut = if into > CRASH_MM { self.sweep(&[from, to], tool, inside).max(into) } else { 0.0 };
-                if cut > CRASH_MM && after_crash == Some(from) {
-                    // Still in the material of the crash just reported.
+                if cut > CRASH_MM {
                     self.last_crash_end = Some(to);
-                } else if cut > CRASH_MM {
-                    self.last_crash_end = Some(to);
+                }
+                // A rapid from where a crash just left the tool is still in that crash's material.
+                if cut > CRASH_MM && after_crash != Some(from) {
                     let message = match after_thread {
                         Some(_) if pull_out_inside => format!(
                             "a rapid move cuts {cut:.3} mm into the stock: the thread before it ends inside the stock at X{:.3} Z{:.3} (its pull-out, if any, does not bring the tool out)",

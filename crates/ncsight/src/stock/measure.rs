@@ -59,14 +59,14 @@ pub struct Simulation {
 }
 
 /// The tools a setup lacks, from what each does (docs/commands/simulate.md):
-/// - one that cuts a thread is a sharp 60-degree threading insert (internal when it threads
-///   inside a bore another tool drilled);
+/// - one that cuts a thread is a sharp 60-degree threading insert (internal when it leaves its
+///   passes toward the axis);
 /// - one that only feeds along Z on the spindle axis is a drill with a 118-degree point, as wide
 ///   as the narrowest place a later tool that works inside reaches within its hole (10 mm when
 ///   none does);
 /// - any other turns, an 80-degree insert with a 0.4 mm nose radius: a boring bar when it leaves
-///   its cuts toward the axis (its rapids straight after a cut go mostly along X, down), else a
-///   turning tool.
+///   its cuts toward the axis (its rapids straight after a cut go mostly along X, down): it
+///   works inside; else a turning tool, each of whose moves cuts the nearer side of the material.
 fn assume_tools(records: &[Record], setup: &Setup) -> Vec<(u32, Tool)> {
     #[derive(Clone, Copy, Default)]
     struct Use {
@@ -318,11 +318,9 @@ fn work_estimate(records: &[Record], bar_length_mm: f64, dz: f64, ntheta: usize)
         .sum()
 }
 
-/// [`simulate`] that reports its progress: `progress(done, total)` after each record.
-pub fn simulate_with(records: &[Record], setup: &Setup, opts: &SimOptions, progress: &mut dyn FnMut(usize, usize)) -> Result<Simulation, String> {
-    // The tool of each record follows the T words; a tool the setup does not describe is
-    // assumed from what it does.
-    let assumed = assume_tools(records, setup);
+/// The tool in the turret at each record, and whether the spindle turns: it follows the T
+/// words; a tool the setup does not describe is the one `assumed` from what it does.
+fn tools_of(records: &[Record], setup: &Setup, assumed: &[(u32, Tool)]) -> Vec<(Tool, bool)> {
     let tool_for = |number: u32| assumed.iter().find(|(n, _)| *n == number).map(|(_, t)| *t).unwrap_or_else(|| setup.tool(number));
     let mut tool_of = Vec::with_capacity(records.len());
     let mut tool = tool_for(0);
@@ -348,6 +346,13 @@ pub fn simulate_with(records: &[Record], setup: &Setup, opts: &SimOptions, progr
         }
         tool_of.push((tool, turning));
     }
+    tool_of
+}
+
+/// [`simulate`] that reports its progress: `progress(done, total)` after each record.
+pub fn simulate_with(records: &[Record], setup: &Setup, opts: &SimOptions, progress: &mut dyn FnMut(usize, usize)) -> Result<Simulation, String> {
+    let assumed = assume_tools(records, setup);
+    let tool_of = tools_of(records, setup, &assumed);
     let internal = records.iter().zip(&tool_of).any(|(r, (t, _))| r.op.is_thread() && t.internal);
     let (bar, guessed) = match setup.stock {
         Some(b) => (b, false),
