@@ -692,12 +692,9 @@ fn setup_notes(setup: Option<(&str, &ncsight::stock::Setup)>, profile: &ncsight:
     out
 }
 
-/// The job setup from `--setup` and `--stock`.
-fn job_setup(m: &MachineArgs, stock: Option<&str>) -> Result<ncsight::stock::Setup, Failure> {
-    let mut job = match (m.setup.as_deref(), m.setup_text()?) {
-        (Some(path), Some(text)) => ncsight::stock::Setup::from_toml(text).map_err(|e| usage(format!("{path}: {}", ncsight_io::clip_lines(&e.to_string()))))?,
-        _ => ncsight::stock::Setup::default(),
-    };
+/// The job setup from `--setup` (as the run's job read and checked it) and `--stock`.
+fn job_setup(m: &MachineArgs, machine: &str, stock: Option<&str>) -> Result<ncsight::stock::Setup, Failure> {
+    let mut job = m.job(machine)?.setup.unwrap_or_default();
     if let Some(s) = stock {
         job.stock = Some(ncsight::stock::Setup::parse_stock(s).map_err(|e| usage(e.to_string()))?);
     }
@@ -722,7 +719,7 @@ fn report(
     let decoding = m.decoding()?;
     let file_out = output.map(|path| output::LazyFile::new(path, &m.read_files(file), 1 << 16)).transpose().map_err(usage)?;
     let opts = operator.options()?;
-    let job = job_setup(m, stock)?;
+    let job = job_setup(m, params.profile().name, stock)?;
     let sim_options = simulate::options(None, expect).map_err(usage)?;
     let source = if file == "-" {
         let mut v = Vec::new();
@@ -863,9 +860,10 @@ fn simulate(
     }
     let (params, switches) = setup(m, err)?;
     let decoding = m.decoding()?;
-    let job = job_setup(m, stock)?;
-    let image_out = image.map(|path| output::LazyFile::new(path, &m.read_files(file), 1 << 16)).transpose().map_err(usage)?;
-    let stl_out = outputs.stl.map(|path| output::LazyFile::new(path, &m.read_files(file), 1 << 16)).transpose().map_err(usage)?;
+    let job = job_setup(m, params.profile().name, stock)?;
+    let reads = m.read_files(file);
+    let image_out = image.map(|path| output::LazyFile::new(path, &reads, 1 << 16)).transpose().map_err(usage)?;
+    let stl_out = outputs.stl.map(|path| output::LazyFile::new(path, &reads, 1 << 16)).transpose().map_err(usage)?;
     if image_out.is_some() && !params.profile().is_lathe() {
         return Err(usage(format!(
             "--image draws the unrolled surface of a thread on a lathe; {} is a machining centre: the drilling simulation has no image (its holes are in the text or JSON output)",
