@@ -232,3 +232,26 @@ fn unreadable_subprogramme_entries_are_named() {
     assert!(out.contains(&format!("passed over, not readable as a programme file: {sd}/O1234.nc (a folder)")), "{out}");
     assert!(out.contains(&format!("{sd}/O1235.nc (a named pipe or a device, not a regular file)")), "{out}");
 }
+
+/// The setup's `[machine] tool_change_s` (third-round setup keys): each change to another tool
+/// adds it to the cycle time. T0101, T0202, T0202 again (no change), T0101: three changes, 3 x 4
+/// s = 12 s more than without; `--param tool_change_s=1` overrides the setup (3 s more).
+#[test]
+fn a_tool_change_adds_the_setups_time() {
+    let dir = Scratch::new("tool-change");
+    let prog = dir.file("p.nc", "G99 M03 S600\nT0101\nG00 X40. Z2.\nT0202\nG00 X50.\nT0202\nT0101\nG00 X60.\nM30\n");
+    let setup = dir.file("s.toml", "[machine]\ntool_change_s = 4.0\n");
+    let seconds = |args: &[&str]| -> f64 {
+        let (code, out, err) = common::ncsight(&[&["run", &prog, "--machine", "gsk980tdi"], args].concat());
+        assert_eq!(code, 0, "{err}");
+        let line = out.lines().find(|l| l.contains("cycle time")).unwrap_or_else(|| panic!("{out}"));
+        line.rsplit('(').next().unwrap().trim_end_matches(" s)").trim().parse().unwrap_or_else(|_| panic!("{line}"))
+    };
+    let plain = seconds(&[]);
+    assert!((seconds(&["--setup", &setup]) - plain - 12.0).abs() < 0.01, "{plain}");
+    assert!((seconds(&["--setup", &setup, "--param", "tool_change_s=1"]) - plain - 3.0).abs() < 0.01);
+    let bad = dir.file("bad.toml", "[machine]\ntool_change_s = -1\n");
+    let (code, _, err) = common::ncsight(&["run", &prog, "--machine", "gsk980tdi", "--setup", &bad]);
+    assert_eq!(code, 2, "{err}");
+    assert!(err.contains("tool_change_s"), "{err}");
+}

@@ -102,6 +102,10 @@ impl Job {
     pub fn parameters(&self) -> Result<Params, JobError> {
         let profile = self.profile()?;
         let mut params = Params::defaults(profile);
+        // The setup's machine facts that are settings, before `--param` (which wins).
+        if let Some(s) = self.setup.as_ref().and_then(|s| s.machine.as_ref()).and_then(|m| m.tool_change_s) {
+            params.set(ncsight::profile::ParamKey::Setting("tool_change_s"), s).map_err(|e| usage(format!("[machine] tool_change_s: {e}")))?;
+        }
         for p in &self.params {
             params.set_text(p).map_err(|e| usage(format!("{} ({})", e, profile.name)))?;
         }

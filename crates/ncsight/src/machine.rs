@@ -56,6 +56,8 @@ pub struct Machine {
     last_thread_end: Option<Vec3>,
     /// How long the last record run took (a rotary turn made with it takes only the rest).
     last_duration_s: f64,
+    /// The tool in the spindle or turret (a change to another costs `tool_change_s`).
+    tool: Option<u32>,
     reset: bool,
     last_span: crate::source::Span,
     /// Records a thread hold makes the machine cut again, in order: a queue, not recursion, so
@@ -79,6 +81,7 @@ impl Machine {
             cycle_id: None,
             last_thread_end: None,
             last_duration_s: 0.0,
+            tool: None,
             reset: false,
             last_span: Default::default(),
             again: std::collections::VecDeque::new(),
@@ -165,7 +168,12 @@ impl Machine {
             self.stop(r.span, StopReason::FeedHold, out);
         }
         let run_start = r.op.is_thread() && self.last_thread_end != r.op.start_point();
-        let dur = self.model.duration_after_s(&r, run_start, self.last_duration_s);
+        let mut dur = self.model.duration_after_s(&r, run_start, self.last_duration_s);
+        if let Op::Tool { number, .. } = r.op {
+            if self.tool.replace(number) != Some(number) {
+                dur += self.model.tool_change_s();
+            }
+        }
         // The time the block's simultaneous motion has taken so far (a rotary turn made with
         // the records before it adds only what they do not cover).
         self.last_duration_s = if matches!(r.op, Op::Rotary { with_move: true, .. }) { self.last_duration_s + dur } else { dur };

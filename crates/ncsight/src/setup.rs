@@ -58,6 +58,8 @@ pub struct MachineSetup {
     pub limits: Option<Limits>,
     /// The reference point (G28), where the tool is at power on.
     pub reference: Option<Point>,
+    /// Seconds added to the cycle time at each tool change (0 when absent).
+    pub tool_change_s: Option<f64>,
     /// The 2nd, 3rd and 4th reference points (G30 P2-P4).
     pub reference_2: Option<Point>,
     pub reference_3: Option<Point>,
@@ -188,8 +190,11 @@ pub enum ToolKind {
     Turning,
     /// A drill (diameter, point angle).
     Drill,
-    /// A grooving or parting tool.
+    /// A grooving tool: a flat end `width_mm` wide (corners `corner_radius_mm`), positioned by
+    /// its `reference` corner.
     Groove,
+    /// A parting (cut-off) tool: as a grooving tool.
+    Parting,
     /// A boring bar (a nose radius, inside the bore).
     Boring,
     /// A tap.
@@ -217,6 +222,23 @@ pub struct Tool {
     /// Included angle of a threading insert, degrees (60 for ISO metric and UN).
     #[serde(default = "sixty")]
     pub included_angle_deg: f64,
+    /// A grooving or parting tool's width, mm (0: a threading-style point, as before).
+    #[serde(default)]
+    pub width_mm: f64,
+    /// Which corner of a grooving or parting tool the programmed point is.
+    #[serde(default)]
+    pub reference: GrooveReference,
+    /// A turning or boring insert's shape by its ISO 1832 letter (the nose angle).
+    #[serde(default)]
+    pub iso_shape: Option<IsoShape>,
+    /// The spindle direction the tool cuts in: a right-hand tool with M03 (the spindle's positive
+    /// direction), a left-hand one with M04. Not given: not checked.
+    #[serde(default)]
+    pub hand: Option<Hand>,
+    /// A boring bar's smallest bore, mm: entering a smaller one is a `holder` finding (0: not
+    /// checked).
+    #[serde(default)]
+    pub min_bore_mm: f64,
     /// Tip (nose) radius, mm (`nose_radius_mm` is the same key).
     #[serde(default, alias = "nose_radius_mm")]
     pub tip_radius_mm: f64,
@@ -255,6 +277,68 @@ pub struct Tool {
     pub holder: Option<Holder>,
 }
 
+/// Which corner of a grooving or parting tool the programmed point is (the chuck is on the left).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Default)]
+#[serde(rename_all = "lowercase")]
+pub enum GrooveReference {
+    /// The corner toward the chuck (-Z): the tool spans from the point toward the face.
+    #[default]
+    Left,
+    /// The corner toward the face (+Z).
+    Right,
+    /// The middle of the cutting edge.
+    #[serde(alias = "center")]
+    Centre,
+}
+
+/// A lathe insert's shape, by the first letter of its ISO 1832 code.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+pub enum IsoShape {
+    C,
+    D,
+    V,
+    T,
+    W,
+    S,
+    R,
+}
+
+impl IsoShape {
+    /// The insert's nose angle, degrees (ISO 1832: C 80, D 55, V 35, T 60, W 80, S 90; R round).
+    pub fn nose_angle_deg(self) -> f64 {
+        match self {
+            IsoShape::C | IsoShape::W => 80.0,
+            IsoShape::D => 55.0,
+            IsoShape::V => 35.0,
+            IsoShape::T => 60.0,
+            IsoShape::S => 90.0,
+            IsoShape::R => 180.0,
+        }
+    }
+
+    /// The holder's approach angle assumed for the shape, degrees from the feed direction (-Z)
+    /// to the main edge: 95 for C and W (as SCLCR/MWLNR holders), 93 for D, V and T (SDJCR,
+    /// SVJBR, MTJNR), 45 for S (SSSCR). Assumed: the setup names no holder.
+    pub fn approach_deg(self) -> f64 {
+        match self {
+            IsoShape::C | IsoShape::W => 95.0,
+            IsoShape::D | IsoShape::V | IsoShape::T => 93.0,
+            IsoShape::S => 45.0,
+            IsoShape::R => 90.0,
+        }
+    }
+}
+
+/// The spindle direction a tool cuts in.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Hand {
+    /// Cuts with the spindle turning in its positive direction (M03).
+    Right,
+    /// Cuts with M04.
+    Left,
+}
+
 /// A tool holder: a cylinder above the tool.
 #[derive(Debug, Clone, Copy, PartialEq, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -278,6 +362,10 @@ pub enum MillShape {
     Ball,
     /// A bull-nose (toroidal) mill: flat with `corner_radius_mm` corners.
     Bull,
+    /// A chamfer (spot) mill: a cone of `point_angle_deg` to its `diameter_mm`.
+    Chamfer,
+    /// A face mill: flat, as a flat end mill.
+    Face,
 }
 
 fn sixty() -> f64 {
@@ -298,6 +386,11 @@ impl Tool {
             tip_radius_mm: 0.0,
             tip: None,
             tip_flat_mm: 0.0,
+            width_mm: 0.0,
+            reference: GrooveReference::Left,
+            iso_shape: None,
+            hand: None,
+            min_bore_mm: 0.0,
             internal: false,
             diameter_mm: 0.0,
             point_angle_deg: 118.0,
@@ -318,7 +411,7 @@ impl Tool {
             return None;
         }
         Some(match (self.kind, self.shape) {
-            (ToolKind::Mill, MillShape::Flat) => 0.0,
+            (ToolKind::Mill, MillShape::Flat | MillShape::Face) => 0.0,
             (ToolKind::Mill, MillShape::Ball) => r - (r * r - d * d).max(0.0).sqrt(),
             (ToolKind::Mill, MillShape::Bull) => {
                 let rc = self.corner_radius_mm.clamp(0.0, r);
@@ -337,22 +430,76 @@ impl Tool {
     /// insert's edges beyond it are clearance, not a symmetric V (docs/compensation.md).
     /// [`Tool::profile`] on one side of the tip: `chuck_side` toward -Z (where a right-hand
     /// turning tool's or boring bar's main edge faces as it feeds toward the chuck), else toward
-    /// +Z. A turning tool or boring bar is an 80-degree insert in a 95-degree holder (ISO C in
-    /// PCLNR/S..CLNR, the commonest): its main edge 5 degrees past the radial toward the chuck,
-    /// its end edge 5 degrees off the axis toward the face (180 - 95 - 80), the nose radius
-    /// between (an assumption where the setup gives no shape). Other tools are symmetric.
+    /// +Z.
+    /// - A grooving or parting tool with a `width_mm`: a flat end that wide from its `reference`
+    ///   corner, its corners rounded by `corner_radius_mm`, its sides straight up.
+    /// - A turning tool or boring bar of an `iso_shape`: its main edge at the holder's approach
+    ///   angle toward the chuck, its end edge at 180 - approach - nose angle toward the face
+    ///   ([`IsoShape::approach_deg`]), the nose radius between; R: a round insert of the nose
+    ///   radius. Without a shape, an 80-degree insert in a 95-degree holder (ISO C in PCLNR, the
+    ///   commonest): the main edge 5 degrees past the radial, the end edge 5 degrees off the
+    ///   axis (an assumption, said in docs/setup.md).
+    /// - Other tools are symmetric ([`Tool::profile`]).
     pub fn profile_toward(&self, u: f64, chuck_side: bool) -> f64 {
-        if !matches!(self.kind, ToolKind::Turning | ToolKind::Boring) || (self.tip.is_some() && self.tip_radius_mm > 0.0) {
+        if matches!(self.kind, ToolKind::Groove | ToolKind::Parting) && self.width_mm > 0.0 {
+            return self.groove_profile(if chuck_side { -u.abs() } else { u.abs() });
+        }
+        if !matches!(self.kind, ToolKind::Turning | ToolKind::Boring) {
             return self.profile(u);
         }
-        // The edge's angle from the axis: the main edge 85 degrees, the end edge 5.
-        let angle = if chuck_side { 85f64 } else { 5f64 }.to_radians();
         let (u, rho) = (u.abs(), self.tip_radius_mm);
+        let (chuck_deg, face_deg) = match self.iso_shape {
+            Some(IsoShape::R) => return if u <= rho { rho - (rho * rho - u * u).max(0.0).sqrt() } else { 1e6 },
+            // A main edge leaning back from the radial (approach over 90) is taken as leaning
+            // forward as much: it cuts a little more of a shoulder than the real insert would.
+            Some(shape) => {
+                let kr = shape.approach_deg();
+                (if kr > 90.0 { 180.0 - kr } else { kr }, (180.0 - kr - shape.nose_angle_deg()).max(1.0))
+            }
+            None if self.tip.is_some() && rho > 0.0 => return self.profile(u),
+            None => (85.0, 5.0),
+        };
+        // The edge's angle from the axis.
+        let angle = if chuck_side { chuck_deg } else { face_deg }.to_radians();
         let u_t = rho * angle.sin();
         if u <= u_t {
             return rho - (rho * rho - u * u).max(0.0).sqrt();
         }
         rho * (1.0 - angle.cos()) + (u - u_t) * angle.tan()
+    }
+
+    /// Where along Z from the programmed point a point of the tool's cutting end lies, mm: the
+    /// middle of a grooving or parting tool's width (its reference corner may be rounded
+    /// away), else the point itself. The rapids' crash check follows this point.
+    pub fn edge_point_dz_mm(&self) -> f64 {
+        if !(matches!(self.kind, ToolKind::Groove | ToolKind::Parting) && self.width_mm > 0.0) {
+            return 0.0;
+        }
+        match self.reference {
+            GrooveReference::Left => self.width_mm / 2.0,
+            GrooveReference::Right => -self.width_mm / 2.0,
+            GrooveReference::Centre => 0.0,
+        }
+    }
+
+    /// A grooving or parting tool's end at signed axial offset `s` from the programmed point
+    /// (+ toward the face): 0 on its flat, rising in its rounded corners, a wall (far above
+    /// anything) beyond its width.
+    fn groove_profile(&self, s: f64) -> f64 {
+        let w = self.width_mm;
+        let from = match self.reference {
+            GrooveReference::Left => 0.0,
+            GrooveReference::Right => -w,
+            GrooveReference::Centre => -w / 2.0,
+        };
+        let (a, b) = (from, from + w);
+        // A hair of slack so the corner cell on the grid is inside the tool.
+        if s < a - 1e-9 || s > b + 1e-9 {
+            return 1e6;
+        }
+        let rc = self.corner_radius_mm.clamp(0.0, w / 2.0);
+        let e = (s - a).min(b - s).max(0.0);
+        if e >= rc { 0.0 } else { rc - (rc * rc - (rc - e) * (rc - e)).max(0.0).sqrt() }
     }
 
     pub fn profile(&self, u: f64) -> f64 {
@@ -393,6 +540,9 @@ fn check_machine(m: &MachineSetup) -> Result<(), SetupError> {
         if m.axes[..i].contains(a) {
             return Err(SetupError(format!("machine.axes: {a:?} is named twice; each axis once")));
         }
+    }
+    if m.tool_change_s.is_some_and(|s| !(s.is_finite() && (0.0..=3600.0).contains(&s))) {
+        return Err(SetupError("machine.tool_change_s: seconds from 0 to 3600".into()));
     }
     if m.spindle_p.len() > MAX_SPINDLES {
         return Err(SetupError(format!("machine.spindle_p: at most {} spindles", MAX_SPINDLES)));
@@ -476,11 +626,11 @@ impl Setup {
         }
         for t in &self.tools {
             let holder = t.holder.map_or([0.0, 0.0], |h| [h.diameter_mm, h.length_mm]);
-            let lengths_ok = [t.tip_radius_mm, t.tip_flat_mm, t.diameter_mm, t.corner_radius_mm, t.flute_length_mm, t.stick_out_mm, holder[0], holder[1]].into_iter().all(|v| length(v) && v >= 0.0);
+            let lengths_ok = [t.tip_radius_mm, t.tip_flat_mm, t.width_mm, t.min_bore_mm, t.diameter_mm, t.corner_radius_mm, t.flute_length_mm, t.stick_out_mm, holder[0], holder[1]].into_iter().all(|v| length(v) && v >= 0.0);
             let angles_ok = [t.included_angle_deg, t.point_angle_deg].into_iter().all(|a| a.is_finite() && a > 0.0 && a < 180.0);
             if !(lengths_ok && angles_ok) {
                 return Err(SetupError(format!(
-                    "tool {}: the included and point angles must be more than 0 and less than 180 degrees, every length (radius, flat, diameter, corner radius, flute length, stick-out, holder) finite, 0 or more",
+                    "tool {}: the included and point angles must be more than 0 and less than 180 degrees, every length (radius, flat, width, minimum bore, diameter, corner radius, flute length, stick-out, holder) finite, 0 or more",
                     t.number
                 )));
             }

@@ -43,6 +43,8 @@ pub struct TimeModel {
     dry_run_mm_min: f64,
     /// Rapid rate of a rotary axis, degrees per minute (after the rapid override).
     rotary_rapid_deg_min: f64,
+    /// Seconds a change of tool takes.
+    tool_change_s: f64,
     ov: Overrides,
 }
 
@@ -130,8 +132,14 @@ impl TimeModel {
             feed_max_mm_min: params.feed_max_mm_min(),
             rotary_rapid_deg_min: params.get(ParamKey::Setting("rotary_rapid_deg_min")) * ov.rapid_pct / 100.0,
             dry_run_mm_min: params.get(params.profile().time.dry_run),
+            tool_change_s: params.get(ParamKey::Setting("tool_change_s")),
             ov,
         }
+    }
+
+    /// Seconds a change of tool takes (the setup's `[machine] tool_change_s`).
+    pub fn tool_change_s(&self) -> f64 {
+        self.tool_change_s
     }
 
     pub fn feed_accel_s(&self) -> f64 {

@@ -131,7 +131,7 @@ fn repair_round_trip_removes_no_extra_material() {
         let tool = Setup::default().tool(0);
         let first_thread = repair.iter().position(|r| r.op.is_thread()).unwrap();
         for r in &repair[first_thread..] {
-            sim.stock.apply(r, &tool, true);
+            sim.stock.apply(r, &tool, 1000.0);
         }
         let removed = before.iter().zip(&sim.stock.outer).map(|(a, b)| (a - b).abs()).fold(0f32, f32::max);
         // The recorded angle is good to half a grid step around: that far along the thread, the

@@ -138,3 +138,77 @@ fn an_internal_groove_and_thread_are_measured_on_the_bore() {
     assert!((at(-18.0).inner_diameter_mm - 18.376).abs() <= 0.02, "{:?}", at(-18.0));
     assert!((at(-18.0).outer_diameter_mm - 40.0).abs() <= 0.02);
 }
+
+/// A grooving tool 3 mm wide with 0.2 mm corners, plunged from Ø42 to Ø30 at Z-20 (line 4).
+/// By hand: with `reference = "left"` (the default) the programmed point is the corner toward
+/// the chuck, so the groove runs from Z-20 to Z-17; with "right" from Z-23 to Z-20; with
+/// "centre" from Z-21.5 to Z-18.5. Its floor is Ø30 away from the corners, and 0.1 mm inside a
+/// corner the floor is up by 0.2 - sqrt(0.2^2 - 0.1^2) = 0.0268 mm (Ø30.054).
+#[test]
+fn a_grooving_tool_cuts_its_width_from_its_reference_corner() {
+    let text = "G99 M03 S600\nT0101\nG00 X42. Z2.\nG00 Z-20.\nG01 X30. F0.05\nG00 X42.\nG00 X100. Z100.\nM30\n";
+    for (reference, from, to) in [("left", -20.0, -17.0), ("right", -23.0, -20.0), ("centre", -21.5, -18.5)] {
+        let tools = format!("[[tool]]\nnumber = 1\nkind = \"groove\"\nwidth_mm = 3.0\ncorner_radius_mm = 0.2\nreference = \"{reference}\"\n");
+        let sim = simulate(&records(text), &setup(&tools), &opts()).unwrap();
+        let m = &sim.measurement;
+        assert!(m.findings.is_empty(), "{reference}: {:?}", m.findings);
+        let at = |z: f64| m.profile.iter().find(|r| r.z_from_mm + 0.005 >= z && z >= r.z_to_mm - 0.005).copied().unwrap();
+        let mid = (from + to) / 2.0;
+        assert!((at(mid).outer_diameter_mm - 30.0).abs() <= 0.02, "{reference}: {:?}", at(mid));
+        let corner = 30.0 + 2.0 * (0.2 - (0.04f64 - 0.01).sqrt());
+        assert!((at(from + 0.1).outer_diameter_mm - corner).abs() <= 0.02, "{reference}: {:?}", at(from + 0.1));
+        assert!((at(to - 0.1).outer_diameter_mm - corner).abs() <= 0.02, "{reference}: {:?}", at(to - 0.1));
+        // Outside the width, the bar is whole.
+        assert!((at(from - 0.05).outer_diameter_mm - 40.0).abs() <= 0.02, "{reference}: {:?}", at(from - 0.05));
+        assert!((at(to + 0.05).outer_diameter_mm - 40.0).abs() <= 0.02, "{reference}: {:?}", at(to + 0.05));
+    }
+}
+
+/// An ISO D insert (55 degrees) in a 93-degree holder, 0.4 mm nose: turned from Z0 to Z-20 at
+/// Ø30 it leaves, toward the face, its end edge at 180 - 93 - 55 = 32 degrees off the axis; and
+/// a C insert (80 degrees, 95-degree holder) 5 degrees. The shoulder it leaves toward the chuck
+/// is its main edge at 87 (D) and 85 (C) degrees. By hand, 1 mm toward the chuck from the
+/// nose's lowest point the shoulder is at radius 15 + 0.4 (1 - cos a) + (1 - 0.4 sin a) tan a.
+#[test]
+fn an_iso_insert_leaves_its_edges_on_the_shoulder() {
+    let text = "G99 M03 S600\nT0101\nG00 X42. Z2.\nG00 X30.\nG01 Z-20. F0.1\nG00 X42.\nG00 X100. Z100.\nM30\n";
+    for (shape, main_deg) in [("D", 87.0f64), ("C", 85.0)] {
+        let tools = format!("[[tool]]\nnumber = 1\nkind = \"turning\"\niso_shape = \"{shape}\"\nnose_radius_mm = 0.4\n");
+        let sim = simulate(&records(text), &setup(&tools), &opts()).unwrap();
+        let m = &sim.measurement;
+        assert!(m.findings.is_empty(), "{shape}: {:?}", m.findings);
+        let at = |z: f64| m.profile.iter().find(|r| r.z_from_mm + 0.005 >= z && z >= r.z_to_mm - 0.005).copied().unwrap();
+        let a = main_deg.to_radians();
+        let want = 2.0 * (15.0 + 0.4 * (1.0 - a.cos()) + (1.0 - 0.4 * a.sin()) * a.tan());
+        let got = at(-21.0).outer_diameter_mm;
+        assert!((got - want.min(40.0)).abs() <= 0.05, "{shape}: {got} against {want}");
+        assert!((at(-10.0).outer_diameter_mm - 30.0).abs() <= 0.02);
+    }
+}
+
+/// A right-hand tool cutting with M04 (line 5), a feed into the bar with the spindle stopped
+/// (line 9, per minute: per revolution it would be the controller's alarm): each one `spindle`
+/// finding at its line; the same tool with M03 none.
+#[test]
+fn the_spindle_stopped_or_turning_the_wrong_way_is_found() {
+    let tools = "[[tool]]\nnumber = 1\nkind = \"turning\"\nhand = \"right\"\n";
+    let text = "G99 M04 S600\nT0101\nG00 X42. Z2.\nG00 X36.\nG01 Z-10. F0.1\nG00 X42.\nG00 Z2.\nM05\nG98 G01 X34. Z-5. F100.\nG00 X42.\nM30\n";
+    let sim = simulate(&records(text), &setup(tools), &opts()).unwrap();
+    let found: Vec<_> = sim.measurement.findings.iter().map(|f| (f.kind, f.line)).collect();
+    assert_eq!(found, [("spindle", 5), ("spindle", 9)], "{:?}", sim.measurement.findings);
+    let sim = simulate(&records(&text.replace("M04", "M03").replace("M05\n", "")), &setup(tools), &opts()).unwrap();
+    assert!(sim.measurement.findings.is_empty(), "{:?}", sim.measurement.findings);
+}
+
+/// A boring bar that needs a Ø20 bore (`min_bore_mm`) entering the Ø16 drilled hole (line 7):
+/// one `holder` finding there; with a Ø14 minimum none.
+#[test]
+fn a_boring_bar_in_a_bore_too_small_for_it_is_found() {
+    let text = "G99 M03 S600\nT0101\nG00 X0. Z2.\nG01 Z-30. F0.1\nG00 Z2.\nT0202\nG00 X16. Z-10.\nG00 Z2.\nG00 X100. Z100.\nM30\n";
+    for (min_bore, want) in [(20.0, vec![("holder", 7)]), (14.0, vec![])] {
+        let tools = format!("[[tool]]\nnumber = 1\nkind = \"drill\"\ndiameter_mm = 16.0\n[[tool]]\nnumber = 2\nkind = \"boring\"\nmin_bore_mm = {min_bore}\n");
+        let sim = simulate(&records(text), &setup(&tools), &opts()).unwrap();
+        let found: Vec<_> = sim.measurement.findings.iter().map(|f| (f.kind, f.line)).collect();
+        assert_eq!(found, want, "{:?}", sim.measurement.findings);
+    }
+}

@@ -1121,6 +1121,15 @@ pub const SETTINGS: &[ParamDef] = &[
         source: "ncsight setting for FANUC 0i parameter 1300#0 (OUT) and GSK980TDi No.172 bit 2 (help text G22 note 2); inside forbidden assumed at power on",
     },
     ParamDef {
+        key: ParamKey::Setting("tool_change_s"),
+        meaning: "time a tool change takes (added to the cycle time at each change of tool number)",
+        unit: "s",
+        min: 0.0,
+        max: 3600.0,
+        default: 0.0,
+        source: "ncsight setting (the setup's [machine] tool_change_s sets it); 0 assumed: the machine builder's figure",
+    },
+    ParamDef {
         key: ParamKey::Setting("rotary_rapid_deg_min"),
         meaning: "rapid rate of a rotary axis (A, B, C) the setup declares",
         unit: "deg/min",

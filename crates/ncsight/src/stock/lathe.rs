@@ -107,6 +107,10 @@ pub struct LatheStock {
     /// cuts from the side of the material it is nearer to (a bar that feeds 1 mm from a bore's
     /// wall and 11 mm below the outside is boring).
     pub either_side: Vec<u32>,
+    /// The tool and spindle direction of the last `spindle` finding (one until either changes).
+    spindle_flagged: Option<(u32, i32)>,
+    /// Boring bars already found in a bore too small for them.
+    bore_flagged: Vec<u32>,
 }
 
 /// A run of the part's profile (see [`LatheStock::profile`]), mm; X as diameters.
@@ -172,6 +176,8 @@ impl LatheStock {
             most_outer: vec![(bar.diameter_mm / 2.0) as f32; nz],
             stale: vec![false; nz],
             either_side: Vec::new(),
+            spindle_flagged: None,
+            bore_flagged: Vec::new(),
         }
     }
 
@@ -309,10 +315,18 @@ impl LatheStock {
         visited
     }
 
-    /// Apply one record with the tool in the turret; what it finds names the tool.
-    pub fn apply(&mut self, rec: &Record, tool: &Tool, spindle_turning: bool) {
+    /// Apply one record with the tool in the turret and the spindle at `rpm` (signed: negative
+    /// is M04; 0 stopped); what it finds names the tool.
+    pub fn apply(&mut self, rec: &Record, tool: &Tool, rpm: f64) {
         let before = self.findings.len();
-        self.apply_tool(rec, tool, spindle_turning);
+        let stuck = self.spindle_check(rec, tool, rpm);
+        self.apply_tool(rec, tool, rpm != 0.0);
+        if stuck {
+            // The part does not turn, so the move cuts no round; the tool is left in the
+            // material, and the rapid out of it is part of this finding, not a crash of its own.
+            self.last_crash_end = rec.op.end_point();
+        }
+        self.bore_check(rec, tool);
         for f in &mut self.findings[before..] {
             f.tool = Some(tool.number);
         }
@@ -380,7 +394,8 @@ impl LatheStock {
                 // A rapid crashes when its cutting point goes into the material (the flanks of
                 // the insert's model are wider than a real insert's clearance: a rapid just in
                 // front of the face is no crash); then it cuts what it passes.
-                let into = self.depth_along(&[from, to]);
+                let dz = Vec3::new(0.0, 0.0, tool.edge_point_dz_mm());
+                let into = self.depth_along(&[from + dz, to + dz]);
                 let cut = if into > CRASH_MM { self.sweep(&[from, to], tool, inside).max(into) } else { 0.0 };
                 if cut > CRASH_MM {
                     self.last_crash_end = Some(to);
@@ -557,6 +572,68 @@ impl LatheStock {
             let msg = format!("the tool reaches Z{:.3}, past the end of the stock at Z{far:.3} (the chuck side)", p.z);
             self.findings.push(Finding::at("chuck", rec, p, true, None, msg));
         }
+    }
+
+    /// A cutting move into material with the spindle stopped, or turning the wrong way for the
+    /// tool's `hand` (a right-hand tool cuts with M03): a `spindle` finding, once until the
+    /// spindle or the tool changes. Checked on the material before the move cuts it. Returns
+    /// whether the move goes into material with the spindle stopped.
+    fn spindle_check(&mut self, rec: &Record, tool: &Tool, rpm: f64) -> bool {
+        let rpm = match rec.op {
+            Op::Thread { rpm, .. } | Op::ThreadArc { rpm, .. } => rpm,
+            Op::Feed { .. } | Op::Arc { .. } => rpm,
+            _ => return false,
+        };
+        let wrong_way = match tool.hand {
+            Some(crate::setup::Hand::Right) => rpm < 0.0,
+            Some(crate::setup::Hand::Left) => rpm > 0.0,
+            None => false,
+        };
+        let state = (tool.number, rpm.signum() as i32);
+        if !(rpm == 0.0 || wrong_way) {
+            return false;
+        }
+        let (Some(from), Some(to)) = (rec.op.start_point(), rec.op.end_point()) else { return false };
+        let dz = Vec3::new(0.0, 0.0, tool.edge_point_dz_mm());
+        let depth = self.depth_along(&[from + dz, to + dz]);
+        if depth <= CRASH_MM || self.spindle_flagged == Some(state) {
+            return depth > CRASH_MM && rpm == 0.0;
+        }
+        self.spindle_flagged = Some(state);
+        let message = if rpm == 0.0 {
+            format!("a cutting move goes {depth:.3} mm into the material with the spindle stopped")
+        } else {
+            let (hand, code) = if rpm < 0.0 { ("right", "M04") } else { ("left", "M03") };
+            format!("a {hand}-hand tool cuts {depth:.3} mm into the material with the spindle turning the wrong way ({code})")
+        };
+        self.findings.push(Finding::at("spindle", rec, from, true, None, message));
+        rpm == 0.0
+    }
+
+    /// A boring bar with a `min_bore_mm` in a smaller bore: between its tip and the face, the
+    /// least bore where there is material is smaller than the bar needs (a `holder` finding, once
+    /// per tool).
+    fn bore_check(&mut self, rec: &Record, tool: &Tool) {
+        if tool.kind != super::ToolKind::Boring || tool.min_bore_mm <= 0.0 || self.bore_flagged.contains(&tool.number) {
+            return;
+        }
+        let (Op::Rapid { to, .. } | Op::Feed { to, .. } | Op::Arc { to, .. }) = rec.op else { return };
+        let g = self.grid;
+        let (lo, hi) = (g.cell(to.z).max(0), g.cell(self.bar.front_z_mm).min(g.nz as isize - 1));
+        let mut least = f32::MAX;
+        for i in lo..=hi {
+            let (inner, outer) = self.extremes(i as usize);
+            if outer > inner && (to.x.abs() as f32) < outer {
+                least = least.min(inner);
+            }
+        }
+        let need = tool.min_bore_mm / 2.0;
+        if lo > hi || least == f32::MAX || least as f64 >= need - CRASH_MM {
+            return;
+        }
+        self.bore_flagged.push(tool.number);
+        let message = format!("the boring bar needs a bore of {:.3} mm; it enters one of {:.3} mm", tool.min_bore_mm, 2.0 * least);
+        self.findings.push(Finding::at("holder", rec, to, true, None, message));
     }
 
     /// A thread record: every column at the places the tool passes it.

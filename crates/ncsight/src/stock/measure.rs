@@ -244,13 +244,13 @@ pub fn simulate_mill(records: &[Record], setup: &Setup, cell_mm: Option<f64>) ->
     let tool_for = |n: u32| assumed.iter().find(|(m, _)| *m == n).map(|(_, t)| *t).unwrap_or_else(|| setup.mill_tool(n));
     let mut stock = super::mill::MillStock::new(block, cell);
     let mut tool = tool_for(0);
-    let mut turning = false;
+    let mut rpm = 0.0;
     let first_rapid = records.iter().position(|r| matches!(r.op, Op::Rapid { .. })).unwrap_or(0);
     for (k, r) in records.iter().enumerate() {
         match r.op {
             Op::Tool { number, .. } => tool = tool_for(number),
-            Op::Spindle { rpm, .. } => turning = rpm != 0.0,
-            _ if k > first_rapid => stock.apply(r, &tool, turning),
+            Op::Spindle { rpm: s, .. } => rpm = s,
+            _ if k > first_rapid => stock.apply(r, &tool, rpm),
             _ => {}
         }
     }
@@ -320,11 +320,11 @@ fn work_estimate(records: &[Record], bar_length_mm: f64, dz: f64, ntheta: usize)
 
 /// The tool in the turret at each record, and whether the spindle turns: it follows the T
 /// words; a tool the setup does not describe is the one `assumed` from what it does.
-fn tools_of(records: &[Record], setup: &Setup, assumed: &[(u32, Tool)]) -> Vec<(Tool, bool)> {
+fn tools_of(records: &[Record], setup: &Setup, assumed: &[(u32, Tool)]) -> Vec<(Tool, f64)> {
     let tool_for = |number: u32| assumed.iter().find(|(n, _)| *n == number).map(|(_, t)| *t).unwrap_or_else(|| setup.tool(number));
     let mut tool_of = Vec::with_capacity(records.len());
     let mut tool = tool_for(0);
-    let mut turning = false;
+    let mut rpm = 0.0;
     // A turning or boring tool whose [[tool]] gives no imaginary nose takes the one of its
     // offset (T0101 -> [[offset]] 1), and that offset's radius if it gives none.
     let with_offset = |mut t: Tool, offset: Option<u32>| {
@@ -341,10 +341,10 @@ fn tools_of(records: &[Record], setup: &Setup, assumed: &[(u32, Tool)]) -> Vec<(
     for r in records {
         match r.op {
             Op::Tool { number, offset } => tool = with_offset(tool_for(number), offset),
-            Op::Spindle { rpm, .. } => turning = rpm != 0.0,
+            Op::Spindle { rpm: r, .. } => rpm = r,
             _ => {}
         }
-        tool_of.push((tool, turning));
+        tool_of.push((tool, rpm));
     }
     tool_of
 }
@@ -405,10 +405,10 @@ pub fn simulate_with(records: &[Record], setup: &Setup, opts: &SimOptions, progr
     // (the power-on position): motion up to the end of the first rapid is not cut.
     let first_rapid = records.iter().position(|r| matches!(r.op, Op::Rapid { .. })).unwrap_or(0);
     let total = records.len();
-    for (k, (r, (t, turning))) in records.iter().zip(&tool_of).enumerate().skip(first_rapid + 1) {
+    for (k, (r, (t, rpm))) in records.iter().zip(&tool_of).enumerate().skip(first_rapid + 1) {
         match nose_shift(t) {
-            Some(d) => stock.apply(&shifted(r, d), t, *turning),
-            None => stock.apply(r, t, *turning),
+            Some(d) => stock.apply(&shifted(r, d), t, *rpm),
+            None => stock.apply(r, t, *rpm),
         }
         progress(k + 1, total);
     }

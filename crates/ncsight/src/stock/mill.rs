@@ -134,25 +134,36 @@ impl MillStock {
         }
     }
 
-    /// Apply one record; what it finds names the tool.
-    pub fn apply(&mut self, rec: &Record, tool: &Tool, turning: bool) {
+    /// Apply one record with the spindle at `rpm` (signed: negative is M04; 0 stopped); what it
+    /// finds names the tool.
+    pub fn apply(&mut self, rec: &Record, tool: &Tool, rpm: f64) {
         let before = self.findings.len();
-        self.apply_tool(rec, tool, turning);
+        self.apply_tool(rec, tool, rpm);
         for f in &mut self.findings[before..] {
             f.tool = Some(tool.number);
         }
     }
 
-    fn apply_tool(&mut self, rec: &Record, tool: &Tool, turning: bool) {
+    fn apply_tool(&mut self, rec: &Record, tool: &Tool, rpm: f64) {
         if matches!(rec.op, Op::Feed { .. } | Op::Arc { .. } | Op::Rapid { .. }) {
             self.tool_checks(rec, tool);
         }
         match rec.op {
             Op::Feed { .. } | Op::Arc { .. } => {
                 let (deepest, _) = self.sweep(&rec.op, tool, true);
-                if deepest > CUT_MM && !turning {
+                let wrong_way = match tool.hand {
+                    Some(crate::setup::Hand::Right) => rpm < 0.0,
+                    Some(crate::setup::Hand::Left) => rpm > 0.0,
+                    None => false,
+                };
+                if deepest > CUT_MM && (rpm == 0.0 || wrong_way) {
                     let at = rec.op.start_point().unwrap_or_default();
-                    self.findings.push(Finding::at("spindle", rec, at, false, None, format!("a cut {deepest:.3} mm deep with the spindle stopped")));
+                    let message = if rpm == 0.0 {
+                        format!("a cut {deepest:.3} mm deep with the spindle stopped")
+                    } else {
+                        format!("a cut {deepest:.3} mm deep with the spindle turning the wrong way for the tool ({})", if rpm < 0.0 { "M04" } else { "M03" })
+                    };
+                    self.findings.push(Finding::at("spindle", rec, at, false, None, message));
                 }
                 if let Op::Feed { from, to, .. } = rec.op {
                     if (from.x - to.x).abs() < 1e-9 && (from.y - to.y).abs() < 1e-9 && to.z < from.z {
@@ -314,7 +325,7 @@ mod tests {
         let mut s = MillStock::new(Block { min_mm: [0.0, 0.0, -20.0], max_mm: [40.0, 40.0, 0.0] }, 0.1);
         let drill = Tool { kind: super::super::ToolKind::Drill, diameter_mm: 6.0, point_angle_deg: 118.0, ..Tool::default_thread() };
         let rec = Record::new(Span::default(), Op::Feed { from: Vec3::new(10.0, 10.0, 2.0), to: Vec3::new(10.0, 10.0, -8.0), feed_mm_min: 100.0 });
-        s.apply(&rec, &drill, true);
+        s.apply(&rec, &drill, 1000.0);
         let h = s.holes();
         assert_eq!(h.len(), 1);
         assert!((h[0].x - 10.0).abs() < 0.06 && (h[0].y - 10.0).abs() < 0.06);
@@ -322,7 +333,7 @@ mod tests {
         assert!((h[0].diameter_mm - 6.0).abs() < 0.15, "{:?}", h[0]);
         // A rapid down into the material is a crash.
         let rapid = Record::new(Span::new(9, 1, 1), Op::Rapid { from: Vec3::new(30.0, 30.0, 5.0), to: Vec3::new(30.0, 30.0, -2.0) });
-        s.apply(&rapid, &drill, true);
+        s.apply(&rapid, &drill, 1000.0);
         assert_eq!(s.findings[0].kind, "crash");
     }
 }
