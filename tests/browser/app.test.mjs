@@ -13,6 +13,18 @@ import { tmpdir } from "node:os";
 import { chromium } from "playwright-core";
 import { decodePng, count } from "./png.mjs";
 
+/** Pixels of a screenshot for which `f([r, g, b])` holds. */
+function pixels(img, f) {
+  let n = 0;
+  for (let y = 0; y < img.height; y++) for (let x = 0; x < img.width; x++) if (f(img.at(x, y))) n++;
+  return n;
+}
+// The 3D view's colours, lit: the section of the cut-away (orange), the mill's cut floors (the
+// block's grey turning blue with depth), a finding's ball (red).
+const orange = ([r, g, b]) => r > g + 30 && g > b + 30;
+const blue = ([r, g, b]) => b > r + 35 && b > 120;
+const red = ([r, g, b]) => r > 170 && g < 60 && b < 60;
+
 const root = resolve(import.meta.dirname, "../..");
 const bin = [join(root, "target/release/ncsight"), join(root, "target/debug/ncsight")].find(existsSync);
 const browserPath = process.env.CHROMIUM || "/usr/bin/chromium";
@@ -84,7 +96,8 @@ before(async () => {
   mkdirSync(artifacts, { recursive: true });
   browser = await chromium.launch({
     executablePath: browserPath,
-    args: ["--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run", "--disable-background-networking", "--disable-component-update", "--disable-sync"],
+    // WebGL (the 3D view) in software: SwiftShader through ANGLE, as on a machine with no GPU.
+    args: ["--no-sandbox", "--disable-gpu", "--use-angle=swiftshader", "--enable-unsafe-swiftshader", "--disable-quic", "--no-first-run", "--disable-background-networking", "--disable-component-update", "--disable-sync"],
   });
 });
 after(async () => { if (browser) await browser.close(); });
@@ -536,5 +549,68 @@ test("40 million holes from a 10 kB programme: the page shows the first two mill
   assert.match(await page.textContent("#banner"), /shows the programme's first 2,000,000 records/);
   assert.doesNotMatch(await page.textContent("#banner"), /engine error|unreachable/);
   assert.deepEqual(errors, []);
+  await context.close();
+});
+
+/** The 3D view once the engine has cut the stock for the player's time. */
+async function view3d(page, name) {
+  await page.selectOption("#view", "cut3d");
+  await until(page, () => { const s = window.ncsightApp.stock3d(); return s && !s.busy; }, undefined, 60000);
+  const s = await page.evaluate(() => window.ncsightApp.stock3d());
+  return { head: s.head, note: s.note, img: await shot(page, name, "#plot-box") };
+}
+
+test("3D cut stock, lathe: the quarter section shows the drilled and bored inside, and cuts as the programme plays", async () => {
+  const part = join(work, "part3d.nc");
+  // Drill Ø16 (T1), bore Ø18 (T2), turn Ø38 (T3) on a Ø40 x 50 bar.
+  writeFileSync(part, "G99 M03 S600\nT0101\nG00 X0. Z2.\nG01 Z-30. F0.1\nG00 Z2.\nT0202\nG00 X18. Z2.\nG01 Z-25. F0.1\nG00 X16.\nG00 Z2.\nT0303\nG00 X42. Z2.\nG01 X38. F0.2\nG01 Z-30.\nG00 X42.\nG00 X100. Z100.\nM30\n");
+  const tools = join(work, "part3d.toml");
+  writeFileSync(tools, '[[tool]]\nnumber = 1\nkind = "drill"\ndiameter_mm = 16.0\n[[tool]]\nnumber = 2\nkind = "boring"\n[[tool]]\nnumber = 3\nkind = "turning"\n');
+  const { page, context, errors } = await open(report(part, "gsk980tdi", ["--stock", "40x50", "--setup", tools]));
+  const end = await view3d(page, "cut3d-lathe.png");
+  assert.deepEqual(errors, []);
+  assert.equal(end.head.kind, "lathe");
+  assert.deepEqual(end.head.findings, [], "the part gives no finding");
+  const holed = pixels(end.img, orange);
+  assert.ok(holed > 20000, `the section is drawn (${holed} orange pixels)`);
+  // At the start nothing is cut: the section is the whole bar's, larger than the bored part's
+  // (the bore takes Ø18 of its Ø40 over 25 mm, and the drill's cone below).
+  await page.evaluate(() => window.ncsightApp.setTime(0.001));
+  await until(page, () => { const s = window.ncsightApp.stock3d(); return s && !s.busy && s.head.until_s !== null; }, undefined, 60000);
+  const start = pixels(await shot(page, "cut3d-lathe-start.png", "#plot-box"), orange);
+  assert.ok(start > holed * 1.15, `the uncut bar's section (${start}) is larger than the bored part's (${holed})`);
+  // Half way (the boring bar at work): between the two.
+  await page.evaluate(() => window.ncsightApp.setTime(window.ncsightApp.scene.head.total_s * 0.45));
+  await until(page, () => { const s = window.ncsightApp.stock3d(); return s && !s.busy && s.head.until_s > 1; }, undefined, 60000);
+  const mid = pixels(await shot(page, "cut3d-lathe-mid.png", "#plot-box"), orange);
+  assert.ok(mid < start && mid > holed * 0.9, `half way: ${mid} between ${holed} and ${start}`);
+  await context.close();
+});
+
+test("3D cut stock, mill: the pocket, slot and helical bore are cut into the block; a rapid through it is marked", async () => {
+  const prog = join(work, "mill3d.nc");
+  writeFileSync(prog, "G21 G17 G90 G54\nT1 M06\nS3000 M03\nG00 X0 Y0 Z10.\nG00 X15. Y15.\nG01 Z-3. F100.\nG01 X29. F300.\nY19.\nX15.\nY15.\nG00 Z10.\nG00 X10. Y40.\nG01 Z-2. F100.\nG01 X50. F300.\nG00 Z10.\nG00 X70. Y20.\nG01 Z0 F100.\nG02 X70. Y20. Z-2. I-4. J0 F200.\nG02 X70. Y20. Z-4. I-4. J0\nG02 X70. Y20. Z-4. I-4. J0\nG00 Z10.\nG00 X0 Y0\nM30\n");
+  const setup = join(work, "mill3d.toml");
+  writeFileSync(setup, '[block]\nmin_mm = [0.0, 0.0, -20.0]\nmax_mm = [90.0, 60.0, 0.0]\n[[tool]]\nnumber = 1\nkind = "mill"\ndiameter_mm = 6.0\n');
+  let { page, context, errors } = await open(report(prog, "fanuc0m", ["--setup", setup]));
+  const end = await view3d(page, "cut3d-mill.png");
+  assert.deepEqual(errors, []);
+  assert.equal(end.head.kind, "mill");
+  assert.ok(Math.abs(end.head.removed_mm3 - 1716.5) < 1716.5 * 0.05, `removed ${end.head.removed_mm3} mm³`);
+  const cut = pixels(end.img, blue);
+  assert.ok(cut > 1500, `the cut floors are drawn (${cut} blue pixels)`);
+  assert.equal(pixels(end.img, red), 0, "no finding");
+  // Before the helix (60 % of the time): less is cut.
+  await page.evaluate(() => window.ncsightApp.setTime(window.ncsightApp.scene.head.total_s * 0.6));
+  await until(page, () => { const s = window.ncsightApp.stock3d(); return s && !s.busy && s.head.until_s !== null; }, undefined, 60000);
+  const before = pixels(await shot(page, "cut3d-mill-mid.png", "#plot-box"), blue);
+  assert.ok(before < cut * 0.85, `before the helix ${before} < ${cut}`);
+  await context.close();
+  // A rapid through the block: a crash, marked in red where it happens.
+  writeFileSync(prog, "G21 G17 G90 G54\nT1 M06\nS3000 M03\nG00 X-10. Y30. Z10.\nG00 Z-5.\nG00 X100.\nG00 Z10.\nM30\n");
+  ({ page, context, errors } = await open(report(prog, "fanuc0m", ["--setup", setup])));
+  const crash = await view3d(page, "cut3d-mill-crash.png");
+  assert.deepEqual(crash.head.findings.map((f) => [f.kind, f.line]), [["crash", 6]]);
+  assert.ok(pixels(crash.img, red) > 30, "the crash is marked");
   await context.close();
 });

@@ -256,7 +256,7 @@ enum Command {
         file: String,
         #[command(flatten)]
         machine: MachineArgs,
-        /// Stock as DIAxLEN in mm (a bar, its face at Z0), e.g. 60x80.
+        /// Stock: on a lathe DIAxLEN in mm (a bar, its face at Z0), e.g. 60x80; on a machining centre XxYxZ (a block, its top at Z0, its corner at the work zero), e.g. 100x80x30.
         #[arg(long)]
         stock: Option<String>,
         /// The thread it should be: M30x3.5, M30, 1/2-13UNC, or major=..,minor=..,pitch=..
@@ -693,10 +693,10 @@ fn setup_notes(setup: Option<(&str, &ncsight::stock::Setup)>, profile: &ncsight:
 }
 
 /// The job setup from `--setup` (as the run's job read and checked it) and `--stock`.
-fn job_setup(m: &MachineArgs, machine: &str, stock: Option<&str>) -> Result<ncsight::stock::Setup, Failure> {
-    let mut job = m.job(machine)?.setup.unwrap_or_default();
+fn job_setup(m: &MachineArgs, profile: &ncsight::profile::Profile, stock: Option<&str>) -> Result<ncsight::stock::Setup, Failure> {
+    let mut job = m.job(profile.name)?.setup.unwrap_or_default();
     if let Some(s) = stock {
-        job.stock = Some(ncsight::stock::Setup::parse_stock(s).map_err(|e| usage(e.to_string()))?);
+        job.set_stock_text(s, profile.is_lathe()).map_err(|e| usage(e.to_string()))?;
     }
     Ok(job)
 }
@@ -719,7 +719,7 @@ fn report(
     let decoding = m.decoding()?;
     let file_out = output.map(|path| output::LazyFile::new(path, &m.read_files(file), 1 << 16)).transpose().map_err(usage)?;
     let opts = operator.options()?;
-    let job = job_setup(m, params.profile().name, stock)?;
+    let job = job_setup(m, params.profile(), stock)?;
     let sim_options = simulate::options(None, expect).map_err(usage)?;
     let source = if file == "-" {
         let mut v = Vec::new();
@@ -860,7 +860,7 @@ fn simulate(
     }
     let (params, switches) = setup(m, err)?;
     let decoding = m.decoding()?;
-    let job = job_setup(m, params.profile().name, stock)?;
+    let job = job_setup(m, params.profile(), stock)?;
     let reads = m.read_files(file);
     let image_out = image.map(|path| output::LazyFile::new(path, &reads, 1 << 16)).transpose().map_err(usage)?;
     let stl_out = outputs.stl.map(|path| output::LazyFile::new(path, &reads, 1 << 16)).transpose().map_err(usage)?;
@@ -891,7 +891,7 @@ fn simulate(
         return Err(usage(format!("the programme makes more than {SIMULATE_MAX_RECORDS} motions: the stock simulation takes at most that many")));
     }
     if !lathe {
-        let sim = ncsight::stock::measure::simulate_mill(&records, &job, opts.dz_mm).map_err(usage)?;
+        let sim = ncsight::stock::measure::simulate_mill(&records, &job, opts.dz_mm, None).map_err(usage)?;
         let body = if format == "json" { simulate::mill_json(&sim) } else { simulate::mill_text(&sim) };
         out.write_all(body.as_bytes())?;
         if let Some(mut w) = stl_out {

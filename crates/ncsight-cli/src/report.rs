@@ -150,7 +150,8 @@ pub fn write(preload: Option<&Preload>, w: &mut dyn Write) -> io::Result<()> {
     for chunk in b64.as_bytes().chunks(76 * 1024) {
         w.write_all(chunk)?;
     }
-    write!(w, "</script>\n<script>{}</script>\n</body></html>\n", include_str!("app/app.js"))
+    // three.js (its licence in its opening comment) for the 3D view of the cut stock, then the page.
+    write!(w, "</script>\n<script>{}</script>\n<script>{}</script>\n</body></html>\n", include_str!("app/three/three.min.js"), include_str!("app/app.js"))
 }
 
 /// Standard base64 (RFC 4648) for the inline engine and image.

@@ -10,23 +10,7 @@ fn opt(v: Option<f64>, decimals: usize) -> String {
     v.map(|v| num(v, decimals)).unwrap_or_else(|| "null".into())
 }
 
-/// A finding as a JSON object: kind, line, message and, where known, x (a diameter on a lathe),
-/// y, z, spindle_deg and t.
-fn finding_json(f: &Finding) -> String {
-    let mut s = format!("{{\"kind\":\"{}\",\"line\":{},\"message\":{}", f.kind, f.line, json_str(&f.message));
-    if let Some(p) = &f.at {
-        s.push_str(&format!(",\"x\":{},\"y\":{},\"z\":{}", num(p.x_mm, 4), num(p.y_mm, 4), num(p.z_mm, 4)));
-        if let Some(a) = p.spindle_deg {
-            s.push_str(&format!(",\"spindle_deg\":{}", num(a, 3)));
-        }
-        s.push_str(&format!(",\"t\":{}", num(p.t_s, 3)));
-    }
-    if let Some(t) = f.tool {
-        s.push_str(&format!(",\"tool\":{t}"));
-    }
-    s.push('}');
-    s
-}
+use crate::format::stock::finding_json;
 
 /// A finding for a person: kind, line, where and when, what.
 fn finding_text(f: &Finding, lathe: bool) -> String {
@@ -257,7 +241,7 @@ pub fn options(res: Option<&str>, expect: Option<&str>) -> Result<SimOptions, St
         }
     }
     let expect = if thread.is_empty() { None } else { Some(ncsight::stock::standard::parse(&thread.join(","))?) };
-    Ok(SimOptions { dz_mm: dz, dtheta_deg: dt, expect, expect_bore_mm: bore, expect_od_mm: od })
+    Ok(SimOptions { dz_mm: dz, dtheta_deg: dt, expect, expect_bore_mm: bore, expect_od_mm: od, until_s: None })
 }
 
 /// The profile for a person: each section of 0.2 mm or longer on a line, the short rows between

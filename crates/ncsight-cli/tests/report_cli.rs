@@ -15,9 +15,9 @@ fn report_is_self_contained_and_escapes_programme_text() {
     assert!(code == 0 || code == 1, "{err}");
     let html = std::fs::read_to_string(&out).unwrap();
     assert!(html.starts_with("<!DOCTYPE html>"));
-    // Exactly the page's own three script elements (the job, the engine, the page's script), and
-    // no markup from the programme.
-    assert_eq!(html.matches("<script").count(), 3, "only the page's own scripts");
+    // Exactly the page's own four script elements (the job, the engine, three.js, the page's
+    // script), and no markup from the programme.
+    assert_eq!(html.matches("<script").count(), 4, "only the page's own scripts");
     assert!(!html.contains("<img"));
     assert!(html.contains("\\u003cscript\\u003ealert(1)"));
     // Nothing fetched from anywhere (the only URL is the SVG namespace name, which is no request).

@@ -73,6 +73,28 @@ pub fn check(text: &[u8], machine: &str, params: &str, setup: &str, options: &st
     page_job(machine, params, setup, options, library).and_then(|(job, files)| format::scene::check(&job, text, files)).map(String::into_bytes).unwrap_or_else(usage_answer)
 }
 
+/// The cut stock of `text` for the page's 3D view (see `ncsight_io::format::stock`), with the
+/// arguments of [`scene`]; `options` may also hold `stock=DIAxLEN` (a mill's `XxYxZ`) and
+/// `until_s=T` (cut only what has ended by T seconds). A usage mistake, or a programme with no
+/// stock to cut, is `NCSE` and its message.
+pub fn stock(text: &[u8], machine: &str, params: &str, setup: &str, options: &str, library: &[u8]) -> Vec<u8> {
+    let (mut stock_text, mut until_s, mut rest) = (String::new(), None, String::new());
+    for line in options.lines() {
+        match line.split_once('=').map(|(k, v)| (k.trim(), v.trim())) {
+            Some(("stock", v)) => stock_text = v.to_string(),
+            Some(("until_s", v)) => match v.parse::<f64>() {
+                Ok(t) if t.is_finite() => until_s = Some(t),
+                _ => return usage_answer(ncsight_io::JobError::Usage(format!("until_s={v}: expected a number of seconds"))),
+            },
+            _ => {
+                rest.push_str(line);
+                rest.push('\n');
+            }
+        }
+    }
+    page_job(machine, params, setup, &rest, library).and_then(|(job, files)| format::stock::stock_view(&job, text, files, &stock_text, until_s)).unwrap_or_else(usage_answer)
+}
+
 /// The files of a library buffer (see [`scene`]); None when it is cut short.
 fn files(mut b: &[u8]) -> Option<Vec<(String, &[u8])>> {
     fn take<'a>(b: &mut &'a [u8]) -> Option<&'a [u8]> {
@@ -279,4 +301,16 @@ mod tests {
         let check = run_jsonl(b"G00 X0 Q1\nM30\n", "gsk980tdi", "", "", Mode::Check);
         assert!(check.lines().all(|l| l.contains("\"severity\"")), "{check}");
     }
+}
+
+/// The cut stock of a programme for the page's 3D view (see [`stock`]), behind its 4-byte
+/// little-endian length.
+///
+/// # Safety
+/// As [`ncsight_scene`].
+#[no_mangle]
+#[allow(clippy::too_many_arguments)]
+pub unsafe extern "C" fn ncsight_stock(text: *const u8, text_len: usize, machine: *const u8, machine_len: usize, params: *const u8, params_len: usize, setup: *const u8, setup_len: usize, options: *const u8, options_len: usize, library: *const u8, library_len: usize) -> *mut u8 {
+    // SAFETY: the caller guarantees the six buffers (see above).
+    unsafe { page_call([(text, text_len), (machine, machine_len), (params, params_len), (setup, setup_len), (options, options_len), (library, library_len)], stock) }
 }

@@ -705,6 +705,28 @@ impl Setup {
         Ok(Bar { diameter_mm: d, length_mm: l, bore_mm: 0.0, front_z_mm: 0.0 })
     }
 
+    /// A machining centre's `--stock XxYxZ`: a block X by Y by Z mm, its top at Z0 and its
+    /// corner at the work zero, extending along +X, +Y and -Z.
+    pub fn parse_block(text: &str) -> Result<Block, SetupError> {
+        let sizes: Vec<&str> = text.split(['x', 'X']).collect();
+        let bad = || SetupError(format!("--stock {text}: on a machining centre write XxYxZ, the block's sizes in mm, e.g. 100x80x30"));
+        let [x, y, z] = sizes.as_slice() else { return Err(bad()) };
+        let n = |s: &str| s.trim().parse::<f64>().ok().filter(|v| *v > 0.0 && length(*v));
+        let (Some(x), Some(y), Some(z)) = (n(x), n(y), n(z)) else { return Err(bad()) };
+        Ok(Block { min_mm: [0.0, 0.0, -z], max_mm: [x, y, 0.0] })
+    }
+
+    /// `--stock` for a machine of that kind: a bar (DIAxLEN) on a lathe, a block (XxYxZ) on a
+    /// machining centre; it replaces the setup's.
+    pub fn set_stock_text(&mut self, text: &str, lathe: bool) -> Result<(), SetupError> {
+        if lathe {
+            self.stock = Some(Setup::parse_stock(text)?);
+        } else {
+            self.block = Some(Setup::parse_block(text)?);
+        }
+        Ok(())
+    }
+
     /// The tool of a T number, or the default threading insert.
     pub fn tool(&self, number: u32) -> Tool {
         self.tools.iter().find(|t| t.number == number).copied().unwrap_or_else(Tool::default_thread)

@@ -28,7 +28,7 @@ const PROGRAMME: &str = "G21 G17 G90 G54\nT1 M06\nS3000 M03\nG00 X0 Y0 Z10.\nG00
 
 #[test]
 fn a_pocket_a_slot_and_a_helical_bore_are_cut_and_measured() {
-    let sim = simulate_mill(&records(PROGRAMME), &setup(), Some(0.1)).unwrap();
+    let sim = simulate_mill(&records(PROGRAMME), &setup(), Some(0.1), None).unwrap();
     assert!(sim.findings.is_empty(), "{:?}", sim.findings);
     let floors = sim.stock.floors();
     let floor = |z: f64| floors.iter().find(|(fz, _)| (fz - z).abs() < 1e-6).map(|(_, a)| *a).unwrap_or_else(|| panic!("no floor at Z{z}: {floors:?}"));
@@ -46,7 +46,7 @@ fn a_pocket_a_slot_and_a_helical_bore_are_cut_and_measured() {
 #[test]
 fn a_rapid_through_the_block_is_one_crash_at_its_line() {
     let text = PROGRAMME.replace("G00 X10. Y40.\n", "G00 X10. Y40.\nG00 Z-1.\nG00 Z10.\n");
-    let sim = simulate_mill(&records(&text), &setup(), Some(0.1)).unwrap();
+    let sim = simulate_mill(&records(&text), &setup(), Some(0.1), None).unwrap();
     let crashes: Vec<_> = sim.findings.iter().filter(|f| f.kind == "crash").collect();
     assert_eq!(crashes.len(), 1, "{:?}", sim.findings);
     assert_eq!(crashes[0].line, 13);
@@ -56,7 +56,7 @@ fn a_rapid_through_the_block_is_one_crash_at_its_line() {
 #[test]
 fn a_cut_with_the_spindle_stopped_is_found() {
     let text = PROGRAMME.replace("S3000 M03\n", "S3000 M05\n");
-    let sim = simulate_mill(&records(&text), &setup(), Some(0.1)).unwrap();
+    let sim = simulate_mill(&records(&text), &setup(), Some(0.1), None).unwrap();
     assert!(sim.findings.iter().any(|f| f.kind == "spindle" && f.line == 6), "{:?}", sim.findings);
 }
 
@@ -65,9 +65,9 @@ fn a_cut_with_the_spindle_stopped_is_found() {
 #[test]
 fn material_only_decreases_and_a_move_cut_twice_cuts_once() {
     let recs = records(PROGRAMME);
-    let once = simulate_mill(&recs, &setup(), Some(0.2)).unwrap();
+    let once = simulate_mill(&recs, &setup(), Some(0.2), None).unwrap();
     let twice: Vec<Record> = recs.iter().flat_map(|r| if matches!(r.op, ncsight::motion::Op::Feed { .. } | ncsight::motion::Op::Arc { .. }) { vec![r.clone(), r.clone()] } else { vec![r.clone()] }).collect();
-    let twice = simulate_mill(&twice, &setup(), Some(0.2)).unwrap();
+    let twice = simulate_mill(&twice, &setup(), Some(0.2), None).unwrap();
     assert_eq!(once.stock.top, twice.stock.top);
     assert!(once.stock.top.iter().all(|z| *z <= 0.0));
 }
@@ -80,7 +80,7 @@ fn material_only_decreases_and_a_move_cut_twice_cuts_once() {
 fn the_tools_shape_forbids_plunges_deep_cuts_and_holder_contact() {
     let tool = |extra: &str| Setup::from_toml(&format!("[block]\nmin_mm = [0.0, 0.0, -20.0]\nmax_mm = [90.0, 60.0, 0.0]\n[[tool]]\nnumber = 1\nkind = \"mill\"\ndiameter_mm = 6.0\n{extra}")).unwrap();
     let first = |s: &Setup, kind: &str| {
-        let sim = simulate_mill(&records(PROGRAMME), s, Some(0.1)).unwrap();
+        let sim = simulate_mill(&records(PROGRAMME), s, Some(0.1), None).unwrap();
         sim.findings.iter().find(|f| f.kind == kind).map(|f| (f.line, f.tool, f.message.clone()))
     };
     let (line, tool_n, msg) = first(&tool("centre_cutting = false\n"), "plunge").expect("a plunge finding");
@@ -94,5 +94,5 @@ fn the_tools_shape_forbids_plunges_deep_cuts_and_holder_contact() {
     assert!(msg.contains("comes 0.500 mm into the material"), "{msg}");
     // With the flutes long enough, a centre-cutting mill and the holder high enough: none.
     let fine = tool("flute_length_mm = 20.0\nstick_out_mm = 30.0\nholder = { diameter_mm = 30.0, length_mm = 50.0 }\n");
-    assert!(simulate_mill(&records(PROGRAMME), &fine, Some(0.1)).unwrap().findings.is_empty());
+    assert!(simulate_mill(&records(PROGRAMME), &fine, Some(0.1), None).unwrap().findings.is_empty());
 }

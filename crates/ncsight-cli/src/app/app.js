@@ -89,6 +89,9 @@
     view_yz: ["side Y–Z", "侧视 Y–Z"],
     view_iso: ["3D (isometric)", "三维（等轴测）"],
     view_part3d: ["3D part", "三维工件"],
+    view_cut3d: ["3D cut stock (WebGL)", "三维切削毛坯 (WebGL)"],
+    gl_none: ["The 3D view needs WebGL, which this browser does not offer", "三维视图需要 WebGL，此浏览器不支持"],
+    gl_wait: ["cutting the stock…", "正在切削毛坯…"],
     work_zero: ["work zero", "工件零点"],
     stockguess: ["stock from the programme (type DIAxLEN to set)", "按程序估计的毛坯（输入 直径x长度 设定）"],
     part: ["part", "工件"],
@@ -304,7 +307,7 @@
     const sel = $("view");
     const keep = sel.value;
     while (sel.firstChild) sel.removeChild(sel.firstChild);
-    (lathe ? ["lathe", "part3d"] : ["xy", "xz", "yz", "iso"]).forEach((k) => sel.appendChild(el("option", { value: k }, t("view_" + k))));
+    (lathe ? ["lathe", "part3d", "cut3d"] : ["xy", "xz", "yz", "iso", "cut3d"]).forEach((k) => sel.appendChild(el("option", { value: k }, t("view_" + k))));
     sel.value = [...sel.options].some((o) => o.value === keep) ? keep : sel.options[0].value;
     view.kind = sel.value;
   }
@@ -735,6 +738,8 @@
   function numLabel(v) { const a = Math.abs(v); return (a >= 100 || Math.abs(v - Math.round(v)) < 1e-9 ? Math.round(v) : +v.toFixed(a >= 10 ? 1 : 3)).toString(); }
   function draw() {
     const t0 = performance.now();
+    if (is3d()) { draw3d(); lastDrawMs = performance.now() - t0; return; }
+    hide3d();
     const dpr = window.devicePixelRatio || 1;
     const box = $("plot-box");
     cw = box.clientWidth; ch = box.clientHeight;
@@ -1371,6 +1376,239 @@
     return c;
   }
 
+  // ---- the cut stock in 3D: the engine's stock simulation drawn with three.js ------------------
+  // The engine cuts the stock (`ncsight_stock`) up to the player's time and answers its grid: a
+  // lathe's outer and inner radius per angle and Z, a mill's top per X and Y. It is drawn as a
+  // lit mesh: the turned part with the quarter toward the viewer cut away to show its inside
+  // (the section in orange), the mill block grey where untouched, blue where cut. The tool and its holder are drawn
+  // where the player is, the simulation's findings as red balls. Drag turns the view, the wheel
+  // zooms. While the programme plays the stock is cut again each time the engine is free.
+  const G = { renderer: null, scene: null, camera: null, part: null, marks: null, tool: null, fail: null, data: null, key: "", busy: false, want: null, yaw: 0.6, pitch: 0.45, dist: 0, target: [0, 0, 0] };
+  const is3d = () => view.kind === "cut3d";
+  const SECTION = 0xe0822a;
+  function glInit() {
+    if (G.renderer || G.fail) return !!G.renderer;
+    try {
+      const c = el("canvas", { id: "gl" });
+      const renderer = new THREE.WebGLRenderer({ canvas: c, antialias: true, preserveDrawingBuffer: true });
+      if (!renderer.getContext()) throw new Error("no WebGL context");
+      G.renderer = renderer;
+      G.scene = new THREE.Scene();
+      G.scene.background = new THREE.Color(0xf4f6f8);
+      G.scene.add(new THREE.HemisphereLight(0xffffff, 0x8090a0, 1.6));
+      const sun = new THREE.DirectionalLight(0xffffff, 1.8);
+      sun.position.set(1, 2, 3);
+      G.camera = new THREE.PerspectiveCamera(35, 1, 0.1, 1e5);
+      G.camera.add(sun);
+      G.scene.add(G.camera);
+      $("gl-box").appendChild(c);
+      let drag = null;
+      c.addEventListener("pointerdown", (e) => { drag = [e.clientX, e.clientY]; c.setPointerCapture(e.pointerId); });
+      c.addEventListener("pointermove", (e) => {
+        if (!drag) return;
+        G.yaw -= (e.clientX - drag[0]) * 0.01; G.pitch = Math.max(-1.5, Math.min(1.5, G.pitch + (e.clientY - drag[1]) * 0.01));
+        drag = [e.clientX, e.clientY]; glRender();
+      });
+      c.addEventListener("pointerup", () => { drag = null; });
+      c.addEventListener("wheel", (e) => { e.preventDefault(); G.dist *= e.deltaY > 0 ? 1.15 : 1 / 1.15; glRender(); }, { passive: false });
+      return true;
+    } catch (e) {
+      G.fail = String((e && e.message) || e);
+      return false;
+    }
+  }
+  /** Show the 3D view (the 2D canvas hidden) and ask the engine for the stock at the player's time. */
+  function draw3d() {
+    canvas.hidden = true;
+    $("gl-box").hidden = false;
+    if (!glInit()) { $("gl-note").textContent = t("gl_none") + " (" + G.fail + ")"; return; }
+    glRender();
+    requestStock();
+  }
+  function hide3d() { canvas.hidden = false; $("gl-box").hidden = true; }
+  /** One request at a time: a newer time waits for the answer before it, then asks once. */
+  function requestStock() {
+    if (!S) return;
+    const whole = now >= S.head.total_s - 1e-9;
+    const want = { text: programmeText(), machine: $("machine").value, params: $("params").value, options: optionsText(), stock: $("stock").value.trim(), until: whole ? null : now };
+    const key = JSON.stringify(want);
+    if (key === G.key) return;
+    if (G.busy) { G.want = want; return; }
+    G.busy = true; G.key = key; G.want = null;
+    if (!G.data) $("gl-note").textContent = t("gl_wait");
+    const opts = want.options + "\nstock=" + want.stock + (want.until === null ? "" : "\nuntil_s=" + want.until);
+    callEngine("ncsight_stock", enc.encode(want.text), want.machine, want.params, JOB.setup || "", opts).then((buf) => {
+      G.busy = false;
+      const d = parseStock(buf);
+      if (d.usage) { G.data = null; glClear(); $("gl-note").textContent = d.usage; }
+      else { const first = !G.data || G.data.head.kind !== d.head.kind; G.data = d; glBuild(d, first); $("gl-note").textContent = glNote(d); }
+      glRender();
+      if (G.want && is3d()) { G.key = ""; requestStock(); }
+    }, (e) => { G.busy = false; G.key = ""; if (e !== CANCELLED) $("gl-note").textContent = String((e && e.message) || e); else if (is3d()) requestStock(); });
+  }
+  function parseStock(buf) {
+    const u8 = new Uint8Array(buf);
+    if (String.fromCharCode(u8[0], u8[1], u8[2], u8[3]) === "NCSE") return { usage: new TextDecoder().decode(u8.subarray(4)) };
+    const jl = new DataView(buf).getUint32(4, true);
+    const head = JSON.parse(new TextDecoder().decode(u8.subarray(8, 8 + jl)));
+    const at = Math.ceil((8 + jl) / 4) * 4;
+    if (head.kind === "lathe") {
+      const n = head.nz * head.ntheta;
+      return { head, outer: new Float32Array(buf, at, n), inner: new Float32Array(buf, at + 4 * n, n) };
+    }
+    return { head, top: new Float32Array(buf, at, head.nx * head.ny) };
+  }
+  function glNote(d) {
+    const h = d.head, f = h.findings.filter((x) => x.kind !== "not_simulated").length;
+    const size = h.kind === "lathe" ? "Ø" + h.diameter_mm + " × " + h.length_mm + " mm" + (h.guessed ? " (" + t("stockguess") + ")" : "") : (h.nx * h.cell_mm).toFixed(1) + " × " + (h.ny * h.cell_mm).toFixed(1) + " × " + (h.top_mm - h.bottom_mm).toFixed(1) + " mm";
+    return size + (f ? " · " + t("findings", { n: f }) : "") + (h.until_s !== null ? " · t = " + hms(h.until_s) : "");
+  }
+  function glClear() {
+    for (const k of ["part", "marks"]) if (G[k]) { G.scene.remove(G[k]); G[k].traverse((o) => { if (o.geometry) o.geometry.dispose(); if (o.material) o.material.dispose(); }); G[k] = null; }
+  }
+  /** A mesh of quads: `quad(a, b, c, d)` over vertices added by `vertex(x, y, z, colour)`. */
+  function meshBuilder() {
+    const pos = [], col = [], idx = [];
+    return {
+      vertex(x, y, z, c) { pos.push(x, y, z); col.push(((c >> 16) & 255) / 255, ((c >> 8) & 255) / 255, (c & 255) / 255); return pos.length / 3 - 1; },
+      quad(a, b, c, d) { idx.push(a, b, c, a, c, d); },
+      mesh() {
+        const g = new THREE.BufferGeometry();
+        g.setAttribute("position", new THREE.Float32BufferAttribute(pos, 3));
+        g.setAttribute("color", new THREE.Float32BufferAttribute(col, 3));
+        g.setIndex(idx);
+        g.computeVertexNormals();
+        return new THREE.Mesh(g, new THREE.MeshStandardMaterial({ vertexColors: true, side: THREE.DoubleSide, roughness: 0.55, metalness: 0.25 }));
+      },
+    };
+  }
+  /** The turned part, the spindle axis along three's x (the chuck on the left): every angle but
+   * the quarter toward the viewer (y > 0, z > 0), its outside, its bore, its ends, and the two
+   * faces of the cut-away in the section's colour. */
+  function latheMesh(d) {
+    const h = d.head, nz = h.nz, nt = h.ntheta, B = meshBuilder(), q0 = nt / 4;
+    const ang = (j) => (2 * Math.PI * j) / nt;
+    const R = (a, j, i) => a[(j % nt) * nz + i];
+    const solid = (j, i) => R(d.outer, j, i) > R(d.inner, j, i) + 1e-4;
+    // One surface (outer or inner) over angles q0..nt (the quarter 0..q0 is cut away).
+    const surface = (a, colour) => {
+      const id = [];
+      for (let j = q0; j <= nt; j++) { const row = []; for (let i = 0; i < nz; i++) { const r = Math.max(R(a, j, i), 0); row.push(B.vertex(h.z0_mm + i * h.dz_mm, r * Math.cos(ang(j)), r * Math.sin(ang(j)), colour)); } id.push(row); }
+      for (let j = 0; j < id.length - 1; j++) for (let i = 0; i < nz - 1; i++) if (solid(j + q0, i) && solid(j + q0, i + 1)) B.quad(id[j][i], id[j][i + 1], id[j + 1][i + 1], id[j + 1][i]);
+    };
+    surface(d.outer, 0xb8c4cc);
+    surface(d.inner, 0x8d9aa3);
+    // The cut-away's faces at angle 0 and 90 degrees: from the bore to the outside, per Z cell.
+    for (const j of [0, q0]) {
+      const c = Math.cos(ang(j)), s = Math.sin(ang(j));
+      for (let i = 0; i < nz - 1; i++) {
+        if (!solid(j, i) || !solid(j, i + 1)) continue;
+        const z = h.z0_mm + i * h.dz_mm, z1 = z + h.dz_mm;
+        const a = B.vertex(z, R(d.inner, j, i) * c, R(d.inner, j, i) * s, SECTION), b = B.vertex(z1, R(d.inner, j, i + 1) * c, R(d.inner, j, i + 1) * s, SECTION);
+        const e = B.vertex(z1, R(d.outer, j, i + 1) * c, R(d.outer, j, i + 1) * s, SECTION), f = B.vertex(z, R(d.outer, j, i) * c, R(d.outer, j, i) * s, SECTION);
+        B.quad(a, b, e, f);
+      }
+    }
+    // The ends (the chuck's and the face): rings from the bore to the outside.
+    for (const i of [0, nz - 1]) {
+      for (let j = q0; j < nt; j++) {
+        if (!solid(j, i)) continue;
+        const z = h.z0_mm + i * h.dz_mm, p = (jj, a) => B.vertex(z, R(a, jj, i) * Math.cos(ang(jj)), R(a, jj, i) * Math.sin(ang(jj)), 0xcfd8dc);
+        B.quad(p(j, d.inner), p(j + 1, d.inner), p(j + 1, d.outer), p(j, d.outer));
+      }
+    }
+    return B.mesh();
+  }
+  /** The mill block: its top as cut (coloured from the top's grey to deep blue at the bottom),
+   * its four sides and its bottom. Machine X, Y, Z are three's x, -z, y. */
+  function millMesh(d) {
+    const h = d.head, nx = h.nx, ny = h.ny, B = meshBuilder(), c = h.cell_mm;
+    const depth = Math.max(h.top_mm - h.bottom_mm, 1e-6);
+    // The untouched top grey; what is cut blue, light near the top, deep at the bottom.
+    const shade = (z) => {
+      if (z >= h.top_mm - 1e-3) return 0xc8d0d6;
+      const u = Math.max(0, Math.min(1, (h.top_mm - z) / depth)), mix = (a, b) => Math.round(a + (b - a) * Math.sqrt(u));
+      return (mix(0x5c, 0x0d) << 16) | (mix(0x9c, 0x3c) << 8) | mix(0xe0, 0x8c);
+    };
+    const X = (i) => h.x0_mm + (i + 0.5) * c, Y = (j) => h.y0_mm + (j + 0.5) * c;
+    const top = (i, j) => d.top[j * nx + i];
+    const id = new Int32Array(nx * ny);
+    for (let j = 0; j < ny; j++) for (let i = 0; i < nx; i++) id[j * nx + i] = B.vertex(X(i), top(i, j), -Y(j), shade(top(i, j)));
+    for (let j = 0; j < ny - 1; j++) for (let i = 0; i < nx - 1; i++) B.quad(id[j * nx + i], id[j * nx + i + 1], id[(j + 1) * nx + i + 1], id[(j + 1) * nx + i]);
+    // The sides: the top's edge down to the bottom.
+    const side = (pts) => { for (let k = 0; k < pts.length - 1; k++) { const [i0, j0] = pts[k], [i1, j1] = pts[k + 1]; B.quad(B.vertex(X(i0), top(i0, j0), -Y(j0), 0x90a4ae), B.vertex(X(i1), top(i1, j1), -Y(j1), 0x90a4ae), B.vertex(X(i1), h.bottom_mm, -Y(j1), 0x90a4ae), B.vertex(X(i0), h.bottom_mm, -Y(j0), 0x90a4ae)); } };
+    const range = (n) => Array.from({ length: n }, (_, k) => k);
+    side(range(nx).map((i) => [i, 0])); side(range(nx).map((i) => [i, ny - 1])); side(range(ny).map((j) => [0, j])); side(range(ny).map((j) => [nx - 1, j]));
+    B.quad(B.vertex(X(0), h.bottom_mm, -Y(0), 0x78909c), B.vertex(X(nx - 1), h.bottom_mm, -Y(0), 0x78909c), B.vertex(X(nx - 1), h.bottom_mm, -Y(ny - 1), 0x78909c), B.vertex(X(0), h.bottom_mm, -Y(ny - 1), 0x78909c));
+    return B.mesh();
+  }
+  /** A point of the programme in three's coordinates (a lathe's X is a radius, shown at the
+   * cut-away's upper face, angle 90 degrees). */
+  const glPoint = (p) => (G.data && G.data.head.kind === "lathe" ? [p[2], 0, Math.abs(p[0])] : [p[0], p[2], -p[1]]);
+  function glBuild(d, first) {
+    glClear();
+    G.part = d.head.kind === "lathe" ? latheMesh(d) : millMesh(d);
+    G.scene.add(G.part);
+    G.marks = new THREE.Group();
+    const box = new THREE.Box3().setFromObject(G.part), size = box.getSize(new THREE.Vector3()).length();
+    d.head.findings.filter((f) => f.x !== undefined).forEach((f) => {
+      const p = glPoint([d.head.kind === "lathe" ? f.x / 2 : f.x, f.y || 0, f.z]);
+      // Drawn over the part (no depth test): a finding inside the material is still seen.
+      const ball = new THREE.Mesh(new THREE.SphereGeometry(size * 0.015, 16, 12), new THREE.MeshBasicMaterial({ color: 0xd50000, depthTest: false }));
+      ball.renderOrder = 10;
+      ball.position.set(p[0], p[1], p[2]);
+      G.marks.add(ball);
+    });
+    G.scene.add(G.marks);
+    if (first || !G.dist) { const c = box.getCenter(new THREE.Vector3()); G.target = [c.x, c.y, c.z]; G.dist = size * 1.7; }
+  }
+  /** The tool where the player is: a lathe insert pointing at its tip with a shank behind it; a
+   * mill's cutter (its diameter from the setup, else 10 mm) with the holder above. */
+  function glTool() {
+    if (G.tool) { G.scene.remove(G.tool); G.tool.traverse((o) => { if (o.geometry) o.geometry.dispose(); if (o.material) o.material.dispose(); }); G.tool = null; }
+    if (!S || !S.n || !G.data) return;
+    const q = posAt(now), p = glPoint(q), grp = new THREE.Group(), lathe3d = G.data.head.kind === "lathe";
+    const steel = new THREE.MeshStandardMaterial({ color: 0xffb300, metalness: 0.4, roughness: 0.4 }), dark = new THREE.MeshStandardMaterial({ color: 0x37474f, metalness: 0.5, roughness: 0.5 });
+    if (lathe3d) {
+      const s = Math.max(G.data.head.diameter_mm * 0.08, 2);
+      // In a bore (below the face, inside the stock) the insert points out at the wall and the
+      // bar reaches back out past the face; outside, the insert points at the axis, its shank radial.
+      const inBore = q[2] < G.data.head.front_z_mm - 1e-6 && Math.abs(q[0]) < G.data.head.diameter_mm / 2 - 1e-6;
+      const tip = new THREE.Mesh(new THREE.ConeGeometry(s * 0.35, s, 4), steel);
+      tip.rotation.x = inBore ? Math.PI / 2 : -Math.PI / 2;
+      tip.position.set(0, 0, inBore ? -s / 2 : s / 2);
+      const shank = inBore ? new THREE.Mesh(new THREE.BoxGeometry(s * 6, s * 0.5, s * 0.5), dark) : new THREE.Mesh(new THREE.BoxGeometry(s * 0.6, s * 0.6, s * 2.5), dark);
+      if (inBore) shank.position.set(s * 3, 0, -s * 0.9); else shank.position.set(0, 0, s * 2.2);
+      grp.add(tip, shank);
+    } else {
+      const setupTool = ((JOB.setup || "").match(/diameter_mm\s*=\s*([0-9.]+)/) || [])[1];
+      const r = (+setupTool || 10) / 2;
+      const cutter = new THREE.Mesh(new THREE.CylinderGeometry(r, r, 4 * r, 24), steel);
+      cutter.position.set(0, 2 * r, 0);
+      const holder = new THREE.Mesh(new THREE.CylinderGeometry(r * 2.4, r * 2.4, 5 * r, 24), dark);
+      holder.position.set(0, 4 * r + 2.5 * r, 0);
+      grp.add(cutter, holder);
+    }
+    grp.position.set(p[0], p[1], p[2]);
+    G.tool = grp;
+    G.scene.add(grp);
+  }
+  function glRender() {
+    if (!G.renderer) return;
+    const box = $("plot-box"), w = box.clientWidth, h = box.clientHeight;
+    G.renderer.setPixelRatio(window.devicePixelRatio || 1);
+    G.renderer.setSize(w, h, false);
+    G.renderer.domElement.style.width = "100%"; G.renderer.domElement.style.height = "100%";
+    G.camera.aspect = w / Math.max(h, 1);
+    const [tx, ty, tz] = G.target, dist = G.dist || 100;
+    G.camera.position.set(tx + dist * Math.cos(G.pitch) * Math.sin(G.yaw), ty + dist * Math.sin(G.pitch), tz + dist * Math.cos(G.pitch) * Math.cos(G.yaw));
+    G.camera.lookAt(tx, ty, tz);
+    G.camera.near = dist / 100; G.camera.far = dist * 100;
+    G.camera.updateProjectionMatrix();
+    glTool();
+    G.renderer.render(G.scene, G.camera);
+  }
+
   // ---- start ------------------------------------------------------------------------------------
   applyWords();
   paintEditor(); draw(); showThread(); showPresses();
@@ -1388,6 +1626,8 @@
     get firstPathMs() { return firstPathMs; },
     passes: () => (S ? S.head.passes : 0),
     setTime, stepBlock, nextTool, select, zoom, fit: () => { fit(); draw(); }, run, pick,
+    stock3d: () => G.data && { head: G.data.head, busy: G.busy || !!G.want, fail: G.fail, note: $("gl-note").textContent },
+    view3d: (yaw, pitch, zoom) => { G.yaw = yaw; G.pitch = pitch; if (zoom) G.dist *= zoom; glRender(); },
     part: () => { const st = stock(); return st && Array.from(part(st).r.filter((_, j) => j % 100 === 0)); },
     toScreen: (x, y, z) => { const pv = V(); return [sx(pv.pu[0] * x + pv.pu[1] * y + pv.pu[2] * z), sy(pv.pv[0] * x + pv.pv[1] * y + pv.pv[2] * z)]; },
   };

@@ -4,6 +4,7 @@ mod canon;
 pub mod expand;
 pub mod jsonl;
 pub mod scene;
+pub mod stock;
 mod text;
 
 pub use canon::Canon;

@@ -20,6 +20,9 @@ pub struct SimOptions {
     /// `--expect bore=D` and `od=D`: the diameter of the longest bore, of the longest outside.
     pub expect_bore_mm: Option<f64>,
     pub expect_od_mm: Option<f64>,
+    /// Cut only the records that have ended by this time, s (the page's stock as the programme
+    /// plays); the stock and the tools are still those of the whole programme.
+    pub until_s: Option<f64>,
 }
 
 /// What was measured.
@@ -224,7 +227,8 @@ pub struct MillSimulation {
 
 /// Run a machining centre's records through a block (G17 drilling). Without a block in the
 /// setup: the holes' extent plus 10 mm around, its top at Z0, 5 mm below the deepest hole.
-pub fn simulate_mill(records: &[Record], setup: &Setup, cell_mm: Option<f64>) -> Result<MillSimulation, String> {
+/// Records that end after `until_s` are not cut.
+pub fn simulate_mill(records: &[Record], setup: &Setup, cell_mm: Option<f64>, until_s: Option<f64>) -> Result<MillSimulation, String> {
     // What the cutting moves reach: their end points.
     let cuts: Vec<crate::motion::Vec3> = records.iter().filter(|r| matches!(r.op, Op::Feed { .. } | Op::Arc { .. })).filter_map(|r| r.op.end_point()).collect();
     let block = match setup.block {
@@ -246,7 +250,8 @@ pub fn simulate_mill(records: &[Record], setup: &Setup, cell_mm: Option<f64>) ->
     let mut tool = tool_for(0);
     let mut rpm = 0.0;
     let first_rapid = records.iter().position(|r| matches!(r.op, Op::Rapid { .. })).unwrap_or(0);
-    for (k, r) in records.iter().enumerate() {
+    let until = until_s.map_or(records.len(), |t| records.partition_point(|r| r.t_s <= t));
+    for (k, r) in records[..until].iter().enumerate() {
         match r.op {
             Op::Tool { number, .. } => tool = tool_for(number),
             Op::Spindle { rpm: s, .. } => rpm = s,
@@ -405,7 +410,8 @@ pub fn simulate_with(records: &[Record], setup: &Setup, opts: &SimOptions, progr
     // (the power-on position): motion up to the end of the first rapid is not cut.
     let first_rapid = records.iter().position(|r| matches!(r.op, Op::Rapid { .. })).unwrap_or(0);
     let total = records.len();
-    for (k, (r, (t, rpm))) in records.iter().zip(&tool_of).enumerate().skip(first_rapid + 1) {
+    let until = opts.until_s.map_or(total, |t| records.partition_point(|r| r.t_s <= t));
+    for (k, (r, (t, rpm))) in records[..until].iter().zip(&tool_of).enumerate().skip(first_rapid + 1) {
         match nose_shift(t) {
             Some(d) => stock.apply(&shifted(r, d), t, *rpm),
             None => stock.apply(r, t, *rpm),
