@@ -6,8 +6,11 @@
 use rayon::prelude::*;
 use super::lathe::{Finding, LatheStock};
 use super::standard::Expected;
+use super::survey::{LatheSurvey, MillSurvey};
 use super::{Bar, Setup, Tool};
 use crate::motion::{Op, Record};
+
+pub use super::survey::GUESS_HOLD_MM;
 
 /// How the simulation is set up.
 #[derive(Debug, Clone, Default)]
@@ -61,162 +64,7 @@ pub struct Simulation {
     pub measurement: Measurement,
 }
 
-/// The tools a setup lacks, from what each does (docs/commands/simulate.md):
-/// - one that cuts a thread is a sharp 60-degree threading insert (internal when it leaves its
-///   passes toward the axis);
-/// - one that only feeds along Z on the spindle axis is a drill with a 118-degree point, as wide
-///   as the narrowest place a later tool that works inside reaches within its hole (10 mm when
-///   none does);
-/// - any other turns, an 80-degree insert with a 0.4 mm nose radius: a boring bar when it leaves
-///   its cuts toward the axis (its rapids straight after a cut go mostly along X, down): it
-///   works inside; else a turning tool, each of whose moves cuts the nearer side of the material.
-fn assume_tools(records: &[Record], setup: &Setup) -> Vec<(u32, Tool)> {
-    #[derive(Clone, Copy, Default)]
-    struct Use {
-        threads: bool,
-        on_axis_feeds: bool,
-        other_cuts: bool,
-        /// Rapids straight after a cut, mostly along X: toward the axis, away from it.
-        leaves_down: u32,
-        leaves_up: u32,
-        /// The drilled range along Z (a drill's feeds): deepest, highest.
-        drilled: Option<(f64, f64)>,
-    }
-    let mut uses: Vec<(u32, Use)> = Vec::new();
-    let mut current = 0u32;
-    let idx = |n: u32, uses: &mut Vec<(u32, Use)>| match uses.iter().position(|(m, _)| *m == n) {
-        Some(i) => i,
-        None => {
-            uses.push((n, Use::default()));
-            uses.len() - 1
-        }
-    };
-    let mut after_cut = false;
-    for r in records {
-        let i = idx(current, &mut uses);
-        let u = &mut uses[i].1;
-        match r.op {
-            Op::Tool { number, .. } => current = number,
-            Op::Thread { .. } | Op::ThreadArc { .. } => u.threads = true,
-            Op::Feed { from, to, .. } if from.x.abs() < 1e-3 && to.x.abs() < 1e-3 && from.z != to.z => {
-                u.on_axis_feeds = true;
-                let (lo, hi) = u.drilled.unwrap_or((f64::MAX, f64::MIN));
-                u.drilled = Some((lo.min(from.z).min(to.z), hi.max(from.z).max(to.z)));
-            }
-            Op::Feed { .. } | Op::Arc { .. } => u.other_cuts = true,
-            Op::Rapid { from, to } if after_cut && (to.x - from.x).abs() > (to.z - from.z).abs() => {
-                if to.x < from.x { u.leaves_down += 1 } else { u.leaves_up += 1 }
-            }
-            _ => {}
-        }
-        after_cut = matches!(r.op, Op::Feed { .. } | Op::Arc { .. } | Op::Thread { .. } | Op::ThreadArc { .. });
-    }
-    let is_drill = |u: &Use| u.on_axis_feeds && !u.other_cuts && !u.threads;
-    let inside = |u: &Use| !is_drill(u) && u.leaves_down > u.leaves_up;
-    // A drill is as wide as the narrowest place that a later tool working inside reaches within
-    // its hole (below its top).
-    let drill_diameter = |k: usize, drilled: (f64, f64)| -> f64 {
-        let mut tool = 0u32;
-        let mut seen_drill = false;
-        let mut narrowest = f64::MAX;
-        for r in records {
-            if let Op::Tool { number, .. } = r.op {
-                tool = number;
-            }
-            seen_drill |= tool == uses[k].0;
-            let later_inside = seen_drill && tool != uses[k].0 && uses.iter().any(|(n, u)| *n == tool && (inside(u) || u.threads));
-            if let (true, Some(p)) = (later_inside, r.op.end_point()) {
-                if p.z < drilled.1 && p.z > drilled.0 && p.x > 1e-3 {
-                    narrowest = narrowest.min(2.0 * p.x);
-                }
-            }
-        }
-        if narrowest < f64::MAX { narrowest } else { 10.0 }
-    };
-    (0..uses.len())
-        .filter(|&k| {
-            let (n, u) = &uses[k];
-            !setup.tools.iter().any(|t| t.number == *n) && (u.threads || u.on_axis_feeds || u.other_cuts)
-        })
-        .map(|k| {
-            let (n, u) = uses[k];
-            let tool = if u.threads {
-                Tool { number: n, internal: u.leaves_down > u.leaves_up, ..Tool::default_thread() }
-            } else if is_drill(&u) {
-                let d = drill_diameter(k, u.drilled.expect("a drill has drilled"));
-                Tool { number: n, kind: super::ToolKind::Drill, diameter_mm: d, ..Tool::default_thread() }
-            } else {
-                let kind = if inside(&u) { super::ToolKind::Boring } else { super::ToolKind::Turning };
-                Tool { number: n, kind, included_angle_deg: 80.0, tip_radius_mm: 0.4, ..Tool::default_thread() }
-            };
-            (n, tool)
-        })
-        .collect()
-}
-
-/// How far behind the deepest cut a guessed stock ends (where the chuck is assumed): a part
-/// needs some length to be held by, and a parting tool's width goes past its programmed point.
-pub const GUESS_HOLD_MM: f64 = 5.0;
-
-/// The stock a programme implies when none is given (docs/commands/simulate.md, an assumption:
-/// give `--stock` to be sure), from the extents of its cutting moves (feeds, arcs, threads):
-/// - the diameter is the largest one the tool cuts along (for each cutting move the smaller of
-///   its two diameters, so a move coming in from outside, a facing cut or a retract, does not
-///   count beyond where it cuts), or the largest diameter of any cut when none runs along one;
-/// - the face is at Z0 where the cuts reach it (otherwise at the nearest cut), and the bar runs
-///   to the deepest cut plus [`GUESS_HOLD_MM`], where the chuck is assumed;
-/// - with an external thread, at least the thread's deepest pass plus twice the ISO external
-///   thread height 0.61343 x lead (a programme that only threads: the blank's diameter);
-/// - a programme that only cuts an internal thread: the bore is its deepest pass less twice that
-///   height, the outside twice that height and 5 mm beyond it (a programme that also turns or
-///   bores makes its own bore: solid stock).
-fn infer_bar(records: &[Record], internal: bool) -> Option<Bar> {
-    let (mut along, mut widest) = (0.0f64, 0.0f64);
-    // Whether anything but threads cuts (then the programme makes its own bore).
-    let mut other_cuts = false;
-    let (mut zmin, mut zmax) = (f64::MAX, f64::MIN);
-    let (mut lead, mut thread_max_x, mut thread_min_x) = (0.0f64, f64::MIN, f64::MAX);
-    for r in records {
-        let (from, to) = match r.op {
-            Op::Feed { from, to, .. } | Op::Arc { from, to, .. } => {
-                other_cuts = true;
-                (from, to)
-            }
-            Op::Thread { from, to, lead_mm, .. } | Op::ThreadArc { from, to, lead_mm, .. } => {
-                lead = lead.max(lead_mm);
-                thread_max_x = thread_max_x.max(from.x).max(to.x);
-                thread_min_x = thread_min_x.min(from.x).min(to.x);
-                (from, to)
-            }
-            _ => continue,
-        };
-        along = along.max(from.x.min(to.x));
-        widest = widest.max(from.x).max(to.x);
-        zmin = zmin.min(from.z).min(to.z);
-        zmax = zmax.max(from.z).max(to.z);
-    }
-    if zmin > zmax {
-        return None;
-    }
-    let mut radius = if along > 0.0 { along } else { widest };
-    let mut bore = 0.0;
-    let height = 0.61343 * lead;
-    if internal && lead > 0.0 && !other_cuts {
-        // A programme that only threads inside: the bore it was written for, and a wall of twice
-        // the thread's height and 5 mm around it.
-        radius = radius.max(thread_max_x + 2.0 * height + 5.0);
-        bore = 2.0 * (thread_max_x - height);
-    } else if lead > 0.0 && !internal {
-        radius = radius.max(thread_min_x + height);
-    }
-    if radius <= 0.0 {
-        return None;
-    }
-    let front = zmax.min(0.0).max(zmin);
-    Some(Bar { diameter_mm: 2.0 * radius, length_mm: (front - zmin) + GUESS_HOLD_MM, bore_mm: bore.max(0.0), front_z_mm: front })
-}
-
-/// A drilling simulation on a machining centre.
+/// A drilling and milling simulation on a machining centre.
 pub struct MillSimulation {
     pub stock: super::mill::MillStock,
     pub holes: Vec<super::mill::Hole>,
@@ -225,74 +73,76 @@ pub struct MillSimulation {
     pub assumed_tools: Vec<(u32, Tool)>,
 }
 
-/// Run a machining centre's records through a block (G17 drilling). Without a block in the
-/// setup: the holes' extent plus 10 mm around, its top at Z0, 5 mm below the deepest hole.
-/// Records that end after `until_s` are not cut.
+/// Run a machining centre's records through a block: a survey, then the cut (see
+/// [`MillCut`]). Records that end after `until_s` are not cut.
 pub fn simulate_mill(records: &[Record], setup: &Setup, cell_mm: Option<f64>, until_s: Option<f64>) -> Result<MillSimulation, String> {
-    // What the cutting moves reach: their end points.
-    let cuts: Vec<crate::motion::Vec3> = records.iter().filter(|r| matches!(r.op, Op::Feed { .. } | Op::Arc { .. })).filter_map(|r| r.op.end_point()).collect();
-    let block = match setup.block {
-        Some(b) => b,
-        None if !cuts.is_empty() => {
-            let f = |k: usize, min: bool| cuts.iter().map(|p| p.axis(k)).fold(if min { f64::MAX } else { f64::MIN }, if min { f64::min } else { f64::max });
-            super::mill::Block { min_mm: [f(0, true) - 10.0, f(1, true) - 10.0, f(2, true).min(0.0) - 5.0], max_mm: [f(0, false) + 10.0, f(1, false) + 10.0, 0.0] }
+    let mut survey = MillSurvey::default();
+    records.iter().for_each(|r| survey.add(r));
+    let mut cut = MillCut::new(&survey, setup, cell_mm, until_s)?;
+    records.iter().for_each(|r| cut.add(r));
+    Ok(cut.finish())
+}
+
+/// The cut of a machining centre's block, record by record, after a [`MillSurvey`] of the same
+/// records. Without a block in the setup: the cuts' extent plus 10 mm around, its top at Z0
+/// (or above the highest cut), 5 mm below the deepest.
+pub struct MillCut {
+    stock: super::mill::MillStock,
+    setup: Setup,
+    assumed: Vec<(u32, Tool)>,
+    tool: Tool,
+    rpm: f64,
+    /// Records up to and including this one are not cut (the first rapid), and how many came.
+    skip: usize,
+    seen: usize,
+    until_s: Option<f64>,
+}
+
+impl MillCut {
+    pub fn new(survey: &MillSurvey, setup: &Setup, cell_mm: Option<f64>, until_s: Option<f64>) -> Result<MillCut, String> {
+        let block = match setup.block {
+            Some(b) => b,
+            None if survey.cuts() => {
+                let (lo, hi) = (survey.cut_min, survey.cut_max);
+                super::mill::Block { min_mm: [lo[0] - 10.0, lo[1] - 10.0, lo[2].min(0.0) - 5.0], max_mm: [hi[0] + 10.0, hi[1] + 10.0, 0.0] }
+            }
+            None => return Err("no block: give one in the setup ([block] min_mm, max_mm) or --stock XxYxZ; the programme cuts nothing to infer it from".into()),
+        };
+        let cell = cell_mm.unwrap_or(0.1);
+        let cells = ((block.max_mm[0] - block.min_mm[0]) / cell) * ((block.max_mm[1] - block.min_mm[1]) / cell);
+        if !(cell > 0.0) || cells > 100e6 {
+            return Err(format!("a grid of {cells:.0} cells: coarsen --resolution"));
         }
-        None => return Err("no block: give one in the setup ([block] min_mm, max_mm); the programme cuts nothing to infer it from".into()),
-    };
-    let cell = cell_mm.unwrap_or(0.1);
-    let cells = ((block.max_mm[0] - block.min_mm[0]) / cell) * ((block.max_mm[1] - block.min_mm[1]) / cell);
-    if !(cell > 0.0) || cells > 100e6 {
-        return Err(format!("a grid of {cells:.0} cells: coarsen --resolution"));
+        let assumed = survey.assumed_tools(setup, block.max_mm[2]);
+        let mut cut = MillCut { stock: super::mill::MillStock::new(block, cell), setup: setup.clone(), assumed, tool: Tool::default_thread(), rpm: 0.0, skip: survey.first_rapid.unwrap_or(0), seen: 0, until_s };
+        cut.tool = cut.tool_for(0);
+        Ok(cut)
     }
-    let assumed = assume_mill_tools(records, setup, block.max_mm[2]);
-    let tool_for = |n: u32| assumed.iter().find(|(m, _)| *m == n).map(|(_, t)| *t).unwrap_or_else(|| setup.mill_tool(n));
-    let mut stock = super::mill::MillStock::new(block, cell);
-    let mut tool = tool_for(0);
-    let mut rpm = 0.0;
-    let first_rapid = records.iter().position(|r| matches!(r.op, Op::Rapid { .. })).unwrap_or(0);
-    let until = until_s.map_or(records.len(), |t| records.partition_point(|r| r.t_s <= t));
-    for (k, r) in records[..until].iter().enumerate() {
+
+    fn tool_for(&self, n: u32) -> Tool {
+        self.assumed.iter().find(|(m, _)| *m == n).map(|(_, t)| *t).unwrap_or_else(|| self.setup.mill_tool(n))
+    }
+
+    /// Cut one record.
+    pub fn add(&mut self, r: &Record) {
+        let k = self.seen;
+        self.seen += 1;
+        if self.until_s.is_some_and(|t| r.t_s > t) {
+            return;
+        }
         match r.op {
-            Op::Tool { number, .. } => tool = tool_for(number),
-            Op::Spindle { rpm: s, .. } => rpm = s,
-            _ if k > first_rapid => stock.apply(r, &tool, rpm),
+            Op::Tool { number, .. } => self.tool = self.tool_for(number),
+            Op::Spindle { rpm, .. } => self.rpm = rpm,
+            _ if k > self.skip => self.stock.apply(r, &self.tool, self.rpm),
             _ => {}
         }
     }
-    let holes = stock.holes();
-    let findings = std::mem::take(&mut stock.findings);
-    Ok(MillSimulation { stock, holes, findings, assumed_tools: assumed })
-}
 
-/// The tools of a machining centre the setup lacks, from what each does: one that only feeds
-/// along Z is a 5 mm drill with a 118-degree point (as before); one that feeds across below the
-/// block's top (`top_z`) is a 10 mm flat end mill (docs/commands/simulate.md).
-fn assume_mill_tools(records: &[Record], setup: &Setup, top_z: f64) -> Vec<(u32, Tool)> {
-    let mut across: Vec<(u32, bool)> = Vec::new();
-    let mut current = 0u32;
-    for r in records {
-        let (from, to) = match r.op {
-            Op::Tool { number, .. } => {
-                current = number;
-                continue;
-            }
-            Op::Feed { from, to, .. } | Op::Arc { from, to, .. } => (from, to),
-            _ => continue,
-        };
-        let sideways = (matches!(r.op, Op::Arc { .. }) || (from.x - to.x).abs() > 1e-9 || (from.y - to.y).abs() > 1e-9) && from.z.min(to.z) < top_z;
-        match across.iter_mut().find(|(n, _)| *n == current) {
-            Some((_, a)) => *a |= sideways,
-            None => across.push((current, sideways)),
-        }
+    pub fn finish(mut self) -> MillSimulation {
+        let holes = self.stock.holes();
+        let findings = std::mem::take(&mut self.stock.findings);
+        MillSimulation { stock: self.stock, holes, findings, assumed_tools: self.assumed }
     }
-    across
-        .into_iter()
-        .filter(|(n, _)| !setup.tools.iter().any(|t| t.number == *n))
-        .map(|(n, sideways)| {
-            let tool = if sideways { Tool { number: n, kind: crate::setup::ToolKind::Mill, diameter_mm: 10.0, ..Tool::default_thread() } } else { Tool { number: n, ..setup.mill_tool(n) } };
-            (n, tool)
-        })
-        .collect()
 }
 
 /// Run the records through the stock and measure.
@@ -304,37 +154,101 @@ pub fn simulate(records: &[Record], setup: &Setup, opts: &SimOptions) -> Result<
 /// simulation refuses at once instead of running for hours (docs/commands/simulate.md).
 pub const MAX_CELL_UPDATES: f64 = 50e9;
 
-/// An upper bound of the cell updates the records make on a grid of `nz` x `ntheta` cells
-/// `dz` apart: every cutting record touches each row over its z extent (clipped to the bar).
-fn work_estimate(records: &[Record], bar_length_mm: f64, dz: f64, ntheta: usize) -> f64 {
-    records
-        .iter()
-        .map(|r| match r.op {
-            Op::Thread { from, to, .. } | Op::ThreadArc { from, to, .. } | Op::Feed { from, to, .. } | Op::Arc { from, to, .. } | Op::Rapid { from, to } => {
-                let span = match r.op {
-                    // An arc may bulge beyond its end points: its whole circle's extent.
-                    Op::Arc { center, .. } | Op::ThreadArc { center, .. } => 2.0 * center.dist(&from),
-                    _ => (to.z - from.z).abs(),
-                };
-                (span.min(bar_length_mm) / dz + 2.0) * ntheta as f64
-            }
-            _ => 0.0,
-        })
-        .sum()
+/// [`simulate`] that reports its progress: `progress(done, total)` after each record.
+pub fn simulate_with(records: &[Record], setup: &Setup, opts: &SimOptions, progress: &mut dyn FnMut(usize, usize)) -> Result<Simulation, String> {
+    let mut survey = LatheSurvey::new(setup);
+    records.iter().for_each(|r| survey.add(r));
+    let mut cut = LatheCut::new(&survey, setup, opts)?;
+    for (k, r) in records.iter().enumerate() {
+        cut.add(r);
+        progress(k + 1, records.len());
+    }
+    Ok(cut.finish(opts))
 }
 
-/// The tool in the turret at each record, and whether the spindle turns: it follows the T
-/// words; a tool the setup does not describe is the one `assumed` from what it does.
-fn tools_of(records: &[Record], setup: &Setup, assumed: &[(u32, Tool)]) -> Vec<(Tool, f64)> {
-    let tool_for = |number: u32| assumed.iter().find(|(n, _)| *n == number).map(|(_, t)| *t).unwrap_or_else(|| setup.tool(number));
-    let mut tool_of = Vec::with_capacity(records.len());
-    let mut tool = tool_for(0);
-    let mut rpm = 0.0;
-    // A turning or boring tool whose [[tool]] gives no imaginary nose takes the one of its
-    // offset (T0101 -> [[offset]] 1), and that offset's radius if it gives none.
-    let with_offset = |mut t: Tool, offset: Option<u32>| {
-        if t.tip.is_none() && matches!(t.kind, crate::setup::ToolKind::Turning | crate::setup::ToolKind::Boring) {
-            if let Some(o) = offset.and_then(|n| setup.offset(n)).filter(|o| o.tip != 0 || o.radius_mm > 0.0) {
+/// The cut of a lathe's stock, record by record, after a [`LatheSurvey`] of the same records:
+/// the tool in the turret follows the T words (a tool the setup does not describe is the one
+/// the survey assumed), the spindle its S and M words; the thread's passes are followed for
+/// their phase and the threaded range for the measurement.
+pub struct LatheCut {
+    stock: LatheStock,
+    setup: Setup,
+    assumed: Vec<(u32, Tool)>,
+    tool: Tool,
+    rpm: f64,
+    skip: usize,
+    seen: usize,
+    until_s: Option<f64>,
+    guessed: Option<Bar>,
+    phase: Phase,
+    /// The threaded range along Z, and the last thread record (a deviation is placed there).
+    thread_z: Option<(f64, f64)>,
+    last_thread: Option<Record>,
+}
+
+impl LatheCut {
+    pub fn new(survey: &LatheSurvey, setup: &Setup, opts: &SimOptions) -> Result<LatheCut, String> {
+        let assumed = survey.assumed_tools(setup);
+        let internal = survey.threads_inside(setup, &assumed);
+        let (bar, guessed) = match setup.stock {
+            Some(b) => (b, None),
+            None => match survey.guessed_bar(internal) {
+                Some(b) => (b, Some(b)),
+                None => return Err("no stock: give --stock DIAxLEN or a setup (the programme cuts nothing to guess it from)".into()),
+            },
+        };
+        let max_lead = survey.max_lead_mm;
+        let dz = opts.dz_mm.unwrap_or(if max_lead > 0.0 { (max_lead / 300.0).min(0.01) } else { 0.01 });
+        let dtheta = opts.dtheta_deg.unwrap_or(0.5);
+        if !(dz > 0.0 && dtheta > 0.0 && dtheta <= 90.0) {
+            return Err("the grid spacing must be more than 0 (and at most 90 degrees around)".into());
+        }
+        let ntheta = (360.0 / dtheta).round() as usize;
+        let cells = (bar.length_mm / dz) * ntheta as f64;
+        if cells > 400e6 {
+            return Err(format!("a grid of {cells:.0} cells is too large: coarsen --resolution"));
+        }
+        let work = survey.work_estimate(dz, ntheta);
+        if work > MAX_CELL_UPDATES {
+            return Err(format!(
+                "the simulation would need about {:.0} G cell updates, more than its limit of {:.0} G (about a minute): coarsen --resolution or simulate fewer passes",
+                work / 1e9,
+                MAX_CELL_UPDATES / 1e9
+            ));
+        }
+        let mut stock = LatheStock::new(bar, internal, dz, ntheta);
+        // A tool assumed to turn may be a boring bar whose retracts did not show it: each of its
+        // moves cuts the nearer side. One assumed to bore (it leaves its cuts toward the axis)
+        // works inside, as a boring bar in a tube the guessed stock does not know the bore of.
+        stock.either_side = assumed.iter().filter(|(_, t)| t.kind == super::ToolKind::Turning).map(|(n, _)| *n).collect();
+        let mut cut = LatheCut {
+            stock,
+            setup: setup.clone(),
+            assumed,
+            tool: Tool::default_thread(),
+            rpm: 0.0,
+            // Where the tool is before the first rapid is the machine's business, not the
+            // programme's (the power-on position): motion up to the end of the first rapid is
+            // not cut.
+            skip: survey.first_rapid.unwrap_or(0),
+            seen: 0,
+            until_s: opts.until_s,
+            guessed,
+            phase: Phase::default(),
+            thread_z: None,
+            last_thread: None,
+        };
+        cut.tool = cut.tool_for(0, None);
+        Ok(cut)
+    }
+
+    /// The tool of a T number: the setup's, or the one assumed. A turning or boring tool whose
+    /// [[tool]] gives no imaginary nose takes the one of its offset (T0101 -> [[offset]] 1),
+    /// and that offset's radius if it gives none.
+    fn tool_for(&self, number: u32, offset: Option<u32>) -> Tool {
+        let mut t = self.assumed.iter().find(|(n, _)| *n == number).map(|(_, t)| *t).unwrap_or_else(|| self.setup.tool(number));
+        if t.tip.is_none() && matches!(t.kind, super::ToolKind::Turning | super::ToolKind::Boring) {
+            if let Some(o) = offset.and_then(|n| self.setup.offset(n)).filter(|o| o.tip != 0 || o.radius_mm > 0.0) {
                 t.tip = Some(o.tip);
                 if t.tip_radius_mm <= 0.0 {
                     t.tip_radius_mm = o.radius_mm + o.wear_radius_mm;
@@ -342,98 +256,70 @@ fn tools_of(records: &[Record], setup: &Setup, assumed: &[(u32, Tool)]) -> Vec<(
             }
         }
         t
-    };
-    for r in records {
+    }
+
+    /// Cut one record.
+    pub fn add(&mut self, r: &Record) {
+        let k = self.seen;
+        self.seen += 1;
+        if self.until_s.is_some_and(|t| r.t_s > t) {
+            return;
+        }
         match r.op {
-            Op::Tool { number, offset } => tool = with_offset(tool_for(number), offset),
-            Op::Spindle { rpm: r, .. } => rpm = r,
+            Op::Tool { number, offset } => self.tool = self.tool_for(number, offset),
+            Op::Spindle { rpm, .. } => self.rpm = rpm,
             _ => {}
         }
-        tool_of.push((tool, rpm));
+        self.phase.add(r, &self.tool);
+        if let Op::Thread { from, to, .. } | Op::ThreadArc { from, to, .. } = r.op {
+            let (lo, hi) = self.thread_z.unwrap_or((f64::MAX, f64::MIN));
+            self.thread_z = Some((lo.min(from.z).min(to.z), hi.max(from.z).max(to.z)));
+            self.last_thread = Some(r.clone());
+        }
+        if k <= self.skip {
+            return;
+        }
+        match nose_shift(&self.tool) {
+            Some(d) => self.stock.apply(&shifted(r, d), &self.tool, self.rpm),
+            None => self.stock.apply(r, &self.tool, self.rpm),
+        }
     }
-    tool_of
+
+    /// The stock after the records, and its measurement.
+    pub fn finish(mut self, opts: &SimOptions) -> Simulation {
+        let dz = self.stock.grid.dz_mm;
+        let mut m = measure(&self.stock, self.thread_z);
+        m.findings = std::mem::take(&mut self.phase.findings);
+        m.assumed_tools = self.assumed;
+        if let Some(e) = &opts.expect {
+            deviation(&mut m, e, dz, self.last_thread.as_ref());
+        }
+        m.findings.splice(0..0, self.stock.findings.iter().cloned());
+        m.profile = self.stock.profile();
+        sizes(&mut m, opts);
+        if let Some(bar) = self.guessed {
+            m.stock_guessed = Some(bar);
+            // A chuck found against a stock nobody gave may not be there: said with each finding.
+            for f in m.findings.iter_mut().filter(|f| f.kind == "chuck") {
+                f.message.push_str(" (against a guessed stock: give --stock DIAxLEN for the real bar and chuck)");
+            }
+        }
+        Simulation { stock: self.stock, measurement: m }
+    }
 }
 
-/// [`simulate`] that reports its progress: `progress(done, total)` after each record.
-pub fn simulate_with(records: &[Record], setup: &Setup, opts: &SimOptions, progress: &mut dyn FnMut(usize, usize)) -> Result<Simulation, String> {
-    let assumed = assume_tools(records, setup);
-    let tool_of = tools_of(records, setup, &assumed);
-    let internal = records.iter().zip(&tool_of).any(|(r, (t, _))| r.op.is_thread() && t.internal);
-    let (bar, guessed) = match setup.stock {
-        Some(b) => (b, false),
-        None => match infer_bar(records, internal) {
-            Some(b) => (b, true),
-            None => return Err("no stock: give --stock DIAxLEN or a setup (the programme cuts nothing to guess it from)".into()),
-        },
-    };
-    let max_lead = records
-        .iter()
-        .filter_map(|r| if let Op::Thread { lead_mm, .. } | Op::ThreadArc { lead_mm, .. } = r.op { Some(lead_mm) } else { None })
-        .fold(0.0, f64::max);
-    let dz = opts.dz_mm.unwrap_or(if max_lead > 0.0 { (max_lead / 300.0).min(0.01) } else { 0.01 });
-    let dtheta = opts.dtheta_deg.unwrap_or(0.5);
-    if !(dz > 0.0 && dtheta > 0.0 && dtheta <= 90.0) {
-        return Err("the grid spacing must be more than 0 (and at most 90 degrees around)".into());
+/// A turning tool with an imaginary tool nose (its `tip`) is positioned by that point: the stock
+/// cuts with the nose, whose lowest point (highest in a bore) lies R x d(tip) and R from it
+/// (docs/compensation.md). Without a tip, the record's point is the nose's.
+fn nose_shift(t: &Tool) -> Option<crate::motion::Vec3> {
+    let tip = t.tip?;
+    if !matches!(t.kind, super::ToolKind::Turning | super::ToolKind::Boring) || t.tip_radius_mm <= 0.0 {
+        return None;
     }
-    let ntheta = (360.0 / dtheta).round() as usize;
-    let cells = (bar.length_mm / dz) * ntheta as f64;
-    if cells > 400e6 {
-        return Err(format!("a grid of {cells:.0} cells is too large: coarsen --resolution"));
-    }
-    let work = work_estimate(records, bar.length_mm, dz, ntheta);
-    if work > MAX_CELL_UPDATES {
-        return Err(format!(
-            "the simulation would need about {:.0} G cell updates, more than its limit of {:.0} G (about a minute): coarsen --resolution or simulate fewer passes",
-            work / 1e9,
-            MAX_CELL_UPDATES / 1e9
-        ));
-    }
-    let mut stock = LatheStock::new(bar, internal, dz, ntheta);
-    // A tool assumed to turn may be a boring bar whose retracts did not show it: each of its
-    // moves cuts the nearer side. One assumed to bore (it leaves its cuts toward the axis) works
-    // inside, as a boring bar in a tube the guessed stock does not know the bore of.
-    stock.either_side = assumed.iter().filter(|(_, t)| t.kind == crate::setup::ToolKind::Turning).map(|(n, _)| *n).collect();
-    // A turning tool with an imaginary tool nose (its `tip`) is positioned by that point: the
-    // stock cuts with the nose, whose lowest point (highest in a bore) lies R x d(tip) and R
-    // from it (docs/compensation.md). Without a tip, the record's point is the nose's.
-    let nose_shift = |t: &Tool| -> Option<crate::motion::Vec3> {
-        let tip = t.tip?;
-        if !matches!(t.kind, crate::setup::ToolKind::Turning | crate::setup::ToolKind::Boring) || t.tip_radius_mm <= 0.0 {
-            return None;
-        }
-        let r = t.tip_radius_mm;
-        let (dx, dz) = crate::comp::tip_direction(tip);
-        let side = if super::lathe::cuts_inside(t) { 1.0 } else { -1.0 };
-        Some(crate::motion::Vec3::new(-r * dx + side * r, 0.0, -r * dz))
-    };
-    // Where the tool is before the first rapid is the machine's business, not the programme's
-    // (the power-on position): motion up to the end of the first rapid is not cut.
-    let first_rapid = records.iter().position(|r| matches!(r.op, Op::Rapid { .. })).unwrap_or(0);
-    let total = records.len();
-    let until = opts.until_s.map_or(total, |t| records.partition_point(|r| r.t_s <= t));
-    for (k, (r, (t, rpm))) in records[..until].iter().zip(&tool_of).enumerate().skip(first_rapid + 1) {
-        match nose_shift(t) {
-            Some(d) => stock.apply(&shifted(r, d), t, *rpm),
-            None => stock.apply(r, t, *rpm),
-        }
-        progress(k + 1, total);
-    }
-    let mut m = measure(&stock, records, &tool_of.iter().map(|(t, _)| *t).collect::<Vec<_>>());
-    m.assumed_tools = assumed;
-    if let Some(e) = &opts.expect {
-        deviation(&mut m, e, dz, records.iter().rev().find(|r| r.op.is_thread()));
-    }
-    m.findings.splice(0..0, stock.findings.iter().cloned());
-    m.profile = stock.profile();
-    sizes(&mut m, opts);
-    if guessed {
-        m.stock_guessed = Some(bar);
-        // A chuck found against a stock nobody gave may not be there: said with each finding.
-        for f in m.findings.iter_mut().filter(|f| f.kind == "chuck") {
-            f.message.push_str(" (against a guessed stock: give --stock DIAxLEN for the real bar and chuck)");
-        }
-    }
-    Ok(Simulation { stock, measurement: m })
+    let r = t.tip_radius_mm;
+    let (dx, dz) = crate::comp::tip_direction(tip);
+    let side = if super::lathe::cuts_inside(t) { 1.0 } else { -1.0 };
+    Some(crate::motion::Vec3::new(-r * dx + side * r, 0.0, -r * dz))
 }
 
 /// A record with every point moved by `d`.
@@ -510,7 +396,9 @@ fn median(mut v: Vec<f64>) -> Option<f64> {
     Some(v[v.len() / 2])
 }
 
-fn measure(stock: &LatheStock, records: &[Record], tools: &[Tool]) -> Measurement {
+/// The thread cut within `thread_z` (the thread records' range along Z), measured on the
+/// stock.
+fn measure(stock: &LatheStock, thread_z: Option<(f64, f64)>) -> Measurement {
     let g = stock.grid;
     let internal = stock.internal;
     let mut m = Measurement {
@@ -521,18 +409,8 @@ fn measure(stock: &LatheStock, records: &[Record], tools: &[Tool]) -> Measuremen
         stock_guessed: None,
         ..Measurement::default()
     };
-    m.findings = phase_findings(records, tools);
     // The threaded region: where thread records ran.
-    let (mut z_lo, mut z_hi) = (f64::MAX, f64::MIN);
-    for r in records {
-        if let Op::Thread { from, to, .. } | Op::ThreadArc { from, to, .. } = r.op {
-            z_lo = z_lo.min(from.z.min(to.z));
-            z_hi = z_hi.max(from.z.max(to.z));
-        }
-    }
-    if z_lo > z_hi {
-        return m;
-    }
+    let Some((z_lo, z_hi)) = thread_z else { return m };
     let i_lo = ((z_lo - g.z0_mm) / g.dz_mm).floor().max(0.0) as usize;
     let i_hi = (((z_hi - g.z0_mm) / g.dz_mm).ceil().max(0.0) as usize).min(g.nz - 1);
     if i_lo >= i_hi {
@@ -685,36 +563,49 @@ fn measure(stock: &LatheStock, records: &[Record], tools: &[Tool]) -> Measuremen
     m
 }
 
+/// The grooves a lead's thread passes may fall in (its starts): at most this many are kept.
+const MAX_GROOVES: usize = 360;
+
 /// Phase: a later pass of a thread that does not fall in the groove its first passes cut. The
 /// groove of a pass is where it would cross z = 0 in angle: `start angle - 360 z / lead`. A pass
 /// may sit off by as much as its flank infeed allows (G76, YASNAC K): the difference in depth
-/// times tan(half the tool angle).
-fn phase_findings(records: &[Record], tools: &[Tool]) -> Vec<Finding> {
-    struct Ref {
-        lead: f64,
-        line: u32,
-        grooves: Vec<f64>,
-        x: f64,
-    }
-    let mut refs: Vec<Ref> = Vec::new();
-    let mut out = Vec::new();
-    let mut prev_end = None;
-    for (r, tool) in records.iter().zip(tools) {
+/// times tan(half the tool angle). Followed record by record.
+#[derive(Default)]
+struct Phase {
+    /// Per lead: the line of its first pass, the grooves that line cut, its first pass's X.
+    refs: Vec<PhaseRef>,
+    prev_end: Option<crate::motion::Vec3>,
+    findings: Vec<Finding>,
+}
+
+struct PhaseRef {
+    lead: f64,
+    line: u32,
+    grooves: Vec<f64>,
+    x: f64,
+}
+
+impl Phase {
+    fn add(&mut self, r: &Record, tool: &Tool) {
         let (Op::Thread { from, to, lead_mm, spindle_deg, rpm, .. } | Op::ThreadArc { from, to, lead_mm, spindle_deg, rpm, .. }) = r.op else {
-            prev_end = None;
-            continue;
+            self.prev_end = None;
+            return;
         };
-        let first_of_pass = prev_end != Some(from);
-        prev_end = Some(to);
+        let first_of_pass = self.prev_end != Some(from);
+        self.prev_end = Some(to);
         if !first_of_pass {
-            continue;
+            return;
         }
         let angle = if rpm >= 0.0 { spindle_deg } else { (360.0 - spindle_deg).rem_euclid(360.0) };
         let dir = if rpm >= 0.0 { 1.0 } else { -1.0 };
         let groove = (angle - dir * 360.0 * from.z / lead_mm).rem_euclid(360.0);
-        match refs.iter_mut().find(|f| (f.lead - lead_mm).abs() < 1e-9) {
-            None => refs.push(Ref { lead: lead_mm, line: r.span.line, grooves: vec![groove], x: from.x }),
-            Some(f) if f.line == r.span.line => f.grooves.push(groove),
+        match self.refs.iter_mut().find(|f| (f.lead - lead_mm).abs() < 1e-9) {
+            None => self.refs.push(PhaseRef { lead: lead_mm, line: r.span.line, grooves: vec![groove], x: from.x }),
+            Some(f) if f.line == r.span.line => {
+                if f.grooves.len() < MAX_GROOVES {
+                    f.grooves.push(groove);
+                }
+            }
             Some(f) => {
                 let off = f
                     .grooves
@@ -732,10 +623,9 @@ fn phase_findings(records: &[Record], tools: &[Tool]) -> Vec<Finding> {
                         "this pass is {off:.3} degrees ({axial:.4} mm along the thread) off the groove cut at line {}: it cuts a new groove",
                         f.line
                     );
-                    out.push(Finding::at("phase", r, from, true, Some(spindle_deg), msg));
+                    self.findings.push(Finding::at("phase", r, from, true, Some(spindle_deg), msg));
                 }
             }
         }
     }
-    out
 }

@@ -7,6 +7,7 @@ pub mod mesh;
 pub mod measure;
 pub mod mill;
 pub mod standard;
+pub mod survey;
 
 pub use lathe::{Finding, Place};
 
