@@ -487,11 +487,6 @@ impl<W: Write> Write for Tolerant<W> {
     }
 }
 
-/// The most records of a lathe programme the report hands to the stock simulation (beyond, the
-/// page says to use `ncsight simulate`).
-const REPORT_MAX_RECORDS: usize = 200_000;
-/// The most records the stock simulation takes (about 75 MB).
-const SIMULATE_MAX_RECORDS: usize = 500_000;
 
 /// Output buffer: large writes, few system calls.
 const OUTPUT_BUFFER_BYTES: usize = 256 * 1024;
@@ -739,25 +734,32 @@ fn report(
     let mut program = Program::with_operator(params.clone(), switches, Mode::Run, opts.clone());
     let mut library = m.prepare(&mut program)?;
     let lathe = params.profile().is_lathe();
-    let mut records = Vec::new();
-    let mut all_records = 0usize;
-    drive(file, feed::Input::Memory(std::sync::Arc::new(source.clone())), &mut library, &mut program, &mut |e, _, _| {
+    let text = std::sync::Arc::new(source.clone());
+    let mut survey = ncsight::stock::survey::LatheSurvey::new(&job);
+    let mut threads = false;
+    drive(file, feed::Input::Memory(text.clone()), &mut library, &mut program, &mut |e, _, _| {
         if let (Event::Record(r), true) = (e, lathe) {
-            all_records += 1;
-            if records.len() < REPORT_MAX_RECORDS {
-                records.push(r.clone());
-            }
+            threads |= r.op.is_thread();
+            survey.add(r);
         }
         Ok(())
     })?;
-    // The thread section: simulated when the programme cuts a thread on a lathe; when it cannot
-    // be, the page says why (never "cuts no thread" for a thread it could not simulate).
-    let (sim, sim_error) = if all_records > records.len() {
-        // A simulation of part of the programme would measure the wrong thing.
-        (None, Some(format!("the programme makes {all_records} records, more than the report simulates: use ncsight simulate for the stock")))
-    } else if lathe && records.iter().any(|r| r.op.is_thread()) {
-        match ncsight::stock::measure::simulate(&records, &job, &sim_options) {
-            Ok(s) => (Some(s), None),
+    // The thread section: simulated when the programme cuts a thread on a lathe (a second run,
+    // cut record by record); when it cannot be, the page says why (never "cuts no thread" for a
+    // thread it could not simulate).
+    let (sim, sim_error) = if threads {
+        match ncsight::stock::measure::LatheCut::new(&survey, &job, &sim_options) {
+            Ok(mut cut) => {
+                let mut again = Program::with_operator(params.clone(), switches, Mode::Run, opts.clone());
+                let mut library = m.prepare(&mut again)?;
+                drive(file, feed::Input::Memory(text), &mut library, &mut again, &mut |e, _, _| {
+                    if let Event::Record(r) = e {
+                        cut.add(r);
+                    }
+                    Ok(())
+                })?;
+                (Some(cut.finish(&sim_options)), None)
+            }
             Err(e) => (None, Some(e)),
         }
     } else {
@@ -871,36 +873,60 @@ fn simulate(
         )));
     }
     let opts = simulate::options(resolution, expect).map_err(usage)?;
-    let input = open(file)?;
     let lathe = params.profile().is_lathe();
+    // Two runs of the programme: a survey (the tools to assume, the stock to guess, the grid),
+    // then the cut, each record as it comes; nothing holds the programme's records, so a
+    // programme of any length is simulated. Standard input or a pipe is read once, into a
+    // temporary file both runs read.
+    let source = Spooled::of(file)?;
+    let shown = if file == "-" { "<stdin>" } else { file };
+    let mut lathe_survey = ncsight::stock::survey::LatheSurvey::new(&job);
+    let mut mill_survey = ncsight::stock::survey::MillSurvey::default();
+    let alarmed = {
+        let mut program = Program::new(params.clone(), switches, Mode::Run);
+        let mut library = m.prepare(&mut program)?;
+        drive(file, source.input()?, &mut library, &mut program, &mut |e, text, name| {
+            match e {
+                Event::Record(r) if lathe => lathe_survey.add(r),
+                Event::Record(r) => mill_survey.add(r),
+                Event::Diagnostic(d) if d.is_alarm() => err.write_all(diag::render(name.unwrap_or(shown), text, d, diag::Style::Full, &decoding).as_bytes())?,
+                Event::Diagnostic(_) => {}
+            }
+            Ok(())
+        })?;
+        program.status() == Status::Alarm
+    };
     let mut program = Program::new(params, switches, Mode::Run);
     let mut library = m.prepare(&mut program)?;
-    let shown = if file == "-" { "<stdin>" } else { file };
-    let mut records = Vec::new();
-    let mut too_many = false;
-    drive(file, input, &mut library, &mut program, &mut |e, text, name| {
-        match e {
-            Event::Record(_) if records.len() >= SIMULATE_MAX_RECORDS => too_many = true,
-            Event::Record(r) => records.push(r.clone()),
-            Event::Diagnostic(d) if d.is_alarm() => err.write_all(diag::render(name.unwrap_or(shown), text, d, diag::Style::Full, &decoding).as_bytes())?,
-            Event::Diagnostic(_) => {}
-        }
-        Ok(())
-    })?;
-    if too_many {
-        return Err(usage(format!("the programme makes more than {SIMULATE_MAX_RECORDS} motions: the stock simulation takes at most that many")));
-    }
     if !lathe {
-        let sim = ncsight::stock::measure::simulate_mill(&records, &job, opts.dz_mm, None).map_err(usage)?;
+        let mut cut = ncsight::stock::measure::MillCut::new(&mill_survey, &job, opts.dz_mm, None).map_err(usage)?;
+        drive(file, source.input()?, &mut library, &mut program, &mut |e, _, _| {
+            if let Event::Record(r) = e {
+                cut.add(r);
+            }
+            Ok(())
+        })?;
+        let sim = cut.finish();
         let body = if format == "json" { simulate::mill_json(&sim) } else { simulate::mill_text(&sim) };
         out.write_all(body.as_bytes())?;
         if let Some(mut w) = stl_out {
             simulate::stl(&mut w, &|each| ncsight::stock::mesh::mill(&sim.stock, each))?;
             w.flush()?;
         }
-        return Ok(status_with_findings(program.status() == Status::Alarm, &sim.findings));
+        return Ok(status_with_findings(alarmed, &sim.findings));
     }
-    let sim = ncsight::stock::measure::simulate_with(&records, &job, &opts, &mut progress_on(err)).map_err(usage)?;
+    let mut cut = ncsight::stock::measure::LatheCut::new(&lathe_survey, &job, &opts).map_err(usage)?;
+    let (total, mut done) = (lathe_survey.records, 0usize);
+    let mut progress = progress_on(err);
+    drive(file, source.input()?, &mut library, &mut program, &mut |e, _, _| {
+        if let Event::Record(r) = e {
+            cut.add(r);
+            done += 1;
+            progress(done, total);
+        }
+        Ok(())
+    })?;
+    let sim = cut.finish(&opts);
     let body = if format == "json" { simulate::json(&sim.measurement) } else { simulate::text(&sim.measurement) };
     out.write_all(body.as_bytes())?;
     if let Some(mut w) = image_out {
@@ -911,7 +937,49 @@ fn simulate(
         simulate::stl(&mut w, &|each| ncsight::stock::mesh::lathe(&sim.stock, each))?;
         w.flush()?;
     }
-    Ok(status_with_findings(program.status() == Status::Alarm, &sim.measurement.findings))
+    Ok(status_with_findings(alarmed, &sim.measurement.findings))
+}
+
+/// A programme `simulate` reads twice: a file, read again; standard input or a pipe, copied once
+/// into a temporary file that goes when this does.
+struct Spooled {
+    path: std::path::PathBuf,
+    temporary: bool,
+}
+
+impl Spooled {
+    fn of(file: &str) -> Result<Spooled, Failure> {
+        if file != "-" {
+            let regular = std::fs::metadata(file).map(|m| m.is_file()).map_err(|e| usage(format!("cannot read {file}: {e}")))?;
+            if regular {
+                return Ok(Spooled { path: file.into(), temporary: false });
+            }
+        }
+        static NEXT: std::sync::atomic::AtomicU32 = std::sync::atomic::AtomicU32::new(0);
+        let n = NEXT.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+        let path = std::env::temp_dir().join(format!("ncsight-simulate-{}-{n}.nc", std::process::id()));
+        let spooled = Spooled { path, temporary: true };
+        let mut to = std::fs::File::create(&spooled.path).map_err(|e| usage(format!("cannot write a temporary copy of {file} at {}: {e}", spooled.path.display())))?;
+        let copied = match open(file)? {
+            feed::Input::Stream(mut r) => io::copy(&mut r, &mut to),
+            feed::Input::File(p) => std::fs::File::open(p).and_then(|mut f| io::copy(&mut f, &mut to)),
+            feed::Input::Memory(t) => to.write_all(&t).map(|_| t.len() as u64),
+        };
+        copied.map_err(|e| usage(format!("cannot read {file}: {e}")))?;
+        Ok(spooled)
+    }
+
+    fn input(&self) -> Result<feed::Input, Failure> {
+        Ok(feed::Input::File(self.path.clone()))
+    }
+}
+
+impl Drop for Spooled {
+    fn drop(&mut self) {
+        if self.temporary {
+            let _ = std::fs::remove_file(&self.path);
+        }
+    }
 }
 
 /// The files `simulate` writes besides its report.

@@ -74,3 +74,24 @@ fn check_and_run_stream_a_50_mb_programme() {
     }
     assert!(output_bytes > PROGRAMME_BYTES as u64, "run wrote {output_bytes} bytes");
 }
+
+/// `simulate` holds none of the programme's records (it runs the programme twice: a survey,
+/// then the cut): about 600,000 moves, past the 500,000 records it used to refuse, in a peak
+/// far below what holding them would take (about 120 MB at some 200 bytes a record).
+#[test]
+fn simulate_streams_a_programme_of_600000_moves() {
+    let dir = std::env::temp_dir().join(format!("ncsight-memory-sim-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let programme = dir.join("big.nc");
+    // About 21 bytes a line: 600 chunks of 1,000 moves.
+    write_programme(&programme, 600 * 21_000);
+    let lines = std::fs::read_to_string(&programme).unwrap().lines().count();
+    let p = programme.to_str().unwrap();
+    let (code, kb) = peak_kb(&["simulate", p, "--machine", "fanuc0m", "--stock", "40x30x10", "--resolution", "1"]);
+    std::fs::remove_dir_all(&dir).unwrap();
+    eprintln!("simulate: {lines} lines, peak {kb} KiB");
+    assert!(lines > 500_000, "{lines}");
+    // 0: nothing found; 3: a finding (the assumed mill's cuts); never the old refusal (2).
+    assert!(code == 0 || code == 3, "simulate exited {code}");
+    assert!(kb > 0 && kb < PEAK_LIMIT_KB, "simulate peaked at {kb} KiB (limit {PEAK_LIMIT_KB} KiB)");
+}
