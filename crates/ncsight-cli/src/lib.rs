@@ -900,12 +900,7 @@ fn simulate(
     let mut library = m.prepare(&mut program)?;
     if !lathe {
         let mut cut = ncsight::stock::measure::MillCut::new(&mill_survey, &job, opts.dz_mm, None).map_err(usage)?;
-        drive(file, source.input()?, &mut library, &mut program, &mut |e, _, _| {
-            if let Event::Record(r) = e {
-                cut.add(r);
-            }
-            Ok(())
-        })?;
+        cut_beside(file, source.input()?, &mut library, &mut program, &mut |r| cut.add(r))?;
         let sim = cut.finish();
         let body = if format == "json" { simulate::mill_json(&sim) } else { simulate::mill_text(&sim) };
         out.write_all(body.as_bytes())?;
@@ -938,6 +933,41 @@ fn simulate(
         w.flush()?;
     }
     Ok(status_with_findings(alarmed, &sim.measurement.findings))
+}
+
+/// Records a batch takes from the interpreter to the cut beside it.
+const CUT_BATCH: usize = 512;
+
+/// Run the programme and hand its records to `cut` on a thread of its own, in batches, so the
+/// interpreter and the cut work at once (a machining centre's cut is one thread's work).
+fn cut_beside(file: &str, input: feed::Input, library: &mut feed::Library, program: &mut Program, cut: &mut (dyn FnMut(&ncsight::Record) + Send)) -> Result<(), Failure> {
+    let (to_cut, batches) = std::sync::mpsc::sync_channel::<Vec<ncsight::Record>>(8);
+    std::thread::scope(|scope| {
+        let cutter = scope.spawn(move || {
+            for batch in batches {
+                batch.iter().for_each(&mut *cut);
+            }
+        });
+        let mut batch = Vec::with_capacity(CUT_BATCH);
+        let ran = drive(file, input, library, program, &mut |e, _, _| {
+            if let Event::Record(r) = e {
+                batch.push(r.clone());
+                if batch.len() == CUT_BATCH {
+                    // The cut ends only when this sender is dropped: a send cannot fail first.
+                    let _ = to_cut.send(std::mem::replace(&mut batch, Vec::with_capacity(CUT_BATCH)));
+                }
+            }
+            Ok(())
+        });
+        if !batch.is_empty() {
+            let _ = to_cut.send(batch);
+        }
+        drop(to_cut);
+        if cutter.join().is_err() {
+            return Err(Failure::Io(io::Error::other("the stock simulation's thread failed")));
+        }
+        ran
+    })
 }
 
 /// A programme `simulate` reads twice: a file, read again; standard input or a pipe, copied once
