@@ -943,9 +943,18 @@ const CUT_BATCH: usize = 512;
 fn cut_beside(file: &str, input: feed::Input, library: &mut feed::Library, program: &mut Program, cut: &mut (dyn FnMut(&ncsight::Record) + Send)) -> Result<(), Failure> {
     let (to_cut, batches) = std::sync::mpsc::sync_channel::<Vec<ncsight::Record>>(8);
     std::thread::scope(|scope| {
+        // The cut runs on the parallel pool's threads, where a move splits its rows between the
+        // two at little cost (from a thread outside the pool each split waits for a wake-up).
         let cutter = scope.spawn(move || {
-            for batch in batches {
-                batch.iter().for_each(&mut *cut);
+            let pool = rayon::ThreadPoolBuilder::new().build();
+            let work = || {
+                for batch in batches {
+                    batch.iter().for_each(&mut *cut);
+                }
+            };
+            match pool {
+                Ok(pool) => pool.install(work),
+                Err(_) => work(),
             }
         });
         let mut batch = Vec::with_capacity(CUT_BATCH);

@@ -74,14 +74,19 @@ pub fn check(text: &[u8], machine: &str, params: &str, setup: &str, options: &st
 }
 
 /// The cut stock of `text` for the page's 3D view (see `ncsight_io::format::stock`), with the
-/// arguments of [`scene`]; `options` may also hold `stock=DIAxLEN` (a mill's `XxYxZ`) and
-/// `until_s=T` (cut only what has ended by T seconds). A usage mistake, or a programme with no
+/// arguments of [`scene`]; `options` may also hold `stock=DIAxLEN` (a mill's `XxYxZ`),
+/// `until_s=T` (cut only what has ended by T seconds) and `resolution_mm=R` (the grid's cell
+/// along Z on a lathe, across on a mill, instead of the view's own). A usage mistake, or a programme with no
 /// stock to cut, is `NCSE` and its message.
 pub fn stock(text: &[u8], machine: &str, params: &str, setup: &str, options: &str, library: &[u8]) -> Vec<u8> {
-    let (mut stock_text, mut until_s, mut rest) = (String::new(), None, String::new());
+    let (mut stock_text, mut until_s, mut resolution, mut rest) = (String::new(), None, None, String::new());
     for line in options.lines() {
         match line.split_once('=').map(|(k, v)| (k.trim(), v.trim())) {
             Some(("stock", v)) => stock_text = v.to_string(),
+            Some(("resolution_mm", v)) => match v.parse::<f64>() {
+                Ok(r) if r.is_finite() && r > 0.0 => resolution = Some(r),
+                _ => return usage_answer(ncsight_io::JobError::Usage(format!("resolution_mm={v}: expected a cell size in mm"))),
+            },
             Some(("until_s", v)) => match v.parse::<f64>() {
                 Ok(t) if t.is_finite() => until_s = Some(t),
                 _ => return usage_answer(ncsight_io::JobError::Usage(format!("until_s={v}: expected a number of seconds"))),
@@ -92,7 +97,7 @@ pub fn stock(text: &[u8], machine: &str, params: &str, setup: &str, options: &st
             }
         }
     }
-    page_job(machine, params, setup, &rest, library).and_then(|(job, files)| format::stock::stock_view(&job, text, files, &stock_text, until_s)).unwrap_or_else(usage_answer)
+    page_job(machine, params, setup, &rest, library).and_then(|(job, files)| format::stock::stock_view(&job, text, files, &stock_text, until_s, resolution)).unwrap_or_else(usage_answer)
 }
 
 /// The files of a library buffer (see [`scene`]); None when it is cut short.

@@ -51,8 +51,9 @@ pub fn finding_json(f: &Finding) -> String {
 }
 
 /// Run `text` as `job` says and cut its stock (the job's setup, with `stock` as `--stock` takes
-/// it when not empty), the records that have ended by `until_s` (all when None).
-pub fn stock_view(job: &Job, text: &[u8], library: Vec<(String, &[u8])>, stock: &str, until_s: Option<f64>) -> Result<Vec<u8>, JobError> {
+/// it when not empty), the records that have ended by `until_s` (all when None), on the view's
+/// grid or one of `resolution_mm` cells.
+pub fn stock_view(job: &Job, text: &[u8], library: Vec<(String, &[u8])>, stock: &str, until_s: Option<f64>, resolution_mm: Option<f64>) -> Result<Vec<u8>, JobError> {
     let profile = job.profile()?;
     let mut setup = job.setup.clone().unwrap_or_default();
     if !stock.trim().is_empty() {
@@ -71,7 +72,7 @@ pub fn stock_view(job: &Job, text: &[u8], library: Vec<(String, &[u8])>, stock: 
         }
     }
     let until = until_s.map_or("null".to_string(), |t| num(t, 4));
-    let (head, arrays) = if profile.is_lathe() { lathe_view(&records, &setup, until_s)? } else { mill_view(&records, &setup, until_s)? };
+    let (head, arrays) = if profile.is_lathe() { lathe_view(&records, &setup, until_s, resolution_mm)? } else { mill_view(&records, &setup, until_s, resolution_mm)? };
     let head = format!("{{{head},\"until_s\":{until},\"cut\":{cut}}}");
     let mut out = Vec::with_capacity(8 + head.len() + 4 * arrays.iter().map(|a| a.len()).sum::<usize>());
     out.extend_from_slice(b"NCST");
@@ -92,13 +93,13 @@ fn findings_json(findings: &[Finding]) -> String {
 
 /// The lathe's header fields and its outer and inner radii, on a grid of at most [`VIEW_NZ`]
 /// cells along the bar (at least 0.01 mm apart) and [`VIEW_NTHETA`] around.
-fn lathe_view(records: &[Record], setup: &ncsight::setup::Setup, until_s: Option<f64>) -> Result<(String, Vec<Vec<f32>>), JobError> {
+fn lathe_view(records: &[Record], setup: &ncsight::setup::Setup, until_s: Option<f64>, resolution_mm: Option<f64>) -> Result<(String, Vec<Vec<f32>>), JobError> {
     let length_mm = match setup.stock {
         Some(b) => b.length_mm,
         // The programme's extent along Z, which a guessed stock spans (and 5 mm more).
         None => records.iter().filter_map(|r| r.op.end_point()).map(|p| p.z).fold(0.0f64, |a, z| a.max(-z)) + 5.0,
     };
-    let dz = (length_mm / VIEW_NZ).clamp(0.01, 5.0);
+    let dz = resolution_mm.unwrap_or((length_mm / VIEW_NZ).clamp(0.01, 5.0));
     let opts = SimOptions { dz_mm: Some(dz), dtheta_deg: Some(360.0 / VIEW_NTHETA as f64), until_s, ..SimOptions::default() };
     let sim = simulate(records, setup, &opts).map_err(JobError::Usage)?;
     let (g, b) = (sim.stock.grid, sim.stock.bar);
@@ -120,7 +121,7 @@ fn lathe_view(records: &[Record], setup: &ncsight::setup::Setup, until_s: Option
 
 /// The mill's header fields and its tops, [`VIEW_ACROSS`] cells across the longer side (at
 /// least 0.1 mm).
-fn mill_view(records: &[Record], setup: &ncsight::setup::Setup, until_s: Option<f64>) -> Result<(String, Vec<Vec<f32>>), JobError> {
+fn mill_view(records: &[Record], setup: &ncsight::setup::Setup, until_s: Option<f64>, resolution_mm: Option<f64>) -> Result<(String, Vec<Vec<f32>>), JobError> {
     // The block's longer side: the setup's, or the cutting moves' extent and 10 mm around.
     let across = match setup.block {
         Some(b) => (b.max_mm[0] - b.min_mm[0]).max(b.max_mm[1] - b.min_mm[1]),
@@ -130,7 +131,7 @@ fn mill_view(records: &[Record], setup: &ncsight::setup::Setup, until_s: Option<
             span(0).max(span(1)).max(0.0) + 20.0
         }
     };
-    let cell = (across / VIEW_ACROSS).max(0.1);
+    let cell = resolution_mm.unwrap_or((across / VIEW_ACROSS).max(0.1));
     let sim = simulate_mill(records, setup, Some(cell), until_s).map_err(JobError::Usage)?;
     let s = &sim.stock;
     let head = format!(

@@ -142,6 +142,104 @@ fn floor_i(v: f64) -> isize {
     if (t as f64) > v { t - 1 } else { t }
 }
 
+/// The first cell whose centre is at or past `lo` (cells of `1 / inv_cell` from `origin`).
+#[inline]
+fn first_cell(lo: f64, origin: f64, inv_cell: f64) -> isize {
+    -floor_i(-((lo - origin) * inv_cell - 0.5))
+}
+
+/// The last cell whose centre is at or before `hi`.
+#[inline]
+fn last_cell(hi: f64, origin: f64, inv_cell: f64) -> isize {
+    floor_i((hi - origin) * inv_cell - 0.5)
+}
+
+/// A move's rows may be cut by two threads when it has this many rows a thread...
+const MIN_ROWS_A_THREAD: usize = 16;
+/// ...and about this many cells in all (below, the threads' hand-over costs more than it saves).
+const MIN_CELLS_TO_SPLIT: f64 = 100_000.0;
+
+/// One straight move at one height over the grid (see [`MillStock::level_segment`]), cut over a
+/// band of whole rows.
+struct Move<'t> {
+    capsule: Capsule,
+    a: Vec3,
+    b: Vec3,
+    tool: &'t Tool,
+    cut: bool,
+    flat: bool,
+    cell: f64,
+    inv_cell: f64,
+    x0: f64,
+    y0: f64,
+    nx: usize,
+    ntx: usize,
+}
+
+impl Move<'_> {
+    /// The rows of `top` (and their runs' highest tops, `tiles`), the first of them row `j0` of
+    /// the grid: the most the tool reaches into them. The tool's end is nowhere lower than its
+    /// tip: a run whose highest top is no higher is left alone.
+    fn rows(&self, top: &mut [f32], tiles: &mut [f32], j0: usize) -> f32 {
+        let (nx, ntx) = (self.nx, self.ntx);
+        let low = self.a.z as f32;
+        let mut deepest = 0.0f32;
+        for (k, (row, row_tiles)) in top.chunks_exact_mut(nx).zip(tiles.chunks_exact_mut(ntx)).enumerate() {
+            let cy = self.y0 + ((j0 + k) as f64 + 0.5) * self.cell;
+            let Some((xl, xh)) = self.capsule.row(cy) else { continue };
+            let (i0, i1) = (first_cell(xl, self.x0, self.inv_cell).max(0) as usize, last_cell(xh, self.x0, self.inv_cell));
+            if i1 < 0 || i0 >= nx {
+                continue;
+            }
+            let i1 = (i1 as usize).min(nx - 1);
+            let mut i = i0;
+            while i <= i1 {
+                let t = i / TILE;
+                let end = ((t + 1) * TILE - 1).min(i1);
+                if row_tiles[t] > low {
+                    deepest = deepest.max(self.run(&mut row[i..=end], i, cy));
+                    let (k0, k1) = (t * TILE, ((t + 1) * TILE).min(nx));
+                    if self.cut && self.flat && i == k0 && end + 1 == k1 {
+                        // A flat end over the whole run: every top is now at most its height.
+                        row_tiles[t] = row_tiles[t].min(low);
+                    } else if self.cut {
+                        row_tiles[t] = highest(&row[k0..k1]);
+                    }
+                }
+                i = end + 1;
+            }
+        }
+        deepest
+    }
+
+    /// A run of cells of the row at `cy`, the first cell `i0`, all within the tool's reach: how
+    /// far the highest stands above the tool's end, and with `cut` each lowered to it. A flat
+    /// end is one height across them.
+    fn run(&self, cells: &mut [f32], i0: usize, cy: f64) -> f32 {
+        let (a, b) = (&self.a, &self.b);
+        if self.flat {
+            return lower_to(cells, a.z as f32, self.cut);
+        }
+        let (dx, dy) = (b.x - a.x, b.y - a.y);
+        let len2 = dx * dx + dy * dy;
+        let mut deepest = 0.0f32;
+        for (k, top) in cells.iter_mut().enumerate() {
+            let cx = self.x0 + ((i0 + k) as f64 + 0.5) * self.cell;
+            let u = if len2 > 0.0 { (((cx - a.x) * dx + (cy - a.y) * dy) / len2).clamp(0.0, 1.0) } else { 0.0 };
+            let d = ((cx - a.x - u * dx).powi(2) + (cy - a.y - u * dy).powi(2)).sqrt();
+            let Some(h) = self.tool.end_height(d.min(self.tool.diameter_mm / 2.0)) else { continue };
+            let zc = (a.z + h) as f32;
+            if zc < *top {
+                deepest = deepest.max(*top - zc);
+                if self.cut {
+                    *top = zc;
+                }
+            }
+        }
+        deepest
+    }
+}
+
 /// Cells of a row whose highest top is kept (see [`MillStock::tile_max`]).
 const TILE: usize = 32;
 
@@ -183,81 +281,43 @@ impl MillStock {
     /// the compiler vectorises.
     fn level_segment(&mut self, a: &Vec3, b: &Vec3, tool: &Tool, cut: bool) -> f64 {
         let r = (tool.diameter_mm / 2.0).max(self.cell_mm / 2.0);
-        let (cell, x0, y0, nx) = (self.cell_mm, self.block.min_mm[0], self.block.min_mm[1], self.nx);
+        let (cell, y0, nx, ntx) = (self.cell_mm, self.block.min_mm[1], self.nx, self.ntx);
         let inv_cell = 1.0 / cell;
-        // Cells whose centres lie within [lo, hi]: from ceil((lo - x0) / cell - 0.5) to floor(..).
-        let first = |lo: f64, origin: f64| -floor_i(-((lo - origin) * inv_cell - 0.5));
-        let last = |hi: f64, origin: f64| floor_i((hi - origin) * inv_cell - 0.5);
-        let j0 = first(a.y.min(b.y) - r, y0).max(0) as usize;
-        let j1 = last(a.y.max(b.y) + r, y0);
-        if j1 < 0 {
+        let j0 = first_cell(a.y.min(b.y) - r, y0, inv_cell).max(0) as usize;
+        let j1 = last_cell(a.y.max(b.y) + r, y0, inv_cell);
+        if j1 < 0 || j0 >= self.ny {
             return 0.0;
         }
-        let j1 = (j1 as usize).min(self.ny.saturating_sub(1));
-        let capsule = Capsule::new(a, b, r);
-        // The tool's end is nowhere lower than its tip: a tile whose highest cell is no higher
-        // is left alone.
-        let low = a.z as f32;
-        let mut deepest = 0.0f32;
-        for j in j0..=j1 {
-            let cy = y0 + (j as f64 + 0.5) * cell;
-            let Some((xl, xh)) = capsule.row(cy) else { continue };
-            let (i0, i1) = (first(xl, x0).max(0) as usize, last(xh, x0));
-            if i1 < 0 || i0 >= nx {
-                continue;
-            }
-            let i1 = (i1 as usize).min(nx - 1);
-            let mut i = i0;
-            while i <= i1 {
-                let t = i / TILE;
-                let end = ((t + 1) * TILE - 1).min(i1);
-                let tk = j * self.ntx + t;
-                if self.tile_max[tk] > low {
-                    deepest = deepest.max(self.cut_run(j, i, end, a, b, tool, cut));
-                    let (k0, k1) = (t * TILE, ((t + 1) * TILE).min(nx));
-                    let flat = tool.kind == super::ToolKind::Mill && matches!(tool.shape, crate::setup::MillShape::Flat | crate::setup::MillShape::Face);
-                    if cut && flat && i == k0 && end + 1 == k1 {
-                        // A flat end over the whole run: every top is now at most its height.
-                        self.tile_max[tk] = self.tile_max[tk].min(low);
-                    } else if cut {
-                        self.tile_max[tk] = highest(&self.top[j * nx + k0..j * nx + k1]);
-                    }
-                }
-                i = end + 1;
-            }
-        }
+        let j1 = (j1 as usize).min(self.ny - 1);
+        let move_ = Move {
+            capsule: Capsule::new(a, b, r),
+            a: *a,
+            b: *b,
+            tool,
+            cut,
+            flat: tool.kind == super::ToolKind::Mill && matches!(tool.shape, crate::setup::MillShape::Flat | crate::setup::MillShape::Face),
+            cell,
+            inv_cell,
+            x0: self.block.min_mm[0],
+            y0,
+            nx,
+            ntx,
+        };
+        let top = &mut self.top[j0 * nx..(j1 + 1) * nx];
+        let tiles = &mut self.tile_max[j0 * ntx..(j1 + 1) * ntx];
+        let rows = j1 + 1 - j0;
+        // A move over many cells is cut by both cores, half its rows each (the rows are apart
+        // in memory, so the halves never meet).
+        let deepest = if rows >= 2 * MIN_ROWS_A_THREAD && (rows as f64) * 2.0 * r * inv_cell >= MIN_CELLS_TO_SPLIT {
+            let half = rows / 2;
+            let (top_a, top_b) = top.split_at_mut(half * nx);
+            let (tiles_a, tiles_b) = tiles.split_at_mut(half * ntx);
+            let (da, db) = rayon::join(|| move_.rows(top_a, tiles_a, j0), || move_.rows(top_b, tiles_b, j0 + half));
+            da.max(db)
+        } else {
+            move_.rows(top, tiles, j0)
+        };
         deepest.max(0.0) as f64
-    }
-
-    /// Cells `i0..=i1` of row `j` under the tool's end moving from `a` to `b` (all within its
-    /// reach): how far the highest stands above the end, and with `cut` each lowered to it. A
-    /// flat end is one height across them.
-    #[allow(clippy::too_many_arguments)]
-    fn cut_run(&mut self, j: usize, i0: usize, i1: usize, a: &Vec3, b: &Vec3, tool: &Tool, cut: bool) -> f32 {
-        let (cell, x0, nx) = (self.cell_mm, self.block.min_mm[0], self.nx);
-        let cy = self.block.min_mm[1] + (j as f64 + 0.5) * cell;
-        let row = &mut self.top[j * nx + i0..=j * nx + i1];
-        let flat = tool.kind == super::ToolKind::Mill && matches!(tool.shape, crate::setup::MillShape::Flat | crate::setup::MillShape::Face);
-        if flat {
-            return lower_to(row, a.z as f32, cut);
-        }
-        let (dx, dy) = (b.x - a.x, b.y - a.y);
-        let len2 = dx * dx + dy * dy;
-        let mut deepest = 0.0f32;
-        for (k, top) in row.iter_mut().enumerate() {
-            let cx = x0 + ((i0 + k) as f64 + 0.5) * cell;
-            let u = if len2 > 0.0 { (((cx - a.x) * dx + (cy - a.y) * dy) / len2).clamp(0.0, 1.0) } else { 0.0 };
-            let d = ((cx - a.x - u * dx).powi(2) + (cy - a.y - u * dy).powi(2)).sqrt();
-            let Some(h) = tool.end_height(d.min(tool.diameter_mm / 2.0)) else { continue };
-            let zc = (a.z + h) as f32;
-            if zc < *top {
-                deepest = deepest.max(*top - zc);
-                if cut {
-                    *top = zc;
-                }
-            }
-        }
-        deepest
     }
 
     /// How deep a move reaches into the material (and with `cut`, removes it): a straight move
