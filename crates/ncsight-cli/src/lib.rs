@@ -271,6 +271,9 @@ enum Command {
         /// Write the cut stock as a closed binary STL mesh (mm, programme coordinates).
         #[arg(long, value_name = "OUT.stl")]
         stl: Option<String>,
+        /// Write the lathe part's axial section as a drawing: SVG or DXF by the name's ending.
+        #[arg(long, value_name = "OUT.svg|OUT.dxf")]
+        section: Option<String>,
         /// Grid spacing DZ,DTHETA (mm, degrees).
         #[arg(long)]
         resolution: Option<String>,
@@ -356,8 +359,8 @@ pub fn main_with(args: impl IntoIterator<Item = std::ffi::OsString>, out: &mut d
         Command::Check { files, machine, format } => check(&files, &machine, &format, out, err),
         Command::Expand { file, machine, to, output } => expand(&file, &machine, &to, output.as_deref(), out, err),
         Command::Machines { machine } => machines(machine.as_deref(), out),
-        Command::Simulate { file, machine, stock, expect, format, image, stl, resolution } => {
-            let outputs = SimOutputs { image: image.as_deref(), stl: stl.as_deref() };
+        Command::Simulate { file, machine, stock, expect, format, image, stl, section, resolution } => {
+            let outputs = SimOutputs { image: image.as_deref(), stl: stl.as_deref(), section: section.as_deref() };
             simulate(&file, &machine, stock.as_deref(), expect.as_deref(), &format, outputs, resolution.as_deref(), out, err)
         }
         Command::Report { file, machine, operator, stock, expect, output } => {
@@ -866,6 +869,16 @@ fn simulate(
     let reads = m.read_files(file);
     let image_out = image.map(|path| output::LazyFile::new(path, &reads, 1 << 16)).transpose().map_err(usage)?;
     let stl_out = outputs.stl.map(|path| output::LazyFile::new(path, &reads, 1 << 16)).transpose().map_err(usage)?;
+    let dxf = match outputs.section {
+        Some(p) if p.to_ascii_lowercase().ends_with(".dxf") => true,
+        Some(p) if p.to_ascii_lowercase().ends_with(".svg") => false,
+        Some(p) => return Err(usage(format!("--section {p}: name the drawing OUT.svg or OUT.dxf"))),
+        None => false,
+    };
+    if outputs.section.is_some() && !params.profile().is_lathe() {
+        return Err(usage(format!("--section draws a turned part's axial section; {} is a machining centre (--stl writes its cut block)", params.profile().name)));
+    }
+    let section_out = outputs.section.map(|path| output::LazyFile::new(path, &reads, 1 << 16)).transpose().map_err(usage)?;
     if image_out.is_some() && !params.profile().is_lathe() {
         return Err(usage(format!(
             "--image draws the unrolled surface of a thread on a lathe; {} is a machining centre: the drilling simulation has no image (its holes are in the text or JSON output)",
@@ -930,6 +943,10 @@ fn simulate(
     }
     if let Some(mut w) = stl_out {
         simulate::stl(&mut w, &|each| ncsight::stock::mesh::lathe(&sim.stock, each))?;
+        w.flush()?;
+    }
+    if let Some(mut w) = section_out {
+        if dxf { simulate::section_dxf(&mut w, &sim.stock)? } else { simulate::section_svg(&mut w, &sim.stock)? }
         w.flush()?;
     }
     Ok(status_with_findings(alarmed, &sim.measurement.findings))
@@ -1025,6 +1042,7 @@ impl Drop for Spooled {
 struct SimOutputs<'a> {
     image: Option<&'a str>,
     stl: Option<&'a str>,
+    section: Option<&'a str>,
 }
 
 #[allow(clippy::too_many_arguments)]

@@ -305,3 +305,50 @@ pub fn stl(w: &mut dyn Write, mesh: &dyn Fn(&mut dyn FnMut(ncsight::stock::mesh:
     });
     failed
 }
+
+/// The lathe part's axial section ([`ncsight::stock::section`]) as an SVG drawing: millimetres,
+/// Z across (the chuck's end at the left), the diameter up, the material hatched grey with a
+/// black outline, the spindle axis dash-dotted, the stock's size in the title.
+pub fn section_svg(w: &mut dyn Write, stock: &ncsight::stock::lathe::LatheStock) -> io::Result<()> {
+    let outlines = ncsight::stock::section::outlines(stock);
+    let (b, m) = (stock.bar, 2.0);
+    let r = b.diameter_mm / 2.0;
+    let (z0, z1) = (b.front_z_mm - b.length_mm - m, b.front_z_mm + m);
+    let (w_mm, h_mm) = (z1 - z0, 2.0 * (r + m));
+    writeln!(w, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>")?;
+    writeln!(
+        w,
+        "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{}mm\" height=\"{}mm\" viewBox=\"{} {} {} {}\">",
+        num(w_mm, 3),
+        num(h_mm, 3),
+        num(z0, 4),
+        num(-(r + m), 4),
+        num(w_mm, 4),
+        num(h_mm, 4)
+    )?;
+    writeln!(w, "<title>ncsight simulate: section of the cut part, stock Ø{} x {} mm, mm</title>", num(b.diameter_mm, 3), num(b.length_mm, 3))?;
+    // SVG's y runs down: a point above the axis is drawn at -y.
+    for o in &outlines {
+        let d: Vec<String> = o.iter().map(|(z, y)| format!("{},{}", num(*z, 4), num(-*y, 4))).collect();
+        writeln!(w, "<polygon points=\"{}\" fill=\"#cfd8dc\" stroke=\"#000\" stroke-width=\"0.05\"/>", d.join(" "))?;
+    }
+    writeln!(w, "<line x1=\"{}\" y1=\"0\" x2=\"{}\" y2=\"0\" stroke=\"#455a64\" stroke-width=\"0.05\" stroke-dasharray=\"3 0.8 0.6 0.8\"/>", num(z0, 4), num(z1, 4))?;
+    writeln!(w, "</svg>")
+}
+
+/// The same section as a DXF drawing (ASCII, R12 entities every CAD program reads): the outlines
+/// as LINEs on layer SECTION, the axis on layer AXIS; X the programme's Z, Y the radius, mm.
+pub fn section_dxf(w: &mut dyn Write, stock: &ncsight::stock::lathe::LatheStock) -> io::Result<()> {
+    let line = |w: &mut dyn Write, layer: &str, a: (f64, f64), b: (f64, f64)| -> io::Result<()> {
+        write!(w, "0\nLINE\n8\n{layer}\n10\n{}\n20\n{}\n30\n0\n11\n{}\n21\n{}\n31\n0\n", num(a.0, 4), num(a.1, 4), num(b.0, 4), num(b.1, 4))
+    };
+    write!(w, "0\nSECTION\n2\nHEADER\n9\n$INSUNITS\n70\n4\n0\nENDSEC\n0\nSECTION\n2\nENTITIES\n")?;
+    for o in ncsight::stock::section::outlines(stock) {
+        for k in 0..o.len() {
+            line(w, "SECTION", o[k], o[(k + 1) % o.len()])?;
+        }
+    }
+    let b = stock.bar;
+    line(w, "AXIS", (b.front_z_mm - b.length_mm - 2.0, 0.0), (b.front_z_mm + 2.0, 0.0))?;
+    write!(w, "0\nENDSEC\n0\nEOF\n")
+}

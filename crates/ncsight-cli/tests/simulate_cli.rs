@@ -90,3 +90,54 @@ fn simulate_writes_a_closed_stl() {
     }
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// `--section OUT.svg|OUT.dxf`: the axial section of a part drilled Ø16 to Z-30, bored Ø18 to
+/// Z-25 and turned Ø38 to Z-30 on a Ø40 x 50 bar. By hand, the upper half's outline runs along
+/// the bore at radius 9 from the face (Z0, half a 0.01 mm cell beyond: 0.005) to the boring
+/// bar's corner at Z-25, down the drill's cone to the axis at Z-30, and back along the outside
+/// at 19 (Ø38) from the face to Z-30 and 20 (Ø40) to the chuck's end at Z-50; the lower half is
+/// its mirror. SVG draws a point above the axis at -y. The DXF has the same corners as LINEs.
+#[test]
+fn simulate_draws_the_section_as_svg_and_dxf() {
+    let dir = std::env::temp_dir().join(format!("ncsight-section-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let prog = dir.join("part.nc");
+    std::fs::write(&prog, "G99 M03 S600\nT0101\nG00 X0. Z2.\nG01 Z-30. F0.1\nG00 Z2.\nT0202\nG00 X18. Z2.\nG01 Z-25. F0.1\nG00 X16.\nG00 Z2.\nT0303\nG00 X42. Z2.\nG01 X38. F0.2\nG01 Z-30.\nG00 X42.\nG00 X100. Z100.\nM30\n").unwrap();
+    let tools = dir.join("tools.toml");
+    std::fs::write(&tools, "[[tool]]\nnumber = 1\nkind = \"drill\"\ndiameter_mm = 16.0\n[[tool]]\nnumber = 2\nkind = \"boring\"\n[[tool]]\nnumber = 3\nkind = \"turning\"\n").unwrap();
+    let (svg, dxf) = (dir.join("part.svg"), dir.join("part.dxf"));
+    for out in [&svg, &dxf] {
+        let (code, _, err) = common::ncsight(&["simulate", prog.to_str().unwrap(), "--machine", "gsk980tdi", "--stock", "40x50", "--setup", tools.to_str().unwrap(), "--section", out.to_str().unwrap()]);
+        assert_eq!(code, 0, "{err}");
+    }
+    let svg = std::fs::read_to_string(&svg).unwrap();
+    let polygons: Vec<Vec<(f64, f64)>> = svg
+        .lines()
+        .filter_map(|l| l.strip_prefix("<polygon points=\""))
+        .map(|l| l.split('"').next().unwrap().split(' ').map(|p| { let (z, y) = p.split_once(',').unwrap(); (z.parse().unwrap(), y.parse().unwrap()) }).collect())
+        .collect();
+    assert_eq!(polygons.len(), 2, "{svg}");
+    let near = |p: (f64, f64), q: (f64, f64)| (p.0 - q.0).abs() <= 0.011 && (p.1 - q.1).abs() <= 0.011;
+    for (poly, s) in polygons.iter().zip([-1.0, 1.0]) {
+        for corner in [(0.005, 9.0), (0.005, 19.0), (-30.0, 0.0), (-50.005, 20.0), (-50.005, 0.0)] {
+            assert!(poly.iter().any(|p| near(*p, (corner.0, s * corner.1))), "no corner {corner:?} in {poly:?}");
+        }
+        // The tools have sharp corners (no nose radius given): the bore is one straight edge from
+        // the face to Z-25, the outside one from the face to Z-30; the drill's 118-degree cone
+        // meets its Ø16 body 8 / tan 59 = 4.807 mm above its tip, at Z-25.193.
+        for corner in [(-25.0, 9.0), (-30.0, 19.0), (-25.193, 8.0)] {
+            assert!(poly.iter().any(|p| near(*p, (corner.0, s * corner.1))), "no corner {corner:?} in {poly:?}");
+        }
+    }
+    let dxf = std::fs::read_to_string(&dxf).unwrap();
+    assert!(dxf.starts_with("0\nSECTION\n2\nHEADER\n") && dxf.ends_with("0\nENDSEC\n0\nEOF\n"));
+    let lines = dxf.matches("0\nLINE\n").count();
+    assert_eq!(lines, polygons.iter().map(Vec::len).sum::<usize>() + 1, "every edge and the axis");
+    assert!(dxf.contains("8\nSECTION\n10\n0.005\n20\n9\n") || dxf.contains("11\n0.005\n21\n9\n"), "the bore's corner at the face");
+    // A machining centre has no turned section; a drawing is named .svg or .dxf.
+    let (code, _, err) = common::ncsight(&["simulate", prog.to_str().unwrap(), "--machine", "fanuc0m", "--section", dir.join("m.svg").to_str().unwrap()]);
+    assert_eq!(code, 2, "{err}");
+    let (code, _, err) = common::ncsight(&["simulate", prog.to_str().unwrap(), "--machine", "gsk980tdi", "--section", dir.join("m.png").to_str().unwrap()]);
+    assert!(code == 2 && err.contains(".svg or"), "{err}");
+    let _ = std::fs::remove_dir_all(dir);
+}

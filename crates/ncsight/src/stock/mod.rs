@@ -6,6 +6,7 @@ pub mod lathe;
 pub mod mesh;
 pub mod measure;
 pub mod mill;
+pub mod section;
 pub mod standard;
 pub mod survey;
 
