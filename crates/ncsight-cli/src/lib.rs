@@ -912,7 +912,10 @@ fn simulate(
     let mut program = Program::new(params, switches, Mode::Run);
     let mut library = m.prepare(&mut program)?;
     if !lathe {
-        let mut cut = ncsight::stock::measure::MillCut::new(&mill_survey, &job, opts.dz_mm, None).map_err(usage)?;
+        let mut cut = match ncsight::stock::measure::MillCut::new(&mill_survey, &job, opts.dz_mm, None) {
+            Ok(cut) => cut,
+            Err(e) => return not_simulated(alarmed || !mill_survey.cuts(), alarmed, e, err),
+        };
         cut_beside(file, source.input()?, &mut library, &mut program, &mut |r| cut.add(r))?;
         let sim = cut.finish();
         let body = if format == "json" { simulate::mill_json(&sim) } else { simulate::mill_text(&sim) };
@@ -923,7 +926,10 @@ fn simulate(
         }
         return Ok(status_with_findings(alarmed, &sim.findings));
     }
-    let mut cut = ncsight::stock::measure::LatheCut::new(&lathe_survey, &job, &opts).map_err(usage)?;
+    let mut cut = match ncsight::stock::measure::LatheCut::new(&lathe_survey, &job, &opts) {
+        Ok(cut) => cut,
+        Err(e) => return not_simulated(alarmed || lathe_survey.guessed_bar(false).is_none(), alarmed, e, err),
+    };
     let (total, mut done) = (lathe_survey.records, 0usize);
     let mut progress = progress_on(err);
     drive(file, source.input()?, &mut library, &mut program, &mut |e, _, _| {
@@ -950,6 +956,18 @@ fn simulate(
         w.flush()?;
     }
     Ok(status_with_findings(alarmed, &sim.measurement.findings))
+}
+
+/// The stock could not be set up (no stock given and nothing cut to guess it from, a grid too
+/// large): a usage mistake, unless there is nothing to simulate: the programme stopped on an
+/// alarm, or ran and cut nothing. Then it says so and the exit status is the run's (the alarm
+/// is already shown).
+fn not_simulated(nothing_to_cut: bool, alarmed: bool, why: String, err: &mut dyn Write) -> Result<i32, Failure> {
+    if !nothing_to_cut {
+        return Err(usage(why));
+    }
+    writeln!(err, "ncsight: the stock was not simulated: {why}")?;
+    Ok(if alarmed { EXIT_ALARM } else { 0 })
 }
 
 /// Records a batch takes from the interpreter to the cut beside it.

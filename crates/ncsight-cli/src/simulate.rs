@@ -100,8 +100,12 @@ pub fn mill_json(sim: &ncsight::stock::measure::MillSimulation) -> String {
         .collect();
     let floors: Vec<String> = sim.stock.floors().iter().map(|(z, a)| format!("{{\"z_mm\":{},\"area_mm2\":{}}}", num(*z, 3), num(*a, 2))).collect();
     let assumed: Vec<String> = mill_assumed(sim).iter().map(|t| json_str(t)).collect();
+    let guessed = match sim.block_guessed {
+        Some(b) => format!("{{\"min_mm\":[{}],\"max_mm\":[{}]}}", b.min_mm.map(|v| num(v, 4)).join(","), b.max_mm.map(|v| num(v, 4)).join(",")),
+        None => "null".into(),
+    };
     format!(
-        "{{\"assumed_tools\":[{}],\"holes\":[{}],\"floors\":[{}],\"removed_mm3\":{},\"grid\":{{\"cell_mm\":{}}},\"findings\":[{}]}}\n",
+        "{{\"assumed_tools\":[{}],\"block_guessed\":{guessed},\"holes\":[{}],\"floors\":[{}],\"removed_mm3\":{},\"grid\":{{\"cell_mm\":{}}},\"findings\":[{}]}}\n",
         assumed.join(","),
         holes.join(","),
         floors.join(","),
@@ -127,6 +131,10 @@ pub fn mill_text(sim: &ncsight::stock::measure::MillSimulation) -> String {
     let mut s = String::new();
     for t in mill_assumed(sim) {
         s.push_str(&format!("tool assumed: {t}\n"));
+    }
+    if let Some(b) = sim.block_guessed {
+        let p = |v: [f64; 3]| v.map(|c| num(c, 3)).join(", ");
+        s.push_str(&format!("block guessed: [{}] to [{}] mm (from the programme's cuts: give --stock XxYxZ or [block])\n", p(b.min_mm), p(b.max_mm)));
     }
     s.push_str(&format!("{} hole(s) on a {} mm grid\n", sim.holes.len(), num(sim.stock.cell_mm, 4)));
     for h in &sim.holes {

@@ -79,6 +79,16 @@ fn corpus_checks_give_clear_answers() {
         let args: Vec<&str> = ["run", f.to_str().unwrap(), "--machine", machine, "--format", "jsonl"].into_iter().chain(run_params.iter().map(String::as_str)).collect();
         let (code, _, err) = common::ncsight(&args);
         assert!(code == 0 || code == 1, "{name}: run exit {code}: {err}");
+        // The stock simulation: its exit status, the stock or block it guessed and every
+        // finding, in tests/corpus/<file>.simulate (why each finding is real, or what it cannot
+        // know: tests/corpus/README.md).
+        let args: Vec<&str> = ["simulate", f.to_str().unwrap(), "--machine", machine].into_iter().chain(run_params.iter().map(String::as_str)).collect();
+        let (code, out, err) = common::ncsight(&args);
+        assert!(matches!(code, 0 | 1 | 3), "{name}: simulate exit {code}: {err}");
+        let kept: Vec<&str> = out.lines().chain(err.lines()).filter(|l| l.starts_with("finding") || l.starts_with("stock guessed") || l.starts_with("block guessed") || l.starts_with("ncsight: the stock was not simulated")).collect();
+        common::expect_file(&out_dir.join(format!("{name}.simulate")), &format!("$ ncsight simulate {shown} --machine {machine}{}
+exit {code}
+{}", params.iter().map(|p| format!(" {p}")).collect::<String>(), kept.iter().map(|l| format!("{l}\n")).collect::<String>()));
     }
 }
 

@@ -141,3 +141,27 @@ fn simulate_draws_the_section_as_svg_and_dxf() {
     assert!(code == 2 && err.contains(".svg or"), "{err}");
     let _ = std::fs::remove_dir_all(dir);
 }
+
+/// Every example programme simulates on its controller with no finding (the stock guessed from
+/// its cuts where it gives none), exit status 0.
+#[test]
+fn every_example_simulates_without_a_finding() {
+    let dir = common::root().join("examples");
+    let mut seen = 0;
+    for e in std::fs::read_dir(&dir).unwrap() {
+        let p = e.unwrap().path();
+        let name = p.file_name().unwrap().to_str().unwrap().to_string();
+        if !name.ends_with(".nc") {
+            continue;
+        }
+        let machine = match name.split('_').next().unwrap() {
+            "yasnac" => "yasnac-lx3",
+            m => m,
+        };
+        let (code, out, err) = common::ncsight(&["simulate", p.to_str().unwrap(), "--machine", machine]);
+        assert_eq!(code, 0, "{name}: {out}{err}");
+        assert!(!out.lines().any(|l| l.starts_with("finding ")), "{name}: {out}");
+        seen += 1;
+    }
+    assert!(seen >= 8, "{seen} examples");
+}

@@ -94,6 +94,10 @@ pub struct LatheStock {
     pub updates: u64,
     /// Where the last thread record ended, if the record just applied was one.
     last_thread_end: Option<Vec3>,
+    /// Where the spindle was when that thread ended (degrees in its direction of turning), its
+    /// speed (signed rpm) and the time: a rapid straight after it sweeps only the angles the
+    /// spindle turns through while it runs.
+    last_thread_turn: Option<(f64, f64, f64)>,
     /// Where the last rapid that crashed ended, if the record just applied was one: the rapid
     /// after it starts in the material the crash reported, and is not a crash of its own.
     last_crash_end: Option<Vec3>,
@@ -171,6 +175,7 @@ impl LatheStock {
             findings: Vec::new(),
             updates: 0,
             last_thread_end: None,
+            last_thread_turn: None,
             last_crash_end: None,
             least_inner: vec![(bar.bore_mm / 2.0) as f32; nz],
             most_outer: vec![(bar.diameter_mm / 2.0) as f32; nz],
@@ -334,6 +339,7 @@ impl LatheStock {
 
     fn apply_tool(&mut self, rec: &Record, tool: &Tool, spindle_turning: bool) {
         let after_thread = self.last_thread_end.take();
+        let thread_turn = self.last_thread_turn.take();
         let after_crash = self.last_crash_end.take();
         if tool.kind.on_spindle_axis() {
             self.apply_axial(rec, tool, spindle_turning);
@@ -352,6 +358,8 @@ impl LatheStock {
                 self.chuck_check(rec, &from, &to);
                 self.cut_thread(from, to, lead_mm, spindle_deg, rpm, tool, inside);
                 self.last_thread_end = Some(to);
+                let end_deg = crate::cycles::thread::phase_after(spindle_deg, (to.z - from.z).abs(), lead_mm);
+                self.last_thread_turn = Some((end_deg, rpm, rec.t_s));
             }
             Op::ThreadArc { from, to, long_axis, lead_mm, spindle_deg, rpm, plane, .. } => {
                 if plane != crate::motion::Plane::ZX {
@@ -395,8 +403,21 @@ impl LatheStock {
                 // the insert's model are wider than a real insert's clearance: a rapid just in
                 // front of the face is no crash); then it cuts what it passes.
                 let dz = Vec3::new(0.0, 0.0, tool.edge_point_dz_mm());
-                let into = self.depth_along(&[from + dz, to + dz]);
-                let cut = if into > CRASH_MM { self.sweep(&[from, to], tool, inside).max(into) } else { 0.0 };
+                // Out of a thread's groove, a rapid that ends before the spindle has turned once
+                // meets only the angles it turns through (the groove it leaves is at the first).
+                let turned = thread_turn.filter(|_| after_thread == Some(from)).map(|(deg, rpm, t)| (deg, rpm, rpm.abs() / 60.0 * 360.0 * (rec.t_s - t).max(0.0)));
+                let into = match turned {
+                    Some((deg, rpm, sweep)) if sweep < 360.0 => self.depth_turning(&[from + dz, to + dz], deg, sweep, rpm),
+                    _ => self.depth_along(&[from + dz, to + dz]),
+                };
+                // It cuts its way (the whole tool's profile); how deep it went is its point's depth
+                // (a threading insert's flanks, modelled as going on, would say more).
+                let cut = if into > CRASH_MM {
+                    self.sweep(&[from, to], tool, inside);
+                    into
+                } else {
+                    0.0
+                };
                 if cut > CRASH_MM {
                     self.last_crash_end = Some(to);
                 }
@@ -500,6 +521,33 @@ impl LatheStock {
                     continue;
                 }
                 let (inner, outer) = self.extremes(c as usize);
+                deepest = deepest.max((r - inner).min(outer - r));
+            }
+        }
+        deepest as f64
+    }
+
+    /// How deep a straight path of the tool's point goes into the material when the spindle
+    /// turns from `start_deg` through `sweep_deg` (signed `rpm`: its direction) while the tool
+    /// runs it: at each point the material of the column under the tool then (0 in the air).
+    fn depth_turning(&self, path: &[Vec3; 2], start_deg: f64, sweep_deg: f64, rpm: f64) -> f64 {
+        let g = self.grid;
+        let [a, b] = *path;
+        let len = (b.z - a.z).abs().max((b.x - a.x).abs());
+        let n = ((len / (g.dz_mm / 2.0)).ceil() as usize).clamp(1, 10_000_000);
+        let mut deepest = 0.0f32;
+        for k in 0..=n {
+            let u = k as f64 / n as f64;
+            let phi = (start_deg + sweep_deg * u).rem_euclid(360.0);
+            let theta = if rpm >= 0.0 { phi } else { (360.0 - phi).rem_euclid(360.0) };
+            let j = (theta / g.dtheta_deg()).round() as usize % g.ntheta;
+            let c = g.cell(a.z + (b.z - a.z) * u);
+            if c < 0 || c >= g.nz as isize {
+                continue;
+            }
+            let r = (a.x + (b.x - a.x) * u).abs() as f32;
+            let (inner, outer) = self.material(j, c as usize);
+            if r > inner && r < outer {
                 deepest = deepest.max((r - inner).min(outer - r));
             }
         }

@@ -71,6 +71,8 @@ pub struct MillSimulation {
     pub findings: Vec<Finding>,
     /// The tools the setup does not describe, as assumed from what they do.
     pub assumed_tools: Vec<(u32, Tool)>,
+    /// The block when it was guessed from the cuts (no `[block]`, no `--stock`).
+    pub block_guessed: Option<super::mill::Block>,
 }
 
 /// Run a machining centre's records through a block: a survey, then the cut (see
@@ -84,8 +86,9 @@ pub fn simulate_mill(records: &[Record], setup: &Setup, cell_mm: Option<f64>, un
 }
 
 /// The cut of a machining centre's block, record by record, after a [`MillSurvey`] of the same
-/// records. Without a block in the setup: the cuts' extent plus 10 mm around, its top at Z0
-/// (or above the highest cut), 5 mm below the deepest.
+/// records. Without a block in the setup: the cuts' extent and the widest cutting tool's radius
+/// around it (what the tools swept, no more: material beyond is not known to be there, and a
+/// guess must not make crashes), its top at Z0, 5 mm below the deepest cut.
 pub struct MillCut {
     stock: super::mill::MillStock,
     setup: Setup,
@@ -96,15 +99,43 @@ pub struct MillCut {
     skip: usize,
     seen: usize,
     until_s: Option<f64>,
+    stops: StopNote,
+}
+
+/// The last programme stop (M00, M01) before a finding: a part turned over or re-clamped there
+/// (a second operation) is not known to the stock, so a crash after it says so.
+#[derive(Default)]
+struct StopNote {
+    line: Option<u32>,
+}
+
+impl StopNote {
+    fn see(&mut self, r: &Record) {
+        if let Op::Stop { reason: crate::motion::StopReason::ProgramStop | crate::motion::StopReason::OptionalStop } = r.op {
+            self.line = Some(r.span.line);
+        }
+    }
+
+    /// The findings from `from` on, made after a stop: a crash or a holder finding says it.
+    fn mark(&self, findings: &mut [Finding]) {
+        let Some(line) = self.line else { return };
+        for f in findings.iter_mut().filter(|f| matches!(f.kind, "crash" | "holder" | "chuck")) {
+            f.message.push_str(&format!(" (after the programme stop at line {line}: if the part was turned over or clamped again there, the simulation does not know it: it goes on with the stock as cut)"));
+        }
+    }
 }
 
 impl MillCut {
     pub fn new(survey: &MillSurvey, setup: &Setup, cell_mm: Option<f64>, until_s: Option<f64>) -> Result<MillCut, String> {
+        let top = setup.block.map_or(0.0, |b| b.max_mm[2]);
+        let assumed = survey.assumed_tools(setup, top);
+        let tool_for = |n: u32| assumed.iter().find(|(m, _)| *m == n).map(|(_, t)| *t).unwrap_or_else(|| setup.mill_tool(n));
         let block = match setup.block {
             Some(b) => b,
             None if survey.cuts() => {
                 let (lo, hi) = (survey.cut_min, survey.cut_max);
-                super::mill::Block { min_mm: [lo[0] - 10.0, lo[1] - 10.0, lo[2].min(0.0) - 5.0], max_mm: [hi[0] + 10.0, hi[1] + 10.0, 0.0] }
+                let m = survey.cutting_tools().map(|n| tool_for(n).diameter_mm / 2.0).fold(0.0, f64::max);
+                super::mill::Block { min_mm: [lo[0] - m, lo[1] - m, lo[2].min(0.0) - 5.0], max_mm: [hi[0] + m, hi[1] + m, 0.0] }
             }
             None => return Err("no block: give one in the setup ([block] min_mm, max_mm) or --stock XxYxZ; the programme cuts nothing to infer it from".into()),
         };
@@ -113,8 +144,7 @@ impl MillCut {
         if !(cell > 0.0) || cells > 100e6 {
             return Err(format!("a grid of {cells:.0} cells: coarsen --resolution"));
         }
-        let assumed = survey.assumed_tools(setup, block.max_mm[2]);
-        let mut cut = MillCut { stock: super::mill::MillStock::new(block, cell), setup: setup.clone(), assumed, tool: Tool::default_thread(), rpm: 0.0, skip: survey.first_rapid.unwrap_or(0), seen: 0, until_s };
+        let mut cut = MillCut { stock: super::mill::MillStock::new(block, cell), setup: setup.clone(), assumed, tool: Tool::default_thread(), rpm: 0.0, skip: survey.first_rapid.unwrap_or(0), seen: 0, until_s, stops: StopNote::default() };
         cut.tool = cut.tool_for(0);
         Ok(cut)
     }
@@ -130,18 +160,31 @@ impl MillCut {
         if self.until_s.is_some_and(|t| r.t_s > t) {
             return;
         }
+        self.stops.see(r);
         match r.op {
             Op::Tool { number, .. } => self.tool = self.tool_for(number),
             Op::Spindle { rpm, .. } => self.rpm = rpm,
-            _ if k > self.skip => self.stock.apply(r, &self.tool, self.rpm),
+            _ if k > self.skip => {
+                let before = self.stock.findings.len();
+                self.stock.apply(r, &self.tool, self.rpm);
+                self.stops.mark(&mut self.stock.findings[before..]);
+            }
             _ => {}
         }
     }
 
     pub fn finish(mut self) -> MillSimulation {
         let holes = self.stock.holes();
-        let findings = std::mem::take(&mut self.stock.findings);
-        MillSimulation { stock: self.stock, holes, findings, assumed_tools: self.assumed }
+        let mut findings = std::mem::take(&mut self.stock.findings);
+        let block_guessed = self.setup.block.is_none().then_some(self.stock.block);
+        if block_guessed.is_some() {
+            // The guess holds every cut's reach; between the cuts it may hold material the real
+            // stock has not (round a contour's corners, say): said with each finding.
+            for f in findings.iter_mut().filter(|f| matches!(f.kind, "crash" | "holder")) {
+                f.message.push_str(" (against a guessed block: give --stock XxYxZ or [block] for the real one)");
+            }
+        }
+        MillSimulation { stock: self.stock, holes, findings, assumed_tools: self.assumed, block_guessed }
     }
 }
 
@@ -184,6 +227,7 @@ pub struct LatheCut {
     /// The threaded range along Z, and the last thread record (a deviation is placed there).
     thread_z: Option<(f64, f64)>,
     last_thread: Option<Record>,
+    stops: StopNote,
 }
 
 impl LatheCut {
@@ -237,6 +281,7 @@ impl LatheCut {
             phase: Phase::default(),
             thread_z: None,
             last_thread: None,
+            stops: StopNote::default(),
         };
         cut.tool = cut.tool_for(0, None);
         Ok(cut)
@@ -276,13 +321,16 @@ impl LatheCut {
             self.thread_z = Some((lo.min(from.z).min(to.z), hi.max(from.z).max(to.z)));
             self.last_thread = Some(r.clone());
         }
+        self.stops.see(r);
         if k <= self.skip {
             return;
         }
+        let before = self.stock.findings.len();
         match nose_shift(&self.tool) {
             Some(d) => self.stock.apply(&shifted(r, d), &self.tool, self.rpm),
             None => self.stock.apply(r, &self.tool, self.rpm),
         }
+        self.stops.mark(&mut self.stock.findings[before..]);
     }
 
     /// The stock after the records, and its measurement.

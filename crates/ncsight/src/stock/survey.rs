@@ -98,7 +98,10 @@ impl BarGuess {
         if radius <= 0.0 {
             return None;
         }
-        let front = self.zmax.min(0.0).max(self.zmin);
+        // Z0 where the cuts reach it; else the nearest cut when they all lie below Z0, the
+        // highest when they all lie above it (the programme's zero is not at the face), less
+        // two leads where it threads (a thread starts in the air, to come up to speed).
+        let front = if self.zmin > 0.0 { (self.zmax - 2.0 * self.lead).max(self.zmin) } else { self.zmax.min(0.0).max(self.zmin) };
         Some(Bar { diameter_mm: 2.0 * radius, length_mm: (front - self.zmin) + GUESS_HOLD_MM, bore_mm: bore.max(0.0), front_z_mm: front })
     }
 }
@@ -262,8 +265,10 @@ impl LatheSurvey {
     ///   of its two diameters, so a move coming in from outside, a facing cut or a retract, does
     ///   not count beyond where it cuts), or the largest diameter of any cut when none runs
     ///   along one;
-    /// - the face is at Z0 where the cuts reach it (otherwise at the nearest cut), and the bar
-    ///   runs to the deepest cut plus [`GUESS_HOLD_MM`], where the chuck is assumed;
+    /// - the face is at Z0 where the cuts reach it (otherwise at the nearest cut below Z0, or at
+    ///   the highest, less two leads of a thread's approach, when every cut lies above Z0), and
+    ///   the bar runs to the deepest cut plus
+    ///   [`GUESS_HOLD_MM`], where the chuck is assumed;
     /// - with an external thread, at least the thread's deepest pass plus twice the ISO external
     ///   thread height 0.61343 x lead (a programme that only threads: the blank's diameter);
     /// - a programme that only cuts an internal thread: the bore is its deepest pass less twice
@@ -324,6 +329,11 @@ impl MillSurvey {
             }
             None => self.tools.push((self.current, if sideways { low } else { f64::MAX }, sideways)),
         }
+    }
+
+    /// The tools (T numbers) that make cutting moves.
+    pub fn cutting_tools(&self) -> impl Iterator<Item = u32> + '_ {
+        self.tools.iter().map(|t| t.0)
     }
 
     /// Whether any move cuts (feeds or arcs).
