@@ -212,3 +212,44 @@ fn a_boring_bar_in_a_bore_too_small_for_it_is_found() {
         assert_eq!(found, want, "{:?}", sim.measurement.findings);
     }
 }
+
+mod property {
+    use ncsight::motion::Op;
+    use ncsight::source::Span;
+    use ncsight::stock::lathe::LatheStock;
+    use ncsight::stock::{Bar, Tool, ToolKind};
+    use ncsight::{Record, Vec3};
+    use proptest::prelude::*;
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(48))]
+        /// Any feeds of a turning tool, a boring bar, a grooving tool or a drill on a Ø40 bar:
+        /// after every record no cell's outside grew and no bore shrank (material only
+        /// decreases), and a record cut a second time removes nothing more.
+        #[test]
+        fn material_only_decreases_and_a_second_cut_removes_nothing(
+            moves in prop::collection::vec(((0.0f64..22.0, -45.0f64..3.0), (0.0f64..22.0, -45.0f64..3.0)), 1..10),
+            kind in 0u8..4,
+        ) {
+            let tool = match kind {
+                0 => Tool { number: 1, kind: ToolKind::Turning, tip_radius_mm: 0.4, ..Tool::default_thread() },
+                1 => Tool { number: 1, kind: ToolKind::Boring, tip_radius_mm: 0.4, ..Tool::default_thread() },
+                2 => Tool { number: 1, kind: ToolKind::Groove, width_mm: 3.0, corner_radius_mm: 0.2, ..Tool::default_thread() },
+                _ => Tool { number: 1, kind: ToolKind::Drill, diameter_mm: 12.0, ..Tool::default_thread() },
+            };
+            let mut s = LatheStock::new(Bar { diameter_mm: 40.0, length_mm: 50.0, bore_mm: 0.0, front_z_mm: 0.0 }, false, 0.05, 24);
+            for ((ax, az), (bx, bz)) in moves {
+                let (from, to) = if kind == 3 { (Vec3::new(0.0, 0.0, az), Vec3::new(0.0, 0.0, bz)) } else { (Vec3::new(ax, 0.0, az), Vec3::new(bx, 0.0, bz)) };
+                let r = Record::new(Span::default(), Op::Feed { from, to, feed_mm_min: 100.0 });
+                let (outer, inner) = (s.outer.clone(), s.inner.clone());
+                s.apply(&r, &tool, 600.0);
+                prop_assert!(s.outer.iter().zip(&outer).all(|(a, b)| a <= b));
+                prop_assert!(s.inner.iter().zip(&inner).all(|(a, b)| a >= b));
+                let (outer, inner) = (s.outer.clone(), s.inner.clone());
+                s.apply(&r, &tool, 600.0);
+                prop_assert_eq!(&s.outer, &outer);
+                prop_assert_eq!(&s.inner, &inner);
+            }
+        }
+    }
+}

@@ -96,3 +96,95 @@ fn the_tools_shape_forbids_plunges_deep_cuts_and_holder_contact() {
     let fine = tool("flute_length_mm = 20.0\nstick_out_mm = 30.0\nholder = { diameter_mm = 30.0, length_mm = 50.0 }\n");
     assert!(simulate_mill(&records(PROGRAMME), &fine, Some(0.1), None).unwrap().findings.is_empty());
 }
+
+/// A 30 x 20 mm boss (X15-45, Y10-30) left standing 5 mm high by a Ø10 end mill contouring round
+/// it under cutter compensation (offset D1 = 5 mm): once with G41, going round clockwise (climb
+/// milling with M03), once with G42 counter-clockwise (conventional). By hand, both leave the
+/// boss's walls at X15, X45, Y10 and Y30 (the tool's centre 5 mm out), within one 0.1 mm cell;
+/// outside the walls the floor at Z-5 as far as the tool reaches (10 mm out from the wall: to
+/// X55 beyond the X45 wall, the block running on to X60).
+#[test]
+fn a_contour_climb_or_conventional_leaves_its_walls_where_drawn() {
+    let setup = Setup::from_toml("[block]\nmin_mm = [0.0, 0.0, -10.0]\nmax_mm = [60.0, 40.0, 0.0]\n[[tool]]\nnumber = 1\nkind = \"mill\"\ndiameter_mm = 10.0\n[[offset]]\nnumber = 1\nradius_mm = 5.0\n").unwrap();
+    let climb = "G21 G17 G90 G54\nT1 M06\nS3000 M03\nG00 X5. Y5. Z5.\nG01 Z-5. F200.\nG41 D1 G01 X15. Y10.\nY30.\nX45.\nY10.\nX15.\nG40 G01 X5. Y5.\nG00 Z5.\nM30\n";
+    let conventional = "G21 G17 G90 G54\nT1 M06\nS3000 M03\nG00 X5. Y5. Z5.\nG01 Z-5. F200.\nG42 D1 G01 X15. Y10.\nX45.\nY30.\nX15.\nY10.\nG40 G01 X5. Y5.\nG00 Z5.\nM30\n";
+    for (name, text) in [("climb", climb), ("conventional", conventional)] {
+        let (recs, diags) = common::run_setup("fanuc0m", "[block]\nmin_mm = [0.0, 0.0, -10.0]\nmax_mm = [60.0, 40.0, 0.0]\n[[offset]]\nnumber = 1\nradius_mm = 5.0\n", text, false);
+        assert!(diags.iter().all(|d| !d.is_alarm()), "{name}: {diags:?}");
+        let sim = simulate_mill(&recs, &setup, Some(0.1), None).unwrap();
+        assert!(sim.findings.is_empty(), "{name}: {:?}", sim.findings);
+        let s = &sim.stock;
+        let top = |x: f64, y: f64| s.top[((y / 0.1) as usize) * s.nx + (x / 0.1) as usize] as f64;
+        // Across the middle row and column: the walls within a cell of where they are drawn.
+        for (inside, outside) in [((15.05, 20.0), (14.95, 20.0)), ((44.95, 20.0), (45.05, 20.0)), ((30.0, 10.05), (30.0, 9.95)), ((30.0, 29.95), (30.0, 30.05))] {
+            let (a, b) = (top(inside.0, inside.1), top(outside.0, outside.1));
+            let (c, d) = (top(inside.0 + (inside.0 - outside.0), inside.1 + (inside.1 - outside.1)), top(outside.0 - (inside.0 - outside.0), outside.1 - (inside.1 - outside.1)));
+            assert!(a == 0.0 && c == 0.0, "{name}: the boss stands at {inside:?}: {a} {c}");
+            assert!(b == -5.0 && d == -5.0, "{name}: the floor beside it at {outside:?}: {b} {d}");
+        }
+        // The floor reaches 10 mm out from the wall (the tool's width), not further: X45 to X55.
+        assert_eq!(top(54.95, 20.0), -5.0, "{name}");
+        assert_eq!(top(55.05, 20.0), 0.0, "{name}");
+    }
+}
+
+mod property {
+    use super::*;
+    use ncsight::motion::{Op, Plane, ArcDir};
+    use ncsight::source::Span;
+    use ncsight::Vec3;
+    use proptest::prelude::*;
+
+    fn tool_of(kind: u8, d: f64) -> ncsight::stock::Tool {
+        let mut t = ncsight::stock::Tool { number: 1, kind: ncsight::stock::ToolKind::Mill, diameter_mm: d, ..ncsight::stock::Tool::default_thread() };
+        match kind {
+            0 => {}
+            1 => t.shape = ncsight::setup::MillShape::Ball,
+            2 => {
+                t.shape = ncsight::setup::MillShape::Bull;
+                t.corner_radius_mm = d / 4.0;
+            }
+            _ => t.kind = ncsight::stock::ToolKind::Drill,
+        }
+        t
+    }
+
+    fn moves() -> impl Strategy<Value = Vec<Op>> {
+        let p = (2.0f64..38.0, 2.0f64..28.0, -6.0f64..1.0);
+        prop::collection::vec((p.clone(), p, any::<bool>()), 1..12).prop_map(|v| {
+            v.into_iter()
+                .map(|((ax, ay, az), (bx, by, _), arc)| {
+                    let (from, to) = (Vec3::new(ax, ay, az), Vec3::new(bx, by, az));
+                    if arc {
+                        // A half circle from `from` to the point opposite it about the middle.
+                        let center = Vec3::new((ax + bx) / 2.0, (ay + by) / 2.0, az);
+                        Op::Arc { from, to: Vec3::new(2.0 * center.x - ax, 2.0 * center.y - ay, az), center, plane: Plane::XY, dir: ArcDir::Ccw, feed_mm_min: 300.0 }
+                    } else {
+                        Op::Feed { from, to, feed_mm_min: 300.0 }
+                    }
+                })
+                .collect()
+        })
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(48))]
+        /// Any moves with any of the tools: after every record no cell stands higher than before
+        /// it (material only decreases), and a record cut a second time removes nothing more.
+        #[test]
+        fn material_only_decreases_and_a_second_cut_removes_nothing(ops in moves(), kind in 0u8..4, d in 1.0f64..12.0) {
+            let tool = tool_of(kind, d);
+            let block = ncsight::stock::mill::Block { min_mm: [0.0, 0.0, -10.0], max_mm: [40.0, 30.0, 0.0] };
+            let mut s = ncsight::stock::mill::MillStock::new(block, 0.25);
+            for op in ops {
+                let r = Record::new(Span::default(), op);
+                let before = s.top.clone();
+                s.apply(&r, &tool, 1000.0);
+                prop_assert!(s.top.iter().zip(&before).all(|(a, b)| a <= b));
+                let once = s.top.clone();
+                s.apply(&r, &tool, 1000.0);
+                prop_assert_eq!(&s.top, &once);
+            }
+        }
+    }
+}
