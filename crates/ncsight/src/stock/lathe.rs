@@ -395,47 +395,53 @@ impl LatheStock {
                 let pts = arc_samples(&rec.op, |len| ((len / half_cell).ceil() as usize).clamp(2, 100_000));
                 self.sweep(&pts, tool, inside);
             }
-            Op::Rapid { from, to } => {
-                // Where the rapid starts inside what is left of the stock, the thread's pull-out
-                // before it ended there.
-                let pull_out_inside = after_thread == Some(from) && self.in_material(&from);
-                // A rapid crashes when its cutting point goes into the material (the flanks of
-                // the insert's model are wider than a real insert's clearance: a rapid just in
-                // front of the face is no crash); then it cuts what it passes.
-                let dz = Vec3::new(0.0, 0.0, tool.edge_point_dz_mm());
-                // Out of a thread's groove, a rapid that ends before the spindle has turned once
-                // meets only the angles it turns through (the groove it leaves is at the first).
-                let turned = thread_turn.filter(|_| after_thread == Some(from)).map(|(deg, rpm, t)| (deg, rpm, rpm.abs() / 60.0 * 360.0 * (rec.t_s - t).max(0.0)));
-                let into = match turned {
-                    Some((deg, rpm, sweep)) if sweep < 360.0 => self.depth_turning(&[from + dz, to + dz], deg, sweep, rpm),
-                    _ => self.depth_along(&[from + dz, to + dz]),
-                };
-                // It cuts its way (the whole tool's profile); how deep it went is its point's depth
-                // (a threading insert's flanks, modelled as going on, would say more).
-                let cut = if into > CRASH_MM {
-                    self.sweep(&[from, to], tool, inside);
-                    into
-                } else {
-                    0.0
-                };
-                if cut > CRASH_MM {
-                    self.last_crash_end = Some(to);
-                }
-                // A rapid from where a crash just left the tool is still in that crash's material.
-                if cut > CRASH_MM && after_crash != Some(from) {
-                    let message = match after_thread {
-                        Some(_) if pull_out_inside => format!(
-                            "a rapid move cuts {cut:.3} mm into the stock: the thread before it ends inside the stock at X{:.3} Z{:.3} (its pull-out, if any, does not bring the tool out)",
-                            2.0 * from.x,
-                            from.z
-                        ),
-                        _ => format!("a rapid move cuts {cut:.3} mm into the stock"),
-                    };
-                    let f = Finding::at("crash", rec, from, true, None, message);
-                    self.findings.push(f);
-                }
-            }
+            Op::Rapid { from, to } => self.rapid(rec, from, to, tool, inside, after_thread, thread_turn, after_crash),
             _ => {}
+        }
+    }
+
+    /// A rapid: a crash when its cutting point goes into the material (then it cuts its way);
+    /// `after_thread` and `thread_turn`: the thread record just before it ended there, with the
+    /// spindle's angle, speed and time; `after_crash`: a crash just left the tool there.
+    #[allow(clippy::too_many_arguments)]
+    fn rapid(&mut self, rec: &Record, from: Vec3, to: Vec3, tool: &Tool, inside: bool, after_thread: Option<Vec3>, thread_turn: Option<(f64, f64, f64)>, after_crash: Option<Vec3>) {
+        // Where the rapid starts inside what is left of the stock, the thread's pull-out
+        // before it ended there.
+        let pull_out_inside = after_thread == Some(from) && self.in_material(&from);
+        // A rapid crashes when its cutting point goes into the material (the flanks of
+        // the insert's model are wider than a real insert's clearance: a rapid just in
+        // front of the face is no crash); then it cuts what it passes.
+        let dz = Vec3::new(0.0, 0.0, tool.edge_point_dz_mm());
+        // Out of a thread's groove, a rapid that ends before the spindle has turned once
+        // meets only the angles it turns through (the groove it leaves is at the first).
+        let turned = thread_turn.filter(|_| after_thread == Some(from)).map(|(deg, rpm, t)| (deg, rpm, rpm.abs() / 60.0 * 360.0 * (rec.t_s - t).max(0.0)));
+        let into = match turned {
+            Some((deg, rpm, sweep)) if sweep < 360.0 => self.depth_turning(&[from + dz, to + dz], deg, sweep, rpm),
+            _ => self.depth_along(&[from + dz, to + dz]),
+        };
+        // It cuts its way (the whole tool's profile); how deep it went is its point's depth
+        // (a threading insert's flanks, modelled as going on, would say more).
+        let cut = if into > CRASH_MM {
+            self.sweep(&[from, to], tool, inside);
+            into
+        } else {
+            0.0
+        };
+        if cut > CRASH_MM {
+            self.last_crash_end = Some(to);
+        }
+        // A rapid from where a crash just left the tool is still in that crash's material.
+        if cut > CRASH_MM && after_crash != Some(from) {
+            let message = match after_thread {
+                Some(_) if pull_out_inside => format!(
+                    "a rapid move cuts {cut:.3} mm into the stock: the thread before it ends inside the stock at X{:.3} Z{:.3} (its pull-out, if any, does not bring the tool out)",
+                    2.0 * from.x,
+                    from.z
+                ),
+                _ => format!("a rapid move cuts {cut:.3} mm into the stock"),
+            };
+            let f = Finding::at("crash", rec, from, true, None, message);
+            self.findings.push(f);
         }
     }
 

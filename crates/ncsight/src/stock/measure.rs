@@ -530,7 +530,34 @@ fn measure(stock: &LatheStock, thread_z: Option<(f64, f64)>) -> Measurement {
     let row0: Vec<f64> = grooves(&stock.row(0)[i_lo..=i_hi], zf, level, internal);
     let pitch = median(row0.windows(2).map(|w| w[1] - w[0]).collect());
     m.pitch_mm = pitch;
-    // Lead: follow one groove once around.
+    lead_of(&mut m, stock, &row0, pitch, (i_lo, i_hi), level);
+    m.flank_angles_deg = flank_angles(stock, &row0, minor_r, depth);
+    let (full, partial) = depth_lengths(&envelope, if internal { minor_r } else { major_r }, depth, g.dz_mm);
+    m.full_depth_length_mm = Some(full);
+    m.runout_length_mm = Some(partial);
+    m
+}
+
+/// Full depth and run-out along z, mm: the cells whose deepest point around (`envelope`) is
+/// within 5 % of the thread's `depth` from the `crest`, and those between 5 % and 95 % of it.
+fn depth_lengths(envelope: &[f32], crest: f32, depth: f64, dz_mm: f64) -> (f64, f64) {
+    let (mut full, mut partial) = (0usize, 0usize);
+    for &env in envelope {
+        let reached = ((env - crest).abs() as f64) / depth;
+        if reached >= 0.95 {
+            full += 1;
+        } else if reached > 0.05 {
+            partial += 1;
+        }
+    }
+    (full as f64 * dz_mm, partial as f64 * dz_mm)
+}
+
+/// The lead and hand: one groove of row 0 (`row0`, the grooves' z) followed once around, from
+/// row to row within a little of where it was (`span`: the thread's cells `i_lo..=i_hi`).
+fn lead_of(m: &mut Measurement, stock: &LatheStock, row0: &[f64], pitch: Option<f64>, (i_lo, i_hi): (usize, usize), level: f32) {
+    let g = stock.grid;
+    let internal = stock.internal;
     if let (Some(p), Some(&c0)) = (pitch, row0.get(row0.len() / 2)) {
         let mut c = c0;
         let mut ok = true;
@@ -565,50 +592,39 @@ fn measure(stock: &LatheStock, thread_z: Option<(f64, f64)>) -> Measurement {
             }
         }
     }
-    // Flank angles: a middle groove of row 0, the points between 20 % and 80 % of the depth.
-    if let Some(&c) = row0.get(row0.len() / 2) {
-        let row = stock.row(0);
-        let ci = ((c - g.z0_mm) / g.dz_mm).round() as isize;
-        let fit = |dir: isize| -> Option<f64> {
-            let (mut pts, mut i) = (Vec::new(), ci);
-            while i >= 0 && (i as usize) < g.nz {
-                let d = (row[i as usize] - minor_r).abs() as f64 / depth;
-                let d = if internal { 1.0 - d } else { d };
-                if d > 0.8 {
-                    break;
-                }
-                if d >= 0.2 {
-                    pts.push((g.z(i as usize), row[i as usize] as f64));
-                }
-                i += dir;
+}
+
+/// The flank angles of a middle groove of row 0, from the points between 20 % and 80 % of the
+/// depth on each side.
+fn flank_angles(stock: &LatheStock, row0: &[f64], minor_r: f32, depth: f64) -> Option<(f64, f64)> {
+    let g = stock.grid;
+    let internal = stock.internal;
+    let c = *row0.get(row0.len() / 2)?;
+    let row = stock.row(0);
+    let ci = ((c - g.z0_mm) / g.dz_mm).round() as isize;
+    let fit = |dir: isize| -> Option<f64> {
+        let (mut pts, mut i) = (Vec::new(), ci);
+        while i >= 0 && (i as usize) < g.nz {
+            let d = (row[i as usize] - minor_r).abs() as f64 / depth;
+            let d = if internal { 1.0 - d } else { d };
+            if d > 0.8 {
+                break;
             }
-            if pts.len() < 3 {
-                return None;
+            if d >= 0.2 {
+                pts.push((g.z(i as usize), row[i as usize] as f64));
             }
-            let n = pts.len() as f64;
-            let (mz, mr) = (pts.iter().map(|p| p.0).sum::<f64>() / n, pts.iter().map(|p| p.1).sum::<f64>() / n);
-            let (sxy, sxx) = pts.iter().fold((0.0, 0.0), |(a, b), p| (a + (p.0 - mz) * (p.1 - mr), b + (p.0 - mz).powi(2)));
-            let slope = (sxy / sxx).abs(); // radial per axial
-            Some((1.0 / slope).atan().to_degrees())
-        };
-        if let (Some(a), Some(b)) = (fit(-1), fit(1)) {
-            m.flank_angles_deg = Some((a, b));
+            i += dir;
         }
-    }
-    // Full depth and run-out along z, from the deepest point around each z.
-    let mut full = 0usize;
-    let mut partial = 0usize;
-    for &env in &envelope {
-        let reached = ((env - if internal { minor_r } else { major_r }).abs() as f64) / depth;
-        if reached >= 0.95 {
-            full += 1;
-        } else if reached > 0.05 {
-            partial += 1;
+        if pts.len() < 3 {
+            return None;
         }
-    }
-    m.full_depth_length_mm = Some(full as f64 * g.dz_mm);
-    m.runout_length_mm = Some(partial as f64 * g.dz_mm);
-    m
+        let n = pts.len() as f64;
+        let (mz, mr) = (pts.iter().map(|p| p.0).sum::<f64>() / n, pts.iter().map(|p| p.1).sum::<f64>() / n);
+        let (sxy, sxx) = pts.iter().fold((0.0, 0.0), |(a, b), p| (a + (p.0 - mz) * (p.1 - mr), b + (p.0 - mz).powi(2)));
+        let slope = (sxy / sxx).abs(); // radial per axial
+        Some((1.0 / slope).atan().to_degrees())
+    };
+    Some((fit(-1)?, fit(1)?))
 }
 
 /// The grooves a lead's thread passes may fall in (its starts): at most this many are kept.
