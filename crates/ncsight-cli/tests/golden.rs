@@ -1,77 +1,7 @@
-//! Golden traces: tests/golden/<case>/ holds `input.nc`, `args` (the machine and parameters,
-//! one line) and `expected.jsonl`, the trace `ncsight run --format jsonl` must print. Each case
-//! says in its comments what the manual says and how the trace was checked by hand.
-//! NCSIGHT_BLESS=1 rewrites the expected files (review the diff before committing).
-//!
-//! tests/bad/*.nc: programmes whose first line is `(expect CODE line L col C on MACHINE)` (a
-//! same-name `.toml` is their setup, a `.args` more arguments);
-//! `run` must stop with that alarm at that place, and `check` must report it and exit 1.
+//! What holds across the golden traces (tests/golden/<case>/expected.jsonl; each case is a test
+//! of its own in tests/cases.rs, with the bad programmes): the JSONL follows the interface.
 
 mod common;
-
-#[test]
-fn golden_traces() {
-    let dir = common::root().join("tests/golden");
-    let mut cases: Vec<_> = std::fs::read_dir(&dir).unwrap().map(|e| e.unwrap().path()).collect();
-    cases.sort();
-    assert!(!cases.is_empty());
-    for case in cases {
-        let input = case.join("input.nc");
-        let args = std::fs::read_to_string(case.join("args")).unwrap_or_default();
-        let mut argv = vec!["run", input.to_str().unwrap(), "--format", "jsonl"];
-        argv.extend(args.split_whitespace());
-        // A case with a machine setup keeps it beside its programme.
-        let setup = case.join("setup.toml");
-        let setup = setup.to_str().unwrap();
-        if case.join("setup.toml").is_file() {
-            argv.extend(["--setup", setup]);
-        }
-        let (code, out, err) = common::ncsight(&argv);
-        let expected_code = if out.lines().last().is_some_and(|l| l.contains("\"kind\":\"alarm\"")) { 1 } else { 0 };
-        assert_eq!(code, expected_code, "{}: {err}", case.display());
-        common::expect_file(&case.join("expected.jsonl"), &out);
-    }
-}
-
-#[test]
-fn bad_programmes_raise_their_alarm() {
-    let dir = common::root().join("tests/bad");
-    let mut files: Vec<_> = std::fs::read_dir(&dir).unwrap().map(|e| e.unwrap().path()).filter(|p| p.extension().is_some_and(|x| x == "nc")).collect();
-    files.sort();
-    assert!(files.len() >= 10);
-    for f in files {
-        let text = std::fs::read(&f).unwrap();
-        let first = String::from_utf8_lossy(text.split(|&b| b == b'\n').next().unwrap()).into_owned();
-        let spec: Vec<&str> = first.trim().trim_start_matches('(').trim_end_matches(')').split_whitespace().collect();
-        assert!(
-            spec.len() == 8 && spec[0] == "expect" && spec[2] == "line" && spec[4] == "col" && spec[6] == "on",
-            "{}: first line must be (expect CODE line L col C on MACHINE)",
-            f.display()
-        );
-        let (code, line, col, machine) = (spec[1], spec[3], spec[5], spec[7]);
-        let path = f.to_str().unwrap();
-        let setup_file = f.with_extension("toml");
-        let mut setup_arg: Vec<&str> = if setup_file.is_file() { vec!["--setup", setup_file.to_str().unwrap()] } else { vec![] };
-        // More arguments (a setting the programme's machine has) in `<name>.args`.
-        let extra = std::fs::read_to_string(f.with_extension("args")).unwrap_or_default();
-        setup_arg.extend(extra.split_whitespace());
-        let with_setup = |args: &[&str]| -> Vec<String> { args.iter().chain(setup_arg.iter()).map(|s| s.to_string()).collect() };
-        let run_args = with_setup(&["run", path, "--machine", machine, "--format", "jsonl"]);
-        let (status, out, err) = common::ncsight(&run_args.iter().map(String::as_str).collect::<Vec<_>>());
-        assert_eq!(status, 1, "{}: run must stop on an alarm\n{out}{err}", f.display());
-        let last = out.lines().last().unwrap_or_default();
-        let v: serde_json::Value = serde_json::from_str(last).unwrap();
-        assert_eq!(v["kind"], "alarm", "{}", f.display());
-        assert_eq!(v["code"], code, "{}: {last}", f.display());
-        assert_eq!(v["line"].to_string(), line, "{}: {last}", f.display());
-        assert_eq!(v["col"].to_string(), col, "{}: {last}", f.display());
-        assert!(!v["message"].as_str().unwrap().is_empty());
-        let check_args = with_setup(&["check", path, "--machine", machine]);
-        let (status, out, _) = common::ncsight(&check_args.iter().map(String::as_str).collect::<Vec<_>>());
-        assert_eq!(status, 1, "{}", f.display());
-        assert!(out.contains(&format!(":{line}:{col}: alarm[{code}]")), "{}: check output\n{out}", f.display());
-    }
-}
 
 /// `--format jsonl` follows docs/reference/interface.md field for field on every golden trace.
 #[test]
