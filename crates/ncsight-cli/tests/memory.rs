@@ -95,3 +95,27 @@ fn simulate_streams_a_programme_of_600000_moves() {
     assert!(code == 0 || code == 3, "simulate exited {code}");
     assert!(kb > 0 && kb < PEAK_LIMIT_KB, "simulate peaked at {kb} KiB (limit {PEAK_LIMIT_KB} KiB)");
 }
+
+/// A drilling block of any number of pecks runs (issue 34): G83 with Q0.001 over 1,000 mm is a
+/// million pecks, three million records, which a FANUC runs and ncsight used to refuse
+/// (NCS-E40). Its holes are made as they are handed on, so the peak stays far below what holding
+/// them would take (some 700 MB): under 16 MiB.
+#[test]
+fn a_million_pecks_run_in_constant_memory() {
+    let dir = std::env::temp_dir().join(format!("ncsight-memory-pecks-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let programme = dir.join("pecks.nc");
+    std::fs::write(&programme, "G21 G17 G90 G00 X0 Y0 Z10.\nS1000 M03\nF500.\nG98 G83 X10. Y10. Z-1000. R2. Q0.001\nG80\nG00 Z10.\nM30\n").unwrap();
+    let out = dir.join("pecks.canon");
+    let (code, kb) = peak_kb(&["run", programme.to_str().unwrap(), "--machine", "fanuc0m", "--format", "canon", "-o", out.to_str().unwrap()]);
+    let text = std::fs::read_to_string(&out).unwrap();
+    std::fs::remove_dir_all(&dir).unwrap();
+    let lines = text.lines().count();
+    eprintln!("a million pecks: peak {kb} KiB, {lines} canonical calls");
+    assert_eq!(code, 0);
+    // Each peck: the feed down, the rapid back to R, the rapid down to the clearance above the
+    // last depth (the first peck has none); then the approach, the return, the programme's moves.
+    assert!(lines > 3_000_000, "{lines} lines");
+    assert!(text.contains("STRAIGHT_FEED(10.0000, 10.0000, -1000.0000"), "the bottom is reached");
+    assert!(kb > 0 && kb < 16 << 10, "peak {kb} KiB");
+}

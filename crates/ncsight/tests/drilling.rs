@@ -117,3 +117,48 @@ fn pecks_do_not_drift() {
         assert_eq!(*feeds.last().unwrap(), -2.0);
     }
 }
+
+/// `text` on the FANUC 0-M through the push interface (each event to a sink as it is made, as
+/// the command line takes them), where a drilling block too big to hold is deferred.
+fn run_pushed(text: &str) -> (Vec<Record>, Vec<Diagnostic>) {
+    use ncsight::{Mode, Program, Switches};
+    let params = ncsight::profile::Params::defaults(ncsight::profile::by_name("fanuc0m").unwrap());
+    let mut program = Program::with_operator(params, Switches::default(), Mode::Run, ncsight::Options::default());
+    let mut events = Vec::new();
+    for line in text.split_inclusive('\n') {
+        program.feed_line(line.as_bytes(), &mut |e| events.push(e));
+    }
+    assert!(program.end_of_text(&mut |e| events.push(e)).is_none());
+    common::split(events.into_iter())
+}
+
+/// A drilling block too big to hold (about 60,000 records: G83 over 202 mm in 0.02 mm pecks,
+/// then twice more with K2 under G91) is made as it is handed on when the consumer takes each
+/// record as it comes (issue 34), record for record what the ordinary path makes: the pull
+/// iterator, which holds a block's records whole, gives the same records, block ends and times.
+#[test]
+fn a_deferred_drilling_block_makes_the_records_the_ordinary_path_makes() {
+    let text = "G21 G17 G90 G00 X0. Y0. Z10.\nS1000 M03\nF500.\nG99 G83 X10. Y10. Z-200. R2. Q0.02\nG91 X5. K2\nG90 G80\nG00 Z10.\nM30\n";
+    let (deferred, d1) = run_pushed(text);
+    let (ordinary, d2) = common::run_plain("fanuc0m", &[], text);
+    assert!(d1.iter().chain(&d2).all(|d| !d.is_alarm()), "{d1:?} {d2:?}");
+    assert!(deferred.len() > 50_000, "{} records", deferred.len());
+    assert_eq!(deferred.len(), ordinary.len());
+    for (k, (a, b)) in deferred.iter().zip(&ordinary).enumerate() {
+        assert_eq!((a.span, a.op, a.block_end, a.t_s), (b.span, b.op, b.block_end, b.t_s), "record {k}");
+    }
+    // Three holes, each to Z-200.
+    assert_eq!(deferred.iter().filter(|r| matches!(r.op, ncsight::motion::Op::Feed { to, .. } if to.z == -200.0)).count(), 3);
+}
+
+/// Past the ordinary path's cap (30,000 pecks in one block), the pushed run goes on (its holes
+/// deferred) where the pull iterator, which would have to hold them, stops with NCS-E40.
+#[test]
+fn a_block_past_the_cap_runs_pushed_and_alarms_pulled() {
+    let text = "G21 G17 G90 G00 X0. Y0. Z10.\nS1000 M03\nF500.\nG98 G83 X10. Y10. Z-100. R2. Q0.002\nG80\nM30\n";
+    let (records, diags) = run_pushed(text);
+    assert!(diags.iter().all(|d| !d.is_alarm()), "{diags:?}");
+    assert!(records.len() > 150_000, "{}", records.len());
+    let (_, diags) = common::run_plain("fanuc0m", &[], text);
+    assert!(diags.iter().any(|d| d.is_alarm() && d.code == "NCS-E40"), "{diags:?}");
+}

@@ -117,6 +117,94 @@ fn emit_hole(step: &mut Step, hole: &Hole, global: impl Fn(drill::Local, &Vec3) 
     first
 }
 
+/// How many records a drilling block may make before its holes are made one at a time as they
+/// are handed on ([`DeferredHoles`]) rather than held: far above a real programme's holes (the
+/// goldens never reach it), so they keep the ordinary path.
+const DEFER_RECORDS: f64 = 50_000.0;
+
+/// The most records a deferred drilling block may make: a count at plan time, not a memory
+/// bound, far above a real programme (a hundred million: about half a minute of the run; a
+/// million pecks are three million), so a block that would run for days is said at once.
+const MAX_DEFERRED_RECORDS: f64 = 100_000_000.0;
+
+/// A drilling block's holes, laid out but not expanded: the driver makes their records one at a
+/// time as it hands them on, so a block of any number of pecks (G83 with Q0.001 over a metre:
+/// a million) holds a constant memory. Only where nothing between the cycle and the record
+/// reshapes its moves (no cutter compensation, corner, coordinate transform or polar
+/// interpolation, no soft limit or G22 area, not tapping).
+#[derive(Debug, Clone)]
+pub struct DeferredHoles {
+    holes: Vec<Hole>,
+    span: crate::source::Span,
+    n: Option<u32>,
+    to_machine: Vec3,
+    plane: crate::motion::Plane,
+    position_mode: bool,
+    spindle_p: u32,
+}
+
+impl DeferredHoles {
+    /// Every record of the holes, in order, each hole's last one ending the block for single
+    /// block (as [`emit_hole`] marks it).
+    pub fn each_record(&self, sink: &mut dyn FnMut(crate::motion::Record)) {
+        for hole in &self.holes {
+            let mut here = self.plane.from_local(hole.from);
+            let mut held: Option<crate::motion::Record> = None;
+            drill::expand_each(hole, &mut |s| {
+                let op = match s {
+                    drill::Step::Rapid(l) => Op::Rapid { from: here, to: self.plane.from_local(l) },
+                    drill::Step::Feed(l, f) => Op::Feed { from: here, to: self.plane.from_local(l), feed_mm_min: f },
+                    drill::Step::Dwell(s) => Op::Dwell { seconds: s },
+                    drill::Step::Spindle(rpm) => Op::Spindle { rpm, surface_m_min: None, position_mode: self.position_mode, oriented: false, p: self.spindle_p },
+                    drill::Step::Orient => Op::Spindle { rpm: 0.0, surface_m_min: None, position_mode: self.position_mode, oriented: true, p: self.spindle_p },
+                    drill::Step::ManualRetract => Op::Stop { reason: StopReason::ManualRetract },
+                };
+                if let Op::Rapid { from, to } | Op::Feed { from, to, .. } = op {
+                    if from == to {
+                        return;
+                    }
+                    here = to;
+                }
+                let mut r = crate::motion::Record::of_block(self.span, self.n, op);
+                r.to_machine = self.to_machine;
+                if let Some(done) = held.replace(r) {
+                    sink(done);
+                }
+            });
+            if let Some(mut last) = held {
+                last.block_end = true;
+                sink(last);
+            }
+        }
+    }
+}
+
+/// Where a hole leaves the tool (its last move's end), if it moves.
+fn hole_end(hole: &Hole, plane: crate::motion::Plane) -> Option<Vec3> {
+    let mut last = None;
+    drill::expand_each(hole, &mut |s| {
+        if let drill::Step::Rapid(l) | drill::Step::Feed(l, _) = s {
+            last = Some(l);
+        }
+    });
+    last.map(|l| plane.from_local(l))
+}
+
+/// Whether a drilling block's records may be made as they are handed on ([`DeferredHoles`]):
+/// nothing between the cycle and the record reshapes them, and it is no tapping cycle.
+fn may_defer(step: &Step, kind: DrillKind) -> bool {
+    step.out.may_defer
+        && step.carry.is_none()
+        && !super::corner::active(step)
+        && step.st.comp.side == 0
+        && step.st.comp.actual.is_none()
+        && step.st.polar_interp.is_none()
+        && !step.tables.limited
+        && step.st.stroke2.is_none()
+        && !step.st.tapping_mode
+        && !matches!(kind, DrillKind::G74 | DrillKind::G84)
+}
+
 /// GSK980TDi G83 (end face: hole at X, drilled along Z) and G87 (side: hole at Z, drilled along
 /// X) (help text G83/87). The tool rapids to the hole position and drills from where it stands
 /// on the drilling axis; the bottom, Q, R, P and J stay until G80 or a group 01 code, so a later
@@ -548,9 +636,16 @@ pub(super) fn block(step: &mut Step, words: &mut Words, kind: DrillKind, enterin
             }
         }
     }
-    // A cap on the motion one block may make (issue 10): pecks x repeats.
-    if kind.needs_q() {
-        let pecks = ((bottom - r).abs() / d.q.unwrap_or(1.0)).ceil() * repeats as f64;
+    // The records the block makes, about: three a peck, five a hole. Past DEFER_RECORDS they are
+    // made as they are handed on where nothing reshapes them, and any number is taken (a check
+    // keeps none anyway); elsewhere a cap on the motion one block may make (issue 10).
+    let pecks = if kind.needs_q() { ((bottom - r).abs() / d.q.unwrap_or(1.0)).ceil() * repeats as f64 } else { 0.0 };
+    let records = 3.0 * pecks + 5.0 * repeats as f64;
+    let defer = may_defer(step, kind) && records > DEFER_RECORDS;
+    if defer && records > MAX_DEFERRED_RECORDS {
+        return Err(step.alarm(Rule::MotionLimit, step.span, format!("{code}: about {records:.0} moves in one block (Q too small for the depth, times K); at most {MAX_DEFERRED_RECORDS:.0}")));
+    }
+    if kind.needs_q() && !defer {
         if pecks > MAX_PECKS {
             return Err(step.alarm(
                 Rule::MotionLimit,
@@ -579,6 +674,7 @@ pub(super) fn block(step: &mut Step, words: &mut Words, kind: DrillKind, enterin
         None if kind.shifts() => [1.0, 0.0],
         _ => [0.0; 2],
     };
+    let mut deferred = Vec::new();
     for k in 0..repeats {
         if k > 0 && step.st.incremental {
             // Under G91 each repeat moves by the increment again: equally spaced holes.
@@ -608,12 +704,25 @@ pub(super) fn block(step: &mut Step, words: &mut Words, kind: DrillKind, enterin
             feed,
             rpm,
         };
+        if defer {
+            // Laid out now, made as they are handed on: the tool is where the hole leaves it.
+            if let Some(end) = hole_end(&hole, plane) {
+                step.st.pos = end;
+                step.st.frame.unmoved = Vec3::default();
+            }
+            deferred.push(hole);
+            continue;
+        }
         let first = emit_hole(step, &hole, |l, _| plane.from_local(l));
         // Tapping: feed hold and feed override are ignored until the cycle ends (seed 003 8.1.2);
         // positioning to the hole still stops. Single block stops after each hole (docs/reference/behaviour.md).
         if matches!(kind, DrillKind::G74 | DrillKind::G84) {
             hold_through_tapping(step, first, n);
         }
+    }
+    if !deferred.is_empty() && !step.out.discard_records {
+        let holes = DeferredHoles { holes: deferred, span: step.span, n: step.n, to_machine: step.tables.to_machine(&step.st.frame), plane, position_mode: step.st.spindle_position_mode, spindle_p: step.spindle_p() };
+        step.out.deferred = Some((step.out.records.len(), holes));
     }
     Ok(())
 }

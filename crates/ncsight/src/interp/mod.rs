@@ -83,9 +83,20 @@ pub struct Outcome {
     comp_plane_move: bool,
     /// The blocks whose records the compensation stage made during this block.
     comp_spans: Vec<Span>,
+    /// A drilling block's holes too many to hold as records: made one at a time as they are
+    /// handed on, after the first `.0` records of `records` (see [`drill::DeferredHoles`]).
+    pub deferred: Option<(usize, drill::DeferredHoles)>,
+    /// Whether the consumer takes records as they are made (a sink), so a block may defer its
+    /// holes; a pull iterator that queues a line's events does not (its queue would hold them).
+    pub may_defer: bool,
 }
 
 impl Outcome {
+    /// An outcome for a consumer that takes each record as it comes (see [`Outcome::may_defer`]).
+    pub fn streaming() -> Outcome {
+        Outcome { may_defer: true, ..Outcome::default() }
+    }
+
     fn clear(&mut self) {
         self.records.clear();
         self.warnings.clear();
@@ -101,6 +112,7 @@ impl Outcome {
         self.comp_error = None;
         self.comp_plane_move = false;
         self.comp_spans.clear();
+        self.deferred = None;
     }
 }
 

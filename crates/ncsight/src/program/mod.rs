@@ -465,7 +465,7 @@ impl Program {
                 last_span: Span::new(1, 1, 1),
                 increment_warnings: 0,
                 read: ReadLine::default(),
-                outcome: Outcome::default(),
+                outcome: Outcome::streaming(),
                 file: 0,
                 line_offset: 0,
                 next_offset: 0,
@@ -670,6 +670,14 @@ impl Program {
     /// that many lines from the top are not read. Given before the first line is fed.
     pub fn set_tape_leader(&mut self, lines: u32) {
         self.core.leader_lines = lines;
+    }
+
+    /// Whether a drilling block too big to hold may make its records as they are handed on
+    /// (true for a consumer that takes each event as it comes, as `feed_line`'s sink does; the
+    /// pull iterator [`events`] turns it off, since it queues a line's events, and such a block
+    /// then keeps the cap of NCS-E40).
+    pub fn set_deferred_blocks(&mut self, allowed: bool) {
+        self.core.outcome.may_defer = allowed;
     }
 
     /// A scan of the first lines of the main file for a tape leader.
@@ -1927,8 +1935,19 @@ impl Core {
                 sink(Event::Diagnostic(w));
             }
         }
-        if self.records() && !self.outcome.records.is_empty() {
+        let deferred = self.outcome.deferred.take();
+        if self.records() && (!self.outcome.records.is_empty() || deferred.is_some()) {
+            // A drilling block's deferred holes come where the block laid them out, made one
+            // record at a time as they go (a block of any number of pecks holds no more).
+            let at = deferred.as_ref().map_or(self.outcome.records.len(), |(at, _)| (*at).min(self.outcome.records.len()));
+            let mut rest = self.outcome.records.split_off(at);
             for r in self.outcome.records.drain(..) {
+                sink(Event::Record(r));
+            }
+            if let Some((_, holes)) = deferred {
+                holes.each_record(&mut |r| sink(Event::Record(r)));
+            }
+            for r in rest.drain(..) {
                 sink(Event::Record(r));
             }
         }
@@ -2040,6 +2059,7 @@ pub fn events_with_library<'a>(program: Program, text: &'a [u8], library: Vec<(S
         }
     }
     program.set_tape_leader(scan.lines());
+    program.set_deferred_blocks(false);
     Events { program, texts: vec![text], library, at: (0, 0), queue: std::collections::VecDeque::new(), finished: false }
 }
 
