@@ -468,6 +468,16 @@ impl Tool {
         rho * (1.0 - angle.cos()) + (u - u_t) * angle.tan()
     }
 
+    /// Whether the spindle at `rpm` (signed: negative is M04) turns the wrong way for the tool's
+    /// `hand` (a right-hand tool cuts with M03); never when the setup gives no hand.
+    pub fn turns_wrong_way(&self, rpm: f64) -> bool {
+        match self.hand {
+            Some(Hand::Right) => rpm < 0.0,
+            Some(Hand::Left) => rpm > 0.0,
+            None => false,
+        }
+    }
+
     /// Where along Z from the programmed point a point of the tool's cutting end lies, mm: the
     /// middle of a grooving or parting tool's width (its reference corner may be rounded
     /// away), else the point itself. The rapids' crash check follows this point.

@@ -20,7 +20,8 @@
 use super::jsonl::json_str;
 use super::num;
 use crate::job::{Job, JobError};
-use ncsight::stock::measure::{simulate, simulate_mill, SimOptions};
+use ncsight::stock::measure::{simulate, MillCut, SimOptions};
+use ncsight::stock::survey::MillSurvey;
 use ncsight::stock::Finding;
 use ncsight::{Event, Mode, Record};
 use std::fmt::Write as _;
@@ -122,17 +123,19 @@ fn lathe_view(records: &[Record], setup: &ncsight::setup::Setup, until_s: Option
 /// The mill's header fields and its tops, [`VIEW_ACROSS`] cells across the longer side (at
 /// least 0.1 mm).
 fn mill_view(records: &[Record], setup: &ncsight::setup::Setup, until_s: Option<f64>, resolution_mm: Option<f64>) -> Result<(String, Vec<Vec<f32>>), JobError> {
-    // The block's longer side: the setup's, or the cutting moves' extent and 10 mm around.
+    // One survey serves the view's cell size and the cut.
+    let mut survey = MillSurvey::default();
+    records.iter().for_each(|r| survey.add(r));
+    // The block's longer side, for the cell size: the setup's, or the cutting moves' extent
+    // and 10 mm either side.
     let across = match setup.block {
         Some(b) => (b.max_mm[0] - b.min_mm[0]).max(b.max_mm[1] - b.min_mm[1]),
-        None => {
-            let ends = || records.iter().filter(|r| matches!(r.op, ncsight::motion::Op::Feed { .. } | ncsight::motion::Op::Arc { .. })).filter_map(|r| r.op.end_point());
-            let span = |k: usize| ends().map(|p| p.axis(k)).fold(f64::MIN, f64::max) - ends().map(|p| p.axis(k)).fold(f64::MAX, f64::min);
-            span(0).max(span(1)).max(0.0) + 20.0
-        }
+        None => (0..2).map(|k| survey.cut_max[k] - survey.cut_min[k]).fold(0.0, f64::max) + 20.0,
     };
     let cell = resolution_mm.unwrap_or((across / VIEW_ACROSS).max(0.1));
-    let sim = simulate_mill(records, setup, Some(cell), until_s).map_err(JobError::Usage)?;
+    let mut cut = MillCut::new(&survey, setup, Some(cell), until_s).map_err(JobError::Usage)?;
+    records.iter().for_each(|r| cut.add(r));
+    let sim = cut.finish();
     let s = &sim.stock;
     let head = format!(
         "\"kind\":\"mill\",\"nx\":{},\"ny\":{},\"x0_mm\":{},\"y0_mm\":{},\"cell_mm\":{},\"top_mm\":{},\"bottom_mm\":{},\"removed_mm3\":{},\"findings\":[{}]",
@@ -146,5 +149,5 @@ fn mill_view(records: &[Record], setup: &ncsight::setup::Setup, until_s: Option<
         num(s.removed_mm3(), 1),
         findings_json(&sim.findings)
     );
-    Ok((head, vec![s.top.clone()]))
+    Ok((head, vec![sim.stock.top]))
 }

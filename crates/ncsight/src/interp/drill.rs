@@ -77,39 +77,50 @@ fn take_dwell(step: &mut Step, words: &mut Words) -> Result<(), Diagnostic> {
     Ok(())
 }
 
+/// The record of one step of a hole, the tool at `here`, a point mapped by `global`; None for a
+/// move that goes nowhere.
+fn step_op(s: drill::Step, here: Vec3, global: impl Fn(drill::Local, &Vec3) -> Vec3, position_mode: bool, spindle_p: u32) -> Option<Op> {
+    let op = match s {
+        drill::Step::Rapid(l) => Op::Rapid { from: here, to: global(l, &here) },
+        drill::Step::Feed(l, f) => Op::Feed { from: here, to: global(l, &here), feed_mm_min: f },
+        drill::Step::Dwell(s) => Op::Dwell { seconds: s },
+        drill::Step::Spindle(rpm) => Op::Spindle { rpm, surface_m_min: None, position_mode, oriented: false, p: spindle_p },
+        drill::Step::Orient => Op::Spindle { rpm: 0.0, surface_m_min: None, position_mode, oriented: true, p: spindle_p },
+        drill::Step::ManualRetract => Op::Stop { reason: StopReason::ManualRetract },
+    };
+    match op {
+        Op::Rapid { from, to } | Op::Feed { from, to, .. } if from == to => None,
+        op => Some(op),
+    }
+}
+
+/// Where a hole leaves the tool (its last move's end, mapped by `global` from `from`), if it
+/// moves.
+fn hole_end(hole: &Hole, from: Vec3, global: impl Fn(drill::Local, &Vec3) -> Vec3) -> Option<Vec3> {
+    let mut last = None;
+    drill::expand_each(hole, &mut |s| {
+        if let drill::Step::Rapid(l) | drill::Step::Feed(l, _) = s {
+            last = Some(l);
+        }
+    });
+    last.map(|l| global(l, &from))
+}
+
 /// Emit the steps of one hole, mapped by `global`; single block stops after the hole.
 fn emit_hole(step: &mut Step, hole: &Hole, global: impl Fn(drill::Local, &Vec3) -> Vec3) -> usize {
-    let position_mode = step.st.spindle_position_mode;
+    let (position_mode, spindle_p) = (step.st.spindle_position_mode, step.spindle_p());
     let first = step.out.records.len();
     if step.out.discard_records {
         // Nothing is kept: only where the hole leaves the tool matters.
-        let mut last = None;
-        drill::expand_each(hole, &mut |s| {
-            if let drill::Step::Rapid(l) | drill::Step::Feed(l, _) = s {
-                last = Some(l);
-            }
-        });
-        if let Some(l) = last {
-            step.st.pos = global(l, &step.st.pos);
+        if let Some(end) = hole_end(hole, step.st.pos, &global) {
+            step.st.pos = end;
         }
         return first;
     }
     drill::expand_each(hole, &mut |s| {
-        let here = step.st.pos;
-        let op = match s {
-            drill::Step::Rapid(l) => Op::Rapid { from: here, to: global(l, &here) },
-            drill::Step::Feed(l, f) => Op::Feed { from: here, to: global(l, &here), feed_mm_min: f },
-            drill::Step::Dwell(s) => Op::Dwell { seconds: s },
-            drill::Step::Spindle(rpm) => Op::Spindle { rpm, surface_m_min: None, position_mode, oriented: false, p: step.spindle_p() },
-            drill::Step::Orient => Op::Spindle { rpm: 0.0, surface_m_min: None, position_mode, oriented: true, p: step.spindle_p() },
-            drill::Step::ManualRetract => Op::Stop { reason: StopReason::ManualRetract },
-        };
-        if let Op::Rapid { from, to } | Op::Feed { from, to, .. } = op {
-            if from == to {
-                return;
-            }
+        if let Some(op) = step_op(s, step.st.pos, &global, position_mode, spindle_p) {
+            step.emit(op);
         }
-        step.emit(op);
     });
     if let Some(last) = step.records_since(first).last_mut() {
         last.block_end = true;
@@ -151,18 +162,8 @@ impl DeferredHoles {
             let mut here = self.plane.from_local(hole.from);
             let mut held: Option<crate::motion::Record> = None;
             drill::expand_each(hole, &mut |s| {
-                let op = match s {
-                    drill::Step::Rapid(l) => Op::Rapid { from: here, to: self.plane.from_local(l) },
-                    drill::Step::Feed(l, f) => Op::Feed { from: here, to: self.plane.from_local(l), feed_mm_min: f },
-                    drill::Step::Dwell(s) => Op::Dwell { seconds: s },
-                    drill::Step::Spindle(rpm) => Op::Spindle { rpm, surface_m_min: None, position_mode: self.position_mode, oriented: false, p: self.spindle_p },
-                    drill::Step::Orient => Op::Spindle { rpm: 0.0, surface_m_min: None, position_mode: self.position_mode, oriented: true, p: self.spindle_p },
-                    drill::Step::ManualRetract => Op::Stop { reason: StopReason::ManualRetract },
-                };
-                if let Op::Rapid { from, to } | Op::Feed { from, to, .. } = op {
-                    if from == to {
-                        return;
-                    }
+                let Some(op) = step_op(s, here, |l, _| self.plane.from_local(l), self.position_mode, self.spindle_p) else { return };
+                if let Some(to) = op.end_point() {
                     here = to;
                 }
                 let mut r = crate::motion::Record::of_block(self.span, self.n, op);
@@ -177,17 +178,6 @@ impl DeferredHoles {
             }
         }
     }
-}
-
-/// Where a hole leaves the tool (its last move's end), if it moves.
-fn hole_end(hole: &Hole, plane: crate::motion::Plane) -> Option<Vec3> {
-    let mut last = None;
-    drill::expand_each(hole, &mut |s| {
-        if let drill::Step::Rapid(l) | drill::Step::Feed(l, _) = s {
-            last = Some(l);
-        }
-    });
-    last.map(|l| plane.from_local(l))
 }
 
 /// Whether a drilling block's records may be made as they are handed on ([`DeferredHoles`]):
@@ -645,14 +635,12 @@ pub(super) fn block(step: &mut Step, words: &mut Words, kind: DrillKind, enterin
     if defer && records > MAX_DEFERRED_RECORDS {
         return Err(step.alarm(Rule::MotionLimit, step.span, format!("{code}: about {records:.0} moves in one block (Q too small for the depth, times K); at most {MAX_DEFERRED_RECORDS:.0}")));
     }
-    if kind.needs_q() && !defer {
-        if pecks > MAX_PECKS {
-            return Err(step.alarm(
-                Rule::MotionLimit,
-                step.span,
-                format!("{code}: {pecks:.0} pecks in one block (Q too small for the depth, times K); at most {MAX_PECKS}"),
-            ));
-        }
+    if kind.needs_q() && !defer && pecks > MAX_PECKS {
+        return Err(step.alarm(
+            Rule::MotionLimit,
+            step.span,
+            format!("{code}: {pecks:.0} pecks in one block (Q too small for the depth, times K); at most {MAX_PECKS}"),
+        ));
     }
     let rules = step.profile.drill;
     let um = |key: Option<ParamKey>| key.map_or(0.0, |k| step.params.get(k) * 0.001);
@@ -706,7 +694,7 @@ pub(super) fn block(step: &mut Step, words: &mut Words, kind: DrillKind, enterin
         };
         if defer {
             // Laid out now, made as they are handed on: the tool is where the hole leaves it.
-            if let Some(end) = hole_end(&hole, plane) {
+            if let Some(end) = hole_end(&hole, step.st.pos, |l, _| plane.from_local(l)) {
                 step.st.pos = end;
                 step.st.frame.unmoved = Vec3::default();
             }

@@ -638,11 +638,7 @@ impl LatheStock {
             Op::Feed { .. } | Op::Arc { .. } => rpm,
             _ => return false,
         };
-        let wrong_way = match tool.hand {
-            Some(crate::setup::Hand::Right) => rpm < 0.0,
-            Some(crate::setup::Hand::Left) => rpm > 0.0,
-            None => false,
-        };
+        let wrong_way = tool.turns_wrong_way(rpm);
         let state = (tool.number, rpm.signum() as i32);
         if !(rpm == 0.0 || wrong_way) {
             return false;

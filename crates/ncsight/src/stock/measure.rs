@@ -91,8 +91,20 @@ pub fn simulate_mill(records: &[Record], setup: &Setup, cell_mm: Option<f64>, un
 /// guess must not make crashes), its top at Z0, 5 mm below the deepest cut.
 pub struct MillCut {
     stock: super::mill::MillStock,
+    turret: Turret,
+}
+
+/// What a cut follows record by record, on a lathe or a machining centre: the tool in the
+/// turret or spindle (the setup's, or the one the survey assumed), the spindle's speed, the
+/// records not cut (up to and including the first rapid: where the tool is before it is the
+/// machine's business, not the programme's), the time cutting stops at, and the last
+/// programme stop.
+struct Turret {
     setup: Setup,
     assumed: Vec<(u32, Tool)>,
+    /// A machining centre's: a tool the setup lacks and the survey did not assume is the
+    /// default drill, not the default threading insert.
+    mill: bool,
     tool: Tool,
     rpm: f64,
     /// Records up to and including this one are not cut (the first rapid), and how many came.
@@ -100,6 +112,49 @@ pub struct MillCut {
     seen: usize,
     until_s: Option<f64>,
     stops: StopNote,
+}
+
+impl Turret {
+    fn new(setup: &Setup, assumed: Vec<(u32, Tool)>, mill: bool, first_rapid: Option<usize>, until_s: Option<f64>) -> Turret {
+        let mut t = Turret { setup: setup.clone(), assumed, mill, tool: Tool::default_thread(), rpm: 0.0, skip: first_rapid.unwrap_or(0), seen: 0, until_s, stops: StopNote::default() };
+        t.tool = t.tool_for(0, None);
+        t
+    }
+
+    /// The tool of a T number: the setup's, or the one assumed. A turning or boring tool whose
+    /// [[tool]] gives no imaginary nose takes the one of its offset (T0101 -> [[offset]] 1),
+    /// and that offset's radius if it gives none (a machining centre's tool change names no
+    /// offset).
+    fn tool_for(&self, number: u32, offset: Option<u32>) -> Tool {
+        let given = || if self.mill { self.setup.mill_tool(number) } else { self.setup.tool(number) };
+        let mut t = self.assumed.iter().find(|(n, _)| *n == number).map(|(_, t)| *t).unwrap_or_else(given);
+        if t.tip.is_none() && matches!(t.kind, super::ToolKind::Turning | super::ToolKind::Boring) {
+            if let Some(o) = offset.and_then(|n| self.setup.offset(n)).filter(|o| o.tip != 0 || o.radius_mm > 0.0) {
+                t.tip = Some(o.tip);
+                if t.tip_radius_mm <= 0.0 {
+                    t.tip_radius_mm = o.radius_mm + o.wear_radius_mm;
+                }
+            }
+        }
+        t
+    }
+
+    /// Take one record in: the tool, the spindle and the last stop follow it. None when it ends
+    /// after the time cutting stops at; else whether it is cut.
+    fn take(&mut self, r: &Record) -> Option<bool> {
+        let k = self.seen;
+        self.seen += 1;
+        if self.until_s.is_some_and(|t| r.t_s > t) {
+            return None;
+        }
+        match r.op {
+            Op::Tool { number, offset } => self.tool = self.tool_for(number, offset),
+            Op::Spindle { rpm, .. } => self.rpm = rpm,
+            _ => {}
+        }
+        self.stops.see(r);
+        Some(k > self.skip)
+    }
 }
 
 /// The last programme stop (M00, M01) before a finding: a part turned over or re-clamped there
@@ -116,7 +171,7 @@ impl StopNote {
         }
     }
 
-    /// The findings from `from` on, made after a stop: a crash or a holder finding says it.
+    /// Findings made after a stop: a crash, holder or chuck finding says so.
     fn mark(&self, findings: &mut [Finding]) {
         let Some(line) = self.line else { return };
         for f in findings.iter_mut().filter(|f| matches!(f.kind, "crash" | "holder" | "chuck")) {
@@ -128,13 +183,12 @@ impl StopNote {
 impl MillCut {
     pub fn new(survey: &MillSurvey, setup: &Setup, cell_mm: Option<f64>, until_s: Option<f64>) -> Result<MillCut, String> {
         let top = setup.block.map_or(0.0, |b| b.max_mm[2]);
-        let assumed = survey.assumed_tools(setup, top);
-        let tool_for = |n: u32| assumed.iter().find(|(m, _)| *m == n).map(|(_, t)| *t).unwrap_or_else(|| setup.mill_tool(n));
+        let turret = Turret::new(setup, survey.assumed_tools(setup, top), true, survey.first_rapid, until_s);
         let block = match setup.block {
             Some(b) => b,
             None if survey.cuts() => {
                 let (lo, hi) = (survey.cut_min, survey.cut_max);
-                let m = survey.cutting_tools().map(|n| tool_for(n).diameter_mm / 2.0).fold(0.0, f64::max);
+                let m = survey.cutting_tools().map(|n| turret.tool_for(n, None).diameter_mm / 2.0).fold(0.0, f64::max);
                 super::mill::Block { min_mm: [lo[0] - m, lo[1] - m, lo[2].min(0.0) - 5.0], max_mm: [hi[0] + m, hi[1] + m, 0.0] }
             }
             None => return Err("no block: give one in the setup ([block] min_mm, max_mm) or --stock XxYxZ; the programme cuts nothing to infer it from".into()),
@@ -144,39 +198,24 @@ impl MillCut {
         if !(cell > 0.0) || cells > 100e6 {
             return Err(format!("a grid of {cells:.0} cells: coarsen --resolution"));
         }
-        let mut cut = MillCut { stock: super::mill::MillStock::new(block, cell), setup: setup.clone(), assumed, tool: Tool::default_thread(), rpm: 0.0, skip: survey.first_rapid.unwrap_or(0), seen: 0, until_s, stops: StopNote::default() };
-        cut.tool = cut.tool_for(0);
-        Ok(cut)
+        Ok(MillCut { stock: super::mill::MillStock::new(block, cell), turret })
     }
 
-    fn tool_for(&self, n: u32) -> Tool {
-        self.assumed.iter().find(|(m, _)| *m == n).map(|(_, t)| *t).unwrap_or_else(|| self.setup.mill_tool(n))
-    }
-
-    /// Cut one record.
+    /// Cut one record (a tool change or a spindle record cuts nothing).
     pub fn add(&mut self, r: &Record) {
-        let k = self.seen;
-        self.seen += 1;
-        if self.until_s.is_some_and(|t| r.t_s > t) {
+        if self.turret.take(r) != Some(true) {
             return;
         }
-        self.stops.see(r);
-        match r.op {
-            Op::Tool { number, .. } => self.tool = self.tool_for(number),
-            Op::Spindle { rpm, .. } => self.rpm = rpm,
-            _ if k > self.skip => {
-                let before = self.stock.findings.len();
-                self.stock.apply(r, &self.tool, self.rpm);
-                self.stops.mark(&mut self.stock.findings[before..]);
-            }
-            _ => {}
-        }
+        let t = &self.turret;
+        let before = self.stock.findings.len();
+        self.stock.apply(r, &t.tool, t.rpm);
+        t.stops.mark(&mut self.stock.findings[before..]);
     }
 
     pub fn finish(mut self) -> MillSimulation {
         let holes = self.stock.holes();
         let mut findings = std::mem::take(&mut self.stock.findings);
-        let block_guessed = self.setup.block.is_none().then_some(self.stock.block);
+        let block_guessed = self.turret.setup.block.is_none().then_some(self.stock.block);
         if block_guessed.is_some() {
             // The guess holds every cut's reach; between the cuts it may hold material the real
             // stock has not (round a contour's corners, say): said with each finding.
@@ -184,7 +223,7 @@ impl MillCut {
                 f.message.push_str(" (against a guessed block: give --stock XxYxZ or [block] for the real one)");
             }
         }
-        MillSimulation { stock: self.stock, holes, findings, assumed_tools: self.assumed, block_guessed }
+        MillSimulation { stock: self.stock, holes, findings, assumed_tools: self.turret.assumed, block_guessed }
     }
 }
 
@@ -215,19 +254,12 @@ pub fn simulate_with(records: &[Record], setup: &Setup, opts: &SimOptions, progr
 /// their phase and the threaded range for the measurement.
 pub struct LatheCut {
     stock: LatheStock,
-    setup: Setup,
-    assumed: Vec<(u32, Tool)>,
-    tool: Tool,
-    rpm: f64,
-    skip: usize,
-    seen: usize,
-    until_s: Option<f64>,
+    turret: Turret,
     guessed: Option<Bar>,
     phase: Phase,
     /// The threaded range along Z, and the last thread record (a deviation is placed there).
     thread_z: Option<(f64, f64)>,
     last_thread: Option<Record>,
-    stops: StopNote,
 }
 
 impl LatheCut {
@@ -265,72 +297,30 @@ impl LatheCut {
         // moves cuts the nearer side. One assumed to bore (it leaves its cuts toward the axis)
         // works inside, as a boring bar in a tube the guessed stock does not know the bore of.
         stock.either_side = assumed.iter().filter(|(_, t)| t.kind == super::ToolKind::Turning).map(|(n, _)| *n).collect();
-        let mut cut = LatheCut {
-            stock,
-            setup: setup.clone(),
-            assumed,
-            tool: Tool::default_thread(),
-            rpm: 0.0,
-            // Where the tool is before the first rapid is the machine's business, not the
-            // programme's (the power-on position): motion up to the end of the first rapid is
-            // not cut.
-            skip: survey.first_rapid.unwrap_or(0),
-            seen: 0,
-            until_s: opts.until_s,
-            guessed,
-            phase: Phase::default(),
-            thread_z: None,
-            last_thread: None,
-            stops: StopNote::default(),
-        };
-        cut.tool = cut.tool_for(0, None);
-        Ok(cut)
+        let turret = Turret::new(setup, assumed, false, survey.first_rapid, opts.until_s);
+        Ok(LatheCut { stock, turret, guessed, phase: Phase::default(), thread_z: None, last_thread: None })
     }
 
-    /// The tool of a T number: the setup's, or the one assumed. A turning or boring tool whose
-    /// [[tool]] gives no imaginary nose takes the one of its offset (T0101 -> [[offset]] 1),
-    /// and that offset's radius if it gives none.
-    fn tool_for(&self, number: u32, offset: Option<u32>) -> Tool {
-        let mut t = self.assumed.iter().find(|(n, _)| *n == number).map(|(_, t)| *t).unwrap_or_else(|| self.setup.tool(number));
-        if t.tip.is_none() && matches!(t.kind, super::ToolKind::Turning | super::ToolKind::Boring) {
-            if let Some(o) = offset.and_then(|n| self.setup.offset(n)).filter(|o| o.tip != 0 || o.radius_mm > 0.0) {
-                t.tip = Some(o.tip);
-                if t.tip_radius_mm <= 0.0 {
-                    t.tip_radius_mm = o.radius_mm + o.wear_radius_mm;
-                }
-            }
-        }
-        t
-    }
-
-    /// Cut one record.
+    /// Cut one record; a thread's passes are followed for their phase and range whether or not
+    /// they are cut.
     pub fn add(&mut self, r: &Record) {
-        let k = self.seen;
-        self.seen += 1;
-        if self.until_s.is_some_and(|t| r.t_s > t) {
-            return;
-        }
-        match r.op {
-            Op::Tool { number, offset } => self.tool = self.tool_for(number, offset),
-            Op::Spindle { rpm, .. } => self.rpm = rpm,
-            _ => {}
-        }
-        self.phase.add(r, &self.tool);
+        let Some(cut) = self.turret.take(r) else { return };
+        let t = &self.turret;
+        self.phase.add(r, &t.tool);
         if let Op::Thread { from, to, .. } | Op::ThreadArc { from, to, .. } = r.op {
             let (lo, hi) = self.thread_z.unwrap_or((f64::MAX, f64::MIN));
             self.thread_z = Some((lo.min(from.z).min(to.z), hi.max(from.z).max(to.z)));
             self.last_thread = Some(r.clone());
         }
-        self.stops.see(r);
-        if k <= self.skip {
+        if !cut {
             return;
         }
         let before = self.stock.findings.len();
-        match nose_shift(&self.tool) {
-            Some(d) => self.stock.apply(&shifted(r, d), &self.tool, self.rpm),
-            None => self.stock.apply(r, &self.tool, self.rpm),
+        match nose_shift(&t.tool) {
+            Some(d) => self.stock.apply(&shifted(r, d), &t.tool, t.rpm),
+            None => self.stock.apply(r, &t.tool, t.rpm),
         }
-        self.stops.mark(&mut self.stock.findings[before..]);
+        t.stops.mark(&mut self.stock.findings[before..]);
     }
 
     /// The stock after the records, and its measurement.
@@ -338,7 +328,7 @@ impl LatheCut {
         let dz = self.stock.grid.dz_mm;
         let mut m = measure(&self.stock, self.thread_z);
         m.findings = std::mem::take(&mut self.phase.findings);
-        m.assumed_tools = self.assumed;
+        m.assumed_tools = self.turret.assumed;
         if let Some(e) = &opts.expect {
             deviation(&mut m, e, dz, self.last_thread.as_ref());
         }

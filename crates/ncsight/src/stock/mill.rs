@@ -377,12 +377,7 @@ impl MillStock {
         match rec.op {
             Op::Feed { .. } | Op::Arc { .. } => {
                 let (deepest, _) = self.sweep(&rec.op, tool, true);
-                let wrong_way = match tool.hand {
-                    Some(crate::setup::Hand::Right) => rpm < 0.0,
-                    Some(crate::setup::Hand::Left) => rpm > 0.0,
-                    None => false,
-                };
-                if deepest > CUT_MM && (rpm == 0.0 || wrong_way) {
+                if deepest > CUT_MM && (rpm == 0.0 || tool.turns_wrong_way(rpm)) {
                     let at = rec.op.start_point().unwrap_or_default();
                     let message = if rpm == 0.0 {
                         format!("a cut {deepest:.3} mm deep with the spindle stopped")
