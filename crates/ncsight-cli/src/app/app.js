@@ -1383,7 +1383,7 @@
   // (the section in orange), the mill block grey where untouched, blue where cut. The tool and its holder are drawn
   // where the player is, the simulation's findings as red balls. Drag turns the view, the wheel
   // zooms. While the programme plays the stock is cut again each time the engine is free.
-  const G = { renderer: null, scene: null, camera: null, part: null, marks: null, tool: null, fail: null, data: null, key: "", busy: false, want: null, yaw: 0.6, pitch: 0.45, dist: 0, target: [0, 0, 0] };
+  const G = { renderer: null, scene: null, camera: null, part: null, marks: null, tool: null, toolKey: "", fail: null, data: null, key: "", busy: false, want: null, yaw: 0.6, pitch: 0.45, dist: 0, target: [0, 0, 0] };
   const is3d = () => view.kind === "cut3d";
   const SECTION = 0xe0822a;
   function glInit() {
@@ -1565,33 +1565,50 @@
   /** The tool where the player is: a lathe insert pointing at its tip with a shank behind it; a
    * mill's cutter (its diameter from the setup, else 10 mm) with the holder above. */
   function glTool() {
-    if (G.tool) { G.scene.remove(G.tool); G.tool.traverse((o) => { if (o.geometry) o.geometry.dispose(); if (o.material) o.material.dispose(); }); G.tool = null; }
-    if (!S || !S.n || !G.data) return;
-    const q = posAt(now), p = glPoint(q), grp = new THREE.Group(), lathe3d = G.data.head.kind === "lathe";
-    const steel = new THREE.MeshStandardMaterial({ color: 0xffb300, metalness: 0.4, roughness: 0.4 }), dark = new THREE.MeshStandardMaterial({ color: 0x37474f, metalness: 0.5, roughness: 0.5 });
-    if (lathe3d) {
-      const s = Math.max(G.data.head.diameter_mm * 0.08, 2);
-      // In a bore (below the face, inside the stock) the insert points out at the wall and the
-      // bar reaches back out past the face; outside, the insert points at the axis, its shank radial.
-      const inBore = q[2] < G.data.head.front_z_mm - 1e-6 && Math.abs(q[0]) < G.data.head.diameter_mm / 2 - 1e-6;
-      const tip = new THREE.Mesh(new THREE.ConeGeometry(s * 0.35, s, 4), steel);
-      tip.rotation.x = inBore ? Math.PI / 2 : -Math.PI / 2;
-      tip.position.set(0, 0, inBore ? -s / 2 : s / 2);
-      const shank = inBore ? new THREE.Mesh(new THREE.BoxGeometry(s * 6, s * 0.5, s * 0.5), dark) : new THREE.Mesh(new THREE.BoxGeometry(s * 0.6, s * 0.6, s * 2.5), dark);
-      if (inBore) shank.position.set(s * 3, 0, -s * 0.9); else shank.position.set(0, 0, s * 2.2);
-      grp.add(tip, shank);
-    } else {
-      const setupTool = ((JOB.setup || "").match(/diameter_mm\s*=\s*([0-9.]+)/) || [])[1];
-      const r = (+setupTool || 10) / 2;
-      const cutter = new THREE.Mesh(new THREE.CylinderGeometry(r, r, 4 * r, 24), steel);
-      cutter.position.set(0, 2 * r, 0);
-      const holder = new THREE.Mesh(new THREE.CylinderGeometry(r * 2.4, r * 2.4, 5 * r, 24), dark);
-      holder.position.set(0, 4 * r + 2.5 * r, 0);
-      grp.add(cutter, holder);
+    if (!S || !S.n || !G.data) { glDropTool(); return; }
+    const q = posAt(now), p = glPoint(q), lathe3d = G.data.head.kind === "lathe";
+    // In a bore (below the face, inside the stock) the insert points out at the wall and the
+    // bar reaches back out past the face; outside, the insert points at the axis, its shank radial.
+    const inBore = lathe3d && q[2] < G.data.head.front_z_mm - 1e-6 && Math.abs(q[0]) < G.data.head.diameter_mm / 2 - 1e-6;
+    const size = lathe3d ? Math.max(G.data.head.diameter_mm * 0.08, 2) : (+(((JOB.setup || "").match(/diameter_mm\s*=\s*([0-9.]+)/) || [])[1]) || 10) / 2;
+    // Made again only when its shape changes; as the player moves it is only moved.
+    const key = [lathe3d, inBore, size].join();
+    if (!G.tool || G.toolKey !== key) {
+      glDropTool();
+      G.tool = lathe3d ? latheTool(size, inBore) : millTool(size);
+      G.toolKey = key;
+      G.scene.add(G.tool);
     }
-    grp.position.set(p[0], p[1], p[2]);
-    G.tool = grp;
-    G.scene.add(grp);
+    G.tool.position.set(p[0], p[1], p[2]);
+  }
+  function glDropTool() {
+    if (!G.tool) return;
+    G.scene.remove(G.tool);
+    G.tool.traverse((o) => { if (o.geometry) o.geometry.dispose(); if (o.material) o.material.dispose(); });
+    G.tool = null;
+  }
+  const toolSteel = () => new THREE.MeshStandardMaterial({ color: 0xffb300, metalness: 0.4, roughness: 0.4 });
+  const toolDark = () => new THREE.MeshStandardMaterial({ color: 0x37474f, metalness: 0.5, roughness: 0.5 });
+  /** A lathe insert of size `s` pointing at its tip, with its shank (a boring bar's along the axis). */
+  function latheTool(s, inBore) {
+    const grp = new THREE.Group();
+    const tip = new THREE.Mesh(new THREE.ConeGeometry(s * 0.35, s, 4), toolSteel());
+    tip.rotation.x = inBore ? Math.PI / 2 : -Math.PI / 2;
+    tip.position.set(0, 0, inBore ? -s / 2 : s / 2);
+    const shank = inBore ? new THREE.Mesh(new THREE.BoxGeometry(s * 6, s * 0.5, s * 0.5), toolDark()) : new THREE.Mesh(new THREE.BoxGeometry(s * 0.6, s * 0.6, s * 2.5), toolDark());
+    if (inBore) shank.position.set(s * 3, 0, -s * 0.9); else shank.position.set(0, 0, s * 2.2);
+    grp.add(tip, shank);
+    return grp;
+  }
+  /** A mill's cutter of radius `r` (the setup's diameter, else 10 mm) with the holder above. */
+  function millTool(r) {
+    const grp = new THREE.Group();
+    const cutter = new THREE.Mesh(new THREE.CylinderGeometry(r, r, 4 * r, 24), toolSteel());
+    cutter.position.set(0, 2 * r, 0);
+    const holder = new THREE.Mesh(new THREE.CylinderGeometry(r * 2.4, r * 2.4, 5 * r, 24), toolDark());
+    holder.position.set(0, 4 * r + 2.5 * r, 0);
+    grp.add(cutter, holder);
+    return grp;
   }
   function glRender() {
     if (!G.renderer) return;
