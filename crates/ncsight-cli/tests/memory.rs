@@ -119,3 +119,36 @@ fn a_million_pecks_run_in_constant_memory() {
     assert!(text.contains("STRAIGHT_FEED(10.0000, 10.0000, -1000.0000"), "the bottom is reached");
     assert!(kb > 0 && kb < 16 << 10, "peak {kb} KiB");
 }
+
+/// A roughing of any number of levels runs (issue 34): G71 with Δd 0.001 mm over 101 mm is
+/// 101,000 levels, some 400,000 records, which a GSK980TDi runs and ncsight used to refuse
+/// (NCS-E40). Its moves are made as they are handed on, so the peak stays that of a small
+/// programme: under 16 MiB.
+#[test]
+fn a_roughing_of_a_hundred_thousand_levels_runs_in_constant_memory() {
+    let dir = std::env::temp_dir().join(format!("ncsight-memory-levels-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let programme = dir.join("levels.nc");
+    let levels = |depth: &str| format!("G97 S500 M03 T0101\nG99 G00 X202. Z2.\nG71 U{depth} R0.0005\nG71 P10 Q20 U0.4 W0.1 F0.2\nN10 G00 X0.\nG01 Z-10.\nN20 X202.\nG00 X250. Z50.\nM30\n");
+    let out = dir.join("levels.canon");
+    let run = |text: String| {
+        std::fs::write(&programme, text).unwrap();
+        peak_kb(&["run", programme.to_str().unwrap(), "--machine", "gsk980tdi", "--format", "canon", "-o", out.to_str().unwrap()])
+    };
+    // A fifth of the levels (Δd 0.005: 20,200 levels, past the point where they are deferred):
+    // the peak does not grow with the block's moves.
+    let (_, kb_fifth) = run(levels("0.005"));
+    let (code, kb) = run(levels("0.001"));
+    let text = std::fs::read_to_string(&out).unwrap();
+    std::fs::remove_dir_all(&dir).unwrap();
+    eprintln!("a fifth of the levels: peak {kb_fifth} KiB");
+    assert!(kb < kb_fifth + 2048, "peak {kb} KiB for five times the levels of one at {kb_fifth} KiB");
+    let lines = text.lines().count();
+    eprintln!("a hundred thousand levels: peak {kb} KiB, {lines} canonical calls");
+    assert_eq!(code, 0);
+    // Each level: to the level, the cut, the back-off, the rapid back.
+    assert!(lines > 400_000, "{lines} lines");
+    // The last level (X0.2015 as a radius, 0.0005 above B') and the finishing pass along the contour.
+    assert!(text.contains("STRAIGHT_FEED(0.2000, 0.0000, -9.9000"), "the contour's face is cut");
+    assert!(kb > 0 && kb < 16 << 10, "peak {kb} KiB");
+}

@@ -493,28 +493,63 @@ impl Modal {
         }
     }
 
-    /// Spindle speed in rpm at a given diameter (G96 needs it), signed by direction; 0 if
-    /// stopped.
     /// The G96 surface speed in m/min: S is feet per minute under G20.
     pub fn surface_m_min(&self) -> f64 {
         if self.inch { self.s_word * 0.3048 } else { self.s_word }
     }
 
+    /// Spindle speed in rpm at a given diameter (G96 needs it), signed by direction; 0 if
+    /// stopped.
     pub fn rpm_at(&self, diameter_mm: f64, max_rpm: f64) -> f64 {
+        self.spindle_speed(max_rpm).rpm_at(diameter_mm)
+    }
+
+    /// What the spindle's speed is made of as the modes stand (see [`SpindleSpeed`]).
+    pub fn spindle_speed(&self, max_rpm: f64) -> SpindleSpeed {
         let sign = match self.spindle {
-            SpindleDir::Stopped => return 0.0,
+            SpindleDir::Stopped => 0.0,
             SpindleDir::Positive => 1.0,
             SpindleDir::Negative => -1.0,
         };
         // G50 S clamps the speed that G96 computes (TDi help G96/97).
+        let clamp_rpm = if self.css { self.rpm_clamp.unwrap_or(max_rpm).min(max_rpm) } else { max_rpm };
+        SpindleSpeed { sign, css: self.css, clamp_rpm, surface_m_min: self.surface_m_min(), s_rpm: self.s_word.min(max_rpm) }
+    }
+}
+
+/// The spindle's speed as the modes of one block make it: a few values, kept by a cycle whose
+/// moves are made after the block (their feed per revolution needs it).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SpindleSpeed {
+    /// +1 (M03), -1 (M04), 0 (stopped).
+    sign: f64,
+    /// G96: the speed follows the diameter.
+    css: bool,
+    /// The most rpm: G50 S under G96, else the spindle's maximum.
+    clamp_rpm: f64,
+    surface_m_min: f64,
+    /// S under G97, at most the spindle's maximum.
+    s_rpm: f64,
+}
+
+impl SpindleSpeed {
+    /// G96: the speed follows the diameter.
+    pub fn css(&self) -> bool {
+        self.css
+    }
+
+    /// Spindle speed in rpm at a given diameter, signed by direction; 0 if stopped.
+    pub fn rpm_at(&self, diameter_mm: f64) -> f64 {
+        if self.sign == 0.0 {
+            return 0.0;
+        }
         let rpm = if self.css {
-            let clamp = self.rpm_clamp.unwrap_or(max_rpm).min(max_rpm);
             let d = diameter_mm.abs();
             // S is m/min, or ft/min under G20 (FANUC and GSK lathe manuals, G96): mm per unit.
-            if d < 1e-9 { clamp } else { (self.surface_m_min() * 1000.0 / (std::f64::consts::PI * d)).min(clamp) }
+            if d < 1e-9 { self.clamp_rpm } else { (self.surface_m_min * 1000.0 / (std::f64::consts::PI * d)).min(self.clamp_rpm) }
         } else {
-            self.s_word.min(max_rpm)
+            self.s_rpm
         };
-        sign * rpm
+        self.sign * rpm
     }
 }

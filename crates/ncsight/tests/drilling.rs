@@ -118,18 +118,9 @@ fn pecks_do_not_drift() {
     }
 }
 
-/// `text` on the FANUC 0-M through the push interface (each event to a sink as it is made, as
-/// the command line takes them), where a drilling block too big to hold is deferred.
+/// `text` on the FANUC 0-M through the push interface (see [`common::run_pushed`]).
 fn run_pushed(text: &str) -> (Vec<Record>, Vec<Diagnostic>) {
-    use ncsight::{Mode, Program, Switches};
-    let params = ncsight::profile::Params::defaults(ncsight::profile::by_name("fanuc0m").unwrap());
-    let mut program = Program::with_operator(params, Switches::default(), Mode::Run, ncsight::Options::default());
-    let mut events = Vec::new();
-    for line in text.split_inclusive('\n') {
-        program.feed_line(line.as_bytes(), &mut |e| events.push(e));
-    }
-    assert!(program.end_of_text(&mut |e| events.push(e)).is_none());
-    common::split(events.into_iter())
+    common::run_pushed("fanuc0m", None, text)
 }
 
 /// A drilling block too big to hold (about 60,000 records: G83 over 202 mm in 0.02 mm pecks,

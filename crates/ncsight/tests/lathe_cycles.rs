@@ -205,3 +205,58 @@ fn rigid_tapping_goes_in_and_out_with_the_spindle() {
     let (_, d) = run("G97 M03 S500\nG00 X0 Z3\nG83 Z-5 F0.1\nM29 S300\nX10\nG84 Z-20 F1.5\nM30\n");
     assert_eq!(alarm(&d), Some("NCS-E57"));
 }
+
+/// A roughing of some 15,000 levels (Δd 0.004 mm over 60 mm, about 60,000 moves) under G96 with
+/// feed per revolution, so each cut's feed follows its diameter, and a contour with an arc: made
+/// as it is handed on when the consumer takes each record as it comes (issue 34), record for
+/// record, block end and time what the ordinary path (the pull iterator, which holds a block's
+/// records whole) makes.
+#[test]
+fn a_deferred_roughing_makes_the_records_the_ordinary_path_makes() {
+    let text = "G50 S3000\nG96 S180 M03\nG99 G0 X122 Z2\nG71 U0.004 R0.002\nG71 P10 Q20 U0.4 W0.1 F0.25\nN10 G0 X0\nG1 Z0\nG3 X40 Z-20 R20\nG1 Z-40\nN20 X122\nG0 X150 Z50\nM30\n";
+    let (deferred, d1) = common::run_pushed("gsk980tdi", None, text);
+    let (ordinary, d2) = run(text);
+    assert_eq!((alarm(&d1), alarm(&d2)), (None, None), "{d1:?} {d2:?}");
+    assert!(deferred.len() > 50_000, "{} records", deferred.len());
+    assert_eq!(deferred.len(), ordinary.len());
+    for (k, (a, b)) in deferred.iter().zip(&ordinary).enumerate() {
+        assert_eq!((a.span, a.op, a.block_end, a.t_s), (b.span, b.op, b.block_end, b.t_s), "record {k}");
+    }
+    // The cuts' feeds differ with the diameter (G96): the deepest level's is the slowest.
+    let feeds: Vec<f64> = deferred.iter().filter_map(|r| if let Op::Feed { feed_mm_min, .. } = r.op { Some(feed_mm_min) } else { None }).collect();
+    assert!(feeds.iter().any(|f| (f - feeds[0]).abs() > 1.0), "{:?}", &feeds[..4]);
+}
+
+/// G71 with Δd 0.001 mm over 101 mm: 101,000 levels, some 400,000 moves, which a GSK980TDi runs
+/// and ncsight used to refuse (NCS-E40). Pushed, it runs to its end; the pull iterator, which
+/// would hold them, still stops at the cap.
+#[test]
+fn a_roughing_past_the_cap_runs_pushed_and_alarms_pulled() {
+    let text = "G97 S500 M03\nG99 G0 X202 Z2\nG71 U0.001 R0.0005\nG71 P10 Q20 U0.4 W0.1 F0.2\nN10 G0 X0\nG1 Z-10\nN20 X202\nG0 X250 Z50\nM30\n";
+    let (records, diags) = common::run_pushed("gsk980tdi", None, text);
+    assert_eq!(alarm(&diags), None, "{diags:?}");
+    let cuts = records.iter().filter(|r| r.span.line == 4 && matches!(r.op, Op::Feed { to, .. } if (to.z + 9.9).abs() < 1e-9)).count();
+    assert!(cuts > 100_000, "{cuts} cuts to the contour's face");
+    assert_eq!(records.iter().filter(|r| r.block_end && r.span.line == 4).count(), 1);
+    // The programme goes on after the cycle: its last move is the rapid to X250 Z50.
+    assert!(records.iter().any(|r| r.span.line == 8 && matches!(r.op, Op::Rapid { to, .. } if to.z == 50.0)));
+    let (_, pulled) = run(text);
+    assert_eq!(alarm(&pulled), Some("NCS-E40"));
+}
+
+/// A soft limit in force: the deferred roughing's moves are walked once before any is made, and
+/// the first beyond the limit stops the block as on the ordinary path (the same alarm, the same
+/// block, nothing of it made).
+#[test]
+fn a_deferred_roughing_beyond_a_soft_limit_alarms_as_the_ordinary_path() {
+    let setup = "[machine.limits]\nx_mm = [-10.0, 300.0]\nz_mm = [-15.0, 100.0]\n";
+    // The contour's face at Z-20 lies beyond Z-15: the first level's cut reaches it.
+    let text = "G97 S500 M03\nG99 G0 X122 Z2\nG71 U0.004 R0.002\nG71 P10 Q20 U0.4 W0.1 F0.2\nN10 G0 X0\nG1 Z-20\nN20 X122\nG0 X150 Z50\nM30\n";
+    let (r1, d1) = common::run_pushed("gsk980tdi", Some(setup), text);
+    let (r2, d2) = common::run_setup("gsk980tdi", setup, text, false);
+    let first = |d: &[Diagnostic]| d.iter().find(|d| d.is_alarm()).map(|d| (d.code, d.span, d.message.clone()));
+    assert!(first(&d1).is_some());
+    assert_eq!(first(&d1), first(&d2));
+    assert!(r1.iter().all(|r| r.span.line != 4), "nothing of the roughing is made");
+    assert_eq!(r1.len(), r2.len());
+}

@@ -163,13 +163,60 @@ fn polyline(contour: &[Op], chord_mm: f64) -> Vec<Vec3> {
 /// The moves of one roughing block (feeds carry 0: the interpreter sets each from F), at most
 /// `limit` passes and moves.
 pub fn expand(r: &Roughing, limit: usize) -> Result<Rough, RoughError> {
+    let plan = lay_out(r, limit)?;
+    if plan.move_count() > limit {
+        return Err(RoughError::TooMany);
+    }
+    let mut ops = Vec::with_capacity(plan.move_count());
+    plan.each_op(&mut |op| {
+        ops.push(op);
+        std::ops::ControlFlow::Continue(())
+    });
+    Ok(Rough { ops, notes: plan.notes })
+}
+
+/// A roughing laid out: what its moves are made from, made one at a time by
+/// [`RoughPlan::each_op`], so that a type I roughing of any number of levels holds no more
+/// than its contour (a G71 with a Δd of a micrometre: a hundred thousand levels).
+#[derive(Debug, Clone, PartialEq)]
+pub struct RoughPlan {
+    /// A, where the cycle starts and ends.
+    start: Vec3,
+    /// A' and B': A and the contour's start moved by the allowances.
+    a1: Vec3,
+    b1: Vec3,
+    /// The level axis and the cut axis.
+    axes: (usize, usize),
+    /// The contour after the ns move, moved by the allowances.
+    path: Vec<Op>,
+    /// `path` as fine points from B'.
+    pts: Vec<Vec3>,
+    dir_l: f64,
+    /// Which way the contour runs along the level axis (from B' back toward A's level).
+    rise: f64,
+    dir_c: f64,
+    depth_mm: f64,
+    back_off_mm: f64,
+    ns_rapid: bool,
+    /// Type I: the levels strictly between A' and B'.
+    levels: usize,
+    /// Type II: the moves of steps 2-6, made when laid out (at most the limit).
+    type_two: Option<Vec<Op>>,
+    pub notes: Vec<RoughNote>,
+}
+
+/// Lay out one roughing block: its contour checked (help text note 3), its levels counted, what
+/// its moves tell found. Type II's levels are made here (at most `limit` moves); type I's are
+/// made as they are handed on.
+pub fn lay_out(r: &Roughing, limit: usize) -> Result<RoughPlan, RoughError> {
     let (l, c) = r.kind.axes();
-    let Some(first) = r.contour.first() else { return Ok(Rough { ops: Vec::new(), notes: Vec::new() }) };
-    let b = first.end_point().ok_or(RoughError::NotAPath)?;
+    let b = match r.contour.first() {
+        Some(first) => first.end_point().ok_or(RoughError::NotAPath)?,
+        None => r.start,
+    };
     let a1 = shift(&r.start, &r.allowance);
     let b1 = shift(&b, &r.allowance);
-    // The contour after the ns move, moved by the allowances.
-    let path: Vec<Op> = r.contour[1..].iter().map(|op| moved(op, &r.allowance)).collect::<Result<_, _>>()?;
+    let path: Vec<Op> = r.contour.iter().skip(1).map(|op| moved(op, &r.allowance)).collect::<Result<_, _>>()?;
     let pts: Vec<Vec3> = {
         let mut p = vec![b1];
         p.extend(polyline(&path, 0.01).into_iter().skip(1));
@@ -185,66 +232,155 @@ pub fn expand(r: &Roughing, limit: usize) -> Result<Rough, RoughError> {
     }
     let end = *pts.last().unwrap_or(&b1);
     let dir_l = (b1.axis(l) - a1.axis(l)).signum();
-    // Which way the contour runs along the level axis (from B' back toward A's level).
-    let rise = (end.axis(l) - b1.axis(l)).signum();
-    let dir_c = (end.axis(c) - b1.axis(c)).signum();
-    let at = |lv: f64, cv: f64| place(a1, (l, c), lv, cv);
-    let mut ops = Vec::new();
-    let mut pos = r.start;
-    // 1: A to A'.
-    go(a1, false, &mut ops, &mut pos);
-    let mut notes = Vec::new();
+    let mut plan = RoughPlan {
+        start: r.start,
+        a1,
+        b1,
+        axes: (l, c),
+        path,
+        pts: Vec::new(),
+        dir_l,
+        rise: (end.axis(l) - b1.axis(l)).signum(),
+        dir_c: (end.axis(c) - b1.axis(c)).signum(),
+        depth_mm: r.depth_mm,
+        back_off_mm: r.back_off_mm,
+        ns_rapid: r.ns_rapid,
+        levels: 0,
+        type_two: None,
+        notes: Vec::new(),
+    };
+    if r.contour.is_empty() {
+        return Ok(plan);
+    }
     if r.type_two {
         // 2-6 of type II: the levels strictly between A' and the deepest point of the contour.
-        levels_type_two(r, a1, &pts, limit, &mut ops, &mut pos, &mut notes)?;
+        let (mut ops, mut pos) = (Vec::new(), a1);
+        levels_type_two(r, a1, &pts, limit, &mut ops, &mut pos, &mut plan.notes)?;
+        plan.type_two = Some(ops);
     } else {
         // 2-6: the levels strictly between A' and B'.
         let total = (b1.axis(l) - a1.axis(l)).abs();
-        let mut k = 1usize;
-        while dir_l != 0.0 && r.depth_mm > 0.0 && (k as f64) * r.depth_mm < total - 1e-9 {
-            if k > limit || ops.len() > limit {
-                return Err(RoughError::TooMany);
-            }
-            let level = a1.axis(l) + dir_l * k as f64 * r.depth_mm;
-            // Where the level meets the contour, walking from B': the contour is monotonic along
-            // the level axis (checked above), so a binary search finds the first point at or past
-            // the level.
-            let i = pts.partition_point(|p| (p.axis(l) - level) * rise < 0.0);
-            let hit = if i == 0 {
-                pts[0].axis(c)
-            } else if i >= pts.len() {
-                end.axis(c)
-            } else {
-                let (w0, w1) = (pts[i - 1], pts[i]);
-                let (p, q) = (w0.axis(l), w1.axis(l));
-                let u = if (q - p).abs() > 1e-12 { (level - p) / (q - p) } else { 1.0 };
-                w0.axis(c) + u * (w1.axis(c) - w0.axis(c))
-            };
-            go(at(level, a1.axis(c)), !r.ns_rapid, &mut ops, &mut pos);
-            go(at(level, hit), true, &mut ops, &mut pos);
-            go(at(level - dir_l * r.back_off_mm, hit - dir_c * r.back_off_mm), true, &mut ops, &mut pos);
-            go(at(level - dir_l * r.back_off_mm, a1.axis(c)), false, &mut ops, &mut pos);
-            k += 1;
+        while dir_l != 0.0 && r.depth_mm > 0.0 && ((plan.levels + 1) as f64) * r.depth_mm < total - 1e-9 {
+            plan.levels += 1;
         }
     }
-    // 6-7: to B', along the contour to C'.
-    go(b1, !r.ns_rapid, &mut ops, &mut pos);
-    for op in path {
-        pos = op.end_point().unwrap_or(pos);
-        ops.push(op);
-    }
     // 8: back to A, a straight rapid (the help text's step 8), whatever lies in between.
+    let last = plan.path.iter().rev().find_map(Op::end_point).unwrap_or(b1);
     let inward = (b1.axis(l) - a1.axis(l)).signum();
     let through = (0..=64).any(|k| {
         let u = f64::from(k) / 64.0;
-        let (lv, cv) = (pos.axis(l) + u * (r.start.axis(l) - pos.axis(l)), pos.axis(c) + u * (r.start.axis(c) - pos.axis(c)));
+        let (lv, cv) = (last.axis(l) + u * (r.start.axis(l) - last.axis(l)), last.axis(c) + u * (r.start.axis(c) - last.axis(c)));
         contour_level_at(&pts, l, c, cv).is_some_and(|at| (lv - at) * inward > 1e-6)
     });
     if through {
-        notes.push(RoughNote::EndRapidThroughPart);
+        plan.notes.push(RoughNote::EndRapidThroughPart);
     }
-    go(r.start, false, &mut ops, &mut pos);
-    Ok(Rough { ops, notes })
+    plan.pts = pts;
+    Ok(plan)
+}
+
+/// A move to `to` (a feed or a rapid) handed on unless the tool is there already.
+struct Mover<'s> {
+    pos: Vec3,
+    sink: &'s mut dyn FnMut(Op) -> std::ops::ControlFlow<()>,
+}
+
+impl Mover<'_> {
+    fn go(&mut self, to: Vec3, feed: bool) -> std::ops::ControlFlow<()> {
+        if to == self.pos {
+            return std::ops::ControlFlow::Continue(());
+        }
+        let op = if feed { Op::Feed { from: self.pos, to, feed_mm_min: 0.0 } } else { Op::Rapid { from: self.pos, to } };
+        self.pos = to;
+        (self.sink)(op)
+    }
+
+    fn pass(&mut self, op: &Op) -> std::ops::ControlFlow<()> {
+        self.pos = op.end_point().unwrap_or(self.pos);
+        (self.sink)(op.clone())
+    }
+}
+
+impl RoughPlan {
+    /// How many moves the roughing makes at most (a count, nothing made).
+    pub fn move_count(&self) -> usize {
+        let levels = match &self.type_two {
+            Some(ops) => ops.len(),
+            None => 4 * self.levels,
+        };
+        if self.pts.is_empty() {
+            return 0;
+        }
+        levels + self.path.len() + 3
+    }
+
+    /// Hand on the moves in order, one at a time (the sink may stop them).
+    pub fn each_op(&self, sink: &mut dyn FnMut(Op) -> std::ops::ControlFlow<()>) {
+        // A roughing without a contour makes no move.
+        if self.pts.is_empty() {
+            return;
+        }
+        let mut m = Mover { pos: self.start, sink };
+        // 1: A to A'.
+        if m.go(self.a1, false).is_break() {
+            return;
+        }
+        match &self.type_two {
+            Some(ops) => {
+                for op in ops {
+                    if m.pass(op).is_break() {
+                        return;
+                    }
+                }
+            }
+            None => {
+                for k in 1..=self.levels {
+                    if self.level(k, &mut m).is_break() {
+                        return;
+                    }
+                }
+            }
+        }
+        // 6-7: to B', along the contour to C'.
+        if m.go(self.b1, !self.ns_rapid).is_break() {
+            return;
+        }
+        for op in &self.path {
+            if m.pass(op).is_break() {
+                return;
+            }
+        }
+        // 8: back to A.
+        let _ = m.go(self.start, false);
+    }
+
+    /// Type I's level `k` (steps 2-5): to the level, cut to the contour, back off e at 45
+    /// degrees, rapid back to A's cut-axis position.
+    fn level(&self, k: usize, m: &mut Mover) -> std::ops::ControlFlow<()> {
+        let (l, c) = self.axes;
+        let (a1, pts) = (self.a1, &self.pts);
+        let level = a1.axis(l) + self.dir_l * k as f64 * self.depth_mm;
+        // Where the level meets the contour, walking from B': the contour is monotonic along
+        // the level axis (checked when laid out), so a binary search finds the first point at
+        // or past the level.
+        let i = pts.partition_point(|p| (p.axis(l) - level) * self.rise < 0.0);
+        let hit = if i == 0 {
+            pts[0].axis(c)
+        } else if i >= pts.len() {
+            pts[pts.len() - 1].axis(c)
+        } else {
+            let (w0, w1) = (pts[i - 1], pts[i]);
+            let (p, q) = (w0.axis(l), w1.axis(l));
+            let u = if (q - p).abs() > 1e-12 { (level - p) / (q - p) } else { 1.0 };
+            w0.axis(c) + u * (w1.axis(c) - w0.axis(c))
+        };
+        let at = |lv: f64, cv: f64| place(a1, (l, c), lv, cv);
+        let e = self.back_off_mm;
+        m.go(at(level, a1.axis(c)), !self.ns_rapid)?;
+        m.go(at(level, hit), true)?;
+        m.go(at(level - self.dir_l * e, hit - self.dir_c * e), true)?;
+        m.go(at(level - self.dir_l * e, a1.axis(c)), false)
+    }
 }
 
 /// The contour's position along the level axis `l` at `cv` on the cut axis `c` (the contour is
@@ -261,7 +397,8 @@ fn contour_level_at(pts: &[Vec3], l: usize, c: usize, cv: f64) -> Option<f64> {
     })
 }
 
-/// Append a move to `to` (a feed or a rapid) unless the tool is there already.
+/// Append a move to `to` (a feed or a rapid) unless the tool is there already (type II's
+/// levels, laid out whole).
 fn go(to: Vec3, feed: bool, ops: &mut Vec<Op>, pos: &mut Vec3) {
     if to != *pos {
         ops.push(if feed { Op::Feed { from: *pos, to, feed_mm_min: 0.0 } } else { Op::Rapid { from: *pos, to } });

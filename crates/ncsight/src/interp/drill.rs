@@ -710,7 +710,7 @@ pub(super) fn block(step: &mut Step, words: &mut Words, kind: DrillKind, enterin
     }
     if !deferred.is_empty() && !step.out.discard_records {
         let holes = DeferredHoles { holes: deferred, span: step.span, n: step.n, to_machine: step.tables.to_machine(&step.st.frame), plane, position_mode: step.st.spindle_position_mode, spindle_p: step.spindle_p() };
-        step.out.deferred = Some((step.out.records.len(), holes));
+        step.out.deferred = Some((step.out.records.len(), super::Deferred::Holes(holes)));
     }
     Ok(())
 }

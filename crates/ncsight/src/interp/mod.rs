@@ -83,12 +83,30 @@ pub struct Outcome {
     comp_plane_move: bool,
     /// The blocks whose records the compensation stage made during this block.
     comp_spans: Vec<Span>,
-    /// A drilling block's holes too many to hold as records: made one at a time as they are
-    /// handed on, after the first `.0` records of `records` (see [`drill::DeferredHoles`]).
-    pub deferred: Option<(usize, drill::DeferredHoles)>,
+    /// A block's records too many to hold (a drilling block's holes, a roughing's levels): made
+    /// one at a time as they are handed on, after the first `.0` records of `records`.
+    pub deferred: Option<(usize, Deferred)>,
     /// Whether the consumer takes records as they are made (a sink), so a block may defer its
     /// holes; a pull iterator that queues a line's events does not (its queue would hold them).
     pub may_defer: bool,
+}
+
+/// What a block lays out to be made as it is handed on: its records made one at a time, so a
+/// block of any number of moves holds a constant memory.
+#[derive(Debug, Clone)]
+pub enum Deferred {
+    Holes(drill::DeferredHoles),
+    Cuts(rough::DeferredCuts),
+}
+
+impl Deferred {
+    /// Every record, in order.
+    pub fn each_record(&self, sink: &mut dyn FnMut(Record)) {
+        match self {
+            Deferred::Holes(h) => h.each_record(sink),
+            Deferred::Cuts(c) => c.each_record(sink),
+        }
+    }
 }
 
 impl Outcome {
@@ -267,25 +285,7 @@ impl Step<'_> {
             return;
         }
         let to_machine = self.tables.to_machine(&self.st.frame);
-        if let (Some(area), None) = (self.st.stroke2, &self.out.stroke_hit) {
-            if let Some(why) = stroke::entered(&area, &op, &to_machine) {
-                self.out.stroke_hit = Some((span, why));
-            }
-        }
-        if self.tables.limited && self.out.overtravel.is_none() {
-            if let Some((from, to)) = op.start_point().zip(op.end_point()) {
-                let (lo, hi) = match geom::arc_geom_of(&op) {
-                    Some(g) => match op {
-                        Op::Arc { plane, dir, .. } | Op::ThreadArc { plane, dir, .. } => geom::arc_extent(&from, &to, plane, dir, &g),
-                        _ => unreachable!("only arcs have an arc's geometry"),
-                    },
-                    None => (Vec3::new(from.x.min(to.x), from.y.min(to.y), from.z.min(to.z)), Vec3::new(from.x.max(to.x), from.y.max(to.y), from.z.max(to.z))),
-                };
-                if let Some((axis, limit, at, upper)) = self.tables.beyond_limit(&(lo + to_machine), &(hi + to_machine)) {
-                    self.out.overtravel = Some((span, axis, limit, at, upper));
-                }
-            }
-        }
+        self.travel_checks(span, &op, &to_machine);
         if !self.out.discard_records {
             let mut r = Record::of_block(span, n, op);
             r.to_machine = to_machine;
@@ -299,6 +299,30 @@ impl Step<'_> {
                 r.hold = crate::motion::Hold::AfterRecord;
             }
             self.out.records.push(r);
+        }
+    }
+
+    /// The first move of the block into G22's forbidden area or beyond a soft limit, noted (the
+    /// block then alarms).
+    fn travel_checks(&mut self, span: Span, op: &Op, to_machine: &Vec3) {
+        if let (Some(area), None) = (self.st.stroke2, &self.out.stroke_hit) {
+            if let Some(why) = stroke::entered(&area, op, to_machine) {
+                self.out.stroke_hit = Some((span, why));
+            }
+        }
+        if self.tables.limited && self.out.overtravel.is_none() {
+            if let Some((from, to)) = op.start_point().zip(op.end_point()) {
+                let (lo, hi) = match geom::arc_geom_of(op) {
+                    Some(g) => match *op {
+                        Op::Arc { plane, dir, .. } | Op::ThreadArc { plane, dir, .. } => geom::arc_extent(&from, &to, plane, dir, &g),
+                        _ => unreachable!("only arcs have an arc's geometry"),
+                    },
+                    None => (Vec3::new(from.x.min(to.x), from.y.min(to.y), from.z.min(to.z)), Vec3::new(from.x.max(to.x), from.y.max(to.y), from.z.max(to.z))),
+                };
+                if let Some((axis, limit, at, upper)) = self.tables.beyond_limit(&(lo + *to_machine), &(hi + *to_machine)) {
+                    self.out.overtravel = Some((span, axis, limit, at, upper));
+                }
+            }
         }
     }
 
@@ -424,14 +448,19 @@ impl Step<'_> {
         self.warn(Rule::Implausible, self.span, msg);
     }
 
+    /// The axis whose position is the radius G96 works from: X on a lathe, the axis the
+    /// parameter names on a machining centre (a facing head's radius), none otherwise.
+    fn css_axis(&self) -> Option<usize> {
+        match self.profile.css_axis {
+            Some(k) => Some((self.params.get(k) as usize).clamp(1, 3) - 1),
+            None if self.profile.diameter_x => Some(0),
+            None => None,
+        }
+    }
+
     /// Spindle speed at a point (G96 makes it depend on the diameter), signed.
     fn rpm_at(&self, p: &Vec3) -> f64 {
-        let dia = match self.profile.css_axis {
-            // A machining centre: the axis the parameter names (a facing head's radius).
-            Some(k) => 2.0 * p.axis((self.params.get(k) as usize).clamp(1, 3) - 1),
-            None if self.profile.diameter_x => 2.0 * p.x,
-            None => 0.0,
-        };
+        let dia = self.css_axis().map_or(0.0, |k| 2.0 * p.axis(k));
         self.st.rpm_at(dia, MAX_RPM)
     }
 
@@ -445,6 +474,22 @@ impl Step<'_> {
     /// the spindle speed changes along the move; the feed returned is then the mean one
     /// (length / time), the time integrated over the path (Simpson's rule, 64 intervals).
     fn cutting_feed(&mut self, what: impl Into<What>, point: &dyn Fn(f64) -> Vec3) -> Result<f64, Diagnostic> {
+        let rule = self.feed_rule(what, point)?;
+        let (feed, asked) = rule.mm_min(self.rpm_here(), point);
+        if let Some(asked) = asked {
+            self.warn_clamped(asked, rule.max_mm_min);
+        }
+        Ok(feed)
+    }
+
+    fn warn_clamped(&mut self, asked_mm_min: f64, max: f64) {
+        self.warn(Rule::FeedClamped, self.span, format!("cutting feed {asked_mm_min:.1} mm/min is above the limit {max} mm/min: clamped"));
+    }
+
+    /// How the moves of this block get their feed ([`CutFeed`]), or the alarm that they have
+    /// none (no F; feed per revolution with the spindle stopped); an implausible F is said
+    /// once, of the move along `point`.
+    fn feed_rule(&mut self, what: impl Into<What>, point: &dyn Fn(f64) -> Vec3) -> Result<CutFeed, Diagnostic> {
         let what: What = what.into();
         let f = match self.st.feed {
             Some(f) if f > 0.0 => f,
@@ -461,39 +506,14 @@ impl Step<'_> {
         if implausible && self.profile.is_lathe() && self.st.feed_warned != Some(f) {
             self.feed_plausible(f, point);
         }
-        let max = self.params.feed_max_mm_min();
-        let feed_at = |rpm: f64| (f * rpm.abs()).min(max);
-        let mut feed = f;
-        if self.st.per_rev {
-            let rpm = self.rpm_here().abs();
-            if rpm <= 0.0 {
-                return Err(self.alarm(
-                    Rule::SpindleStopped,
-                    self.span,
-                    format!("{}: feed per revolution (F{} mm/rev) with the spindle stopped or at S0", what.name(self.profile), crate::alarm::shown(f, 4)),
-                ));
-            }
-            feed = f * rpm;
-            if self.st.css {
-                const N: usize = 64;
-                let mut sum = 0.0;
-                for i in 0..=N {
-                    let w = if i == 0 || i == N { 1.0 } else if i % 2 == 1 { 4.0 } else { 2.0 };
-                    sum += w / feed_at(self.rpm_at(&point(i as f64 / N as f64)));
-                }
-                let mean_inverse = sum / (3.0 * N as f64);
-                return Ok(1.0 / mean_inverse);
-            }
-        }
-        if feed > max {
-            self.warn(
-                Rule::FeedClamped,
+        if self.st.per_rev && self.rpm_here() == 0.0 {
+            return Err(self.alarm(
+                Rule::SpindleStopped,
                 self.span,
-                format!("cutting feed {feed:.1} mm/min is above the limit {max} mm/min: clamped"),
-            );
-            feed = max;
+                format!("{}: feed per revolution (F{} mm/rev) with the spindle stopped or at S0", what.name(self.profile), crate::alarm::shown(f, 4)),
+            ));
         }
-        Ok(feed)
+        Ok(CutFeed { f, per_rev: self.st.per_rev, max_mm_min: self.params.feed_max_mm_min(), spindle: self.st.spindle_speed(MAX_RPM), css_axis: self.css_axis() })
     }
 }
 
@@ -737,6 +757,80 @@ impl Interpreter {
             }
         }
         Ok(())
+    }
+}
+
+/// How the cutting moves of one block get their feed: F in its mode and the spindle's speed,
+/// fixed when the block is worked out (a cycle whose moves are made after it keeps this).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct CutFeed {
+    f: f64,
+    per_rev: bool,
+    max_mm_min: f64,
+    spindle: crate::modal::SpindleSpeed,
+    /// The axis G96 takes the radius from ([`Step::css_axis`]).
+    css_axis: Option<usize>,
+}
+
+impl CutFeed {
+    fn rpm_at(&self, p: &Vec3) -> f64 {
+        self.spindle.rpm_at(self.css_axis.map_or(0.0, |k| 2.0 * p.axis(k)))
+    }
+
+    /// The feed of a move along `point` (fraction of the path to position) starting where the
+    /// spindle turns at `rpm_start`, and the feed asked for when the limit clamped it. Under
+    /// G96 with feed per revolution the mean feed (length / time, the time integrated over the
+    /// path by Simpson's rule, 64 intervals), each point's feed at most the limit.
+    fn mm_min(&self, rpm_start: f64, point: &dyn Fn(f64) -> Vec3) -> (f64, Option<f64>) {
+        let max = self.max_mm_min;
+        let mut feed = self.f;
+        if self.per_rev {
+            feed = self.f * rpm_start.abs();
+            if self.spindle.css() {
+                const N: usize = 64;
+                let feed_at = |rpm: f64| (self.f * rpm.abs()).min(max);
+                let mut sum = 0.0;
+                for i in 0..=N {
+                    let w = if i == 0 || i == N { 1.0 } else if i % 2 == 1 { 4.0 } else { 2.0 };
+                    sum += w / feed_at(self.rpm_at(&point(i as f64 / N as f64)));
+                }
+                let mean_inverse = sum / (3.0 * N as f64);
+                return (1.0 / mean_inverse, None);
+            }
+        }
+        if feed > max {
+            return (max, Some(feed));
+        }
+        (feed, None)
+    }
+
+    /// The feed asked for and the limit, when the limit clamps every move (not under G96 with
+    /// feed per revolution, whose feed follows the diameter).
+    fn clamped(&self) -> Option<(f64, f64)> {
+        if self.per_rev && self.spindle.css() {
+            return None;
+        }
+        let asked = if self.per_rev { self.f * self.spindle.rpm_at(0.0).abs() } else { self.f };
+        (asked > self.max_mm_min).then_some((asked, self.max_mm_min))
+    }
+
+    /// A cycle's move with its feed (a feed's or an arc's; anything else as it is), and the
+    /// feed asked for when the limit clamped it.
+    fn apply(&self, op: Op) -> (Op, Option<f64>) {
+        match op {
+            Op::Feed { from, to, .. } => {
+                let (feed_mm_min, asked) = self.mm_min(self.rpm_at(&from), &|u| lerp(&from, &to, u));
+                (Op::Feed { from, to, feed_mm_min }, asked)
+            }
+            Op::Arc { from, to, center, plane, dir, .. } => {
+                let (feed_mm_min, asked) = match crate::geom::arc_geom_of(&op) {
+                    Some(g) => self.mm_min(self.rpm_at(&from), &|u| geom::arc_point(&from, &to, plane, dir, &g, u)),
+                    None => self.mm_min(self.rpm_at(&from), &|u| lerp(&from, &to, u)),
+                };
+                (Op::Arc { from, to, center, plane, dir, feed_mm_min }, asked)
+            }
+            other => (other, None),
+        }
     }
 }
 

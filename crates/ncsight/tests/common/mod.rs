@@ -49,3 +49,19 @@ pub fn first_alarm(machine: &str, text: &str) -> Option<Diagnostic> {
     let (_, d) = run_plain(machine, &[], text);
     d.into_iter().find(|d| d.is_alarm())
 }
+
+/// `text` on `machine` (with the setup `setup`, TOML, if given) through the push interface: each
+/// event to a sink as it is made, as the command line takes them, where a block too big to hold
+/// (a drilling block's holes, a roughing's levels) is made as it is handed on.
+pub fn run_pushed(machine: &str, setup: Option<&str>, text: &str) -> (Vec<Record>, Vec<Diagnostic>) {
+    let mut program = Program::with_operator(Params::defaults(profile::by_name(machine).unwrap()), Switches::default(), Mode::Run, Options::default());
+    if let Some(s) = setup {
+        program.set_setup(&ncsight::setup::Setup::from_toml(s).unwrap());
+    }
+    let mut events = Vec::new();
+    for line in text.split_inclusive('\n') {
+        program.feed_line(line.as_bytes(), &mut |e| events.push(e));
+    }
+    assert!(program.end_of_text(&mut |e| events.push(e)).is_none());
+    split(events.into_iter())
+}
