@@ -297,7 +297,7 @@ impl Mover<'_> {
 
     fn pass(&mut self, op: &Op) -> std::ops::ControlFlow<()> {
         self.pos = op.end_point().unwrap_or(self.pos);
-        (self.sink)(op.clone())
+        (self.sink)(*op)
     }
 }
 

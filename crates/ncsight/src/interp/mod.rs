@@ -985,10 +985,56 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
     if let Some(mode) = step.st.data_input {
         return frame::data_line(step, block, mode);
     }
+    let mut read_as = ReadAs::default();
+    let all = block_words(step, block, &mut read_as)?;
+    // 1. Collect the words.
+    let mut words = Words::new(all);
+    let (gs, ms) = collect(step, all, &mut words)?;
+    // 2. G codes.
+    let last_of = sort_g_codes(step, &gs)?;
+    suspend_compensation(step, &last_of, &words);
+    // 3. Modal codes.
+    let codes = modal_codes(step, block, &last_of)?;
+    rigid_tap_waits(step, &codes, &words)?;
+    // 4. What a new motion mode cancels.
+    cancel_by_motion(step, &codes);
+    let motion_now = codes.motion.map(|(_, m)| m).unwrap_or(step.st.motion);
+    let axis_letters: &[u8] = if step.profile.incremental_addresses { b"XYZUVW" } else { b"XYZ" };
+    let has_axis = axis_letters.iter().any(|l| words.has(*l));
+    // 5. A held-back thread run.
+    let run_deg = held_thread_run(step, &codes, ms.is_empty(), &words, motion_now, has_axis);
+    if let Some(n) = codes.work {
+        frame::select_work(step, n);
+    }
+    // 6. H and D.
+    offset_words(step, &last_of, &codes, &mut words, motion_now, has_axis)?;
+    // 7. F, S, T.
+    let thread_block = matches!(motion_now, Motion::Thread(_)) && has_axis && codes.non_modal.is_none();
+    feed_word(step, &codes, &mut words, thread_block)?;
+    select_spindle(step, &codes, &ms, &mut words, thread_block)?;
+    let spindle_before = speed_word(step, &codes, &last_of, &mut words, motion_now)?;
+    tool_word(step, &mut words, has_axis)?;
+    // 8, 9. M codes before the motion, a spindle record.
+    let after = m_codes_before(step, &ms, &mut words, spindle_before)?;
+    // 10, 11.
+    motion_of_block(step, &mut words, &codes, after, switches, has_axis, run_deg)
+}
+
+/// Where a block's words are kept when they are read otherwise than written (step 0 of
+/// [`run_block`]).
+#[derive(Default)]
+struct ReadAs {
+    /// In G12.1: the hypothetical C axis's words as the plane's Y.
+    plane: Vec<Word>,
+    /// Under G16: the radius and angle as the X, Y, Z words they stand for.
+    polar: Vec<Word>,
+}
+
+/// Step 0 of [`run_block`]: the words the block is read with.
+fn block_words<'a>(step: &mut Step, block: &'a Block, read_as: &'a mut ReadAs) -> Result<&'a [Word], Diagnostic> {
     // 0. Under G16 the plane's two words are a radius and an angle: the block is read with the
     // X, Y, Z words they stand for (not in a block that sets or ends a transform, or G15's own).
     // The block's own G16/G15, G90/G91 and plane count: its words are read in its modes.
-    let polar;
     let (mut incremental, mut plane, mut polar_on) = (step.st.incremental, step.st.plane, step.st.transform.polar);
     for g in codes_of(step.profile, &block.words) {
         match g.function {
@@ -1008,32 +1054,30 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
         step.st.transform.polar_angle_deg = 0.0;
     }
     // In G12.1 the hypothetical C is the plane's Y (interp/polar.rs).
-    let plane_words;
-    let block_words: &[Word] = if step.st.polar_interp.is_some() {
-        plane_words = polar::plane_words(step, &block.words)?;
-        &plane_words
+    let ReadAs { plane: plane_store, polar: polar_store } = read_as;
+    let block_words: &'a [Word] = if step.st.polar_interp.is_some() {
+        *plane_store = polar::plane_words(step, &block.words)?;
+        plane_store
     } else {
         &block.words
     };
-    let all: &[Word] = if polar_on && polar_reads(step, block) {
-        match transform::polar_words(step, block_words, incremental, plane)? {
-            Some(w) => {
-                polar = w;
-                &polar
-            }
-            None => block_words,
+    if polar_on && polar_reads(step, block) {
+        if let Some(w) = transform::polar_words(step, block_words, incremental, plane)? {
+            *polar_store = w;
+            return Ok(polar_store);
         }
-    } else {
-        block_words
-    };
-    // 1. Collect the words.
-    let mut words = Words::new(all);
-    let (gs, ms) = collect(step, all, &mut words)?;
-    let profile = step.profile;
+    }
+    Ok(block_words)
+}
 
+/// Step 2 of [`run_block`]: the G codes sorted, the last of a modal group counting; the codes
+/// that may not share a block, or not run here, alarm.
+#[allow(clippy::type_complexity)]
+fn sort_g_codes<'w>(step: &mut Step, gs: &[(&'w Word, &'static GDef)]) -> Result<Vec<(Group, &'w Word, &'static GDef)>, Diagnostic> {
+    let profile = step.profile;
     // 2. G codes: the last of a group counts (GSK: TAC p65; FANUC the same); a warning says so.
-    let mut last_of: Vec<(Group, &Word, &GDef)> = Vec::new();
-    for (w, g) in &gs {
+    let mut last_of: Vec<(Group, &'w Word, &'static GDef)> = Vec::new();
+    for &(w, g) in gs {
         if let Some(slot) = last_of.iter_mut().find(|(grp, _, _)| *grp == g.group && g.group != Group::NonModal) {
             let msg = format!("{} and {} are in one modal group: {} counts", slot.1.text(), w.text(), w.text());
             step.warn(Rule::SameGroupTwice, w.span, msg);
@@ -1089,7 +1133,13 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
             ));
         }
     }
+    Ok(last_of)
+}
 
+/// Radius compensation and the corner stage before a block that suspends them (step 2 of
+/// [`run_block`]).
+fn suspend_compensation(step: &mut Step, last_of: &[(Group, &Word, &'static GDef)], words: &Words) {
+    let profile = step.profile;
     // Radius compensation acts on plain moves only: a block with a cycle, a thread, a reference
     // return, a coordinate change or a T word runs uncompensated; the compensated path ends
     // before it (GSK980TDi help text, G40-G42 notes 5-6; FANUC threading likewise, inferred).
@@ -1155,25 +1205,19 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
             step.bypass_comp = true;
         }
     }
+}
 
+/// Step 3 of [`run_block`]: the modal codes take effect; the motion and drilling codes and
+/// the others acted on later are noted.
+fn modal_codes(step: &mut Step, block: &Block, last_of: &[(Group, &Word, &'static GDef)]) -> Result<Codes, Diagnostic> {
+    let profile = step.profile;
     // 3. Modal codes take effect; the motion and drilling codes are noted.
     let mut codes = Codes::default();
-    // The words a macro reads back (#4102-#4113) and each group's code (#4001-#4022).
-    for w in &block.words {
-        let last = &mut step.st.last_words;
-        match w.letter {
-            b'B' => last.b = Some(w.value),
-            b'D' => last.d = Some(w.value),
-            b'E' => last.e = Some(w.value),
-            b'H' => last.h = Some(w.value),
-            b'M' => last.m = Some(w.value),
-            _ => {}
-        }
-    }
+    note_last_words(step.st, block);
     // GSK980TDi help text, G54-G59 note 6: with G50 in the block, G54-G59 are void.
     let set_wins = profile.frame.coordinate_set_wins
         && last_of.iter().any(|(_, _, g)| matches!(g.function, GFn::LatheCoordinateSet | GFn::MillCoordinateSet));
-    for (_, w, g) in &last_of {
+    for &(_, w, g) in last_of {
         if set_wins && matches!(g.function, GFn::WorkOffset(_)) {
             continue;
         }
@@ -1198,22 +1242,7 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
             GFn::Thread(cmd) => codes.motion = Some((w.span, Motion::Thread(cmd))),
             GFn::BoxCycle(kind) => codes.motion = Some((w.span, Motion::Box(kind))),
             GFn::Curve(kind) => codes.motion = Some((w.span, Motion::Curve(kind))),
-            GFn::PlaneXY | GFn::PlaneZX | GFn::PlaneYZ => {
-                let plane = match g.function {
-                    GFn::PlaneXY => Plane::XY,
-                    GFn::PlaneZX => Plane::ZX,
-                    _ => Plane::YZ,
-                };
-                // FANUC 037; GSK980TDi help text, G17-G19 (no plane change in compensation).
-                if st.comp.side != 0 && plane != st.plane {
-                    return Err(step.alarm(Rule::CompPlaneChange, w.span, format!("{}: the plane cannot change while radius compensation is in force (G40 first)", w.text())));
-                }
-                // FANUC: no plane change in coordinate rotation (G69 first).
-                if st.transform.rotation.is_some_and(|r| r.plane != plane) {
-                    return Err(step.alarm(Rule::NotSupported, w.span, format!("{}: a plane change under coordinate rotation (G68) is not simulated: G69 first", w.text())));
-                }
-                st.plane = plane;
-            }
+            GFn::PlaneXY | GFn::PlaneZX | GFn::PlaneYZ => set_plane(step, w, g.function)?,
             GFn::Inch => st.inch = true,
             GFn::Metric => st.inch = false,
             GFn::Absolute => st.incremental = false,
@@ -1259,7 +1288,48 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
             GFn::NotYet(_) | GFn::MacroCall | GFn::ModalMacroCall | GFn::ModalMacroCancel => unreachable!("rejected above"),
         }
     }
-    // Help text G84/88: no axis move between M29 and the G84/G88 block (a dwell's X is a time).
+    Ok(codes)
+}
+
+/// The words a macro reads back (#4102-#4113) of this block.
+fn note_last_words(st: &mut crate::modal::Modal, block: &Block) {
+    for w in &block.words {
+        let last = &mut st.last_words;
+        match w.letter {
+            b'B' => last.b = Some(w.value),
+            b'D' => last.d = Some(w.value),
+            b'E' => last.e = Some(w.value),
+            b'H' => last.h = Some(w.value),
+            b'M' => last.m = Some(w.value),
+            _ => {}
+        }
+    }
+}
+
+/// G17, G18, G19: the plane, unless compensation or a rotation holds it (step 3 of
+/// [`run_block`]).
+fn set_plane(step: &mut Step, w: &Word, function: GFn) -> Result<(), Diagnostic> {
+    let st = &mut *step.st;
+    let plane = match function {
+            GFn::PlaneXY => Plane::XY,
+            GFn::PlaneZX => Plane::ZX,
+            _ => Plane::YZ,
+        };
+        // FANUC 037; GSK980TDi help text, G17-G19 (no plane change in compensation).
+        if st.comp.side != 0 && plane != st.plane {
+            return Err(step.alarm(Rule::CompPlaneChange, w.span, format!("{}: the plane cannot change while radius compensation is in force (G40 first)", w.text())));
+        }
+        // FANUC: no plane change in coordinate rotation (G69 first).
+        if st.transform.rotation.is_some_and(|r| r.plane != plane) {
+            return Err(step.alarm(Rule::NotSupported, w.span, format!("{}: a plane change under coordinate rotation (G68) is not simulated: G69 first", w.text())));
+        }
+        st.plane = plane;
+    Ok(())
+}
+
+/// Help text G84/88: no axis move between M29 and the G84/G88 block (a dwell's X is a time).
+fn rigid_tap_waits(step: &mut Step, codes: &Codes, words: &Words) -> Result<(), Diagnostic> {
+    let profile = step.profile;
     let dwell_block = matches!(codes.non_modal, Some((_, GFn::Dwell)));
     if step.st.drill.tap_waiting && !dwell_block && !codes.drill.is_some_and(|k| k.rigid_tap()) {
         let axes: &[u8] = if profile.incremental_addresses { b"XYZUVW" } else { b"XYZ" };
@@ -1267,6 +1337,11 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
             return Err(step.alarm(Rule::RigidTapOrder, step.span, "an axis move between M29 and G84/G88 (help text G84/88: none may come between them)"));
         }
     }
+    Ok(())
+}
+
+/// Step 4 of [`run_block`]: what a new motion mode cancels.
+fn cancel_by_motion(step: &mut Step, codes: &Codes) {
     // 4. What a new motion mode cancels. A non-thread group 01 code cancels the thread J/K and
     // the cycle memory (seed 001 G32.1 note 1).
     if let Some((_, m)) = codes.motion {
@@ -1302,15 +1377,17 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
             }
         }
     }
-    let motion_now = codes.motion.map(|(_, m)| m).unwrap_or(step.st.motion);
-    let axis_letters: &[u8] = if profile.incremental_addresses { b"XYZUVW" } else { b"XYZ" };
-    let has_axis = axis_letters.iter().any(|l| words.has(*l));
+}
+
+/// Step 5 of [`run_block`]: a held-back thread run end is made, or this block continues the
+/// run (the angle it continues from, then).
+fn held_thread_run(step: &mut Step, codes: &Codes, no_m_codes: bool, words: &Words, motion_now: Motion, has_axis: bool) -> Option<f64> {
     // 5. A held-back thread run end: does this block continue the run?
     let mut run_deg = None;
     if let Some(p) = step.st.thread.pending.take() {
         let goes_on = match motion_now {
             Motion::Thread(cmd) => {
-                has_axis && codes.non_modal.is_none() && ms.is_empty() && !words.has(b'T') && thread::continues(cmd, &p)
+                has_axis && codes.non_modal.is_none() && no_m_codes && !words.has(b'T') && thread::continues(cmd, &p)
             }
             _ => false,
         };
@@ -1322,11 +1399,11 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
         thread::flush(step, p, !goes_on);
         step.bypass_comp = bypass;
     }
-    if let Some(n) = codes.work {
-        frame::select_work(step, n);
-    }
-    let rigid_thread = matches!(motion_now, Motion::Thread(cmd) if thread::is_rigid(cmd));
+    run_deg
+}
 
+/// Step 6 of [`run_block`]: H of tool length compensation, D of cutter compensation.
+fn offset_words(step: &mut Step, last_of: &[(Group, &Word, &'static GDef)], codes: &Codes, words: &mut Words, motion_now: Motion, has_axis: bool) -> Result<(), Diagnostic> {
     // 6. Tool length compensation takes H (the offset number); D belongs to cutter compensation.
     let length_code = last_of.iter().find_map(|(_, w, g)| if let GFn::LengthComp(s) = g.function { Some((w.span, s)) } else { None });
     let h_word = if length_code.is_some() || step.st.frame.length_sign != 0 { words.take(b'H') } else { None };
@@ -1352,9 +1429,11 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
         let arc_move = has_axis && matches!(motion_now, Motion::ArcCw | Motion::ArcCcw);
         comp::command(step, side, d, span, arc_move)?;
     }
+    Ok(())
+}
 
-    // 7. F, S, T.
-    let thread_block = matches!(motion_now, Motion::Thread(_)) && has_axis && codes.non_modal.is_none();
+/// Step 7 of [`run_block`]: F (not in a thread block or a rigid tap's, whose F is the lead).
+fn feed_word(step: &mut Step, codes: &Codes, words: &mut Words, thread_block: bool) -> Result<(), Diagnostic> {
     // G84/G88's F is the tap's lead, signed by its hand (help text G84/88): the cycle reads it.
     let tap_block = codes.drill.or(step.st.drill.kind).is_some_and(|k| k.rigid_tap());
     let f_word = if thread_block || tap_block { None } else { words.take(b'F') };
@@ -1369,6 +1448,12 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
         let unit = if step.st.inch { 25.4 } else { 1.0 };
         step.st.feed = Some(w.value * unit);
     }
+    Ok(())
+}
+
+/// Step 7 of [`run_block`]: P selecting the spindle S and the spindle M codes are for.
+#[allow(clippy::type_complexity)]
+fn select_spindle(step: &mut Step, codes: &Codes, ms: &[(&Word, Option<&'static MDef>)], words: &mut Words, thread_block: bool) -> Result<(), Diagnostic> {
     // On a machine with several spindles (the setup's `spindle_p`), P in a block with S or a
     // spindle M code selects the spindle they are for (FANUC multi-spindle control: the P codes
     // of parameter 3781; inferred). Each spindle keeps its own speed and direction; the one
@@ -1390,6 +1475,16 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
             }
         }
     }
+    Ok(())
+}
+
+/// The spindle's direction, speed, mode and positioning before a block's S and M codes.
+type SpindleNow = (SpindleDir, f64, bool, bool);
+
+/// Step 7 of [`run_block`]: S (the speed, or G50's clamp); the spindle as it was before.
+fn speed_word(step: &mut Step, codes: &Codes, last_of: &[(Group, &Word, &'static GDef)], words: &mut Words, motion_now: Motion) -> Result<SpindleNow, Diagnostic> {
+    let profile = step.profile;
+    let rigid_thread = matches!(motion_now, Motion::Thread(cmd) if thread::is_rigid(cmd));
     // G50 S on the lathes, G92 S on a machining centre with constant surface speed (FANUC 0i-M,
     // inferred for the 0-M): the maximum spindle speed.
     let g50_clamp = matches!(codes.non_modal, Some((_, GFn::LatheCoordinateSet))) || (matches!(codes.non_modal, Some((_, GFn::MillCoordinateSet))) && profile.css_axis.is_some());
@@ -1403,13 +1498,19 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
             step.st.rpm_clamp = Some(w.value); // G50 S: maximum spindle speed (TDi help G96/97)
         } else {
             step.st.s_word = w.value;
-            let css = codes_css(&last_of).unwrap_or(step.st.css);
+            let css = codes_css(last_of).unwrap_or(step.st.css);
             if !css && w.value > MAX_RPM {
                 let msg = format!("{}: above the spindle's maximum of {MAX_RPM} rpm (assumed for every profile): the spindle turns at {MAX_RPM} rpm", w.text());
                 step.warn(Rule::SpeedClamped, w.span, msg);
             }
         }
     }
+    Ok(spindle_before)
+}
+
+/// Step 7 of [`run_block`]: T (on a lathe the tool and its offset, a tool record).
+fn tool_word(step: &mut Step, words: &mut Words, has_axis: bool) -> Result<(), Diagnostic> {
+    let profile = step.profile;
     let tool = match words.take(b'T') {
         Some(w) => {
             if w.decimal || w.value < 0.0 {
@@ -1434,11 +1535,19 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
             }
         }
     }
+    Ok(())
+}
 
+/// Steps 8 and 9 of [`run_block`]: the M codes that act before the motion (the spindle and its
+/// mode, rigid tapping, the words of a call or return), a spindle record when the spindle
+/// changes; the M codes that act after the motion, returned.
+#[allow(clippy::type_complexity)]
+fn m_codes_before<'w>(step: &mut Step, ms: &[(&'w Word, Option<&'static MDef>)], words: &mut Words<'w>, spindle_before: SpindleNow) -> Result<Vec<(&'w Word, MFn)>, Diagnostic> {
+    let profile = step.profile;
     // 8. M codes that act before motion: spindle and its mode.
-    let mut after: Vec<(&Word, MFn)> = Vec::new();
+    let mut after: Vec<(&'w Word, MFn)> = Vec::new();
     let mut flow = None;
-    for (w, m) in &ms {
+    for &(w, m) in ms {
         match m {
             None => step.warn(
                 Rule::MachineSpecificM,
@@ -1469,11 +1578,11 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
                 MFn::Auxiliary => {}
                 // The words of a call or a return are read now; the jump comes after the motion.
                 MFn::SubprogramCall => {
-                    flow = Some(call::call(step, &mut words, w)?);
+                    flow = Some(call::call(step, words, w)?);
                     after.push((w, m.function));
                 }
                 MFn::SubprogramReturn => {
-                    flow = Some(call::ret(step, &mut words, w)?);
+                    flow = Some(call::ret(step, words, w)?);
                     after.push((w, m.function));
                 }
                 f => after.push((w, f)),
@@ -1490,7 +1599,12 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
     {
         emit_spindle(step);
     }
+    Ok(after)
+}
 
+/// Step 10 of [`run_block`]: the one-shot code, or the motion of the mode in force; then
+/// step 11 ([`finish_block`]).
+fn motion_of_block<'w>(step: &mut Step, words: &mut Words<'w>, codes: &Codes, after: Vec<(&'w Word, MFn)>, switches: Switches, has_axis: bool, run_deg: Option<f64>) -> Result<(), Diagnostic> {
     // 10. The one-shot code, or the motion of the mode in force.
     // A one-shot code other than G04 ends the box cycles' remembered X, Z and R (FANUC 0-T).
     if matches!(codes.non_modal, Some((_, f)) if f != GFn::Dwell) {
@@ -1506,48 +1620,72 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
     }
     // G68/G69, G51.1/G50.1, G51/G50: set or end a transform. A block that sets one (or names
     // the axes of a mirror image to end) makes no move: its axis words are the transform's.
-    if !codes.transforms.is_empty() {
-        let t = step.st.transform;
-        // The codes that set an area or a transform take the block's axis words: one of them
-        // per block; the cancels run first.
-        let sets = |f: &GFn| matches!(f, GFn::Rotation(true) | GFn::MirrorImage(_) | GFn::TurretMirror(_) | GFn::Scaling(true) | GFn::StrokeCheck(true));
-        if let Some(&(span, _)) = codes.transforms.iter().filter(|(_, f)| sets(f)).nth(1) {
-            return Err(step.alarm(Rule::NotSupported, span, "two of G68, G51, G51.1/G50.1 and G22 in one block are not simulated: give each its own block"));
+    if !codes.transforms.is_empty() && set_transforms(step, words, codes)? {
+        // The block's group 01 code is in force for the blocks after it.
+        if let Some((_, m)) = codes.motion {
+            step.st.motion = m;
         }
-        if codes.transforms.iter().any(|(_, f)| !matches!(f, GFn::StrokeCheck(_))) && (step.st.drill.kind.is_some() || codes.drill.is_some()) {
-            let (span, _) = codes.transforms[0];
-            return Err(step.alarm(Rule::NotSupported, span, "a coordinate rotation, scaling or mirror image set or ended in a drilling cycle is not simulated: cancel the cycle (G80) first"));
+        return finish_block(step, words, codes, after, switches);
+    }
+    programmed_coordinates(step, words, codes, has_axis)?;
+    let mut non_modal = codes.non_modal;
+    if let Some((span, GFn::MachineCoordinates)) = non_modal {
+        if frame::machine_move(step, words, span)? {
+            return finish_block(step, words, codes, after, switches);
         }
-        // The centres default to where the tool is, in programmed coordinates.
-        let here = step.st.pos;
-        if transform::moves_records(&t) {
-            step.st.pos = transform::programmed(&t, here);
-        }
-        let mut set = Ok(false);
-        let mut order: Vec<(Span, GFn)> = codes.transforms.iter().filter(|(_, f)| !sets(f)).copied().collect();
-        order.extend(codes.transforms.iter().filter(|(_, f)| sets(f)).copied());
-        for (span, f) in order {
-            set = match f {
-                GFn::Rotation(on) => transform::rotation(step, &mut words, on, span).map(|_| on),
-                GFn::MirrorImage(on) => transform::mirror_image(step, &mut words, on, span).map(|_| true),
-                GFn::TurretMirror(on) => transform::turret_mirror(step, on, span).map(|_| true),
-                GFn::Scaling(on) => transform::scaling(step, &mut words, on, span).map(|_| on),
-                GFn::StrokeCheck(on) => stroke::set(step, &mut words, on, span).map(|_| on),
-                _ => unreachable!("only transform codes are noted here"),
-            };
-            if set.is_err() {
-                break;
-            }
-        }
-        step.st.pos = here;
-        if set? {
-            // The block's group 01 code is in force for the blocks after it.
-            if let Some((_, m)) = codes.motion {
-                step.st.motion = m;
-            }
-            return finish_block(step, &words, &codes, after, switches);
+        // Ignored in incremental: the block runs as without it.
+        non_modal = None;
+    }
+    match non_modal {
+        Some(code) => one_shot(step, words, code)?,
+        None => modal_motion(step, words, codes, has_axis, run_deg)?,
+    }
+    finish_block(step, words, codes, after, switches)
+}
+
+/// Step 10 of [`run_block`]: G68/G69, G51.1/G50.1, G51/G50 and G22/G23 set or end a transform
+/// (the cancels first); whether one was set (the block then makes no move: its axis words are
+/// the transform's).
+fn set_transforms(step: &mut Step, words: &mut Words, codes: &Codes) -> Result<bool, Diagnostic> {
+    let t = step.st.transform;
+    // The codes that set an area or a transform take the block's axis words: one of them
+    // per block; the cancels run first.
+    let sets = |f: &GFn| matches!(f, GFn::Rotation(true) | GFn::MirrorImage(_) | GFn::TurretMirror(_) | GFn::Scaling(true) | GFn::StrokeCheck(true));
+    if let Some(&(span, _)) = codes.transforms.iter().filter(|(_, f)| sets(f)).nth(1) {
+        return Err(step.alarm(Rule::NotSupported, span, "two of G68, G51, G51.1/G50.1 and G22 in one block are not simulated: give each its own block"));
+    }
+    if codes.transforms.iter().any(|(_, f)| !matches!(f, GFn::StrokeCheck(_))) && (step.st.drill.kind.is_some() || codes.drill.is_some()) {
+        let (span, _) = codes.transforms[0];
+        return Err(step.alarm(Rule::NotSupported, span, "a coordinate rotation, scaling or mirror image set or ended in a drilling cycle is not simulated: cancel the cycle (G80) first"));
+    }
+    // The centres default to where the tool is, in programmed coordinates.
+    let here = step.st.pos;
+    if transform::moves_records(&t) {
+        step.st.pos = transform::programmed(&t, here);
+    }
+    let mut set = Ok(false);
+    let mut order: Vec<(Span, GFn)> = codes.transforms.iter().filter(|(_, f)| !sets(f)).copied().collect();
+    order.extend(codes.transforms.iter().filter(|(_, f)| sets(f)).copied());
+    for (span, f) in order {
+        set = match f {
+            GFn::Rotation(on) => transform::rotation(step, words, on, span).map(|_| on),
+            GFn::MirrorImage(on) => transform::mirror_image(step, words, on, span).map(|_| true),
+            GFn::TurretMirror(on) => transform::turret_mirror(step, on, span).map(|_| true),
+            GFn::Scaling(on) => transform::scaling(step, words, on, span).map(|_| on),
+            GFn::StrokeCheck(on) => stroke::set(step, words, on, span).map(|_| on),
+            _ => unreachable!("only transform codes are noted here"),
+        };
+        if set.is_err() {
+            break;
         }
     }
+    step.st.pos = here;
+    set
+}
+
+/// Step 10 of [`run_block`]: under a transform the block is worked out in programmed
+/// coordinates (what is not simulated there alarms).
+fn programmed_coordinates(step: &mut Step, words: &Words, codes: &Codes, has_axis: bool) -> Result<(), Diagnostic> {
     // Under a transform the block is worked out in programmed coordinates.
     let t = step.st.transform;
     if transform::moves_records(&t) {
@@ -1574,87 +1712,87 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
         step.st.pos = transform::programmed(&t, step.st.pos);
         step.carry = Some(t);
     }
-    let mut non_modal = codes.non_modal;
-    if let Some((span, GFn::MachineCoordinates)) = non_modal {
-        if frame::machine_move(step, &mut words, span)? {
-            return finish_block(step, &words, &codes, after, switches);
-        }
-        // Ignored in incremental: the block runs as without it.
-        non_modal = None;
-    }
-    match non_modal {
-        Some((_, GFn::Dwell)) => dwell(step, &mut words)?,
-        Some((_, GFn::CompoundThread(kind))) => compound::compound(step, &mut words, kind)?,
-        Some((_, GFn::PeckCycle(kind))) => groove::block(step, &mut words, kind)?,
-        Some((_, GFn::Rough(kind))) => rough::block(step, &mut words, kind)?,
-        Some((_, GFn::Finish)) => rough::finishing(step, &mut words)?,
-        Some((span, GFn::ReferenceReturn)) => frame::reference_return(step, &mut words, 1, span)?,
-        Some((span, GFn::FromReference)) => frame::from_reference(step, &mut words, span)?,
-        Some((span, GFn::OtherReferenceReturn)) => {
-            let n = frame::other_reference(step, &mut words)?;
-            frame::reference_return(step, &mut words, n, span)?;
-        }
-        Some((_, GFn::LatheCoordinateSet | GFn::MillCoordinateSet)) => frame::set_coordinates(step, &mut words)?,
-        Some((_, GFn::LocalCoordinates)) => frame::local(step, &mut words)?,
-        Some((span, GFn::DataSetting)) => step.out.table_write = frame::data_setting(step, &mut words, span)?,
-        // G11 outside the data lines: nothing to end (FANUC and GSK texts say nothing; inferred).
-        Some((_, GFn::DataSettingEnd)) => {}
-        Some((span, GFn::CornerArc)) => comp::corner_arc(step, &mut words, span)?,
-        Some((span, GFn::OffsetMove(factor))) => frame::offset_move(step, &mut words, factor, span)?,
-        Some((span, GFn::ReferenceCheck)) => frame::reference_check(step, &mut words, span)?,
-        Some((span, GFn::Skip)) => skip(step, &mut words, span)?,
-        Some((span, GFn::ToolMeasure(axis))) => tool_measure(step, &mut words, axis, span)?,
-        Some((_, GFn::SingleDirection)) => single_direction(step, &mut words)?,
-        Some(_) => unreachable!("only one-shot functions are stored"),
-        None => {
-            if let Some((span, f)) = codes.polar_interp {
-                polar::switch(step, &mut words, f, span)?;
-                return finish_block(step, &words, &codes, after, switches);
-            }
-            if let Some((_, m)) = codes.motion {
-                step.st.motion = m;
-            }
-            if step.st.polar_interp.is_some() && has_axis && !matches!(step.st.motion, Motion::Linear | Motion::ArcCw | Motion::ArcCcw) {
-                return Err(step.alarm(Rule::ImproperGCode, step.span, "a move in polar coordinate interpolation (G12.1) is G01, G02 or G03 (FANUC 0i-T manual)"));
-            }
-            let drill_kind = codes.drill.or(step.st.drill.kind);
-            if let Some(kind) = drill_kind {
-                drill::block(step, &mut words, kind, codes.drill.is_some())?;
-                return finish_block(step, &words, &codes, after, switches);
-            }
-            if let Motion::Thread(cmd) = step.st.motion {
-                if has_axis {
-                    thread::block(step, &mut words, cmd, codes.motion.is_some(), run_deg)?;
-                }
-                return finish_block(step, &words, &codes, after, switches);
-            }
-            if let Motion::Box(kind) = step.st.motion {
-                if has_axis || words.has(step.profile.box_taper) {
-                    turning::block(step, &mut words, kind)?;
-                }
-                return finish_block(step, &words, &codes, after, switches);
-            }
-            if let Motion::Curve(kind) = step.st.motion {
-                // Without an end point the curve's own words still count (help text G6.2 note 6);
-                // P is left out: M98/M99 and the spindle selection take it too.
-                if has_axis || b"IJKABQ".iter().any(|l| words.has_unused(*l)) {
-                    curve::block(step, &mut words, kind)?;
-                }
-                return finish_block(step, &words, &codes, after, switches);
-            }
-            let arc_words = matches!(step.st.motion, Motion::ArcCw | Motion::ArcCcw) && b"RIJK".iter().any(|l| words.has(*l));
-            // A rotary axis the setup declares moves in G00/G01 alone too (FANUC 0-M G91 A45.).
-            let rotary_words = step.tables.rotary.iter().any(|r| *r) && b"ABCH".iter().any(|l| step.tables.added_addresses.contains(*l) && words.has(*l));
-            // A line given by its angle alone (docs/commands/drawing.md) moves too.
-            let angle_word = step.profile.frame.drawing.is_some_and(|d| words.has(d.angle)) && matches!(step.st.motion, Motion::Rapid | Motion::Linear);
-            let motion_words = has_axis || arc_words || angle_word || (rotary_words && matches!(step.st.motion, Motion::Rapid | Motion::Linear));
-            if motion_words {
-                motion(step, &mut words)?;
-            }
-        }
-    }
+    Ok(())
+}
 
-    finish_block(step, &words, &codes, after, switches)
+/// Step 10 of [`run_block`]: the one-shot (group 00) code.
+fn one_shot(step: &mut Step, words: &mut Words, code: (Span, GFn)) -> Result<(), Diagnostic> {
+    match code {
+    (_, GFn::Dwell) => dwell(step, words)?,
+    (_, GFn::CompoundThread(kind)) => compound::compound(step, words, kind)?,
+    (_, GFn::PeckCycle(kind)) => groove::block(step, words, kind)?,
+    (_, GFn::Rough(kind)) => rough::block(step, words, kind)?,
+    (_, GFn::Finish) => rough::finishing(step, words)?,
+    (span, GFn::ReferenceReturn) => frame::reference_return(step, words, 1, span)?,
+    (span, GFn::FromReference) => frame::from_reference(step, words, span)?,
+    (span, GFn::OtherReferenceReturn) => {
+        let n = frame::other_reference(step, words)?;
+        frame::reference_return(step, words, n, span)?;
+    }
+    (_, GFn::LatheCoordinateSet | GFn::MillCoordinateSet) => frame::set_coordinates(step, words)?,
+    (_, GFn::LocalCoordinates) => frame::local(step, words)?,
+    (span, GFn::DataSetting) => step.out.table_write = frame::data_setting(step, words, span)?,
+    // G11 outside the data lines: nothing to end (FANUC and GSK texts say nothing; inferred).
+    (_, GFn::DataSettingEnd) => {}
+    (span, GFn::CornerArc) => comp::corner_arc(step, words, span)?,
+    (span, GFn::OffsetMove(factor)) => frame::offset_move(step, words, factor, span)?,
+    (span, GFn::ReferenceCheck) => frame::reference_check(step, words, span)?,
+    (span, GFn::Skip) => skip(step, words, span)?,
+    (span, GFn::ToolMeasure(axis)) => tool_measure(step, words, axis, span)?,
+    (_, GFn::SingleDirection) => single_direction(step, words)?,
+    _ => unreachable!("only one-shot functions are stored"),
+    }
+    Ok(())
+}
+
+/// Step 10 of [`run_block`]: the motion of the mode in force (a polar interpolation switch, a
+/// drilling cycle, a thread, a box cycle, a curve, G00-G03).
+fn modal_motion(step: &mut Step, words: &mut Words, codes: &Codes, has_axis: bool, run_deg: Option<f64>) -> Result<(), Diagnostic> {
+    if let Some((span, f)) = codes.polar_interp {
+        polar::switch(step, words, f, span)?;
+        return Ok(());
+    }
+    if let Some((_, m)) = codes.motion {
+        step.st.motion = m;
+    }
+    if step.st.polar_interp.is_some() && has_axis && !matches!(step.st.motion, Motion::Linear | Motion::ArcCw | Motion::ArcCcw) {
+        return Err(step.alarm(Rule::ImproperGCode, step.span, "a move in polar coordinate interpolation (G12.1) is G01, G02 or G03 (FANUC 0i-T manual)"));
+    }
+    let drill_kind = codes.drill.or(step.st.drill.kind);
+    if let Some(kind) = drill_kind {
+        drill::block(step, words, kind, codes.drill.is_some())?;
+        return Ok(());
+    }
+    if let Motion::Thread(cmd) = step.st.motion {
+        if has_axis {
+            thread::block(step, words, cmd, codes.motion.is_some(), run_deg)?;
+        }
+        return Ok(());
+    }
+    if let Motion::Box(kind) = step.st.motion {
+        if has_axis || words.has(step.profile.box_taper) {
+            turning::block(step, words, kind)?;
+        }
+        return Ok(());
+    }
+    if let Motion::Curve(kind) = step.st.motion {
+        // Without an end point the curve's own words still count (help text G6.2 note 6);
+        // P is left out: M98/M99 and the spindle selection take it too.
+        if has_axis || b"IJKABQ".iter().any(|l| words.has_unused(*l)) {
+            curve::block(step, words, kind)?;
+        }
+        return Ok(());
+    }
+    let arc_words = matches!(step.st.motion, Motion::ArcCw | Motion::ArcCcw) && b"RIJK".iter().any(|l| words.has(*l));
+    // A rotary axis the setup declares moves in G00/G01 alone too (FANUC 0-M G91 A45.).
+    let rotary_words = step.tables.rotary.iter().any(|r| *r) && b"ABCH".iter().any(|l| step.tables.added_addresses.contains(*l) && words.has(*l));
+    // A line given by its angle alone (docs/commands/drawing.md) moves too.
+    let angle_word = step.profile.frame.drawing.is_some_and(|d| words.has(d.angle)) && matches!(step.st.motion, Motion::Rapid | Motion::Linear);
+    let motion_words = has_axis || arc_words || angle_word || (rotary_words && matches!(step.st.motion, Motion::Rapid | Motion::Linear));
+    if motion_words {
+        motion(step, words)?;
+    }
+    Ok(())
 }
 
 /// The G codes of the profile a block's words name, in the order written (words that are not a
