@@ -414,6 +414,21 @@ fn place(base: Vec3, (l, c): (usize, usize), lv: f64, cv: f64) -> Vec3 {
     v
 }
 
+/// A type II contour's pockets: each turn from going deeper to coming out again (help text
+/// type II, 2), at most [`MAX_POCKETS`]; with pockets, an allowance along the cut axis is told.
+fn count_pockets(r: &Roughing, pts: &[Vec3], dir_l: f64, notes: &mut Vec<RoughNote>) -> Result<(), RoughError> {
+    let (l, c) = r.kind.axes();
+    let runs = direction_runs(pts.iter().map(|p| p.axis(l) * dir_l), r.tolerance_mm);
+    let pockets = runs.windows(2).filter(|w| w[0] > 0.0 && w[1] < 0.0).count();
+    if pockets > MAX_POCKETS {
+        return Err(RoughError::TooManyPockets);
+    }
+    if pockets > 0 && r.allowance.axis(c) != 0.0 {
+        notes.push(RoughNote::AllowanceMovesPocketWalls);
+    }
+    Ok(())
+}
+
 /// Steps 2-6 of type II. At each level (Δd apart from A', strictly short of the contour's
 /// deepest point) the stretches of the cut axis where the contour lies deeper than the level are
 /// cut in order from A's side: the first, if it starts on A's side, as in type I (move to the
@@ -445,15 +460,7 @@ fn levels_type_two(
     // Outward, away from the part: the way the tool backs off.
     let out = -dir_l;
     let e = r.back_off_mm;
-    // Pockets: each turn from going deeper to coming out again (help text type II, 2).
-    let runs = direction_runs(pts.iter().map(|p| p.axis(l) * dir_l), r.tolerance_mm);
-    let pockets = runs.windows(2).filter(|w| w[0] > 0.0 && w[1] < 0.0).count();
-    if pockets > MAX_POCKETS {
-        return Err(RoughError::TooManyPockets);
-    }
-    if pockets > 0 && r.allowance.axis(c) != 0.0 {
-        notes.push(RoughNote::AllowanceMovesPocketWalls);
-    }
+    count_pockets(r, pts, dir_l, notes)?;
     let at = |lv: f64, cv: f64| place(a1, axes, lv, cv);
     // How far along the cut axis the levels reach (for the check after them).
     let mut reach = a1.axis(c);

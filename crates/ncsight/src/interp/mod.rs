@@ -660,6 +660,18 @@ impl Interpreter {
         }
         let before = self.state;
         let held_before = self.held();
+        let result = self.run_through_stages(block, out).and_then(|()| self.apply_effects(block, out));
+        if result.is_err() {
+            out.clear();
+            self.roll_back(before, held_before);
+        }
+        result
+    }
+
+    /// The block run, through the look-ahead stages (corners, compensation), with the alarms
+    /// found only by moving (the motion cap, a soft limit, G22, a compensated path with no
+    /// solution); its records marked where single block stops.
+    fn run_through_stages(&mut self, block: &Block, out: &mut Outcome) -> Result<(), Diagnostic> {
         let repair = self.switches.repair_position;
         let mut step = Step { profile: self.profile, params: &self.params, tables: &self.tables, queue: &mut self.comp_queue, corners: &mut self.corner_queue, bypass_comp: false, contour: false, repair, span: block.span, n: block.sequence, st: &mut self.state, carry: None, out };
         let result = run_block(&mut step, block, self.switches).and_then(|()| {
@@ -701,11 +713,7 @@ impl Interpreter {
                 result = Err(step.alarm(Rule::StrokeCheck2, span, why));
             }
         }
-        if let Err(d) = result {
-            step.out.clear();
-            self.roll_back(before, held_before);
-            return Err(d);
-        }
+        result?;
         // Single block stops after the block's last record (a held-back thread run end carries
         // its own mark). In radius compensation a block's move is made during a later block: each
         // block's last record made here is its end, unless a move of it is still held.
@@ -729,6 +737,13 @@ impl Interpreter {
         } else if let Some(last) = step.out.records.iter_mut().rev().find(|r| r.span == block.span) {
             last.block_end = true;
         }
+        Ok(())
+    }
+
+    /// What the block asks of the machine's tables and of the programme once it has run: a
+    /// parameter line's values, G10's table write, a roughing's contour to collect, G70's
+    /// contour to run (the caller rolls the block back if one of those alarms).
+    fn apply_effects(&mut self, block: &Block, out: &mut Outcome) -> Result<(), Diagnostic> {
         // A parameter line: checked when it was read (frame::data_line).
         for (key, value) in out.param_writes.drain(..) {
             self.params.set(key, value).expect("checked by the parameter line");
@@ -743,18 +758,12 @@ impl Interpreter {
         }
         if let Some(req) = out.rough_request.take() {
             if self.replaying {
-                self.roll_back(before, held_before);
-                out.clear();
                 return Err(self.contour_alarm(Rule::ContourCommand, block.span, format!("{} cannot run inside the contour that G70 is finishing", req.kind.code())));
             }
             self.collecting = Some((*req, Vec::new()));
         }
         if let Some(req) = out.finish_request.take() {
-            if let Err(d) = self.finish_contour(req, out) {
-                self.roll_back(before, held_before);
-                out.clear();
-                return Err(d);
-            }
+            self.finish_contour(req, out)?;
         }
         Ok(())
     }
@@ -872,30 +881,7 @@ fn collect<'w>(
         // The GSK980TDi's G32.1 gives its start angle with C (help text G32.1), C axis or not.
         let rigid_start = letter == b'C' && profile.thread.g32_1.start_c && rigid_block();
         if !profile.takes_address(letter) && !step.tables.added_addresses.contains(letter) && !hypothetical && !rigid_start && !not_yet() {
-            let d = step.alarm(
-                Rule::ImproperAddress,
-                w.span,
-                if matches!(letter, b'A' | b'B' | b'C' | b'Y') {
-                    format!("address {} is not used on {} ({}): a machine with this axis declares it in the setup ([machine] axes)", letter as char, profile.name, w.text())
-                } else {
-                    format!("address {} is not used on {} ({})", crate::read::address_name(letter), profile.name, w.text())
-                },
-            );
-            // A comma word is FANUC's drawing dimensions: say how this controller writes them.
-            return Err(if letter.is_ascii_lowercase() {
-                d.with_hint(match profile.frame.drawing {
-                    Some(r) => format!(
-                        "{} writes a chamfer as {}, a corner arc as {} and a line's angle as {} (docs/commands/drawing.md)",
-                        profile.name,
-                        crate::read::address_name(r.chamfer),
-                        crate::read::address_name(r.round),
-                        crate::read::address_name(r.angle)
-                    ),
-                    None => "',A', ',C' and ',R' are FANUC's drawing dimensions; this controller has none: program the corner's moves".to_string(),
-                })
-            } else {
-                d
-            });
+            return Err(improper_address(step, w));
         }
         match letter {
             b'G' => {
@@ -942,6 +928,36 @@ fn collect<'w>(
         }
     }
     Ok((gs, ms))
+}
+
+/// A word whose address this controller does not read: the alarm, with how this controller
+/// writes a drawing dimension when the word is FANUC's comma one.
+fn improper_address(step: &Step, w: &Word) -> Diagnostic {
+    let (profile, letter) = (step.profile, w.letter);
+    let d = step.alarm(
+        Rule::ImproperAddress,
+        w.span,
+        if matches!(letter, b'A' | b'B' | b'C' | b'Y') {
+            format!("address {} is not used on {} ({}): a machine with this axis declares it in the setup ([machine] axes)", letter as char, profile.name, w.text())
+        } else {
+            format!("address {} is not used on {} ({})", crate::read::address_name(letter), profile.name, w.text())
+        },
+    );
+    // A comma word is FANUC's drawing dimensions: say how this controller writes them.
+    if letter.is_ascii_lowercase() {
+        d.with_hint(match profile.frame.drawing {
+            Some(r) => format!(
+                "{} writes a chamfer as {}, a corner arc as {} and a line's angle as {} (docs/commands/drawing.md)",
+                profile.name,
+                crate::read::address_name(r.chamfer),
+                crate::read::address_name(r.round),
+                crate::read::address_name(r.angle)
+            ),
+            None => "',A', ',C' and ',R' are FANUC's drawing dimensions; this controller has none: program the corner's moves".to_string(),
+        })
+    } else {
+        d
+    }
 }
 
 /// What one block asks for after its G codes are sorted.

@@ -291,12 +291,21 @@ impl Interpreter {
             // Otherwise each block's end made its move (corner::end_of_block): nothing is held.
             debug_assert!(corners.is_empty());
         }
+        let (ns_move, moves) = self.split_contour(code, blocks, &scratch.records, after_ns, ns_corner)?;
+        let notes = ContourNotes { feed_warned: st.feed_warned, increment_words: scratch.increment_words, increment_words_small: scratch.increment_words_small, comp: comp_at_ns };
+        Ok((ns_move, moves, scratch.warnings, notes))
+    }
+
+    /// The contour's records split into the ns block's one G00 or G01 move and the moves
+    /// after it (help text notes 1, 2 and 7). `after_ns`: the motion mode and position after
+    /// the ns block; `ns_corner`: a corner asked for in the ns block.
+    fn split_contour(&self, code: &str, blocks: &[Block], records: &[crate::motion::Record], after_ns: Option<(Motion, Vec3)>, ns_corner: bool) -> Result<(Op, Vec<Op>), Diagnostic> {
         // Help text notes 1 and 2: the ns block makes one G00 or G01 move.
         let ns_span = blocks[0].span;
         // A corner asked for in the ns block (its chamfer, after its move) belongs to the contour.
-        let first_ns = scratch.records.iter().position(|r| r.span == ns_span && r.op.end_point().is_some());
+        let first_ns = records.iter().position(|r| r.span == ns_span && r.op.end_point().is_some());
         let in_contour = |i: usize, r: &crate::motion::Record| r.span != ns_span || (ns_corner && first_ns.is_some_and(|f| i > f) && r.op.end_point().is_some());
-        let ns_moves: Vec<&Op> = scratch.records.iter().enumerate().filter(|(i, r)| r.span == ns_span && r.op.end_point().is_some() && !in_contour(*i, r)).map(|(_, r)| &r.op).collect();
+        let ns_moves: Vec<&Op> = records.iter().enumerate().filter(|(i, r)| r.span == ns_span && r.op.end_point().is_some() && !in_contour(*i, r)).map(|(_, r)| &r.op).collect();
         let axis_word = blocks[0].words.iter().any(|w| b"XZUW".contains(&w.letter));
         let ns_move = match (ns_moves.as_slice(), after_ns) {
             ([op @ (Op::Rapid { .. } | Op::Feed { .. })], _) => (*op).clone(),
@@ -314,7 +323,7 @@ impl Interpreter {
             }
         };
         let mut moves = Vec::new();
-        for r in scratch.records.iter().enumerate().filter(|(i, r)| in_contour(*i, r)).map(|(_, r)| r) {
+        for r in records.iter().enumerate().filter(|(i, r)| in_contour(*i, r)).map(|(_, r)| r) {
             match r.op {
                 Op::Rapid { .. } | Op::Feed { .. } | Op::Arc { .. } => moves.push(r.op.clone()),
                 // Note 7: S, T and M in the contour do nothing during roughing.
@@ -331,8 +340,7 @@ impl Interpreter {
         if moves.is_empty() {
             return Err(self.contour_alarm(Rule::ContourCommand, ns_span, format!("{code}: the contour has no move after its first block")));
         }
-        let notes = ContourNotes { feed_warned: st.feed_warned, increment_words: scratch.increment_words, increment_words_small: scratch.increment_words_small, comp: comp_at_ns };
-        Ok((ns_move, moves, scratch.warnings, notes))
+        Ok((ns_move, moves))
     }
 
     /// Rough the collected contour (the records carry the G71/G72 block's span).
