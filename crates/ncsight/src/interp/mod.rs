@@ -460,7 +460,8 @@ impl Step<'_> {
 
     /// Spindle speed at a point (G96 makes it depend on the diameter), signed.
     fn rpm_at(&self, p: &Vec3) -> f64 {
-        let dia = self.css_axis().map_or(0.0, |k| 2.0 * p.axis(k));
+        // Without G96 the speed is S whatever the diameter (the parameter is not read).
+        let dia = if self.st.css { self.css_axis().map_or(0.0, |k| 2.0 * p.axis(k)) } else { 0.0 };
         self.st.rpm_at(dia, MAX_RPM)
     }
 
@@ -513,7 +514,7 @@ impl Step<'_> {
                 format!("{}: feed per revolution (F{} mm/rev) with the spindle stopped or at S0", what.name(self.profile), crate::alarm::shown(f, 4)),
             ));
         }
-        Ok(CutFeed { f, per_rev: self.st.per_rev, max_mm_min: self.params.feed_max_mm_min(), spindle: self.st.spindle_speed(MAX_RPM), css_axis: self.css_axis() })
+        Ok(CutFeed { f, per_rev: self.st.per_rev, max_mm_min: self.params.feed_max_mm_min(), spindle: self.st.spindle_speed(MAX_RPM), css_axis: if self.st.css { self.css_axis() } else { None } })
     }
 }
 
@@ -1703,8 +1704,8 @@ fn set_transforms(step: &mut Step, words: &mut Words, codes: &Codes) -> Result<b
 /// coordinates (what is not simulated there alarms).
 fn programmed_coordinates(step: &mut Step, words: &Words, codes: &Codes, has_axis: bool) -> Result<(), Diagnostic> {
     // Under a transform the block is worked out in programmed coordinates.
-    let t = step.st.transform;
-    if transform::moves_records(&t) {
+    if transform::moves_records(&step.st.transform) {
+        let t = step.st.transform;
         let what = match codes.non_modal {
             Some((_, GFn::Dwell)) | None => None,
             Some((span, f)) => Some((span, step.profile.name_of(f))),
