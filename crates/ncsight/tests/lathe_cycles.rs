@@ -260,3 +260,37 @@ fn a_deferred_roughing_beyond_a_soft_limit_alarms_as_the_ordinary_path() {
     assert!(r1.iter().all(|r| r.span.line != 4), "nothing of the roughing is made");
     assert_eq!(r1.len(), r2.len());
 }
+
+/// A G74 face peck of some 25,000 pecks (Q4: 0.004 mm over 101 mm, about 50,500 moves) with a
+/// back-off, and a G75 across two grooves: made as they are handed on when the consumer takes
+/// each record as it comes, record for record, block end and time what the ordinary path (the
+/// pull iterator) makes.
+#[test]
+fn a_deferred_peck_cycle_makes_the_records_the_ordinary_path_makes() {
+    let text = "G97 S800 M03\nG99 G0 X0 Z1\nG74 R0.002\nG74 Z-100 Q4 F0.05\nG0 X42 Z-10\nG75 X20 Z-12 P8 Q2000 F0.05\nG0 X100 Z50\nM30\n";
+    let (deferred, d1) = common::run_pushed("gsk980tdi", None, text);
+    let (ordinary, d2) = run(text);
+    assert_eq!((alarm(&d1), alarm(&d2)), (None, None), "{d1:?} {d2:?}");
+    assert!(deferred.len() > 50_000, "{} records", deferred.len());
+    assert_eq!(deferred.len(), ordinary.len());
+    for (k, (a, b)) in deferred.iter().zip(&ordinary).enumerate() {
+        assert_eq!((a.span, a.op, a.block_end, a.t_s), (b.span, b.op, b.block_end, b.t_s), "record {k}");
+    }
+    // One single-block stop for each cycle block, after its last move.
+    assert_eq!(deferred.iter().filter(|r| r.block_end && (r.span.line == 4 || r.span.line == 6)).count(), 2);
+}
+
+/// G74 with Q1 (a micrometre) over 400 mm: 400,000 pecks, 800,000 moves, which a GSK980TDi runs
+/// and ncsight used to refuse (NCS-E40). Pushed, it runs to its end; the pull iterator, which
+/// would hold them, stops at the cap.
+#[test]
+fn a_peck_cycle_past_the_cap_runs_pushed_and_alarms_pulled() {
+    let text = "G97 S800 M03\nG99 G0 X0 Z1\nG74 R0.0005\nG74 Z-400 Q1 F0.05\nG0 X100 Z50\nM30\n";
+    let (records, diags) = common::run_pushed("gsk980tdi", None, text);
+    assert_eq!(alarm(&diags), None, "{diags:?}");
+    let pecks = records.iter().filter(|r| r.span.line == 4 && matches!(r.op, Op::Feed { .. })).count();
+    assert_eq!(pecks, 401_000);
+    assert!(records.iter().any(|r| r.span.line == 4 && matches!(r.op, Op::Feed { to, .. } if to.z == -400.0)));
+    let (_, pulled) = run(text);
+    assert_eq!(alarm(&pulled), Some("NCS-E40"));
+}

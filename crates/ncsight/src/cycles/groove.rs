@@ -49,71 +49,121 @@ pub enum PeckError {
 
 /// The moves of one cycle block, at most `limit` of them.
 pub fn expand(c: &PeckCycle, limit: usize) -> Result<Vec<Move>, PeckError> {
+    let plan = lay_out(c, limit)?;
+    let mut out = Vec::with_capacity(plan.move_count().min(limit));
+    plan.each_move(&mut |m| {
+        out.push(m);
+        std::ops::ControlFlow::Continue(())
+    });
+    if out.len() > limit {
+        return Err(PeckError::TooMany);
+    }
+    Ok(out)
+}
+
+/// A cycle block laid out: its pecks and grooves counted (once: a sum of many small steps would
+/// drift past the end), its moves made one at a time by [`PeckPlan::each_move`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PeckPlan {
+    c: PeckCycle,
+    pecks: usize,
+    grooves: usize,
+}
+
+/// Lay out one cycle block: the peck and the step checked, the pecks per groove and the grooves
+/// counted; more than `limit` pecks in all is [`PeckError::TooMany`].
+pub fn lay_out(c: &PeckCycle, limit: usize) -> Result<PeckPlan, PeckError> {
     let (p, s) = c.kind.axes();
-    let (p0, p_end) = (c.start.axis(p), c.end.axis(p));
-    let (s0, s_end) = (c.start.axis(s), c.end.axis(s));
-    let dir_p = (p_end - p0).signum();
-    let dir_s = (s_end - s0).signum();
-    let depth = (p_end - p0).abs();
-    let across = (s_end - s0).abs();
+    let depth = (c.end.axis(p) - c.start.axis(p)).abs();
+    let across = (c.end.axis(s) - c.start.axis(s)).abs();
     if depth > 0.0 && c.peck_mm <= 0.0 {
         return Err(PeckError::NoPeck);
     }
     if across > 0.0 && c.step_mm <= 0.0 {
         return Err(PeckError::NoStep);
     }
-    let at = |pv: f64, sv: f64| {
-        let mut v = c.start;
-        v.set_axis(p, pv);
-        v.set_axis(s, sv);
-        v
-    };
-    let mut out = Vec::new();
-    let push = |m: Move, out: &mut Vec<Move>| {
-        out.push(m);
-        if out.len() > limit {
-            Err(PeckError::TooMany)
-        } else {
-            Ok(())
-        }
-    };
-    // Counts worked out once (a sum of many small steps would drift past the end).
     let count = |total: f64, each: f64| if total > 0.0 { ((total / each) - 1e-9).ceil().max(1.0) } else { 0.0 };
     let (pecks, grooves) = (count(depth, c.peck_mm), count(across, c.step_mm) + 1.0);
     if pecks * grooves * 2.0 > limit as f64 {
         return Err(PeckError::TooMany);
     }
-    let (pecks, grooves) = (pecks as usize, grooves as usize);
-    for g in 0..grooves {
-        let sv = s0 + dir_s * (g as f64 * c.step_mm).min(across);
-        if g > 0 {
+    Ok(PeckPlan { c: *c, pecks: pecks as usize, grooves: grooves as usize })
+}
+
+impl PeckPlan {
+    /// How many moves the cycle makes at most: per groove the step over, a feed and a back-off
+    /// per peck, the relief and the way out; then the way back.
+    pub fn move_count(&self) -> usize {
+        self.grooves * (2 * self.pecks + 3) + 1
+    }
+
+    /// Hand on the moves in order (the sink may stop them).
+    pub fn each_move(&self, sink: &mut dyn FnMut(Move) -> std::ops::ControlFlow<()>) {
+        let c = &self.c;
+        let (p, s) = c.kind.axes();
+        let (p0, p_end) = (c.start.axis(p), c.end.axis(p));
+        let (s0, s_end) = (c.start.axis(s), c.end.axis(s));
+        let (dir_p, dir_s) = ((p_end - p0).signum(), (s_end - s0).signum());
+        let (depth, across) = ((p_end - p0).abs(), (s_end - s0).abs());
+        let at = |pv: f64, sv: f64| {
+            let mut v = c.start;
+            v.set_axis(p, pv);
+            v.set_axis(s, sv);
+            v
+        };
+        for g in 0..self.grooves {
+            let sv = s0 + dir_s * (g as f64 * c.step_mm).min(across);
             // Step 6: over to the next groove, no further than Af.
-            push(Move::Rapid(at(p0, sv)), &mut out)?;
-        }
-        if depth <= 0.0 {
-            continue;
-        }
-        // Steps 1-3: peck down to the groove's bottom.
-        for i in 1..=pecks {
-            let reached = (i as f64 * c.peck_mm).min(depth);
-            push(Move::Feed(at(p0 + dir_p * reached, sv)), &mut out)?;
-            if i < pecks && c.back_off_mm > 0.0 {
-                push(Move::Rapid(at(p0 + dir_p * (reached - c.back_off_mm).max(0.0), sv)), &mut out)?;
+            if g > 0 && sink(Move::Rapid(at(p0, sv))).is_break() {
+                return;
+            }
+            if depth <= 0.0 {
+                continue;
+            }
+            // Steps 1-3: peck down to the groove's bottom.
+            for i in 1..=self.pecks {
+                let reached = (i as f64 * c.peck_mm).min(depth);
+                if sink(Move::Feed(at(p0 + dir_p * reached, sv))).is_break() {
+                    return;
+                }
+                if i < self.pecks && c.back_off_mm > 0.0 && sink(Move::Rapid(at(p0 + dir_p * (reached - c.back_off_mm).max(0.0), sv))).is_break() {
+                    return;
+                }
+            }
+            // Steps 4-5: the relief along the step axis, back toward the start's side (at every
+            // groove, the first too, as the help text's steps say), out to Dn.
+            let relief_s = sv - dir_s * c.relief_mm;
+            if relief_s != sv && sink(Move::Rapid(at(p_end, relief_s))).is_break() {
+                return;
+            }
+            if sink(Move::Rapid(at(p0, relief_s))).is_break() {
+                return;
             }
         }
-        // Steps 4-5: the relief along the step axis, back toward the start's side (at every
-        // groove, the first too, as the help text's steps say), out to Dn.
-        let relief_s = sv - dir_s * c.relief_mm;
-        if relief_s != sv {
-            push(Move::Rapid(at(p_end, relief_s)), &mut out)?;
+        // Step 7: back to A along the step axis.
+        if across > 0.0 {
+            let _ = sink(Move::Rapid(at(p0, s0)));
         }
-        push(Move::Rapid(at(p0, relief_s)), &mut out)?;
     }
-    // Step 7: back to A along the step axis.
-    if across > 0.0 {
-        push(Move::Rapid(at(p0, s0)), &mut out)?;
+}
+
+impl super::Expansion for PeckPlan {
+    fn move_count(&self) -> usize {
+        PeckPlan::move_count(self)
     }
-    Ok(out)
+
+    fn each_op(&self, sink: &mut dyn FnMut(crate::motion::Op) -> std::ops::ControlFlow<()>) {
+        use crate::motion::Op;
+        let mut from = self.c.start;
+        self.each_move(&mut |m| {
+            let op = match m {
+                Move::Rapid(to) => Op::Rapid { from, to },
+                Move::Feed(to) => Op::Feed { from, to, feed_mm_min: 0.0 },
+            };
+            from = op.end_point().unwrap_or(from);
+            sink(op)
+        });
+    }
 }
 
 #[cfg(test)]

@@ -301,6 +301,16 @@ impl Mover<'_> {
     }
 }
 
+impl super::Expansion for RoughPlan {
+    fn move_count(&self) -> usize {
+        RoughPlan::move_count(self)
+    }
+
+    fn each_op(&self, sink: &mut dyn FnMut(Op) -> std::ops::ControlFlow<()>) {
+        RoughPlan::each_op(self, sink)
+    }
+}
+
 impl RoughPlan {
     /// How many moves the roughing makes at most (a count, nothing made).
     pub fn move_count(&self) -> usize {

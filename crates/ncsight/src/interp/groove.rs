@@ -5,10 +5,11 @@ use super::compound::increments;
 use super::words::Words;
 use super::{axis_target, Step};
 use crate::alarm::{Diagnostic, Rule};
-use crate::cycles::groove::{expand, Move, PeckCycle, PeckError, PeckKind};
-use crate::motion::Op;
+use super::deferred::{DEFER_MOVES, MAX_DEFERRED_MOVES};
+use crate::cycles::groove::{lay_out, PeckCycle, PeckError, PeckKind};
 
-/// At most this many moves in one block (a peck far too small for the depth).
+/// At most this many moves held for one block where they cannot be deferred (a peck far too
+/// small for the depth).
 const MAX_MOVES: usize = super::MAX_MOTIONS_PER_BLOCK;
 
 pub(super) fn block(step: &mut Step, words: &mut Words, kind: PeckKind) -> Result<(), Diagnostic> {
@@ -53,22 +54,22 @@ pub(super) fn block(step: &mut Step, words: &mut Words, kind: PeckKind) -> Resul
         step_mm,
         relief_mm,
     };
-    let moves = expand(&cycle, MAX_MOVES).map_err(|e| {
+    let plan = lay_out(&cycle, MAX_DEFERRED_MOVES).map_err(|e| {
         let (peck_name, step_name) = if kind == PeckKind::Face { ("Q(Δk)", "P(Δi)") } else { ("P(Δi)", "Q(Δk)") };
         let (rule, msg) = match e {
             PeckError::NoPeck => (Rule::MissingWord, format!("{code}: the end point is deeper than the start but the peck {peck_name} is missing or 0")),
             PeckError::NoStep => (Rule::MissingWord, format!("{code}: the end point lies across from the start but the step {step_name} is missing or 0")),
-            PeckError::TooMany => (Rule::MotionLimit, format!("{code}: more than {MAX_MOVES} moves in one block (the peck or step is too small)")),
+            PeckError::TooMany => (Rule::MotionLimit, format!("{code}: more than {MAX_DEFERRED_MOVES} moves in one block (the peck or step is too small)")),
         };
         step.alarm(rule, step.span, msg)
     })?;
-    for m in moves {
-        let from = step.st.pos;
-        let op = match m {
-            Move::Rapid(to) => Op::Rapid { from, to },
-            Move::Feed(to) => Op::Feed { from, to, feed_mm_min: 0.0 },
-        };
-        step.emit_cut(code, op)?;
+    // Past what a block holds its moves are made as they are handed on (interp/deferred.rs);
+    // the cycle ends at its start point (step 7).
+    if plan.move_count() > DEFER_MOVES && step.may_defer_cuts() {
+        return step.defer_cuts(code, std::sync::Arc::new(plan), start);
     }
-    Ok(())
+    if plan.move_count() > MAX_MOVES {
+        return Err(step.alarm(Rule::MotionLimit, step.span, format!("{code}: more than {MAX_MOVES} moves in one block (the peck or step is too small)")));
+    }
+    step.emit_each(code, &plan)
 }

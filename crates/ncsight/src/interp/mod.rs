@@ -7,6 +7,7 @@ mod comp;
 mod compound;
 mod corner;
 mod curve;
+mod deferred;
 mod drawing;
 mod polar;
 mod drill;
@@ -96,7 +97,7 @@ pub struct Outcome {
 #[derive(Debug, Clone)]
 pub enum Deferred {
     Holes(drill::DeferredHoles),
-    Cuts(rough::DeferredCuts),
+    Cuts(deferred::DeferredCuts),
 }
 
 impl Deferred {
@@ -735,6 +736,8 @@ impl Interpreter {
                     wanted.swap_remove(k);
                 }
             }
+        } else if step.out.deferred.is_some() {
+            // The deferred records end the block with their last.
         } else if let Some(last) = step.out.records.iter_mut().rev().find(|r| r.span == block.span) {
             last.block_end = true;
         }

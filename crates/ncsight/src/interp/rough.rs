@@ -10,7 +10,9 @@ use super::call::Flow;
 use super::words::Words;
 use super::{run_block, Interpreter, Outcome, Step};
 use crate::alarm::{Diagnostic, Rule};
-use crate::cycles::rough::{lay_out, pattern, RoughError, RoughKind, RoughNote, RoughPlan, Roughing, MAX_POCKETS};
+use super::deferred::{DEFER_MOVES, MAX_DEFERRED_MOVES};
+use crate::cycles::rough::{lay_out, pattern, RoughError, RoughKind, RoughNote, Roughing, MAX_POCKETS};
+use crate::cycles::Expansion;
 use crate::modal::Motion;
 use crate::motion::{Op, Vec3};
 use crate::read::{Block, Word};
@@ -379,7 +381,7 @@ impl Interpreter {
                 ),
                 _ => self.contour_alarm(Rule::ContourCommand, req.span, format!("{code}: the contour holds a move that is not a line or an arc")),
             })?;
-            return self.emit_cycle(&req, ops, out);
+            return self.emit_cycle(&req, &ops, out);
         }
         let has = |letters: &[u8]| first.words.iter().any(|w| letters.contains(&w.letter));
         let type_two = has(b"XU") && has(b"ZW");
@@ -423,95 +425,29 @@ impl Interpreter {
             out.warnings.push(self.contour_alarm(Rule::RoughingCollision, req.span, msg));
         }
         let moves = rough.move_count();
-        if moves > DEFER_MOVES && self.may_defer_cycle(out) {
-            return self.defer_cycle(&req, rough, out);
+        if moves > DEFER_MOVES {
+            let mut step = Step { profile: self.profile, params: &self.params, tables: &self.tables, queue: &mut self.comp_queue, corners: &mut self.corner_queue, bypass_comp: true, contour: false, repair: None, span: req.span, n: req.n, st: &mut self.state, carry: None, out };
+            if step.may_defer_cuts() {
+                if moves > MAX_DEFERRED_MOVES {
+                    return Err(step.alarm(Rule::MotionLimit, req.span, format!("{code}: more than {MAX_DEFERRED_MOVES} roughing moves in one cycle (Δd too small)")));
+                }
+                // The cycle ends at its start point (step 8).
+                return step.defer_cuts(code, std::sync::Arc::new(rough), req.start);
+            }
         }
         if moves > super::MAX_MOTIONS_PER_BLOCK {
             return Err(self.contour_alarm(Rule::MotionLimit, req.span, format!("{code}: more than {} roughing moves in one cycle (Δd too small)", super::MAX_MOTIONS_PER_BLOCK)));
         }
-        let mut ops = Vec::with_capacity(moves);
-        rough.each_op(&mut |op| {
-            ops.push(op);
-            std::ops::ControlFlow::Continue(())
-        });
-        self.emit_cycle(&req, ops, out)
-    }
-
-    /// Whether a roughing's moves may be made as they are handed on ([`DeferredCuts`]): the
-    /// consumer takes each record as it comes, and nothing between the cycle and the record
-    /// reshapes a move (a corner held, a compensated tool position, polar interpolation: those
-    /// keep the ordinary path and its cap). Soft limits and a G22 area are checked by a dry
-    /// pass over the moves before any is made.
-    fn may_defer_cycle(&self, out: &Outcome) -> bool {
-        let st = &self.state;
-        out.may_defer
-            && self.corner_queue.is_empty()
-            && self.comp_queue.is_empty()
-            && st.comp.held_corner.is_none()
-            && st.comp.angle_line.is_none()
-            && st.comp.actual.is_none()
-            && st.polar_interp.is_none()
-    }
-
-    /// A roughing of more moves than a block holds: its feed found (and its alarm, if it has
-    /// none) as for the ordinary path, its moves made as they are handed on.
-    fn defer_cycle(&mut self, req: &RoughRequest, rough: RoughPlan, out: &mut Outcome) -> Result<(), Diagnostic> {
-        let code = req.kind.code();
-        if rough.move_count() > MAX_DEFERRED_MOVES {
-            return Err(self.contour_alarm(Rule::MotionLimit, req.span, format!("{code}: more than {MAX_DEFERRED_MOVES} roughing moves in one cycle (Δd too small)")));
-        }
-        // The first cutting move: its feed's alarm or warnings are the block's.
-        let mut first = None;
-        rough.each_op(&mut |op| match op {
-            Op::Feed { .. } | Op::Arc { .. } => {
-                first = Some(op);
-                std::ops::ControlFlow::Break(())
-            }
-            _ => std::ops::ControlFlow::Continue(()),
-        });
-        let mut step = Step { profile: self.profile, params: &self.params, tables: &self.tables, queue: &mut self.comp_queue, corners: &mut self.corner_queue, bypass_comp: true, contour: false, repair: None, span: req.span, n: req.n, st: &mut self.state, carry: None, out };
-        let feed = match first {
-            Some(Op::Feed { from, to, .. } | Op::Arc { from, to, .. }) => Some(step.feed_rule(code, &|u| super::lerp(&from, &to, u))?),
-            _ => None,
-        };
-        if let Some((asked, max)) = feed.and_then(|f| f.clamped()) {
-            step.warn_clamped(asked, max);
-        }
-        let to_machine = step.tables.to_machine(&step.st.frame);
-        // A soft limit or a G22 area in force: the moves are walked once, nothing kept, and the
-        // first that the machine refuses stops the block before anything is made.
-        if step.tables.limited || step.st.stroke2.is_some() {
-            rough.each_op(&mut |op| {
-                step.travel_checks(req.span, &op, &to_machine);
-                if step.out.overtravel.is_some() || step.out.stroke_hit.is_some() {
-                    return std::ops::ControlFlow::Break(());
-                }
-                std::ops::ControlFlow::Continue(())
-            });
-            if let Some(hit) = step.out.overtravel {
-                return Err(super::overtravel_alarm(step.profile, hit));
-            }
-            if let Some((span, why)) = step.out.stroke_hit.take() {
-                return Err(step.alarm(Rule::StrokeCheck2, span, why));
-            }
-        }
-        if rough.move_count() > 0 {
-            // The cycle ends at its start point (step 8); the tool offset's movement is made.
-            step.st.pos = req.start;
-            step.st.frame.unmoved = Vec3::default();
-        }
-        let cuts = DeferredCuts { rough, feed, span: req.span, n: req.n, to_machine };
-        out.deferred = Some((out.records.len(), super::Deferred::Cuts(cuts)));
-        Ok(())
+        self.emit_cycle(&req, &rough, out)
     }
 
     /// Emit a roughing cycle's moves under the cycle block's span, each feed at the block's F
     /// (per revolution under G99, at the point's speed under G96).
-    fn emit_cycle(&mut self, req: &RoughRequest, ops: Vec<Op>, out: &mut Outcome) -> Result<(), Diagnostic> {
+    fn emit_cycle(&mut self, req: &RoughRequest, moves: &dyn Expansion, out: &mut Outcome) -> Result<(), Diagnostic> {
         let code = req.kind.code();
-        let before = self.state.clone();
+        let before = self.state;
         let mut step = Step { profile: self.profile, params: &self.params, tables: &self.tables, queue: &mut self.comp_queue, corners: &mut self.corner_queue, bypass_comp: true, contour: false, repair: None, span: req.span, n: req.n, st: &mut self.state, carry: None, out };
-        let result = ops.into_iter().try_for_each(|op| step.emit_cut(code, op)).and_then(|()| {
+        let result = step.emit_each(code, moves).and_then(|()| {
             // The per-block limit (the cycle's moves come here, not through `execute_into`).
             if step.out.emitted > super::MAX_MOTIONS_PER_BLOCK {
                 return Err(step.alarm(Rule::MotionLimit, req.span, format!("{code}: more than {} moves in one cycle", super::MAX_MOTIONS_PER_BLOCK)));
@@ -594,50 +530,6 @@ impl Interpreter {
             last.block_end = true;
         }
         Ok(())
-    }
-}
-
-/// How many moves a roughing may make before they are made one at a time as they are handed on
-/// ([`DeferredCuts`]) rather than held: far above a real programme's (the goldens never reach
-/// it), so they keep the ordinary path.
-const DEFER_MOVES: usize = 50_000;
-
-/// The most moves a deferred roughing may make: a count when laid out, not a memory bound, far
-/// above a real programme (a hundred million: a G71 of 25 million levels).
-const MAX_DEFERRED_MOVES: usize = 100_000_000;
-
-/// A roughing's moves, laid out but not made: the driver makes their records one at a time as
-/// it hands them on, so a roughing of any number of levels holds its contour and no more.
-#[derive(Debug, Clone)]
-pub struct DeferredCuts {
-    rough: RoughPlan,
-    /// The feed of its cutting moves (none: it makes none).
-    feed: Option<super::CutFeed>,
-    span: Span,
-    n: Option<u32>,
-    to_machine: Vec3,
-}
-
-impl DeferredCuts {
-    /// Every record of the roughing, in order, the last one ending the block for single block.
-    pub fn each_record(&self, sink: &mut dyn FnMut(crate::motion::Record)) {
-        let mut held: Option<crate::motion::Record> = None;
-        self.rough.each_op(&mut |op| {
-            let op = match &self.feed {
-                Some(f) => f.apply(op).0,
-                None => op,
-            };
-            let mut r = crate::motion::Record::of_block(self.span, self.n, op);
-            r.to_machine = self.to_machine;
-            if let Some(done) = held.replace(r) {
-                sink(done);
-            }
-            std::ops::ControlFlow::Continue(())
-        });
-        if let Some(mut last) = held {
-            last.block_end = true;
-            sink(last);
-        }
     }
 }
 
