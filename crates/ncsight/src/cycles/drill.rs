@@ -73,30 +73,13 @@ pub fn expand(h: &Hole) -> Vec<Step> {
 pub fn expand_each(h: &Hole, s: &mut dyn FnMut(Step)) {
     let [a, b] = h.at;
     let p = |lvl: f64| [a, b, lvl];
-    let ret = if h.return_initial || h.kind == DrillKind::G87 { h.initial } else { h.r };
     // Positioning in the plane at the current level.
     if h.from[0] != a || h.from[1] != b {
         s(Step::Rapid([a, b, h.from[2]]));
     }
     let level = h.from[2];
-    let shifted = |lvl: f64| [a + h.q * h.shift_dir[0], b + h.q * h.shift_dir[1], lvl];
     if h.kind == DrillKind::G87 {
-        // Back boring: orient and shift, rapid down to R (below the hole), shift back, start the
-        // spindle, feed up to Z, orient, shift, rapid up to the initial level, shift back, start.
-        s(Step::Orient);
-        s(Step::Rapid(shifted(level)));
-        s(Step::Rapid(shifted(h.r)));
-        s(Step::Rapid(p(h.r)));
-        s(Step::Spindle(h.rpm));
-        s(Step::Feed(p(h.bottom), h.feed));
-        if h.dwell_s > 0.0 {
-            s(Step::Dwell(h.dwell_s));
-        }
-        s(Step::Orient);
-        s(Step::Rapid(shifted(h.bottom)));
-        s(Step::Rapid(shifted(h.initial)));
-        s(Step::Rapid(p(h.initial)));
-        s(Step::Spindle(h.rpm));
+        back_boring(h, &p, s);
         return;
     }
     if h.kind.from_start() {
@@ -116,29 +99,72 @@ pub fn expand_each(h: &Hole, s: &mut dyn FnMut(Step)) {
         _ => None,
     };
     match peck {
-        Some(full_return) => {
-            // Peck k ends at R + k Q, computed afresh, and within a nanometre of the bottom is the
-            // bottom: the control counts in whole increments, so rounding leaves no sliver of a
-            // last peck (LinuxCNC's rs274, adding Q again and again, sometimes makes one).
-            let mut k = 0.0;
-            loop {
-                k += 1.0;
-                let depth = h.r + down * h.q * k;
-                let next = if (h.bottom - depth) * down <= 1e-6 { h.bottom } else { depth };
-                s(Step::Feed(p(next), h.feed));
-                if next == h.bottom {
-                    break;
-                }
-                if !full_return {
-                    s(Step::Rapid(p(next - down * h.d)));
-                } else {
-                    s(Step::Rapid(p(h.r)));
-                    s(Step::Rapid(p(next - down * h.d)));
-                }
-            }
-        }
+        Some(full_return) => pecks_from_r(h, down, full_return, &p, s),
         None => s(Step::Feed(p(h.bottom), h.feed)),
     }
+    out_of_hole(h, &p, s);
+}
+
+/// The point of the hole shifted by Q along the shift direction (G76, G87), at level `lvl`.
+#[inline]
+fn shifted(h: &Hole, lvl: f64) -> Local {
+    let [a, b] = h.at;
+    [a + h.q * h.shift_dir[0], b + h.q * h.shift_dir[1], lvl]
+}
+
+/// G87 from the level the tool stands on, positioned over the hole.
+#[inline]
+fn back_boring(h: &Hole, p: &impl Fn(f64) -> Local, s: &mut dyn FnMut(Step)) {
+    let level = h.from[2];
+    // Back boring: orient and shift, rapid down to R (below the hole), shift back, start the
+    // spindle, feed up to Z, orient, shift, rapid up to the initial level, shift back, start.
+    s(Step::Orient);
+    s(Step::Rapid(shifted(h, level)));
+    s(Step::Rapid(shifted(h, h.r)));
+    s(Step::Rapid(p(h.r)));
+    s(Step::Spindle(h.rpm));
+    s(Step::Feed(p(h.bottom), h.feed));
+    if h.dwell_s > 0.0 {
+        s(Step::Dwell(h.dwell_s));
+    }
+    s(Step::Orient);
+    s(Step::Rapid(shifted(h, h.bottom)));
+    s(Step::Rapid(shifted(h, h.initial)));
+    s(Step::Rapid(p(h.initial)));
+    s(Step::Spindle(h.rpm));
+}
+
+/// The pecks from the R level to the bottom (`down`: the sign of the drilling direction), each
+/// followed by a rapid back d (`full_return` false) or to R and down again to d short of the
+/// depth reached (true).
+#[inline]
+fn pecks_from_r(h: &Hole, down: f64, full_return: bool, p: &impl Fn(f64) -> Local, s: &mut dyn FnMut(Step)) {
+    // Peck k ends at R + k Q, computed afresh, and within a nanometre of the bottom is the
+    // bottom: the control counts in whole increments, so rounding leaves no sliver of a
+    // last peck (LinuxCNC's rs274, adding Q again and again, sometimes makes one).
+    let mut k = 0.0;
+    loop {
+        k += 1.0;
+        let depth = h.r + down * h.q * k;
+        let next = if (h.bottom - depth) * down <= 1e-6 { h.bottom } else { depth };
+        s(Step::Feed(p(next), h.feed));
+        if next == h.bottom {
+            break;
+        }
+        if !full_return {
+            s(Step::Rapid(p(next - down * h.d)));
+        } else {
+            s(Step::Rapid(p(h.r)));
+            s(Step::Rapid(p(next - down * h.d)));
+        }
+    }
+}
+
+/// The cycle's motion at the bottom of the hole and out of it, back to the initial level (G98)
+/// or the R level (G99).
+#[inline]
+fn out_of_hole(h: &Hole, p: &impl Fn(f64) -> Local, s: &mut dyn FnMut(Step)) {
+    let ret = if h.return_initial || h.kind == DrillKind::G87 { h.initial } else { h.r };
     let dwell = |s: &mut dyn FnMut(Step)| {
         if h.dwell_s > 0.0 {
             s(Step::Dwell(h.dwell_s));
@@ -177,8 +203,8 @@ pub fn expand_each(h: &Hole, s: &mut dyn FnMut(Step)) {
         DrillKind::G76 => {
             dwell(s);
             s(Step::Orient);
-            s(Step::Rapid(shifted(h.bottom)));
-            s(Step::Rapid(shifted(ret)));
+            s(Step::Rapid(shifted(h, h.bottom)));
+            s(Step::Rapid(shifted(h, ret)));
             s(Step::Rapid(p(ret)));
             s(Step::Spindle(h.rpm));
         }

@@ -150,36 +150,74 @@ fn plane_move(step: &mut Step, span: Span, n: Option<u32>, op: Op, seg: Seg) {
     step.st.comp.idle_blocks = 0;
     let start3 = op.start_point().unwrap_or_default();
     if step.queue.is_empty() {
-        // Start-up (type A), or a new start after the path was broken off.
-        let centre = step.st.comp.actual.take().unwrap_or(start3 - step.st.comp.tip);
-        if matches!(op, Op::Arc { .. }) {
-            if !step.st.comp.started {
-                let d = step.alarm(Rule::CompStartupArc, span, "G41/G42: compensation starts in a G00 or G01 block, not in an arc");
-                if step.out.comp_error.is_none() {
-                    step.out.comp_error = Some(d);
-                }
-                return;
-            }
-            // After a break: a straight move to the arc's offset start, then the arc.
-            let s = seg.from().plus(comp::vector(&seg, false, side, r));
-            let s3 = comp::with_local(&start3, s, plane);
-            let link = Op::Feed { from: centre + step.st.comp.tip, to: s3 + step.st.comp.tip, feed_mm_min: feed_of(&op) };
-            step.push_record(span, n, link);
-            step.st.comp.held_start = s3;
-            step.st.comp.held_startup = false;
-        } else {
-            step.st.comp.held_start = centre;
-            // After G39 with a direction the path goes on: the next corner is an ordinary one.
-            step.st.comp.held_startup = !std::mem::take(&mut step.st.comp.resume);
-        }
-        step.st.comp.started = true;
-        step.queue.push(Record::of_block(span, n, op));
-        return;
+        return start_up(step, span, n, op, seg, start3);
     }
     let held = step.queue[0].clone();
     let Some(hseg) = Seg::of(&held.op, plane) else {
         unreachable!("the queue's first record is a move in the plane")
     };
+    if outer_corner_arc(step, span, n, op, &held, &hseg, &seg) {
+        return;
+    }
+    let corner = if step.st.comp.held_startup {
+        // Type A: the start-up ends perpendicular to the next move at its start.
+        let e = seg.from().plus(comp::vector(&seg, false, side, r));
+        comp::Corner { first_end: e, between: Vec::new(), second_start: e }
+    } else {
+        match comp::corner(&hseg, &seg, side, r) {
+            Ok(c) => c,
+            Err(e) => return fail(step, e, span),
+        }
+    };
+    let slow = inside_corner_override(step, op, &held, &hseg, &seg);
+    if let Err(e) = make_held(step, corner.first_end, slow.map_or(0.0, |s| s.0)) {
+        return fail(step, e, held.span);
+    }
+    step.st.comp.slow_start_mm = slow.map_or(0.0, |s| s.1);
+    outer_corner_moves(step, span, n, op, &corner, start3);
+    step.st.comp.held_start = comp::with_local(&start3, corner.second_start, plane);
+    step.st.comp.held_startup = false;
+    step.queue.push(Record::of_block(span, n, op));
+}
+
+/// The first move in the plane with nothing held (`start3` its start): the start-up, held; an
+/// arc after a break in the path is reached by a straight move to its offset start.
+fn start_up(step: &mut Step, span: Span, n: Option<u32>, op: Op, seg: Seg, start3: Vec3) {
+    let plane = step.st.plane;
+    let (side, r) = (step.st.comp.side as f64, step.st.comp.radius_mm);
+    // Start-up (type A), or a new start after the path was broken off.
+    let centre = step.st.comp.actual.take().unwrap_or(start3 - step.st.comp.tip);
+    if matches!(op, Op::Arc { .. }) {
+        if !step.st.comp.started {
+            let d = step.alarm(Rule::CompStartupArc, span, "G41/G42: compensation starts in a G00 or G01 block, not in an arc");
+            if step.out.comp_error.is_none() {
+                step.out.comp_error = Some(d);
+            }
+            return;
+        }
+        // After a break: a straight move to the arc's offset start, then the arc.
+        let s = seg.from().plus(comp::vector(&seg, false, side, r));
+        let s3 = comp::with_local(&start3, s, plane);
+        let link = Op::Feed { from: centre + step.st.comp.tip, to: s3 + step.st.comp.tip, feed_mm_min: feed_of(&op) };
+        step.push_record(span, n, link);
+        step.st.comp.held_start = s3;
+        step.st.comp.held_startup = false;
+    } else {
+        step.st.comp.held_start = centre;
+        // After G39 with a direction the path goes on: the next corner is an ordinary one.
+        step.st.comp.held_startup = !std::mem::take(&mut step.st.comp.resume);
+    }
+    step.st.comp.started = true;
+    step.queue.push(Record::of_block(span, n, op));
+}
+
+/// G39's corner arc between the held move (`held`, its segment `hseg`) and this one (`seg`), at
+/// an outer corner: the held move is made, then the arc, and this move is held. Whether the
+/// corner is dealt with (made, or failed); false: it is made as without G39.
+fn outer_corner_arc(step: &mut Step, span: Span, n: Option<u32>, op: Op, held: &Record, hseg: &Seg, seg: &Seg) -> bool {
+    let plane = step.st.plane;
+    let start3 = op.start_point().unwrap_or_default();
+    let (side, r) = (step.st.comp.side as f64, step.st.comp.radius_mm);
     // G39 between the held move and this one: an outer corner is an arc about the corner point,
     // from the held move's end perpendicular to this move's start perpendicular (FANUC 0i-M
     // manual, corner circular interpolation). An inner corner is as without it.
@@ -192,9 +230,10 @@ fn plane_move(step: &mut Step, span: Span, n: Option<u32>, op: Op, seg: Seg) {
             step.warn(Rule::CornerArcOvercut, span, "G39 at an inner corner: the FANUC manuals say the cutter overcuts here; ncsight makes the corner as without G39");
         }
         if turn * side < -1e-12 {
-            let (e, s) = (p.plus(comp::vector(&hseg, true, side, r)), p.plus(comp::vector(&seg, false, side, r)));
+            let (e, s) = (p.plus(comp::vector(hseg, true, side, r)), p.plus(comp::vector(seg, false, side, r)));
             if let Err(err) = make_held(step, e, 0.0) {
-                return fail(step, err, held.span);
+                fail(step, err, held.span);
+                return true;
             }
             let tip = step.st.comp.tip;
             let (a, b, c) = (comp::with_local(&start3, e, plane), comp::with_local(&start3, s, plane), comp::with_local(&start3, p, plane));
@@ -204,22 +243,19 @@ fn plane_move(step: &mut Step, span: Span, n: Option<u32>, op: Op, seg: Seg) {
             step.st.comp.held_start = b;
             step.st.comp.held_startup = false;
             step.queue.push(Record::of_block(span, n, op));
-            return;
+            return true;
         }
     }
-    let corner = if step.st.comp.held_startup {
-        // Type A: the start-up ends perpendicular to the next move at its start.
-        let e = seg.from().plus(comp::vector(&seg, false, side, r));
-        comp::Corner { first_end: e, between: Vec::new(), second_start: e }
-    } else {
-        match comp::corner(&hseg, &seg, side, r) {
-            Ok(c) => c,
-            Err(e) => return fail(step, e, span),
-        }
-    };
+    false
+}
+
+/// G62's slowdown about the corner between the held move and this one, where it acts: the
+/// override before the corner and after it.
+fn inside_corner_override(step: &Step, op: Op, held: &Record, hseg: &Seg, seg: &Seg) -> Option<(f64, f64)> {
+    let (side, r) = (step.st.comp.side as f64, step.st.comp.radius_mm);
     // G62: an inner corner no wider than the parameter's angle slows the feed about it (FANUC
     // 16i manual, inside-corner override: not after a start-up, not for rapids).
-    let slow = match step.profile.frame.corner_override {
+    match step.profile.frame.corner_override {
         Some(keys) if step.st.comp.corner_override && !step.st.comp.held_startup && r > 0.0 && !matches!(op, Op::Rapid { .. }) && !matches!(held.op, Op::Rapid { .. }) => {
             let (d1, d2) = (hseg.tangent(true), seg.tangent(false));
             let inner = d1.cross(d2) * side > 1e-12;
@@ -227,11 +263,13 @@ fn plane_move(step: &mut Step, span: Span, n: Option<u32>, op: Op, seg: Seg) {
             (inner && (2.0..=step.params.get(keys.angle)).contains(&work_angle_deg)).then(|| (step.params.get(keys.before), step.params.get(keys.after)))
         }
         _ => None,
-    };
-    if let Err(e) = make_held(step, corner.first_end, slow.map_or(0.0, |s| s.0)) {
-        return fail(step, e, held.span);
     }
-    step.st.comp.slow_start_mm = slow.map_or(0.0, |s| s.1);
+}
+
+/// The moves from the held move's offset end around the corner to this move's offset start
+/// (`start3` its start), as rapids or feeds as this move is.
+fn outer_corner_moves(step: &mut Step, span: Span, n: Option<u32>, op: Op, corner: &comp::Corner, start3: Vec3) {
+    let plane = step.st.plane;
     // The moves around an outer corner, at the next move's rate.
     let mut at = corner.first_end;
     for p in corner.between.iter().copied().chain(std::iter::once(corner.second_start)) {
@@ -246,9 +284,6 @@ fn plane_move(step: &mut Step, span: Span, n: Option<u32>, op: Op, seg: Seg) {
         }
         at = p;
     }
-    step.st.comp.held_start = comp::with_local(&start3, corner.second_start, plane);
-    step.st.comp.held_startup = false;
-    step.queue.push(Record::of_block(span, n, op));
 }
 
 /// `op` cut in pieces: its first `start_mm` and last `end_mm` (along its path) at `factor` times

@@ -382,21 +382,7 @@ fn lathe_from_r_block(step: &mut Step, words: &mut Words, kind: DrillKind) -> Re
         return Ok(());
     }
     let d = step.st.drill;
-    let axis_name = axis_name(along);
-    let (b, b_inc) = bottom_in_force(step, code, along)?;
-    let r_level = d.initial + d.r.map_or(0.0, |r| r.0);
-    let bottom = if b_inc { r_level + b } else { b };
-    if (bottom - r_level).abs() < 1e-9 {
-        return Err(step.alarm(Rule::DrillLevels, step.span, format!("{code}: the hole bottom {axis_name} is at the R level: there is nothing to drill")));
-    }
-    if (d.initial - r_level) * (bottom - r_level) > 1e-12 {
-        // The R level lies between the initial level and the bottom, as on the FANUC 0-M.
-        return Err(step.alarm(
-            Rule::DrillLevels,
-            step.span,
-            format!("{code}: R {r_level:.3} and bottom {bottom:.3}: the R level must lie between the initial level {:.3} and the hole bottom", d.initial),
-        ));
-    }
+    let (r_level, bottom) = lathe_levels(step, code, along)?;
     let q = if drilling { d.q.unwrap_or(0.0) } else { 0.0 };
     if q > 0.0 {
         let pecks = ((bottom - r_level).abs() / q).ceil() * repeats as f64;
@@ -437,6 +423,29 @@ fn lathe_from_r_block(step: &mut Step, words: &mut Words, kind: DrillKind) -> Re
         }
     }
     Ok(())
+}
+
+/// The R level and the hole bottom of a FANUC 0-T lathe cycle along `along`: R from the initial
+/// level, the bottom absolute or from the R level; the alarms for a hole of no depth and for an
+/// R level outside the initial level and the bottom.
+fn lathe_levels(step: &Step, code: &str, along: usize) -> Result<(f64, f64), Diagnostic> {
+    let d = step.st.drill;
+    let axis_name = axis_name(along);
+    let (b, b_inc) = bottom_in_force(step, code, along)?;
+    let r_level = d.initial + d.r.map_or(0.0, |r| r.0);
+    let bottom = if b_inc { r_level + b } else { b };
+    if (bottom - r_level).abs() < 1e-9 {
+        return Err(step.alarm(Rule::DrillLevels, step.span, format!("{code}: the hole bottom {axis_name} is at the R level: there is nothing to drill")));
+    }
+    if (d.initial - r_level) * (bottom - r_level) > 1e-12 {
+        // The R level lies between the initial level and the bottom, as on the FANUC 0-M.
+        return Err(step.alarm(
+            Rule::DrillLevels,
+            step.span,
+            format!("{code}: R {r_level:.3} and bottom {bottom:.3}: the R level must lie between the initial level {:.3} and the hole bottom", d.initial),
+        ));
+    }
+    Ok((r_level, bottom))
 }
 
 /// GSK980TDi G84 (end face: the hole at X, tapped along Z) and G88 (side: the hole at Z, tapped
@@ -551,6 +560,44 @@ pub(super) fn block(step: &mut Step, words: &mut Words, kind: DrillKind, enterin
     let drills = words.has(letter(a)) || words.has(letter(b)) || words.has(letter(n)) || words.has(b'R');
     take_hole_words(step, words)?;
     let repeats = repeats(step, words)?;
+    let (delta_a, delta_b, target_a, target_b) = hole_position(step, words, a, b)?;
+    if !drills || repeats == 0 {
+        // K0: the data is stored, nothing moves (seed 003; docs/reference/parameters.md: no positioning).
+        return Ok(());
+    }
+    let (r, bottom) = hole_levels(step, kind)?;
+    if kind == DrillKind::G87 && !step.st.return_initial {
+        step.warn(Rule::ReturnLevel, step.span, "G87 returns to the initial level even under G99 (the R level is below the part)");
+    }
+    let rpm = step.rpm_here();
+    tapping_warnings(step, kind, rpm);
+    let defer = defers_holes(step, kind, r, bottom, repeats)?;
+    let d = step.st.drill;
+    // The hole as every repeat makes it; `from`, `at` and `feed` are each hole's own.
+    let template = Hole {
+        kind,
+        from: [0.0; 3],
+        at: [0.0; 2],
+        initial: d.initial,
+        r,
+        bottom,
+        return_initial: step.st.return_initial,
+        q: d.q.unwrap_or(0.0),
+        dwell_s: d.dwell_s.unwrap_or(0.0),
+        d: peck_retract_mm(step, kind),
+        deep: false,
+        shift_dir: shift_direction(step, kind),
+        feed: 0.0,
+        rpm,
+    };
+    make_holes(step, &template, repeats, (delta_a, delta_b), (target_a, target_b), defer)
+}
+
+/// The hole position in the plane from the block's positioning words on the plane's axes `a`
+/// and `b`: the increment each repeat moves by under G91 (0 under G90) and the first hole's
+/// position, as (delta a, delta b, target a, target b).
+#[inline]
+fn hole_position(step: &mut Step, words: &mut Words, a: usize, b: usize) -> Result<(f64, f64, f64, f64), Diagnostic> {
     // Positioning words in the plane.
     // Kept in scalars, not arrays written element by element: this runs for every hole.
     let (mut delta_a, mut delta_b) = (0.0, 0.0);
@@ -566,10 +613,13 @@ pub(super) fn block(step: &mut Step, words: &mut Words, kind: DrillKind, enterin
             }
         }
     }
-    if !drills || repeats == 0 {
-        // K0: the data is stored, nothing moves (seed 003; docs/reference/parameters.md: no positioning).
-        return Ok(());
-    }
+    Ok((delta_a, delta_b, target_a, target_b))
+}
+
+/// The R level and the hole bottom of the hole data in force, from the initial level (R and Z
+/// each absolute or incremental): the alarms for a missing R, Z or peck depth Q, and for an R
+/// level on the wrong side of the bottom.
+fn hole_levels(step: &Step, kind: DrillKind) -> Result<(f64, f64), Diagnostic> {
     let code = kind.code();
     let d = step.st.drill;
     let (Some((r_word, r_inc)), Some((z_word, z_inc))) = (d.r, d.bottom) else {
@@ -599,10 +649,13 @@ pub(super) fn block(step: &mut Step, words: &mut Words, kind: DrillKind, enterin
             format!("{code}: R {r:.3} and bottom {bottom:.3}: {what}"),
         ));
     }
-    if kind == DrillKind::G87 && !step.st.return_initial {
-        step.warn(Rule::ReturnLevel, step.span, "G87 returns to the initial level even under G99 (the R level is below the part)");
-    }
-    let rpm = step.rpm_here();
+    Ok((r, bottom))
+}
+
+/// The warnings of a tapping cycle (G74, G84): the spindle turning the other way than the tap,
+/// and a pitch (F over S) no tap has.
+fn tapping_warnings(step: &mut Step, kind: DrillKind, rpm: f64) {
+    let code = kind.code();
     if matches!(kind, DrillKind::G74 | DrillKind::G84) {
         let (want, name) = if kind == DrillKind::G84 { (SpindleDir::Positive, "M03") } else { (SpindleDir::Negative, "M04") };
         if step.st.spindle != want {
@@ -626,6 +679,13 @@ pub(super) fn block(step: &mut Step, words: &mut Words, kind: DrillKind, enterin
             }
         }
     }
+}
+
+/// Whether the block's holes are made as they are handed on ([`DeferredHoles`]) rather than
+/// held; the alarm for a block of more pecks (or moves) than one block may make.
+fn defers_holes(step: &Step, kind: DrillKind, r: f64, bottom: f64, repeats: u32) -> Result<bool, Diagnostic> {
+    let code = kind.code();
+    let d = step.st.drill;
     // The records the block makes, about: three a peck, five a hole. Past DEFER_RECORDS they are
     // made as they are handed on where nothing reshapes them, and any number is taken (a check
     // keeps none anyway); elsewhere a cap on the motion one block may make (issue 10).
@@ -642,16 +702,28 @@ pub(super) fn block(step: &mut Step, words: &mut Words, kind: DrillKind, enterin
             format!("{code}: {pecks:.0} pecks in one block (Q too small for the depth, times K); at most {MAX_PECKS}"),
         ));
     }
+    Ok(defer)
+}
+
+/// The retract d after each peck: G73's retract, G83's clearance (the profile's parameters, mm);
+/// 0 for the other cycles.
+fn peck_retract_mm(step: &Step, kind: DrillKind) -> f64 {
     let rules = step.profile.drill;
     let um = |key: Option<ParamKey>| key.map_or(0.0, |k| step.params.get(k) * 0.001);
-    let d_mm = match kind {
+    match kind {
         DrillKind::G73 => um(rules.g73_retract_um),
         DrillKind::G83 => um(rules.g83_clearance_um),
         _ => 0.0,
-    };
+    }
+}
+
+/// The unit direction in the plane a G76/G87 shift moves the tool (the profile's shift bits);
+/// none for the other cycles.
+fn shift_direction(step: &Step, kind: DrillKind) -> [f64; 2] {
+    let rules = step.profile.drill;
     // The shift bits (high, low): 00 +X, 01 -X, 10 +Y, 11 -Y (docs/guide.md); X is the plane's
     // first axis and Y its second (exact in G17).
-    let shift_dir = match rules.shift_bits {
+    match rules.shift_bits {
         Some((low, high)) if kind.shifts() => {
             let b4 = step.params.get(low) != 0.0;
             let b5 = step.params.get(high) != 0.0;
@@ -661,7 +733,18 @@ pub(super) fn block(step: &mut Step, words: &mut Words, kind: DrillKind, enterin
         // A profile without the bits shifts along +X.
         None if kind.shifts() => [1.0, 0.0],
         _ => [0.0; 2],
-    };
+    }
+}
+
+/// The block's `repeats` holes, `template` at each position from `target` (moved on by `delta`
+/// each repeat under G91), from where the tool stands: made now, or laid out to be made as they
+/// are handed on (`defer`).
+fn make_holes(step: &mut Step, template: &Hole, repeats: u32, (delta_a, delta_b): (f64, f64), (mut target_a, mut target_b): (f64, f64), defer: bool) -> Result<(), Diagnostic> {
+    let kind = template.kind;
+    let code = kind.code();
+    let (r, bottom) = (template.r, template.bottom);
+    let plane = step.st.plane;
+    let (a, b, n) = plane.axes();
     let mut deferred = Vec::new();
     for k in 0..repeats {
         if k > 0 && step.st.incremental {
@@ -676,22 +759,7 @@ pub(super) fn block(step: &mut Step, words: &mut Words, kind: DrillKind, enterin
             let lvl = r + (bottom - r) * u;
             plane.from_local([at[0], at[1], lvl])
         })?;
-        let hole = Hole {
-            kind,
-            from,
-            at,
-            initial,
-            r,
-            bottom,
-            return_initial: step.st.return_initial,
-            q: d.q.unwrap_or(0.0),
-            dwell_s: d.dwell_s.unwrap_or(0.0),
-            d: d_mm,
-            deep: false,
-            shift_dir,
-            feed,
-            rpm,
-        };
+        let hole = Hole { from, at, feed, ..*template };
         if defer {
             // Laid out now, made as they are handed on: the tool is where the hole leaves it.
             if let Some(end) = hole_end(&hole, step.st.pos, |l, _| plane.from_local(l)) {

@@ -539,21 +539,8 @@ pub(super) fn data_setting(step: &mut Step, words: &mut Words, span: Span) -> Re
         Some(w) => Some(w.value as u32),
         None => None,
     };
-    // The parameter lines follow, up to G11 (FANUC 0i manual, G10 L50; GSK980TDi help text,
-    // parameter reading and writing, G10 L52).
-    if let Some(entry) = step.profile.frame.parameter_entry.filter(|e| l == Some(e.l)) {
-        step.st.data_input = Some(DataInput::Parameters(entry));
+    if starts_data_lines(step, l, span)? {
         return Ok(None);
-    }
-    if forms == G10Forms::ToolLifeAndParameters {
-        // GSK980TDi help text, G10 L3: the tool life data up to G11; every other word there is
-        // ignored (note 1). ncsight does not count tool life: the lines are read and dropped.
-        if l == Some(3) {
-            step.warn(Rule::NotSimulated, span, "G10 L3: the tool life management data up to G11 are read and not kept (ncsight does not count tool life)");
-            step.st.data_input = Some(DataInput::ToolLife);
-            return Ok(None);
-        }
-        return Err(step.alarm(Rule::ImproperGCode, span, format!("G10 on {}: its help text has G10 L3 (tool life) and G10 L52 (parameters) only, no work or tool offset setting", step.profile.name)));
     }
     let p = match words.take(b'P') {
         Some(w) if w.decimal || w.value < 0.0 => return Err(step.alarm(Rule::IllegalDecimalPoint, w.span, format!("{}: P is a whole number", w.text()))),
@@ -564,78 +551,119 @@ pub(super) fn data_setting(step: &mut Step, words: &mut Words, span: Span) -> Re
     // Set (absolute) or add (incremental: G91 on a mill, U/V/W on a lathe) per axis.
     let incremental = step.st.incremental;
     let values = written_axes(step, words)?.map(|v| v.map(|(v, by_address)| (v, by_address || incremental)));
-    let merge = |old: f64, v: Option<(f64, bool)>| match v {
-        Some((v, true)) => old + v,
-        Some((v, false)) => v,
-        None => old,
-    };
-    let out_of_range = |step: &Step, what: &str| step.alarm(Rule::ValueOutOfRange, pw.span, format!("{}: {what}", pw.text()));
     if l == Some(2) {
         if n > 6 {
-            return Err(out_of_range(step, "G10 L2 sets work offset P0 (external) to P6 (G59)"));
+            return Err(p_out_of_range(step, pw, "G10 L2 sets work offset P0 (external) to P6 (G59)"));
         }
         let old = step.tables.work_mm[n as usize];
         let p = Vec3::new(merge(old.x, values[0]), merge(old.y, values[1]), merge(old.z, values[2]));
         return Ok(Some(TableWrite::Work(n as usize, p)));
     }
     match (forms, l) {
-        (G10Forms::LatheOffsets, None) => {
-            // P1-64 wear, P10001-10064 geometry (docs/reference/macro.md 10.2, inferred); R (C adds) the nose
-            // radius, Q the imaginary tip.
-            let (number, geometry) = match n {
-                1..=64 => (n, false),
-                10_001..=10_064 => (n - 10_000, true),
-                _ => return Err(out_of_range(step, "G10 P sets wear offsets P1-P64 or geometry offsets P10001-P10064")),
-            };
-            let mut e = step.tables.offset(number).copied().unwrap_or(Offset { number, ..Offset::default() });
-            if geometry {
-                (e.x_mm, e.y_mm, e.z_mm) = (merge(e.x_mm, values[0]), merge(e.y_mm, values[1]), merge(e.z_mm, values[2]));
-            } else {
-                (e.wear_x_mm, e.wear_y_mm, e.wear_z_mm) = (merge(e.wear_x_mm, values[0]), merge(e.wear_y_mm, values[1]), merge(e.wear_z_mm, values[2]));
-            }
-            let r = match (words.take(b'R'), words.take(b'C')) {
-                (Some(a), Some(i)) => return Err(step.alarm(Rule::DuplicateWord, i.span, format!("{} and {} both give the nose radius", a.text(), i.text()))),
-                (Some(w), None) => Some((step.length(w)?, false)),
-                (None, Some(w)) => Some((step.length(w)?, true)),
-                (None, None) => None,
-            };
-            if geometry { e.radius_mm = merge(e.radius_mm, r) } else { e.wear_radius_mm = merge(e.wear_radius_mm, r) }
-            if let Some(w) = words.take(b'Q') {
-                if w.decimal || !(0.0..=9.0).contains(&w.value) {
-                    return Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("{}: the imaginary tool nose is Q0 to Q9", w.text())));
-                }
-                e.tip = w.value as u8;
-            }
-            Ok(Some(TableWrite::Offset(e)))
-        }
-        (G10Forms::MillOffsets, None | Some(1) | Some(10..=13)) => {
-            if !(1..=crate::setup::MAX_OFFSET_NUMBER).contains(&n) {
-                return Err(out_of_range(step, "G10 P is an offset number, 1 or more"));
-            }
-            let Some(rw) = words.take(b'R') else {
-                return Err(step.alarm(Rule::MissingWord, span, "G10 P_ R_: R gives the offset value"));
-            };
-            let r = Some((step.length(rw)?, step.st.incremental));
-            let mut e = step.tables.offset(n).copied().unwrap_or(Offset { number: n, ..Offset::default() });
-            match l {
-                // Memory A: one value per number, read by H and by D (inferred).
-                None | Some(1) => {
-                    e.length_mm = merge(e.length_mm + e.wear_length_mm, r);
-                    e.radius_mm = merge(e.radius_mm + e.wear_radius_mm, r);
-                    e.wear_length_mm = 0.0;
-                    e.wear_radius_mm = 0.0;
-                }
-                // Memory C: L10 H geometry, L11 H wear, L12 D geometry, L13 D wear.
-                Some(10) => e.length_mm = merge(e.length_mm, r),
-                Some(11) => e.wear_length_mm = merge(e.wear_length_mm, r),
-                Some(12) => e.radius_mm = merge(e.radius_mm, r),
-                _ => e.wear_radius_mm = merge(e.wear_radius_mm, r),
-            }
-            Ok(Some(TableWrite::Offset(e)))
-        }
+        (G10Forms::LatheOffsets, None) => lathe_offset_setting(step, words, n, pw, values),
+        (G10Forms::MillOffsets, None | Some(1) | Some(10..=13)) => mill_offset_setting(step, words, n, pw, l, span),
         (_, Some(l)) => Err(step.alarm(Rule::ValueOutOfRange, span, format!("G10 L{l}: {} sets L2 (work offsets) and the tool offsets only here", step.profile.name))),
         (_, None) => Err(step.alarm(Rule::NotSupported, span, "G10: not simulated by ncsight on this profile yet")),
     }
+}
+
+/// A G10 value on an old one: added (incremental), set (absolute), or the old one kept.
+#[inline]
+fn merge(old: f64, v: Option<(f64, bool)>) -> f64 {
+    match v {
+        Some((v, true)) => old + v,
+        Some((v, false)) => v,
+        None => old,
+    }
+}
+
+/// The alarm for G10's P word `pw` out of the form's range.
+fn p_out_of_range(step: &Step, pw: &crate::read::Word, what: &str) -> Diagnostic {
+    step.alarm(Rule::ValueOutOfRange, pw.span, format!("{}: {what}", pw.text()))
+}
+
+/// Whether G10 `L` starts the lines of data up to G11 (parameters; tool life on the GSK),
+/// which set the data input mode; a GSK G10 of another form is an alarm.
+fn starts_data_lines(step: &mut Step, l: Option<u32>, span: Span) -> Result<bool, Diagnostic> {
+    use crate::profile::G10Forms;
+    // The parameter lines follow, up to G11 (FANUC 0i manual, G10 L50; GSK980TDi help text,
+    // parameter reading and writing, G10 L52).
+    if let Some(entry) = step.profile.frame.parameter_entry.filter(|e| l == Some(e.l)) {
+        step.st.data_input = Some(DataInput::Parameters(entry));
+        return Ok(true);
+    }
+    if step.profile.frame.g10 == G10Forms::ToolLifeAndParameters {
+        // GSK980TDi help text, G10 L3: the tool life data up to G11; every other word there is
+        // ignored (note 1). ncsight does not count tool life: the lines are read and dropped.
+        if l == Some(3) {
+            step.warn(Rule::NotSimulated, span, "G10 L3: the tool life management data up to G11 are read and not kept (ncsight does not count tool life)");
+            step.st.data_input = Some(DataInput::ToolLife);
+            return Ok(true);
+        }
+        return Err(step.alarm(Rule::ImproperGCode, span, format!("G10 on {}: its help text has G10 L3 (tool life) and G10 L52 (parameters) only, no work or tool offset setting", step.profile.name)));
+    }
+    Ok(false)
+}
+
+/// G10 P_ on a lathe (`n` the value of P, the word `pw`): the wear (P1-64) or geometry
+/// (P10001-10064) offset with the axis `values`, the nose radius R (C adds) and the imaginary
+/// tip Q.
+fn lathe_offset_setting(step: &mut Step, words: &mut Words, n: u32, pw: &crate::read::Word, values: [Option<(f64, bool)>; 3]) -> Result<Option<TableWrite>, Diagnostic> {
+    // P1-64 wear, P10001-10064 geometry (docs/reference/macro.md 10.2, inferred); R (C adds) the nose
+    // radius, Q the imaginary tip.
+    let (number, geometry) = match n {
+        1..=64 => (n, false),
+        10_001..=10_064 => (n - 10_000, true),
+        _ => return Err(p_out_of_range(step, pw, "G10 P sets wear offsets P1-P64 or geometry offsets P10001-P10064")),
+    };
+    let mut e = step.tables.offset(number).copied().unwrap_or(Offset { number, ..Offset::default() });
+    if geometry {
+        (e.x_mm, e.y_mm, e.z_mm) = (merge(e.x_mm, values[0]), merge(e.y_mm, values[1]), merge(e.z_mm, values[2]));
+    } else {
+        (e.wear_x_mm, e.wear_y_mm, e.wear_z_mm) = (merge(e.wear_x_mm, values[0]), merge(e.wear_y_mm, values[1]), merge(e.wear_z_mm, values[2]));
+    }
+    let r = match (words.take(b'R'), words.take(b'C')) {
+        (Some(a), Some(i)) => return Err(step.alarm(Rule::DuplicateWord, i.span, format!("{} and {} both give the nose radius", a.text(), i.text()))),
+        (Some(w), None) => Some((step.length(w)?, false)),
+        (None, Some(w)) => Some((step.length(w)?, true)),
+        (None, None) => None,
+    };
+    if geometry { e.radius_mm = merge(e.radius_mm, r) } else { e.wear_radius_mm = merge(e.wear_radius_mm, r) }
+    if let Some(w) = words.take(b'Q') {
+        if w.decimal || !(0.0..=9.0).contains(&w.value) {
+            return Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("{}: the imaginary tool nose is Q0 to Q9", w.text())));
+        }
+        e.tip = w.value as u8;
+    }
+    Ok(Some(TableWrite::Offset(e)))
+}
+
+/// G10 P_ R_ on a mill (`n` the value of P, the word `pw`): offset n's value R, in tool offset
+/// memory A (no L, L1) or C (L10-L13).
+fn mill_offset_setting(step: &mut Step, words: &mut Words, n: u32, pw: &crate::read::Word, l: Option<u32>, span: Span) -> Result<Option<TableWrite>, Diagnostic> {
+    if !(1..=crate::setup::MAX_OFFSET_NUMBER).contains(&n) {
+        return Err(p_out_of_range(step, pw, "G10 P is an offset number, 1 or more"));
+    }
+    let Some(rw) = words.take(b'R') else {
+        return Err(step.alarm(Rule::MissingWord, span, "G10 P_ R_: R gives the offset value"));
+    };
+    let r = Some((step.length(rw)?, step.st.incremental));
+    let mut e = step.tables.offset(n).copied().unwrap_or(Offset { number: n, ..Offset::default() });
+    match l {
+        // Memory A: one value per number, read by H and by D (inferred).
+        None | Some(1) => {
+            e.length_mm = merge(e.length_mm + e.wear_length_mm, r);
+            e.radius_mm = merge(e.radius_mm + e.wear_radius_mm, r);
+            e.wear_length_mm = 0.0;
+            e.wear_radius_mm = 0.0;
+        }
+        // Memory C: L10 H geometry, L11 H wear, L12 D geometry, L13 D wear.
+        Some(10) => e.length_mm = merge(e.length_mm, r),
+        Some(11) => e.wear_length_mm = merge(e.wear_length_mm, r),
+        Some(12) => e.radius_mm = merge(e.radius_mm, r),
+        _ => e.wear_radius_mm = merge(e.wear_radius_mm, r),
+    }
+    Ok(Some(TableWrite::Offset(e)))
 }
 
 /// G45 (+1) / G46 (-1) / G47 (+2) / G48 (-2) with D: each axis's move of the block is made

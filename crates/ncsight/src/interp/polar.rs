@@ -105,6 +105,24 @@ pub(super) fn switch(step: &mut Step, words: &mut Words, f: GFn, span: Span) -> 
         GFn::PolarInterpolation(on) => (if on { "G12.1" } else { "G13.1" }, on),
         _ => ("G07.1", true),
     };
+    let radius_mm = switch_words(step, words, f, code, span)?;
+    let on = on && radius_mm.is_none_or(|r| r != 0.0);
+    // Help text note 3; FANUC likewise: radius compensation is started and ended inside.
+    if step.st.comp.side != 0 {
+        return Err(step.alarm(Rule::CompPlaneChange, span, format!("{code} in radius compensation: cancel it (G40) first")));
+    }
+    if on {
+        start_mode(step, f, code, span, radius_mm)
+    } else if let Some(p) = step.st.polar_interp {
+        end_mode(step, f, code, span, p)
+    } else {
+        Ok(())
+    }
+}
+
+/// The words of a switching block: G07.1's C, the cylinder's radius (None for G12.1, G13.1);
+/// the alarms for anything else in the block.
+fn switch_words(step: &mut Step, words: &mut Words, f: GFn, code: &str, span: Span) -> Result<Option<f64>, Diagnostic> {
     // G07.1's C: the cylinder's radius, 0 to end the mode.
     let radius_mm = match f {
         GFn::CylindricalInterpolation => match words.take(b'C') {
@@ -122,91 +140,102 @@ pub(super) fn switch(step: &mut Step, words: &mut Words, f: GFn, span: Span) -> 
     if let Some(w) = words.first_unused() {
         return Err(step.alarm(Rule::WordNotTaken, w.span, format!("{}: {code} stands alone in its block (help text G12.1 note 1)", w.text())));
     }
-    let on = on && radius_mm.is_none_or(|r| r != 0.0);
-    // Help text note 3; FANUC likewise: radius compensation is started and ended inside.
-    if step.st.comp.side != 0 {
-        return Err(step.alarm(Rule::CompPlaneChange, span, format!("{code} in radius compensation: cancel it (G40) first")));
+    Ok(radius_mm)
+}
+
+/// Start polar coordinate interpolation (`radius_mm` None) or cylindrical interpolation on a
+/// cylinder of that radius: the hypothetical C becomes the plane's Y, at the C axis's turn.
+fn start_mode(step: &mut Step, f: GFn, code: &str, span: Span, radius_mm: Option<f64>) -> Result<(), Diagnostic> {
+    if let Some(m) = step.st.polar_interp {
+        let same = matches!((m.kind, f), (Hypothetical::Polar, GFn::PolarInterpolation(_)) | (Hypothetical::Cylinder { .. }, GFn::CylindricalInterpolation));
+        if same && radius_mm.is_none() {
+            return Ok(());
+        }
+        return Err(step.alarm(Rule::ImproperGCode, span, format!("{code} while polar coordinate or cylindrical interpolation is in force: end it first")));
     }
-    if on {
-        if let Some(m) = step.st.polar_interp {
-            let same = matches!((m.kind, f), (Hypothetical::Polar, GFn::PolarInterpolation(_)) | (Hypothetical::Cylinder { .. }, GFn::CylindricalInterpolation));
-            if same && radius_mm.is_none() {
-                return Ok(());
-            }
-            return Err(step.alarm(Rule::ImproperGCode, span, format!("{code} while polar coordinate or cylindrical interpolation is in force: end it first")));
-        }
-        if !step.tables.rotary[C] {
-            return Err(step.alarm(Rule::ImproperAddress, span, format!("{code} needs the C axis: declare it in the setup ([machine] axes = [\"X\", \"Z\", \"C\"])")));
-        }
-        let c_deg = step.st.rotary_deg[C];
-        let kind = match radius_mm {
-            None => {
-                if step.st.per_rev && step.profile.frame.polar_refuses_per_rev {
-                    return Err(step.alarm(Rule::ImproperGCode, span, "G12.1 under feed per revolution (G99): polar coordinate interpolation is in G98 (help text G12.1 note 3)"));
-                }
-                // Note 4: polar coordinate interpolation starts with the C axis at 0 degrees.
-                if (c_deg / 360.0).fract().abs() > 1e-9 {
-                    return Err(step.alarm(Rule::ImproperGCode, span, format!("G12.1 with C at {} degrees: polar coordinate interpolation starts at C0 (help text G12.1 note 4)", crate::alarm::shown(c_deg, 3))));
-                }
-                Hypothetical::Polar
-            }
-            Some(r) => {
-                if r < 0.0 {
-                    return Err(step.alarm(Rule::ValueOutOfRange, span, "G07.1 C: the cylinder's radius cannot be negative"));
-                }
-                // The unrolled plane: Z and C as the programme's plane has them. In G19 (C
-                // parallel to Y) C comes first; in G18 (C in X's place) Z does, so C is kept as
-                // -Y to turn the same way in the plane YZ.
-                let sign = match step.st.plane {
-                    Plane::YZ => 1.0,
-                    Plane::ZX => -1.0,
-                    Plane::XY => return Err(step.alarm(Rule::PlaneMismatch, span, "G07.1 in the XY plane (G17): cylindrical interpolation is in the plane of Z and C (G18 or G19)")),
-                };
-                Hypothetical::Cylinder { radius_mm: r, sign }
-            }
-        };
-        let mode = PolarInterp { kind, plane_before: step.st.plane, y_before: step.st.pos.y };
-        step.st.polar_interp = Some(mode);
-        let c_plane = match kind {
-            Hypothetical::Polar => 0.0,
-            Hypothetical::Cylinder { radius_mm, sign } => sign * c_deg.to_radians() * radius_mm,
-        };
-        step.st.pos.y = c_plane;
-        // Where compensation last left the tool (a G40 without a move), in the plane too.
-        if let Some(a) = step.st.comp.actual.as_mut() {
-            a.y = c_plane;
-        }
-        step.st.plane = match kind {
-            Hypothetical::Polar => Plane::XY,
-            Hypothetical::Cylinder { .. } => Plane::YZ,
-        };
-    } else if let Some(p) = step.st.polar_interp {
-        let ends = matches!((p.kind, f), (Hypothetical::Polar, GFn::PolarInterpolation(false)) | (Hypothetical::Cylinder { .. }, GFn::CylindricalInterpolation));
-        if !ends {
-            return Err(step.alarm(Rule::ImproperGCode, span, format!("{code} does not end the interpolation in force")));
-        }
-        let (x, c) = (step.st.pos.x, step.st.pos.y);
-        match p.kind {
-            Hypothetical::Polar => {
-                step.st.rotary_deg[C] = angle_near(x, c, step.st.rotary_deg[C]);
-                step.st.pos.x = x.hypot(c);
-            }
-            Hypothetical::Cylinder { radius_mm, sign } => {
-                step.st.rotary_deg[C] = if radius_mm > 0.0 { (sign * c / radius_mm).to_degrees() } else { step.st.rotary_deg[C] };
-            }
-        }
-        if let Some(a) = step.st.comp.actual.as_mut() {
-            if p.kind == Hypothetical::Polar {
-                a.x = a.x.hypot(a.y);
-            }
-            a.y = p.y_before;
-        }
-        step.st.polar_interp = None;
-        step.st.pos.y = p.y_before;
-        step.st.plane = p.plane_before;
-        // G16 belongs to the plane that ends here.
-        step.st.transform.polar = false;
+    if !step.tables.rotary[C] {
+        return Err(step.alarm(Rule::ImproperAddress, span, format!("{code} needs the C axis: declare it in the setup ([machine] axes = [\"X\", \"Z\", \"C\"])")));
     }
+    let c_deg = step.st.rotary_deg[C];
+    let kind = hypothetical_axis(step, span, radius_mm, c_deg)?;
+    let mode = PolarInterp { kind, plane_before: step.st.plane, y_before: step.st.pos.y };
+    step.st.polar_interp = Some(mode);
+    let c_plane = match kind {
+        Hypothetical::Polar => 0.0,
+        Hypothetical::Cylinder { radius_mm, sign } => sign * c_deg.to_radians() * radius_mm,
+    };
+    step.st.pos.y = c_plane;
+    // Where compensation last left the tool (a G40 without a move), in the plane too.
+    if let Some(a) = step.st.comp.actual.as_mut() {
+        a.y = c_plane;
+    }
+    step.st.plane = match kind {
+        Hypothetical::Polar => Plane::XY,
+        Hypothetical::Cylinder { .. } => Plane::YZ,
+    };
+    Ok(())
+}
+
+/// The hypothetical axis the mode starts with (the C axis at `c_deg`): polar (`radius_mm`
+/// None), or the unrolled cylinder with the sign that keeps C turning the plane's way; the
+/// alarms for what the mode cannot start from.
+fn hypothetical_axis(step: &Step, span: Span, radius_mm: Option<f64>, c_deg: f64) -> Result<Hypothetical, Diagnostic> {
+    Ok(match radius_mm {
+        None => {
+            if step.st.per_rev && step.profile.frame.polar_refuses_per_rev {
+                return Err(step.alarm(Rule::ImproperGCode, span, "G12.1 under feed per revolution (G99): polar coordinate interpolation is in G98 (help text G12.1 note 3)"));
+            }
+            // Note 4: polar coordinate interpolation starts with the C axis at 0 degrees.
+            if (c_deg / 360.0).fract().abs() > 1e-9 {
+                return Err(step.alarm(Rule::ImproperGCode, span, format!("G12.1 with C at {} degrees: polar coordinate interpolation starts at C0 (help text G12.1 note 4)", crate::alarm::shown(c_deg, 3))));
+            }
+            Hypothetical::Polar
+        }
+        Some(r) => {
+            if r < 0.0 {
+                return Err(step.alarm(Rule::ValueOutOfRange, span, "G07.1 C: the cylinder's radius cannot be negative"));
+            }
+            // The unrolled plane: Z and C as the programme's plane has them. In G19 (C
+            // parallel to Y) C comes first; in G18 (C in X's place) Z does, so C is kept as
+            // -Y to turn the same way in the plane YZ.
+            let sign = match step.st.plane {
+                Plane::YZ => 1.0,
+                Plane::ZX => -1.0,
+                Plane::XY => return Err(step.alarm(Rule::PlaneMismatch, span, "G07.1 in the XY plane (G17): cylindrical interpolation is in the plane of Z and C (G18 or G19)")),
+            };
+            Hypothetical::Cylinder { radius_mm: r, sign }
+        }
+    })
+}
+
+/// End the interpolation `p` in force: the plane's X and C back to the machine's X and the C
+/// axis's turn, the plane and Y as before it.
+fn end_mode(step: &mut Step, f: GFn, code: &str, span: Span, p: PolarInterp) -> Result<(), Diagnostic> {
+    let ends = matches!((p.kind, f), (Hypothetical::Polar, GFn::PolarInterpolation(false)) | (Hypothetical::Cylinder { .. }, GFn::CylindricalInterpolation));
+    if !ends {
+        return Err(step.alarm(Rule::ImproperGCode, span, format!("{code} does not end the interpolation in force")));
+    }
+    let (x, c) = (step.st.pos.x, step.st.pos.y);
+    match p.kind {
+        Hypothetical::Polar => {
+            step.st.rotary_deg[C] = angle_near(x, c, step.st.rotary_deg[C]);
+            step.st.pos.x = x.hypot(c);
+        }
+        Hypothetical::Cylinder { radius_mm, sign } => {
+            step.st.rotary_deg[C] = if radius_mm > 0.0 { (sign * c / radius_mm).to_degrees() } else { step.st.rotary_deg[C] };
+        }
+    }
+    if let Some(a) = step.st.comp.actual.as_mut() {
+        if p.kind == Hypothetical::Polar {
+            a.x = a.x.hypot(a.y);
+        }
+        a.y = p.y_before;
+    }
+    step.st.polar_interp = None;
+    step.st.pos.y = p.y_before;
+    step.st.plane = p.plane_before;
+    // G16 belongs to the plane that ends here.
+    step.st.transform.polar = false;
     Ok(())
 }
 

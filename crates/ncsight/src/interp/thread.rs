@@ -505,6 +505,45 @@ fn arc(step: &mut Step, words: &mut Words, dir: ArcDir, run_deg: Option<f64>) ->
 fn cycle(step: &mut Step, words: &mut Words, rules: &'static CycleRules, explicit: bool) -> Result<(), Diagnostic> {
     let gname = rules.code;
     let (lead, hand) = step.read_hand_lead(words, gname, rules.negative_f_left_hand, rules.lead_i, rules.lead_e)?;
+    read_repair_word(step, words, rules);
+    read_starts(step, words, rules)?;
+    let flank_mm = read_pull_out_and_flank(step, words, rules)?;
+    if rules.ts_before {
+        if let Some(w) = [b'T', b'S'].iter().find_map(|l| words.peek(*l)) {
+            // Seed 004 (5) a: T, S and M for G92 come in the blocks before the cycle.
+            let msg = format!("{}: the LX3 manual asks for T, S and M of a G92 cycle in the blocks before it", w.text());
+            step.warn(Rule::CycleWords, w.span, msg);
+        }
+    }
+    let q = if rules.q_start { step.read_q(words, 0.001, false)? } else { None };
+    // Help note 6 (G92.1): the interpolation type needs the servo spindle in position mode.
+    let rpm = if rules.rigid { hand * step.rigid_rpm(words, gname)? } else { step.follow_rpm(gname)? };
+    let a = step.st.pos;
+    let c = cycle_end_point(step, words, rules, explicit)?;
+    let taper = step.st.thread.taper_mm;
+    let cut_start = Vec3::new(c.x + taper, a.y, a.z + flank_mm);
+    let long_axis = LongAxis::of(&cut_start, &c);
+    let (l, s) = long_axis.indices();
+    let retract = (a.axis(s) - c.axis(s)).abs();
+    let toward_start = {
+        let d = a.axis(s) - c.axis(s);
+        if d != 0.0 { d.signum() } else if c.axis(s) < 0.0 { -1.0 } else { 1.0 }
+    };
+    let pull_out = cycle_pull_out(step, rules, lead, toward_start, retract);
+    step.feed_warning(gname, lead, rpm);
+    let first_deg = cycle_start_deg(step, gname, q, cut_start, c, lead, rpm)?;
+    step.remember_pass(gname, lead, cut_start.axis(l), c.axis(s), rpm, first_deg);
+    let spec = Cycle { start: a, cut_start, cut_end: c, lead_mm: lead, rpm, starts: step.st.thread.starts, first_deg, pull_out };
+    let ops = expand_cycle(&spec).map_err(|e| step.pass_error(gname, e))?;
+    let hold = cycle_hold(step, rules, a, lead, retract, pull_out);
+    emit_cycle(step, ops, hold);
+    step.st.thread.cycle_end = Some(c);
+    Ok(())
+}
+
+/// The thread repair word P of G92.1: P1 repairs the thread when repair is enabled (help notes
+/// 1 and 2).
+fn read_repair_word(step: &mut Step, words: &mut Words, rules: &'static CycleRules) {
     let repair_word = if rules.repair_p { words.take(b'P') } else { None };
     if let Some(w) = repair_word {
         let enabled = step.profile.thread.repair_enable.is_some_and(|k| step.params.get(k) != 0.0);
@@ -518,6 +557,10 @@ fn cycle(step: &mut Step, words: &mut Words, rules: &'static CycleRules, explici
         // Help note 2: P other than 1 does no repair.
         step.st.thread.repair = wants && enabled;
     }
+}
+
+/// The number of starts L of a multi-start thread, where the cycle takes one.
+fn read_starts(step: &mut Step, words: &mut Words, rules: &'static CycleRules) -> Result<(), Diagnostic> {
     // L: number of starts, 1-99, modal (seed 000; seed 001 G92.1).
     if rules.starts_l {
         if let Some(w) = words.take(b'L') {
@@ -527,6 +570,13 @@ fn cycle(step: &mut Step, words: &mut Words, rules: &'static CycleRules, explici
             step.st.thread.starts = w.value as u32;
         }
     }
+    Ok(())
+}
+
+/// The pull-out words J and K into the thread data, by the cycle's rules; or K as the flank
+/// infeed: the shift of this pass's start along Z, mm (0 without it).
+fn read_pull_out_and_flank(step: &mut Step, words: &mut Words, rules: &'static CycleRules) -> Result<f64, Diagnostic> {
+    let gname = rules.code;
     let mut flank_mm = 0.0;
     match rules.jk {
         // Seed 000 note 10: negative J, K count as positive.
@@ -541,16 +591,14 @@ fn cycle(step: &mut Step, words: &mut Words, rules: &'static CycleRules, explici
             flank_mm = step.length(w)?;
         }
     }
-    if rules.ts_before {
-        if let Some(w) = [b'T', b'S'].iter().find_map(|l| words.peek(*l)) {
-            // Seed 004 (5) a: T, S and M for G92 come in the blocks before the cycle.
-            let msg = format!("{}: the LX3 manual asks for T, S and M of a G92 cycle in the blocks before it", w.text());
-            step.warn(Rule::CycleWords, w.span, msg);
-        }
-    }
-    let q = if rules.q_start { step.read_q(words, 0.001, false)? } else { None };
-    // Help note 6 (G92.1): the interpolation type needs the servo spindle in position mode.
-    let rpm = if rules.rigid { hand * step.rigid_rpm(words, gname)? } else { step.follow_rpm(gname)? };
+    Ok(flank_mm)
+}
+
+/// The cycle's end point (what the block omits from the last cycle's end, X else from where the
+/// tool stands) with the taper it sets or keeps; the alarms for a face thread and for a taper
+/// too large for the pass.
+fn cycle_end_point(step: &mut Step, words: &mut Words, rules: &'static CycleRules, explicit: bool) -> Result<Vec3, Diagnostic> {
+    let gname = rules.code;
     // Taper: R on GSK and FANUC, I on the YASNAC; radius, cut start minus cut end.
     let taper_word = words.take(rules.taper);
     let a = step.st.pos;
@@ -588,29 +636,33 @@ fn cycle(step: &mut Step, words: &mut Words, rules: &'static CycleRules, explici
         ));
     }
     if rules.taper_limit {
-        // Seed 000 / seed 001: when R and U differ in sign, |R| <= |U/2|.
-        let u_radius = c.x - a.x;
-        if taper != 0.0 && u_radius != 0.0 && taper.signum() != u_radius.signum() && taper.abs() > u_radius.abs() + 1e-9 {
-            let span = taper_word.map(|w| w.span).unwrap_or(step.span);
-            return Err(step.alarm(
-                Rule::TaperTooLarge,
-                span,
-                format!(
-                    "{gname}: R{taper} and U{} differ in sign, so |R| may be at most |U/2| = {:.3} mm",
-                    2.0 * u_radius,
-                    u_radius.abs()
-                ),
-            ));
-        }
+        check_taper_limit(step, gname, c.x - a.x, taper, taper_word)?;
     }
-    let cut_start = Vec3::new(c.x + taper, a.y, a.z + flank_mm);
-    let long_axis = LongAxis::of(&cut_start, &c);
-    let (l, s) = long_axis.indices();
-    let retract = (a.axis(s) - c.axis(s)).abs();
-    let toward_start = {
-        let d = a.axis(s) - c.axis(s);
-        if d != 0.0 { d.signum() } else if c.axis(s) < 0.0 { -1.0 } else { 1.0 }
-    };
+    Ok(c)
+}
+
+/// The alarm for a taper `taper` larger than the pass allows against the end point's X
+/// distance `u_radius` from the start (a radius).
+fn check_taper_limit(step: &Step, gname: &str, u_radius: f64, taper: f64, taper_word: Option<&Word>) -> Result<(), Diagnostic> {
+    // Seed 000 / seed 001: when R and U differ in sign, |R| <= |U/2|.
+    if taper != 0.0 && u_radius != 0.0 && taper.signum() != u_radius.signum() && taper.abs() > u_radius.abs() + 1e-9 {
+        let span = taper_word.map(|w| w.span).unwrap_or(step.span);
+        return Err(step.alarm(
+            Rule::TaperTooLarge,
+            span,
+            format!(
+                "{gname}: R{taper} and U{} differ in sign, so |R| may be at most |U/2| = {:.3} mm",
+                2.0 * u_radius,
+                u_radius.abs()
+            ),
+        ));
+    }
+    Ok(())
+}
+
+/// The cycle's pull-out at the end of the thread, by the command's rules, at most the retract
+/// distance across.
+fn cycle_pull_out(step: &Step, rules: &'static CycleRules, lead: f64, toward_start: f64, retract: f64) -> Option<PullOut> {
     let pull_out = match rules.pull_out {
         // Seed 000 notes 2-7 and 10: J/K, No.19 for what is omitted.
         PullOutRule::JkTenths(tenths) => {
@@ -626,13 +678,17 @@ fn cycle(step: &mut Step, words: &mut Words, rules: &'static CycleRules, explici
         PullOutRule::None => None,
     };
     // Seed 001 G92.1 note 11, applied to G92 too (docs/reference/behaviour.md): J at most the retract distance.
-    let pull_out = pull_out.map(|mut p| {
+    pull_out.map(|mut p| {
         if p.short_mm > retract {
             p.short_mm = retract;
         }
         p
-    });
-    step.feed_warning(gname, lead, rpm);
+    })
+}
+
+/// The spindle angle the first start begins at: Q (0 without it), or under thread repair the
+/// angle that puts the pass through the recorded groove.
+fn cycle_start_deg(step: &Step, gname: &str, q: Option<(f64, Word)>, cut_start: Vec3, c: Vec3, lead: f64, rpm: f64) -> Result<f64, Diagnostic> {
     let mut first_deg = q.map(|(d, _)| d).unwrap_or(0.0);
     if step.st.thread.repair {
         // Thread repair: the start angle that puts the pass through the recorded groove.
@@ -648,11 +704,14 @@ fn cycle(step: &mut Step, words: &mut Words, rules: &'static CycleRules, explici
             Err(e) => return Err(step.alarm(Rule::RepairOutside, step.span, format!("{gname} P1: {e} (help note 5)"))),
         };
     }
-    step.remember_pass(gname, lead, cut_start.axis(l), c.axis(s), rpm, first_deg);
-    let spec = Cycle { start: a, cut_start, cut_end: c, lead_mm: lead, rpm, starts: step.st.thread.starts, first_deg, pull_out };
-    let ops = expand_cycle(&spec).map_err(|e| step.pass_error(gname, e))?;
+    Ok(first_deg)
+}
+
+/// What a feed hold does during the cycle, by the command's rules: pull out or finish the
+/// thread, thread up, nothing, or stop after the run.
+fn cycle_hold(step: &Step, rules: &'static CycleRules, a: Vec3, lead: f64, retract: f64, pull_out: Option<PullOut>) -> Hold {
     // The thread hold of the cycle (seed 000 note 1; seed 004; seed 001 G92.1 note 7).
-    let hold = match rules.hold {
+    match rules.hold {
         HoldRule::PullOutOrFinish(bit) => {
             let finish = step.params.get(bit) != 0.0;
             let (long, short) = pull_out.map(|p| (p.long_mm, p.short_mm)).unwrap_or((0.0, 0.0));
@@ -673,7 +732,12 @@ fn cycle(step: &mut Step, words: &mut Words, rules: &'static CycleRules, explici
         HoldRule::Ignored => Hold::Ignored,
         // GSK980TDi help text, G92.1 note 3: the thread is finished, then the run pauses.
         HoldRule::AfterRun => Hold::AfterRun,
-    };
+    }
+}
+
+/// Emit the cycle's moves, start by start (each start counts as a cycle), the hold on the
+/// thread and on the pull-out after its end point.
+fn emit_cycle(step: &mut Step, ops: Vec<(u32, Op)>, hold: Hold) {
     let mut last_start = None;
     for (k, op) in ops {
         if last_start != Some(k) {
@@ -697,8 +761,6 @@ fn cycle(step: &mut Step, words: &mut Words, rules: &'static CycleRules, explici
             }
         }
     }
-    step.st.thread.cycle_end = Some(c);
-    Ok(())
 }
 
 /// Seed 000's J/K rules with `tenths` (No.19, or G76's r) for what is omitted.
