@@ -158,6 +158,8 @@ impl Machine {
         }
     }
 
+    /// Run one record in time: a deferred hold before it, its duration, then RESET or FEED HOLD
+    /// if pressed while it runs, else the record whole.
     fn run_one(&mut self, r: Record, out: &mut dyn FnMut(Event)) {
         if self.reset {
             return;
@@ -182,23 +184,7 @@ impl Machine {
         if let Some(tr) = self.reset_at.filter(|tr| *tr < end || (*tr <= start)) {
             self.reset_at = None;
             self.reset = true;
-            // RESET: the axes decelerate to a stop (seed 000 note 11; seed 001 notes 8 and 9).
-            if tr > start && r.op.end_point().is_some() {
-                let (first, _) = self.split(&r, start, dur, tr, true);
-                if let Some((f, fdur)) = first {
-                    self.emit(f, fdur, out);
-                }
-            } else if let (true, Op::Rotary { from_deg, to_deg, .. }) = (tr > start && dur > 0.0, r.op) {
-                // A turn stops where it has come to (in proportion to its time: the deceleration
-                // of a rotary axis is not modelled).
-                let reached = from_deg + (to_deg - from_deg) * ((tr - start) / dur);
-                let mut part = r.clone();
-                if let Op::Rotary { to_deg, .. } = &mut part.op {
-                    *to_deg = reached;
-                }
-                self.emit(part, tr - start, out);
-            }
-            self.stop(r.span, StopReason::Reset, out);
+            self.reset_during(r, start, dur, tr, out);
             return;
         }
         let hold_now = self.holds.first().copied().filter(|h| *h < end || *h <= start);
@@ -206,32 +192,36 @@ impl Machine {
             return self.finish_record(r, dur, out);
         };
         self.holds.remove(0);
-        match r.hold {
-            Hold::Stop => {
-                if h <= start || r.op.end_point().is_none() {
-                    self.stop(r.span, StopReason::FeedHold, out);
-                    return self.finish_record(r, dur, out);
-                }
-                let span = r.span;
-                let (first, rest) = self.split(&r, start, dur, h, true);
-                match (first, rest) {
-                    (Some((f, fdur)), Some(rest)) => {
-                        self.emit(f, fdur, out);
-                        self.stop(span, StopReason::FeedHold, out);
-                        let rdur = self.model.duration_s(&rest, false);
-                        self.finish_record(rest, rdur, out);
-                    }
-                    _ => {
-                        // The deceleration ends past the end of the move: stop at its end.
-                        let block_end = r.block_end;
-                        self.emit(Record { block_end: false, ..r }, dur, out);
-                        self.stop(span, StopReason::FeedHold, out);
-                        if block_end && self.single_block {
-                            self.stop(span, StopReason::SingleBlock, out);
-                        }
-                    }
-                }
+        self.feed_hold_during(r, h, start, dur, out);
+    }
+
+    /// RESET pressed at `tr` while the record runs (from `start`, for `dur`): the part of it
+    /// made before the axes stop, then the stop.
+    fn reset_during(&mut self, r: Record, start: f64, dur: f64, tr: f64, out: &mut dyn FnMut(Event)) {
+        // RESET: the axes decelerate to a stop (seed 000 note 11; seed 001 notes 8 and 9).
+        if tr > start && r.op.end_point().is_some() {
+            let (first, _) = self.split(&r, start, dur, tr, true);
+            if let Some((f, fdur)) = first {
+                self.emit(f, fdur, out);
             }
+        } else if let (true, Op::Rotary { from_deg, to_deg, .. }) = (tr > start && dur > 0.0, r.op) {
+            // A turn stops where it has come to (in proportion to its time: the deceleration
+            // of a rotary axis is not modelled).
+            let reached = from_deg + (to_deg - from_deg) * ((tr - start) / dur);
+            let mut part = r.clone();
+            if let Op::Rotary { to_deg, .. } = &mut part.op {
+                *to_deg = reached;
+            }
+            self.emit(part, tr - start, out);
+        }
+        self.stop(r.span, StopReason::Reset, out);
+    }
+
+    /// FEED HOLD pressed at `h` while the record runs (from `start`, for `dur`): what the
+    /// record's [`Hold`] says the machine does.
+    fn feed_hold_during(&mut self, r: Record, h: f64, start: f64, dur: f64, out: &mut dyn FnMut(Event)) {
+        match r.hold {
+            Hold::Stop => self.hold_and_stop(r, h, start, dur, out),
             Hold::AfterRecord => {
                 let span = r.span;
                 let block_end = r.block_end;
@@ -245,22 +235,7 @@ impl Machine {
                 self.deferred = true;
                 self.finish_record(r, dur, out);
             }
-            Hold::Ignored => {
-                // Every press while the thread is cut is lost: the screen keeps showing RUN
-                // (GSK988T manual, G32.1 note 6).
-                let mut presses = vec![h];
-                while let Some(&next) = self.holds.first().filter(|t| **t < end) {
-                    presses.push(next);
-                    self.holds.remove(0);
-                }
-                for h in presses {
-                    let msg = format!(
-                        "FEED HOLD at {h} s was ignored: the thread is being cut (the control keeps running and does not remember the press; press it again once the thread is done)"
-                    );
-                    out(Event::Diagnostic(Diagnostic::new(Rule::HoldIgnored, self.style, r.span, msg)));
-                }
-                self.finish_record(r, dur, out);
-            }
+            Hold::Ignored => self.ignore_holds(r, h, start + dur, dur, out),
             Hold::ThreadCycle(th) => match th.style {
                 ThreadHoldStyle::FinishThenStop => {
                     // NO.0018 bit 6 = 1: the thread and its pull-out are finished first.
@@ -270,6 +245,53 @@ impl Machine {
                 _ => self.thread_hold(r, th, start, dur, h.max(start), out),
             },
         }
+    }
+
+    /// `Hold::Stop`: decelerate to a stop where the tool is, stop, then CYCLE START finishes
+    /// the move.
+    fn hold_and_stop(&mut self, r: Record, h: f64, start: f64, dur: f64, out: &mut dyn FnMut(Event)) {
+        if h <= start || r.op.end_point().is_none() {
+            self.stop(r.span, StopReason::FeedHold, out);
+            return self.finish_record(r, dur, out);
+        }
+        let span = r.span;
+        let (first, rest) = self.split(&r, start, dur, h, true);
+        match (first, rest) {
+            (Some((f, fdur)), Some(rest)) => {
+                self.emit(f, fdur, out);
+                self.stop(span, StopReason::FeedHold, out);
+                let rdur = self.model.duration_s(&rest, false);
+                self.finish_record(rest, rdur, out);
+            }
+            _ => {
+                // The deceleration ends past the end of the move: stop at its end.
+                let block_end = r.block_end;
+                self.emit(Record { block_end: false, ..r }, dur, out);
+                self.stop(span, StopReason::FeedHold, out);
+                if block_end && self.single_block {
+                    self.stop(span, StopReason::SingleBlock, out);
+                }
+            }
+        }
+    }
+
+    /// `Hold::Ignored`: the press at `h` and every other before the record's `end` are
+    /// warned of and lost; the record runs whole.
+    fn ignore_holds(&mut self, r: Record, h: f64, end: f64, dur: f64, out: &mut dyn FnMut(Event)) {
+        // Every press while the thread is cut is lost: the screen keeps showing RUN
+        // (GSK988T manual, G32.1 note 6).
+        let mut presses = vec![h];
+        while let Some(&next) = self.holds.first().filter(|t| **t < end) {
+            presses.push(next);
+            self.holds.remove(0);
+        }
+        for h in presses {
+            let msg = format!(
+                "FEED HOLD at {h} s was ignored: the thread is being cut (the control keeps running and does not remember the press; press it again once the thread is done)"
+            );
+            out(Event::Diagnostic(Diagnostic::new(Rule::HoldIgnored, self.style, r.span, msg)));
+        }
+        self.finish_record(r, dur, out);
     }
 
     /// Emit a record and what follows it: a deferred hold at the end of its run, single block.

@@ -345,16 +345,15 @@ fn function_lengths() -> Vec<(usize, String, String)> {
 }
 
 /// The longest functions of the core, printed (`cargo test -p ncsight --test layers
-/// longest_functions -- --nocapture`, or `tests/longest-functions`), and a ratchet: the number
-/// over 100 lines may only fall (issue 34 brings it to none). Lower `OVER_100` as it falls.
+/// longest_functions -- --nocapture`, or `tests/longest-functions`): none runs over 100 lines
+/// (issue 34 brought them from 21 to none).
 #[test]
 fn longest_functions() {
-    const OVER_100: usize = 17;
     let all = function_lengths();
     for (n, at, name) in all.iter().take(30) {
         println!("{n:5} {at} {name}");
     }
     let over: Vec<_> = all.iter().filter(|f| f.0 > 100).collect();
     println!("{} functions over 100 lines", over.len());
-    assert!(over.len() <= OVER_100, "{} functions over 100 lines, more than the {OVER_100} allowed: {over:?}", over.len());
+    assert!(over.is_empty(), "functions over 100 lines: {over:?}");
 }

@@ -1329,67 +1329,94 @@ impl Core {
     /// G66.
     #[inline(never)]
     fn execute_calling(&mut self, block: &Block, place: Place, sink: &mut dyn FnMut(Event)) -> bool {
-        use crate::profile::GFn;
-        let profile = self.interp.profile();
-        let builders = self.builders;
         // A code the parameters make a call of the machine's macro (not inside such a macro:
         // there the code is an ordinary one).
-        if builders && !self.calls.frames.iter().any(|f| f.builder) {
-            let found = block.words.iter().enumerate().find_map(|(k, w)| {
-                if !matches!(w.letter, b'G' | b'M') || w.value.fract() != 0.0 || w.value < 0.0 {
-                    return None;
-                }
-                let code = w.value as u32;
-                if w.letter == b'M' && profile.calls.builder.m9000 && (9000..=9999).contains(&code) {
-                    // GSK980TDi help text, M9000-9999: M9123 calls O9123.
-                    return Some((k, code, false));
-                }
-                self.builder_codes.iter().find(|(l, c, _, _)| *l == w.letter && *c == code).map(|(_, _, program, as_macro)| (k, *program, *as_macro))
-            });
-            if let Some((k, number, as_macro)) = found {
-                let next = Place { block: place.block.saturating_add(1), ..place };
-                let mut span = block.span;
-                span.file = self.file;
-                let result = if as_macro {
-                    // As G65 P<programme> with the block's other words as arguments.
-                    let mut call = block.clone();
-                    let at = call.words[k].span;
-                    let trigger = call.words[k].text();
-                    call.words.remove(k);
-                    // G65 has no P argument: a P in the block is said to be ignored (no manual
-                    // says what the machine does with it; inferred).
-                    if let Some(pw) = call.words.iter().find(|w| w.letter == b'P') {
-                        let d = Diagnostic::new(Rule::TextIgnored, profile.alarm_style, pw.span, format!("{}: the macro call by {trigger} takes no P argument (G65 has none): ignored", pw.text()));
-                        sink(Event::Diagnostic(d));
-                    }
-                    call.words.retain(|w| w.letter != b'P');
-                    call.words.insert(0, Word { letter: b'G', value: 65.0, decimal: false, expr: false, span: at });
-                    call.words.insert(1, Word { letter: b'P', value: f64::from(number), decimal: false, expr: false, span: at });
-                    self.macro_arguments(&call, 0).and_then(|(number, count, locals)| {
-                        self.builder_call = true;
-                        self.call(number, count, span, next, Some(locals))
-                    })
-                } else {
-                    // As M98: the block's other words first, then the call.
-                    let mut rest = block.clone();
-                    rest.words.remove(k);
-                    if !rest.words.is_empty() && !self.execute_nc(&rest, place, sink) {
-                        return false;
-                    }
-                    self.builder_call = true;
-                    self.call(number, 1, span, next, None)
-                };
-                return result.unwrap_or_else(|d| self.fail(d, sink));
+        if self.builders && !self.calls.frames.iter().any(|f| f.builder) {
+            if let Some((k, number, as_macro)) = self.builder_call_word(block) {
+                return self.call_builder_macro(block, place, k, number, as_macro, sink);
             }
         }
         // G65, G66, G67: run here, not by the interpreter.
-        let macro_code = block.words.iter().enumerate().find_map(|(k, w)| {
+        if let Some((k, f)) = self.macro_call_word(block) {
+            return self.execute_macro_code(block, place, k, f, sink);
+        }
+        self.execute_under_g66(block, place, sink)
+    }
+
+    /// The word of the block that is a code the parameters make a call of the machine's macro:
+    /// its index, the programme it calls, and whether it calls as G65 (else as M98).
+    fn builder_call_word(&self, block: &Block) -> Option<(usize, u32, bool)> {
+        let profile = self.interp.profile();
+        block.words.iter().enumerate().find_map(|(k, w)| {
+            if !matches!(w.letter, b'G' | b'M') || w.value.fract() != 0.0 || w.value < 0.0 {
+                return None;
+            }
+            let code = w.value as u32;
+            if w.letter == b'M' && profile.calls.builder.m9000 && (9000..=9999).contains(&code) {
+                // GSK980TDi help text, M9000-9999: M9123 calls O9123.
+                return Some((k, code, false));
+            }
+            self.builder_codes.iter().find(|(l, c, _, _)| *l == w.letter && *c == code).map(|(_, _, program, as_macro)| (k, *program, *as_macro))
+        })
+    }
+
+    /// Call the machine's macro O`number` that the block's word `k` calls: as G65 with the
+    /// block's other words as arguments, or as M98 after them.
+    fn call_builder_macro(&mut self, block: &Block, place: Place, k: usize, number: u32, as_macro: bool, sink: &mut dyn FnMut(Event)) -> bool {
+        let profile = self.interp.profile();
+        let next = Place { block: place.block.saturating_add(1), ..place };
+        let mut span = block.span;
+        span.file = self.file;
+        let result = if as_macro {
+            // As G65 P<programme> with the block's other words as arguments.
+            let mut call = block.clone();
+            let at = call.words[k].span;
+            let trigger = call.words[k].text();
+            call.words.remove(k);
+            // G65 has no P argument: a P in the block is said to be ignored (no manual
+            // says what the machine does with it; inferred).
+            if let Some(pw) = call.words.iter().find(|w| w.letter == b'P') {
+                let d = Diagnostic::new(Rule::TextIgnored, profile.alarm_style, pw.span, format!("{}: the macro call by {trigger} takes no P argument (G65 has none): ignored", pw.text()));
+                sink(Event::Diagnostic(d));
+            }
+            call.words.retain(|w| w.letter != b'P');
+            call.words.insert(0, Word { letter: b'G', value: 65.0, decimal: false, expr: false, span: at });
+            call.words.insert(1, Word { letter: b'P', value: f64::from(number), decimal: false, expr: false, span: at });
+            self.macro_arguments(&call, 0).and_then(|(number, count, locals)| {
+                self.builder_call = true;
+                self.call(number, count, span, next, Some(locals))
+            })
+        } else {
+            // As M98: the block's other words first, then the call.
+            let mut rest = block.clone();
+            rest.words.remove(k);
+            if !rest.words.is_empty() && !self.execute_nc(&rest, place, sink) {
+                return false;
+            }
+            self.builder_call = true;
+            self.call(number, 1, span, next, None)
+        };
+        result.unwrap_or_else(|d| self.fail(d, sink))
+    }
+
+    /// The block's G65, G66 or G67 (as the profile names them): its word's index and what it does.
+    fn macro_call_word(&self, block: &Block) -> Option<(usize, crate::profile::GFn)> {
+        use crate::profile::GFn;
+        let profile = self.interp.profile();
+        block.words.iter().enumerate().find_map(|(k, w)| {
             let code = (w.letter == b'G' && w.value.fract() == 0.0 && (65.0..=67.0).contains(&w.value)).then_some(w.value as u32)?;
             let f = profile.g_code(code, None)?.function;
             matches!(f, GFn::MacroCall | GFn::ModalMacroCall | GFn::ModalMacroCancel).then_some((k, f))
-        });
-        match macro_code {
-            Some((k, GFn::MacroCall)) if profile.macros.macro_a && block.words.get(k + 1).is_some_and(|w| w.letter == b'H') => {
+        })
+    }
+
+    /// Run the block's G65 (a call, or macro A's `G65 H..`), G66 (a modal call declared) or
+    /// G67 (the modal call ended), its word `k`.
+    fn execute_macro_code(&mut self, block: &Block, place: Place, k: usize, f: crate::profile::GFn, sink: &mut dyn FnMut(Event)) -> bool {
+        use crate::profile::GFn;
+        let profile = self.interp.profile();
+        match f {
+            GFn::MacroCall if profile.macros.macro_a && block.words.get(k + 1).is_some_and(|w| w.letter == b'H') => {
                 // Macro A with constants only (`G65 H80 P50`, `G65 H99 P7`): as trees of numbers.
                 let mut arena = crate::read::expr::Arena::default();
                 let words: Vec<crate::read::MacroWord> = block.words[k..]
@@ -1400,9 +1427,9 @@ impl Core {
                     })
                     .collect();
                 let next = Place { block: place.block.saturating_add(1), ..place };
-                return self.macro_a(&arena, &words, block, next).unwrap_or_else(|d| self.fail(d, sink));
+                self.macro_a(&arena, &words, block, next).unwrap_or_else(|d| self.fail(d, sink))
             }
-            Some((k, GFn::MacroCall)) => {
+            GFn::MacroCall => {
                 if profile.macros.g65_cancels_g66 {
                     self.modal_call = None;
                 }
@@ -1412,12 +1439,12 @@ impl Core {
                     span.file = self.file;
                     self.call(number, count, span, next, Some(locals))
                 });
-                return result.unwrap_or_else(|d| self.fail(d, sink));
+                result.unwrap_or_else(|d| self.fail(d, sink))
             }
-            Some((k, GFn::ModalMacroCall)) => {
+            GFn::ModalMacroCall => {
                 // G66 declares the call; the blocks with a move that follow make it (GSK980TDi help
                 // text, G66; FANUC Series 16i).
-                return match self.macro_arguments(block, k) {
+                match self.macro_arguments(block, k) {
                     Ok((number, count, locals)) => {
                         let mut span = block.span;
                         span.file = self.file;
@@ -1425,9 +1452,9 @@ impl Core {
                         true
                     }
                     Err(d) => self.fail(d, sink),
-                };
+                }
             }
-            Some((k, _)) => {
+            _ => {
                 // G67: the modal call ends; the block's other words run as a block of their own.
                 self.modal_call = None;
                 if block.words.len() == 1 {
@@ -1435,10 +1462,13 @@ impl Core {
                 }
                 let mut rest = block.clone();
                 rest.words.remove(k);
-                return self.execute(&rest, place, sink);
+                self.execute(&rest, place, sink)
             }
-            None => {}
         }
+    }
+
+    /// Run an NC block, then, under G66, the modal macro call its move makes.
+    fn execute_under_g66(&mut self, block: &Block, place: Place, sink: &mut dyn FnMut(Event)) -> bool {
         // A move of any axis calls it: the setup's rotary axes (and H, the lathe's incremental C) too.
         let added = self.interp.tables().added_addresses;
         let modal_call = self.modal_call.filter(|m| m.depth == self.calls.depth() && block.words.iter().any(|w| matches!(w.letter, b'X' | b'Y' | b'Z' | b'U' | b'V' | b'W') || (matches!(w.letter, b'A' | b'B' | b'C' | b'H') && added.contains(w.letter))));

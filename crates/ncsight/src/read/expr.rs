@@ -214,100 +214,15 @@ pub fn eval_rounding(arena: &Arena, root: u32, vars: &mut dyn Variables, round_s
         }
         Node::Bin(op, a, b) => {
             let (x, y) = (num(eval(arena, a, vars)?), num(eval(arena, b, vars)?));
-            Some(match op {
-                BinOp::Add => x + y,
-                BinOp::Sub => x - y,
-                BinOp::Mul => x * y,
-                BinOp::Div => {
-                    if y == 0.0 {
-                        return Err(fail(ErrorKind::DivideByZero, "division by zero"));
-                    }
-                    x / y
-                }
-                BinOp::Mod => {
-                    if y == 0.0 {
-                        return Err(fail(ErrorKind::DivideByZero, "MOD by zero"));
-                    }
-                    x % y
-                }
-                BinOp::And => (whole(x) & whole(y)) as f64,
-                BinOp::Or => (whole(x) | whole(y)) as f64,
-                BinOp::Xor => (whole(x) ^ whole(y)) as f64,
-            })
+            Some(binary_operation(op, x, y)?)
         }
         Node::Cmp(op, a, b) => {
             let (x, y) = (eval(arena, a, vars)?, eval(arena, b, vars)?);
-            let holds = match op {
-                CmpOp::Eq => x == y,
-                CmpOp::Ne => x != y,
-                CmpOp::Gt => num(x) > num(y),
-                CmpOp::Ge => num(x) >= num(y),
-                CmpOp::Lt => num(x) < num(y),
-                CmpOp::Le => num(x) <= num(y),
-            };
-            Some(if holds { 1.0 } else { 0.0 })
+            Some(comparison(op, x, y))
         }
         Node::Call(f, a) => {
             let x = num(eval(arena, a, vars)?);
-            let domain = |ok: bool, what: &str| if ok { Ok(()) } else { Err(fail(ErrorKind::Argument, what.to_string())) };
-            Some(match f {
-                Func::Sin => x.to_radians().sin(),
-                Func::Cos => x.to_radians().cos(),
-                Func::Tan => {
-                    if (x.rem_euclid(180.0) - 90.0).abs() < 1e-12 {
-                        return Err(fail(ErrorKind::DivideByZero, format!("TAN[{x}]: the tangent of 90 degrees")));
-                    }
-                    x.to_radians().tan()
-                }
-                Func::Asin => {
-                    domain((-1.0..=1.0).contains(&x), "ASIN of a number outside -1 to 1")?;
-                    x.asin().to_degrees()
-                }
-                Func::Acos => {
-                    domain((-1.0..=1.0).contains(&x), "ACOS of a number outside -1 to 1")?;
-                    x.acos().to_degrees()
-                }
-                Func::Atan => x.atan().to_degrees(),
-                Func::Sqrt => {
-                    domain(x >= 0.0, "the square root of a negative number")?;
-                    x.sqrt()
-                }
-                Func::Abs => x.abs(),
-                // Half away from zero: ROUND[-1.5] = -2 (docs/reference/macro.md section 5).
-                Func::Round => round_to_step(x, round_step),
-                // Toward zero and away from zero: FIX[-1.2] = -1, FUP[-1.2] = -2.
-                Func::Fix => x.trunc(),
-                Func::Fup => {
-                    let t = x.trunc();
-                    if t == x { t } else { t + x.signum() }
-                }
-                Func::Ln => {
-                    domain(x > 0.0, "the logarithm of a number not above 0")?;
-                    x.ln()
-                }
-                Func::Exp => x.exp(),
-                Func::Bin => {
-                    // BCD to binary: each group of four bits is a decimal digit.
-                    let (mut v, mut out, mut scale) = (whole(x).max(0), 0i64, 1i64);
-                    while v > 0 {
-                        let digit = v & 0xF;
-                        domain(digit <= 9, "BIN of a value that is not BCD")?;
-                        out += digit * scale;
-                        scale *= 10;
-                        v >>= 4;
-                    }
-                    out as f64
-                }
-                Func::Bcd => {
-                    let (mut v, mut out, mut shift) = (whole(x).max(0), 0i64, 0u32);
-                    while v > 0 && shift < 60 {
-                        out |= (v % 10) << shift;
-                        v /= 10;
-                        shift += 4;
-                    }
-                    out as f64
-                }
-            })
+            Some(function_value(f, x, round_step)?)
         }
         Node::Atan2(a, b) => {
             let (y, x) = (num(eval(arena, a, vars)?), num(eval(arena, b, vars)?));
@@ -319,6 +234,112 @@ pub fn eval_rounding(arena: &Arena, root: u32, vars: &mut dyn Variables, round_s
         Some(x) if !x.is_finite() => Err(fail(ErrorKind::Overflow, "the value is not a finite number")),
         v => Ok(v),
     }
+}
+
+/// The arithmetic and logical operators (`+ - * / MOD AND OR XOR`) on two values, vacant
+/// already read as 0; division and MOD by zero are alarms.
+#[inline]
+fn binary_operation(op: BinOp, x: f64, y: f64) -> Result<f64, ExprError> {
+    Ok(match op {
+        BinOp::Add => x + y,
+        BinOp::Sub => x - y,
+        BinOp::Mul => x * y,
+        BinOp::Div => {
+            if y == 0.0 {
+                return Err(fail(ErrorKind::DivideByZero, "division by zero"));
+            }
+            x / y
+        }
+        BinOp::Mod => {
+            if y == 0.0 {
+                return Err(fail(ErrorKind::DivideByZero, "MOD by zero"));
+            }
+            x % y
+        }
+        BinOp::And => (whole(x) & whole(y)) as f64,
+        BinOp::Or => (whole(x) | whole(y)) as f64,
+        BinOp::Xor => (whole(x) ^ whole(y)) as f64,
+    })
+}
+
+/// A comparison, 1 when it holds and 0 when not: EQ and NE tell vacant from 0, GT GE LT LE
+/// read vacant as 0.
+#[inline]
+fn comparison(op: CmpOp, x: Value, y: Value) -> f64 {
+    let num = |v: Value| v.unwrap_or(0.0);
+    let holds = match op {
+        CmpOp::Eq => x == y,
+        CmpOp::Ne => x != y,
+        CmpOp::Gt => num(x) > num(y),
+        CmpOp::Ge => num(x) >= num(y),
+        CmpOp::Lt => num(x) < num(y),
+        CmpOp::Le => num(x) <= num(y),
+    };
+    if holds { 1.0 } else { 0.0 }
+}
+
+/// A function (SIN, SQRT, ROUND, BIN, ...) of the value `x` (vacant already read as 0), ROUND
+/// to `round_step`; an argument outside the function's domain is an alarm.
+fn function_value(f: Func, x: f64, round_step: f64) -> Result<f64, ExprError> {
+    let domain = |ok: bool, what: &str| if ok { Ok(()) } else { Err(fail(ErrorKind::Argument, what.to_string())) };
+    Ok(match f {
+        Func::Sin => x.to_radians().sin(),
+        Func::Cos => x.to_radians().cos(),
+        Func::Tan => {
+            if (x.rem_euclid(180.0) - 90.0).abs() < 1e-12 {
+                return Err(fail(ErrorKind::DivideByZero, format!("TAN[{x}]: the tangent of 90 degrees")));
+            }
+            x.to_radians().tan()
+        }
+        Func::Asin => {
+            domain((-1.0..=1.0).contains(&x), "ASIN of a number outside -1 to 1")?;
+            x.asin().to_degrees()
+        }
+        Func::Acos => {
+            domain((-1.0..=1.0).contains(&x), "ACOS of a number outside -1 to 1")?;
+            x.acos().to_degrees()
+        }
+        Func::Atan => x.atan().to_degrees(),
+        Func::Sqrt => {
+            domain(x >= 0.0, "the square root of a negative number")?;
+            x.sqrt()
+        }
+        Func::Abs => x.abs(),
+        // Half away from zero: ROUND[-1.5] = -2 (docs/reference/macro.md section 5).
+        Func::Round => round_to_step(x, round_step),
+        // Toward zero and away from zero: FIX[-1.2] = -1, FUP[-1.2] = -2.
+        Func::Fix => x.trunc(),
+        Func::Fup => {
+            let t = x.trunc();
+            if t == x { t } else { t + x.signum() }
+        }
+        Func::Ln => {
+            domain(x > 0.0, "the logarithm of a number not above 0")?;
+            x.ln()
+        }
+        Func::Exp => x.exp(),
+        Func::Bin => {
+            // BCD to binary: each group of four bits is a decimal digit.
+            let (mut v, mut out, mut scale) = (whole(x).max(0), 0i64, 1i64);
+            while v > 0 {
+                let digit = v & 0xF;
+                domain(digit <= 9, "BIN of a value that is not BCD")?;
+                out += digit * scale;
+                scale *= 10;
+                v >>= 4;
+            }
+            out as f64
+        }
+        Func::Bcd => {
+            let (mut v, mut out, mut shift) = (whole(x).max(0), 0i64, 0u32);
+            while v > 0 && shift < 60 {
+                out |= (v % 10) << shift;
+                v /= 10;
+                shift += 4;
+            }
+            out as f64
+        }
+    })
 }
 
 /// Parse `text` as one expression into `arena`; its root. `conditions` allows EQ NE GT GE LT

@@ -148,7 +148,6 @@ impl Reader {
     pub(super) fn read_macro(&self, line: u32, s: &[u8], body: usize, end: usize, block: &mut Block) -> Result<(), Diagnostic> {
         let text = &s[body..end];
         let mut arena = Arena::default();
-        let span_at = |a: usize, b: usize| Span::new(line, a as u32 + 1, (b - a).max(1) as u32);
         let whole = String::from_utf8_lossy(text).trim().to_string();
         // Comments inside a macro block are taken out first (they hold any bytes).
         let mut clean = Vec::with_capacity(text.len());
@@ -166,167 +165,233 @@ impl Reader {
             k += 1;
         }
         map.push(body + text.len());
-        let at = |i: usize| map[i.min(map.len() - 1)];
-        let trimmed_start = clean.iter().take_while(|c| c.is_ascii_whitespace()).count();
-        let c = &clean[..];
-        let mut i = trimmed_start;
-        let skip_ws = |i: &mut usize| {
-            while *i < c.len() && (c[*i] == b' ' || c[*i] == b'\t') {
-                *i += 1;
+        let m = MacroText { reader: self, line, clean, map, whole };
+        let stmt = m.statement(&mut arena)?;
+        block.macro_block = Some(Box::new(MacroBlock { arena, stmt }));
+        Ok(())
+    }
+}
+
+/// The text of one macro block, its comments taken out, as the statement readers see it.
+struct MacroText<'a> {
+    reader: &'a Reader,
+    line: u32,
+    /// The block without its comments.
+    clean: Vec<u8>,
+    /// Where each byte of `clean` stood on the line (one more for its end).
+    map: Vec<usize>,
+    /// The block as written, for the alarms' messages.
+    whole: String,
+}
+
+impl MacroText<'_> {
+    /// The place on the line of the byte `i` of the clean text.
+    fn at(&self, i: usize) -> usize {
+        self.map[i.min(self.map.len() - 1)]
+    }
+
+    /// The span of the line's bytes `a..b` (at least one).
+    fn span_at(&self, a: usize, b: usize) -> Span {
+        Span::new(self.line, a as u32 + 1, (b - a).max(1) as u32)
+    }
+
+    /// Step over spaces and tabs.
+    fn skip_ws(&self, i: &mut usize) {
+        let c = &self.clean[..];
+        while *i < c.len() && (c[*i] == b' ' || c[*i] == b'\t') {
+            *i += 1;
+        }
+    }
+
+    /// One operand at `i` (a number, a variable, a bracketed expression, a function), `i`
+    /// moved past it.
+    fn operand(&self, arena: &mut Arena, i: &mut usize) -> Result<u32, Diagnostic> {
+        match expr::parse_operand(&self.clean[*i..], arena) {
+            Ok((root, used)) => {
+                *i += used;
+                Ok(root)
             }
+            Err(e) => Err(self.reader.macro_error(self.line, self.at(*i), &e, &self.whole)),
+        }
+    }
+
+    /// The rest of the block as one expression (the value of an assignment).
+    fn rest(&self, arena: &mut Arena, i: usize) -> Result<u32, Diagnostic> {
+        expr::parse(&self.clean[i..], arena, false, false).map_err(|e| self.reader.macro_error(self.line, self.at(i), &e, &self.whole))
+    }
+
+    /// `#i = expr`.
+    fn assignment(&self, arena: &mut Arena, mut i: usize) -> Result<(u32, u32), Diagnostic> {
+        let (c, whole, style) = (&self.clean[..], &self.whole, self.reader.style);
+        let start = i;
+        let var = self.operand(arena, &mut i)?;
+        let number = match arena.nodes[var as usize] {
+            expr::Node::Var(n) => n,
+            _ => return Err(Diagnostic::new(Rule::MacroFormat, style, self.span_at(self.at(start), self.at(i)), format!("{whole}: a variable (#) is assigned")).with_hint("write #1 = 10.")),
         };
-        let operand = |arena: &mut Arena, i: &mut usize, what: &str| -> Result<u32, Diagnostic> {
-            match expr::parse_operand(&c[*i..], arena) {
-                Ok((root, used)) => {
-                    *i += used;
-                    Ok(root)
-                }
-                Err(e) => Err(self.macro_error(line, at(*i), &e, what)),
-            }
+        self.skip_ws(&mut i);
+        if c.get(i) != Some(&b'=') {
+            return Err(Diagnostic::new(Rule::MacroFormat, style, self.span_at(self.at(start), self.at(i)), format!("{whole}: '=' expected after the variable")));
+        }
+        let value = self.rest(arena, i + 1)?;
+        Ok((number, value))
+    }
+
+    /// The condition in brackets after IF or WHILE (`key`), `i` moved past its `]`.
+    fn bracket_condition(&self, arena: &mut Arena, i: &mut usize, key: &str) -> Result<u32, Diagnostic> {
+        let (c, whole, style) = (&self.clean[..], &self.whole, self.reader.style);
+        self.skip_ws(i);
+        if c.get(*i) != Some(&b'[') {
+            return Err(Diagnostic::new(Rule::MacroFormat, style, self.span_at(self.at(*i), self.at(*i) + 1), format!("{whole}: {key} takes a condition in brackets: {key} [#1 GT 0]")));
+        }
+        let Some(j) = super::matching_bracket(c, *i) else {
+            return Err(Diagnostic::new(Rule::MacroFormat, style, self.span_at(self.at(*i), self.at(c.len())), format!("{whole}: the condition has no closing ']'")));
         };
-        // The rest of the block as one expression (the value of an assignment).
-        let rest = |arena: &mut Arena, i: usize, what: &str| -> Result<u32, Diagnostic> {
-            expr::parse(&c[i..], arena, false, false).map_err(|e| self.macro_error(line, at(i), &e, what))
-        };
-        // `#i = expr`.
-        let assignment = |arena: &mut Arena, mut i: usize| -> Result<(u32, u32), Diagnostic> {
-            let start = i;
-            let var = operand(arena, &mut i, &whole)?;
-            let number = match arena.nodes[var as usize] {
-                expr::Node::Var(n) => n,
-                _ => return Err(Diagnostic::new(Rule::MacroFormat, self.style, span_at(at(start), at(i)), format!("{whole}: a variable (#) is assigned")).with_hint("write #1 = 10.")),
-            };
-            skip_ws(&mut i);
-            if c.get(i) != Some(&b'=') {
-                return Err(Diagnostic::new(Rule::MacroFormat, self.style, span_at(at(start), at(i)), format!("{whole}: '=' expected after the variable")));
-            }
-            let value = rest(arena, i + 1, &whole)?;
-            Ok((number, value))
-        };
-        let bracket_condition = |arena: &mut Arena, i: &mut usize, key: &str| -> Result<u32, Diagnostic> {
-            skip_ws(i);
-            if c.get(*i) != Some(&b'[') {
-                return Err(Diagnostic::new(Rule::MacroFormat, self.style, span_at(at(*i), at(*i) + 1), format!("{whole}: {key} takes a condition in brackets: {key} [#1 GT 0]")));
-            }
-            let Some(j) = super::matching_bracket(c, *i) else {
-                return Err(Diagnostic::new(Rule::MacroFormat, self.style, span_at(at(*i), at(c.len())), format!("{whole}: the condition has no closing ']'")));
-            };
-            let root = expr::parse(&c[*i + 1..j], arena, true, true).map_err(|e| self.macro_error(line, at(*i + 1), &e, &whole))?;
-            *i = j + 1;
-            Ok(root)
-        };
-        let label = |i: &mut usize, key: &str| -> Result<u32, Diagnostic> {
-            skip_ws(i);
-            let n = c[*i..].iter().take_while(|b| b.is_ascii_digit()).count();
-            let digits = std::str::from_utf8(&c[*i..*i + n]).unwrap_or("");
-            let v = digits.parse::<u32>().map_err(|_| Diagnostic::new(Rule::MacroFormat, self.style, span_at(at(*i), at(*i) + 1), format!("{whole}: {key} takes a loop number (1 to 3)")))?;
-            *i += n;
-            Ok(v)
-        };
-        let done = |i: usize| -> Result<(), Diagnostic> {
-            let mut j = i;
-            skip_ws(&mut j);
-            if j < c.len() {
-                return Err(Diagnostic::new(Rule::MacroFormat, self.style, span_at(at(j), at(c.len())), format!("{whole}: unexpected '{}'", String::from_utf8_lossy(&c[j..]).trim())));
-            }
-            Ok(())
-        };
+        let root = expr::parse(&c[*i + 1..j], arena, true, true).map_err(|e| self.reader.macro_error(self.line, self.at(*i + 1), &e, whole))?;
+        *i = j + 1;
+        Ok(root)
+    }
+
+    /// The loop number after DO or END (`key`), `i` moved past it.
+    fn label(&self, i: &mut usize, key: &str) -> Result<u32, Diagnostic> {
+        let (c, whole, style) = (&self.clean[..], &self.whole, self.reader.style);
+        self.skip_ws(i);
+        let n = c[*i..].iter().take_while(|b| b.is_ascii_digit()).count();
+        let digits = std::str::from_utf8(&c[*i..*i + n]).unwrap_or("");
+        let v = digits.parse::<u32>().map_err(|_| Diagnostic::new(Rule::MacroFormat, style, self.span_at(self.at(*i), self.at(*i) + 1), format!("{whole}: {key} takes a loop number (1 to 3)")))?;
+        *i += n;
+        Ok(v)
+    }
+
+    /// Nothing but spaces may follow `i`.
+    fn done(&self, i: usize) -> Result<(), Diagnostic> {
+        let c = &self.clean[..];
+        let mut j = i;
+        self.skip_ws(&mut j);
+        if j < c.len() {
+            return Err(Diagnostic::new(Rule::MacroFormat, self.reader.style, self.span_at(self.at(j), self.at(c.len())), format!("{}: unexpected '{}'", self.whole, String::from_utf8_lossy(&c[j..]).trim())));
+        }
+        Ok(())
+    }
+
+    /// What the block does: an assignment, a statement after its keyword, or an NC block.
+    fn statement(&self, arena: &mut Arena) -> Result<Stmt, Diagnostic> {
+        let (c, whole, style) = (&self.clean[..], &self.whole, self.reader.style);
+        let trimmed_start = c.iter().take_while(|c| c.is_ascii_whitespace()).count();
+        let i = trimmed_start;
         let stmt = if c.get(i) == Some(&b'#') {
-            let (var, value) = assignment(&mut arena, i)?;
+            let (var, value) = self.assignment(arena, i)?;
             Stmt::Assign { var, value }
         } else if let Some(n) = starts_with_keyword(&c[i..], &OUTPUT) {
             let key = String::from_utf8_lossy(&c[i..i + n]).to_ascii_uppercase();
-            return Err(Diagnostic::new(Rule::NotSupported, self.style, span_at(at(i), at(c.len())), format!("{whole}: the output statement {key} is not simulated by ncsight")));
+            return Err(Diagnostic::new(Rule::NotSupported, style, self.span_at(self.at(i), self.at(c.len())), format!("{whole}: the output statement {key} is not simulated by ncsight")));
         } else if let Some(n) = starts_with_keyword(&c[i..], &KEYWORDS) {
-            let key = String::from_utf8_lossy(&c[i..i + n]).to_ascii_uppercase();
-            i += n;
-            match key.as_str() {
-                "IF" => {
-                    let cond = bracket_condition(&mut arena, &mut i, "IF")?;
-                    skip_ws(&mut i);
-                    let then = if starts_with_keyword(&c[i..], &[b"GOTO"]).is_some() {
-                        i += 4;
-                        let t = rest(&mut arena, i, &whole)?;
-                        Then::Goto(t)
-                    } else if starts_with_keyword(&c[i..], &[b"THEN"]).is_some() {
-                        i += 4;
-                        skip_ws(&mut i);
-                        let (var, value) = assignment(&mut arena, i)?;
-                        Then::Assign { var, value, written: true }
-                    } else if c.get(i) == Some(&b'#') {
-                        // `IF[#609GT0]#712=#609`: THEN left out, as a real FANUC 0i programme
-                        // does (the SK7420 punch); the profile says whether that is read as THEN
-                        // (docs/reference/macro.md section 6, inferred).
-                        let (var, value) = assignment(&mut arena, i)?;
-                        Then::Assign { var, value, written: false }
-                    } else {
-                        return Err(Diagnostic::new(Rule::MacroFormat, self.style, span_at(at(i), at(c.len())), format!("{whole}: IF [..] is followed by GOTO n or THEN #i = ...")));
-                    };
-                    Stmt::If { cond, then }
-                }
-                "WHILE" => {
-                    let cond = bracket_condition(&mut arena, &mut i, "WHILE")?;
-                    skip_ws(&mut i);
-                    if starts_with_keyword(&c[i..], &[b"DO"]).is_none() {
-                        return Err(Diagnostic::new(Rule::MacroFormat, self.style, span_at(at(i), at(c.len())), format!("{whole}: WHILE [..] is followed by DO m")));
-                    }
-                    i += 2;
-                    let label = label(&mut i, "DO")?;
-                    done(i)?;
-                    Stmt::While { cond, label }
-                }
-                "END" => {
-                    let label = label(&mut i, "END")?;
-                    done(i)?;
-                    Stmt::End { label }
-                }
-                "GOTO" => {
-                    let target = rest(&mut arena, i, &whole)?;
-                    Stmt::Goto { target }
-                }
-                _ => {
-                    // `DO m` without WHILE: an endless loop on the controller; not simulated.
-                    return Err(Diagnostic::new(Rule::NotSupported, self.style, span_at(at(trimmed_start), at(c.len())), format!("{whole}: DO without WHILE (an endless loop) is not simulated by ncsight")));
-                }
-            }
+            self.keyword_statement(arena, i, n)?
         } else {
-            // An NC block whose words may take values from variables.
-            let mut words = Vec::new();
-            while i < c.len() {
-                let b = c[i];
-                if b == b' ' || b == b'\t' {
-                    i += 1;
-                    continue;
-                }
-                // A comma word (`,R#1`): the letter in lower case (read/mod.rs).
-                let comma = b == b',' && c.get(i + 1).is_some_and(u8::is_ascii_alphabetic);
-                let start = i;
-                if comma {
-                    i += 1;
-                }
-                let b = c[i];
-                if !b.is_ascii_alphabetic() {
-                    return Err(Diagnostic::new(Rule::ImproperAddress, self.style, span_at(at(i), at(i) + 1), format!("{whole}: '{}' is not an address letter", b as char)));
-                }
-                let letter = if comma { b.to_ascii_lowercase() } else { b.to_ascii_uppercase() };
-                i += 1;
-                skip_ws(&mut i);
-                let value_start = i;
-                let node = operand(&mut arena, &mut i, &whole)?;
-                let written = &c[value_start..i];
-                let constant = arena.constant(node);
-                let decimal = !constant || written.contains(&b'.') || written.contains(&b'[');
-                // A sequence or programme number from a variable is not allowed (GSK988T manual,
-                // macro variables note 1; NCT manual).
-                if matches!(letter, b'N' | b'O') && !constant {
-                    return Err(Diagnostic::new(Rule::MacroFormat, self.style, span_at(at(start), at(i)), format!("{whole}: {} cannot take its value from a variable", letter as char)));
-                }
-                words.push(MacroWord { letter, node, decimal, constant: constant && !decimal, span: span_at(at(start), at(i)) });
-            }
-            Stmt::Words(words)
+            self.nc_words(arena, i)?
         };
-        block.macro_block = Some(Box::new(MacroBlock { arena, stmt }));
-        Ok(())
+        Ok(stmt)
+    }
+
+    /// IF, WHILE, END, GOTO (or a DO alone): the keyword of `n` letters at `i`, the block's
+    /// first text.
+    fn keyword_statement(&self, arena: &mut Arena, mut i: usize, n: usize) -> Result<Stmt, Diagnostic> {
+        let (c, whole, style) = (&self.clean[..], &self.whole, self.reader.style);
+        let trimmed_start = i;
+        let key = String::from_utf8_lossy(&c[i..i + n]).to_ascii_uppercase();
+        i += n;
+        Ok(match key.as_str() {
+            "IF" => self.if_statement(arena, i)?,
+            "WHILE" => {
+                let cond = self.bracket_condition(arena, &mut i, "WHILE")?;
+                self.skip_ws(&mut i);
+                if starts_with_keyword(&c[i..], &[b"DO"]).is_none() {
+                    return Err(Diagnostic::new(Rule::MacroFormat, style, self.span_at(self.at(i), self.at(c.len())), format!("{whole}: WHILE [..] is followed by DO m")));
+                }
+                i += 2;
+                let label = self.label(&mut i, "DO")?;
+                self.done(i)?;
+                Stmt::While { cond, label }
+            }
+            "END" => {
+                let label = self.label(&mut i, "END")?;
+                self.done(i)?;
+                Stmt::End { label }
+            }
+            "GOTO" => {
+                let target = self.rest(arena, i)?;
+                Stmt::Goto { target }
+            }
+            _ => {
+                // `DO m` without WHILE: an endless loop on the controller; not simulated.
+                return Err(Diagnostic::new(Rule::NotSupported, style, self.span_at(self.at(trimmed_start), self.at(c.len())), format!("{whole}: DO without WHILE (an endless loop) is not simulated by ncsight")));
+            }
+        })
+    }
+
+    /// `IF [cond] GOTO n` or `IF [cond] THEN #i = value`, from `i` just after IF.
+    fn if_statement(&self, arena: &mut Arena, mut i: usize) -> Result<Stmt, Diagnostic> {
+        let (c, whole, style) = (&self.clean[..], &self.whole, self.reader.style);
+        let cond = self.bracket_condition(arena, &mut i, "IF")?;
+        self.skip_ws(&mut i);
+        let then = if starts_with_keyword(&c[i..], &[b"GOTO"]).is_some() {
+            i += 4;
+            let t = self.rest(arena, i)?;
+            Then::Goto(t)
+        } else if starts_with_keyword(&c[i..], &[b"THEN"]).is_some() {
+            i += 4;
+            self.skip_ws(&mut i);
+            let (var, value) = self.assignment(arena, i)?;
+            Then::Assign { var, value, written: true }
+        } else if c.get(i) == Some(&b'#') {
+            // `IF[#609GT0]#712=#609`: THEN left out, as a real FANUC 0i programme
+            // does (the SK7420 punch); the profile says whether that is read as THEN
+            // (docs/reference/macro.md section 6, inferred).
+            let (var, value) = self.assignment(arena, i)?;
+            Then::Assign { var, value, written: false }
+        } else {
+            return Err(Diagnostic::new(Rule::MacroFormat, style, self.span_at(self.at(i), self.at(c.len())), format!("{whole}: IF [..] is followed by GOTO n or THEN #i = ...")));
+        };
+        Ok(Stmt::If { cond, then })
+    }
+
+    /// An NC block whose words may take values from variables, from `i` to the end.
+    fn nc_words(&self, arena: &mut Arena, mut i: usize) -> Result<Stmt, Diagnostic> {
+        let (c, whole, style) = (&self.clean[..], &self.whole, self.reader.style);
+        // An NC block whose words may take values from variables.
+        let mut words = Vec::new();
+        while i < c.len() {
+            let b = c[i];
+            if b == b' ' || b == b'\t' {
+                i += 1;
+                continue;
+            }
+            // A comma word (`,R#1`): the letter in lower case (read/mod.rs).
+            let comma = b == b',' && c.get(i + 1).is_some_and(u8::is_ascii_alphabetic);
+            let start = i;
+            if comma {
+                i += 1;
+            }
+            let b = c[i];
+            if !b.is_ascii_alphabetic() {
+                return Err(Diagnostic::new(Rule::ImproperAddress, style, self.span_at(self.at(i), self.at(i) + 1), format!("{whole}: '{}' is not an address letter", b as char)));
+            }
+            let letter = if comma { b.to_ascii_lowercase() } else { b.to_ascii_uppercase() };
+            i += 1;
+            self.skip_ws(&mut i);
+            let value_start = i;
+            let node = self.operand(arena, &mut i)?;
+            let written = &c[value_start..i];
+            let constant = arena.constant(node);
+            let decimal = !constant || written.contains(&b'.') || written.contains(&b'[');
+            // A sequence or programme number from a variable is not allowed (GSK988T manual,
+            // macro variables note 1; NCT manual).
+            if matches!(letter, b'N' | b'O') && !constant {
+                return Err(Diagnostic::new(Rule::MacroFormat, style, self.span_at(self.at(start), self.at(i)), format!("{whole}: {} cannot take its value from a variable", letter as char)));
+            }
+            words.push(MacroWord { letter, node, decimal, constant: constant && !decimal, span: self.span_at(self.at(start), self.at(i)) });
+        }
+        Ok(Stmt::Words(words))
     }
 }
 

@@ -188,6 +188,20 @@ impl Line {
     pub(crate) fn new_block(&mut self) -> Block {
         Block { words: self.spare.pop().unwrap_or_default(), ..Block::default() }
     }
+
+    /// A block read, its text from `start` to `end`, into the blocks; one with no text but
+    /// comments stands at the line's start; an empty one gives its word list back for reuse.
+    #[inline]
+    fn finish_block(&mut self, line_no: u32, mut b: Block, start: Option<usize>, end: usize) {
+        if let Some(st) = start {
+            b.span = Span::new(line_no, st as u32 + 1, (end - st).max(1) as u32);
+            self.blocks.push(Ok(b));
+        } else if !b.comments.is_empty() {
+            self.blocks.push(Ok(Block { span: Span::new(line_no, 1, 1), ..b }));
+        } else {
+            self.spare.push(b.words);
+        }
+    }
 }
 
 /// The UTF-8 character at the start of `s`, if the bytes there are one.
@@ -293,18 +307,7 @@ impl Reader {
     /// stops at the first alarm.
     fn read_blocks(&self, line_no: u32, s: &[u8], out: &mut Line, marks: bool) {
         if s.len() > MAX_LINE_BYTES {
-            out.blocks.push(Err(self.diag(
-                Rule::LineTooLong,
-                line_no,
-                0,
-                1,
-                if s.len() == MAX_KEPT_LINE_BYTES {
-                    // What a streaming caller keeps of a longer line: its length is not known.
-                    format!("line of at least {MAX_KEPT_LINE_BYTES} bytes: a block may be at most {MAX_LINE_BYTES} bytes long")
-                } else {
-                    format!("line of {} bytes: a block may be at most {MAX_LINE_BYTES} bytes long", s.len())
-                },
-            )));
+            out.blocks.push(Err(self.line_too_long(line_no, s.len())));
             return;
         }
         let mut i = 0;
@@ -312,17 +315,7 @@ impl Reader {
             i += 1;
         }
         if i < s.len() && s[i] == b'%' {
-            out.tape_mark = true;
-            let rest = &s[i + 1..];
-            if rest.iter().any(|c| !is_blank(*c)) {
-                out.warnings.push(self.diag(
-                    Rule::TextIgnored,
-                    line_no,
-                    i + 1,
-                    rest.len(),
-                    "text after the '%' tape mark is ignored",
-                ));
-            }
+            self.tape_mark(line_no, s, i, out);
             return;
         }
         // A line with a variable: its blocks are macro blocks, evaluated when they run.
@@ -330,206 +323,252 @@ impl Reader {
             self.read_macro_blocks(line_no, s, i, out);
             return;
         }
-        let mut block = out.new_block();
-        let mut block_start: Option<usize> = None;
-        let mut block_end = 0usize;
-        let finish = |mut b: Block, start: Option<usize>, end: usize, out: &mut Line| {
-            if let Some(st) = start {
-                b.span = Span::new(line_no, st as u32 + 1, (end - st).max(1) as u32);
-                out.blocks.push(Ok(b));
-            } else if !b.comments.is_empty() {
-                out.blocks.push(Ok(Block { span: Span::new(line_no, 1, 1), ..b }));
+        self.read_nc_blocks(line_no, s, i, out);
+    }
+
+    /// The alarm for a line longer than [`MAX_LINE_BYTES`] (`len` its length, or what a
+    /// streaming caller kept of it).
+    #[cold]
+    fn line_too_long(&self, line_no: u32, len: usize) -> Diagnostic {
+        self.diag(
+            Rule::LineTooLong,
+            line_no,
+            0,
+            1,
+            if len == MAX_KEPT_LINE_BYTES {
+                // What a streaming caller keeps of a longer line: its length is not known.
+                format!("line of at least {MAX_KEPT_LINE_BYTES} bytes: a block may be at most {MAX_LINE_BYTES} bytes long")
             } else {
-                out.spare.push(b.words);
-            }
-        };
+                format!("line of {len} bytes: a block may be at most {MAX_LINE_BYTES} bytes long")
+            },
+        )
+    }
+
+    /// The `%` tape mark at `i`: the line is one, and any text after it is warned of.
+    fn tape_mark(&self, line_no: u32, s: &[u8], i: usize, out: &mut Line) {
+        out.tape_mark = true;
+        let rest = &s[i + 1..];
+        if rest.iter().any(|c| !is_blank(*c)) {
+            out.warnings.push(self.diag(
+                Rule::TextIgnored,
+                line_no,
+                i + 1,
+                rest.len(),
+                "text after the '%' tape mark is ignored",
+            ));
+        }
+    }
+
+    /// The blocks of a line without variables, from `i` (past its leading blanks): each step
+    /// of the loop reads one thing (a comment, a `;`, a `/`, a word) and gives the index after
+    /// it, or the alarm that ends the line.
+    #[inline]
+    fn read_nc_blocks(&self, line_no: u32, s: &[u8], mut i: usize, out: &mut Line) {
+        let mut open = OpenBlock { block: out.new_block(), start: None, end: 0 };
         while i < s.len() {
             let c = s[i];
-            match c {
-                _ if is_blank(c) => i += 1,
-                b'(' => {
-                    let close = s[i + 1..].iter().position(|&b| b == b')');
-                    let end = match close {
-                        Some(k) => i + 1 + k,
-                        None => {
-                            out.warnings.push(self.diag(
-                                Rule::CommentNotClosed,
-                                line_no,
-                                i,
-                                s.len() - i,
-                                "comment '(' is not closed: the rest of the line is read as a comment",
-                            ));
-                            s.len()
-                        }
-                    };
-                    block.comments.push(String::from_utf8_lossy(&s[i + 1..end]).into_owned());
-                    i = (end + 1).min(s.len()).max(end);
-                }
+            let next = match c {
+                _ if is_blank(c) => Ok(i + 1),
+                b'(' => Ok(self.comment(line_no, s, i, &mut open.block, out)),
                 b';' => {
-                    let next = out.new_block();
-                    finish(std::mem::replace(&mut block, next), block_start, block_end, out);
-                    block_start = None;
-                    i += 1;
+                    open.close(line_no, open.end, out);
+                    open.start = None;
+                    Ok(i + 1)
                 }
-                b'/' if block_start.is_none() && block.words.is_empty() && !block.block_delete => {
-                    block.block_delete = true;
-                    block_start = Some(i);
-                    i += 1;
+                b'/' if open.start.is_none() && open.block.words.is_empty() && !open.block.block_delete => {
+                    open.block.block_delete = true;
+                    open.start = Some(i);
+                    let mut j = i + 1;
                     // `/1`..`/9` select a block-delete switch; one switch is modelled.
-                    if i < s.len() && (b'1'..=b'9').contains(&s[i]) {
-                        i += 1;
+                    if j < s.len() && (b'1'..=b'9').contains(&s[j]) {
+                        j += 1;
                     }
-                    block_end = i;
+                    open.end = j;
+                    Ok(j)
                 }
                 // ISO code: ':' is the programme number's address, as O is (FANUC: `:0100`).
-                b':' if block.words.is_empty() && block.program.is_none() && s.get(i + 1).is_some_and(u8::is_ascii_digit) => {
-                    block_start.get_or_insert(i);
-                    let digits = s[i + 1..].iter().take_while(|c| c.is_ascii_digit()).count();
-                    let text = std::str::from_utf8(&s[i + 1..i + 1 + digits]).unwrap_or("0");
-                    match text.parse::<u32>() {
-                        Ok(n) if digits <= 8 => block.program = Some(n),
-                        _ => {
-                            let d = self.diag(Rule::TooManyDigits, line_no, i, digits + 1, format!(":{text}: a programme number has at most 8 digits"));
-                            out.blocks.push(Err(d));
-                            return;
-                        }
-                    }
-                    i += 1 + digits;
-                    block_end = i;
+                b':' if open.block.words.is_empty() && open.block.program.is_none() && s.get(i + 1).is_some_and(u8::is_ascii_digit) => {
+                    open.start.get_or_insert(i);
+                    self.programme_number(line_no, s, i, &mut open)
                 }
                 // A comma word (`,A30.` `,C1.` `,R2.`: FANUC's drawing dimensions): the word
                 // after the comma, its letter kept in lower case as an address of its own.
                 b',' if s.get(i + 1).is_some_and(u8::is_ascii_alphabetic) => {
-                    block_start.get_or_insert(i);
-                    match self.word(line_no, s, i + 1) {
-                        Ok((mut w, next)) => {
-                            w.letter = w.letter.to_ascii_lowercase();
-                            w.span = Span::new(line_no, i as u32 + 1, (next - i) as u32);
-                            block.words.push(w);
-                            i = next;
-                            block_end = next;
-                        }
-                        Err(d) => {
-                            out.blocks.push(Err(d));
-                            return;
-                        }
-                    }
+                    open.start.get_or_insert(i);
+                    self.comma_word(line_no, s, i, &mut open)
                 }
                 _ if c.is_ascii_alphabetic() => {
-                    block_start.get_or_insert(i);
-                    // A macro statement starts its block (after N); inside a block two letters
-                    // side by side are a typing mistake (`DO1` for `D01`), answered as such.
-                    // (A keyword is two letters or more: a plain word is rejected at once.)
-                    if block.words.is_empty() && s.get(i + 1).is_some_and(u8::is_ascii_alphabetic) && macro_block::is_statement(&s[i..]) {
-                        let end = s[i..].iter().position(|&b| b == b';').map_or(s.len(), |k| i + k);
-                        let body_end = s[..end].iter().rposition(|b| !is_blank(*b)).map_or(i + 1, |k| (k + 1).max(i + 1));
-                        if let Err(d) = self.read_macro(line_no, s, i, body_end, &mut block) {
-                            out.blocks.push(Err(d));
-                            return;
-                        }
-                        block_end = body_end;
-                        i = end;
-                        continue;
-                    }
-                    let word_start = i;
-                    match self.word(line_no, s, i) {
-                        Ok((w, next)) => {
-                            i = next;
-                            block_end = next;
-                            match w.letter {
-                                b'N' if block.sequence.is_none() && block.words.is_empty() => {
-                                    block.sequence = Some(w.value as u32)
-                                }
-                                b'O' if block.program.is_none() && block.words.is_empty() => {
-                                    block.program = Some(w.value as u32)
-                                }
-                                // An O word after other words starts the next programme on the
-                                // same line (`M99O0810`, a FANUC 0i punch): the block ends before it.
-                                b'O' if !w.decimal && !w.expr => {
-                                    let next_block = out.new_block();
-                                    finish(std::mem::replace(&mut block, next_block), block_start, word_start, out);
-                                    block.program = Some(w.value as u32);
-                                    block_start = Some(word_start);
-                                }
-                                _ => block.words.push(w),
-                            }
-                        }
-                        Err(d) => {
-                            out.blocks.push(Err(d));
-                            return;
-                        }
-                    }
+                    open.start.get_or_insert(i);
+                    self.address_word(line_no, s, i, &mut open, out)
                 }
-                _ => {
-                    let d = if c.is_ascii_digit() || c == b'.' || c == b'-' || c == b'+' {
-                        let mut j = i;
-                        while j < s.len() && (s[j].is_ascii_digit() || b".+-".contains(&s[j])) {
-                            j += 1;
-                        }
-                        self.diag(
-                            Rule::ImproperAddress,
-                            line_no,
-                            i,
-                            j - i,
-                            format!(
-                                "number '{}' has no address letter before it",
-                                String::from_utf8_lossy(&s[i..j])
-                            ),
-                        )
-                        .with_hint("a letter such as G was probably left out")
-                    } else if c.is_ascii_control() {
-                        self.diag(
-                            Rule::BadCharacter,
-                            line_no,
-                            i,
-                            1,
-                            format!("byte 0x{c:02X} (a control character) is not allowed outside a comment"),
-                        )
-                    } else if let Some((shown, twin, len)) = full_width(&s[i..]) {
-                        self.diag(
-                            Rule::BadCharacter,
-                            line_no,
-                            i,
-                            len,
-                            format!("character '{shown}' (full width) is not allowed outside a comment"),
-                        )
-                        .with_hint(format!("a Chinese input method typed it: write the ASCII '{twin}' instead"))
-                    } else if c.is_ascii() {
-                        let d = self.diag(
-                            Rule::BadCharacter,
-                            line_no,
-                            i,
-                            1,
-                            format!("character '{}' is not allowed outside a comment", c as char),
-                        );
-                        // `[BILLET X42.86 Z82`: a line for a CNC simulator's stock, not G-code
-                        // (corpus: the ICNC course programmes).
-                        let word = s[i + 1..].iter().take_while(|b| b.is_ascii_alphabetic()).count();
-                        if c == b'[' && block_start.is_none() && word >= 3 {
-                            d.with_hint("a line that starts with '[' and a name is a CNC simulator's setting (its stock, say), not G-code: the control stops here; put it in ( ) or delete it")
-                        } else {
-                            d
-                        }
-                    } else if let Some(ch) = utf8_char(&s[i..]) {
-                        // A character of a UTF-8 text (Chinese notes between the blocks): named.
-                        self.diag(Rule::BadCharacter, line_no, i, ch.len_utf8(), format!("character '{ch}' is not allowed outside a comment"))
-                            .with_hint("text other than ASCII belongs inside ( ) comments")
-                    } else {
-                        self.diag(
-                            Rule::BadCharacter,
-                            line_no,
-                            i,
-                            1,
-                            format!("byte 0x{c:02X} is not allowed outside a comment"),
-                        )
-                        .with_hint("text other than ASCII belongs inside ( ) comments")
-                    };
+                _ => Err(self.not_allowed(line_no, s, i, open.start.is_none())),
+            };
+            match next {
+                Ok(next) => i = next,
+                Err(d) => {
                     out.blocks.push(Err(d));
                     return;
                 }
             }
         }
-        finish(block, block_start, block_end.max(block_start.unwrap_or(0)), out);
+        out.finish_block(line_no, open.block, open.start, open.end.max(open.start.unwrap_or(0)));
+    }
+
+    /// The comment whose `(` is at `i`, into the block (a comment not closed runs to the end
+    /// of the line, with a warning): the index after it.
+    #[inline]
+    fn comment(&self, line_no: u32, s: &[u8], i: usize, block: &mut Block, out: &mut Line) -> usize {
+        let close = s[i + 1..].iter().position(|&b| b == b')');
+        let end = match close {
+            Some(k) => i + 1 + k,
+            None => {
+                out.warnings.push(self.diag(
+                    Rule::CommentNotClosed,
+                    line_no,
+                    i,
+                    s.len() - i,
+                    "comment '(' is not closed: the rest of the line is read as a comment",
+                ));
+                s.len()
+            }
+        };
+        block.comments.push(String::from_utf8_lossy(&s[i + 1..end]).into_owned());
+        (end + 1).min(s.len()).max(end)
+    }
+
+    /// The programme number after ISO's `:` at `i` (at most 8 digits): the index after it.
+    fn programme_number(&self, line_no: u32, s: &[u8], i: usize, open: &mut OpenBlock) -> Result<usize, Diagnostic> {
+        let digits = s[i + 1..].iter().take_while(|c| c.is_ascii_digit()).count();
+        let text = std::str::from_utf8(&s[i + 1..i + 1 + digits]).unwrap_or("0");
+        match text.parse::<u32>() {
+            Ok(n) if digits <= 8 => open.block.program = Some(n),
+            _ => {
+                let d = self.diag(Rule::TooManyDigits, line_no, i, digits + 1, format!(":{text}: a programme number has at most 8 digits"));
+                return Err(d);
+            }
+        }
+        open.end = i + 1 + digits;
+        Ok(open.end)
+    }
+
+    /// The comma word whose `,` is at `i`, into the block: the index after it.
+    #[inline]
+    fn comma_word(&self, line_no: u32, s: &[u8], i: usize, open: &mut OpenBlock) -> Result<usize, Diagnostic> {
+        let (mut w, next) = self.word(line_no, s, i + 1)?;
+        w.letter = w.letter.to_ascii_lowercase();
+        w.span = Span::new(line_no, i as u32 + 1, (next - i) as u32);
+        open.block.words.push(w);
+        open.end = next;
+        Ok(next)
+    }
+
+    /// What starts at the letter `s[i]`: a macro statement (at the start of a block), the
+    /// block's N or O, an O that starts the next programme, or a word of the block. The index
+    /// after it.
+    #[inline]
+    fn address_word(&self, line_no: u32, s: &[u8], i: usize, open: &mut OpenBlock, out: &mut Line) -> Result<usize, Diagnostic> {
+        // A macro statement starts its block (after N); inside a block two letters
+        // side by side are a typing mistake (`DO1` for `D01`), answered as such.
+        // (A keyword is two letters or more: a plain word is rejected at once.)
+        if open.block.words.is_empty() && s.get(i + 1).is_some_and(u8::is_ascii_alphabetic) && macro_block::is_statement(&s[i..]) {
+            let end = s[i..].iter().position(|&b| b == b';').map_or(s.len(), |k| i + k);
+            let body_end = s[..end].iter().rposition(|b| !is_blank(*b)).map_or(i + 1, |k| (k + 1).max(i + 1));
+            self.read_macro(line_no, s, i, body_end, &mut open.block)?;
+            open.end = body_end;
+            return Ok(end);
+        }
+        let word_start = i;
+        let (w, next) = self.word(line_no, s, i)?;
+        open.end = next;
+        let block = &mut open.block;
+        match w.letter {
+            b'N' if block.sequence.is_none() && block.words.is_empty() => {
+                block.sequence = Some(w.value as u32)
+            }
+            b'O' if block.program.is_none() && block.words.is_empty() => {
+                block.program = Some(w.value as u32)
+            }
+            // An O word after other words starts the next programme on the
+            // same line (`M99O0810`, a FANUC 0i punch): the block ends before it.
+            b'O' if !w.decimal && !w.expr => {
+                open.close(line_no, word_start, out);
+                open.block.program = Some(w.value as u32);
+                open.start = Some(word_start);
+            }
+            _ => block.words.push(w),
+        }
+        Ok(next)
+    }
+
+    /// The alarm for the byte at `i`, which starts nothing a block may hold: a number without
+    /// its letter, a control character, a full-width or other non-ASCII character, a simulator's
+    /// setting line (`first`: nothing of the block read before it).
+    #[cold]
+    fn not_allowed(&self, line_no: u32, s: &[u8], i: usize, first: bool) -> Diagnostic {
+        let c = s[i];
+        if c.is_ascii_digit() || c == b'.' || c == b'-' || c == b'+' {
+            let mut j = i;
+            while j < s.len() && (s[j].is_ascii_digit() || b".+-".contains(&s[j])) {
+                j += 1;
+            }
+            self.diag(
+                Rule::ImproperAddress,
+                line_no,
+                i,
+                j - i,
+                format!(
+                    "number '{}' has no address letter before it",
+                    String::from_utf8_lossy(&s[i..j])
+                ),
+            )
+            .with_hint("a letter such as G was probably left out")
+        } else if c.is_ascii_control() {
+            self.diag(
+                Rule::BadCharacter,
+                line_no,
+                i,
+                1,
+                format!("byte 0x{c:02X} (a control character) is not allowed outside a comment"),
+            )
+        } else if let Some((shown, twin, len)) = full_width(&s[i..]) {
+            self.diag(
+                Rule::BadCharacter,
+                line_no,
+                i,
+                len,
+                format!("character '{shown}' (full width) is not allowed outside a comment"),
+            )
+            .with_hint(format!("a Chinese input method typed it: write the ASCII '{twin}' instead"))
+        } else if c.is_ascii() {
+            let d = self.diag(
+                Rule::BadCharacter,
+                line_no,
+                i,
+                1,
+                format!("character '{}' is not allowed outside a comment", c as char),
+            );
+            // `[BILLET X42.86 Z82`: a line for a CNC simulator's stock, not G-code
+            // (corpus: the ICNC course programmes).
+            let word = s[i + 1..].iter().take_while(|b| b.is_ascii_alphabetic()).count();
+            if c == b'[' && first && word >= 3 {
+                d.with_hint("a line that starts with '[' and a name is a CNC simulator's setting (its stock, say), not G-code: the control stops here; put it in ( ) or delete it")
+            } else {
+                d
+            }
+        } else if let Some(ch) = utf8_char(&s[i..]) {
+            // A character of a UTF-8 text (Chinese notes between the blocks): named.
+            self.diag(Rule::BadCharacter, line_no, i, ch.len_utf8(), format!("character '{ch}' is not allowed outside a comment"))
+                .with_hint("text other than ASCII belongs inside ( ) comments")
+        } else {
+            self.diag(
+                Rule::BadCharacter,
+                line_no,
+                i,
+                1,
+                format!("byte 0x{c:02X} is not allowed outside a comment"),
+            )
+            .with_hint("text other than ASCII belongs inside ( ) comments")
+        }
     }
 
     /// One word starting at the letter `s[at]`. Returns the word and the index after it.
@@ -539,36 +578,9 @@ impl Reader {
         while i < s.len() && (s[i] == b' ' || s[i] == b'\t') {
             i += 1;
         }
-        let span_to = |end: usize| Span::new(line, at as u32 + 1, (end - at).max(1) as u32);
+        let span_to = |end: usize| word_span(line, at, end);
         if i < s.len() && s[i] == b'[' {
-            let j = matching_bracket(s, i).unwrap_or(s.len());
-            if j >= s.len() {
-                return Err(Diagnostic::new(
-                    Rule::Expression,
-                    self.style,
-                    span_to(s.len()),
-                    format!("{}[: the expression has no closing ']'", letter as char),
-                ));
-            }
-            // ROUND inside an address rounds to the address's least increment, which depends
-            // on G20/G21: such a line is read as a macro line and evaluated when it runs.
-            if s[i + 1..j].windows(5).any(|w| w.eq_ignore_ascii_case(b"ROUND")) {
-                return Err(Diagnostic::new(Rule::Expression, self.style, span_to(j + 1), ROUND_LATER));
-            }
-            return match expr::evaluate(&s[i + 1..j]) {
-                Ok(v) => Ok((Word { letter, value: v, decimal: true, expr: true, span: span_to(j + 1) }, j + 1)),
-                Err(e) => Err(Diagnostic::new(
-                    Rule::Expression,
-                    self.style,
-                    span_to(j + 1),
-                    format!(
-                        "{}[{}]: {}",
-                        letter as char,
-                        String::from_utf8_lossy(&s[i + 1..j]),
-                        e.message
-                    ),
-                )),
-            };
+            return self.expression_word(line, s, at, letter, i);
         }
         let num_start = i;
         let mut negative = false;
@@ -598,21 +610,7 @@ impl Reader {
                 fraction_digits += i32::from(decimal);
             } else if c == b'.' {
                 if decimal {
-                    let mut end = i + 1;
-                    while end < s.len() && (s[end].is_ascii_digit() || s[end] == b'.') {
-                        end += 1;
-                    }
-                    return Err(Diagnostic::new(
-                        Rule::IllegalDecimalPoint,
-                        self.style,
-                        span_to(end),
-                        format!(
-                            "{}{}: two decimal points in one value",
-                            letter as char,
-                            String::from_utf8_lossy(&s[num_start..end])
-                        ),
-                    )
-                    .with_hint("delete one of the decimal points"));
+                    return Err(self.two_points(line, s, at, letter, num_start, i));
                 }
                 decimal = true;
             } else {
@@ -621,28 +619,7 @@ impl Reader {
             i += 1;
         }
         if digits == 0 {
-            let next = s.get(digits_start).copied();
-            let mut d = Diagnostic::new(
-                Rule::NoDataAfterAddress,
-                self.style,
-                span_to(digits_start.max(at + 1)),
-                format!("address {} has no value after it", letter as char),
-            );
-            if matches!(next, Some(b'O' | b'o')) {
-                d.span = span_to(digits_start + 1);
-                d.message = format!(
-                    "{}{}: address {} is followed by the letter O, not a number",
-                    letter as char,
-                    next.unwrap() as char,
-                    letter as char
-                );
-                d = d.with_hint("letter O where a zero was probably meant");
-            } else if negative {
-                d.rule = Rule::IllegalMinus;
-                d.code = Rule::IllegalMinus.code(self.style);
-                d.message = format!("{}-: a minus sign without a number", letter as char);
-            }
-            return Err(d);
+            return Err(self.no_value(line, s, at, letter, digits_start, negative));
         }
         if significant > MAX_DIGITS {
             return Err(Diagnostic::new(
@@ -662,6 +639,114 @@ impl Reader {
         }
         Ok((Word { letter, value, decimal, expr: false, span: span_to(i) }, i))
     }
+
+    /// The word of `letter` (at `at`) whose value is the `[expr]` opening at `i`, evaluated now
+    /// (it holds constants only). Returns the word and the index after its `]`.
+    fn expression_word(&self, line: u32, s: &[u8], at: usize, letter: u8, i: usize) -> Result<(Word, usize), Diagnostic> {
+        let span_to = |end: usize| word_span(line, at, end);
+        let j = matching_bracket(s, i).unwrap_or(s.len());
+        if j >= s.len() {
+            return Err(Diagnostic::new(
+                Rule::Expression,
+                self.style,
+                span_to(s.len()),
+                format!("{}[: the expression has no closing ']'", letter as char),
+            ));
+        }
+        // ROUND inside an address rounds to the address's least increment, which depends
+        // on G20/G21: such a line is read as a macro line and evaluated when it runs.
+        if s[i + 1..j].windows(5).any(|w| w.eq_ignore_ascii_case(b"ROUND")) {
+            return Err(Diagnostic::new(Rule::Expression, self.style, span_to(j + 1), ROUND_LATER));
+        }
+        match expr::evaluate(&s[i + 1..j]) {
+            Ok(v) => Ok((Word { letter, value: v, decimal: true, expr: true, span: span_to(j + 1) }, j + 1)),
+            Err(e) => Err(Diagnostic::new(
+                Rule::Expression,
+                self.style,
+                span_to(j + 1),
+                format!(
+                    "{}[{}]: {}",
+                    letter as char,
+                    String::from_utf8_lossy(&s[i + 1..j]),
+                    e.message
+                ),
+            )),
+        }
+    }
+
+    /// The alarm for a second decimal point at `i` in the value that starts at `num_start`.
+    #[cold]
+    fn two_points(&self, line: u32, s: &[u8], at: usize, letter: u8, num_start: usize, i: usize) -> Diagnostic {
+        let mut end = i + 1;
+        while end < s.len() && (s[end].is_ascii_digit() || s[end] == b'.') {
+            end += 1;
+        }
+        Diagnostic::new(
+            Rule::IllegalDecimalPoint,
+            self.style,
+            word_span(line, at, end),
+            format!(
+                "{}{}: two decimal points in one value",
+                letter as char,
+                String::from_utf8_lossy(&s[num_start..end])
+            ),
+        )
+        .with_hint("delete one of the decimal points")
+    }
+
+    /// The alarm for an address with no number after it (its digits would start at
+    /// `digits_start`): the letter O where a zero was meant, or a minus sign alone, named.
+    #[cold]
+    fn no_value(&self, line: u32, s: &[u8], at: usize, letter: u8, digits_start: usize, negative: bool) -> Diagnostic {
+        let span_to = |end: usize| word_span(line, at, end);
+        let next = s.get(digits_start).copied();
+        let mut d = Diagnostic::new(
+            Rule::NoDataAfterAddress,
+            self.style,
+            span_to(digits_start.max(at + 1)),
+            format!("address {} has no value after it", letter as char),
+        );
+        if matches!(next, Some(b'O' | b'o')) {
+            d.span = span_to(digits_start + 1);
+            d.message = format!(
+                "{}{}: address {} is followed by the letter O, not a number",
+                letter as char,
+                next.unwrap() as char,
+                letter as char
+            );
+            d = d.with_hint("letter O where a zero was probably meant");
+        } else if negative {
+            d.rule = Rule::IllegalMinus;
+            d.code = Rule::IllegalMinus.code(self.style);
+            d.message = format!("{}-: a minus sign without a number", letter as char);
+        }
+        d
+    }
+}
+
+/// The block being read: what it holds so far and where its text starts and ends on the line.
+struct OpenBlock {
+    block: Block,
+    /// Where its text starts: none while only blanks and comments were read.
+    start: Option<usize>,
+    /// Where its text read so far ends.
+    end: usize,
+}
+
+impl OpenBlock {
+    /// End the block at `end` (at a `;`, or before an O word that starts the next programme)
+    /// into `out`, and open the next one, empty.
+    #[inline]
+    fn close(&mut self, line_no: u32, end: usize, out: &mut Line) {
+        let next = out.new_block();
+        out.finish_block(line_no, std::mem::replace(&mut self.block, next), self.start, end);
+    }
+}
+
+/// The span of a word from its letter at `at` to `end` (at least one byte).
+#[inline]
+fn word_span(line: u32, at: usize, end: usize) -> Span {
+    Span::new(line, at as u32 + 1, (end - at).max(1) as u32)
 }
 
 /// `mantissa / 10^fraction_digits`, correctly rounded as `str::parse` gives it: exact when both
