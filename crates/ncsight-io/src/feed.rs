@@ -290,6 +290,44 @@ pub fn drive(
     follow_jumps(request, &mut pages, library, program, on_event)
 }
 
+/// How long a thread of the forward phase spins for its partner before it sleeps.
+const SPIN: std::time::Duration = std::time::Duration::from_micros(300);
+
+/// Hand a batch to the interpreting thread: spinning a little while the batches in flight are
+/// all taken (the interpreter is about to finish one), then waiting; an error when it has gone.
+fn send_batch<T>(tx: &mpsc::SyncSender<T>, batch: T) -> Result<(), ()> {
+    let start = std::time::Instant::now();
+    let mut batch = batch;
+    loop {
+        match tx.try_send(batch) {
+            Ok(()) => return Ok(()),
+            Err(mpsc::TrySendError::Disconnected(_)) => return Err(()),
+            Err(mpsc::TrySendError::Full(back)) if start.elapsed() < SPIN => {
+                batch = back;
+                std::hint::spin_loop();
+            }
+            Err(mpsc::TrySendError::Full(back)) => return tx.send(back).map_err(|_| ()),
+        }
+    }
+}
+
+/// The next batch from the reading thread, or none when it has ended. A batch is usually a
+/// fraction of a millisecond away: the thread spins that long before it sleeps, since being put
+/// to sleep and woken costs more than the wait on a virtual machine's processors (measured on
+/// the 200,000-hole programme: 101 context switches before, 11 with both threads spinning;
+/// `check` right after rs274, median of 7 alternating runs, 37 ms before, 32-34 ms after).
+fn next_batch<T>(rx: &mpsc::Receiver<T>) -> Option<T> {
+    let start = std::time::Instant::now();
+    loop {
+        match rx.try_recv() {
+            Ok(batch) => return Some(batch),
+            Err(mpsc::TryRecvError::Disconnected) => return None,
+            Err(mpsc::TryRecvError::Empty) if start.elapsed() < SPIN => std::hint::spin_loop(),
+            Err(mpsc::TryRecvError::Empty) => return rx.recv().ok(),
+        }
+    }
+}
+
 /// The forward phase: lines read ahead on a second thread. Returns the run's first request to
 /// read elsewhere, if it makes one (the run is then not finished).
 /// `on_event` says whether its consumer wants more: once it does not (a reader that went away,
@@ -306,7 +344,7 @@ fn stream_forward(input: Box<dyn BufRead + Send>, source: &Source, program: &mut
     // last line fed once its batch is gone (for what the end of the input says about it).
     let mut line_no = 0u32;
     let mut last_text = Vec::new();
-    'batches: for batch in full_rx.iter() {
+    'batches: while let Some(batch) = next_batch(&full_rx) {
         let mut batch = batch?;
         for (i, range) in batch.ranges.iter().enumerate() {
             if !program.wants_more() {
@@ -647,7 +685,7 @@ fn read_ahead(
             next.clear();
             next.text.extend_from_slice(&batch.text[start..]);
             batch.text.truncate(start);
-            if full.send(Ok(std::mem::replace(&mut batch, next))).is_err() {
+            if send_batch(full, Ok(std::mem::replace(&mut batch, next))).is_err() {
                 return;
             }
             start = 0;

@@ -106,14 +106,14 @@ pub fn expand_each(h: &Hole, s: &mut dyn FnMut(Step)) {
 }
 
 /// The point of the hole shifted by Q along the shift direction (G76, G87), at level `lvl`.
-#[inline]
+#[inline(always)]
 fn shifted(h: &Hole, lvl: f64) -> Local {
     let [a, b] = h.at;
     [a + h.q * h.shift_dir[0], b + h.q * h.shift_dir[1], lvl]
 }
 
 /// G87 from the level the tool stands on, positioned over the hole.
-#[inline]
+#[inline(always)]
 fn back_boring(h: &Hole, p: &impl Fn(f64) -> Local, s: &mut dyn FnMut(Step)) {
     let level = h.from[2];
     // Back boring: orient and shift, rapid down to R (below the hole), shift back, start the
@@ -137,7 +137,7 @@ fn back_boring(h: &Hole, p: &impl Fn(f64) -> Local, s: &mut dyn FnMut(Step)) {
 /// The pecks from the R level to the bottom (`down`: the sign of the drilling direction), each
 /// followed by a rapid back d (`full_return` false) or to R and down again to d short of the
 /// depth reached (true).
-#[inline]
+#[inline(always)]
 fn pecks_from_r(h: &Hole, down: f64, full_return: bool, p: &impl Fn(f64) -> Local, s: &mut dyn FnMut(Step)) {
     // Peck k ends at R + k Q, computed afresh, and within a nanometre of the bottom is the
     // bottom: the control counts in whole increments, so rounding leaves no sliver of a
@@ -162,7 +162,7 @@ fn pecks_from_r(h: &Hole, down: f64, full_return: bool, p: &impl Fn(f64) -> Loca
 
 /// The cycle's motion at the bottom of the hole and out of it, back to the initial level (G98)
 /// or the R level (G99).
-#[inline]
+#[inline(always)]
 fn out_of_hole(h: &Hole, p: &impl Fn(f64) -> Local, s: &mut dyn FnMut(Step)) {
     let ret = if h.return_initial || h.kind == DrillKind::G87 { h.initial } else { h.r };
     let dwell = |s: &mut dyn FnMut(Step)| {

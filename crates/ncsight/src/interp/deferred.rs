@@ -104,7 +104,7 @@ impl Step<'_> {
             self.st.frame.unmoved = Vec3::default();
         }
         let cuts = DeferredCuts { moves, feed, span: self.span, n: self.n, to_machine };
-        self.out.deferred = Some((self.out.records.len(), Deferred::Cuts(cuts)));
+        self.out.deferred = Some(Box::new((self.out.records.len(), Deferred::Cuts(cuts))));
         Ok(())
     }
 

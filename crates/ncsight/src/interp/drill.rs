@@ -596,7 +596,7 @@ pub(super) fn block(step: &mut Step, words: &mut Words, kind: DrillKind, enterin
 /// The hole position in the plane from the block's positioning words on the plane's axes `a`
 /// and `b`: the increment each repeat moves by under G91 (0 under G90) and the first hole's
 /// position, as (delta a, delta b, target a, target b).
-#[inline]
+#[inline(always)]
 fn hole_position(step: &mut Step, words: &mut Words, a: usize, b: usize) -> Result<(f64, f64, f64, f64), Diagnostic> {
     // Positioning words in the plane.
     // Kept in scalars, not arrays written element by element: this runs for every hole.
@@ -619,6 +619,7 @@ fn hole_position(step: &mut Step, words: &mut Words, a: usize, b: usize) -> Resu
 /// The R level and the hole bottom of the hole data in force, from the initial level (R and Z
 /// each absolute or incremental): the alarms for a missing R, Z or peck depth Q, and for an R
 /// level on the wrong side of the bottom.
+#[inline(always)]
 fn hole_levels(step: &Step, kind: DrillKind) -> Result<(f64, f64), Diagnostic> {
     let code = kind.code();
     let d = step.st.drill;
@@ -654,6 +655,7 @@ fn hole_levels(step: &Step, kind: DrillKind) -> Result<(f64, f64), Diagnostic> {
 
 /// The warnings of a tapping cycle (G74, G84): the spindle turning the other way than the tap,
 /// and a pitch (F over S) no tap has.
+#[inline(always)]
 fn tapping_warnings(step: &mut Step, kind: DrillKind, rpm: f64) {
     let code = kind.code();
     if matches!(kind, DrillKind::G74 | DrillKind::G84) {
@@ -683,6 +685,7 @@ fn tapping_warnings(step: &mut Step, kind: DrillKind, rpm: f64) {
 
 /// Whether the block's holes are made as they are handed on ([`DeferredHoles`]) rather than
 /// held; the alarm for a block of more pecks (or moves) than one block may make.
+#[inline(always)]
 fn defers_holes(step: &Step, kind: DrillKind, r: f64, bottom: f64, repeats: u32) -> Result<bool, Diagnostic> {
     let code = kind.code();
     let d = step.st.drill;
@@ -707,6 +710,7 @@ fn defers_holes(step: &Step, kind: DrillKind, r: f64, bottom: f64, repeats: u32)
 
 /// The retract d after each peck: G73's retract, G83's clearance (the profile's parameters, mm);
 /// 0 for the other cycles.
+#[inline(always)]
 fn peck_retract_mm(step: &Step, kind: DrillKind) -> f64 {
     let rules = step.profile.drill;
     let um = |key: Option<ParamKey>| key.map_or(0.0, |k| step.params.get(k) * 0.001);
@@ -719,6 +723,7 @@ fn peck_retract_mm(step: &Step, kind: DrillKind) -> f64 {
 
 /// The unit direction in the plane a G76/G87 shift moves the tool (the profile's shift bits);
 /// none for the other cycles.
+#[inline(always)]
 fn shift_direction(step: &Step, kind: DrillKind) -> [f64; 2] {
     let rules = step.profile.drill;
     // The shift bits (high, low): 00 +X, 01 -X, 10 +Y, 11 -Y (docs/guide.md); X is the plane's
@@ -739,6 +744,7 @@ fn shift_direction(step: &Step, kind: DrillKind) -> [f64; 2] {
 /// The block's `repeats` holes, `template` at each position from `target` (moved on by `delta`
 /// each repeat under G91), from where the tool stands: made now, or laid out to be made as they
 /// are handed on (`defer`).
+#[inline(always)]
 fn make_holes(step: &mut Step, template: &Hole, repeats: u32, (delta_a, delta_b): (f64, f64), (mut target_a, mut target_b): (f64, f64), defer: bool) -> Result<(), Diagnostic> {
     let kind = template.kind;
     let code = kind.code();
@@ -778,7 +784,7 @@ fn make_holes(step: &mut Step, template: &Hole, repeats: u32, (delta_a, delta_b)
     }
     if !deferred.is_empty() && !step.out.discard_records {
         let holes = DeferredHoles { holes: deferred, span: step.span, n: step.n, to_machine: step.tables.to_machine(&step.st.frame), plane, position_mode: step.st.spindle_position_mode, spindle_p: step.spindle_p() };
-        step.out.deferred = Some((step.out.records.len(), super::Deferred::Holes(holes)));
+        step.out.deferred = Some(Box::new((step.out.records.len(), super::Deferred::Holes(holes))));
     }
     Ok(())
 }

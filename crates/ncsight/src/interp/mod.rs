@@ -86,7 +86,7 @@ pub struct Outcome {
     comp_spans: Vec<Span>,
     /// A block's records too many to hold (a drilling block's holes, a roughing's levels): made
     /// one at a time as they are handed on, after the first `.0` records of `records`.
-    pub deferred: Option<(usize, Deferred)>,
+    pub deferred: Option<Box<(usize, Deferred)>>,
     /// Whether the consumer takes records as they are made (a sink), so a block may defer its
     /// holes; a pull iterator that queues a line's events does not (its queue would hold them).
     pub may_defer: bool,
@@ -476,7 +476,17 @@ impl Step<'_> {
     /// the spindle speed changes along the move; the feed returned is then the mean one
     /// (length / time), the time integrated over the path (Simpson's rule, 64 intervals).
     fn cutting_feed(&mut self, what: impl Into<What>, point: &dyn Fn(f64) -> Vec3) -> Result<f64, Diagnostic> {
-        let rule = self.feed_rule(what, point)?;
+        let f = self.checked_feed(what, point)?;
+        // Feed per minute (the common case, every drilled hole): F, at most the limit.
+        if !self.st.per_rev {
+            let max = self.params.feed_max_mm_min();
+            if f > max {
+                self.warn_clamped(f, max);
+                return Ok(max);
+            }
+            return Ok(f);
+        }
+        let rule = self.cut_feed(f);
         let (feed, asked) = rule.mm_min(self.rpm_here(), point);
         if let Some(asked) = asked {
             self.warn_clamped(asked, rule.max_mm_min);
@@ -492,6 +502,14 @@ impl Step<'_> {
     /// none (no F; feed per revolution with the spindle stopped); an implausible F is said
     /// once, of the move along `point`.
     fn feed_rule(&mut self, what: impl Into<What>, point: &dyn Fn(f64) -> Vec3) -> Result<CutFeed, Diagnostic> {
+        let f = self.checked_feed(what, point)?;
+        Ok(self.cut_feed(f))
+    }
+
+    /// F in force for a cutting move (in mm), or the alarm that there is none: no F, or feed per
+    /// revolution with the spindle stopped; an implausible F is said once, of the move along
+    /// `point`.
+    fn checked_feed(&mut self, what: impl Into<What>, point: &dyn Fn(f64) -> Vec3) -> Result<f64, Diagnostic> {
         let what: What = what.into();
         let f = match self.st.feed {
             Some(f) if f > 0.0 => f,
@@ -515,7 +533,12 @@ impl Step<'_> {
                 format!("{}: feed per revolution (F{} mm/rev) with the spindle stopped or at S0", what.name(self.profile), crate::alarm::shown(f, 4)),
             ));
         }
-        Ok(CutFeed { f, per_rev: self.st.per_rev, max_mm_min: self.params.feed_max_mm_min(), spindle: self.st.spindle_speed(MAX_RPM), css_axis: if self.st.css { self.css_axis() } else { None } })
+        Ok(f)
+    }
+
+    /// The feed rule of F in the modes in force.
+    fn cut_feed(&self, f: f64) -> CutFeed {
+        CutFeed { f, per_rev: self.st.per_rev, max_mm_min: self.params.feed_max_mm_min(), spindle: self.st.spindle_speed(MAX_RPM), css_axis: if self.st.css { self.css_axis() } else { None } }
     }
 }
 
@@ -1051,6 +1074,7 @@ struct ReadAs {
 }
 
 /// Step 0 of [`run_block`]: the words the block is read with.
+#[inline(always)]
 fn block_words<'a>(step: &mut Step, block: &'a Block, read_as: &'a mut ReadAs) -> Result<&'a [Word], Diagnostic> {
     // 0. Under G16 the plane's two words are a radius and an angle: the block is read with the
     // X, Y, Z words they stand for (not in a block that sets or ends a transform, or G15's own).
@@ -1093,6 +1117,7 @@ fn block_words<'a>(step: &mut Step, block: &'a Block, read_as: &'a mut ReadAs) -
 /// Step 2 of [`run_block`]: the G codes sorted, the last of a modal group counting; the codes
 /// that may not share a block, or not run here, alarm.
 #[allow(clippy::type_complexity)]
+#[inline(always)]
 fn sort_g_codes<'w>(step: &mut Step, gs: &[(&'w Word, &'static GDef)]) -> Result<Vec<(Group, &'w Word, &'static GDef)>, Diagnostic> {
     let profile = step.profile;
     // 2. G codes: the last of a group counts (GSK: TAC p65; FANUC the same); a warning says so.
@@ -1158,6 +1183,7 @@ fn sort_g_codes<'w>(step: &mut Step, gs: &[(&'w Word, &'static GDef)]) -> Result
 
 /// Radius compensation and the corner stage before a block that suspends them (step 2 of
 /// [`run_block`]).
+#[inline(always)]
 fn suspend_compensation(step: &mut Step, last_of: &[(Group, &Word, &'static GDef)], words: &Words) {
     let profile = step.profile;
     // Radius compensation acts on plain moves only: a block with a cycle, a thread, a reference
@@ -1229,6 +1255,7 @@ fn suspend_compensation(step: &mut Step, last_of: &[(Group, &Word, &'static GDef
 
 /// Step 3 of [`run_block`]: the modal codes take effect; the motion and drilling codes and
 /// the others acted on later are noted.
+#[inline(always)]
 fn modal_codes(step: &mut Step, block: &Block, last_of: &[(Group, &Word, &'static GDef)]) -> Result<Codes, Diagnostic> {
     let profile = step.profile;
     // 3. Modal codes take effect; the motion and drilling codes are noted.
@@ -1312,6 +1339,7 @@ fn modal_codes(step: &mut Step, block: &Block, last_of: &[(Group, &Word, &'stati
 }
 
 /// The words a macro reads back (#4102-#4113) of this block.
+#[inline(always)]
 fn note_last_words(st: &mut crate::modal::Modal, block: &Block) {
     for w in &block.words {
         let last = &mut st.last_words;
@@ -1348,6 +1376,7 @@ fn set_plane(step: &mut Step, w: &Word, function: GFn) -> Result<(), Diagnostic>
 }
 
 /// Help text G84/88: no axis move between M29 and the G84/G88 block (a dwell's X is a time).
+#[inline(always)]
 fn rigid_tap_waits(step: &mut Step, codes: &Codes, words: &Words) -> Result<(), Diagnostic> {
     let profile = step.profile;
     let dwell_block = matches!(codes.non_modal, Some((_, GFn::Dwell)));
@@ -1361,6 +1390,7 @@ fn rigid_tap_waits(step: &mut Step, codes: &Codes, words: &Words) -> Result<(), 
 }
 
 /// Step 4 of [`run_block`]: what a new motion mode cancels.
+#[inline(always)]
 fn cancel_by_motion(step: &mut Step, codes: &Codes) {
     // 4. What a new motion mode cancels. A non-thread group 01 code cancels the thread J/K and
     // the cycle memory (seed 001 G32.1 note 1).
@@ -1401,6 +1431,7 @@ fn cancel_by_motion(step: &mut Step, codes: &Codes) {
 
 /// Step 5 of [`run_block`]: a held-back thread run end is made, or this block continues the
 /// run (the angle it continues from, then).
+#[inline(always)]
 fn held_thread_run(step: &mut Step, codes: &Codes, no_m_codes: bool, words: &Words, motion_now: Motion, has_axis: bool) -> Option<f64> {
     // 5. A held-back thread run end: does this block continue the run?
     let mut run_deg = None;
@@ -1423,6 +1454,7 @@ fn held_thread_run(step: &mut Step, codes: &Codes, no_m_codes: bool, words: &Wor
 }
 
 /// Step 6 of [`run_block`]: H of tool length compensation, D of cutter compensation.
+#[inline(always)]
 fn offset_words(step: &mut Step, last_of: &[(Group, &Word, &'static GDef)], codes: &Codes, words: &mut Words, motion_now: Motion, has_axis: bool) -> Result<(), Diagnostic> {
     // 6. Tool length compensation takes H (the offset number); D belongs to cutter compensation.
     let length_code = last_of.iter().find_map(|(_, w, g)| if let GFn::LengthComp(s) = g.function { Some((w.span, s)) } else { None });
@@ -1453,6 +1485,7 @@ fn offset_words(step: &mut Step, last_of: &[(Group, &Word, &'static GDef)], code
 }
 
 /// Step 7 of [`run_block`]: F (not in a thread block or a rigid tap's, whose F is the lead).
+#[inline(always)]
 fn feed_word(step: &mut Step, codes: &Codes, words: &mut Words, thread_block: bool) -> Result<(), Diagnostic> {
     // G84/G88's F is the tap's lead, signed by its hand (help text G84/88): the cycle reads it.
     let tap_block = codes.drill.or(step.st.drill.kind).is_some_and(|k| k.rigid_tap());
@@ -1473,6 +1506,7 @@ fn feed_word(step: &mut Step, codes: &Codes, words: &mut Words, thread_block: bo
 
 /// Step 7 of [`run_block`]: P selecting the spindle S and the spindle M codes are for.
 #[allow(clippy::type_complexity)]
+#[inline(always)]
 fn select_spindle(step: &mut Step, codes: &Codes, ms: &[(&Word, Option<&'static MDef>)], words: &mut Words, thread_block: bool) -> Result<(), Diagnostic> {
     // On a machine with several spindles (the setup's `spindle_p`), P in a block with S or a
     // spindle M code selects the spindle they are for (FANUC multi-spindle control: the P codes
@@ -1502,6 +1536,7 @@ fn select_spindle(step: &mut Step, codes: &Codes, ms: &[(&Word, Option<&'static 
 type SpindleNow = (SpindleDir, f64, bool, bool);
 
 /// Step 7 of [`run_block`]: S (the speed, or G50's clamp); the spindle as it was before.
+#[inline(always)]
 fn speed_word(step: &mut Step, codes: &Codes, last_of: &[(Group, &Word, &'static GDef)], words: &mut Words, motion_now: Motion) -> Result<SpindleNow, Diagnostic> {
     let profile = step.profile;
     let rigid_thread = matches!(motion_now, Motion::Thread(cmd) if thread::is_rigid(cmd));
@@ -1529,6 +1564,7 @@ fn speed_word(step: &mut Step, codes: &Codes, last_of: &[(Group, &Word, &'static
 }
 
 /// Step 7 of [`run_block`]: T (on a lathe the tool and its offset, a tool record).
+#[inline(always)]
 fn tool_word(step: &mut Step, words: &mut Words, has_axis: bool) -> Result<(), Diagnostic> {
     let profile = step.profile;
     let tool = match words.take(b'T') {
@@ -1562,6 +1598,7 @@ fn tool_word(step: &mut Step, words: &mut Words, has_axis: bool) -> Result<(), D
 /// mode, rigid tapping, the words of a call or return), a spindle record when the spindle
 /// changes; the M codes that act after the motion, returned.
 #[allow(clippy::type_complexity)]
+#[inline(always)]
 fn m_codes_before<'w>(step: &mut Step, ms: &[(&'w Word, Option<&'static MDef>)], words: &mut Words<'w>, spindle_before: SpindleNow) -> Result<Vec<(&'w Word, MFn)>, Diagnostic> {
     let profile = step.profile;
     // 8. M codes that act before motion: spindle and its mode.
@@ -1624,6 +1661,7 @@ fn m_codes_before<'w>(step: &mut Step, ms: &[(&'w Word, Option<&'static MDef>)],
 
 /// Step 10 of [`run_block`]: the one-shot code, or the motion of the mode in force; then
 /// step 11 ([`finish_block`]).
+#[inline(always)]
 fn motion_of_block<'w>(step: &mut Step, words: &mut Words<'w>, codes: &Codes, after: Vec<(&'w Word, MFn)>, switches: Switches, has_axis: bool, run_deg: Option<f64>) -> Result<(), Diagnostic> {
     // 10. The one-shot code, or the motion of the mode in force.
     // A one-shot code other than G04 ends the box cycles' remembered X, Z and R (FANUC 0-T).
@@ -1705,6 +1743,7 @@ fn set_transforms(step: &mut Step, words: &mut Words, codes: &Codes) -> Result<b
 
 /// Step 10 of [`run_block`]: under a transform the block is worked out in programmed
 /// coordinates (what is not simulated there alarms).
+#[inline(always)]
 fn programmed_coordinates(step: &mut Step, words: &Words, codes: &Codes, has_axis: bool) -> Result<(), Diagnostic> {
     // Under a transform the block is worked out in programmed coordinates.
     if transform::moves_records(&step.st.transform) {
@@ -1736,6 +1775,7 @@ fn programmed_coordinates(step: &mut Step, words: &Words, codes: &Codes, has_axi
 }
 
 /// Step 10 of [`run_block`]: the one-shot (group 00) code.
+#[inline(always)]
 fn one_shot(step: &mut Step, words: &mut Words, code: (Span, GFn)) -> Result<(), Diagnostic> {
     match code {
     (_, GFn::Dwell) => dwell(step, words)?,
@@ -1767,6 +1807,7 @@ fn one_shot(step: &mut Step, words: &mut Words, code: (Span, GFn)) -> Result<(),
 
 /// Step 10 of [`run_block`]: the motion of the mode in force (a polar interpolation switch, a
 /// drilling cycle, a thread, a box cycle, a curve, G00-G03).
+#[inline(always)]
 fn modal_motion(step: &mut Step, words: &mut Words, codes: &Codes, has_axis: bool, run_deg: Option<f64>) -> Result<(), Diagnostic> {
     if let Some((span, f)) = codes.polar_interp {
         polar::switch(step, words, f, span)?;

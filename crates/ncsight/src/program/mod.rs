@@ -1969,12 +1969,12 @@ impl Core {
         if self.records() && (!self.outcome.records.is_empty() || deferred.is_some()) {
             // A drilling block's deferred holes come where the block laid them out, made one
             // record at a time as they go (a block of any number of pecks holds no more).
-            let at = deferred.as_ref().map_or(self.outcome.records.len(), |(at, _)| (*at).min(self.outcome.records.len()));
+            let at = deferred.as_deref().map_or(self.outcome.records.len(), |(at, _)| (*at).min(self.outcome.records.len()));
             let mut rest = self.outcome.records.split_off(at);
             for r in self.outcome.records.drain(..) {
                 sink(Event::Record(r));
             }
-            if let Some((_, holes)) = deferred {
+            if let Some((_, holes)) = deferred.as_deref() {
                 holes.each_record(&mut |r| sink(Event::Record(r)));
             }
             for r in rest.drain(..) {
