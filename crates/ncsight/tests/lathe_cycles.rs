@@ -294,3 +294,26 @@ fn a_peck_cycle_past_the_cap_runs_pushed_and_alarms_pulled() {
     let (_, pulled) = run(text);
     assert_eq!(alarm(&pulled), Some("NCS-E40"));
 }
+
+/// A G73 of 9,000 passes over a contour with an arc (about 63,000 moves) under G96: made as it is
+/// handed on when the consumer takes each record as it comes, record for record, block end and
+/// time what the ordinary path makes; the most passes (9,999) over a contour of 13 moves
+/// (140,000 moves) run pushed and stop pulled at the cap.
+#[test]
+fn a_deferred_pattern_cycle_makes_the_records_the_ordinary_path_makes() {
+    let text = |passes: u32| format!("G50 S2500\nG96 S150 M03\nG99 G0 X62 Z2\nG73 U4 W0 R{passes}\nG73 P10 Q20 U0.4 W0.1 F0.2\nN10 G0 X20\nG1 Z-10\nG2 X40 Z-20 R10\nG1 Z-30\nN20 X62\nG0 X100 Z50\nM30\n");
+    let (deferred, d1) = common::run_pushed("gsk980tdi", None, &text(9000));
+    let (ordinary, d2) = run(&text(9000));
+    assert_eq!((alarm(&d1), alarm(&d2)), (None, None), "{d1:?} {d2:?}");
+    assert!(deferred.len() > 50_000, "{} records", deferred.len());
+    assert_eq!(deferred.len(), ordinary.len());
+    for (k, (a, b)) in deferred.iter().zip(&ordinary).enumerate() {
+        assert_eq!((a.span, a.op, a.block_end, a.t_s), (b.span, b.op, b.block_end, b.t_s), "record {k}");
+    }
+    let long = "G97 S500 M03\nG99 G0 X62 Z2\nG73 U4 W0 R9999\nG73 P10 Q20 U0.4 W0.1 F0.2\nN10 G0 X20\nG1 Z-5\nX24 Z-7\nZ-10\nG2 X40 Z-20 R10\nG1 Z-25\nX44\nZ-28\nX48 Z-30\nZ-33\nX52\nZ-36\nN20 X62\nG0 X100 Z50\nM30\n";
+    let (records, diags) = common::run_pushed("gsk980tdi", None, long);
+    assert_eq!(alarm(&diags), None, "{diags:?}");
+    assert_eq!(records.iter().filter(|r| r.span.line == 4 && matches!(r.op, Op::Arc { .. })).count(), 9999);
+    let (_, pulled) = run(long);
+    assert_eq!(alarm(&pulled), Some("NCS-E40"));
+}

@@ -661,40 +661,94 @@ fn all_stretches(
 /// (the first pass Δi, Δk further out, the last on the allowance); a rapid from each pass's end
 /// to the next pass's start (A1 -> B1 -> C1 -> A2 ...), and from the last back to A.
 pub fn pattern(start: Vec3, contour: &[Op], allowance: Vec3, relief: Vec3, passes: u32, limit: usize) -> Result<Vec<Op>, RoughError> {
-    let mut ops = Vec::new();
-    if contour.is_empty() || passes == 0 {
-        return Ok(ops);
-    }
+    let plan = lay_out_pattern(start, contour, allowance, relief, passes)?;
     // The moves are known before any is made: more than `limit` is refused at once.
-    if (passes as usize).saturating_mul(contour.len() + 1) > limit {
+    if plan.move_count() > limit {
         return Err(RoughError::TooMany);
     }
-    let mut pos = start;
-    for k in 1..=passes {
-        let f = if passes > 1 { (passes - k) as f64 / (passes - 1) as f64 } else { 0.0 };
-        let by = Vec3::new(allowance.x + relief.x * f, allowance.y + relief.y * f, allowance.z + relief.z * f);
-        let pass_start = shift(&start, &by);
-        if pass_start != pos {
-            ops.push(Op::Rapid { from: pos, to: pass_start });
-        }
-        for (i, op) in contour.iter().enumerate() {
-            let m = if i == 0 {
-                // The ns move keeps its own speed.
-                match *op {
-                    Op::Rapid { from, to } => Op::Rapid { from: shift(&from, &by), to: shift(&to, &by) },
-                    ref other => moved(other, &by)?,
-                }
-            } else {
-                moved(op, &by)?
-            };
-            pos = m.end_point().unwrap_or(pos);
-            ops.push(m);
-        }
-    }
-    if pos != start {
-        ops.push(Op::Rapid { from: pos, to: start });
-    }
+    let mut ops = Vec::with_capacity(plan.move_count());
+    plan.each_op(&mut |op| {
+        ops.push(op);
+        std::ops::ControlFlow::Continue(())
+    });
     Ok(ops)
+}
+
+/// A G73 laid out: the contour (checked: lines and arcs) and the passes, its moves made one at a
+/// time by [`PatternPlan::each_op`], so that any number of passes holds the contour and no more.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PatternPlan {
+    start: Vec3,
+    contour: Vec<Op>,
+    allowance: Vec3,
+    relief: Vec3,
+    passes: u32,
+}
+
+/// Lay out a G73: the contour's moves must be lines or arcs ([`RoughError::NotAPath`]).
+pub fn lay_out_pattern(start: Vec3, contour: &[Op], allowance: Vec3, relief: Vec3, passes: u32) -> Result<PatternPlan, RoughError> {
+    for op in contour {
+        moved(op, &allowance)?;
+    }
+    Ok(PatternPlan { start, contour: contour.to_vec(), allowance, relief, passes })
+}
+
+impl PatternPlan {
+    /// How many moves the passes make at most: per pass the rapid to its start and the contour;
+    /// then the way back.
+    pub fn move_count(&self) -> usize {
+        if self.contour.is_empty() || self.passes == 0 {
+            return 0;
+        }
+        (self.passes as usize).saturating_mul(self.contour.len() + 1).saturating_add(1)
+    }
+
+    /// Pass `k` (1 to the passes): the contour moved by the allowance and what is left of the
+    /// relief, the ns move at its own speed.
+    fn pass_op(&self, k: u32, i: usize, by: &Vec3) -> Op {
+        match self.contour[i] {
+            // The ns move keeps its own speed.
+            Op::Rapid { from, to } if i == 0 => Op::Rapid { from: shift(&from, by), to: shift(&to, by) },
+            ref op => moved(op, by).unwrap_or_else(|_| unreachable!("checked when laid out (pass {k})")),
+        }
+    }
+
+    /// Hand on the moves in order (the sink may stop them).
+    pub fn each_op(&self, sink: &mut dyn FnMut(Op) -> std::ops::ControlFlow<()>) {
+        if self.move_count() == 0 {
+            return;
+        }
+        let (start, passes, a, r) = (self.start, self.passes, self.allowance, self.relief);
+        let mut pos = start;
+        for k in 1..=passes {
+            let f = if passes > 1 { (passes - k) as f64 / (passes - 1) as f64 } else { 0.0 };
+            let by = Vec3::new(a.x + r.x * f, a.y + r.y * f, a.z + r.z * f);
+            let pass_start = shift(&start, &by);
+            if pass_start != pos && sink(Op::Rapid { from: pos, to: pass_start }).is_break() {
+                return;
+            }
+            for i in 0..self.contour.len() {
+                let m = self.pass_op(k, i, &by);
+                pos = m.end_point().unwrap_or(pos);
+                if sink(m).is_break() {
+                    return;
+                }
+            }
+        }
+        if pos != start {
+            let _ = sink(Op::Rapid { from: pos, to: start });
+        }
+    }
+}
+
+impl super::Expansion for PatternPlan {
+    fn move_count(&self) -> usize {
+        PatternPlan::move_count(self)
+    }
+
+    fn each_op(&self, sink: &mut dyn FnMut(Op) -> std::ops::ControlFlow<()>) {
+        PatternPlan::each_op(self, sink)
+    }
 }
 
 #[cfg(test)]

@@ -11,7 +11,7 @@ use super::words::Words;
 use super::{run_block, Interpreter, Outcome, Step};
 use crate::alarm::{Diagnostic, Rule};
 use super::deferred::{DEFER_MOVES, MAX_DEFERRED_MOVES};
-use crate::cycles::rough::{lay_out, pattern, RoughError, RoughKind, RoughNote, Roughing, MAX_POCKETS};
+use crate::cycles::rough::{lay_out, lay_out_pattern, RoughError, RoughKind, RoughNote, Roughing, MAX_POCKETS};
 use crate::cycles::Expansion;
 use crate::modal::Motion;
 use crate::motion::{Op, Vec3};
@@ -373,15 +373,9 @@ impl Interpreter {
         out.warnings.extend(warnings.iter().cloned());
         let hint = warnings.first().map(|w| format!("{} (line {})", w.message, w.span.line));
         if let Some((relief, passes)) = req.pattern {
-            let ops = pattern(req.start, &contour, req.allowance, relief, passes, super::MAX_MOTIONS_PER_BLOCK).map_err(|e| match e {
-                RoughError::TooMany => self.contour_alarm(
-                    Rule::MotionLimit,
-                    req.span,
-                    format!("{code}: {passes} passes over the contour make more than {} moves in one cycle", super::MAX_MOTIONS_PER_BLOCK),
-                ),
-                _ => self.contour_alarm(Rule::ContourCommand, req.span, format!("{code}: the contour holds a move that is not a line or an arc")),
-            })?;
-            return self.emit_cycle(&req, &ops, out);
+            let plan = lay_out_pattern(req.start, &contour, req.allowance, relief, passes)
+                .map_err(|_| self.contour_alarm(Rule::ContourCommand, req.span, format!("{code}: the contour holds a move that is not a line or an arc")))?;
+            return self.run_cycle(&req, plan, out, &|most| format!("{code}: {passes} passes over the contour make more than {most} moves in one cycle"));
         }
         let has = |letters: &[u8]| first.words.iter().any(|w| letters.contains(&w.letter));
         let type_two = has(b"XU") && has(b"ZW");
@@ -424,21 +418,27 @@ impl Interpreter {
             };
             out.warnings.push(self.contour_alarm(Rule::RoughingCollision, req.span, msg));
         }
-        let moves = rough.move_count();
-        if moves > DEFER_MOVES {
+        self.run_cycle(&req, rough, out, &|most| format!("{code}: more than {most} roughing moves in one cycle (Δd too small)"))
+    }
+
+    /// A roughing's moves under the cycle block's span: made now when a block can hold them, else
+    /// as they are handed on (interp/deferred.rs; the cycle ends at its start point, step 8);
+    /// past what either allows, the alarm `too_many` says of the most.
+    fn run_cycle(&mut self, req: &RoughRequest, moves: impl Expansion + 'static, out: &mut Outcome, too_many: &dyn Fn(usize) -> String) -> Result<(), Diagnostic> {
+        let count = moves.move_count();
+        if count > DEFER_MOVES {
             let mut step = Step { profile: self.profile, params: &self.params, tables: &self.tables, queue: &mut self.comp_queue, corners: &mut self.corner_queue, bypass_comp: true, contour: false, repair: None, span: req.span, n: req.n, st: &mut self.state, carry: None, out };
             if step.may_defer_cuts() {
-                if moves > MAX_DEFERRED_MOVES {
-                    return Err(step.alarm(Rule::MotionLimit, req.span, format!("{code}: more than {MAX_DEFERRED_MOVES} roughing moves in one cycle (Δd too small)")));
+                if count > MAX_DEFERRED_MOVES {
+                    return Err(step.alarm(Rule::MotionLimit, req.span, too_many(MAX_DEFERRED_MOVES)));
                 }
-                // The cycle ends at its start point (step 8).
-                return step.defer_cuts(code, std::sync::Arc::new(rough), req.start);
+                return step.defer_cuts(req.kind.code(), std::sync::Arc::new(moves), req.start);
             }
         }
-        if moves > super::MAX_MOTIONS_PER_BLOCK {
-            return Err(self.contour_alarm(Rule::MotionLimit, req.span, format!("{code}: more than {} roughing moves in one cycle (Δd too small)", super::MAX_MOTIONS_PER_BLOCK)));
+        if count > super::MAX_MOTIONS_PER_BLOCK {
+            return Err(self.contour_alarm(Rule::MotionLimit, req.span, too_many(super::MAX_MOTIONS_PER_BLOCK)));
         }
-        self.emit_cycle(&req, &rough, out)
+        self.emit_cycle(req, &moves, out)
     }
 
     /// Emit a roughing cycle's moves under the cycle block's span, each feed at the block's F
