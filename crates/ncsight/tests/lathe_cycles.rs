@@ -317,3 +317,43 @@ fn a_deferred_pattern_cycle_makes_the_records_the_ordinary_path_makes() {
     let (_, pulled) = run(long);
     assert_eq!(alarm(&pulled), Some("NCS-E40"));
 }
+
+/// A depth of cut of a picometre is said at once (the levels are worked out, not counted one by
+/// one): NCS-E40, whether the records are pushed or pulled.
+#[test]
+fn a_picometre_step_alarms_at_once() {
+    let g71 = "G97 S500 M03\nG99 G0 X102 Z2\nG71 U0.000000000001 R0.5\nG71 P10 Q20 F0.2\nN10 G0 X0\nG1 Z-10\nN20 X102\nM30\n";
+    for text in [g71] {
+        let start = std::time::Instant::now();
+        let (_, pushed) = common::run_pushed("gsk980tdi", None, text);
+        let (_, pulled) = run(text);
+        assert_eq!((alarm(&pushed), alarm(&pulled)), (Some("NCS-E40"), Some("NCS-E40")), "{text}: {pushed:?}");
+        assert!(start.elapsed().as_secs() < 10, "{text}: {:?}", start.elapsed());
+    }
+}
+
+/// A deferred G74 of one groove with a relief Δd (no step across) ends where its last move ends,
+/// the relief away from the start, as on the ordinary path; a trailing M code's record ends the
+/// block for single block, not the cycle's last move, as on the ordinary path.
+#[test]
+fn a_deferred_peck_cycle_ends_where_its_last_move_ends() {
+    let text = "G97 S800 M03\nG99 G0 X10 Z1\nG74 R0.002\nG74 Z-100.1 Q4 R1 F0.05 M00\nG1 U2 F0.1\nM30\n";
+    let (deferred, d1) = common::run_pushed("gsk980tdi", None, text);
+    let (ordinary, d2) = run(text);
+    assert_eq!((alarm(&d1), alarm(&d2)), (None, None), "{d1:?} {d2:?}");
+    assert!(deferred.len() > 50_000, "{} records", deferred.len());
+    assert_eq!(deferred.len(), ordinary.len());
+    for (k, (a, b)) in deferred.iter().zip(&ordinary).enumerate() {
+        assert_eq!((a.span, a.op, a.block_end), (b.span, b.op, b.block_end), "record {k}");
+    }
+    assert_eq!(deferred.iter().filter(|r| r.block_end && r.span.line == 4).count(), 1);
+}
+
+/// G22's area entered by a roughing stops it on the ordinary path as on the deferred one.
+#[test]
+fn a_roughing_into_a_g22_area_alarms() {
+    // The area X0-40 (diameters) Z-50-0 on the machine; the contour's levels cut into it.
+    let text = "G97 S500 M03\nG99 G0 X102 Z2\nG22 X40 Z0 I0 K-50\nG71 U2 R0.5\nG71 P10 Q20 F0.2\nN10 G0 X20\nG1 Z-10\nN20 X102\nM30\n";
+    let (_, d) = run(text);
+    assert_eq!(alarm(&d), Some(common::first_alarm("gsk980tdi", "G97 S500 M03\nG0 X102 Z2\nG22 X40 Z0 I0 K-50\nG0 X20 Z-10\nM30\n").unwrap().code));
+}

@@ -84,7 +84,9 @@ pub fn lay_out(c: &PeckCycle, limit: usize) -> Result<PeckPlan, PeckError> {
     }
     let count = |total: f64, each: f64| if total > 0.0 { ((total / each) - 1e-9).ceil().max(1.0) } else { 0.0 };
     let (pecks, grooves) = (count(depth, c.peck_mm), count(across, c.step_mm) + 1.0);
-    if pecks * grooves * 2.0 > limit as f64 {
+    // Every move counted (a groove of no depth still makes its step and its way out), before
+    // anything is made or cast: more than `limit` is refused at once.
+    if grooves * (2.0 * pecks + 3.0) + 1.0 > limit.min(super::MOST_MOVES) as f64 {
         return Err(PeckError::TooMany);
     }
     Ok(PeckPlan { c: *c, pecks: pecks as usize, grooves: grooves as usize })
@@ -213,5 +215,8 @@ mod tests {
         assert_eq!(expand(&c, 100), Err(PeckError::NoPeck));
         c.peck_mm = 0.001;
         assert_eq!(expand(&c, 1000), Err(PeckError::TooMany));
+        // No depth: the grooves alone are counted, before anything is made or cast.
+        let flat = PeckCycle { kind: PeckKind::Groove, start: Vec3::new(20.0, 0.0, 0.0), end: Vec3::new(20.0, 0.0, -100.0), back_off_mm: 0.0, peck_mm: 1.0, step_mm: 1e-9, relief_mm: 0.0 };
+        assert_eq!(lay_out(&flat, crate::cycles::MOST_MOVES), Err(PeckError::TooMany));
     }
 }

@@ -10,6 +10,11 @@ pub mod tap;
 pub mod thread;
 pub mod turning;
 
+/// The most moves a cycle may lay out: a count, not a memory bound, far above a real programme (a
+/// hundred million: about half a minute of the run; a block the machine would run for days), so
+/// that such a block is said at once and a count never overflows.
+pub const MOST_MOVES: usize = 100_000_000;
+
 /// A cycle laid out: its moves made one at a time, as many as it has, so that a block of any
 /// number of moves holds its lay-out and no more (the interpreter makes them as they are handed
 /// on when they are too many to hold, `interp/deferred.rs`).

@@ -260,9 +260,7 @@ pub fn lay_out(r: &Roughing, limit: usize) -> Result<RoughPlan, RoughError> {
     } else {
         // 2-6: the levels strictly between A' and B'.
         let total = (b1.axis(l) - a1.axis(l)).abs();
-        while dir_l != 0.0 && r.depth_mm > 0.0 && ((plan.levels + 1) as f64) * r.depth_mm < total - 1e-9 {
-            plan.levels += 1;
-        }
+        plan.levels = level_count(total, r.depth_mm, dir_l)?;
     }
     // 8: back to A, a straight rapid (the help text's step 8), whatever lies in between.
     let last = plan.path.iter().rev().find_map(Op::end_point).unwrap_or(b1);
@@ -277,6 +275,28 @@ pub fn lay_out(r: &Roughing, limit: usize) -> Result<RoughPlan, RoughError> {
     }
     plan.pts = pts;
     Ok(plan)
+}
+
+/// How many levels Δd apart lie strictly short of `total` (the largest k with k Δd < total,
+/// worked out, not counted one by one: a Δd of a picometre is said at once), at most a quarter of
+/// [`super::MOST_MOVES`] (four moves a level).
+fn level_count(total: f64, depth_mm: f64, dir_l: f64) -> Result<usize, RoughError> {
+    if dir_l == 0.0 || depth_mm <= 0.0 || total <= 1e-9 {
+        return Ok(0);
+    }
+    let guess = ((total - 1e-9) / depth_mm).ceil() - 1.0;
+    if !(guess < (super::MOST_MOVES / 4) as f64) {
+        return Err(RoughError::TooMany);
+    }
+    // The guess within one of the count; the test is the one the levels are cut by.
+    let mut k = guess.max(0.0) as usize;
+    while ((k + 1) as f64) * depth_mm < total - 1e-9 {
+        k += 1;
+    }
+    while k > 0 && (k as f64) * depth_mm >= total - 1e-9 {
+        k -= 1;
+    }
+    Ok(k)
 }
 
 /// A move to `to` (a feed or a rapid) handed on unless the tool is there already.

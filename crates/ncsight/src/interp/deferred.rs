@@ -17,10 +17,8 @@ use crate::source::Span;
 /// the ordinary path.
 pub(super) const DEFER_MOVES: usize = 50_000;
 
-/// The most moves a deferred block may make: a count when laid out, not a memory bound, far above
-/// a real programme (a hundred million: about half a minute of the run; a block the machine would
-/// run for days), so that such a block is said at once.
-pub(super) const MAX_DEFERRED_MOVES: usize = 100_000_000;
+/// The most moves a deferred block may make (see [`crate::cycles::MOST_MOVES`]).
+pub(super) const MAX_DEFERRED_MOVES: usize = crate::cycles::MOST_MOVES;
 
 /// A cycle's moves, laid out but not made: the driver makes their records one at a time as it
 /// hands them on.
@@ -32,9 +30,17 @@ pub struct DeferredCuts {
     span: Span,
     n: Option<u32>,
     to_machine: Vec3,
+    /// Its last record ends the block for single block (not when the block makes records after
+    /// it: a trailing M code's).
+    ends_block: bool,
 }
 
 impl DeferredCuts {
+    /// The block makes records after these: the last of those ends it.
+    pub(super) fn followed(&mut self) {
+        self.ends_block = false;
+    }
+
     /// Every record of the cycle, in order, the last one ending the block for single block.
     pub fn each_record(&self, sink: &mut dyn FnMut(Record)) {
         let mut held: Option<Record> = None;
@@ -51,7 +57,7 @@ impl DeferredCuts {
             ControlFlow::Continue(())
         });
         if let Some(mut last) = held {
-            last.block_end = true;
+            last.block_end |= self.ends_block;
             sink(last);
         }
     }
@@ -77,8 +83,8 @@ impl Step<'_> {
     /// Defer a cycle's moves (at most [`MAX_DEFERRED_MOVES`]; the caller says its own alarm
     /// past that): their feed found from the first cutting move (its alarm, or its warnings, are
     /// the block's, as on the ordinary path), a soft limit or G22 area checked by walking them
-    /// once with nothing kept, the tool left at `end`, where the cycle ends.
-    pub(super) fn defer_cuts(&mut self, what: &'static str, moves: Arc<dyn Expansion>, end: Vec3) -> Result<(), Diagnostic> {
+    /// once with nothing kept, the tool left where the last move ends.
+    pub(super) fn defer_cuts(&mut self, what: &'static str, moves: Arc<dyn Expansion>) -> Result<(), Diagnostic> {
         let mut first = None;
         moves.each_op(&mut |op| match op {
             Op::Feed { .. } | Op::Arc { .. } => {
@@ -98,12 +104,19 @@ impl Step<'_> {
         if self.tables.limited || self.st.stroke2.is_some() {
             self.dry_pass(moves.as_ref(), &to_machine)?;
         }
-        if moves.move_count() > 0 {
+        // Where the last move leaves the tool (walked once, nothing kept: the cycle's own end, a
+        // groove's relief included).
+        let mut end = None;
+        moves.each_op(&mut |op| {
+            end = op.end_point().or(end);
+            ControlFlow::Continue(())
+        });
+        if let Some(end) = end {
             // The tool offset's movement is made with the cycle's first move.
             self.st.pos = end;
             self.st.frame.unmoved = Vec3::default();
         }
-        let cuts = DeferredCuts { moves, feed, span: self.span, n: self.n, to_machine };
+        let cuts = DeferredCuts { moves, feed, span: self.span, n: self.n, to_machine, ends_block: true };
         self.out.deferred = Some(Box::new((self.out.records.len(), Deferred::Cuts(cuts))));
         Ok(())
     }

@@ -63,10 +63,9 @@ pub(super) fn block(step: &mut Step, words: &mut Words, kind: PeckKind) -> Resul
         };
         step.alarm(rule, step.span, msg)
     })?;
-    // Past what a block holds its moves are made as they are handed on (interp/deferred.rs);
-    // the cycle ends at its start point (step 7).
+    // Past what a block holds its moves are made as they are handed on (interp/deferred.rs).
     if plan.move_count() > DEFER_MOVES && step.may_defer_cuts() {
-        return step.defer_cuts(code, std::sync::Arc::new(plan), start);
+        return step.defer_cuts(code, std::sync::Arc::new(plan));
     }
     if plan.move_count() > MAX_MOVES {
         return Err(step.alarm(Rule::MotionLimit, step.span, format!("{code}: more than {MAX_MOVES} moves in one block (the peck or step is too small)")));

@@ -759,8 +759,16 @@ impl Interpreter {
                     wanted.swap_remove(k);
                 }
             }
-        } else if step.out.deferred.is_some() {
-            // The deferred records end the block with their last.
+        } else if let Some(deferred) = step.out.deferred.as_deref_mut() {
+            // The deferred records end the block with their last, unless the block made records
+            // after them (a trailing M code's): then the last of those, as on the ordinary path.
+            let at = deferred.0.min(step.out.records.len());
+            if let Some(last) = step.out.records[at..].iter_mut().rev().find(|r| r.span == block.span) {
+                last.block_end = true;
+                if let Deferred::Cuts(c) = &mut deferred.1 {
+                    c.followed();
+                }
+            }
         } else if let Some(last) = step.out.records.iter_mut().rev().find(|r| r.span == block.span) {
             last.block_end = true;
         }

@@ -405,7 +405,8 @@ impl Interpreter {
                 req.span,
                 format!("{code}: the contour N{}..N{} has more than {MAX_POCKETS} pockets (help text type II, 2)", req.ns, req.nf),
             ),
-            RoughError::TooMany => self.contour_alarm(Rule::MotionLimit, req.span, format!("{code}: more than {} roughing moves in one cycle (Δd too small)", super::MAX_MOTIONS_PER_BLOCK)),
+            // Type II holds its levels; type I is counted against what a deferred block may make.
+            RoughError::TooMany => self.contour_alarm(Rule::MotionLimit, req.span, format!("{code}: more than {} roughing moves in one cycle (Δd too small)", if type_two { super::MAX_MOTIONS_PER_BLOCK } else { MAX_DEFERRED_MOVES })),
             RoughError::NotAPath => self.contour_alarm(Rule::ContourCommand, req.span, format!("{code}: the contour holds a move that is not a line or an arc")),
         })?;
         // The depth axis, and the allowance word and axis along the cut.
@@ -422,7 +423,7 @@ impl Interpreter {
     }
 
     /// A roughing's moves under the cycle block's span: made now when a block can hold them, else
-    /// as they are handed on (interp/deferred.rs; the cycle ends at its start point, step 8);
+    /// as they are handed on (interp/deferred.rs);
     /// past what either allows, the alarm `too_many` says of the most.
     fn run_cycle(&mut self, req: &RoughRequest, moves: impl Expansion + 'static, out: &mut Outcome, too_many: &dyn Fn(usize) -> String) -> Result<(), Diagnostic> {
         let count = moves.move_count();
@@ -432,7 +433,7 @@ impl Interpreter {
                 if count > MAX_DEFERRED_MOVES {
                     return Err(step.alarm(Rule::MotionLimit, req.span, too_many(MAX_DEFERRED_MOVES)));
                 }
-                return step.defer_cuts(req.kind.code(), std::sync::Arc::new(moves), req.start);
+                return step.defer_cuts(req.kind.code(), std::sync::Arc::new(moves));
             }
         }
         if count > super::MAX_MOTIONS_PER_BLOCK {
@@ -452,9 +453,13 @@ impl Interpreter {
             if step.out.emitted > super::MAX_MOTIONS_PER_BLOCK {
                 return Err(step.alarm(Rule::MotionLimit, req.span, format!("{code}: more than {} moves in one cycle", super::MAX_MOTIONS_PER_BLOCK)));
             }
-            // A roughing pass beyond a soft limit stops the cycle (docs/setup.md).
-            match step.out.overtravel {
-                Some(hit) => Err(super::overtravel_alarm(step.profile, hit)),
+            // A roughing pass beyond a soft limit, or into G22's area, stops the cycle
+            // (docs/setup.md), as every other block's move does.
+            if let Some(hit) = step.out.overtravel {
+                return Err(super::overtravel_alarm(step.profile, hit));
+            }
+            match step.out.stroke_hit.take() {
+                Some((span, why)) => Err(step.alarm(Rule::StrokeCheck2, span, why)),
                 None => Ok(()),
             }
         });
