@@ -96,20 +96,28 @@ fn simulate_streams_a_programme_of_600000_moves() {
     assert!(kb > 0 && kb < PEAK_LIMIT_KB, "simulate peaked at {kb} KiB (limit {PEAK_LIMIT_KB} KiB)");
 }
 
+/// `text` run on `machine` with its canonical calls written to a file: the exit status, the peak
+/// resident memory in KiB and the calls.
+fn run_canon(machine: &str, text: &str) -> (i32, u64, String) {
+    static RUNS: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
+    let k = RUNS.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+    let dir = std::env::temp_dir().join(format!("ncsight-memory-canon-{}-{k}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let (programme, out) = (dir.join("programme.nc"), dir.join("programme.canon"));
+    std::fs::write(&programme, text).unwrap();
+    let (code, kb) = peak_kb(&["run", programme.to_str().unwrap(), "--machine", machine, "--format", "canon", "-o", out.to_str().unwrap()]);
+    let calls = std::fs::read_to_string(&out).unwrap();
+    std::fs::remove_dir_all(&dir).unwrap();
+    (code, kb, calls)
+}
+
 /// A drilling block of any number of pecks runs (issue 34): G83 with Q0.001 over 1,000 mm is a
 /// million pecks, three million records, which a FANUC runs and ncsight used to refuse
 /// (NCS-E40). Its holes are made as they are handed on, so the peak stays far below what holding
 /// them would take (some 700 MB): under 16 MiB.
 #[test]
 fn a_million_pecks_run_in_constant_memory() {
-    let dir = std::env::temp_dir().join(format!("ncsight-memory-pecks-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    let programme = dir.join("pecks.nc");
-    std::fs::write(&programme, "G21 G17 G90 G00 X0 Y0 Z10.\nS1000 M03\nF500.\nG98 G83 X10. Y10. Z-1000. R2. Q0.001\nG80\nG00 Z10.\nM30\n").unwrap();
-    let out = dir.join("pecks.canon");
-    let (code, kb) = peak_kb(&["run", programme.to_str().unwrap(), "--machine", "fanuc0m", "--format", "canon", "-o", out.to_str().unwrap()]);
-    let text = std::fs::read_to_string(&out).unwrap();
-    std::fs::remove_dir_all(&dir).unwrap();
+    let (code, kb, text) = run_canon("fanuc0m", "G21 G17 G90 G00 X0 Y0 Z10.\nS1000 M03\nF500.\nG98 G83 X10. Y10. Z-1000. R2. Q0.001\nG80\nG00 Z10.\nM30\n");
     let lines = text.lines().count();
     eprintln!("a million pecks: peak {kb} KiB, {lines} canonical calls");
     assert_eq!(code, 0);
@@ -126,21 +134,11 @@ fn a_million_pecks_run_in_constant_memory() {
 /// programme: under 16 MiB.
 #[test]
 fn a_roughing_of_a_hundred_thousand_levels_runs_in_constant_memory() {
-    let dir = std::env::temp_dir().join(format!("ncsight-memory-levels-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    let programme = dir.join("levels.nc");
     let levels = |depth: &str| format!("G97 S500 M03 T0101\nG99 G00 X202. Z2.\nG71 U{depth} R0.0005\nG71 P10 Q20 U0.4 W0.1 F0.2\nN10 G00 X0.\nG01 Z-10.\nN20 X202.\nG00 X250. Z50.\nM30\n");
-    let out = dir.join("levels.canon");
-    let run = |text: String| {
-        std::fs::write(&programme, text).unwrap();
-        peak_kb(&["run", programme.to_str().unwrap(), "--machine", "gsk980tdi", "--format", "canon", "-o", out.to_str().unwrap()])
-    };
     // A fifth of the levels (Δd 0.005: 20,200 levels, past the point where they are deferred):
     // the peak does not grow with the block's moves.
-    let (_, kb_fifth) = run(levels("0.005"));
-    let (code, kb) = run(levels("0.001"));
-    let text = std::fs::read_to_string(&out).unwrap();
-    std::fs::remove_dir_all(&dir).unwrap();
+    let (_, kb_fifth, _) = run_canon("gsk980tdi", &levels("0.005"));
+    let (code, kb, text) = run_canon("gsk980tdi", &levels("0.001"));
     eprintln!("a fifth of the levels: peak {kb_fifth} KiB");
     assert!(kb < kb_fifth + 2048, "peak {kb} KiB for five times the levels of one at {kb_fifth} KiB");
     let lines = text.lines().count();

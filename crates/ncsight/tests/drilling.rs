@@ -134,10 +134,7 @@ fn a_deferred_drilling_block_makes_the_records_the_ordinary_path_makes() {
     let (ordinary, d2) = common::run_plain("fanuc0m", &[], text);
     assert!(d1.iter().chain(&d2).all(|d| !d.is_alarm()), "{d1:?} {d2:?}");
     assert!(deferred.len() > 50_000, "{} records", deferred.len());
-    assert_eq!(deferred.len(), ordinary.len());
-    for (k, (a, b)) in deferred.iter().zip(&ordinary).enumerate() {
-        assert_eq!((a.span, a.op, a.block_end, a.t_s), (b.span, b.op, b.block_end, b.t_s), "record {k}");
-    }
+    common::same_records(&deferred, &ordinary);
     // Three holes, each to Z-200.
     assert_eq!(deferred.iter().filter(|r| matches!(r.op, ncsight::motion::Op::Feed { to, .. } if to.z == -200.0)).count(), 3);
 }

@@ -218,10 +218,7 @@ fn a_deferred_roughing_makes_the_records_the_ordinary_path_makes() {
     let (ordinary, d2) = run(text);
     assert_eq!((alarm(&d1), alarm(&d2)), (None, None), "{d1:?} {d2:?}");
     assert!(deferred.len() > 50_000, "{} records", deferred.len());
-    assert_eq!(deferred.len(), ordinary.len());
-    for (k, (a, b)) in deferred.iter().zip(&ordinary).enumerate() {
-        assert_eq!((a.span, a.op, a.block_end, a.t_s), (b.span, b.op, b.block_end, b.t_s), "record {k}");
-    }
+    common::same_records(&deferred, &ordinary);
     // The cuts' feeds differ with the diameter (G96): the deepest level's is the slowest.
     let feeds: Vec<f64> = deferred.iter().filter_map(|r| if let Op::Feed { feed_mm_min, .. } = r.op { Some(feed_mm_min) } else { None }).collect();
     assert!(feeds.iter().any(|f| (f - feeds[0]).abs() > 1.0), "{:?}", &feeds[..4]);
@@ -272,10 +269,7 @@ fn a_deferred_peck_cycle_makes_the_records_the_ordinary_path_makes() {
     let (ordinary, d2) = run(text);
     assert_eq!((alarm(&d1), alarm(&d2)), (None, None), "{d1:?} {d2:?}");
     assert!(deferred.len() > 50_000, "{} records", deferred.len());
-    assert_eq!(deferred.len(), ordinary.len());
-    for (k, (a, b)) in deferred.iter().zip(&ordinary).enumerate() {
-        assert_eq!((a.span, a.op, a.block_end, a.t_s), (b.span, b.op, b.block_end, b.t_s), "record {k}");
-    }
+    common::same_records(&deferred, &ordinary);
     // One single-block stop for each cycle block, after its last move.
     assert_eq!(deferred.iter().filter(|r| r.block_end && (r.span.line == 4 || r.span.line == 6)).count(), 2);
 }
@@ -306,10 +300,7 @@ fn a_deferred_pattern_cycle_makes_the_records_the_ordinary_path_makes() {
     let (ordinary, d2) = run(&text(9000));
     assert_eq!((alarm(&d1), alarm(&d2)), (None, None), "{d1:?} {d2:?}");
     assert!(deferred.len() > 50_000, "{} records", deferred.len());
-    assert_eq!(deferred.len(), ordinary.len());
-    for (k, (a, b)) in deferred.iter().zip(&ordinary).enumerate() {
-        assert_eq!((a.span, a.op, a.block_end, a.t_s), (b.span, b.op, b.block_end, b.t_s), "record {k}");
-    }
+    common::same_records(&deferred, &ordinary);
     let long = "G97 S500 M03\nG99 G0 X62 Z2\nG73 U4 W0 R9999\nG73 P10 Q20 U0.4 W0.1 F0.2\nN10 G0 X20\nG1 Z-5\nX24 Z-7\nZ-10\nG2 X40 Z-20 R10\nG1 Z-25\nX44\nZ-28\nX48 Z-30\nZ-33\nX52\nZ-36\nN20 X62\nG0 X100 Z50\nM30\n";
     let (records, diags) = common::run_pushed("gsk980tdi", None, long);
     assert_eq!(alarm(&diags), None, "{diags:?}");
@@ -342,10 +333,7 @@ fn a_deferred_peck_cycle_ends_where_its_last_move_ends() {
     let (ordinary, d2) = run(text);
     assert_eq!((alarm(&d1), alarm(&d2)), (None, None), "{d1:?} {d2:?}");
     assert!(deferred.len() > 50_000, "{} records", deferred.len());
-    assert_eq!(deferred.len(), ordinary.len());
-    for (k, (a, b)) in deferred.iter().zip(&ordinary).enumerate() {
-        assert_eq!((a.span, a.op, a.block_end), (b.span, b.op, b.block_end), "record {k}");
-    }
+    common::same_records(&deferred, &ordinary);
     assert_eq!(deferred.iter().filter(|r| r.block_end && r.span.line == 4).count(), 1);
 }
 

@@ -11,6 +11,8 @@
 
 pub use crate::codes::PeckKind;
 
+use super::Expansion;
+
 use crate::motion::Vec3;
 
 /// One cycle block, resolved (all lengths mm along the axes, positive).
@@ -93,12 +95,6 @@ pub fn lay_out(c: &PeckCycle, limit: usize) -> Result<PeckPlan, PeckError> {
 }
 
 impl PeckPlan {
-    /// How many moves the cycle makes at most: per groove the step over, a feed and a back-off
-    /// per peck, the relief and the way out; then the way back.
-    pub fn move_count(&self) -> usize {
-        self.grooves * (2 * self.pecks + 3) + 1
-    }
-
     /// Hand on the moves in order (the sink may stop them).
     pub fn each_move(&self, sink: &mut dyn FnMut(Move) -> std::ops::ControlFlow<()>) {
         let c = &self.c;
@@ -149,9 +145,12 @@ impl PeckPlan {
     }
 }
 
-impl super::Expansion for PeckPlan {
+impl Expansion for PeckPlan {
+    /// How many moves the cycle makes at most: per groove the step over, a feed and a back-off
+    /// per peck, the relief and the way out; then the way back (counted within the limit when
+    /// laid out).
     fn move_count(&self) -> usize {
-        PeckPlan::move_count(self)
+        self.grooves * (2 * self.pecks + 3) + 1
     }
 
     fn each_op(&self, sink: &mut dyn FnMut(crate::motion::Op) -> std::ops::ControlFlow<()>) {

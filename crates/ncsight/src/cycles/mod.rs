@@ -26,6 +26,20 @@ pub trait Expansion: std::fmt::Debug + Send + Sync {
     fn each_op(&self, sink: &mut dyn FnMut(crate::motion::Op) -> std::ops::ControlFlow<()>);
 }
 
+/// A lay-out's moves held whole, or none when it counts more than `limit` (refused before any is
+/// made).
+pub fn held(moves: &dyn Expansion, limit: usize) -> Option<Vec<crate::motion::Op>> {
+    if moves.move_count() > limit {
+        return None;
+    }
+    let mut ops = Vec::with_capacity(moves.move_count());
+    moves.each_op(&mut |op| {
+        ops.push(op);
+        std::ops::ControlFlow::Continue(())
+    });
+    Some(ops)
+}
+
 /// Moves made already (a cycle that lays itself out whole: G73's passes): handed on in order.
 impl Expansion for Vec<crate::motion::Op> {
     fn move_count(&self) -> usize {

@@ -20,6 +20,7 @@
 
 pub use crate::codes::RoughKind;
 
+use super::Expansion;
 use crate::geom;
 use crate::motion::{Op, Vec3};
 
@@ -164,14 +165,7 @@ fn polyline(contour: &[Op], chord_mm: f64) -> Vec<Vec3> {
 /// `limit` passes and moves.
 pub fn expand(r: &Roughing, limit: usize) -> Result<Rough, RoughError> {
     let plan = lay_out(r, limit)?;
-    if plan.move_count() > limit {
-        return Err(RoughError::TooMany);
-    }
-    let mut ops = Vec::with_capacity(plan.move_count());
-    plan.each_op(&mut |op| {
-        ops.push(op);
-        std::ops::ControlFlow::Continue(())
-    });
+    let ops = super::held(&plan, limit).ok_or(RoughError::TooMany)?;
     Ok(Rough { ops, notes: plan.notes })
 }
 
@@ -321,19 +315,9 @@ impl Mover<'_> {
     }
 }
 
-impl super::Expansion for RoughPlan {
-    fn move_count(&self) -> usize {
-        RoughPlan::move_count(self)
-    }
-
-    fn each_op(&self, sink: &mut dyn FnMut(Op) -> std::ops::ControlFlow<()>) {
-        RoughPlan::each_op(self, sink)
-    }
-}
-
-impl RoughPlan {
+impl Expansion for RoughPlan {
     /// How many moves the roughing makes at most (a count, nothing made).
-    pub fn move_count(&self) -> usize {
+    fn move_count(&self) -> usize {
         let levels = match &self.type_two {
             Some(ops) => ops.len(),
             None => 4 * self.levels,
@@ -345,7 +329,7 @@ impl RoughPlan {
     }
 
     /// Hand on the moves in order, one at a time (the sink may stop them).
-    pub fn each_op(&self, sink: &mut dyn FnMut(Op) -> std::ops::ControlFlow<()>) {
+    fn each_op(&self, sink: &mut dyn FnMut(Op) -> std::ops::ControlFlow<()>) {
         // A roughing without a contour makes no move.
         if self.pts.is_empty() {
             return;
@@ -384,6 +368,9 @@ impl RoughPlan {
         let _ = m.go(self.start, false);
     }
 
+}
+
+impl RoughPlan {
     /// Type I's level `k` (steps 2-5): to the level, cut to the contour, back off e at 45
     /// degrees, rapid back to A's cut-axis position.
     fn level(&self, k: usize, m: &mut Mover) -> std::ops::ControlFlow<()> {
@@ -683,15 +670,7 @@ fn all_stretches(
 pub fn pattern(start: Vec3, contour: &[Op], allowance: Vec3, relief: Vec3, passes: u32, limit: usize) -> Result<Vec<Op>, RoughError> {
     let plan = lay_out_pattern(start, contour, allowance, relief, passes)?;
     // The moves are known before any is made: more than `limit` is refused at once.
-    if plan.move_count() > limit {
-        return Err(RoughError::TooMany);
-    }
-    let mut ops = Vec::with_capacity(plan.move_count());
-    plan.each_op(&mut |op| {
-        ops.push(op);
-        std::ops::ControlFlow::Continue(())
-    });
-    Ok(ops)
+    super::held(&plan, limit).ok_or(RoughError::TooMany)
 }
 
 /// A G73 laid out: the contour (checked: lines and arcs) and the passes, its moves made one at a
@@ -714,15 +693,6 @@ pub fn lay_out_pattern(start: Vec3, contour: &[Op], allowance: Vec3, relief: Vec
 }
 
 impl PatternPlan {
-    /// How many moves the passes make at most: per pass the rapid to its start and the contour;
-    /// then the way back.
-    pub fn move_count(&self) -> usize {
-        if self.contour.is_empty() || self.passes == 0 {
-            return 0;
-        }
-        (self.passes as usize).saturating_mul(self.contour.len() + 1).saturating_add(1)
-    }
-
     /// Pass `k` (1 to the passes): the contour moved by the allowance and what is left of the
     /// relief, the ns move at its own speed.
     fn pass_op(&self, k: u32, i: usize, by: &Vec3) -> Op {
@@ -732,9 +702,20 @@ impl PatternPlan {
             ref op => moved(op, by).unwrap_or_else(|_| unreachable!("checked when laid out (pass {k})")),
         }
     }
+}
+
+impl Expansion for PatternPlan {
+    /// How many moves the passes make at most: per pass the rapid to its start and the contour;
+    /// then the way back.
+    fn move_count(&self) -> usize {
+        if self.contour.is_empty() || self.passes == 0 {
+            return 0;
+        }
+        (self.passes as usize).saturating_mul(self.contour.len() + 1).saturating_add(1)
+    }
 
     /// Hand on the moves in order (the sink may stop them).
-    pub fn each_op(&self, sink: &mut dyn FnMut(Op) -> std::ops::ControlFlow<()>) {
+    fn each_op(&self, sink: &mut dyn FnMut(Op) -> std::ops::ControlFlow<()>) {
         if self.move_count() == 0 {
             return;
         }
@@ -758,16 +739,6 @@ impl PatternPlan {
         if pos != start {
             let _ = sink(Op::Rapid { from: pos, to: start });
         }
-    }
-}
-
-impl super::Expansion for PatternPlan {
-    fn move_count(&self) -> usize {
-        PatternPlan::move_count(self)
-    }
-
-    fn each_op(&self, sink: &mut dyn FnMut(Op) -> std::ops::ControlFlow<()>) {
-        PatternPlan::each_op(self, sink)
     }
 }
 

@@ -15,7 +15,7 @@ use crate::source::Span;
 /// How many moves a cycle block may make before they are made one at a time as they are handed
 /// on rather than held: far above a real programme's (the goldens never reach it), so they keep
 /// the ordinary path.
-pub(super) const DEFER_MOVES: usize = 50_000;
+const DEFER_MOVES: usize = 50_000;
 
 /// The most moves a deferred block may make (see [`crate::cycles::MOST_MOVES`]).
 pub(super) const MAX_DEFERRED_MOVES: usize = crate::cycles::MOST_MOVES;
@@ -80,18 +80,35 @@ impl Step<'_> {
             && self.st.polar_interp.is_none()
     }
 
+    /// Whether a cycle of `count` moves is deferred (true) or made now (false); past what either
+    /// path allows, the alarm `too_many` says of the most.
+    pub(super) fn defers(&self, count: usize, too_many: &dyn Fn(usize) -> String) -> Result<bool, Diagnostic> {
+        if count > DEFER_MOVES && self.may_defer_cuts() {
+            if count > MAX_DEFERRED_MOVES {
+                return Err(self.alarm(Rule::MotionLimit, self.span, too_many(MAX_DEFERRED_MOVES)));
+            }
+            return Ok(true);
+        }
+        if count > super::MAX_MOTIONS_PER_BLOCK {
+            return Err(self.alarm(Rule::MotionLimit, self.span, too_many(super::MAX_MOTIONS_PER_BLOCK)));
+        }
+        Ok(false)
+    }
+
     /// Defer a cycle's moves (at most [`MAX_DEFERRED_MOVES`]; the caller says its own alarm
     /// past that): their feed found from the first cutting move (its alarm, or its warnings, are
     /// the block's, as on the ordinary path), a soft limit or G22 area checked by walking them
     /// once with nothing kept, the tool left where the last move ends.
     pub(super) fn defer_cuts(&mut self, what: &'static str, moves: Arc<dyn Expansion>) -> Result<(), Diagnostic> {
-        let mut first = None;
-        moves.each_op(&mut |op| match op {
-            Op::Feed { .. } | Op::Arc { .. } => {
+        // The first cutting move, and where the last move leaves the tool (the cycle's own end, a
+        // groove's relief included): one walk, nothing kept.
+        let (mut first, mut end) = (None, None);
+        moves.each_op(&mut |op| {
+            if first.is_none() && matches!(op, Op::Feed { .. } | Op::Arc { .. }) {
                 first = Some(op);
-                ControlFlow::Break(())
             }
-            _ => ControlFlow::Continue(()),
+            end = op.end_point().or(end);
+            ControlFlow::Continue(())
         });
         let feed = match first {
             Some(Op::Feed { from, to, .. } | Op::Arc { from, to, .. }) => Some(self.feed_rule(what, &|u| super::lerp(&from, &to, u))?),
@@ -104,13 +121,6 @@ impl Step<'_> {
         if self.tables.limited || self.st.stroke2.is_some() {
             self.dry_pass(moves.as_ref(), &to_machine)?;
         }
-        // Where the last move leaves the tool (walked once, nothing kept: the cycle's own end, a
-        // groove's relief included).
-        let mut end = None;
-        moves.each_op(&mut |op| {
-            end = op.end_point().or(end);
-            ControlFlow::Continue(())
-        });
         if let Some(end) = end {
             // The tool offset's movement is made with the cycle's first move.
             self.st.pos = end;
@@ -132,13 +142,7 @@ impl Step<'_> {
             }
             ControlFlow::Continue(())
         });
-        if let Some(hit) = self.out.overtravel {
-            return Err(super::overtravel_alarm(self.profile, hit));
-        }
-        if let Some((span, why)) = self.out.stroke_hit.take() {
-            return Err(self.alarm(Rule::StrokeCheck2, span, why));
-        }
-        Ok(())
+        self.travel_alarm()
     }
 
     /// A cycle's moves made now, each through the stages with its feed ([`Step::emit_cut`]).

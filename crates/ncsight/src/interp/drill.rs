@@ -181,14 +181,11 @@ impl DeferredHoles {
 }
 
 /// Whether a drilling block's records may be made as they are handed on ([`DeferredHoles`]):
-/// nothing between the cycle and the record reshapes them, and it is no tapping cycle.
+/// as for any cycle's (`Step::may_defer_cuts`), with compensation off altogether and no soft
+/// limit or G22 area (the holes are not walked dry), and no tapping cycle.
 fn may_defer(step: &Step, kind: DrillKind) -> bool {
-    step.out.may_defer
-        && step.carry.is_none()
-        && !super::corner::active(step)
+    step.may_defer_cuts()
         && step.st.comp.side == 0
-        && step.st.comp.actual.is_none()
-        && step.st.polar_interp.is_none()
         && !step.tables.limited
         && step.st.stroke2.is_none()
         && !step.st.tapping_mode

@@ -5,12 +5,9 @@ use super::compound::increments;
 use super::words::Words;
 use super::{axis_target, Step};
 use crate::alarm::{Diagnostic, Rule};
-use super::deferred::{DEFER_MOVES, MAX_DEFERRED_MOVES};
+use super::deferred::MAX_DEFERRED_MOVES;
+use crate::cycles::Expansion;
 use crate::cycles::groove::{lay_out, PeckCycle, PeckError, PeckKind};
-
-/// At most this many moves held for one block where they cannot be deferred (a peck far too
-/// small for the depth).
-const MAX_MOVES: usize = super::MAX_MOTIONS_PER_BLOCK;
 
 pub(super) fn block(step: &mut Step, words: &mut Words, kind: PeckKind) -> Result<(), Diagnostic> {
     let code = kind.code();
@@ -64,11 +61,8 @@ pub(super) fn block(step: &mut Step, words: &mut Words, kind: PeckKind) -> Resul
         step.alarm(rule, step.span, msg)
     })?;
     // Past what a block holds its moves are made as they are handed on (interp/deferred.rs).
-    if plan.move_count() > DEFER_MOVES && step.may_defer_cuts() {
+    if step.defers(plan.move_count(), &|most| format!("{code}: more than {most} moves in one block (the peck or step is too small)"))? {
         return step.defer_cuts(code, std::sync::Arc::new(plan));
-    }
-    if plan.move_count() > MAX_MOVES {
-        return Err(step.alarm(Rule::MotionLimit, step.span, format!("{code}: more than {MAX_MOVES} moves in one block (the peck or step is too small)")));
     }
     step.emit_each(code, &plan)
 }

@@ -303,6 +303,18 @@ impl Step<'_> {
         }
     }
 
+    /// The alarm of a move the machine refused in this block, if one was noted: beyond a soft
+    /// limit first, then into G22's area.
+    fn travel_alarm(&mut self) -> Result<(), Diagnostic> {
+        if let Some(hit) = self.out.overtravel {
+            return Err(overtravel_alarm(self.profile, hit));
+        }
+        match self.out.stroke_hit.take() {
+            Some((span, why)) => Err(self.alarm(Rule::StrokeCheck2, span, why)),
+            None => Ok(()),
+        }
+    }
+
     /// The first move of the block into G22's forbidden area or beyond a soft limit, noted (the
     /// block then alarms).
     fn travel_checks(&mut self, span: Span, op: &Op, to_machine: &Vec3) {
@@ -730,13 +742,10 @@ impl Interpreter {
             result = comp::end_of_block(&mut step);
         }
         if result.is_ok() {
-            if step.out.comp_error.is_some() {
-                result = Err(step.out.comp_error.take().expect("tested above"));
-            } else if let Some(hit) = step.out.overtravel {
-                result = Err(overtravel_alarm(step.profile, hit));
-            } else if let Some((span, why)) = step.out.stroke_hit.take() {
-                result = Err(step.alarm(Rule::StrokeCheck2, span, why));
-            }
+            result = match step.out.comp_error.take() {
+                Some(d) => Err(d),
+                None => step.travel_alarm(),
+            };
         }
         result?;
         // Single block stops after the block's last record (a held-back thread run end carries

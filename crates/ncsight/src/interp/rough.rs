@@ -10,7 +10,7 @@ use super::call::Flow;
 use super::words::Words;
 use super::{run_block, Interpreter, Outcome, Step};
 use crate::alarm::{Diagnostic, Rule};
-use super::deferred::{DEFER_MOVES, MAX_DEFERRED_MOVES};
+use super::deferred::MAX_DEFERRED_MOVES;
 use crate::cycles::rough::{lay_out, lay_out_pattern, RoughError, RoughKind, RoughNote, Roughing, MAX_POCKETS};
 use crate::cycles::Expansion;
 use crate::modal::Motion;
@@ -426,18 +426,9 @@ impl Interpreter {
     /// as they are handed on (interp/deferred.rs);
     /// past what either allows, the alarm `too_many` says of the most.
     fn run_cycle(&mut self, req: &RoughRequest, moves: impl Expansion + 'static, out: &mut Outcome, too_many: &dyn Fn(usize) -> String) -> Result<(), Diagnostic> {
-        let count = moves.move_count();
-        if count > DEFER_MOVES {
-            let mut step = Step { profile: self.profile, params: &self.params, tables: &self.tables, queue: &mut self.comp_queue, corners: &mut self.corner_queue, bypass_comp: true, contour: false, repair: None, span: req.span, n: req.n, st: &mut self.state, carry: None, out };
-            if step.may_defer_cuts() {
-                if count > MAX_DEFERRED_MOVES {
-                    return Err(step.alarm(Rule::MotionLimit, req.span, too_many(MAX_DEFERRED_MOVES)));
-                }
-                return step.defer_cuts(req.kind.code(), std::sync::Arc::new(moves));
-            }
-        }
-        if count > super::MAX_MOTIONS_PER_BLOCK {
-            return Err(self.contour_alarm(Rule::MotionLimit, req.span, too_many(super::MAX_MOTIONS_PER_BLOCK)));
+        let mut step = Step { profile: self.profile, params: &self.params, tables: &self.tables, queue: &mut self.comp_queue, corners: &mut self.corner_queue, bypass_comp: true, contour: false, repair: None, span: req.span, n: req.n, st: &mut self.state, carry: None, out };
+        if step.defers(moves.move_count(), too_many)? {
+            return step.defer_cuts(req.kind.code(), std::sync::Arc::new(moves));
         }
         self.emit_cycle(req, &moves, out)
     }
@@ -455,13 +446,7 @@ impl Interpreter {
             }
             // A roughing pass beyond a soft limit, or into G22's area, stops the cycle
             // (docs/setup.md), as every other block's move does.
-            if let Some(hit) = step.out.overtravel {
-                return Err(super::overtravel_alarm(step.profile, hit));
-            }
-            match step.out.stroke_hit.take() {
-                Some((span, why)) => Err(step.alarm(Rule::StrokeCheck2, span, why)),
-                None => Ok(()),
-            }
+            step.travel_alarm()
         });
         if let Err(d) = result {
             out.clear();

@@ -65,3 +65,11 @@ pub fn run_pushed(machine: &str, setup: Option<&str>, text: &str) -> (Vec<Record
     assert!(program.end_of_text(&mut |e| events.push(e)).is_none());
     split(events.into_iter())
 }
+
+/// The records of two paths are the same, one by one: block, move, single-block end, time.
+pub fn same_records(got: &[Record], want: &[Record]) {
+    assert_eq!(got.len(), want.len());
+    for (k, (a, b)) in got.iter().zip(want).enumerate() {
+        assert_eq!((a.span, a.op, a.block_end, a.t_s), (b.span, b.op, b.block_end, b.t_s), "record {k}");
+    }
+}
