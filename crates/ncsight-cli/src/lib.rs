@@ -865,7 +865,7 @@ fn simulate(
     }
     let (params, switches) = setup(m, err)?;
     let decoding = m.decoding()?;
-    let job = job_setup(m, params.profile(), stock)?;
+    let mut job = job_setup(m, params.profile(), stock)?;
     let reads = m.read_files(file);
     let image_out = image.map(|path| output::LazyFile::new(path, &reads, 1 << 16)).transpose().map_err(usage)?;
     let stl_out = outputs.stl.map(|path| output::LazyFile::new(path, &reads, 1 << 16)).transpose().map_err(usage)?;
@@ -895,11 +895,21 @@ fn simulate(
     let shown = if file == "-" { "<stdin>" } else { file };
     let mut lathe_survey = ncsight::stock::survey::LatheSurvey::new(&job);
     let mut mill_survey = ncsight::stock::survey::MillSurvey::default();
+    // A school simulator's `[BILLET` line gives the stock where neither --stock nor the setup does.
+    let mut billet_free = if lathe { job.stock.is_none() } else { job.block.is_none() };
     let alarmed = {
         let mut program = Program::new(params.clone(), switches, Mode::Run);
         let mut library = m.prepare(&mut program)?;
         drive(file, source.input()?, &mut library, &mut program, &mut |e, text, name| {
             match e {
+                Event::Diagnostic(d) if d.rule == ncsight::Rule::SimulatorStock && billet_free => {
+                    let given = ncsight::read::simulator::billet(text).and_then(|b| b.stock_text(lathe));
+                    if let Some(stock) = given.filter(|s| job.set_stock_text(s, lathe).is_ok()) {
+                        billet_free = false;
+                        writeln!(err, "{}: stock {stock} mm from its [BILLET line", name.unwrap_or(shown))?;
+                        lathe_survey.stock_given(&job);
+                    }
+                }
                 Event::Record(r) if lathe => lathe_survey.add(r),
                 Event::Record(r) => mill_survey.add(r),
                 Event::Diagnostic(d) if d.is_alarm() => err.write_all(diag::render(name.unwrap_or(shown), text, d, diag::Style::Full, &decoding).as_bytes())?,

@@ -165,3 +165,31 @@ fn every_example_simulates_without_a_finding() {
     }
     assert!(seen >= 8, "{seen} examples");
 }
+
+/// A school simulator's stock line (`[BILLET X42 Z60`, Denford's form) is skipped with warning
+/// NCS-W37 and gives the stock when neither --stock nor a setup does; --stock wins over it.
+#[test]
+fn simulate_takes_the_stock_from_a_billet_line() {
+    let dir = std::env::temp_dir().join(format!("ncsight-billet-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let prog = dir.join("billet.nc");
+    std::fs::write(&prog, "O0001\n[BILLET X42 Z60\nG21 G99 T0101\nG00 X45. Z2. S800 M03\nG01 Z0. F0.2\nX0.\nG00 X40. Z1.\nG01 Z-20.\nX45.\nG00 X100. Z100.\nM30\n").unwrap();
+    let p = prog.to_str().unwrap();
+    let (code, out, err) = common::ncsight(&["simulate", p, "--machine", "fanuc0t", "--format", "json"]);
+    assert_eq!(code, 0, "{err}");
+    assert!(err.contains("stock 42x60 mm from its [BILLET line"), "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(v["stock_diameter_mm"], 42.0, "{out}");
+    // The turned step: diameter 40 over the first 20 mm, the bar's 42 beyond.
+    let rows = v["profile"].as_array().unwrap();
+    assert!(rows.iter().any(|r| r["outer_diameter_mm"] == 40.0), "{out}");
+    assert!(rows.iter().any(|r| r["outer_diameter_mm"] == 42.0 && r["z_to_mm"] == -60.0), "{out}");
+    let (code, out, _) = common::ncsight(&["simulate", p, "--machine", "fanuc0t", "--format", "json", "--stock", "50x70"]);
+    assert_eq!(code, 0);
+    assert_eq!(serde_json::from_str::<serde_json::Value>(&out).unwrap()["stock_diameter_mm"], 50.0);
+    // check: the warning, and the programme runs to its end.
+    let (code, out, _) = common::ncsight(&["check", p, "--machine", "fanuc0t"]);
+    assert_eq!(code, 0, "{out}");
+    assert!(out.contains("NCS-W37"), "{out}");
+    let _ = std::fs::remove_dir_all(dir);
+}

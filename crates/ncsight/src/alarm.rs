@@ -186,6 +186,7 @@ rules! {
     NoSkipSignal => Warning, "NCS-W34", None, "NO SKIP SIGNAL: THE MOVE RUNS TO ITS END";
     NoMeasuringSignal => Warning, "NCS-W35", None, "NO MEASURING SIGNAL: THE OFFSET STAYS";
     CornerArcOvercut => Warning, "NCS-W36", None, "G39 AT AN INNER CORNER: OVERCUT";
+    SimulatorStock => Warning, "NCS-W37", None, "SIMULATOR STOCK LINE SKIPPED";
 }
 
 impl Rule {

@@ -7,6 +7,7 @@
 
 pub mod expr;
 pub mod macro_block;
+pub mod simulator;
 
 pub use macro_block::{MacroBlock, MacroWord, Stmt, Then};
 
@@ -299,6 +300,26 @@ impl Reader {
         }
     }
 
+    /// `[BILLET X42.86 Z82` (a school simulator's stock): a warning, the line skipped; the
+    /// stock is read from the line by whoever simulates the cut ([`simulator::billet`]).
+    fn billet_line(&self, line_no: u32, s: &[u8], at: usize) -> Diagnostic {
+        let len = s.len() - at;
+        let d = match simulator::billet(&s[at..]) {
+            Some(b) => self.diag(
+                Rule::SimulatorStock,
+                line_no,
+                at,
+                len,
+                match b.y_mm {
+                    Some(y) => format!("[BILLET: a CNC simulator's stock line, not for a controller (which would stop at '['): skipped; simulate takes the stock from it, a block {} x {y} x {} mm", b.x_mm, b.z_mm),
+                    None => format!("[BILLET: a CNC simulator's stock line, not for a controller (which would stop at '['): skipped; simulate takes the stock from it, a bar of diameter {} mm, {} mm long", b.x_mm, b.z_mm),
+                },
+            ),
+            None => self.diag(Rule::SimulatorStock, line_no, at, len, "[BILLET: a CNC simulator's stock line, not for a controller (which would stop at '['): skipped; its stock could not be read (X_ Z_, or X_ Y_ Z_ for a block, expected)"),
+        };
+        d.with_hint("delete the line (or put it in ( )) before the programme goes to a machine")
+    }
+
     fn eof_mark(&self, line_no: u32, col: usize) -> Diagnostic {
         self.diag(Rule::EndOfFileMark, line_no, col, 1, "byte 0x1A (DOS end-of-file mark): the text ends here")
     }
@@ -316,6 +337,10 @@ impl Reader {
         }
         if i < s.len() && s[i] == b'%' {
             self.tape_mark(line_no, s, i, out);
+            return;
+        }
+        if i < s.len() && s[i] == b'[' && simulator::billet_mark(&s[i..]).is_some() {
+            out.warnings.push(self.billet_line(line_no, s, i));
             return;
         }
         // A line with a variable: its blocks are macro blocks, evaluated when they run.
@@ -869,8 +894,15 @@ mod tests {
     }
 
     #[test]
-    fn a_simulator_stock_line_gets_a_hint() {
-        let d = read("[BILLET X42.86 Z82").blocks.remove(0).unwrap_err();
+    fn a_simulator_stock_line_is_a_warning_and_skipped() {
+        let l = read("[BILLET X42.86 Z82");
+        assert!(l.blocks.is_empty());
+        assert_eq!(l.warnings[0].rule, Rule::SimulatorStock);
+        assert!(l.warnings[0].message.contains("diameter 42.86 mm, 82 mm long"), "{}", l.warnings[0].message);
+        let l = read("[BILLET X42.86");
+        assert!(l.blocks.is_empty() && l.warnings[0].message.contains("could not be read"));
+        // Another simulator's line is still an alarm, with the hint.
+        let d = read("[EDGEMOVE X42.86").blocks.remove(0).unwrap_err();
         assert_eq!(d.rule, Rule::BadCharacter);
         assert!(d.hint.as_deref().unwrap().contains("simulator"));
         // A bracket after a word is an expression, not such a line.

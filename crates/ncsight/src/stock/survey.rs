@@ -135,6 +135,12 @@ impl LatheSurvey {
         LatheSurvey { bar_length_mm: setup.stock.map_or(0.0, |b| b.length_mm), ..LatheSurvey::default() }
     }
 
+    /// The stock became known during the survey (a simulator's `[BILLET` line): its length
+    /// from there on, the records surveyed kept.
+    pub fn stock_given(&mut self, setup: &Setup) {
+        self.bar_length_mm = setup.stock.map_or(0.0, |b| b.length_mm);
+    }
+
     fn use_of(&mut self, n: u32) -> usize {
         match self.uses.iter().position(|(m, _)| *m == n) {
             Some(i) => i,
