@@ -675,10 +675,7 @@ fn mill_offset_setting(step: &mut Step, words: &mut Words, n: u32, pw: &crate::r
 pub(super) fn offset_move(step: &mut Step, words: &mut Words, factor: i8, span: Span) -> Result<(), Diagnostic> {
     use crate::modal::Motion;
     let d = match words.take(b'D') {
-        Some(w) if w.decimal || w.value < 0.0 || w.value > crate::setup::MAX_OFFSET_NUMBER as f64 => {
-            return Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("{}: D is an offset number, 0 to {}", w.text(), crate::setup::MAX_OFFSET_NUMBER)));
-        }
-        Some(w) => w.value as u32,
+        Some(w) => super::offset_number(step, w)?,
         None => step.st.comp.d,
     };
     if matches!(step.st.motion, Motion::ArcCw | Motion::ArcCcw) {

@@ -1477,28 +1477,40 @@ fn offset_words(step: &mut Step, last_of: &[(Group, &Word, &'static GDef)], code
     let length_code = last_of.iter().find_map(|(_, w, g)| if let GFn::LengthComp(s) = g.function { Some((w.span, s)) } else { None });
     let h_word = if length_code.is_some() || step.st.frame.length_sign != 0 { words.take(b'H') } else { None };
     if length_code.is_some() || h_word.is_some() {
-        let h = match h_word {
-            Some(w) if w.decimal || w.value < 0.0 || w.value > crate::setup::MAX_OFFSET_NUMBER as f64 => {
-                return Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("{}: H is an offset number, 0 to {}", w.text(), crate::setup::MAX_OFFSET_NUMBER)));
-            }
-            Some(w) => Some(w.value as u32),
-            None => None,
-        };
+        let h = h_word.map(|w| offset_number(step, w)).transpose()?;
         let (span, sign) = length_code.unwrap_or((h_word.map(|w| w.span).unwrap_or(step.span), step.st.frame.length_sign));
         frame::length_offset(step, sign, h, span, has_axis);
     }
     if let Some((span, side)) = codes.comp {
-        let d = match words.take(b'D') {
-            Some(w) if w.decimal || w.value < 0.0 || w.value > crate::setup::MAX_OFFSET_NUMBER as f64 => {
-                return Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("{}: D is an offset number, 0 to {}", w.text(), crate::setup::MAX_OFFSET_NUMBER)));
-            }
-            Some(w) => Some(w.value as u32),
-            None => None,
-        };
+        let d = words.take(b'D').map(|w| offset_number(step, w)).transpose()?;
         let arc_move = has_axis && matches!(motion_now, Motion::ArcCw | Motion::ArcCcw);
         comp::command(step, side, d, span, arc_move)?;
+    } else if !step.profile.is_lathe() && !last_of.iter().any(|(_, _, g)| matches!(g.function, GFn::OffsetMove(_))) {
+        // D without G40-G42 (`G43 H1 D1 Z50.`): the cutter compensation offset number, modal
+        // data (FANUC #4107 reads it): kept for the next G41/G42; in compensation the new
+        // radius acts from this block on, the path so far ending perpendicular (inferred: the
+        // FANUC manuals change the vector at the block's end).
+        if let Some(w) = words.take(b'D') {
+            let d = offset_number(step, w)?;
+            let side = step.st.comp.side;
+            if side == 0 {
+                step.st.comp.d = d;
+            } else {
+                let arc_move = has_axis && matches!(motion_now, Motion::ArcCw | Motion::ArcCcw);
+                comp::command(step, side, Some(d), w.span, arc_move)?;
+            }
+        }
     }
     Ok(())
+}
+
+/// An H or D word's offset number: a whole number, 0 to the highest a setup may give.
+fn offset_number(step: &Step, w: &Word) -> Result<u32, Diagnostic> {
+    if w.decimal || w.value < 0.0 || w.value > crate::setup::MAX_OFFSET_NUMBER as f64 {
+        let letter = w.text().chars().next().unwrap_or('D');
+        return Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("{}: {letter} is an offset number, 0 to {}", w.text(), crate::setup::MAX_OFFSET_NUMBER)));
+    }
+    Ok(w.value as u32)
 }
 
 /// Step 7 of [`run_block`]: F (not in a thread block or a rigid tap's, whose F is the lead).
