@@ -82,6 +82,10 @@ struct MachineArgs {
     /// machine (#1000-#1015, #1032) (repeatable): 500=1.5, 1002=1.
     #[arg(long = "var", value_name = "N=V", allow_hyphen_values = true)]
     vars: Vec<String>,
+    /// Run the programme as a macro called with these arguments, as a G65 block writes them
+    /// after P: "A1. B2. I3." (#1, #2, #4 of the programme's own level).
+    #[arg(long = "call-args", value_name = "ARGS", allow_hyphen_values = true)]
+    call_args: Option<String>,
     /// The machine setup (TOML): axes, travel limits, reference points, work offsets (G54-G59),
     /// the tool and offset tables, the stock (docs/setup.md).
     #[arg(long, value_name = "FILE.toml")]
@@ -104,6 +108,7 @@ impl MachineArgs {
             skip_missing_subprograms: self.skip_missing_subprograms,
             max_blocks: self.max_blocks,
             vars: self.vars.clone(),
+            call_args: self.call_args.clone(),
             setup: None,
         };
         if let Some(path) = &self.setup {
@@ -771,6 +776,7 @@ fn report(
     let mut extra = Vec::new();
     extra.extend(m.main.iter().map(|v| format!("main={v}")));
     extra.extend(m.vars.iter().map(|v| format!("var={v}")));
+    extra.extend(m.call_args.iter().map(|v| format!("call_args={v}")));
     if m.skip_missing_subprograms {
         extra.push("skip_missing_subprograms=1".into());
     }

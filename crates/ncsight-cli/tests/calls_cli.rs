@@ -140,3 +140,32 @@ fn the_tape_leader_from_a_file_and_a_pipe() {
     assert!(err.contains("<stdin>:1:1: warning[NCS-W04]: line 1, before the first '%', is the tape leader"), "{err}");
     assert!(err.contains("0 alarm(s), 1 warning(s)"), "{err}");
 }
+
+/// A macro body run on its own (issue 35): `--call-args` gives its arguments as a G65 block
+/// writes them after P (A #1, B #2, I J K #4-#6, F #9; without a point in least input
+/// increments as G65 reads them), `--var` its locals #1-#33; its M99 is then the return, with
+/// no "M99 in the main programme" warning. Without them the division by its vacant argument is
+/// alarm 112 with a hint that names both.
+#[test]
+fn a_macro_body_runs_with_its_arguments() {
+    let d = scratch("call_args");
+    let body = d.join("o9010.nc");
+    std::fs::write(&body, "O9010\n#3 = #1 + #2\n#10 = 60 / #9\nG01 X#3 Y#4 F#9\nM99\n").unwrap();
+    let p = body.to_str().unwrap();
+    let (code, out, err) = common::ncsight(&["run", p, "-m", "fanuc0m", "--format", "jsonl", "--call-args", "A1. B2. I5 F100."]);
+    assert_eq!(code, 0, "{err}");
+    // #3 = 3 mm; I5 without a point is 0.005 mm (FANUC 0-M least input increment).
+    assert!(out.contains(r#""kind":"feed","x":3,"y":0.005,"z":0,"f":100"#), "{out}");
+    assert!(!out.contains("NCS-W08"), "{out}");
+    let (code, out, err) = common::ncsight(&["run", p, "-m", "fanuc0m", "--format", "jsonl", "--var", "1=1", "--var", "2=1", "--var", "9=50"]);
+    assert_eq!(code, 0, "{err}");
+    assert!(out.contains(r#""x":2,"y":0,"z":0,"f":50"#), "{out}");
+    let (code, out, _) = common::ncsight(&["check", p, "-m", "fanuc0m"]);
+    assert_eq!(code, 1, "{out}");
+    assert!(out.contains("PS0112") && out.contains("--call-args"), "{out}");
+    for bad in ["A1. P9010", "G01 A1.", "N10 A1."] {
+        let (code, _, err) = common::ncsight(&["check", p, "-m", "fanuc0m", "--call-args", bad]);
+        assert_eq!(code, 2, "{bad}: {err}");
+        assert!(err.contains("--call-args"), "{err}");
+    }
+}

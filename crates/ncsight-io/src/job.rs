@@ -32,6 +32,8 @@ pub struct Job {
     /// Variables set at the machine before the run: `N=V` (#100-#199, #500-#999, the input
     /// signals #1000-#1015 and #1032).
     pub vars: Vec<String>,
+    /// The programme run as a macro called with these arguments (`A1. B2.`, as after G65 P_).
+    pub call_args: Option<String>,
     /// The machine setup (`--setup FILE.toml`): offsets, reference points, limits, tools.
     pub setup: Option<ncsight::setup::Setup>,
 }
@@ -181,9 +183,10 @@ impl Job {
                 // --max-blocks give (checked where the run starts).
                 "main" => self.main = Some(value.to_string()),
                 "var" => self.vars.push(value.to_string()),
+                "call_args" => self.call_args = Some(value.to_string()),
                 "skip_missing_subprograms" => self.skip_missing_subprograms = flag(value)?,
                 "max_blocks" => self.max_blocks = Some(value.parse().map_err(|_| usage(format!("{key}={value}: expected a whole number")))?),
-                _ => return Err(usage(format!("{key}: not an operator setting (single_block, feed_hold_at, reset_at, feed_override, rapid_override, dry_run, block_delete, optional_stop, main, var, skip_missing_subprograms, max_blocks)"))),
+                _ => return Err(usage(format!("{key}: not an operator setting (single_block, feed_hold_at, reset_at, feed_override, rapid_override, dry_run, block_delete, optional_stop, main, var, call_args, skip_missing_subprograms, max_blocks)"))),
             }
         }
         check_operator(&self.operator, |key| key.to_string()).map_err(usage)
@@ -202,6 +205,9 @@ impl Job {
                 return Err(usage(format!("--var {v}: expected N=V, e.g. 500=1.5")));
             };
             program.set_variable(n, x).map_err(|e| usage(format!("--var {v}: {e}")))?;
+        }
+        if let Some(args) = &self.call_args {
+            program.set_call_arguments(args).map_err(|e| usage(format!("--call-args {args}: {e}")))?;
         }
         Ok(library)
     }

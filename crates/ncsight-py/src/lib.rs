@@ -55,6 +55,7 @@ impl Options {
             skip_missing_subprograms,
             max_blocks,
             vars: variables,
+            call_args: None,
             setup: None,
         };
         // The setup as a file, or as the TOML the Python half wrote from a mapping.

@@ -82,7 +82,7 @@ pub(super) struct Reading<'a> {
 }
 
 fn no_such(number: i64, why: &str) -> ExprError {
-    ExprError { at: 0, message: format!("#{number}: {why}"), kind: ErrorKind::Variable }
+    ExprError { at: 0, message: format!("#{number}: {why}"), kind: ErrorKind::Variable, divisor: None }
 }
 
 /// A G code's number as the profile's table names the function (`G01` -> 1, `G32.1` -> 32.1).
@@ -332,7 +332,11 @@ pub(super) fn expr_alarm(style: AlarmStyle, span: Span, e: &ExprError) -> Diagno
     match e.kind {
         // Most often a setting the programme expects the machine to hold (a vacant variable
         // reads as 0 in arithmetic).
-        ErrorKind::DivideByZero if e.message.starts_with("division") => d.with_hint("a vacant variable counts as 0: if the divisor is a value kept at the machine (#100-#199, #500-#999), give it with --var N=V"),
+        ErrorKind::DivideByZero => d.with_hint(match e.divisor {
+            Some(n @ 1..=33) => format!("#{n} is a local variable, vacant unless the macro is called with its argument: run the programme as if called, with --call-args \"A1. B2.\" (the words after G65 P_) or --var {n}=V"),
+            Some(n @ (100..=199 | 500..=999)) => format!("a vacant variable counts as 0: #{n} may be a value kept at the machine; give it with --var {n}=V"),
+            _ => "a vacant variable counts as 0: if the divisor is a value kept at the machine (#100-#199, #500-#999), give it with --var N=V; a macro's argument (#1-#33) with --call-args".to_string(),
+        }),
         _ => d,
     }
 }

@@ -79,6 +79,9 @@ pub struct Program {
 /// Everything but the operator machine: reading and interpreting, with buffers reused from line
 /// to line so that the steady state allocates nothing.
 struct Core {
+    /// The programme runs as a macro called with arguments (`--call-args`): its M99 is the
+    /// return to that call, the end of the run.
+    run_as_called: bool,
     reader: LineReader,
     interp: Interpreter,
     mode: Mode,
@@ -454,6 +457,7 @@ impl Program {
             machine: Machine::new(&params, operator),
             block: Block::default(),
             core: Core {
+                run_as_called: false,
                 reader: LineReader { reader: Reader::new(style) },
                 interp: Interpreter::new(params, switches),
                 mode,
@@ -545,16 +549,41 @@ impl Program {
     }
 
     /// Set a common variable before the run, as the operator set it at the machine (#500-#999
-    /// keep their values through power off; #100-#199 too until a reset), or an input signal
-    /// of the machine (#1000-#1015, #1032).
+    /// keep their values through power off; #100-#199 too until a reset), an input signal of
+    /// the machine (#1000-#1015, #1032), or a local variable #1-#33 of the programme's own level:
+    /// a macro body run on its own as if it had been called with that argument.
     pub fn set_variable(&mut self, number: i64, value: f64) -> Result<(), String> {
         if value.is_finite() && macros::is_input(number) {
             return self.core.vars.set_input(number, value);
         }
-        if !value.is_finite() || !(100..=999).contains(&number) {
-            return Err(format!("#{number}={value}: only common variables #100-#199 and #500-#999 and the input signals #1000-#1015 and #1032 can be given, with a finite value"));
+        if !value.is_finite() || !((1..=33).contains(&number) || (100..=999).contains(&number)) {
+            return Err(format!("#{number}={value}: only locals #1-#33 (the programme run as a macro called with them), common variables #100-#199 and #500-#999 and the input signals #1000-#1015 and #1032 can be given, with a finite value"));
         }
         self.core.vars.write(number, Some(value), 0.0).map_err(|(_, msg)| msg)
+    }
+
+    /// Run the programme as a macro called with these arguments (`A1. B2. I3.`, as a G65 block
+    /// writes them after P): each sets its local variable of the programme's level, by argument
+    /// specification I (and II's repeated I J K), a value without a point read as G65 reads it.
+    pub fn set_call_arguments(&mut self, text: &str) -> Result<(), String> {
+        let style = self.core.interp.profile().alarm_style;
+        let line = crate::read::Reader::new(style).read_line(1, text.as_bytes());
+        let mut words = Vec::new();
+        for b in line.blocks {
+            let b = b.map_err(|d| d.message)?;
+            if b.sequence.is_some() || b.program.is_some() || b.macro_block.is_some() {
+                return Err("only argument words (letters and numbers) can be given".into());
+            }
+            words.extend(b.words);
+        }
+        let mut seen = [0usize; 3];
+        for w in &words {
+            let slot = self.core.argument_slot(w, &mut seen, "--call-args").map_err(|d| d.message)?;
+            let value = self.core.argument_value(w);
+            self.core.vars.write(slot as i64, Some(value), 0.0).map_err(|(_, msg)| msg)?;
+        }
+        self.core.run_as_called = true;
+        Ok(())
     }
 
     /// Where the run must read next, when it is not the next line: after a line, or at the end
@@ -1647,6 +1676,46 @@ impl Core {
         self.calls.loops.retain(|l| l.depth <= depth);
     }
 
+    /// The local variable (1-33) an argument word of `code` sets: argument specification I,
+    /// and II's repeated I J K counted in `seen` (the later wins: FANUC Series 16i).
+    fn argument_slot(&self, w: &Word, seen: &mut [usize; 3], code: &str) -> Result<usize, Diagnostic> {
+        let style = self.interp.profile().alarm_style;
+        let slot = match w.letter {
+            // FANUC 0 alarm 129: G is not an argument.
+            b'G' => return Err(Diagnostic::new(Rule::ArgumentAddress, style, w.span, format!("{}: G cannot be a {code} argument", w.text()))),
+            b'I' | b'J' | b'K' => {
+                let k = (w.letter - b'I') as usize;
+                seen[k] += 1;
+                4 + k + 3 * (seen[k] - 1)
+            }
+            // Specification I: A#1 B#2 C#3 D#7 E#8 F#9 H#11 M#13 Q#17 R#18 S#19 T#20 U#21
+            // V#22 W#23 X#24 Y#25 Z#26 (GSK980TDi help text, G65; FANUC Series 16i).
+            b'A' => 1,
+            b'B' => 2,
+            b'C' => 3,
+            b'D' => 7,
+            b'E' => 8,
+            b'F' => 9,
+            b'H' => 11,
+            b'M' => 13,
+            l @ b'Q'..=b'Z' => 17 + (l - b'Q') as usize,
+            _ => return Err(Diagnostic::new(Rule::ArgumentAddress, style, w.span, format!("{}: {} is not a {code} argument", w.text(), crate::read::address_name(w.letter)))),
+        };
+        if slot > 33 {
+            return Err(Diagnostic::new(Rule::ArgumentAddress, style, w.span, format!("{}: more than ten I J K sets", w.text())));
+        }
+        Ok(slot)
+    }
+
+    /// An argument's value: one written without a point is in least input increments where
+    /// the profile reads lengths so (FANUC Series 16i: G65 P9 X10 gives #24 = 0.010); the
+    /// whole-number addresses M S T H D and the feed F pass as written (inferred).
+    fn argument_value(&self, w: &Word) -> f64 {
+        let lii = self.interp.params().integer_lengths() == crate::profile::IntegerLengths::LeastIncrement;
+        let increment = if self.interp.state().inch { 1e-4 } else { 1e-3 };
+        if !w.decimal && lii && !matches!(w.letter, b'M' | b'S' | b'T' | b'H' | b'D' | b'F') { w.value * increment } else { w.value }
+    }
+
     /// The programme, count and locals of `G65 P_ L_ <arguments>` (or G66): a new level of
     /// local variables set from the arguments (FANUC Series 16i operator's manual, custom macro;
     /// GSK980TDi help text, G65).
@@ -1666,65 +1735,26 @@ impl Core {
         let mut number = None;
         let mut count = 1u32;
         let mut locals: macros::Locals = [None; 33];
-        // Argument specification I, and II's repeated I J K (the later wins: FANUC Series 16i).
-        let (mut i_seen, mut j_seen, mut k_seen) = (0usize, 0usize, 0usize);
-        let lii = self.interp.params().integer_lengths() == crate::profile::IntegerLengths::LeastIncrement;
-        let increment = if self.interp.state().inch { 1e-4 } else { 1e-3 };
+        let mut seen = [0usize; 3];
         for (k, w) in block.words.iter().enumerate() {
             if k == g65 {
                 continue;
             }
-            let slot = match w.letter {
+            match w.letter {
                 b'P' => {
                     if w.value < 0.0 || w.value.fract() != 0.0 || w.value > 9999.0 {
                         return Err(Diagnostic::new(Rule::ValueOutOfRange, style, w.span, format!("{}: the macro's programme number is 1 to 9999", w.text())));
                     }
                     number = Some(w.value as u32);
-                    continue;
                 }
                 b'L' => {
                     if w.value < 1.0 || w.value.fract() != 0.0 || w.value > 9999.0 {
                         return Err(Diagnostic::new(Rule::ValueOutOfRange, style, w.span, format!("{}: the repeat count L is 1 to 9999", w.text())));
                     }
                     count = w.value as u32;
-                    continue;
                 }
-                // FANUC 0 alarm 129: G is not an argument.
-                b'G' => return Err(Diagnostic::new(Rule::ArgumentAddress, style, w.span, format!("{}: G cannot be a {code} argument", w.text()))),
-                b'N' | b'O' => return Err(Diagnostic::new(Rule::ArgumentAddress, style, w.span, format!("{}: {} is not a {code} argument", w.text(), w.letter as char))),
-                b'I' => {
-                    i_seen += 1;
-                    4 + 3 * (i_seen - 1)
-                }
-                b'J' => {
-                    j_seen += 1;
-                    5 + 3 * (j_seen - 1)
-                }
-                b'K' => {
-                    k_seen += 1;
-                    6 + 3 * (k_seen - 1)
-                }
-                // Specification I: A#1 B#2 C#3 D#7 E#8 F#9 H#11 M#13 Q#17 R#18 S#19 T#20 U#21
-                // V#22 W#23 X#24 Y#25 Z#26 (GSK980TDi help text, G65; FANUC Series 16i).
-                b'A' => 1,
-                b'B' => 2,
-                b'C' => 3,
-                b'D' => 7,
-                b'E' => 8,
-                b'F' => 9,
-                b'H' => 11,
-                b'M' => 13,
-                l @ b'Q'..=b'Z' => 17 + (l - b'Q') as usize,
-                _ => return Err(Diagnostic::new(Rule::ArgumentAddress, style, w.span, format!("{}: {} is not a {code} argument", w.text(), crate::read::address_name(w.letter)))),
-            };
-            if slot > 33 {
-                return Err(Diagnostic::new(Rule::ArgumentAddress, style, w.span, format!("{}: more than ten I J K sets", w.text())));
+                _ => locals[self.argument_slot(w, &mut seen, &code)? - 1] = Some(self.argument_value(w)),
             }
-            // A value written without a point is in least input increments where the profile
-            // reads lengths so (FANUC Series 16i: G65 P9 X10 gives #24 = 0.010); the whole-number
-            // addresses M S T H D and the feed F pass as written (inferred).
-            let v = if !w.decimal && lii && !matches!(w.letter, b'M' | b'S' | b'T' | b'H' | b'D' | b'F') { w.value * increment } else { w.value };
-            locals[slot - 1] = Some(v);
         }
         let Some(number) = number else {
             return Err(Diagnostic::new(Rule::AddressPMissing, style, at, format!("{code}: the macro to call is not given (P)")));
@@ -1749,14 +1779,17 @@ impl Core {
             }
             Flow::Return { sequence, span } => {
                 let Some(frame) = self.calls.frames.last_mut() else {
-                    // M99 in the main programme (GSK980TDi help text, M99: it runs again).
-                    let d = Diagnostic::new(
-                        Rule::ProgramLoops,
-                        profile.alarm_style,
-                        span,
-                        "M99 in the main programme: the controller starts it again from the top; the simulation ends here",
-                    );
-                    sink(Event::Diagnostic(d));
+                    // M99 in the main programme (GSK980TDi help text, M99: it runs again); in a
+                    // programme run as if called, the return.
+                    if !self.run_as_called {
+                        let d = Diagnostic::new(
+                            Rule::ProgramLoops,
+                            profile.alarm_style,
+                            span,
+                            "M99 in the main programme: the controller starts it again from the top; the simulation ends here",
+                        );
+                        sink(Event::Diagnostic(d));
+                    }
                     // A move still held (radius compensation) is made before the end.
                     self.flush_pending(sink);
                     let mut end = Record::new(span, Op::End { code: 99 });

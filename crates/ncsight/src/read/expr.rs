@@ -14,6 +14,8 @@ pub struct ExprError {
     pub at: usize,
     pub message: String,
     pub kind: ErrorKind,
+    /// A division by zero whose divisor is a variable: its number (the hint names what gives it).
+    pub divisor: Option<i64>,
 }
 
 /// What went wrong, so that the caller can give the controller's own alarm.
@@ -160,12 +162,12 @@ pub struct NoVariables;
 
 impl Variables for NoVariables {
     fn read(&mut self, _: i64) -> Result<Value, ExprError> {
-        Err(ExprError { at: 0, message: "a variable (#) cannot be read here".into(), kind: ErrorKind::Variable })
+        Err(ExprError { at: 0, message: "a variable (#) cannot be read here".into(), kind: ErrorKind::Variable, divisor: None })
     }
 }
 
 fn fail(kind: ErrorKind, message: impl Into<String>) -> ExprError {
-    ExprError { at: 0, message: message.into(), kind }
+    ExprError { at: 0, message: message.into(), kind, divisor: None }
 }
 
 /// The number of a variable: a whole number (rounded: `#[1.4]` is #1; docs/reference/macro.md section 3).
@@ -214,7 +216,16 @@ pub fn eval_rounding(arena: &Arena, root: u32, vars: &mut dyn Variables, round_s
         }
         Node::Bin(op, a, b) => {
             let (x, y) = (num(eval(arena, a, vars)?), num(eval(arena, b, vars)?));
-            Some(binary_operation(op, x, y)?)
+            Some(binary_operation(op, x, y).map_err(|mut e| {
+                // `#10 / #700`: the divisor named, vacant or 0.
+                if let Node::Var(n) = arena.nodes[b as usize] {
+                    if let Node::Num(number) = arena.nodes[n as usize] {
+                        e.divisor = Some(number as i64);
+                        e.message = format!("{} (the divisor #{} is vacant or 0)", e.message, number as i64);
+                    }
+                }
+                e
+            })?)
         }
         Node::Cmp(op, a, b) => {
             let (x, y) = (eval(arena, a, vars)?, eval(arena, b, vars)?);
@@ -383,7 +394,7 @@ struct Parser<'a> {
 
 impl Parser<'_> {
     fn err(&self, message: String) -> ExprError {
-        ExprError { at: self.i, message, kind: ErrorKind::Format }
+        ExprError { at: self.i, message, kind: ErrorKind::Format, divisor: None }
     }
 
     fn skip_ws(&mut self) {
@@ -481,7 +492,7 @@ impl Parser<'_> {
         }
         self.depth += 1;
         if self.depth > MAX_DEPTH {
-            return Err(ExprError { at: self.i, message: format!("brackets nested deeper than {MAX_DEPTH}"), kind: ErrorKind::Nesting });
+            return Err(ExprError { at: self.i, message: format!("brackets nested deeper than {MAX_DEPTH}"), kind: ErrorKind::Nesting, divisor: None });
         }
         self.arena.depth = self.arena.depth.max(self.depth.min(255) as u8);
         self.i += 1;
@@ -520,7 +531,7 @@ impl Parser<'_> {
                 }
                 let name = &self.s[start..self.i];
                 let Some(f) = Func::by_name(name) else {
-                    return Err(ExprError { at: start, message: format!("unknown function {}", String::from_utf8_lossy(name).to_ascii_uppercase()), kind: ErrorKind::Format });
+                    return Err(ExprError { at: start, message: format!("unknown function {}", String::from_utf8_lossy(name).to_ascii_uppercase()), kind: ErrorKind::Format, divisor: None });
                 };
                 let arg = self.bracketed()?;
                 if f == Func::Atan && self.peek() == Some(b'/') {
@@ -547,9 +558,9 @@ impl Parser<'_> {
             self.i += 1;
         }
         let t = std::str::from_utf8(&self.s[start..self.i]).unwrap_or("");
-        let v = t.parse::<f64>().map_err(|_| ExprError { at: start, message: format!("'{t}' is not a number"), kind: ErrorKind::Format })?;
+        let v = t.parse::<f64>().map_err(|_| ExprError { at: start, message: format!("'{t}' is not a number"), kind: ErrorKind::Format, divisor: None })?;
         if !v.is_finite() {
-            return Err(ExprError { at: start, message: "the value is not a finite number".into(), kind: ErrorKind::Overflow });
+            return Err(ExprError { at: start, message: "the value is not a finite number".into(), kind: ErrorKind::Overflow, divisor: None });
         }
         Ok(self.arena.push(Node::Num(v)))
     }
