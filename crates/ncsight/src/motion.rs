@@ -203,8 +203,10 @@ pub enum Op {
     /// A rotary axis (`axis`: b'A', b'B' or b'C', as the setup declares it) turns from
     /// `from_deg` to `to_deg`: at its rapid rate, or at `rate_deg_min`. `with_move`: it turns
     /// together with the linear move recorded just before it (the block moved both), and takes
-    /// only the time that move does not already take.
-    Rotary { axis: u8, from_deg: f64, to_deg: f64, rate_deg_min: f64, rapid: bool, with_move: bool },
+    /// only the time that move does not already take. `linear`: the axis is declared linear (a
+    /// sub-spindle's travel B): a slide, its `_deg` values millimetres and its rate mm/min, its
+    /// rapid the linear axes' (JSONL kind `slide`).
+    Rotary { axis: u8, from_deg: f64, to_deg: f64, rate_deg_min: f64, rapid: bool, with_move: bool, linear: bool },
     /// Spindle state changed. `rpm` is signed: negative = the spindle's negative direction;
     /// 0 = stopped. `surface_m_min` is the G96 surface speed when constant surface speed is on.
     /// `oriented`: an oriented spindle stop (G76, G87).
@@ -228,7 +230,8 @@ impl Op {
             Op::Thread { .. } => "thread",
             Op::ThreadArc { .. } => "thread_arc",
             Op::Dwell { .. } => "dwell",
-            Op::Rotary { .. } => "rotary",
+            Op::Rotary { linear: false, .. } => "rotary",
+            Op::Rotary { linear: true, .. } => "slide",
             Op::Spindle { .. } => "spindle",
             Op::Tool { .. } => "tool",
             Op::Stop { .. } => "stop",

@@ -48,9 +48,10 @@ pub struct Setup {
 #[derive(Debug, Clone, PartialEq, Deserialize, Default)]
 #[serde(deny_unknown_fields)]
 pub struct MachineSetup {
-    /// The axes the machine has (`["X", "Z"]`); the profile's axes when absent.
+    /// The axes the machine has (`["X", "Z"]`, or with their kinds
+    /// `[{ name = "B", kind = "linear" }]`); the profile's axes when absent.
     #[serde(default)]
-    pub axes: Vec<String>,
+    pub axes: Vec<AxisDecl>,
     /// Multi-spindle machines: the P values that select a spindle in an S/M block.
     #[serde(default)]
     pub spindle_p: Vec<u32>,
@@ -64,6 +65,66 @@ pub struct MachineSetup {
     pub reference_2: Option<Point>,
     pub reference_3: Option<Point>,
     pub reference_4: Option<Point>,
+}
+
+/// One axis of `[machine] axes`: its name alone (`"C"`), or a table with its kind and its
+/// incremental address (`{ name = "B", kind = "linear" }`, `{ name = "C", kind = "rotary",
+/// incremental = "H" }`).
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(untagged)]
+pub enum AxisDecl {
+    Name(String),
+    Full {
+        name: String,
+        /// `linear` or `rotary`; A, B and C are rotary unless declared linear (a sub-spindle's
+        /// travel, say), X, Y and Z linear.
+        kind: Option<String>,
+        /// The incremental address: `V` for Y and `H` for C on the FANUC lathe's G-code system
+        /// A (the default there); an axis without one moves incrementally in G91 only.
+        incremental: Option<String>,
+    },
+}
+
+impl AxisDecl {
+    pub fn name(&self) -> &str {
+        match self {
+            AxisDecl::Name(n) | AxisDecl::Full { name: n, .. } => n,
+        }
+    }
+
+    /// The axis's letter (checked: one of X Y Z A B C).
+    pub fn letter(&self) -> u8 {
+        self.name().as_bytes().first().copied().unwrap_or(b'?')
+    }
+
+    /// A, B or C declared as a linear axis (millimetres, as X, Y and Z).
+    pub fn linear_extra(&self) -> bool {
+        matches!(self, AxisDecl::Full { kind: Some(k), .. } if k == "linear") && matches!(self.letter(), b'A' | b'B' | b'C')
+    }
+
+    fn check(&self) -> Result<(), SetupError> {
+        let name = self.name();
+        if !matches!(name, "X" | "Y" | "Z" | "A" | "B" | "C") {
+            return Err(SetupError(format!("machine.axes: {name:?} is not an axis (X, Y, Z, A, B or C)")));
+        }
+        if let AxisDecl::Full { kind, incremental, .. } = self {
+            match kind.as_deref() {
+                None | Some("linear") => {}
+                Some("rotary") if matches!(name, "A" | "B" | "C") => {}
+                Some(k) => return Err(SetupError(format!("machine.axes: {name}: kind {k:?}: X, Y and Z are linear; A, B and C rotary or linear"))),
+            }
+            match (name, incremental.as_deref()) {
+                (_, None) | ("Y", Some("V")) => {}
+                ("C", Some("H")) if !self.linear_extra() => {}
+                (_, Some(i)) => {
+                    return Err(SetupError(format!(
+                        "machine.axes: {name}: incremental {i:?}: the FANUC lathe's G-code system A has V for Y and H for a rotary C (other axes move incrementally in G91)"
+                    )))
+                }
+            }
+        }
+        Ok(())
+    }
 }
 
 /// A point in machine coordinates; an axis left out is 0.
@@ -543,12 +604,10 @@ impl Tool {
 /// `[machine]`: its axes (each once), spindles, reference points and travel limits.
 fn check_machine(m: &MachineSetup) -> Result<(), SetupError> {
     for (i, a) in m.axes.iter().enumerate() {
-        if !matches!(a.as_str(), "X" | "Y" | "Z" | "A" | "B" | "C") {
-            return Err(SetupError(format!("machine.axes: {a:?} is not an axis (X, Y, Z, A, B or C)")));
-        }
+        a.check()?;
         // Each axis once (so at most six).
-        if m.axes[..i].contains(a) {
-            return Err(SetupError(format!("machine.axes: {a:?} is named twice; each axis once")));
+        if m.axes[..i].iter().any(|b| b.name() == a.name()) {
+            return Err(SetupError(format!("machine.axes: {:?} is named twice; each axis once", a.name())));
         }
     }
     if m.tool_change_s.is_some_and(|s| !(s.is_finite() && (0.0..=3600.0).contains(&s))) {

@@ -196,10 +196,12 @@ impl TimeModel {
                 long / v + if run_start { self.feed_accel_s } else { 0.0 }
             }
             Op::Dwell { seconds } => *seconds,
-            Op::Rotary { from_deg, to_deg, rate_deg_min, rapid, .. } => {
+            Op::Rotary { from_deg, to_deg, rate_deg_min, rapid, linear, .. } => {
                 let turn = (to_deg - from_deg).abs();
                 if *rapid {
-                    trapezoid_s(turn, self.rotary_rapid_deg_min, self.rapid_accel_s)
+                    // A linear extra axis (a sub-spindle's B) at the Z axis's rapid rate (assumed).
+                    let rate = if *linear { self.rapid_mm_min[2] } else { self.rotary_rapid_deg_min };
+                    trapezoid_s(turn, rate, self.rapid_accel_s)
                 } else {
                     trapezoid_s(turn, self.feed_speed(r, *rate_deg_min), self.accel_s(r))
                 }

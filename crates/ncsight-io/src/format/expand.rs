@@ -340,7 +340,7 @@ impl Expand {
                 return Err(self.refuse(r.span, why));
             }
             Op::Rotary { axis, .. } => {
-                return Err(self.refuse(r.span, &format!("a turn of the rotary axis {}: expand writes the X, Y and Z moves only (a block that moved both would come out as two moves)", *axis as char)));
+                return Err(self.refuse(r.span, &format!("a move of the axis {}: expand writes the X, Y and Z moves only (a block that moved both would come out as two moves)", *axis as char)));
             }
             Op::Dwell { .. } | Op::Spindle { oriented: false, .. } if self.held.is_some() => {
                 if let Some((_, after)) = self.held.as_mut() {

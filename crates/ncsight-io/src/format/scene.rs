@@ -114,7 +114,8 @@ fn scene_of_at_most(job: &Job, text: &[u8], library: Vec<(String, &[u8])>, max_r
                     Op::Spindle { rpm, oriented, p, .. } => format!("\"spindle\",\"rpm\":{},\"oriented\":{oriented},\"p\":{p}", num(*rpm, 1)),
                     Op::Stop { reason } => format!("\"stop\",\"reason\":\"{}\"", reason.as_str()),
                     Op::Dwell { seconds } => format!("\"dwell\",\"s\":{}", num(*seconds, 3)),
-                    Op::Rotary { axis, to_deg, .. } => format!("\"rotary\",\"axis\":\"{}\",\"deg\":{},\"s\":{}", *axis as char, num(*to_deg, 3), num(took_s, 4)),
+                    // A linear extra axis (a sub-spindle's B) is timed as a turn, its value in mm.
+                    Op::Rotary { axis, to_deg, linear, .. } => format!("\"rotary\",\"axis\":\"{}\",\"{}\":{},\"s\":{}", *axis as char, if *linear { "mm" } else { "deg" }, num(*to_deg, 3), num(took_s, 4)),
                     Op::End { code } => format!("\"end\",\"code\":{code}"),
                     _ => format!("\"{}\"", r.op.kind()),
                 };

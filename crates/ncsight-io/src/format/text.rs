@@ -83,13 +83,13 @@ impl Text {
                 push_num(s, *seconds, 3);
                 s.push_str(" s");
             }
-            Op::Rotary { axis, to_deg, rate_deg_min, rapid, with_move, .. } => {
+            Op::Rotary { axis, to_deg, rate_deg_min, rapid, with_move, linear, .. } => {
                 s.push(*axis as char);
                 push_num(s, *to_deg, 3);
                 if !*rapid {
                     s.push_str("  F");
                     push_num(s, *rate_deg_min, 3);
-                    s.push_str(" deg/min");
+                    s.push_str(if *linear { " mm/min" } else { " deg/min" });
                 }
                 if *with_move {
                     s.push_str("  (with the move above)");

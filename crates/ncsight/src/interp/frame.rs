@@ -33,8 +33,11 @@ pub struct Tables {
     pub power_on_mm: Option<Vec3>,
     /// The offset table by number (X and its wear as radii on a lathe).
     pub offsets: Vec<Offset>,
-    /// The rotary axes A, B, C the setup declares (`[machine] axes`).
+    /// The axes A, B, C the setup declares (`[machine] axes`), rotary unless `linear_extra`.
     pub rotary: [bool; 3],
+    /// Those of them declared linear (`kind = "linear"`: a sub-spindle's travel B): millimetres
+    /// as X, Y and Z, moved as the rotary axes are (G00, G01, G28, G53), recorded as slides.
+    pub linear_extra: [bool; 3],
     /// Axis addresses the setup adds to the profile's: a lathe's Y (and V), the rotary axes
     /// (and H, the FANUC lathe's incremental C).
     pub added_addresses: crate::profile::Letters,
@@ -59,6 +62,7 @@ impl Tables {
             power_on_mm: None,
             offsets: Vec::new(),
             rotary: [false; 3],
+            linear_extra: [false; 3],
             added_addresses: crate::profile::Letters::EMPTY,
             axis_order: profile.axes.bytes().collect(),
             spindle_p: Vec::new(),
@@ -86,10 +90,10 @@ impl Tables {
         if let Some(m) = &setup.machine {
             t.spindle_p = m.spindle_p.clone();
             if !m.axes.is_empty() {
-                t.axis_order = m.axes.iter().map(|a| a.as_bytes()[0]).collect();
+                t.axis_order = m.axes.iter().map(|a| a.letter()).collect();
             }
             for a in &m.axes {
-                let letter = a.as_bytes()[0];
+                let letter = a.letter();
                 if profile.takes_address(letter) {
                     continue;
                 }
@@ -97,8 +101,10 @@ impl Tables {
                 match letter {
                     b'Y' if profile.incremental_addresses => t.added_addresses = t.added_addresses.with(b'V'),
                     b'A' | b'B' | b'C' => {
-                        t.rotary[usize::from(letter - b'A')] = true;
-                        if letter == b'C' && profile.incremental_addresses {
+                        let i = usize::from(letter - b'A');
+                        t.rotary[i] = true;
+                        t.linear_extra[i] = a.linear_extra();
+                        if letter == b'C' && profile.incremental_addresses && !a.linear_extra() {
                             t.added_addresses = t.added_addresses.with(b'H');
                         }
                     }
@@ -262,6 +268,8 @@ pub(super) fn machine_move(step: &mut Step, words: &mut Words, span: Span) -> Re
         return Ok(false);
     }
     let values = written_axes(step, words)?;
+    // The declared A, B, C: no work offset applies to them, so machine and programme agree.
+    let extra = super::rotary_target(step, words)?;
     let origin = step.tables.to_machine(&step.st.frame);
     let from = step.st.pos;
     let mut to = from;
@@ -273,6 +281,9 @@ pub(super) fn machine_move(step: &mut Step, words: &mut Words, span: Span) -> Re
     if to != from {
         step.emit(Op::Rapid { from, to });
     }
+    if let Some(to_deg) = extra {
+        super::emit_rotary(step, to_deg, true, 0.0, to != from);
+    }
     Ok(true)
 }
 
@@ -280,30 +291,28 @@ pub(super) fn machine_move(step: &mut Step, words: &mut Words, span: Span) -> Re
 /// incremental), then to reference point `n` on the axes given. GSK: the tool offset is
 /// cancelled (help text G28 note 2, G30 note 3).
 pub(super) fn reference_return(step: &mut Step, words: &mut Words, n: usize, span: Span) -> Result<(), Diagnostic> {
+    // A, B, C named (`G28 H0`, `G28 B0`): each goes at rapid to its intermediate point with the
+    // linear axes, then to its reference point, zero (the setup gives none for them: assumed, as
+    // no offset applies to them either).
+    let extra = super::extra_axes_target(step, words)?;
     let (mid, given) = axis_target(step, words)?;
-    if !given.iter().any(Option::is_some) {
+    let linear = given.iter().any(Option::is_some);
+    if !linear && extra.is_none() {
         return Ok(());
     }
-    let reference = match step.tables.reference_mm[n - 1] {
-        Some(r) => r,
-        None => {
-            // Without a setup's [machine], every reference point but the first is at machine
-            // zero silently (as every other setting then).
-            if step.tables.machine_given {
-                let msg = format!("reference point {n} is not in the setup ([machine.reference_{n}]): taken as machine zero");
-                step.warn(Rule::ReferenceAssumed, span, msg);
-            }
-            Vec3::default()
-        }
-    };
-    if mid != step.st.pos {
+    let reference = if linear { reference_point(step, n, span) } else { Vec3::default() };
+    let moved = mid != step.st.pos;
+    if moved {
         step.emit(Op::Rapid { from: step.st.pos, to: mid });
+    }
+    if let Some((extra_mid, _)) = extra {
+        super::emit_rotary(step, extra_mid, true, 0.0, moved);
     }
     // Kept for G29, per axis named (FANUC 0i manual, G29: the G28 or G30 before it).
     for (a, _) in given.iter().enumerate().filter(|(_, g)| g.is_some()) {
         step.st.reference_mid[a] = Some(mid.axis(a));
     }
-    if step.profile.frame.reference_cancels_tool_offset {
+    if step.profile.frame.reference_cancels_tool_offset && linear {
         reframe(step, |f| {
             f.geometry = Vec3::default();
             f.wear = Vec3::default();
@@ -314,14 +323,36 @@ pub(super) fn reference_return(step: &mut Step, words: &mut Words, n: usize, spa
     let origin = step.tables.to_machine(&step.st.frame);
     let mut home = step.st.pos;
     for (a, _) in given.iter().enumerate().filter(|(_, g)| g.is_some()) {
-        {
-            home.set_axis(a, reference.axis(a) - origin.axis(a));
-        }
+        home.set_axis(a, reference.axis(a) - origin.axis(a));
     }
-    if home != step.st.pos {
+    let moved = home != step.st.pos;
+    if moved {
         step.emit(Op::Rapid { from: step.st.pos, to: home });
     }
+    if let Some((mut extra_home, named)) = extra {
+        for i in (0..3).filter(|&i| named[i]) {
+            extra_home[i] = 0.0;
+        }
+        super::emit_rotary(step, extra_home, true, 0.0, moved);
+    }
     Ok(())
+}
+
+/// Reference point `n` of the setup, machine coordinates; without it, machine zero (with a
+/// warning where the setup gives a [machine] but not that point).
+fn reference_point(step: &mut Step, n: usize, span: Span) -> Vec3 {
+    match step.tables.reference_mm[n - 1] {
+        Some(r) => r,
+        None => {
+            // Without a setup's [machine], every reference point but the first is at machine
+            // zero silently (as every other setting then).
+            if step.tables.machine_given {
+                let msg = format!("reference point {n} is not in the setup ([machine.reference_{n}]): taken as machine zero");
+                step.warn(Rule::ReferenceAssumed, span, msg);
+            }
+            Vec3::default()
+        }
+    }
 }
 
 /// G29 (FANUC 0i manual, "return from the reference position"): each axis named goes at rapid

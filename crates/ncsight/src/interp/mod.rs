@@ -2163,10 +2163,16 @@ fn single_direction(step: &mut Step, words: &mut Words) -> Result<(), Diagnostic
 /// without a decimal point are least input increments (0.001 degree) where lengths are, as on
 /// the FANUC (IS-B); no work offset or rollover applies (FANUC 1008#0 ROA off, assumed).
 fn rotary_target(step: &mut Step, words: &mut Words) -> Result<Option<[f64; 3]>, Diagnostic> {
+    Ok(extra_axes_target(step, words)?.map(|(target, _)| target))
+}
+
+/// [`rotary_target`], with which of A, B, C the block named.
+fn extra_axes_target(step: &mut Step, words: &mut Words) -> Result<Option<([f64; 3], [bool; 3])>, Diagnostic> {
     if !step.tables.rotary.iter().any(|r| *r) {
         return Ok(None);
     }
     let mut target = step.st.rotary_deg;
+    let mut named = [false; 3];
     let mut any = false;
     for (i, letter) in [b'A', b'B', b'C'].into_iter().enumerate() {
         if !step.tables.rotary[i] {
@@ -2178,18 +2184,20 @@ fn rotary_target(step: &mut Step, words: &mut Words) -> Result<Option<[f64; 3]>,
             return Err(step.alarm(Rule::DuplicateWord, h.span, format!("{} and {} both give the C axis", a.text(), h.text())));
         }
         let Some(w) = abs_w.or(inc_w) else { continue };
-        let v = step.degrees(w);
+        // A linear extra axis (a sub-spindle's B) reads its word as a length, in mm.
+        let v = if step.tables.linear_extra[i] { step.length(w)? } else { step.degrees(w) };
         if !v.is_finite() || v.abs() > MAX_COORD_MM {
-            return Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("{}: a rotary axis turns at most {MAX_COORD_MM} degrees from its zero", w.text())));
+            return Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("{}: an axis moves at most {MAX_COORD_MM} (mm or degrees) from its zero", w.text())));
         }
         let incremental = inc_w.is_some() || step.st.incremental;
         target[i] = if incremental { step.st.rotary_deg[i] + v } else { v };
+        named[i] = true;
         any = true;
     }
     if any && step.st.comp.side != 0 {
         return Err(step.alarm(Rule::NotSupported, step.span, "a rotary axis turn in radius compensation (G41/G42) is not simulated"));
     }
-    Ok(any.then_some(target))
+    Ok(any.then_some((target, named)))
 }
 
 /// The rotary turns of a G00/G01 block, after its linear move (if any, recorded just before):
@@ -2204,7 +2212,8 @@ fn emit_rotary(step: &mut Step, to_deg: [f64; 3], rapid: bool, rate_per_unit: f6
         let from_deg = step.st.rotary_deg[i];
         if to_deg[i] != from_deg {
             let rate_deg_min = rate_per_unit * (to_deg[i] - from_deg).abs();
-            step.emit(Op::Rotary { axis: b'A' + i as u8, from_deg, to_deg: to_deg[i], rate_deg_min, rapid, with_move });
+            let linear = step.tables.linear_extra[i];
+            step.emit(Op::Rotary { axis: b'A' + i as u8, from_deg, to_deg: to_deg[i], rate_deg_min, rapid, with_move, linear });
             with_move = true;
         }
     }
@@ -2250,9 +2259,11 @@ fn motion(step: &mut Step, words: &mut Words) -> Result<(), Diagnostic> {
         }
         Motion::Linear => {
             let feed = step.cutting_feed(What::Code(GFn::Linear), &|u| lerp(&from, &target, u))?;
-            let turn = rotary.map_or(0.0, |to| (0..3).map(|i| (to[i] - step.st.rotary_deg[i]).powi(2)).sum::<f64>().sqrt());
-            // The move's length in the input unit, the degrees counted as that unit; F in it.
+            // The move's length in the input unit, the degrees counted as that unit (a linear
+            // extra axis's millimetres converted to it); F in it.
             let unit = if step.st.inch { 25.4 } else { 1.0 };
+            let per_unit = |i: usize| if step.tables.linear_extra[i] { unit } else { 1.0 };
+            let turn = rotary.map_or(0.0, |to| (0..3).map(|i| ((to[i] - step.st.rotary_deg[i]) / per_unit(i)).powi(2)).sum::<f64>().sqrt());
             let length = from.dist(&target) / unit;
             let whole = (length * length + turn * turn).sqrt();
             if target != from {

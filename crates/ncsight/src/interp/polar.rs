@@ -278,7 +278,7 @@ pub(super) fn push(step: &mut Step, span: Span, n: Option<u32>, op: Op, mode: Po
         let turn = (piece.angle_deg - a0).abs();
         if turn > 1e-12 {
             let rate = if seconds > 0.0 { turn / seconds } else { 0.0 };
-            step.push_machine(span, n, Op::Rotary { axis: b'C', from_deg: a0, to_deg: piece.angle_deg, rate_deg_min: rate, rapid: false, with_move: moved }, accel);
+            step.push_machine(span, n, Op::Rotary { axis: b'C', from_deg: a0, to_deg: piece.angle_deg, rate_deg_min: rate, rapid: false, with_move: moved, linear: false }, accel);
         }
         (r0, a0, z0) = (piece.radius_mm, piece.angle_deg, piece.z);
     }
