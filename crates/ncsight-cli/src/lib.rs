@@ -110,6 +110,7 @@ impl MachineArgs {
             vars: self.vars.clone(),
             call_args: self.call_args.clone(),
             setup: None,
+            setup_dir: None,
         };
         if let Some(path) = &self.setup {
             let text = self.setup_text()?.expect("a setup is given");

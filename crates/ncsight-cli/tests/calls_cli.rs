@@ -169,3 +169,35 @@ fn a_macro_body_runs_with_its_arguments() {
         assert!(err.contains("--call-args"), "{err}");
     }
 }
+
+/// The machine builder's M-code macro calls and resident programmes from the setup (issue 35):
+/// `[machine] m_macro = { 165 = "O9832" }` makes `M165 A2.` a call of O9832 with #1 = 2 (a P in
+/// the block is said to be ignored: G65 has no P argument), `library = ["lib"]` (relative to
+/// the setup) is where O9832 is found. Without the programme, the alarm names the setup's keys;
+/// without the setup, the refused P's hint names m_macro.
+#[test]
+fn builder_macros_from_the_setup() {
+    let d = scratch("m_macro");
+    std::fs::create_dir_all(d.join("lib")).unwrap();
+    std::fs::write(d.join("setup.toml"), "[machine]\nm_macro = { 165 = \"O9832\" }\nlibrary = [\"lib\"]\n").unwrap();
+    std::fs::write(d.join("main.nc"), "O0001\nG98 G00 X50. Z5.\nM165 P9832 A2.\nG00 X60.\nM30\n").unwrap();
+    let main = d.join("main.nc");
+    let setup = d.join("setup.toml");
+    let args = ["run", main.to_str().unwrap(), "-m", "fanuc0t", "--format", "jsonl", "--setup", setup.to_str().unwrap()];
+    let (code, out, _) = common::ncsight(&args);
+    assert_eq!(code, 1, "{out}");
+    assert!(out.contains("PS0078") && out.contains("m_macro") && out.contains("[machine] library"), "{out}");
+    std::fs::write(d.join("lib/O9832.nc"), "O9832\nG00 W-#1\nM99\n").unwrap();
+    let (code, out, err) = common::ncsight(&args);
+    assert_eq!(code, 0, "{err}");
+    assert!(out.contains(r#""kind":"rapid","x":50,"z":3"#), "{out}");
+    assert!(out.contains("NCS-W04"), "{out}");
+    std::fs::write(d.join("plain.nc"), "O0002\nG98 G00 X50. Z5.\nM165 P9832\nM30\n").unwrap();
+    let (code, out, _) = common::ncsight(&["check", d.join("plain.nc").to_str().unwrap(), "-m", "fanuc0t"]);
+    assert_eq!(code, 1);
+    assert!(out.contains("[machine] m_macro = { 165"), "{out}");
+    std::fs::write(d.join("bad.toml"), "[machine]\nm_macro = { 98 = \"O9832\" }\n").unwrap();
+    let (code, _, err) = common::ncsight(&["check", main.to_str().unwrap(), "-m", "fanuc0t", "--setup", d.join("bad.toml").to_str().unwrap()]);
+    assert_eq!(code, 2, "{err}");
+    assert!(err.contains("machine.m_macro"), "{err}");
+}

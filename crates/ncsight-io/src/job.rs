@@ -36,6 +36,8 @@ pub struct Job {
     pub call_args: Option<String>,
     /// The machine setup (`--setup FILE.toml`): offsets, reference points, limits, tools.
     pub setup: Option<ncsight::setup::Setup>,
+    /// The folder of the setup file, which its relative paths start from.
+    pub setup_dir: Option<PathBuf>,
 }
 
 /// Why a job cannot run: a mistake in how it was asked for (unknown machine, bad parameter,
@@ -136,7 +138,28 @@ impl Job {
             skip_missing: self.skip_missing_subprograms,
             max_repeated_blocks: self.max_blocks.unwrap_or(ncsight::program::MAX_REPEATED_BLOCKS),
         };
-        Ok((options, Library::new(self.subprogram_dirs.clone())))
+        let mut dirs = self.subprogram_dirs.clone();
+        dirs.extend(self.library_dirs()?);
+        Ok((options, Library::new(dirs)))
+    }
+
+    /// The setup's `[machine] library` folders (the machine's resident programmes), relative
+    /// to the setup file's folder.
+    fn library_dirs(&self) -> Result<Vec<PathBuf>, JobError> {
+        let Some(m) = self.setup.as_ref().and_then(|s| s.machine.as_ref()) else { return Ok(Vec::new()) };
+        let mut dirs = Vec::new();
+        for d in &m.library {
+            let path = PathBuf::from(d);
+            let path = match &self.setup_dir {
+                Some(base) if path.is_relative() => base.join(path),
+                _ => path,
+            };
+            if !path.is_dir() {
+                return Err(usage(format!("the setup's [machine] library {d:?}: {} is not a directory", path.display())));
+            }
+            dirs.push(path);
+        }
+        Ok(dirs)
     }
 
     /// Read the setup file at `path` (TOML) into the job.
@@ -151,6 +174,9 @@ impl Job {
             return Err(too_large(name, text.len() as u64));
         }
         self.setup = Some(ncsight::setup::Setup::from_toml(text).map_err(|e| usage(format!("{name}: {}", clip_lines(&e.to_string()))))?);
+        // A setup read from a file: its library folders are relative to that file's folder.
+        let file = std::path::Path::new(name);
+        self.setup_dir = file.is_file().then(|| file.parent().map(PathBuf::from).unwrap_or_default());
         Ok(())
     }
 

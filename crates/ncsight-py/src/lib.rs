@@ -57,6 +57,7 @@ impl Options {
             vars: variables,
             call_args: None,
             setup: None,
+            setup_dir: None,
         };
         // The setup as a file, or as the TOML the Python half wrote from a mapping.
         if let Some(p) = setup_path {

@@ -61,6 +61,14 @@ pub struct MachineSetup {
     pub reference: Option<Point>,
     /// Seconds added to the cycle time at each tool change (0 when absent).
     pub tool_change_s: Option<f64>,
+    /// M codes the machine builder made calls of a programme with the block's other words as
+    /// arguments (FANUC parameters 6080-6089, as the machine has them): `{ 165 = "O9832" }`.
+    #[serde(default)]
+    pub m_macro: std::collections::BTreeMap<String, String>,
+    /// Folders of the machine's resident programmes (O8000-O9999 libraries), searched for a
+    /// called programme as `--subprogram-dir` folders are; relative to the setup file.
+    #[serde(default)]
+    pub library: Vec<String>,
     /// The 2nd, 3rd and 4th reference points (G30 P2-P4).
     pub reference_2: Option<Point>,
     pub reference_3: Option<Point>,
@@ -601,6 +609,22 @@ impl Tool {
     }
 }
 
+/// One `[machine] m_macro` entry: the M code and the programme number it calls.
+pub fn m_macro_entry(code: &str, program: &str) -> Option<(u32, u32)> {
+    let code: u32 = code.trim().trim_start_matches(['M', 'm']).parse().ok()?;
+    let digits = program.trim().trim_start_matches(['O', 'o']);
+    let number: u32 = digits.parse().ok()?;
+    let reserved = matches!(code, 0 | 1 | 2 | 30 | 98 | 99);
+    (!reserved && (1..=9999).contains(&code) && (1..=99_999_999).contains(&number)).then_some((code, number))
+}
+
+impl MachineSetup {
+    /// The M codes that call programmes, as (code, programme) pairs.
+    pub fn m_macros(&self) -> impl Iterator<Item = (u32, u32)> + '_ {
+        self.m_macro.iter().filter_map(|(c, p)| m_macro_entry(c, p))
+    }
+}
+
 /// `[machine]`: its axes (each once), spindles, reference points and travel limits.
 fn check_machine(m: &MachineSetup) -> Result<(), SetupError> {
     for (i, a) in m.axes.iter().enumerate() {
@@ -608,6 +632,14 @@ fn check_machine(m: &MachineSetup) -> Result<(), SetupError> {
         // Each axis once (so at most six).
         if m.axes[..i].iter().any(|b| b.name() == a.name()) {
             return Err(SetupError(format!("machine.axes: {:?} is named twice; each axis once", a.name())));
+        }
+    }
+    for (code, program) in &m.m_macro {
+        let parsed = m_macro_entry(code, program);
+        if parsed.is_none() {
+            return Err(SetupError(format!(
+                "machine.m_macro: {code} = {program:?}: an M code 1-9999 other than M00-M02, M30, M98, M99, calling a programme O1-O99999999 (\"O9832\")"
+            )));
         }
     }
     if m.tool_change_s.is_some_and(|s| !(s.is_finite() && (0.0..=3600.0).contains(&s))) {

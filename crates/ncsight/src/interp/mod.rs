@@ -1953,7 +1953,17 @@ fn finish_block(step: &mut Step, words: &Words, codes: &Codes, after: Vec<(&Word
 
     if let Some(w) = words.first_unused() {
         let cmd = describe_command(step, codes);
-        return Err(step.alarm(Rule::WordNotTaken, w.span, format!("{}: {cmd} does not take address {}", w.text(), crate::read::address_name(w.letter))));
+        let d = step.alarm(Rule::WordNotTaken, w.span, format!("{}: {cmd} does not take address {}", w.text(), crate::read::address_name(w.letter)));
+        // `M165 P9832`: an M code of the machine builder's that calls a macro with the block's
+        // words as its arguments (FANUC parameters 6080-6089), which the setup can declare.
+        let builder_m = words.all().iter().find(|m| m.letter == b'M' && m.value.fract() == 0.0 && step.profile.m_code(m.value as u32).is_none());
+        return Err(match builder_m {
+            Some(m) => {
+                let code = m.value as u32;
+                d.with_hint(format!("M{code} is not in {}'s list: if the machine builder made it a macro call (FANUC parameters 6080-6089), the block's words are its arguments; declare it in the setup: [machine] m_macro = {{ {code} = \"O9xxx\" }}", step.profile.name))
+            }
+            None => d,
+        });
     }
     Ok(())
 }

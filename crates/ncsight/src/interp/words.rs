@@ -66,6 +66,11 @@ impl<'w> Words<'w> {
     }
 
     /// The first word, in the order written, that no command took.
+    /// Every word of the block, used or not, in the order written.
+    pub fn all(&self) -> &'w [Word] {
+        self.all
+    }
+
     pub fn first_unused(&self) -> Option<&'w Word> {
         let unused = self.present & !self.used;
         if unused == 0 {

@@ -534,6 +534,16 @@ impl Program {
     /// line (the tool starts at the setup's reference point).
     pub fn set_setup(&mut self, setup: &crate::setup::Setup) {
         self.core.interp.set_setup(setup);
+        // The machine builder's M-code macro calls the setup declares (`[machine] m_macro`),
+        // as the parameters 6080-6089 make them: G65 with the block's words as arguments.
+        if let Some(m) = &setup.machine {
+            let c = &mut self.core;
+            for (code, program) in m.m_macros() {
+                c.builder_codes.retain(|(l, k, _, _)| !(*l == b'M' && *k == code));
+                c.builder_codes.push((b'M', code, program, true));
+                c.builders = true;
+            }
+        }
     }
 
     /// How programmes that call programmes are run; given before the first line. With a main
@@ -1902,6 +1912,12 @@ impl Core {
         let profile = self.interp.profile();
         let calling = matches!(s.target, Target::Program(_)) && self.calls.frames.last().is_some_and(|f| f.start.is_none());
         let (message, hint) = match s.target {
+            // A machine builder's macro (the setup's m_macro, parameters 6050-6089): its
+            // resident programme lives in the machine.
+            Target::Program(n) if calling && self.calls.frames.last().is_some_and(|f| f.builder) => (
+                format!("O{n:04}: the machine's own programme this code calls (the setup's [machine] m_macro, or parameters 6050-6089) is in no file read"),
+                "give the folder of the machine's resident programmes with the setup's [machine] library (or --subprogram-dir), or run with --skip-missing-subprograms",
+            ),
             Target::Program(n) if calling => (
                 format!("O{n:04}: the called programme is in no file read (the programme's own file, the subprogramme directories)"),
                 "give the directory that holds it with --subprogram-dir, or run with --skip-missing-subprograms",
