@@ -187,6 +187,7 @@ rules! {
     NoMeasuringSignal => Warning, "NCS-W35", None, "NO MEASURING SIGNAL: THE OFFSET STAYS";
     CornerArcOvercut => Warning, "NCS-W36", None, "G39 AT AN INNER CORNER: OVERCUT";
     SimulatorStock => Warning, "NCS-W37", None, "SIMULATOR STOCK LINE SKIPPED";
+    ArcAsLine => Warning, "NCS-W38", None, "ARC WITHOUT RADIUS OR CENTRE: STRAIGHT MOVE";
 }
 
 impl Rule {

@@ -29,6 +29,11 @@ pub(super) fn words(step: &mut Step, words: &mut super::Words, rules: crate::pro
     Ok(())
 }
 
+/// The drawing's words are plain C, R and A (FANUC 0i-TF parameter 3405#4 CCR = 1).
+pub(super) fn plain_letters(step: &Step, rules: crate::profile::DrawingRules) -> bool {
+    rules.plain_letters.is_some_and(|k| step.params.get(k) != 0.0)
+}
+
 /// A corner in a block that radius compensation does not act in (a T word, a cycle) is not
 /// simulated; in a roughing contour it is.
 fn refuse_bypassed(step: &Step, w: &Word) -> Result<(), Diagnostic> {
@@ -41,7 +46,10 @@ fn refuse_bypassed(step: &Step, w: &Word) -> Result<(), Diagnostic> {
 /// L/D (GSK) or ,C/,R (FANUC): the chamfer's size or the arc's radius, measured as the profile
 /// says.
 fn drawing_words(step: &mut Step, words: &mut super::Words, rules: crate::profile::DrawingRules) -> Result<Option<CornerRequest>, Diagnostic> {
-    let (l, d) = (words.take(rules.chamfer), words.take(rules.round));
+    // FANUC 0i-TF 3405#4 CCR = 1: C and R without the comma.
+    let plain = plain_letters(step, rules);
+    let l = words.take(rules.chamfer).or_else(|| if plain { words.take(b'C') } else { None });
+    let d = words.take(rules.round).or_else(|| if plain { words.take(b'R') } else { None });
     let (w, round) = match (l, d) {
         (None, None) => return Ok(None),
         (Some(a), Some(b)) => {
@@ -65,8 +73,11 @@ fn drawing_words(step: &mut Step, words: &mut super::Words, rules: crate::profil
 /// radius value), or a corner arc of radius |R|, to a next move along the other axis the way
 /// the sign says. One of I, K, R, and none with `,C` or `,R` (alarm 053).
 fn right_angle_words(step: &mut Step, words: &mut super::Words, rules: crate::profile::DrawingRules) -> Result<Option<CornerRequest>, Diagnostic> {
-    let given: Vec<&Word> = [b'I', b'K', b'R', rules.chamfer, rules.round].iter().filter_map(|l| words.peek(*l)).collect();
-    let Some(&w) = given.iter().find(|w| matches!(w.letter, b'I' | b'K' | b'R')) else {
+    // FANUC 0i-TF 3405#4 CCR = 1: the chamfer is C (its axis the block's), not I or K.
+    let plain = plain_letters(step, rules);
+    let letters: &[u8] = if plain { b"CR" } else { b"IKR" };
+    let given: Vec<&Word> = letters.iter().chain([rules.chamfer, rules.round].iter()).filter_map(|l| words.peek(*l)).collect();
+    let Some(&w) = given.iter().find(|w| letters.contains(&w.letter)) else {
         return Ok(None);
     };
     if given.len() > 1 {
@@ -82,7 +93,14 @@ fn right_angle_words(step: &mut Step, words: &mut super::Words, rules: crate::pr
     // The block's programmed move runs along one axis, the one the word follows (alarm 054):
     // the words decide, not the move (a tool offset's movement may ride along with it).
     let (along_z, along_x) = ([b'Z', b'W'].iter().any(|l| words.has(*l)), [b'X', b'U'].iter().any(|l| words.has(*l)));
-    let next_along_second = match (w.letter, along_z, along_x) {
+    // A plain C chamfers toward the other axis, as I does after a Z move and K after an X move.
+    let letter = match w.letter {
+        b'C' if along_z && !along_x => b'I',
+        b'C' if along_x && !along_z => b'K',
+        b'C' => b'R',
+        l => l,
+    };
+    let next_along_second = match (letter, along_z, along_x) {
         (b'I' | b'R', true, false) => true,
         (b'K' | b'R', false, true) => false,
         _ => {

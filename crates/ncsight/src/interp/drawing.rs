@@ -27,7 +27,8 @@ pub(super) fn angle<'w>(step: &mut Step, words: &mut Words<'w>, rules: DrawingRu
     if !(step.st.motion == Motion::Linear || rapid && rules.angle_in_rapid) {
         return None;
     }
-    let w = words.take(rules.angle)?;
+    let plain = super::corner::plain_letters(step, rules);
+    let w = words.take(rules.angle).or_else(|| if plain { words.take(b'A') } else { None })?;
     let deg = if rules.angle_thousandths { step.thousandths_deg(w, "the line's angle") } else { step.degrees(w) };
     Some((deg, w))
 }

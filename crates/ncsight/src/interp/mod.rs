@@ -924,7 +924,9 @@ fn collect<'w>(
         let hypothetical = step.st.polar_interp.is_some() && matches!(letter, b'Y' | b'V');
         // The GSK980TDi's G32.1 gives its start angle with C (help text G32.1), C axis or not.
         let rigid_start = letter == b'C' && profile.thread.g32_1.start_c && rigid_block();
-        if !profile.takes_address(letter) && !step.tables.added_addresses.contains(letter) && !hypothetical && !rigid_start && !not_yet() {
+        // FANUC 0i-TF 3405#4 CCR = 1: A and C are the drawing's words, without the comma.
+        let plain_drawing = matches!(letter, b'A' | b'C') && profile.frame.drawing.is_some_and(|r| corner::plain_letters(step, r));
+        if !profile.takes_address(letter) && !step.tables.added_addresses.contains(letter) && !hypothetical && !rigid_start && !plain_drawing && !not_yet() {
             return Err(improper_address(step, w));
         }
         match letter {
@@ -2318,6 +2320,8 @@ enum ArcOutcome {
     Arc(geom::ArcGeom),
     /// R with start = end in the plane: a 0-degree arc (TDi help G02/03 note 3).
     Zero,
+    /// Neither R nor a centre word, where the parameter makes that a straight move.
+    Straight,
 }
 
 /// The arc a block's R or centre words describe, from `from` to `to` in the plane in force.
@@ -2353,6 +2357,14 @@ fn resolve_arc(step: &mut Step, words: &mut Words, from: Vec3, to: Vec3, dir: Ar
         };
     }
     if ca.is_none() && cb.is_none() {
+        // FANUC 0i-F parameter 3403#5 CIR = 0: G02/G03 with neither R nor I/J/K moves to the end
+        // point in a straight line (PS0022 when 1).
+        let cir = step.profile.frame.arc_without_centre.filter(|_| matches!(gname, What::Code(GFn::ArcCw | GFn::ArcCcw)));
+        if let Some(key) = cir.filter(|k| step.params.get(*k) == 0.0) {
+            let msg = format!("{} without R or {} {}: a straight move to the end point (parameter {key} CIR = 0)", gname.name(step.profile), la as char, lb as char);
+            step.warn(Rule::ArcAsLine, step.span, msg);
+            return Ok(ArcOutcome::Straight);
+        }
         return Err(step.alarm(
             Rule::ArcDataMissing,
             step.span,
@@ -2386,9 +2398,9 @@ fn arc(step: &mut Step, words: &mut Words, from: Vec3, to: Vec3, dir: ArcDir) ->
             let feed = step.cutting_feed(gname, &|u| geom::arc_point(&from, &to, plane, dir, &g, u))?;
             step.emit(Op::Arc { from, to, center: g.center, plane, dir, feed_mm_min: feed });
         }
-        ArcOutcome::Zero => {
+        ArcOutcome::Zero | ArcOutcome::Straight => {
             if to != from {
-                // Only the axis normal to the plane moves.
+                // Only the axis normal to the plane moves (a 0-degree arc), or a straight move.
                 let feed = step.cutting_feed(gname, &|u| lerp(&from, &to, u))?;
                 step.emit(Op::Feed { from, to, feed_mm_min: feed });
             }

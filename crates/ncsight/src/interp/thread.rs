@@ -467,7 +467,7 @@ fn arc(step: &mut Step, words: &mut Words, dir: ArcDir, run_deg: Option<f64>) ->
     let plane = step.st.plane;
     let g = match resolve_arc(step, words, from, to, dir, gname)? {
         ArcOutcome::Arc(g) => g,
-        ArcOutcome::Zero => return Ok(()),
+        ArcOutcome::Zero | ArcOutcome::Straight => return Ok(()),
     };
     let long_axis = match arc_thread::long_axis(&from, plane, dir, &g) {
         Ok(a) => a,

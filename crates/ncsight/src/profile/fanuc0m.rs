@@ -6,7 +6,7 @@ use crate::alarm::AlarmStyle;
 use crate::codes::DrillKind;
 
 
-const G_CODES: &[GDef] = &[
+pub(super) const G_CODES: &[GDef] = &[
     g(43, Group::LengthComp, GFn::LengthComp(1), "tool length compensation +"),
     g(44, Group::LengthComp, GFn::LengthComp(-1), "tool length compensation -"),
     g(49, Group::LengthComp, GFn::LengthComp(0), "cancel tool length compensation"),
@@ -35,13 +35,13 @@ const G_CODES: &[GDef] = &[
     g(99, Group::ReturnLevel, GFn::ReturnR, "canned cycle: return to the R point"),
 ];
 
-const M_CODES: &[MDef] = &[
+pub(super) const M_CODES: &[MDef] = &[
     m(6, MFn::ToolChange, "tool change"),
     m(19, MFn::Auxiliary, "spindle orientation"),
 ];
 
 /// Coordinate rotation and scaling (FANUC 0i numbering, inferred for the FANUC 0-M).
-const TRANSFORMS: &[ParamDef] = &[
+pub(super) const TRANSFORMS: &[ParamDef] = &[
     ParamDef {
         key: ParamKey::Number(5400, Some(0)),
         meaning: "RIN: G68's R in G91 is 0 = always an absolute angle, 1 = added to the angle in force",
@@ -80,7 +80,8 @@ const TRANSFORMS: &[ParamDef] = &[
     },
 ];
 
-const PARAMS: &[ParamDef] = &[
+/// The parameters with the FANUC 0i's numbers (the 0-M's own not found), which the 0i-MF has too.
+pub(super) const PARAMS_0I: &[ParamDef] = &[
     ParamDef {
         key: ParamKey::Number(1710, None),
         meaning: "MDR: inside an arc in cutter compensation the centre path runs at F times its radius over the programmed radius, at least this",
@@ -135,6 +136,10 @@ const PARAMS: &[ParamDef] = &[
         default: 1.0,
         source: "FANUC 0i-MC numbering, as recalled (the 0-M's number not found); default assumed",
     },
+];
+
+/// The FANUC 0-M's own numbers: the G76/G87 shift, the rates, the peck amounts.
+const PARAMS: &[ParamDef] = &[
     ParamDef {
         key: ParamKey::Number(2, Some(4)),
         meaning: "G76/G87 shift direction, with bit 5: (bit 5, bit 4) 00 = +X, 01 = -X, 10 = +Y, 11 = -Y",
@@ -209,7 +214,8 @@ const PARAMS: &[ParamDef] = &[
     },
 ];
 
-pub static PROFILE: Profile = Profile {
+/// The profile's data, for the profiles built on it (the FANUC 0i-F).
+pub(super) const BASE: Profile = Profile {
     name: "fanuc0m",
     title: "FANUC 0-M machining centre",
     kind: MachineKind::Mill,
@@ -229,7 +235,7 @@ pub static PROFILE: Profile = Profile {
     box_taper: b'R',
     g_codes: &[super::Codes { source: "FANUC 0-M manual, canned cycles (seed 003) and the FANUC 0i-MC G-code table", codes: common::G_CODES }, super::Codes { source: "FANUC 0-M manual, canned cycles (seed 003) and the FANUC 0i-MC G-code table", codes: G_CODES }, super::Codes { source: "the FANUC 0i-MC G-code table (the 0-M's own table was not at hand)", codes: super::later::FANUC_0M }],
     m_codes: &[super::Codes { source: "FANUC 0-M manual (seed 003: M03-M05 in the tapping cycles); FANUC 0i-MC M codes", codes: common::M_CODES }, super::Codes { source: "FANUC 0-M manual (seed 003) and FANUC 0i-MC M codes", codes: M_CODES }],
-    params: &[PARAMS, TRANSFORMS, super::FANUC_INPUT, DRY_RUN, super::builder::FANUC, super::FANUC_MACRO, super::FANUC_G60, SETTINGS],
+    params: &[PARAMS_0I, PARAMS, TRANSFORMS, super::FANUC_INPUT, DRY_RUN, super::builder::FANUC, super::FANUC_MACRO, super::FANUC_G60, SETTINGS],
     time: TimeKeys {
         rapid: [ParamKey::Number(518, None), ParamKey::Number(519, None), ParamKey::Number(520, None)],
         dry_run: ParamKey::Setting("dry_run_mm_min"),
@@ -265,3 +271,5 @@ pub static PROFILE: Profile = Profile {
     summary: "FANUC 0-M machining centre. G90/G91, G17 at power on. Lengths without a decimal point \
 are least input increments (X100 = 0.1 mm), F without a point is mm/min.",
 };
+
+pub static PROFILE: Profile = BASE;

@@ -39,7 +39,7 @@ const EXTRA: &[GDef] = &[
     g(34, Group::Motion, GFn::Thread(ThreadCmd::VariableLead), "variable-lead thread cutting: F the lead at the start, K its change per revolution, Q start angle"),
 ];
 
-const PARAMS: &[ParamDef] = &[
+pub(super) const PARAMS: &[ParamDef] = &[
     ParamDef {
         key: ParamKey::Number(5139, None),
         meaning: "G74/G75 return amount e at power on; their first block R rewrites it",
@@ -69,7 +69,8 @@ const PARAMS: &[ParamDef] = &[
     },
 ];
 
-pub static PROFILE: Profile = Profile {
+/// The profile's data, for the profiles built on it (the FANUC 0i-F).
+pub(super) const BASE: Profile = Profile {
     name: "fanuc0t",
     title: "FANUC 0-T lathe (G-code system A)",
     kind: MachineKind::Lathe,
@@ -116,3 +117,5 @@ pub static PROFILE: Profile = Profile {
 a decimal point are least input increments (X100 = 0.1 mm, X1 = 0.0001 inch under G20). Feed per \
 revolution (G99) at power on.",
 };
+
+pub static PROFILE: Profile = BASE;

@@ -8,6 +8,7 @@
 
 mod builder;
 mod common;
+mod fanuc0i;
 mod fanuc0m;
 mod fanuc0t;
 mod gsk980tdi;
@@ -517,6 +518,9 @@ pub struct FrameRules {
     pub transform_keys: TransformKeys,
     /// G62's inner-corner override, where the profile has it.
     pub corner_override: Option<CornerOverrideKeys>,
+    /// The bit that says what G02/G03 with neither R nor a centre word does: 0 a straight move
+    /// to the end point, 1 alarm PS0022 (FANUC 0i-F 3403#5 CIR); without one, the alarm.
+    pub arc_without_centre: Option<ParamKey>,
     pub source: &'static str,
 }
 
@@ -603,6 +607,10 @@ pub struct DrawingRules {
     /// degree chamfer to an X move), `G01 X_ K_` (to a Z move), `G01 Z_ R_` or `X_ R_` (a corner
     /// arc), the sign the next move's way.
     pub right_angle: bool,
+    /// The bit that makes the drawing's words plain C, R and A, without the comma, and C the
+    /// right-angle chamfer instead of I/K (FANUC 0i-TF 3405#4 CCR = 1); then A and C cannot be
+    /// axes. Without one, the comma words only.
+    pub plain_letters: Option<ParamKey>,
     pub source: &'static str,
 }
 
@@ -618,6 +626,7 @@ impl DrawingRules {
         corner_needs_g01: false,
         any_plane: true,
         right_angle: false,
+        plain_letters: None,
         source: "GSK980TDi help text: chamfer function; angle programming notes 1-8",
     };
     /// FANUC 0-T direct drawing dimension programming (`,A` `,C` `,R`): the forms and alarms
@@ -632,6 +641,7 @@ impl DrawingRules {
         corner_needs_g01: true,
         any_plane: false,
         right_angle: true,
+        plain_letters: None,
         source: "FANUC lathe manuals, direct drawing dimension programming (the forms from a secondary source; alarms 051-058, 212)",
     };
 
@@ -657,6 +667,7 @@ impl FrameRules {
         box_by_tip: true,
         transform_keys: TransformKeys::NONE,
         corner_override: None,
+        arc_without_centre: None,
         source: "FANUC 0i manuals as recalled (G30 P2-P4; G92 after G54 in one block sets the system selected; 5002#4 LGT, #6 LWM; G10 forms); docs/reference/macro.md 10",
     };
     pub const GSK: FrameRules = FrameRules {
@@ -674,6 +685,7 @@ impl FrameRules {
         box_by_tip: false,
         transform_keys: TransformKeys::NONE,
         corner_override: None,
+        arc_without_centre: None,
         source: "GSK980TDi help text: G54-G59 note 6, G28 note 2, G30 (P2-P4) note 3, G10 L3 and L52 only; the offset mode's parameter number not found (an ncsight setting)",
     };
 }
@@ -1227,8 +1239,8 @@ pub struct Profile {
 }
 
 /// All profiles, in the order `ncsight machines` lists them.
-pub fn all() -> [&'static Profile; 5] {
-    [&gsk980tdi::PROFILE, &gsk988t::PROFILE, &fanuc0m::PROFILE, &yasnac_lx3::PROFILE, &fanuc0t::PROFILE]
+pub fn all() -> [&'static Profile; 7] {
+    [&gsk980tdi::PROFILE, &gsk988t::PROFILE, &fanuc0m::PROFILE, &yasnac_lx3::PROFILE, &fanuc0t::PROFILE, &fanuc0i::TF, &fanuc0i::MF]
 }
 
 /// The profile of that name.

@@ -1,0 +1,160 @@
+//! FANUC 0i-F (issue 35): the 0i-TF turning centre and the 0i-MF machining centre, the
+//! controllers most shop programmes today are written for. Each is the FANUC 0-T (0-M) profile's
+//! data with the 0i-F's own parameters where they change an everyday programme (docs/profiles.md
+//! names each row's source):
+//! - 3403#5 CIR: G02/G03 with neither R nor I/J/K is a straight move (0) or alarm PS0022 (1);
+//! - 3405#4 CCR (lathe): the drawing's words C, R, A without the comma, C the right-angle chamfer;
+//! - the 0i's parameter numbers on the machining centre (1420 rapid, 1422 feed limit, 5114/5115
+//!   peck amounts, 5101#4/#5 the G76/G87 shift).
+
+use super::{fanuc0m, fanuc0t, DrawingRules, FrameRules, ParamDef, ParamKey, Profile, TimeKeys};
+
+/// 3403#5 CIR, both machines.
+const CIR: ParamKey = ParamKey::Number(3403, Some(5));
+/// 3405#4 CCR, the lathe.
+const CCR: ParamKey = ParamKey::Number(3405, Some(4));
+
+const ARC: &[ParamDef] = &[ParamDef {
+    key: CIR,
+    meaning: "CIR: G02/G03 with neither R nor I, J, K: 0 = a straight move to the end point, 1 = alarm PS0022",
+    unit: "bit",
+    min: 0.0,
+    max: 1.0,
+    default: 0.0,
+    source: "FANUC 0i-F parameter manual, 3403#5 CIR (as recalled; docs/profiles.md)",
+}];
+
+const DRAWING: &[ParamDef] = &[ParamDef {
+    key: CCR,
+    meaning: "CCR: 0 = chamfer and corner R by I, K, R and the drawing's words ,C ,R ,A; 1 = C, R, A without the comma (C the chamfer, A and C no axes)",
+    unit: "bit",
+    min: 0.0,
+    max: 1.0,
+    default: 0.0,
+    source: "FANUC 0i-TF parameter manual, 3405#4 CCR (as recalled; docs/profiles.md)",
+}];
+
+/// The machining centre's rates and cycle amounts by their 0i numbers.
+const MILL: &[ParamDef] = &[
+    ParamDef {
+        key: ParamKey::Number(1420, None),
+        meaning: "rapid traverse rate (each axis)",
+        unit: "mm/min",
+        min: 1.0,
+        max: 100000.0,
+        default: 15000.0,
+        source: "FANUC 0i-F parameter manual numbering (No. 1420); default assumed",
+    },
+    ParamDef {
+        key: ParamKey::Number(1422, None),
+        meaning: "upper limit of the cutting feed",
+        unit: "mm/min",
+        min: 6.0,
+        max: 100000.0,
+        default: 5000.0,
+        source: "FANUC 0i parameter manual numbering (No. 1422, as recalled); default assumed",
+    },
+    ParamDef {
+        key: ParamKey::Number(5114, None),
+        meaning: "G73 retract amount d",
+        unit: "0.001 mm",
+        min: 0.0,
+        max: 32767.0,
+        default: 500.0,
+        source: "FANUC 0i parameter manual numbering (No. 5114, as recalled); default assumed",
+    },
+    ParamDef {
+        key: ParamKey::Number(5115, None),
+        meaning: "G83 clearance d above the previous depth",
+        unit: "0.001 mm",
+        min: 0.0,
+        max: 32767.0,
+        default: 500.0,
+        source: "FANUC 0i parameter manual numbering (No. 5115, as recalled); default assumed",
+    },
+    ParamDef {
+        key: ParamKey::Number(5101, Some(4)),
+        meaning: "RD1: G76/G87 shift direction, with bit 5 (RD2): (bit 5, bit 4) 00 = +X, 01 = -X, 10 = +Y, 11 = -Y",
+        unit: "bit",
+        min: 0.0,
+        max: 1.0,
+        default: 0.0,
+        source: "FANUC 0i parameter manual numbering (5101#4 RD1, #5 RD2, as recalled)",
+    },
+    ParamDef {
+        key: ParamKey::Number(5101, Some(5)),
+        meaning: "RD2: G76/G87 shift direction, see 5101.4",
+        unit: "bit",
+        min: 0.0,
+        max: 1.0,
+        default: 0.0,
+        source: "FANUC 0i parameter manual numbering (5101#5 RD2, as recalled)",
+    },
+];
+
+const TF_PARAMS: &[&[ParamDef]] = &[
+    super::FANUC_RATES,
+    fanuc0t::PARAMS,
+    super::lathe_drill::PARAMS,
+    super::FANUC_G76,
+    super::FANUC_INPUT,
+    super::DRY_RUN,
+    super::builder::FANUC,
+    super::FANUC_MACRO,
+    super::FANUC_LATHE_OFFSETS,
+    ARC,
+    DRAWING,
+    super::SETTINGS,
+];
+
+pub static TF: Profile = Profile {
+    name: "fanuc0i-tf",
+    title: "FANUC 0i-TF lathe (G-code system A)",
+    params: TF_PARAMS,
+    frame: FrameRules {
+        drawing: Some(DrawingRules { plain_letters: Some(CCR), ..DrawingRules::FANUC_T }),
+        arc_without_centre: Some(CIR),
+        ..fanuc0t::BASE.frame
+    },
+    summary: "FANUC 0i-TF turning centre, G-code system A: the FANUC 0-T's words, with the 0i-F's \
+parameters 3403#5 (G02/G03 without R or I/K: a straight move) and 3405#4 (C, R, A without the \
+comma). X is a diameter, U/W incremental; Y (V), C (H) and a sub-spindle's B come from the \
+setup's [machine] axes. Lengths without a decimal point are least input increments (X100 = 0.1 mm).",
+    ..fanuc0t::BASE
+};
+
+const MF_PARAMS: &[&[ParamDef]] = &[
+    fanuc0m::PARAMS_0I,
+    MILL,
+    fanuc0m::TRANSFORMS,
+    super::FANUC_INPUT,
+    super::DRY_RUN,
+    super::builder::FANUC,
+    super::FANUC_MACRO,
+    super::FANUC_G60,
+    ARC,
+    super::SETTINGS,
+];
+
+pub static MF: Profile = Profile {
+    name: "fanuc0i-mf",
+    title: "FANUC 0i-MF machining centre",
+    params: MF_PARAMS,
+    time: TimeKeys {
+        rapid: [ParamKey::Number(1420, None), ParamKey::Number(1420, None), ParamKey::Number(1420, None)],
+        dry_run: ParamKey::Setting("dry_run_mm_min"),
+        feed_max: ParamKey::Number(1422, None),
+    },
+    drill: super::DrillRules {
+        g73_retract_um: Some(ParamKey::Number(5114, None)),
+        g83_clearance_um: Some(ParamKey::Number(5115, None)),
+        shift_bits: Some((ParamKey::Number(5101, Some(4)), ParamKey::Number(5101, Some(5)))),
+        lathe_peck_full_return: None,
+    },
+    frame: FrameRules { arc_without_centre: Some(CIR), ..fanuc0m::BASE.frame },
+    summary: "FANUC 0i-MF machining centre: the FANUC 0-M's words and cycles with the 0i-F's parameter \
+numbers (1420 rapid, 1422 feed limit, 5114/5115 peck amounts) and 3403#5 (G02/G03 without R or \
+I/J/K: a straight move). G90/G91, G17 at power on; lengths without a decimal point are least \
+input increments (X100 = 0.1 mm).",
+    ..fanuc0m::BASE
+};
