@@ -14,8 +14,10 @@ pub const MAX_PROGRAM_NUMBER: u32 = 9999;
 /// call or the return: docs/reference/macro.md section 11, inferred).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Flow {
-    /// M98: run programme O`number` `count` times, then go on after the calling block.
-    Call { number: u32, count: u32, span: Span },
+    /// M98: run programme O`number` `count` times, then go on after the calling block; with
+    /// `sequence` (`M98 Q_`, FANUC 0i-F), the running programme's blocks from N`sequence` to its
+    /// M99 (`number` is then 0).
+    Call { number: u32, count: u32, span: Span, sequence: Option<u32> },
     /// M99: back to the caller, to its block N`sequence` when P gives one (GSK980TDi help text,
     /// M99); in a main programme, the programme starts again.
     Return { sequence: Option<u32>, span: Span },
@@ -36,9 +38,20 @@ fn whole(step: &Step, w: &Word, what: &str, max: u32) -> Result<u32, Diagnostic>
 /// `M98 P<number> L<count>` where the profile takes L.
 pub(super) fn call(step: &Step, words: &mut Words, m: &Word) -> Result<Flow, Diagnostic> {
     let rules = step.profile.calls;
+    // FANUC 0i-F: `M98 Q100 [L2]` runs the blocks from N100 of this programme to its M99.
+    if let (true, None, Some(q)) = (rules.sequence_q, words.peek(b'P'), words.peek(b'Q')) {
+        words.take(b'Q');
+        let sequence = whole(step, q, "M98 Q (the sequence number to call)", 99_999)?;
+        let count = match words.take(b'L') {
+            Some(l) => whole(step, l, "the repeat count L", rules.max_count)?,
+            None => 1,
+        };
+        return Ok(Flow::Call { number: 0, count: count.max(1), span: m.span.to(q.span), sequence: Some(sequence) });
+    }
     let Some(p) = words.take(b'P') else {
         // FANUC 0 alarm 076; the GSK980TDi help text gives M98 only with P.
-        return Err(step.alarm(Rule::AddressPMissing, m.span, format!("{}: the subprogramme to call is not given (P)", m.text())));
+        let hint = if words.has(b'Q') { "M98 Q (a sequence number of the same programme) is the FANUC 0i-F's: choose fanuc0i-tf or fanuc0i-mf" } else { "M98 P<programme number>" };
+        return Err(step.alarm(Rule::AddressPMissing, m.span, format!("{}: the subprogramme to call is not given (P)", m.text())).with_hint(hint));
     };
     let span = m.span.to(p.span);
     let l = words.peek(b'L');
@@ -62,7 +75,7 @@ pub(super) fn call(step: &Step, words: &mut Words, m: &Word) -> Result<Flow, Dia
         }
     };
     // A count of 0 calls once, as no count does (docs/reference/macro.md section 2, inferred).
-    Ok(Flow::Call { number, count: count.max(1), span })
+    Ok(Flow::Call { number, count: count.max(1), span, sequence: None })
 }
 
 /// `M99` or `M99 P<sequence number>`.

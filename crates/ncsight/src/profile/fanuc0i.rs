@@ -7,7 +7,7 @@
 //! - the 0i's parameter numbers on the machining centre (1420 rapid, 1422 feed limit, 5114/5115
 //!   peck amounts, 5101#4/#5 the G76/G87 shift).
 
-use super::{fanuc0m, fanuc0t, DrawingRules, FrameRules, ParamDef, ParamKey, Profile, TimeKeys};
+use super::{fanuc0m, fanuc0t, CallRules, DrawingRules, FrameRules, ParamDef, ParamKey, Profile, TimeKeys};
 
 /// 3403#5 CIR, both machines.
 const CIR: ParamKey = ParamKey::Number(3403, Some(5));
@@ -116,6 +116,7 @@ pub static TF: Profile = Profile {
         arc_without_centre: Some(CIR),
         ..fanuc0t::BASE.frame
     },
+    calls: CallRules { sequence_q: true, source: "FANUC 0i-F: M98 Q (a sequence number of the same programme) as the issue's shop programmes use it; M98 P as the FANUC 0i-TB/MB operator's manual 12.3", ..CallRules::FANUC },
     summary: "FANUC 0i-TF turning centre, G-code system A: the FANUC 0-T's words, with the 0i-F's \
 parameters 3403#5 (G02/G03 without R or I/K: a straight move) and 3405#4 (C, R, A without the \
 comma). X is a diameter, U/W incremental; Y (V), C (H) and a sub-spindle's B come from the \
@@ -152,6 +153,7 @@ pub static MF: Profile = Profile {
         lathe_peck_full_return: None,
     },
     frame: FrameRules { arc_without_centre: Some(CIR), ..fanuc0m::BASE.frame },
+    calls: CallRules { sequence_q: true, source: "FANUC 0i-F: M98 Q (a sequence number of the same programme) as the issue's shop programmes use it; M98 P as the FANUC 0i-TB/MB operator's manual 12.3", ..CallRules::FANUC },
     summary: "FANUC 0i-MF machining centre: the FANUC 0-M's words and cycles with the 0i-F's parameter \
 numbers (1420 rapid, 1422 feed limit, 5114/5115 peck amounts) and 3403#5 (G02/G03 without R or \
 I/J/K: a straight move). G90/G91, G17 at power on; lengths without a decimal point are least \

@@ -148,6 +148,7 @@ pub static PROFILE: Profile = Profile {
         l_count: false,
         max_depth: 4,
         builder: super::BuilderCalls::NONE,
+        sequence_q: false,
         source: "inferred from the GSK980TDi help text, M98 (count 1-9999, no L; four levels)",
     },
     macros: super::MacroRules {

@@ -401,6 +401,9 @@ pub struct CallRules {
     pub max_depth: u8,
     /// Calls a machine builder sets up by parameter.
     pub builder: BuilderCalls,
+    /// `M98 Q<n>` (no P) calls the blocks from N`n` of the running programme to its M99
+    /// (FANUC 0i-F).
+    pub sequence_q: bool,
     /// The manual this comes from, and what was inferred.
     pub source: &'static str,
 }
@@ -438,6 +441,7 @@ impl CallRules {
         l_count: true,
         max_depth: 4,
         builder: BuilderCalls::FANUC,
+        sequence_q: false,
         source: "FANUC 0i-TB/MB operator's manual 12.3 (count 1-999, four levels); M98 P_ L_ as on the FANUC 0-M (inferred for the lathe)",
     };
 }

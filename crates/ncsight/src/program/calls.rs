@@ -52,6 +52,9 @@ pub(super) struct Frame {
     pub number: u32,
     /// The place of its O block (known once found).
     pub start: Option<Place>,
+    /// Where each run of a call by sequence number (`M98 Q`) begins: its N block, in the
+    /// calling programme (known once found).
+    pub entry: Option<Place>,
     /// The block after the calling one.
     pub back: Place,
     /// Runs left after this one (M98 P3... calls three times).
@@ -81,6 +84,8 @@ pub(super) enum Target {
     Sequence(u32),
     /// N`n` in the running programme (GOTO).
     Goto(u32),
+    /// N`n` in the running programme, called by `M98 Q`.
+    CallSequence(u32),
     /// The `END m` of a WHILE whose condition does not hold.
     LoopEnd(u32),
     /// The `END m` of a WHILE whose body is about to run for the first time: read ahead only

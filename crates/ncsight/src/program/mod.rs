@@ -1660,7 +1660,7 @@ impl Core {
             self.vars.levels.push(l);
         }
         let start = self.calls.program(self.file, number);
-        self.calls.frames.push(Frame { number, start, back, remaining: count.max(1) - 1, call: span, macro_call, builder });
+        self.calls.frames.push(Frame { number, start, entry: None, back, remaining: count.max(1) - 1, call: span, macro_call, builder });
         match start {
             Some(p) => {
                 self.seek(p);
@@ -1672,6 +1672,33 @@ impl Core {
                 let scope = Place::start_of(self.file);
                 self.leave_linear();
                 self.calls.search = Some(Search { target: Target::Program(number), from: back, scope, wrapped: false, once: false, asked_by: span, resume: Some(back) });
+                Ok(true)
+            }
+        }
+    }
+
+    /// `M98 Q<n> [L<count>]` (FANUC 0i-F): the running programme's blocks from N`n` to its M99,
+    /// `count` times, then on after the calling block. A level of subprogramme nesting as M98 P.
+    fn call_sequence(&mut self, n: u32, count: u32, span: Span, back: Place) -> Result<bool, Diagnostic> {
+        let profile = self.interp.profile();
+        let max = profile.calls.max_depth;
+        let depth = self.calls.frames.iter().filter(|f| f.start.is_some() && !f.macro_call).count();
+        if depth >= max as usize {
+            let msg = format!("M98 Q{n} would be the {}th nested subprogramme call: {} allows {max} levels", max + 1, profile.name);
+            return Err(Diagnostic::new(Rule::CallNesting, profile.alarm_style, span, msg));
+        }
+        // The frame keeps the calling programme's start, so GOTO and M99 P look there.
+        let (number, scope) = self.calls.running().map_or((0, Place::start_of(self.file)), |(n, s)| (n.unwrap_or(0), s));
+        let entry = self.calls.sequence(scope, n);
+        self.calls.frames.push(Frame { number, start: Some(scope), entry, back, remaining: count.max(1) - 1, call: span, macro_call: false, builder: false });
+        match entry {
+            Some(p) => {
+                self.seek(p);
+                Ok(false)
+            }
+            None => {
+                self.leave_linear();
+                self.calls.search = Some(Search { target: Target::CallSequence(n), from: back, scope, wrapped: false, once: false, asked_by: span, resume: Some(back) });
                 Ok(true)
             }
         }
@@ -1777,7 +1804,17 @@ impl Core {
         let profile = self.interp.profile();
         let next = Place { block: place.block.saturating_add(1), ..place };
         match flow {
-            Flow::Call { number, count, mut span } => {
+            Flow::Call { count, mut span, sequence: Some(n), .. } => {
+                span.file = self.file;
+                match self.call_sequence(n, count, span, next) {
+                    Ok(go_on) => go_on,
+                    Err(d) => {
+                        self.alarm(d, sink);
+                        self.mode != Mode::Run
+                    }
+                }
+            }
+            Flow::Call { number, count, mut span, sequence: None } => {
                 span.file = self.file;
                 match self.call(number, count, span, next, None) {
                     Ok(go_on) => go_on,
@@ -1813,7 +1850,7 @@ impl Core {
                 };
                 if sequence.is_none() && frame.remaining > 0 {
                     frame.remaining -= 1;
-                    let start = frame.start.unwrap_or(place);
+                    let start = frame.entry.or(frame.start).unwrap_or(place);
                     self.seek(start);
                     return false;
                 }
@@ -1862,7 +1899,7 @@ impl Core {
                 }
                 Searched::Found
             }
-            Target::Sequence(_) | Target::Goto(_) | Target::LoopEnd(_) | Target::LoopEndAhead(_) if b.program.is_some() && place != s.scope => {
+            Target::Sequence(_) | Target::Goto(_) | Target::CallSequence(_) | Target::LoopEnd(_) | Target::LoopEndAhead(_) if b.program.is_some() && place != s.scope => {
                 // The programme's text ends at the next programme's O.
                 self.search_ends(sink);
                 Searched::Stop
@@ -1870,6 +1907,14 @@ impl Core {
             Target::Sequence(n) | Target::Goto(n) if b.sequence == Some(n) => {
                 self.calls.search = None;
                 self.calls.note_sequence(s.scope, n, place);
+                Searched::Found
+            }
+            Target::CallSequence(n) if b.sequence == Some(n) => {
+                self.calls.search = None;
+                self.calls.note_sequence(s.scope, n, place);
+                if let Some(f) = self.calls.frames.last_mut() {
+                    f.entry = Some(place);
+                }
                 Searched::Found
             }
             // The END of a loop not run: the search ends past it.
@@ -1925,6 +1970,7 @@ impl Core {
             Target::Program(n) => (format!("O{n:04}: the main programme named is not in the file"), "name a programme the file holds with --main"),
             Target::Sequence(n) => (format!("N{n}: M99 P returns to a block with this sequence number, and the calling programme has none"), "the N of M99 P must be in the calling programme"),
             Target::Goto(n) => (format!("GOTO {n}: the programme has no block N{n}"), "the N of GOTO must be in the same programme"),
+            Target::CallSequence(n) => (format!("M98 Q{n}: the programme has no block N{n}"), "M98 Q calls a sequence number of the same programme"),
             Target::LoopEnd(m) | Target::LoopEndAhead(m) => (format!("WHILE [..] DO{m}: no END{m} follows in the programme"), "each WHILE [..] DOm ends with ENDm"),
         };
         let message = if passed_over.is_empty() { message } else { format!("{message}; passed over, not readable as a programme file: {}", passed_over.join(", ")) };
@@ -1947,6 +1993,13 @@ impl Core {
         };
         let d = Diagnostic::new(rule, profile.alarm_style, s.asked_by, message).with_hint(hint);
         self.flush_pending(sink);
+        // A call by sequence number that found none is no call: its frame goes first.
+        let sequence_call = matches!(s.target, Target::CallSequence(_));
+        if sequence_call {
+            if let Some(f) = self.calls.frames.pop() {
+                self.left(&f);
+            }
+        }
         self.alarm(d, sink);
         if calling {
             if let Some(f) = self.calls.frames.pop() {
