@@ -424,7 +424,7 @@ fn lathe_from_r_block(step: &mut Step, words: &mut Words, kind: DrillKind) -> Re
 
 /// The R level and the hole bottom of a FANUC 0-T lathe cycle along `along`: R from the initial
 /// level, the bottom absolute or from the R level; the alarms for a hole of no depth and for an
-/// R level outside the initial level and the bottom.
+/// R level beyond the bottom.
 fn lathe_levels(step: &Step, code: &str, along: usize) -> Result<(f64, f64), Diagnostic> {
     let d = step.st.drill;
     let axis_name = axis_name(along);
@@ -434,12 +434,15 @@ fn lathe_levels(step: &Step, code: &str, along: usize) -> Result<(f64, f64), Dia
     if (bottom - r_level).abs() < 1e-9 {
         return Err(step.alarm(Rule::DrillLevels, step.span, format!("{code}: the hole bottom {axis_name} is at the R level: there is nothing to drill")));
     }
-    if (d.initial - r_level) * (bottom - r_level) > 1e-12 {
-        // The R level lies between the initial level and the bottom, as on the FANUC 0-M.
+    if (bottom - d.initial) * (bottom - r_level) <= 1e-12 {
+        // The hole is drilled from the R level toward the bottom, the initial level on the R
+        // level's side. An R level beyond the initial level (R away from the part) is taken as
+        // the FANUC 0-M takes it: a rapid out to R first (the 0i-T's R is a signed distance
+        // from the initial level, parameter 5102#6 RAB 0; no alarm is documented: inferred).
         return Err(step.alarm(
             Rule::DrillLevels,
             step.span,
-            format!("{code}: R {r_level:.3} and bottom {bottom:.3}: the R level must lie between the initial level {:.3} and the hole bottom", d.initial),
+            format!("{code}: R {r_level:.3} and bottom {bottom:.3}: the R level must lie on the initial level's side of the hole bottom (initial level {:.3})", d.initial),
         ));
     }
     Ok((r_level, bottom))
