@@ -12,7 +12,7 @@ pub const MAX_PROGRAM_NUMBER: u32 = 9999;
 
 /// A jump a block asks the programme driver for, after its motion (the move first, then the
 /// call or the return: docs/reference/macro.md section 11, inferred).
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Flow {
     /// M98: run programme O`number` `count` times, then go on after the calling block; with
     /// `sequence` (`M98 Q_`, FANUC 0i-F), the running programme's blocks from N`sequence` to its
@@ -21,6 +21,10 @@ pub enum Flow {
     /// M99: back to the caller, to its block N`sequence` when P gives one (GSK980TDi help text,
     /// M99); in a main programme, the programme starts again.
     Return { sequence: Option<u32>, span: Span },
+    /// G70 P(ns) Q(nf) whose blocks no roughing cycle collected, on a controller whose G70 reads
+    /// them from the programme (FANUC): the programme runs its blocks N`ns` to N`nf` for real,
+    /// then the tool goes back to the start point ([`super::Interpreter::finish_return`]).
+    Finish(super::FinishRequest),
 }
 
 /// A whole number written without a decimal point, in `0..=max`.

@@ -465,6 +465,12 @@ impl Interpreter {
             return Err(self.contour_alarm(Rule::ContourCommand, req.span, "G70 cannot run inside the contour it is finishing".into()));
         }
         let Some(contour) = self.contours.iter().find(|c| (c.ns, c.nf) == (req.ns, req.nf)) else {
+            if self.profile.calls.g70_reads_programme {
+                // FANUC: G70 runs the blocks N ns to N nf of the programme, whichever roughing
+                // collected them (or none): the programme driver finds and runs them.
+                out.flow = Some(super::Flow::Finish(req));
+                return Ok(());
+            }
             return Err(self.contour_alarm(
                 Rule::ContourNotFound,
                 req.span,
@@ -494,9 +500,21 @@ impl Interpreter {
         out.increment_words_small += scratch.increment_words_small;
         self.replaying = false;
         result?;
-        // Back to the start point at rapid (the cycle's end, as G71 step 8), checked against
-        // the soft limits as every move; a contour move still held in radius compensation is
-        // made first (it ends perpendicular), and the return starts where the tool is.
+        self.finish_return(req, out)
+    }
+
+    /// The blocks of a G70 run from the programme's text (`on`), or no longer (the programme
+    /// driver's [`super::Flow::Finish`]): inside them G70-G73, M98 and M99 alarm.
+    pub fn set_finishing(&mut self, on: bool) {
+        self.replaying = on;
+    }
+
+    /// The end of G70: back to the start point at rapid (the cycle's end, as G71 step 8),
+    /// checked against the soft limits as every move; a contour move still held in radius
+    /// compensation is made first (it ends perpendicular), and the return starts where the tool
+    /// is. Its records go to `out`, the last one ending the block (single block stops after the
+    /// whole G70).
+    pub fn finish_return(&mut self, req: FinishRequest, out: &mut Outcome) -> Result<(), Diagnostic> {
         let from = self.state.pos;
         let before = self.state;
         let mut scratch = Outcome::default();

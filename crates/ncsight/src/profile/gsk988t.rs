@@ -149,6 +149,7 @@ pub static PROFILE: Profile = Profile {
         max_depth: 4,
         builder: super::BuilderCalls::NONE,
         sequence_q: false,
+        g70_reads_programme: false,
         source: "inferred from the GSK980TDi help text, M98 (count 1-9999, no L; four levels)",
     },
     macros: super::MacroRules {

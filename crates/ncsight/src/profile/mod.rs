@@ -404,6 +404,9 @@ pub struct CallRules {
     /// `M98 Q<n>` (no P) calls the blocks from N`n` of the running programme to its M99
     /// (FANUC 0i-F).
     pub sequence_q: bool,
+    /// G70 P(ns) Q(nf) runs the programme's blocks N`ns` to N`nf` when no G71-G73 collected
+    /// that range (FANUC: G70 reads them from memory); else alarm PS0063.
+    pub g70_reads_programme: bool,
     /// The manual this comes from, and what was inferred.
     pub source: &'static str,
 }
@@ -442,6 +445,7 @@ impl CallRules {
         max_depth: 4,
         builder: BuilderCalls::FANUC,
         sequence_q: false,
+        g70_reads_programme: true,
         source: "FANUC 0i-TB/MB operator's manual 12.3 (count 1-999, four levels); M98 P_ L_ as on the FANUC 0-M (inferred for the lathe)",
     };
 }

@@ -95,6 +95,7 @@ pub static PROFILE: Profile = Profile {
     calls: super::CallRules {
         l_count: true,
         builder: super::BuilderCalls::NONE,
+        g70_reads_programme: false,
         source: "inferred: as FANUC (no YASNAC LX3 text on M98 was at hand)",
         ..super::CallRules::FANUC
     },

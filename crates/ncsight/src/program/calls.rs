@@ -55,6 +55,8 @@ pub(super) struct Frame {
     /// Where each run of a call by sequence number (`M98 Q`) begins: its N block, in the
     /// calling programme (known once found).
     pub entry: Option<Place>,
+    /// A G70 running the programme's blocks N ns to N nf: it ends after N nf.
+    pub finishing: Option<crate::interp::FinishRequest>,
     /// The block after the calling one.
     pub back: Place,
     /// Runs left after this one (M98 P3... calls three times).

@@ -1541,6 +1541,11 @@ impl Core {
                     }
                 }
                 self.pass_on(sink);
+                if let Some(req) = self.calls.frames.last().and_then(|f| f.finishing) {
+                    if block.sequence == Some(req.nf) || self.interp.state().ended {
+                        return self.end_finishing(req, block, sink);
+                    }
+                }
                 if self.interp.state().ended {
                     self.status = Status::Ended;
                     if self.mode == Mode::Run {
@@ -1554,8 +1559,14 @@ impl Core {
             Err(d) => {
                 // The thread being cut when the next block alarms is finished first.
                 self.flush_pending(sink);
+                let finishing = self.leave_finishing();
                 self.alarm(d, sink);
                 if self.mode == Mode::Run {
+                    return false;
+                }
+                // A check goes on after the G70 whose blocks alarmed.
+                if let Some(f) = finishing {
+                    self.seek(f.back);
                     return false;
                 }
                 // A programme end inside an unfinished contour still ends the programme.
@@ -1565,6 +1576,40 @@ impl Core {
             }
         }
         true
+    }
+
+    /// The G70 running the programme's blocks has run N nf (or met the programme's end first:
+    /// alarm PS0063): back to its start point, then on after the G70 block.
+    fn end_finishing(&mut self, req: crate::interp::FinishRequest, block: &Block, sink: &mut dyn FnMut(Event)) -> bool {
+        let Some(frame) = self.leave_finishing() else { return true };
+        let result = if block.sequence == Some(req.nf) {
+            self.interp.finish_return(req, &mut self.outcome)
+        } else {
+            let style = self.interp.profile().alarm_style;
+            Err(Diagnostic::new(Rule::ContourNotFound, style, req.span, format!("G70 Q{}: the programme ends before block N{}", req.nf, req.nf)))
+        };
+        match result {
+            Ok(()) => self.pass_on(sink),
+            Err(d) => {
+                self.alarm(d, sink);
+                if self.mode == Mode::Run || self.interp.state().ended {
+                    return false;
+                }
+            }
+        }
+        self.seek(frame.back);
+        false
+    }
+
+    /// A G70 running the programme's blocks ends (its last block, an alarm): its frame goes.
+    fn leave_finishing(&mut self) -> Option<Frame> {
+        if self.calls.frames.last().is_none_or(|f| f.finishing.is_none()) {
+            return None;
+        }
+        self.interp.set_finishing(false);
+        let f = self.calls.frames.pop()?;
+        self.left(&f);
+        Some(f)
     }
 
     /// A new line of `bytes` bytes (its break included) begins where the last one ended.
@@ -1660,7 +1705,7 @@ impl Core {
             self.vars.levels.push(l);
         }
         let start = self.calls.program(self.file, number);
-        self.calls.frames.push(Frame { number, start, entry: None, back, remaining: count.max(1) - 1, call: span, macro_call, builder });
+        self.calls.frames.push(Frame { number, start, entry: None, finishing: None, back, remaining: count.max(1) - 1, call: span, macro_call, builder });
         match start {
             Some(p) => {
                 self.seek(p);
@@ -1679,7 +1724,7 @@ impl Core {
 
     /// `M98 Q<n> [L<count>]` (FANUC 0i-F): the running programme's blocks from N`n` to its M99,
     /// `count` times, then on after the calling block. A level of subprogramme nesting as M98 P.
-    fn call_sequence(&mut self, n: u32, count: u32, span: Span, back: Place) -> Result<bool, Diagnostic> {
+    fn call_sequence(&mut self, n: u32, count: u32, span: Span, back: Place, finishing: Option<crate::interp::FinishRequest>) -> Result<bool, Diagnostic> {
         let profile = self.interp.profile();
         let max = profile.calls.max_depth;
         let depth = self.calls.frames.iter().filter(|f| f.start.is_some() && !f.macro_call).count();
@@ -1690,7 +1735,10 @@ impl Core {
         // The frame keeps the calling programme's start, so GOTO and M99 P look there.
         let (number, scope) = self.calls.running().map_or((0, Place::start_of(self.file)), |(n, s)| (n.unwrap_or(0), s));
         let entry = self.calls.sequence(scope, n);
-        self.calls.frames.push(Frame { number, start: Some(scope), entry, back, remaining: count.max(1) - 1, call: span, macro_call: false, builder: false });
+        self.calls.frames.push(Frame { number, start: Some(scope), entry, finishing, back, remaining: count.max(1) - 1, call: span, macro_call: false, builder: false });
+        if finishing.is_some() {
+            self.interp.set_finishing(true);
+        }
         match entry {
             Some(p) => {
                 self.seek(p);
@@ -1806,7 +1854,20 @@ impl Core {
         match flow {
             Flow::Call { count, mut span, sequence: Some(n), .. } => {
                 span.file = self.file;
-                match self.call_sequence(n, count, span, next) {
+                match self.call_sequence(n, count, span, next, None) {
+                    Ok(go_on) => go_on,
+                    Err(d) => {
+                        self.alarm(d, sink);
+                        self.mode != Mode::Run
+                    }
+                }
+            }
+            // G70 whose blocks no roughing collected (FANUC: read from the programme): its
+            // blocks N ns to N nf run as a call by sequence number that ends after N nf.
+            Flow::Finish(req) => {
+                let mut span = req.span;
+                span.file = self.file;
+                match self.call_sequence(req.ns, 1, span, next, Some(req)) {
                     Ok(go_on) => go_on,
                     Err(d) => {
                         self.alarm(d, sink);
@@ -1970,6 +2031,9 @@ impl Core {
             Target::Program(n) => (format!("O{n:04}: the main programme named is not in the file"), "name a programme the file holds with --main"),
             Target::Sequence(n) => (format!("N{n}: M99 P returns to a block with this sequence number, and the calling programme has none"), "the N of M99 P must be in the calling programme"),
             Target::Goto(n) => (format!("GOTO {n}: the programme has no block N{n}"), "the N of GOTO must be in the same programme"),
+            Target::CallSequence(n) if self.calls.frames.last().is_some_and(|f| f.finishing.is_some()) => {
+                (format!("G70 P{n}: the programme has no block N{n}"), "G70 P(ns) Q(nf) runs the programme's blocks N ns to N nf")
+            }
             Target::CallSequence(n) => (format!("M98 Q{n}: the programme has no block N{n}"), "M98 Q calls a sequence number of the same programme"),
             Target::LoopEnd(m) | Target::LoopEndAhead(m) => (format!("WHILE [..] DO{m}: no END{m} follows in the programme"), "each WHILE [..] DOm ends with ENDm"),
         };
@@ -1995,7 +2059,7 @@ impl Core {
         self.flush_pending(sink);
         // A call by sequence number that found none is no call: its frame goes first.
         let sequence_call = matches!(s.target, Target::CallSequence(_));
-        if sequence_call {
+        if sequence_call && self.leave_finishing().is_none() {
             if let Some(f) = self.calls.frames.pop() {
                 self.left(&f);
             }
