@@ -92,6 +92,13 @@ const MILL: &[ParamDef] = &[
     },
 ];
 
+/// The 0i-TF's codes beyond the 0-T's that change nothing here.
+const TF_CODES: &[super::GDef] = &[
+    super::common::g(43, super::Group::LengthComp, super::GFn::NotYet("tool length compensation on a lathe (the mill-turn option)"), "tool length compensation + (the mill-turn option): not simulated yet"),
+    super::common::g(44, super::Group::LengthComp, super::GFn::NotYet("tool length compensation on a lathe (the mill-turn option)"), "tool length compensation - (the mill-turn option): not simulated yet"),
+    super::common::g(49, super::Group::LengthComp, super::GFn::LengthComp(0), "tool length compensation cancel (G43/G44 are not simulated: nothing is in force to cancel)"),
+];
+
 const TF_PARAMS: &[&[ParamDef]] = &[
     super::FANUC_RATES,
     fanuc0t::PARAMS,
@@ -111,6 +118,14 @@ pub static TF: Profile = Profile {
     name: "fanuc0i-tf",
     title: "FANUC 0i-TF lathe (G-code system A)",
     params: TF_PARAMS,
+    g_codes: &[
+        super::Codes { source: "the FANUC 0-TC G-code table, system A (the 0i-TC where it lacks)", codes: super::common::G_CODES },
+        super::Codes { source: "the FANUC 0-TC G-code table, system A (the 0i-TC where it lacks)", codes: super::lathe_a::G_CODES },
+        super::Codes { source: "FANUC 0i-T documentation (docs/profiles.md)", codes: fanuc0t::EXTRA },
+        super::Codes { source: "FANUC 0i-T documentation (docs/commands/g83_g87_lathe.md)", codes: super::lathe_drill::CODES },
+        super::Codes { source: "the FANUC 0-TC G-code table, system A (the 0i-TC where it lacks)", codes: super::later::FANUC_0T },
+        super::Codes { source: "FANUC 0i-TF G-code list as recalled (G49 with the tool length compensation option; inferred)", codes: TF_CODES },
+    ],
     frame: FrameRules {
         drawing: Some(DrawingRules { plain_letters: Some(CCR), ..DrawingRules::FANUC_T }),
         arc_without_centre: Some(CIR),

@@ -32,7 +32,7 @@ static G92: CycleRules = CycleRules {
     hold: HoldRule::AfterRun,
 };
 
-const EXTRA: &[GDef] = &[
+pub(super) const EXTRA: &[GDef] = &[
     g(32, Group::Motion, GFn::Thread(ThreadCmd::Lead), "thread cutting: F lead, Q start angle"),
     g(92, Group::Motion, GFn::Thread(ThreadCmd::Cycle(&G92)), "thread cutting cycle: R taper, F lead, Q start angle"),
     g(76, Group::NonModal, GFn::CompoundThread(Compound::G76), "compound thread cutting cycle, two blocks"),
