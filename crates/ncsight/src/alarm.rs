@@ -71,6 +71,8 @@ rules! {
     ContourNotMonotonic => Alarm, "NCS-E54", Some("PS0064"), "THE FINISHING SHAPE IS NOT A MONOTONOUS CHANGE";
     ContourCommand => Alarm, "NCS-E55", Some("PS0066"), "UNAVAILABLE COMMAND IN THE SHAPE PROGRAM";
     ContourEndsInCorner => Alarm, "NCS-E96", Some("PS0069"), "LAST BLOCK OF SHAPE PROGRAM IS AN ILLEGAL COMMAND";
+    // FANUC 0i-F: a comma drawing word while 3405#4 CCR = 1 (a secondary list of the 0i-F alarm texts).
+    DrawingComma => Alarm, "NCS-E99", Some("PS0312"), "ILLEGAL COMMAND IN DIRECT DRAWING DIMENSIONS PROGRAMMING";
     PlaneMismatch => Alarm, "NCS-E56", None, "CYCLE NOT AVAILABLE IN THIS PLANE";
     RigidTapOrder => Alarm, "NCS-E57", None, "RIGID TAPPING: M29 S_ FIRST, THEN G84/G88";
     ReferenceInCannedCycle => Alarm, "NCS-E58", Some("PS0044"), "G27-G30 NOT ALLOWED IN FIXED CYC";

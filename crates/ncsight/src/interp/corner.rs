@@ -18,6 +18,7 @@ use crate::source::Span;
 /// A chamfer or corner arc asked for in a G01 block (G02/G03 too where the profile allows): the
 /// corner between this block's move and the next, each a line or an arc.
 pub(super) fn words(step: &mut Step, words: &mut super::Words, rules: crate::profile::DrawingRules) -> Result<(), Diagnostic> {
+    refuse_comma(step, words, rules)?;
     let right_angle = if rules.right_angle && step.st.motion == crate::modal::Motion::Linear { right_angle_words(step, words, rules)? } else { None };
     let asked = match right_angle {
         Some(asked) => Some(asked),
@@ -32,6 +33,17 @@ pub(super) fn words(step: &mut Step, words: &mut super::Words, rules: crate::pro
 /// The drawing's words are plain C, R and A (FANUC 0i-TF parameter 3405#4 CCR = 1).
 pub(super) fn plain_letters(step: &Step, rules: crate::profile::DrawingRules) -> bool {
     rules.plain_letters.is_some_and(|k| step.params.get(k) != 0.0)
+}
+
+/// With the plain letters in force, a comma word is FANUC alarm PS0312.
+pub(super) fn refuse_comma(step: &Step, words: &super::Words, rules: crate::profile::DrawingRules) -> Result<(), Diagnostic> {
+    if !plain_letters(step, rules) {
+        return Ok(());
+    }
+    match [rules.chamfer, rules.round, rules.angle].iter().find_map(|l| words.peek(*l)) {
+        Some(w) => Err(step.alarm(Rule::DrawingComma, w.span, format!("{}: parameter 3405#4 (CCR) is 1, so the drawing's words are C, R and A without the comma", w.text()))),
+        None => Ok(()),
+    }
 }
 
 /// A corner in a block that radius compensation does not act in (a T word, a cycle) is not
