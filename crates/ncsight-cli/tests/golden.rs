@@ -11,7 +11,8 @@ fn jsonl_follows_the_interface() {
     for case in std::fs::read_dir(&dir).unwrap().map(|e| e.unwrap().path()) {
         let text = std::fs::read_to_string(case.join("expected.jsonl")).unwrap();
         let args = std::fs::read_to_string(case.join("args")).unwrap_or_default();
-        let lathe = !args.contains("fanuc0m");
+        let machine = args.split_whitespace().skip_while(|a| *a != "--machine").nth(1).unwrap_or("gsk980tdi");
+        let lathe = ncsight::profile::by_name(machine).is_none_or(|p| p.is_lathe());
         // A lathe whose setup adds a Y axis shows Y from the first record that moves it on.
         let setup = std::fs::read_to_string(case.join("setup.toml")).unwrap_or_default();
         let lathe_y = lathe && setup.lines().any(|l| l.trim_start().starts_with("axes") && l.contains("\"Y\""));

@@ -14,6 +14,7 @@ mod drill;
 mod frame;
 mod groove;
 mod rough;
+mod table_vars;
 pub use call::{Flow, MAX_PROGRAM_NUMBER};
 pub use frame::{TableWrite, Tables};
 pub use rough::{FinishRequest, RoughRequest};
@@ -571,6 +572,22 @@ impl Interpreter {
 
     pub fn tables(&self) -> &Tables {
         &self.tables
+    }
+
+    /// Set system variable `number` where it names a table entry (`#2001 = 0.1`, `#5221 =
+    /// -200.`): the table changes as G10 changes it, the tool staying where it is on the
+    /// machine. `None` where the number names no table entry.
+    pub fn write_table_variable(&mut self, number: i64, value: f64) -> Option<Result<(), String>> {
+        let w = match self.tables.variable_write(self.profile, number, value)? {
+            Ok(w) => w,
+            Err(e) => return Some(Err(e)),
+        };
+        let moved = self.tables.write(w, &self.state.frame);
+        self.state.pos = self.state.pos - moved;
+        if let Some(a) = self.state.comp.actual {
+            self.state.comp.actual = Some(a - moved);
+        }
+        Some(Ok(()))
     }
 }
 

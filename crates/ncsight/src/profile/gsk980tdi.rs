@@ -267,6 +267,7 @@ pub static PROFILE: Profile = Profile {
         // Not found in the help text: single block stops only after NC blocks (docs/reference/macro.md section 6).
         single_block_param: None,
         source: "GSK980TDi help text, G65 (P right after G65; macro A with H); five bracket levels as FANUC (inferred)",
+        table_variables: false,
         ..super::MacroRules::FANUC
     },
     frame: super::FrameRules::GSK,

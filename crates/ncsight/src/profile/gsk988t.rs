@@ -158,6 +158,7 @@ pub static PROFILE: Profile = Profile {
         if_without_then: false,
         single_block_param: None,
         source: "inferred from the GSK980TDi help text, G65 (P right after G65); five bracket levels as FANUC (inferred)",
+        table_variables: false,
         ..super::MacroRules::FANUC
     },
     frame: super::FrameRules { source: "inferred: as the GSK980TDi help text (G54-G59 note 6, G28 note 2, G30 note 3)", drawing: None, ..super::FrameRules::GSK },

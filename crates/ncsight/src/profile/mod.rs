@@ -471,6 +471,9 @@ pub struct MacroRules {
     pub single_block_param: Option<ParamKey>,
     /// The group numbers #4001-#4022 read (`FANUC_M_GROUPS`, `FANUC_T_GROUPS`).
     pub group_numbers: &'static [(u8, Group)],
+    /// #2001.., #5201.., #10001.. name the tool and work offset tables (FANUC memory C;
+    /// interp/table_vars.rs).
+    pub table_variables: bool,
     pub source: &'static str,
 }
 
@@ -483,6 +486,7 @@ impl MacroRules {
         if_without_then: true,
         single_block_param: Some(ParamKey::Number(6000, Some(5))),
         group_numbers: FANUC_T_GROUPS,
+        table_variables: true,
         source: "FANUC Series 16/18 operator's manual for lathe (brackets: five levels, alarm 118); FANUC Series 16i (G65 arguments)",
     };
 }

@@ -99,7 +99,7 @@ pub static PROFILE: Profile = Profile {
         source: "inferred: as FANUC (no YASNAC LX3 text on M98 was at hand)",
         ..super::CallRules::FANUC
     },
-    macros: super::MacroRules { if_without_then: false, single_block_param: None, source: "inferred: as FANUC (YASNAC LX3 manual 2.8.23 gives the variables only)", ..super::MacroRules::FANUC },
+    macros: super::MacroRules { if_without_then: false, table_variables: false, single_block_param: None, source: "inferred: as FANUC (YASNAC LX3 manual 2.8.23 gives the variables only)", ..super::MacroRules::FANUC },
     frame: super::FrameRules { last_reference: 2, lathe_offset_keys: Some((super::ParamKey::Setting("geometry_by_movement"), super::ParamKey::Setting("wear_with_next_move"))), source: "inferred: as FANUC 0-T, G30 to the 2nd reference point only (no YASNAC LX3 text at hand)", ..super::FrameRules::FANUC },
     summary: "YASNAC LX3 turning centre. X is a diameter, U/W incremental. Lengths without a decimal \
 point are least input increments (X100 = 0.1 mm); seed 004 writes every length with a point. \

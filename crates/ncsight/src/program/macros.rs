@@ -79,6 +79,8 @@ pub(super) struct Reading<'a> {
     pub modal_call: bool,
     /// The controlled axes in the control's order (X Y Z A B C letters).
     pub axes: &'a [u8],
+    /// The machine's offset and work offset tables (#2001.., #5221.., #10001..).
+    pub tables: &'a crate::interp::Tables,
 }
 
 fn no_such(number: i64, why: &str) -> ExprError {
@@ -220,7 +222,11 @@ impl expr::Variables for Reading<'_> {
             }
             // The manual handle interruption (FANUC #5121-#5125): none in a simulation.
             5121..=5126 => self.controlled_axes().get((number - 5121) as usize).map(|_| 0.0),
-            _ => return Err(no_such(number, "no such variable on this control, or a system variable ncsight does not simulate yet")),
+            // The tool and work offset tables (interp/table_vars.rs).
+            n => match self.tables.variable(self.profile, n) {
+                Some(v) => Some(v),
+                None => return Err(no_such(number, "no such variable on this control, or a system variable ncsight does not simulate yet")),
+            },
         })
     }
 }

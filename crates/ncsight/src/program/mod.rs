@@ -1075,7 +1075,19 @@ impl Core {
             last_n: self.last_n,
             modal_call: self.modal_call.is_some(),
             axes: &self.interp.tables().axis_order,
+            tables: self.interp.tables(),
         }
+    }
+
+    /// Write macro variable `number`: a table entry's (`#2001`, `#5221`: the interpreter's
+    /// tables), else the variables'.
+    fn write_variable(&mut self, number: i64, value: crate::read::expr::Value) -> Result<(), (Rule, String)> {
+        if let Some(v) = value {
+            if let Some(result) = self.interp.write_table_variable(number, v) {
+                return result.map_err(|e| (Rule::IllegalVariable, format!("#{number} = {e}")));
+            }
+        }
+        self.vars.write(number, value, self.clock_s)
     }
 
     /// Brackets nested deeper than the profile allows: FANUC alarm 118 (five levels, function
@@ -1215,7 +1227,7 @@ impl Core {
             let text = block.comments.first().map(|c| format!(" ({})", c.trim())).unwrap_or_default();
             return Err(Diagnostic::new(Rule::UserAlarm, profile.alarm_style, block.span, format!("user alarm {}{text}: #3000 = {n}", 3000 + n)));
         }
-        self.vars.write(number, v, self.clock_s).map_err(|(rule, msg)| Diagnostic::new(rule, profile.alarm_style, block.span, msg))?;
+        self.write_variable(number, v).map_err(|(rule, msg)| Diagnostic::new(rule, profile.alarm_style, block.span, msg))?;
         Ok(true)
     }
 
@@ -1314,7 +1326,7 @@ impl Core {
         if !v.is_finite() {
             return Err(Diagnostic::new(Rule::MacroOverflow, style, block.span, "G65 H: the value is not a finite number".to_string()));
         }
-        self.vars.write(i, Some(v), self.clock_s).map_err(|(rule, msg)| Diagnostic::new(rule, style, p.span, msg))?;
+        self.write_variable(i, Some(v)).map_err(|(rule, msg)| Diagnostic::new(rule, style, p.span, msg))?;
         Ok(true)
     }
 
@@ -1533,7 +1545,7 @@ impl Core {
                 // A GSK parameter line read a parameter into a macro variable.
                 if let Some((number, value)) = self.outcome.var_write.take() {
                     let style = self.interp.profile().alarm_style;
-                    if let Err((rule, msg)) = self.vars.write(i64::from(number), Some(value), self.clock_s) {
+                    if let Err((rule, msg)) = self.write_variable(i64::from(number), Some(value)) {
                         self.alarm(Diagnostic::new(rule, style, block.span, msg), sink);
                         if self.mode == Mode::Run {
                             return false;
