@@ -9,6 +9,8 @@ use crate::source::Span;
 
 /// The largest programme number (four digits: GSK980TDi help text, M98; FANUC O1-O9999).
 pub const MAX_PROGRAM_NUMBER: u32 = 9999;
+/// The largest with eight-digit programme numbers (FANUC 0i-F option).
+pub const MAX_PROGRAM_NUMBER_8: u32 = 99_999_999;
 
 /// A jump a block asks the programme driver for, after its motion (the move first, then the
 /// call or the return: docs/reference/macro.md section 11, inferred).
@@ -59,6 +61,15 @@ pub(super) fn call(step: &Step, words: &mut Words, m: &Word) -> Result<Flow, Dia
     };
     let span = m.span.to(p.span);
     let l = words.peek(b'L');
+    // Eight-digit programme numbers (the FANUC 0i-F's option, a setting here): P is the number.
+    if rules.eight_digit.is_some_and(|k| step.params.get(k) != 0.0) {
+        let number = whole(step, p, "the programme number P (eight digits)", MAX_PROGRAM_NUMBER_8)?;
+        let count = match words.take(b'L') {
+            Some(l) => whole(step, l, "the repeat count L", rules.max_count)?,
+            None => 1,
+        };
+        return Ok(Flow::Call { number, count: count.max(1), span, sequence: None });
+    }
     let (number, count) = match l {
         Some(l) if rules.l_count => {
             words.take(b'L');
@@ -74,7 +85,10 @@ pub(super) fn call(step: &Step, words: &mut Words, m: &Word) -> Result<Flow, Dia
         }
         None => {
             let max = rules.max_count * 10_000 + MAX_PROGRAM_NUMBER;
-            let value = whole(step, p, "M98 P (the repeat count, then the four digits of the programme number)", max)?;
+            let value = whole(step, p, "M98 P (the repeat count, then the four digits of the programme number)", max).map_err(|d| match rules.eight_digit {
+                Some(k) => d.with_hint(format!("a machine with eight-digit programme numbers reads P as the number: --param {k}=1")),
+                None => d,
+            })?;
             (value % 10_000, value / 10_000)
         }
     };

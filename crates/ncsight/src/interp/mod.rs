@@ -15,7 +15,7 @@ mod frame;
 mod groove;
 mod rough;
 mod table_vars;
-pub use call::{Flow, MAX_PROGRAM_NUMBER};
+pub use call::{Flow, MAX_PROGRAM_NUMBER, MAX_PROGRAM_NUMBER_8};
 pub use frame::{TableWrite, Tables};
 pub use rough::{FinishRequest, RoughRequest};
 mod thread;

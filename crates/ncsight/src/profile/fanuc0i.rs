@@ -99,6 +99,26 @@ const TF_CODES: &[super::GDef] = &[
     super::common::g(49, super::Group::LengthComp, super::GFn::LengthComp(0), "tool length compensation cancel (G43/G44 are not simulated: nothing is in force to cancel)"),
 ];
 
+/// Eight-digit programme numbers, an option of the 0i-F (its parameter not found: a setting).
+const EIGHT_DIGIT: ParamKey = ParamKey::Setting("eight_digit_programs");
+
+const CALLS: &[ParamDef] = &[ParamDef {
+    key: EIGHT_DIGIT,
+    meaning: "the eight-digit programme number option: 1 = M98 P and G65 P are the programme number alone (O1-O99999999), L the count; 0 = M98 P<count><four digits>",
+    unit: "bit",
+    min: 0.0,
+    max: 1.0,
+    default: 0.0,
+    source: "ncsight setting (an option of the FANUC 0i-F; its parameter number not at hand); off, assumed",
+}];
+
+const CALL_RULES: CallRules = CallRules {
+    sequence_q: true,
+    eight_digit: Some(EIGHT_DIGIT),
+    source: "FANUC 0i-F: M98 Q (a sequence number of the same programme) as the shop programmes use it, eight-digit numbers an option (a setting); M98 P as the FANUC 0i-TB/MB operator's manual 12.3",
+    ..CallRules::FANUC
+};
+
 const TF_PARAMS: &[&[ParamDef]] = &[
     super::FANUC_RATES,
     fanuc0t::PARAMS,
@@ -111,6 +131,7 @@ const TF_PARAMS: &[&[ParamDef]] = &[
     super::FANUC_LATHE_OFFSETS,
     ARC,
     DRAWING,
+    CALLS,
     super::SETTINGS,
 ];
 
@@ -131,7 +152,7 @@ pub static TF: Profile = Profile {
         arc_without_centre: Some(CIR),
         ..fanuc0t::BASE.frame
     },
-    calls: CallRules { sequence_q: true, source: "FANUC 0i-F: M98 Q (a sequence number of the same programme) as the issue's shop programmes use it; M98 P as the FANUC 0i-TB/MB operator's manual 12.3", ..CallRules::FANUC },
+    calls: CALL_RULES,
     summary: "FANUC 0i-TF turning centre, G-code system A: the FANUC 0-T's words, with the 0i-F's \
 parameters 3403#5 (G02/G03 without R or I/K: a straight move) and 3405#4 (C, R, A without the \
 comma). X is a diameter, U/W incremental; Y (V), C (H) and a sub-spindle's B come from the \
@@ -149,6 +170,7 @@ const MF_PARAMS: &[&[ParamDef]] = &[
     super::FANUC_MACRO,
     super::FANUC_G60,
     ARC,
+    CALLS,
     super::SETTINGS,
 ];
 
@@ -168,7 +190,7 @@ pub static MF: Profile = Profile {
         lathe_peck_full_return: None,
     },
     frame: FrameRules { arc_without_centre: Some(CIR), ..fanuc0m::BASE.frame },
-    calls: CallRules { sequence_q: true, source: "FANUC 0i-F: M98 Q (a sequence number of the same programme) as the issue's shop programmes use it; M98 P as the FANUC 0i-TB/MB operator's manual 12.3", ..CallRules::FANUC },
+    calls: CALL_RULES,
     summary: "FANUC 0i-MF machining centre: the FANUC 0-M's words and cycles with the 0i-F's parameter \
 numbers (1420 rapid, 1422 feed limit, 5114/5115 peck amounts) and 3403#5 (G02/G03 without R or \
 I/J/K: a straight move). G90/G91, G17 at power on; lengths without a decimal point are least \

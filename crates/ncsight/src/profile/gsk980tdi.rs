@@ -257,6 +257,7 @@ pub static PROFILE: Profile = Profile {
         builder: super::BuilderCalls { g_macro: Some((86, 9010, 10)), m9000: true, ..super::BuilderCalls::NONE },
         sequence_q: false,
         g70_reads_programme: false,
+        eight_digit: None,
         source: "GSK980TDi help text, M98 (count 1-9999, number 0000-9999; no L); nesting depth not stated, four as for G65 (inferred)",
     },
     macros: super::MacroRules {

@@ -150,6 +150,7 @@ pub static PROFILE: Profile = Profile {
         builder: super::BuilderCalls::NONE,
         sequence_q: false,
         g70_reads_programme: false,
+        eight_digit: None,
         source: "inferred from the GSK980TDi help text, M98 (count 1-9999, no L; four levels)",
     },
     macros: super::MacroRules {

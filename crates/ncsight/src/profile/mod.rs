@@ -407,6 +407,9 @@ pub struct CallRules {
     /// G70 P(ns) Q(nf) runs the programme's blocks N`ns` to N`nf` when no G71-G73 collected
     /// that range (FANUC: G70 reads them from memory); else alarm PS0063.
     pub g70_reads_programme: bool,
+    /// The setting that makes programme numbers eight digits (the FANUC 0i-F's option): M98 P
+    /// and G65 P are then the number alone (O1-O99999999), the count L.
+    pub eight_digit: Option<ParamKey>,
     /// The manual this comes from, and what was inferred.
     pub source: &'static str,
 }
@@ -446,6 +449,7 @@ impl CallRules {
         builder: BuilderCalls::FANUC,
         sequence_q: false,
         g70_reads_programme: true,
+        eight_digit: None,
         source: "FANUC 0i-TB/MB operator's manual 12.3 (count 1-999, four levels); M98 P_ L_ as on the FANUC 0-M (inferred for the lathe)",
     };
 }

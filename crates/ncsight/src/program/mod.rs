@@ -1839,8 +1839,10 @@ impl Core {
             }
             match w.letter {
                 b'P' => {
-                    if w.value < 0.0 || w.value.fract() != 0.0 || w.value > 9999.0 {
-                        return Err(Diagnostic::new(Rule::ValueOutOfRange, style, w.span, format!("{}: the macro's programme number is 1 to 9999", w.text())));
+                    let eight = profile.calls.eight_digit.is_some_and(|k| self.interp.params().get(k) != 0.0);
+                    let max = if eight { crate::interp::MAX_PROGRAM_NUMBER_8 } else { crate::interp::MAX_PROGRAM_NUMBER };
+                    if w.value < 0.0 || w.value.fract() != 0.0 || w.value > f64::from(max) {
+                        return Err(Diagnostic::new(Rule::ValueOutOfRange, style, w.span, format!("{}: the macro's programme number is 1 to {max}", w.text())));
                     }
                     number = Some(w.value as u32);
                 }
