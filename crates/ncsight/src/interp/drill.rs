@@ -405,7 +405,8 @@ fn lathe_from_r_block(step: &mut Step, words: &mut Words, kind: DrillKind) -> Re
             initial: d.initial,
             r: r_level,
             bottom,
-            return_initial: true,
+            // G-code systems B and C have G98/G99 (the initial level at power on); A has none.
+            return_initial: step.st.return_initial,
             q,
             dwell_s: d.dwell_s.unwrap_or(0.0),
             d: d_mm,

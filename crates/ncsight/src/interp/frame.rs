@@ -458,6 +458,12 @@ pub(super) fn data_line(step: &mut Step, block: &crate::read::Block, mode: DataI
                 if let Err(e) = step.params.check(key, v) {
                     return Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("{}: {e}", w.text())));
                 }
+                // The G-code system is the run's (its codes are read by the table chosen at the
+                // start): a programme that changes it is not simulated.
+                let system_bit = step.profile.g_code_systems.or(step.params.base().g_code_systems).is_some_and(|s| key == s.b || key == s.c);
+                if system_bit && v != step.params.get(key) {
+                    return Err(step.alarm(Rule::NotSupported, w.span, format!("{}: changing the G-code system inside a programme is not simulated by ncsight: give it with --param {key}={v}", w.text())));
+                }
                 step.out.param_writes.push((key, v));
             }
             Ok(())

@@ -39,8 +39,6 @@ pub(super) const G_CODES: &[GDef] = &[
     g(17, Group::Plane, GFn::PlaneXY, "XY plane"),
     g(18, Group::Plane, GFn::PlaneZX, "ZX plane"),
     g(19, Group::Plane, GFn::PlaneYZ, "YZ plane"),
-    g(20, Group::Units, GFn::Inch, "inch input"),
-    g(21, Group::Units, GFn::Metric, "metric input"),
     g(28, Group::NonModal, GFn::ReferenceReturn, "return to the reference point via an intermediate point"),
     g(40, Group::CutterComp, GFn::RadiusComp(0), "cancel radius compensation"),
     g(41, Group::CutterComp, GFn::RadiusComp(1), "radius compensation, left"),
@@ -52,6 +50,9 @@ pub(super) const G_CODES: &[GDef] = &[
     g(58, Group::WorkOffset, GFn::WorkOffset(5), "work coordinate system 5"),
     g(59, Group::WorkOffset, GFn::WorkOffset(6), "work coordinate system 6"),
 ];
+
+/// G20/G21, apart: the FANUC lathe's G-code system C names them G70/G71.
+pub(super) const UNITS: &[GDef] = &[g(20, Group::Units, GFn::Inch, "inch input"), g(21, Group::Units, GFn::Metric, "metric input")];
 
 pub(super) const M_CODES: &[MDef] = &[
     m(0, MFn::ProgramStop, "programme stop"),

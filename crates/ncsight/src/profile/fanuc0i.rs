@@ -119,6 +119,118 @@ const CALL_RULES: CallRules = CallRules {
     ..CallRules::FANUC
 };
 
+/// 3401#6 GSB and #7 GSC: the lathe's G-code system B or C (C when both).
+const GSB: ParamKey = ParamKey::Number(3401, Some(6));
+const GSC: ParamKey = ParamKey::Number(3401, Some(7));
+
+const SYSTEMS: &[ParamDef] = &[
+    ParamDef {
+        key: GSB,
+        meaning: "GSB: 1 = G-code system B (G90/G91 absolute/incremental, G92 coordinate set, G94/G95 feed modes, G98/G99 return levels, G77/G78/G79 the single cycles)",
+        unit: "bit",
+        min: 0.0,
+        max: 1.0,
+        default: 0.0,
+        source: "FANUC 0i-TF parameter 3401#6 GSB (as recalled); the B and C tables as the FANUC lathe G-code lists give them",
+    },
+    ParamDef {
+        key: GSC,
+        meaning: "GSC: 1 = G-code system C (as B, with G70/G71 inch/metric, G72-G78 the multiple cycles, G20/G21/G24 the single cycles)",
+        unit: "bit",
+        min: 0.0,
+        max: 1.0,
+        default: 0.0,
+        source: "FANUC 0i-TF parameter 3401#7 GSC (as recalled)",
+    },
+];
+
+use super::common::g;
+use super::{GDef, GFn, Group, ThreadCmd};
+use crate::codes::{BoxKind, PeckKind, RoughKind};
+
+static G78: super::CycleRules = super::CycleRules { code: "G78", ..fanuc0t::G92_RULES };
+static G21_THREAD: super::CycleRules = super::CycleRules { code: "G21", ..fanuc0t::G92_RULES };
+
+/// What systems B and C share: G90/G91, the feed modes G94/G95, the return levels G98/G99,
+/// G92 for G50 (G-code system A's codes of the same functions are not in them).
+const B_AND_C: &[GDef] = &[
+    g(90, Group::Distance, GFn::Absolute, "absolute command"),
+    g(91, Group::Distance, GFn::Incremental, "incremental command"),
+    g(92, Group::NonModal, GFn::LatheCoordinateSet, "set the coordinates of the current position; S: spindle speed clamp"),
+    g(94, Group::FeedMode, GFn::FeedPerMinute, "feed per minute: F in mm/min"),
+    g(95, Group::FeedMode, GFn::FeedPerRevolution, "feed per revolution: F in mm/rev"),
+    g(96, Group::SpindleSpeedMode, GFn::ConstantSurfaceSpeed, "constant surface speed: S in m/min"),
+    g(97, Group::SpindleSpeedMode, GFn::ConstantRpm, "constant spindle speed: S in rpm"),
+    g(98, Group::ReturnLevel, GFn::ReturnInitial, "drilling cycles return to the initial level"),
+    g(99, Group::ReturnLevel, GFn::ReturnR, "drilling cycles return to the R level"),
+    g(32, Group::Motion, GFn::Thread(ThreadCmd::Lead), "thread cutting: F lead, Q start angle"),
+    g(34, Group::Motion, GFn::Thread(ThreadCmd::VariableLead), "variable-lead thread cutting: F the lead at the start, K its change per revolution, Q start angle"),
+];
+
+/// System B: A's multiple cycles' numbers, G77/G78/G79 the single cycles.
+const SYSTEM_B: &[GDef] = &[
+    g(70, Group::NonModal, GFn::Finish, "finishing cycle"),
+    g(71, Group::NonModal, GFn::Rough(RoughKind::Turning), "stock removal in turning"),
+    g(72, Group::NonModal, GFn::Rough(RoughKind::Facing), "stock removal in facing"),
+    g(73, Group::NonModal, GFn::Rough(RoughKind::Pattern), "pattern repeating"),
+    g(74, Group::NonModal, GFn::PeckCycle(PeckKind::Face), "end face peck drilling"),
+    g(75, Group::NonModal, GFn::PeckCycle(PeckKind::Groove), "outer/inner diameter grooving"),
+    g(76, Group::NonModal, GFn::CompoundThread(super::Compound::G76), "compound thread cutting cycle, two blocks"),
+    g(77, Group::Motion, GFn::BoxCycle(BoxKind::Turning), "outer/inner diameter cutting cycle (system A's G90)"),
+    g(78, Group::Motion, GFn::Thread(ThreadCmd::Cycle(&G78)), "thread cutting cycle (system A's G92): R taper, F lead, Q start angle"),
+    g(79, Group::Motion, GFn::BoxCycle(BoxKind::Facing), "end face cutting cycle (system A's G94)"),
+];
+
+/// System C: G70/G71 inch and metric, G72-G78 the multiple cycles, G20/G21/G24 the single ones.
+const SYSTEM_C: &[GDef] = &[
+    g(70, Group::Units, GFn::Inch, "inch input (system A's G20)"),
+    g(71, Group::Units, GFn::Metric, "metric input (system A's G21)"),
+    g(72, Group::NonModal, GFn::Finish, "finishing cycle (system A's G70)"),
+    g(73, Group::NonModal, GFn::Rough(RoughKind::Turning), "stock removal in turning (system A's G71)"),
+    g(74, Group::NonModal, GFn::Rough(RoughKind::Facing), "stock removal in facing (system A's G72)"),
+    g(75, Group::NonModal, GFn::Rough(RoughKind::Pattern), "pattern repeating (system A's G73)"),
+    g(76, Group::NonModal, GFn::PeckCycle(PeckKind::Face), "end face peck drilling (system A's G74)"),
+    g(77, Group::NonModal, GFn::PeckCycle(PeckKind::Groove), "outer/inner diameter grooving (system A's G75)"),
+    g(78, Group::NonModal, GFn::CompoundThread(super::Compound::G76), "compound thread cutting cycle, two blocks (system A's G76)"),
+    g(20, Group::Motion, GFn::BoxCycle(BoxKind::Turning), "outer/inner diameter cutting cycle (system A's G90)"),
+    g(21, Group::Motion, GFn::Thread(ThreadCmd::Cycle(&G21_THREAD)), "thread cutting cycle (system A's G92): R taper, F lead, Q start angle"),
+    g(24, Group::Motion, GFn::BoxCycle(BoxKind::Facing), "end face cutting cycle (system A's G94)"),
+];
+
+const SOURCE_BC: &str = "the FANUC lathe G-code list, systems B and C (as recalled; the 0i-TF's own table was not at hand)";
+
+static SYSTEMS_OF_TF: super::GCodeSystems = super::GCodeSystems { b: GSB, c: GSC, profile_b: &TF_B, profile_c: &TF_C };
+
+/// The 0i-TF in G-code system B.
+pub static TF_B: Profile = Profile {
+    title: "FANUC 0i-TF lathe (G-code system B)",
+    g_codes: &[
+        super::Codes { source: SOURCE_BC, codes: super::common::G_CODES },
+        super::Codes { source: SOURCE_BC, codes: super::common::UNITS },
+        super::Codes { source: SOURCE_BC, codes: B_AND_C },
+        super::Codes { source: SOURCE_BC, codes: SYSTEM_B },
+        super::Codes { source: "FANUC 0i-T documentation (docs/commands/g83_g87_lathe.md)", codes: super::lathe_drill::CODES },
+        super::Codes { source: SOURCE_BC, codes: super::later::FANUC_0T },
+        super::Codes { source: "FANUC 0i-TF G-code list as recalled (G49 with the tool length compensation option; inferred)", codes: TF_CODES },
+    ],
+    g_code_systems: None,
+    ..TF
+};
+
+/// The 0i-TF in G-code system C.
+pub static TF_C: Profile = Profile {
+    title: "FANUC 0i-TF lathe (G-code system C)",
+    g_codes: &[
+        super::Codes { source: SOURCE_BC, codes: super::common::G_CODES },
+        super::Codes { source: SOURCE_BC, codes: B_AND_C },
+        super::Codes { source: SOURCE_BC, codes: SYSTEM_C },
+        super::Codes { source: "FANUC 0i-T documentation (docs/commands/g83_g87_lathe.md)", codes: super::lathe_drill::CODES },
+        super::Codes { source: SOURCE_BC, codes: super::later::FANUC_0T },
+        super::Codes { source: "FANUC 0i-TF G-code list as recalled (G49 with the tool length compensation option; inferred)", codes: TF_CODES },
+    ],
+    ..TF_B
+};
+
 const TF_PARAMS: &[&[ParamDef]] = &[
     super::FANUC_RATES,
     fanuc0t::PARAMS,
@@ -132,6 +244,7 @@ const TF_PARAMS: &[&[ParamDef]] = &[
     ARC,
     DRAWING,
     CALLS,
+    SYSTEMS,
     super::SETTINGS,
 ];
 
@@ -140,7 +253,7 @@ pub static TF: Profile = Profile {
     title: "FANUC 0i-TF lathe (G-code system A)",
     params: TF_PARAMS,
     g_codes: &[
-        super::Codes { source: "the FANUC 0-TC G-code table, system A (the 0i-TC where it lacks)", codes: super::common::G_CODES },
+        super::Codes { source: "the FANUC 0-TC G-code table, system A (the 0i-TC where it lacks)", codes: super::common::G_CODES }, super::Codes { source: "the FANUC 0-TC G-code table, system A (the 0i-TC where it lacks)", codes: super::common::UNITS },
         super::Codes { source: "the FANUC 0-TC G-code table, system A (the 0i-TC where it lacks)", codes: super::lathe_a::G_CODES },
         super::Codes { source: "FANUC 0i-T documentation (docs/profiles.md)", codes: fanuc0t::EXTRA },
         super::Codes { source: "FANUC 0i-T documentation (docs/commands/g83_g87_lathe.md)", codes: super::lathe_drill::CODES },
@@ -153,6 +266,7 @@ pub static TF: Profile = Profile {
         ..fanuc0t::BASE.frame
     },
     calls: CALL_RULES,
+    g_code_systems: Some(&SYSTEMS_OF_TF),
     summary: "FANUC 0i-TF turning centre, G-code system A: the FANUC 0-T's words, with the 0i-F's \
 parameters 3403#5 (G02/G03 without R or I/K: a straight move) and 3405#4 (C, R, A without the \
 comma). X is a diameter, U/W incremental; Y (V), C (H) and a sub-spindle's B come from the \
@@ -197,3 +311,25 @@ I/J/K: a straight move). G90/G91, G17 at power on; lengths without a decimal poi
 input increments (X100 = 0.1 mm).",
     ..fanuc0m::BASE
 };
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The variants hold together as the listed profiles do, with the same parameters.
+    #[test]
+    fn the_g_code_systems_are_valid_profiles() {
+        for p in [&TF_B, &TF_C] {
+            p.validate().unwrap();
+            assert_eq!(p.all_params().count(), TF.all_params().count());
+        }
+        let mut params = crate::profile::Params::defaults(&TF);
+        params.set(GSB, 1.0).unwrap();
+        assert_eq!(params.profile().title, TF_B.title);
+        params.set(GSC, 1.0).unwrap();
+        assert_eq!(params.profile().title, TF_C.title);
+        params.set(GSB, 0.0).unwrap();
+        params.set(GSC, 0.0).unwrap();
+        assert_eq!(params.profile().title, TF.title);
+    }
+}

@@ -14,7 +14,7 @@ use crate::alarm::AlarmStyle;
 /// G92 (FANUC 0i-T, inferred): R taper, F lead, Q start angle; the thread chamfer of parameters
 /// 5130/5131 (no J/K words); without the thread-cutting retract option FEED HOLD waits for the
 /// thread's end (docs/commands/operator.md).
-static G92: CycleRules = CycleRules {
+pub(super) const G92_RULES: CycleRules = CycleRules {
     code: "G92",
     rigid: false,
     negative_f_left_hand: false,
@@ -31,6 +31,7 @@ static G92: CycleRules = CycleRules {
     pull_out: PullOutRule::Chamfer { amount: ParamKey::Number(5130, None), angle: ParamKey::Number(5131, None) },
     hold: HoldRule::AfterRun,
 };
+static G92: CycleRules = G92_RULES;
 
 pub(super) const EXTRA: &[GDef] = &[
     g(32, Group::Motion, GFn::Thread(ThreadCmd::Lead), "thread cutting: F lead, Q start angle"),
@@ -88,7 +89,7 @@ pub(super) const BASE: Profile = Profile {
     addresses: super::Letters::new("GMSTFXZUWRIKPQLN"),
     peck_back_off: Some(ParamKey::Number(5139, None)),
     box_taper: b'R',
-    g_codes: &[super::Codes { source: "the FANUC 0-TC G-code table, system A (the 0i-TC where it lacks)", codes: common::G_CODES }, super::Codes { source: "the FANUC 0-TC G-code table, system A (the 0i-TC where it lacks)", codes: lathe_a::G_CODES }, super::Codes { source: "FANUC 0i-T documentation (inferred for the 0-T; docs/profiles.md)", codes: EXTRA }, super::Codes { source: "FANUC 0i-T documentation (inferred for the 0-T; docs/commands/g83_g87_lathe.md)", codes: super::lathe_drill::CODES }, super::Codes { source: "the FANUC 0-TC G-code table, system A (the 0i-TC where it lacks)", codes: super::later::FANUC_0T }],
+    g_codes: &[super::Codes { source: "the FANUC 0-TC G-code table, system A (the 0i-TC where it lacks)", codes: common::G_CODES }, super::Codes { source: "the FANUC 0-TC G-code table, system A (the 0i-TC where it lacks)", codes: common::UNITS }, super::Codes { source: "the FANUC 0-TC G-code table, system A (the 0i-TC where it lacks)", codes: lathe_a::G_CODES }, super::Codes { source: "FANUC 0i-T documentation (inferred for the 0-T; docs/profiles.md)", codes: EXTRA }, super::Codes { source: "FANUC 0i-T documentation (inferred for the 0-T; docs/commands/g83_g87_lathe.md)", codes: super::lathe_drill::CODES }, super::Codes { source: "the FANUC 0-TC G-code table, system A (the 0i-TC where it lacks)", codes: super::later::FANUC_0T }],
     m_codes: &[super::Codes { source: "FANUC 0i-TC M codes (inferred for the 0-T)", codes: common::M_CODES }, super::Codes { source: "FANUC 0i-TC M codes (inferred for the 0-T)", codes: lathe_a::M_CODES }],
     params: &[FANUC_RATES, PARAMS, super::lathe_drill::PARAMS, super::FANUC_G76, super::FANUC_INPUT, DRY_RUN, super::builder::FANUC, super::FANUC_MACRO, super::FANUC_LATHE_OFFSETS, SETTINGS],
     time: TimeKeys {
@@ -113,6 +114,7 @@ pub(super) const BASE: Profile = Profile {
     calls: super::CallRules::FANUC,
     macros: super::MacroRules::FANUC,
     frame: super::FrameRules { drawing: Some(super::DrawingRules::FANUC_T), ..super::FrameRules::FANUC },
+    g_code_systems: None,
     summary: "FANUC 0-T turning centre, G-code system A. X is a diameter, U/W incremental; lengths without \
 a decimal point are least input increments (X100 = 0.1 mm, X1 = 0.0001 inch under G20). Feed per \
 revolution (G99) at power on.",

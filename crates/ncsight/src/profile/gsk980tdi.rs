@@ -240,7 +240,7 @@ pub static PROFILE: Profile = Profile {
     addresses: super::Letters::new("GMSTFXZUWRIJKPQLNDEAB"),
     peck_back_off: Some(ParamKey::Number(56, None)),
     box_taper: b'R',
-    g_codes: &[super::Codes { source: "GSK980TDi help text (G-code list)", codes: common::G_CODES }, super::Codes { source: "GSK980TDi help text (G-code list)", codes: lathe_a::G_CODES }, super::Codes { source: "GSK980TDi manual, G92 (seed 000) and help text", codes: EXTRA }, super::Codes { source: "GSK980TDi help text, G05/05.1, G6.2/6.3, G7.2/7.3; Q's sense from the GSK980TDc manual", codes: CURVES }, super::Codes { source: "GSK980TDi help text (G-code list)", codes: super::later::GSK980TDI }],
+    g_codes: &[super::Codes { source: "GSK980TDi help text (G-code list)", codes: common::G_CODES }, super::Codes { source: "GSK980TDi help text (G-code list)", codes: common::UNITS }, super::Codes { source: "GSK980TDi help text (G-code list)", codes: lathe_a::G_CODES }, super::Codes { source: "GSK980TDi manual, G92 (seed 000) and help text", codes: EXTRA }, super::Codes { source: "GSK980TDi help text, G05/05.1, G6.2/6.3, G7.2/7.3; Q's sense from the GSK980TDc manual", codes: CURVES }, super::Codes { source: "GSK980TDi help text (G-code list)", codes: super::later::GSK980TDI }],
     m_codes: &[super::Codes { source: "GSK980TDi help text (M-code list)", codes: common::M_CODES }, super::Codes { source: "GSK980TDi help text (M-code list)", codes: lathe_a::M_CODES }, super::Codes { source: "GSK980TDi help text (M-code list)", codes: lathe_a::GSK_M_CODES }, super::Codes { source: "GSK980TDi help text, G84/G88", codes: TAPPING_M }, super::Codes { source: "GSK980TDi help text, M24/25, M50-58, M63/64/65", codes: SECOND_SPINDLE_M }],
     params: &[PARAMS, DRY_RUN, super::builder::GSK980TDI, super::GSK_LATHE_OFFSETS, SETTINGS],
     time: TimeKeys {
@@ -272,6 +272,7 @@ pub static PROFILE: Profile = Profile {
         ..super::MacroRules::FANUC
     },
     frame: super::FrameRules::GSK,
+    g_code_systems: None,
     summary: "GSK980TDi turning centre. X is a diameter, U/W incremental. Lengths without a decimal \
 point are millimetres (seed 000's O0012: Z-28, F3, J3 K1). Feed per minute (G98) at power on.",
 };

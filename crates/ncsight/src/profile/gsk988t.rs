@@ -130,7 +130,7 @@ pub static PROFILE: Profile = Profile {
     addresses: super::Letters::new("GMSTFXYZUVWRIJKPQLN"),
     peck_back_off: None,
     box_taper: b'R',
-    g_codes: &[super::Codes { source: "inferred from the GSK980TDi help text (the GSK988T G-code table was not at hand)", codes: common::G_CODES }, super::Codes { source: "inferred from the GSK980TDi help text (the GSK988T G-code table was not at hand)", codes: lathe_a::G_CODES }, super::Codes { source: "GSK988T manual: G32.1, G92.1, G32.2/G32.3, thread repair (seeds 001, 002); G92 of the GSK988TA/TB manual; G34 of the GSK988T manual", codes: EXTRA }, super::Codes { source: "inferred from the GSK980TDi help text (the GSK988T page was not at hand)", codes: AS_GSK980TDI }, super::Codes { source: "GSK988T manual G-code table (G12.1/G13.1); the rest inferred from the GSK980TDi help text", codes: super::later::GSK988T }, super::Codes { source: "inferred: the FANUC 0-T's drilling cycles (the GSK988T follows FANUC's numbering; its drilling page was not at hand)", codes: super::lathe_drill::CODES }],
+    g_codes: &[super::Codes { source: "inferred from the GSK980TDi help text (the GSK988T G-code table was not at hand)", codes: common::G_CODES }, super::Codes { source: "inferred from the GSK980TDi help text (the GSK988T G-code table was not at hand)", codes: common::UNITS }, super::Codes { source: "inferred from the GSK980TDi help text (the GSK988T G-code table was not at hand)", codes: lathe_a::G_CODES }, super::Codes { source: "GSK988T manual: G32.1, G92.1, G32.2/G32.3, thread repair (seeds 001, 002); G92 of the GSK988TA/TB manual; G34 of the GSK988T manual", codes: EXTRA }, super::Codes { source: "inferred from the GSK980TDi help text (the GSK988T page was not at hand)", codes: AS_GSK980TDI }, super::Codes { source: "GSK988T manual G-code table (G12.1/G13.1); the rest inferred from the GSK980TDi help text", codes: super::later::GSK988T }, super::Codes { source: "inferred: the FANUC 0-T's drilling cycles (the GSK988T follows FANUC's numbering; its drilling page was not at hand)", codes: super::lathe_drill::CODES }],
     m_codes: &[super::Codes { source: "inferred from the GSK980TDi help text (M-code list)", codes: common::M_CODES }, super::Codes { source: "inferred from the GSK980TDi help text (M-code list)", codes: lathe_a::M_CODES }, super::Codes { source: "GSK988T manual, G32.1 (M14/M15); the rest inferred from the GSK980TDi help text", codes: lathe_a::GSK_M_CODES }],
     params: &[FANUC_RATES, PARAMS, super::lathe_drill::PARAMS, super::FANUC_G76, super::GSK_LATHE_OFFSETS, SETTINGS],
     time: TimeKeys {
@@ -163,6 +163,7 @@ pub static PROFILE: Profile = Profile {
         ..super::MacroRules::FANUC
     },
     frame: super::FrameRules { source: "inferred: as the GSK980TDi help text (G54-G59 note 6, G28 note 2, G30 note 3)", drawing: None, ..super::FrameRules::GSK },
+    g_code_systems: None,
     summary: "GSK988T turning centre with a servo (CS) spindle: M14 position mode, M15 speed mode. \
 X is a diameter, U/W incremental; lengths without a decimal point are millimetres.",
 };

@@ -1250,8 +1250,21 @@ pub struct Profile {
     pub calls: CallRules,
     pub macros: MacroRules,
     pub frame: FrameRules,
+    /// The G-code systems B and C a parameter selects (FANUC lathes: 3401#6 GSB, #7 GSC):
+    /// the same profile with the codes renamed.
+    pub g_code_systems: Option<&'static GCodeSystems>,
     /// One paragraph for `ncsight machines`.
     pub summary: &'static str,
+}
+
+/// A lathe's G-code systems B and C (FANUC): the bits that select them and the profiles with
+/// their code tables (the same parameters, so the values carry over).
+#[derive(Debug)]
+pub struct GCodeSystems {
+    pub b: ParamKey,
+    pub c: ParamKey,
+    pub profile_b: &'static Profile,
+    pub profile_c: &'static Profile,
 }
 
 /// All profiles, in the order `ncsight machines` lists them.
@@ -1481,7 +1494,9 @@ impl Letters {
 /// Parameter values in force for one run: the profile's defaults, overridden by `--param`.
 #[derive(Debug, Clone)]
 pub struct Params {
+    /// The profile in force: `base`, or its G-code system B or C as the parameters select.
     profile: &'static Profile,
+    base: &'static Profile,
     values: Vec<f64>,
     /// The feed limit, read by every cutting block: kept up to date by `set`.
     feed_max_mm_min: f64,
@@ -1520,6 +1535,7 @@ impl Params {
     pub fn defaults(profile: &'static Profile) -> Params {
         let mut params = Params {
             profile,
+            base: profile,
             values: profile.all_params().map(|p| p.default).collect(),
             feed_max_mm_min: 0.0,
             integer_lengths: profile.integer_lengths,
@@ -1530,6 +1546,11 @@ impl Params {
 
     pub fn profile(&self) -> &'static Profile {
         self.profile
+    }
+
+    /// The profile the parameters were made for (its G-code system A where it has B and C).
+    pub fn base(&self) -> &'static Profile {
+        self.base
     }
 
     /// Apply `N=V` (`19=10`, `18.6=1`, `rapid_mm_min=12000`).
@@ -1570,6 +1591,17 @@ impl Params {
 
     /// Refresh the values kept for the blocks that read them all the time.
     fn cache(&mut self) {
+        // G-code system B or C (FANUC 3401#6 GSB, #7 GSC; C when both): the same parameters.
+        if let Some(sys) = self.base.g_code_systems {
+            self.profile = self.base;
+            self.profile = if self.get(sys.c) != 0.0 {
+                sys.profile_c
+            } else if self.get(sys.b) != 0.0 {
+                sys.profile_b
+            } else {
+                self.base
+            };
+        }
         self.feed_max_mm_min = self.get(self.profile.time.feed_max);
         self.integer_lengths = match self.profile.calculator_input {
             Some(k) if self.get(k) != 0.0 => IntegerLengths::Millimetres,

@@ -82,7 +82,7 @@ pub static PROFILE: Profile = Profile {
     addresses: super::Letters::new("GMSTFEXZUWRIKPQLN"),
     peck_back_off: None,
     box_taper: b'I',
-    g_codes: &[super::Codes { source: "inferred: FANUC 0-T system A (no YASNAC LX3 G-code table was found)", codes: common::G_CODES }, super::Codes { source: "inferred: FANUC 0-T system A (no YASNAC LX3 G-code table was found)", codes: lathe_a::G_CODES }, super::Codes { source: "YASNAC LX3 manual, G92 (seed 004)", codes: EXTRA }, super::Codes { source: "inferred: FANUC 0-T system A (no YASNAC LX3 G-code table was found)", codes: super::later::YASNAC_LX3 }],
+    g_codes: &[super::Codes { source: "inferred: FANUC 0-T system A (no YASNAC LX3 G-code table was found)", codes: common::G_CODES }, super::Codes { source: "inferred: FANUC 0-T system A (no YASNAC LX3 G-code table was found)", codes: common::UNITS }, super::Codes { source: "inferred: FANUC 0-T system A (no YASNAC LX3 G-code table was found)", codes: lathe_a::G_CODES }, super::Codes { source: "YASNAC LX3 manual, G92 (seed 004)", codes: EXTRA }, super::Codes { source: "inferred: FANUC 0-T system A (no YASNAC LX3 G-code table was found)", codes: super::later::YASNAC_LX3 }],
     m_codes: &[super::Codes { source: "inferred: FANUC 0-T (no YASNAC LX3 M-code list was found)", codes: common::M_CODES }, super::Codes { source: "inferred: FANUC 0-T (no YASNAC LX3 M-code list was found)", codes: lathe_a::M_CODES }],
     params: &[PARAMS, DRY_RUN, super::YASNAC_LATHE_OFFSETS, SETTINGS],
     time: TimeKeys {
@@ -101,6 +101,7 @@ pub static PROFILE: Profile = Profile {
     },
     macros: super::MacroRules { if_without_then: false, table_variables: false, single_block_param: None, source: "inferred: as FANUC (YASNAC LX3 manual 2.8.23 gives the variables only)", ..super::MacroRules::FANUC },
     frame: super::FrameRules { last_reference: 2, lathe_offset_keys: Some((super::ParamKey::Setting("geometry_by_movement"), super::ParamKey::Setting("wear_with_next_move"))), source: "inferred: as FANUC 0-T, G30 to the 2nd reference point only (no YASNAC LX3 text at hand)", ..super::FrameRules::FANUC },
+    g_code_systems: None,
     summary: "YASNAC LX3 turning centre. X is a diameter, U/W incremental. Lengths without a decimal \
 point are least input increments (X100 = 0.1 mm); seed 004 writes every length with a point. \
 Feed per revolution at power on (assumed).",
