@@ -13,12 +13,21 @@ fn corpus() -> Option<std::path::PathBuf> {
     common::corpus(TESTS)
 }
 
-/// Milling programmes go to fanuc0m, FANUC-style lathe programmes to fanuc0t, the rest (GSK
-/// shop notes, LinuxCNC and other dialects) to the GSK lathe.
+/// Milling programmes go to fanuc0m (a FANUC 0i mill's to fanuc0i-mf), FANUC 0i-T lathe
+/// programmes (Doosan shop, the ICNC and CNCLearn courses) to fanuc0i-tf, the Haas lathe files
+/// written FANUC-style to fanuc0t, the rest (GSK shop notes, LinuxCNC and other dialects) to the
+/// GSK lathe.
 fn machine_for(name: &str) -> &'static str {
-    const FANUC_LATHE: &[&str] = &["doosan-lynx300__", "icnc__", "cnclearn__2", "cnclearn__1002", "enier-cnc__weld", "cadekiely-haas__Caliper"];
+    const FANUC_0I_LATHE: &[&str] = &["doosan-lynx300__", "icnc__", "cnclearn__2", "cnclearn__1002"];
+    if FANUC_0I_LATHE.iter().any(|p| name.starts_with(p)) {
+        return "fanuc0i-tf";
+    }
+    const FANUC_LATHE: &[&str] = &["enier-cnc__weld", "cadekiely-haas__Caliper"];
     if FANUC_LATHE.iter().any(|p| name.starts_with(p)) {
         return "fanuc0t";
+    }
+    if name == "cnclearn__O0001.txt" {
+        return "fanuc0i-mf";
     }
     // A FANUC 0i thread grinder (X, Z, C) written with G90/G91 and G92 as a coordinate preset:
     // the FANUC 0-M's G-code system is the nearest (its C axis waits for issue 19).
