@@ -43,7 +43,7 @@ struct Cli {
 
 #[derive(clap::Args, Debug)]
 struct MachineArgs {
-    /// Controller profile: gsk980tdi, gsk988t, fanuc0m, fanuc0t, yasnac-lx3 (default gsk980tdi).
+    /// Controller profile: gsk980tdi, gsk988t, fanuc0m, fanuc0t, yasnac-lx3, fanuc0i-tf, fanuc0i-mf (default gsk980tdi).
     #[arg(long, short = 'm')]
     machine: Option<String>,
     /// Override a parameter by the manual's number: N=V or N.B=V for a bit (e.g. 19=10, 18.6=1).
