@@ -26,7 +26,7 @@ PathLike = Union[str, "os.PathLike[str]"]
 
 
 def machines() -> List[str]:
-    """The controller profiles: ``gsk980tdi``, ``gsk988t``, ``fanuc0t``, ``fanuc0m``, ``yasnac-lx3``."""
+    """The controller profiles: ``gsk980tdi``, ``gsk988t``, ``fanuc0t``, ``fanuc0m``, ``yasnac-lx3``, ``fanuc0i-tf``, ``fanuc0i-mf``."""
     return list(_ncsight.machines())
 
 
