@@ -10,6 +10,16 @@ fn jsonl_follows_the_interface() {
     let mut seen_kinds = std::collections::BTreeSet::new();
     for case in std::fs::read_dir(&dir).unwrap().map(|e| e.unwrap().path()) {
         let text = std::fs::read_to_string(case.join("expected.jsonl")).unwrap();
+        // A comment line of the input is a comment, never an alarm's place (a stray ')' in the
+        // hand-checked notes would make the rest of the line code).
+        let input = std::fs::read_to_string(case.join("input.nc")).unwrap_or_default();
+        let lines: Vec<&str> = input.lines().collect();
+        for l in text.lines().filter(|l| l.contains("\"kind\":\"alarm\"")) {
+            let v: serde_json::Value = serde_json::from_str(l).unwrap();
+            let n = v["line"].as_u64().unwrap_or(0) as usize;
+            let at = lines.get(n.wrapping_sub(1)).copied().unwrap_or("");
+            assert!(!at.trim_start().starts_with('('), "{}: an alarm on the comment line {n}: {l}", case.display());
+        }
         let args = std::fs::read_to_string(case.join("args")).unwrap_or_default();
         let machine = args.split_whitespace().skip_while(|a| *a != "--machine").nth(1).unwrap_or("gsk980tdi");
         let lathe = ncsight::profile::by_name(machine).is_none_or(|p| p.is_lathe());

@@ -229,6 +229,9 @@ pub struct CompState {
     pub tip: Vec3,
     /// The D in force (mills): its offset's radius.
     pub d: u32,
+    /// A D given in compensation without G41/G42: it takes effect at the end of its block (the
+    /// block's move starts on the old radius's vector and ends on the new one's).
+    pub next_d: Option<u32>,
     /// A compensated move has been made since G41/G42: a move that starts the path again (after
     /// a block compensation does not act in) may be an arc, joined by a straight move; before
     /// that, an arc is alarm 034.

@@ -1506,17 +1506,19 @@ fn offset_words(step: &mut Step, last_of: &[(Group, &Word, &'static GDef)], code
         comp::command(step, side, d, span, arc_move)?;
     } else if !step.profile.is_lathe() && !last_of.iter().any(|(_, _, g)| matches!(g.function, GFn::OffsetMove(_))) {
         // D without G40-G42 (`G43 H1 D1 Z50.`): the cutter compensation offset number, modal
-        // data (FANUC #4107 reads it): kept for the next G41/G42; in compensation the new
-        // radius acts from this block on, the path so far ending perpendicular (inferred: the
-        // FANUC manuals change the vector at the block's end).
+        // data (FANUC #4107 reads it): kept for the next G41/G42. In compensation the vector at
+        // the end of its block is the new radius's, the one at its start the old one's (FANUC
+        // 0i manuals, change of the compensation value in offset mode, as recalled).
         if let Some(w) = words.take(b'D') {
             let d = offset_number(step, w)?;
-            let side = step.st.comp.side;
-            if side == 0 {
+            if step.st.comp.side == 0 {
                 step.st.comp.d = d;
             } else {
-                let arc_move = has_axis && matches!(motion_now, Motion::ArcCw | Motion::ArcCcw);
-                comp::command(step, side, Some(d), w.span, arc_move)?;
+                let e = frame::entry(step, d, w.span);
+                if e.radius_mm + e.wear_radius_mm < 0.0 {
+                    return Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("offset {d}: the radius with its wear is negative")));
+                }
+                step.st.comp.next_d = Some(d);
             }
         }
     }
@@ -1932,6 +1934,12 @@ fn codes_css(last_of: &[(Group, &Word, &GDef)]) -> Option<bool> {
 
 /// 11. M codes that act after the motion, then the check that every word was used.
 fn finish_block(step: &mut Step, words: &Words, codes: &Codes, after: Vec<(&Word, MFn)>, switches: Switches) -> Result<(), Diagnostic> {
+    // A D changed in compensation: the new radius from the end of this block's move on.
+    if let Some(d) = step.st.comp.next_d.take() {
+        let e = frame::entry(step, d, step.span);
+        step.st.comp.d = d;
+        step.st.comp.radius_mm = e.radius_mm + e.wear_radius_mm;
+    }
     // An L or D whose block made no move in the plane has no corner to make.
     if let Some(c) = step.st.comp.corner_for_next.take() {
         step.warn(Rule::TextIgnored, c.span, format!("{}: the block makes no move in the plane: no corner is made", c.word()));

@@ -113,9 +113,11 @@ const CALLS: &[ParamDef] = &[ParamDef {
 }];
 
 const CALL_RULES: CallRules = CallRules {
+    // Ten levels of subprogramme calls on the 0i-D/F (as recalled; four on the 0i-TB/MB).
+    max_depth: 10,
     sequence_q: true,
     eight_digit: Some(EIGHT_DIGIT),
-    source: "FANUC 0i-F: M98 Q (a sequence number of the same programme) as the shop programmes use it, eight-digit numbers an option (a setting); M98 P as the FANUC 0i-TB/MB operator's manual 12.3",
+    source: "FANUC 0i-F: M98 Q (a sequence number of the same programme) as the shop programmes use it, eight-digit numbers an option (a setting), ten nesting levels (as recalled; G65 calls counted apart, ten too: inferred); M98 P as the FANUC 0i-TB/MB operator's manual 12.3",
     ..CallRules::FANUC
 };
 

@@ -1000,10 +1000,16 @@ impl Core {
         if block.sequence.is_some() {
             self.last_n = block.sequence;
         }
-        if let Some(m) = block.macro_block.as_deref() {
-            return self.macro_item(m, block, place, sink);
+        let go_on = match block.macro_block.as_deref() {
+            Some(m) => self.macro_item(m, block, place, sink),
+            None => self.execute(block, place, sink),
+        };
+        // A G70 running the programme's blocks ends after N nf, whatever that block is (a macro
+        // statement, a block skipped by block delete; an NC block ended it already).
+        match self.calls.frames.last().and_then(|f| f.finishing) {
+            Some(req) if block.sequence == Some(req.nf) => self.end_finishing(req, block, sink),
+            _ => go_on,
         }
-        self.execute(block, place, sink)
     }
 
     /// A macro block: a statement, or words whose values come from the variables. Whether the
@@ -1604,6 +1610,9 @@ impl Core {
             Ok(()) => self.pass_on(sink),
             Err(d) => {
                 self.alarm(d, sink);
+                if self.interp.state().ended {
+                    self.status = Status::Ended;
+                }
                 if self.mode == Mode::Run || self.interp.state().ended {
                     return false;
                 }
@@ -1702,7 +1711,7 @@ impl Core {
         let max = profile.calls.max_depth;
         // M98 and G65 nest separately, four levels each (FANUC Series 16i operator's manual,
         // custom macro; GSK980TDi help text, G65).
-        let depth = self.calls.frames.iter().filter(|f| f.start.is_some() && f.macro_call == macro_call).count();
+        let depth = self.calls.frames.iter().filter(|f| f.start.is_some() && f.macro_call == macro_call && f.finishing.is_none()).count();
         if depth >= max as usize {
             // FANUC 0 alarm 077 (FANUC 0i-TB/MB operator's manual 12.3: four levels).
             let what = if macro_call { "macro call (G65)" } else { "subprogramme call" };
@@ -1739,8 +1748,9 @@ impl Core {
     fn call_sequence(&mut self, n: u32, count: u32, span: Span, back: Place, finishing: Option<crate::interp::FinishRequest>) -> Result<bool, Diagnostic> {
         let profile = self.interp.profile();
         let max = profile.calls.max_depth;
-        let depth = self.calls.frames.iter().filter(|f| f.start.is_some() && !f.macro_call).count();
-        if depth >= max as usize {
+        // A G70 is no call: it does not count, nor is it counted.
+        let depth = self.calls.frames.iter().filter(|f| f.start.is_some() && !f.macro_call && f.finishing.is_none()).count();
+        if depth >= max as usize && finishing.is_none() {
             let msg = format!("M98 Q{n} would be the {}th nested subprogramme call: {} allows {max} levels", max + 1, profile.name);
             return Err(Diagnostic::new(Rule::CallNesting, profile.alarm_style, span, msg));
         }
@@ -2064,8 +2074,10 @@ impl Core {
             return;
         }
         // FANUC 0: 078 for a programme or M99's N, 128 for GOTO's, 124 for a missing END.
+        let finishing = self.calls.frames.last().is_some_and(|f| f.finishing.is_some());
         let rule = match s.target {
             Target::Goto(_) => Rule::MacroSequence,
+            Target::CallSequence(_) if finishing => Rule::ContourNotFound,
             Target::LoopEnd(_) | Target::LoopEndAhead(_) => Rule::MissingEnd,
             _ => Rule::NumberNotFound,
         };
@@ -2099,6 +2111,19 @@ impl Core {
     fn text_ends(&mut self, span: Span, sink: &mut dyn FnMut(Event)) -> bool {
         let profile = self.interp.profile();
         self.flush_pending(sink);
+        // A G70 running the programme's blocks met the programme's end before N nf: PS0063,
+        // then on after the G70 (a check) or the stop.
+        if let Some(frame) = self.leave_finishing() {
+            let nf = frame.finishing.map_or(0, |r| r.nf);
+            let d = Diagnostic::new(Rule::ContourNotFound, profile.alarm_style, frame.call, format!("G70 Q{nf}: the programme ends before block N{nf}"));
+            self.alarm(d, sink);
+            if self.mode == Mode::Run {
+                self.eof = true;
+                return false;
+            }
+            self.seek(frame.back);
+            return false;
+        }
         let popped = self.calls.frames.pop();
         if let Some(f) = &popped {
             self.left(f);
