@@ -25,7 +25,8 @@ fn jsonl_follows_the_interface() {
         let lathe = ncsight::profile::by_name(machine).is_none_or(|p| p.is_lathe());
         // A lathe whose setup adds a Y axis shows Y from the first record that moves it on.
         let setup = std::fs::read_to_string(case.join("setup.toml")).unwrap_or_default();
-        let lathe_y = lathe && setup.lines().any(|l| l.trim_start().starts_with("axes") && l.contains("\"Y\""));
+        let assumed_y = ncsight::profile::by_name(machine).is_some_and(|p| p.frame.assumed_axes.contains('Y'));
+        let lathe_y = lathe && (assumed_y || setup.lines().any(|l| l.trim_start().starts_with("axes") && l.contains("\"Y\"")));
         let mut y_seen = false;
         let mut last_t = 0.0;
         for l in text.lines() {

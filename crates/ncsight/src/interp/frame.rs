@@ -35,6 +35,9 @@ pub struct Tables {
     pub offsets: Vec<Offset>,
     /// The axes A, B, C the setup declares (`[machine] axes`), rotary unless `linear_extra`.
     pub rotary: [bool; 3],
+    /// Axes taken without a setup's `[machine] axes` (the profile's `assumed_axes`): their first
+    /// word is worth a warning.
+    pub assumed_axes: crate::profile::Letters,
     /// Those of them declared linear (`kind = "linear"`: a sub-spindle's travel B): millimetres
     /// as X, Y and Z, moved as the rotary axes are (G00, G01, G28, G53), recorded as slides.
     pub linear_extra: [bool; 3],
@@ -52,7 +55,7 @@ impl Tables {
     /// Without a setup: every offset 0, machine coordinates the programme's, the reference
     /// point the profile's assumption, the tool at programme zero at power on (docs/setup.md).
     pub fn none(profile: &Profile) -> Tables {
-        Tables {
+        let mut t = Tables {
             given: false,
             machine_given: false,
             work_mm: [Vec3::default(); 7],
@@ -66,6 +69,36 @@ impl Tables {
             added_addresses: crate::profile::Letters::EMPTY,
             axis_order: profile.axes.bytes().collect(),
             spindle_p: Vec::new(),
+            assumed_axes: crate::profile::Letters::EMPTY,
+        };
+        // The axes a machine of this controller usually has, taken (with a warning at their first
+        // word) until a setup says which it has.
+        for letter in profile.frame.assumed_axes.bytes() {
+            t.add_axis(profile, letter, false);
+            t.assumed_axes = t.assumed_axes.with(letter);
+            t.axis_order.push(letter);
+        }
+        t
+    }
+
+    /// Axis `letter` added to the profile's own (a setup's `[machine] axes`, or an assumed one):
+    /// its address, V for Y and H for a rotary C where the profile has incremental addresses.
+    fn add_axis(&mut self, profile: &Profile, letter: u8, linear: bool) {
+        if profile.takes_address(letter) {
+            return;
+        }
+        self.added_addresses = self.added_addresses.with(letter);
+        match letter {
+            b'Y' if profile.incremental_addresses => self.added_addresses = self.added_addresses.with(b'V'),
+            b'A' | b'B' | b'C' => {
+                let i = usize::from(letter - b'A');
+                self.rotary[i] = true;
+                self.linear_extra[i] = linear;
+                if letter == b'C' && profile.incremental_addresses && !linear {
+                    self.added_addresses = self.added_addresses.with(b'H');
+                }
+            }
+            _ => {}
         }
     }
 
@@ -90,26 +123,14 @@ impl Tables {
         if let Some(m) = &setup.machine {
             t.spindle_p = m.spindle_p.clone();
             if !m.axes.is_empty() {
+                // The machine's axes as declared: none assumed.
                 t.axis_order = m.axes.iter().map(|a| a.letter()).collect();
+                t.added_addresses = crate::profile::Letters::EMPTY;
+                t.assumed_axes = crate::profile::Letters::EMPTY;
+                t.rotary = [false; 3];
             }
             for a in &m.axes {
-                let letter = a.letter();
-                if profile.takes_address(letter) {
-                    continue;
-                }
-                t.added_addresses = t.added_addresses.with(letter);
-                match letter {
-                    b'Y' if profile.incremental_addresses => t.added_addresses = t.added_addresses.with(b'V'),
-                    b'A' | b'B' | b'C' => {
-                        let i = usize::from(letter - b'A');
-                        t.rotary[i] = true;
-                        t.linear_extra[i] = a.linear_extra();
-                        if letter == b'C' && profile.incremental_addresses && !a.linear_extra() {
-                            t.added_addresses = t.added_addresses.with(b'H');
-                        }
-                    }
-                    _ => {}
-                }
+                t.add_axis(profile, a.letter(), a.linear_extra());
             }
             for (slot, p) in t.reference_mm.iter_mut().zip([m.reference, m.reference_2, m.reference_3, m.reference_4]) {
                 if let Some(p) = p {

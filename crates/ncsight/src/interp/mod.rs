@@ -990,7 +990,30 @@ fn collect<'w>(
             }
         }
     }
+    if !step.tables.assumed_axes.is_empty() {
+        for w in all {
+            assumed_axis_word(step, w);
+        }
+    }
     Ok((gs, ms))
+}
+
+/// The first word of an axis the profile assumes without a setup (C, H, Y, V on a turning
+/// centre): a warning that it was taken as the machine's axis.
+fn assumed_axis_word(step: &mut Step, w: &Word) {
+    let axis = match w.letter {
+        b'H' => b'C',
+        b'V' => b'Y',
+        l => l,
+    };
+    // Under 3405#4 CCR = 1 a plain C is the drawing's chamfer, not an axis.
+    let chamfer_c = axis == b'C' && step.profile.frame.drawing.is_some_and(|r| corner::plain_letters(step, r));
+    if step.tables.assumed_axes.contains(axis) && step.tables.added_addresses.contains(w.letter) && !step.st.axes_warned.contains(axis) && !chamfer_c {
+        step.st.axes_warned = step.st.axes_warned.with(axis);
+        let kind = if axis == b'C' { "a rotary C axis in degrees, H its incremental address" } else { "a linear Y axis, V its incremental address" };
+        let msg = format!("{}: no setup says which axes the machine has: taken as {kind}; declare them with [machine] axes (docs/setup.md)", w.text());
+        step.warn(Rule::AxisAssumed, w.span, msg);
+    }
 }
 
 /// A word whose address this controller does not read: the alarm, with how this controller
@@ -2213,8 +2236,10 @@ fn extra_axes_target(step: &mut Step, words: &mut Words) -> Result<Option<([f64;
     let mut target = step.st.rotary_deg;
     let mut named = [false; 3];
     let mut any = false;
+    // An assumed C is no axis while 3405#4 CCR = 1 makes a plain C the drawing's chamfer.
+    let chamfer_c = step.tables.assumed_axes.contains(b'C') && step.profile.frame.drawing.is_some_and(|r| corner::plain_letters(step, r));
     for (i, letter) in [b'A', b'B', b'C'].into_iter().enumerate() {
-        if !step.tables.rotary[i] {
+        if !step.tables.rotary[i] || (letter == b'C' && chamfer_c) {
             continue;
         }
         let abs_w = words.take(letter);

@@ -265,6 +265,8 @@ pub static TF: Profile = Profile {
     frame: FrameRules {
         drawing: Some(DrawingRules { plain_letters: Some(CCR), ..DrawingRules::FANUC_T }),
         arc_without_centre: Some(CIR),
+        // The 0i-TF's machines are turning centres with a C axis and often a Y (assumed).
+        assumed_axes: "CY",
         ..fanuc0t::BASE.frame
     },
     calls: CALL_RULES,

@@ -534,6 +534,9 @@ pub struct FrameRules {
     pub transform_keys: TransformKeys,
     /// G62's inner-corner override, where the profile has it.
     pub corner_override: Option<CornerOverrideKeys>,
+    /// Axes beyond the profile's own that its machines usually have (a turning centre's C and
+    /// Y): taken, with a warning, until a setup's `[machine] axes` says which the machine has.
+    pub assumed_axes: &'static str,
     /// The bit that says what G02/G03 with neither R nor a centre word does: 0 a straight move
     /// to the end point, 1 alarm PS0022 (FANUC 0i-F 3403#5 CIR); without one, the alarm.
     pub arc_without_centre: Option<ParamKey>,
@@ -684,6 +687,7 @@ impl FrameRules {
         transform_keys: TransformKeys::NONE,
         corner_override: None,
         arc_without_centre: None,
+        assumed_axes: "",
         source: "FANUC 0i manuals as recalled (G30 P2-P4; G92 after G54 in one block sets the system selected; 5002#4 LGT, #6 LWM; G10 forms); docs/reference/macro.md 10",
     };
     pub const GSK: FrameRules = FrameRules {
@@ -702,6 +706,7 @@ impl FrameRules {
         transform_keys: TransformKeys::NONE,
         corner_override: None,
         arc_without_centre: None,
+        assumed_axes: "",
         source: "GSK980TDi help text: G54-G59 note 6, G28 note 2, G30 (P2-P4) note 3, G10 L3 and L52 only; the offset mode's parameter number not found (an ncsight setting)",
     };
 }
@@ -1483,6 +1488,10 @@ impl Letters {
 
     pub fn contains(self, letter: u8) -> bool {
         letter.is_ascii_uppercase() && self.0 & (1 << (letter - b'A')) != 0
+    }
+
+    pub fn is_empty(self) -> bool {
+        self.0 == 0
     }
 
     /// The letters in alphabetical order.
