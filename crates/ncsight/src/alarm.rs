@@ -190,7 +190,7 @@ rules! {
     CornerArcOvercut => Warning, "NCS-W36", None, "G39 AT AN INNER CORNER: OVERCUT";
     SimulatorStock => Warning, "NCS-W37", None, "SIMULATOR STOCK LINE SKIPPED";
     ArcAsLine => Warning, "NCS-W38", None, "ARC WITHOUT RADIUS OR CENTRE: STRAIGHT MOVE";
-    AxisAssumed => Warning, "NCS-W39", None, "AXIS NOT IN THE SETUP: ASSUMED";
+    AxisAssumed => Warning, "NCS-W39", None, "AXIS OR SPINDLE NOT IN THE SETUP: ASSUMED";
 }
 
 impl Rule {

@@ -332,8 +332,9 @@ pub enum SpindleDir {
 pub struct Modal {
     /// The feed (mm/min or mm/rev) an implausibility warning was last given for: once per value.
     pub feed_warned: Option<f64>,
-    /// The assumed axes (a turning centre's C and Y without a setup) whose first word was warned.
-    pub axes_warned: crate::profile::Letters,
+    /// What was assumed without a setup and warned at its first word: the axes (a turning
+    /// centre's C and Y) by their letters, the spindle selection P by P.
+    pub assumed_warned: crate::profile::Letters,
     /// G71 / G72 depth of cut and back-off from their first blocks (index 0 G71, 1 G72).
     pub rough_data: [Option<(f64, f64)>; 2],
     /// G73 relief Δi (radius), Δk and number of passes d from its first block.
@@ -446,7 +447,7 @@ impl Modal {
     pub fn power_on(profile: &Profile) -> Modal {
         Modal {
             feed_warned: None,
-            axes_warned: crate::profile::Letters::EMPTY,
+            assumed_warned: crate::profile::Letters::EMPTY,
             pos: Vec3::default(),
             rotary_deg: [0.0; 3],
             transform: Transforms::default(),

@@ -74,6 +74,12 @@ pub fn linuxcnc_round_trip(programmes: &[Programme]) -> (usize, usize) {
             assert!(err.contains("straight only"), "{name}: {err}");
             continue;
         }
+        if canon.contains("COMMENT(\"rotary") && err.contains("NCS-E76") {
+            // A C, A or B axis turned (or a sub-spindle's B moved): expand writes X, Y, Z only.
+            assert_eq!(code, 1, "{name}");
+            assert!(err.contains("a move of the axis"), "{name}: {err}");
+            continue;
+        }
         assert!(!err.contains("NCS-E76"), "{name}: {err}");
         assert!(text.starts_with("(expanded by ncsight from"), "{name}: {text}");
         assert!(text.lines().filter(|l| !l.starts_with('(')).all(|l| !l.contains("G76") && !l.contains("G81") && !l.contains("G71")), "{name}: a cycle left in\n{text}");

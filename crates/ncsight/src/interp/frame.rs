@@ -49,6 +49,8 @@ pub struct Tables {
     pub axis_order: Vec<u8>,
     /// The P values that select a spindle (the setup's `spindle_p`; empty: one spindle).
     pub spindle_p: Vec<u32>,
+    /// They are the profile's assumption, no setup's: the first selection is worth a warning.
+    pub spindle_p_assumed: bool,
 }
 
 impl Tables {
@@ -68,8 +70,9 @@ impl Tables {
             linear_extra: [false; 3],
             added_addresses: crate::profile::Letters::EMPTY,
             axis_order: profile.axes.bytes().collect(),
-            spindle_p: Vec::new(),
+            spindle_p: profile.frame.assumed_spindle_p.to_vec(),
             assumed_axes: crate::profile::Letters::EMPTY,
+            spindle_p_assumed: !profile.frame.assumed_spindle_p.is_empty(),
         };
         // The axes a machine of this controller usually has, taken (with a warning at their first
         // word) until a setup says which it has.
@@ -121,7 +124,10 @@ impl Tables {
             }
         }
         if let Some(m) = &setup.machine {
-            t.spindle_p = m.spindle_p.clone();
+            if !m.spindle_p.is_empty() {
+                t.spindle_p = m.spindle_p.clone();
+                t.spindle_p_assumed = false;
+            }
             if !m.axes.is_empty() {
                 // The machine's axes as declared: none assumed.
                 t.axis_order = m.axes.iter().map(|a| a.letter()).collect();

@@ -233,6 +233,10 @@ impl Step<'_> {
 
     /// The P of the spindle selected (the setup's `spindle_p`), 0 on a machine with one.
     fn spindle_p(&self) -> u32 {
+        // Assumed spindles are named once the programme has selected one with P.
+        if self.tables.spindle_p_assumed && !self.st.assumed_warned.contains(b'P') {
+            return 0;
+        }
         self.tables.spindle_p.get(usize::from(self.st.spindle_sel)).copied().unwrap_or(0)
     }
 
@@ -1008,8 +1012,8 @@ fn assumed_axis_word(step: &mut Step, w: &Word) {
     };
     // Under 3405#4 CCR = 1 a plain C is the drawing's chamfer, not an axis.
     let chamfer_c = axis == b'C' && step.profile.frame.drawing.is_some_and(|r| corner::plain_letters(step, r));
-    if step.tables.assumed_axes.contains(axis) && step.tables.added_addresses.contains(w.letter) && !step.st.axes_warned.contains(axis) && !chamfer_c {
-        step.st.axes_warned = step.st.axes_warned.with(axis);
+    if step.tables.assumed_axes.contains(axis) && step.tables.added_addresses.contains(w.letter) && !step.st.assumed_warned.contains(axis) && !chamfer_c {
+        step.st.assumed_warned = step.st.assumed_warned.with(axis);
         let kind = if axis == b'C' { "a rotary C axis in degrees, H its incremental address" } else { "a linear Y axis, V its incremental address" };
         let msg = format!("{}: no setup says which axes the machine has: taken as {kind}; declare them with [machine] axes (docs/setup.md)", w.text());
         step.warn(Rule::AxisAssumed, w.span, msg);
@@ -1595,6 +1599,12 @@ fn select_spindle(step: &mut Step, codes: &Codes, ms: &[(&Word, Option<&'static 
                 let list: Vec<String> = step.tables.spindle_p.iter().map(|p| format!("P{p}")).collect();
                 return Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("{}: no such spindle: the setup's spindles are {}", w.text(), list.join(", "))));
             };
+            if step.tables.spindle_p_assumed && !step.st.assumed_warned.contains(b'P') {
+                step.st.assumed_warned = step.st.assumed_warned.with(b'P');
+                let list: Vec<String> = step.tables.spindle_p.iter().map(|p| format!("P{p}")).collect();
+                let msg = format!("{}: no setup gives the spindles' P (spindle_p): taken as the spindle selection of a multi-spindle lathe, {} (the first spindle, the second); declare them with [machine] spindle_p", w.text(), list.join(", "));
+                step.warn(Rule::AxisAssumed, w.span, msg);
+            }
             let i = i as u8;
             if i != step.st.spindle_sel {
                 let st = &mut *step.st;

@@ -267,6 +267,8 @@ pub static TF: Profile = Profile {
         arc_without_centre: Some(CIR),
         // The 0i-TF's machines are turning centres with a C axis and often a Y (assumed).
         assumed_axes: "CY",
+        // A main and a sub spindle, selected by P11 and P12 (parameter 3781's usual values; assumed).
+        assumed_spindle_p: &[11, 12],
         ..fanuc0t::BASE.frame
     },
     calls: CALL_RULES,

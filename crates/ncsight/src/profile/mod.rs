@@ -537,6 +537,9 @@ pub struct FrameRules {
     /// Axes beyond the profile's own that its machines usually have (a turning centre's C and
     /// Y): taken, with a warning, until a setup's `[machine] axes` says which the machine has.
     pub assumed_axes: &'static str,
+    /// The spindle selection P values its machines usually have (FANUC multi-spindle: P11 the
+    /// first spindle, P12 the second), taken with a warning until a setup gives `spindle_p`.
+    pub assumed_spindle_p: &'static [u32],
     /// The bit that says what G02/G03 with neither R nor a centre word does: 0 a straight move
     /// to the end point, 1 alarm PS0022 (FANUC 0i-F 3403#5 CIR); without one, the alarm.
     pub arc_without_centre: Option<ParamKey>,
@@ -688,6 +691,7 @@ impl FrameRules {
         corner_override: None,
         arc_without_centre: None,
         assumed_axes: "",
+        assumed_spindle_p: &[],
         source: "FANUC 0i manuals as recalled (G30 P2-P4; G92 after G54 in one block sets the system selected; 5002#4 LGT, #6 LWM; G10 forms); docs/reference/macro.md 10",
     };
     pub const GSK: FrameRules = FrameRules {
@@ -707,6 +711,7 @@ impl FrameRules {
         corner_override: None,
         arc_without_centre: None,
         assumed_axes: "",
+        assumed_spindle_p: &[],
         source: "GSK980TDi help text: G54-G59 note 6, G28 note 2, G30 (P2-P4) note 3, G10 L3 and L52 only; the offset mode's parameter number not found (an ncsight setting)",
     };
 }
