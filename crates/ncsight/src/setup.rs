@@ -65,6 +65,11 @@ pub struct MachineSetup {
     /// arguments (FANUC parameters 6080-6089, as the machine has them): `{ 165 = "O9832" }`.
     #[serde(default)]
     pub m_macro: std::collections::BTreeMap<String, String>,
+    /// The machine builder's own M codes, with what each does (`{ 150 = "sub-spindle
+    /// synchronous control on" }`: a chuck transfer, a parts catcher): passed to the machine as
+    /// any unlisted M code, without the warning that says it is unknown.
+    #[serde(default)]
+    pub m_codes: std::collections::BTreeMap<String, String>,
     /// Folders of the machine's resident programmes (O8000-O9999 libraries), searched for a
     /// called programme as `--subprogram-dir` folders are; relative to the setup file.
     #[serde(default)]
@@ -619,6 +624,11 @@ pub fn m_macro_entry(code: &str, program: &str) -> Option<(u32, u32)> {
 }
 
 impl MachineSetup {
+    /// The machine's own M codes (`m_codes`) by number.
+    pub fn own_m_codes(&self) -> impl Iterator<Item = u32> + '_ {
+        self.m_codes.keys().filter_map(|c| c.trim().trim_start_matches(['M', 'm']).parse().ok())
+    }
+
     /// The M codes that call programmes, as (code, programme) pairs.
     pub fn m_macros(&self) -> impl Iterator<Item = (u32, u32)> + '_ {
         self.m_macro.iter().filter_map(|(c, p)| m_macro_entry(c, p))
@@ -640,6 +650,12 @@ fn check_machine(m: &MachineSetup) -> Result<(), SetupError> {
             return Err(SetupError(format!(
                 "machine.m_macro: {code} = {program:?}: an M code 1-9999 other than M00-M02, M30, M98, M99, calling a programme O1-O99999999 (\"O9832\")"
             )));
+        }
+    }
+    for (code, what) in &m.m_codes {
+        let n: Option<u32> = code.trim().trim_start_matches(['M', 'm']).parse().ok();
+        if n.is_none_or(|n| n > 99_999_999) || what.len() > 200 {
+            return Err(SetupError(format!("machine.m_codes: {code} = {what:?}: an M code number and what it does (at most 200 characters)")));
         }
     }
     if m.tool_change_s.is_some_and(|s| !(s.is_finite() && (0.0..=3600.0).contains(&s))) {

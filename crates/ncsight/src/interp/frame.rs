@@ -51,6 +51,8 @@ pub struct Tables {
     pub spindle_p: Vec<u32>,
     /// They are the profile's assumption, no setup's: the first selection is worth a warning.
     pub spindle_p_assumed: bool,
+    /// The machine builder's own M codes the setup lists (`[machine] m_codes`): no warning.
+    pub own_m_codes: Vec<u32>,
 }
 
 impl Tables {
@@ -73,6 +75,7 @@ impl Tables {
             spindle_p: profile.frame.assumed_spindle_p.to_vec(),
             assumed_axes: crate::profile::Letters::EMPTY,
             spindle_p_assumed: !profile.frame.assumed_spindle_p.is_empty(),
+            own_m_codes: Vec::new(),
         };
         // The axes a machine of this controller usually has, taken (with a warning at their first
         // word) until a setup says which it has.
@@ -124,6 +127,7 @@ impl Tables {
             }
         }
         if let Some(m) = &setup.machine {
+            t.own_m_codes = m.own_m_codes().collect();
             if !m.spindle_p.is_empty() {
                 t.spindle_p = m.spindle_p.clone();
                 t.spindle_p_assumed = false;

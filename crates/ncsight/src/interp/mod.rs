@@ -1691,10 +1691,12 @@ fn m_codes_before<'w>(step: &mut Step, ms: &[(&'w Word, Option<&'static MDef>)],
     let mut flow = None;
     for &(w, m) in ms {
         match m {
+            // The machine's own codes the setup lists pass silently (no effect simulated).
+            None if w.value.fract() == 0.0 && step.tables.own_m_codes.contains(&(w.value as u32)) => {}
             None => step.warn(
                 Rule::MachineSpecificM,
                 w.span,
-                format!("{} is not a standard M code of {}: passed to the machine, no effect simulated", w.text(), profile.name),
+                format!("{} is not a standard M code of {}: passed to the machine, no effect simulated (a machine's own codes go in the setup's [machine] m_codes)", w.text(), profile.name),
             ),
             Some(m) => match m.function {
                 MFn::SpindleCw => {
