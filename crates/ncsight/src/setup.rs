@@ -175,7 +175,7 @@ impl Limits {
 }
 
 /// `[work]`: G54-G59 and the external (common) offset that shifts all six.
-#[derive(Debug, Clone, Copy, PartialEq, Deserialize, Default)]
+#[derive(Debug, Clone, PartialEq, Deserialize, Default)]
 #[serde(deny_unknown_fields)]
 pub struct WorkOffsets {
     #[serde(rename = "G54")]
@@ -191,12 +191,18 @@ pub struct WorkOffsets {
     #[serde(rename = "G59")]
     pub g59: Option<Point>,
     pub external: Option<Point>,
+    /// The additional work coordinate systems G54.1 P1, P2, ... in order (at most 48).
+    #[serde(rename = "G54.1", default)]
+    pub g54_1: Vec<Point>,
 }
 
+/// The additional work coordinate systems (G54.1 P1-P48, FANUC 0i-F).
+pub const ADDITIONAL_WORK_SYSTEMS: usize = 48;
+
 impl WorkOffsets {
-    /// The external offset, then G54-G59.
-    pub fn all(&self) -> [Option<Point>; 7] {
-        [self.external, self.g54, self.g55, self.g56, self.g57, self.g58, self.g59]
+    /// The external offset, then G54-G59, then G54.1 P1-P48 (each absent where not given).
+    pub fn all(&self) -> impl Iterator<Item = Option<Point>> + '_ {
+        [self.external, self.g54, self.g55, self.g56, self.g57, self.g58, self.g59].into_iter().chain((0..ADDITIONAL_WORK_SYSTEMS).map(|i| self.g54_1.get(i).copied()))
     }
 }
 
@@ -763,9 +769,13 @@ impl Setup {
     /// The work offsets' points and the mill block's corners.
     fn check_work_and_block(&self) -> Result<(), SetupError> {
         if let Some(w) = &self.work {
+            if w.g54_1.len() > ADDITIONAL_WORK_SYSTEMS {
+                return Err(SetupError(format!("work.\"G54.1\": at most {ADDITIONAL_WORK_SYSTEMS} systems (P1-P{ADDITIONAL_WORK_SYSTEMS})")));
+            }
             let names = ["external", "G54", "G55", "G56", "G57", "G58", "G59"];
-            for (name, p) in names.into_iter().zip(w.all()) {
+            for (k, p) in w.all().enumerate() {
                 if p.is_some_and(|p| !point_ok(&p)) {
+                    let name = names.get(k).map_or_else(|| format!("\"G54.1\" P{}", k - 6), |n| n.to_string());
                     return Err(SetupError(format!("work.{name}: every coordinate must be a finite number of at most {MAX_MM} mm")));
                 }
             }

@@ -22,7 +22,7 @@ pub struct Tables {
     /// The setup has a `[machine]` part (a reference point it lacks is then worth a warning).
     pub machine_given: bool,
     /// The external offset (0), then G54-G59 (1-6): machine coordinates of each zero.
-    pub work_mm: [Vec3; 7],
+    pub work_mm: [Vec3; WORK_SYSTEMS],
     /// Reference points 1-4 in machine coordinates (`None`: not in the setup).
     pub reference_mm: [Option<Vec3>; 4],
     /// Soft travel limits per axis, machine coordinates.
@@ -55,6 +55,23 @@ pub struct Tables {
     pub own_m_codes: Vec<u32>,
 }
 
+/// The external offset, G54-G59 and G54.1 P1-P48: the work systems a table holds.
+pub const WORK_SYSTEMS: usize = 7 + crate::setup::ADDITIONAL_WORK_SYSTEMS;
+
+/// G54.1 P1-P48: work system 6 + P (FANUC 0i-MF, additional work coordinate systems).
+pub(super) fn select_additional_work(step: &mut Step, words: &mut Words, span: Span) -> Result<(), Diagnostic> {
+    let max = crate::setup::ADDITIONAL_WORK_SYSTEMS;
+    let p = match words.take(b'P') {
+        Some(w) if w.decimal || w.value < 1.0 || w.value > max as f64 || w.value.fract() != 0.0 => {
+            return Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("{}: G54.1 P selects additional work system 1 to {max}", w.text())));
+        }
+        Some(w) => w.value as u8,
+        None => return Err(step.alarm(Rule::MissingWord, span, format!("G54.1 needs P: the additional work system, 1 to {max}"))),
+    };
+    select_work(step, 6 + p);
+    Ok(())
+}
+
 impl Tables {
     /// Without a setup: every offset 0, machine coordinates the programme's, the reference
     /// point the profile's assumption, the tool at programme zero at power on (docs/setup.md).
@@ -62,7 +79,7 @@ impl Tables {
         let mut t = Tables {
             given: false,
             machine_given: false,
-            work_mm: [Vec3::default(); 7],
+            work_mm: [Vec3::default(); WORK_SYSTEMS],
             reference_mm: [Some(profile.reference_point_mm), None, None, None],
             limits_mm: [None; 3],
             limited: false,
@@ -182,7 +199,7 @@ impl Tables {
 
     /// What to add to programme coordinates for machine coordinates in `frame`.
     pub fn to_machine(&self, frame: &Frame) -> Vec3 {
-        self.work_mm[0] + self.work_mm[frame.work.clamp(1, 6) as usize] + frame.shift + frame.local + frame.tool()
+        self.work_mm[0] + self.work_mm[usize::from(frame.work).clamp(1, WORK_SYSTEMS - 1)] + frame.shift + frame.local + frame.tool()
     }
 
     /// A machine position beyond a soft limit: (axis, the limit, the machine coordinate,
@@ -619,6 +636,18 @@ pub(super) fn data_setting(step: &mut Step, words: &mut Words, span: Span) -> Re
     // Set (absolute) or add (incremental: G91 on a mill, U/V/W on a lathe) per axis.
     let incremental = step.st.incremental;
     let values = written_axes(step, words)?.map(|v| v.map(|(v, by_address)| (v, by_address || incremental)));
+    // G10 L20 P1-P48: the additional work systems, where the profile has G54.1 (FANUC 0i-MF).
+    let additional = step.profile.g_defs().any(|g| g.function == crate::profile::GFn::AdditionalWorkOffset);
+    if l == Some(20) && additional {
+        let max = crate::setup::ADDITIONAL_WORK_SYSTEMS as u32;
+        if !(1..=max).contains(&n) {
+            return Err(p_out_of_range(step, pw, "G10 L20 sets additional work system P1 to P48 (G54.1)"));
+        }
+        let i = 6 + n as usize;
+        let old = step.tables.work_mm[i];
+        let p = Vec3::new(merge(old.x, values[0]), merge(old.y, values[1]), merge(old.z, values[2]));
+        return Ok(Some(TableWrite::Work(i, p)));
+    }
     if l == Some(2) {
         if n > 6 {
             return Err(p_out_of_range(step, pw, "G10 L2 sets work offset P0 (external) to P6 (G59)"));

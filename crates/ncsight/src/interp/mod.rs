@@ -1061,6 +1061,8 @@ struct Codes {
     comp: Option<(Span, i8)>,
     /// G54-G59 in this block (1-6).
     work: Option<u8>,
+    /// G54.1 in this block (its P read when the work system is selected).
+    work_additional: Option<Span>,
     /// G68/G69, G51.1/G50.1, G51/G50 and G22/G23 in this block, in order.
     transforms: Vec<(Span, GFn)>,
     /// G12.1, G13.1 or G07.1 in this block.
@@ -1111,6 +1113,9 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
     let run_deg = held_thread_run(step, &codes, ms.is_empty(), &words, motion_now, has_axis);
     if let Some(n) = codes.work {
         frame::select_work(step, n);
+    }
+    if let Some(span) = codes.work_additional {
+        frame::select_additional_work(step, &mut words, span)?;
     }
     // 6. H and D.
     offset_words(step, &last_of, &codes, &mut words, motion_now, has_axis)?;
@@ -1261,6 +1266,7 @@ fn suspend_compensation(step: &mut Step, last_of: &[(Group, &Word, &'static GDef
             matches!(
                 f,
                 GFn::WorkOffset(_)
+                    | GFn::AdditionalWorkOffset
                     | GFn::LocalCoordinates
                     | GFn::MachineCoordinates
                     | GFn::ReferenceReturn
@@ -1328,7 +1334,7 @@ fn modal_codes(step: &mut Step, block: &Block, last_of: &[(Group, &Word, &'stati
     let set_wins = profile.frame.coordinate_set_wins
         && last_of.iter().any(|(_, _, g)| matches!(g.function, GFn::LatheCoordinateSet | GFn::MillCoordinateSet));
     for &(_, w, g) in last_of {
-        if set_wins && matches!(g.function, GFn::WorkOffset(_)) {
+        if set_wins && matches!(g.function, GFn::WorkOffset(_) | GFn::AdditionalWorkOffset) {
             continue;
         }
         let st = &mut step.st;
@@ -1365,6 +1371,7 @@ fn modal_codes(step: &mut Step, block: &Block, last_of: &[(Group, &Word, &'stati
             GFn::RadiusComp(side) => codes.comp = Some((w.span, side)),
             // After step 5: a thread run held back from the block before is made in its frame.
             GFn::WorkOffset(n) => codes.work = Some(n),
+            GFn::AdditionalWorkOffset => codes.work_additional = Some(w.span),
             // Step 6 puts the length offset in force, with the H of the block.
             // G62 slows inner corners in cutter compensation (interp/comp.rs).
             GFn::LengthComp(_) | GFn::PathControl | GFn::TappingMode | GFn::CornerOverride => {}

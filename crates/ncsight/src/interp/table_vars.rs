@@ -13,7 +13,8 @@
 //! #2600+n (n up to 200); any n up to 999: #10000+n, #11000+n, #12000+n, #13000+n.
 //!
 //! Work offsets, axis k of the machine's axes in order (X Z on a lathe, X Y Z on a mill, or the
-//! setup's `[machine] axes`): external #5200+k, G54 #5220+k, ... G59 #5320+k.
+//! setup's `[machine] axes`): external #5200+k, G54 #5220+k, ... G59 #5320+k; G54.1 Pp
+//! #7000+20(p-1)+k where the profile has G54.1.
 
 use super::frame::{TableWrite, Tables};
 use crate::motion::Vec3;
@@ -74,6 +75,12 @@ const MILL_LONG: [(i64, Field); 4] = [(10000, Field::WearLength), (11000, Field:
 /// The table slot of variable `number` on this profile's machine, if it is one.
 fn slot(profile: &Profile, axes: &[u8], number: i64) -> Option<Slot> {
     let lathe = profile.kind == MachineKind::Lathe;
+    // G54.1 P1-P48: #7001 + 20 (P - 1) + k - 1, system 6 + P.
+    if (7001..=7960).contains(&number) && profile.g_defs().any(|g| g.function == crate::profile::GFn::AdditionalWorkOffset) {
+        let (system, k) = (7 + (number - 7001) / 20, (number - 7001) % 20);
+        let letter = *axes.get(usize::try_from(k).ok()?)?;
+        return matches!(letter, b'X' | b'Y' | b'Z').then_some(Slot::Work(system as usize, letter));
+    }
     if (5201..=5340).contains(&number) {
         let (system, k) = ((number - 5201) / 20, (number - 5201) % 20);
         let letter = *axes.get(usize::try_from(k).ok()?)?;

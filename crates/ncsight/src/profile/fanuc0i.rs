@@ -294,10 +294,20 @@ const MF_PARAMS: &[&[ParamDef]] = &[
     super::SETTINGS,
 ];
 
+/// The 0i-MF's codes beyond the 0-M's.
+const MF_CODES: &[GDef] = &[super::common::gp(54, 1, "G54.1", Group::WorkOffset, GFn::AdditionalWorkOffset, "additional work coordinate system P1-P48 (the setup's [work] \"G54.1\" list)")];
+
 pub static MF: Profile = Profile {
     name: "fanuc0i-mf",
     title: "FANUC 0i-MF machining centre",
     params: MF_PARAMS,
+    g_codes: &[
+        super::Codes { source: "FANUC 0-M manual, canned cycles (seed 003) and the FANUC 0i-MC G-code table", codes: super::common::G_CODES },
+        super::Codes { source: "FANUC 0-M manual, canned cycles (seed 003) and the FANUC 0i-MC G-code table", codes: super::common::UNITS },
+        super::Codes { source: "FANUC 0-M manual, canned cycles (seed 003) and the FANUC 0i-MC G-code table", codes: fanuc0m::G_CODES },
+        super::Codes { source: "the FANUC 0i-MC G-code table", codes: super::later::FANUC_0M },
+        super::Codes { source: "FANUC 0i-MF: G54.1 P1-P48 (standard; P1-P300 an option, not simulated), as recalled", codes: MF_CODES },
+    ],
     time: TimeKeys {
         rapid: [ParamKey::Number(1420, None), ParamKey::Number(1420, None), ParamKey::Number(1420, None)],
         dry_run: ParamKey::Setting("dry_run_mm_min"),

@@ -179,6 +179,8 @@ pub enum GFn {
     SingleDirection,
     /// G54..G59: select work coordinate system 1-6 (offsets from the setup's `[work]`).
     WorkOffset(u8),
+    /// G54.1 P1-P48: an additional work coordinate system (the setup's `[work] "G54.1"`).
+    AdditionalWorkOffset,
     /// G52: a local coordinate system inside the work system (FANUC; GSK980TDi help G52).
     LocalCoordinates,
     /// G53: positioning in machine coordinates, this block only.
