@@ -1599,8 +1599,8 @@ fn select_spindle(step: &mut Step, codes: &Codes, ms: &[(&Word, Option<&'static 
     let spindle_m = ms.iter().any(|(_, m)| m.is_some_and(|m| matches!(m.function, MFn::SpindleCw | MFn::SpindleCcw | MFn::SpindleStop)));
     let calls = ms.iter().any(|(_, m)| m.is_some_and(|m| matches!(m.function, MFn::SubprogramCall | MFn::SubprogramReturn)));
     // `P11` in a block of its own selects the spindle the next S and M codes are for.
-    let p_alone = words.all().iter().all(|w| w.letter == b'P') && codes.non_modal.is_none() && codes.motion.is_none();
-    if !step.tables.spindle_p.is_empty() && (words.has(b'S') || spindle_m || p_alone) && codes.non_modal.is_none() && !calls && codes.drill.or(step.st.drill.kind).is_none() && !thread_block {
+    let p_alone = || words.all().iter().all(|w| w.letter == b'P') && codes.motion.is_none();
+    if !step.tables.spindle_p.is_empty() && (words.has(b'S') || spindle_m || p_alone()) && codes.non_modal.is_none() && !calls && codes.drill.or(step.st.drill.kind).is_none() && !thread_block {
         if let Some(w) = words.take(b'P') {
             let Some(i) = step.tables.spindle_p.iter().position(|p| f64::from(*p) == w.value) else {
                 let list: Vec<String> = step.tables.spindle_p.iter().map(|p| format!("P{p}")).collect();
