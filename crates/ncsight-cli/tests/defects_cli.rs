@@ -299,3 +299,29 @@ fn every_example_runs() {
     }
     assert!(n >= 8, "{n} examples");
 }
+
+/// Less noise, clearer answers (issue 36): a near-miss machine name is suggested; a machining
+/// centre's programme on a lathe profile is said to be one; subprogrammes after M30 are no
+/// "blocks after the programme end".
+#[test]
+fn near_misses_and_the_other_kind_of_machine_are_named() {
+    let dir = std::env::temp_dir().join(format!("ncsight-noise-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let lathe = dir.join("lathe.nc");
+    std::fs::write(&lathe, "O0001\nG98 G00 X20. Z2.\nM98 P0002\nM30\nO0002\nG00 X30.\nM99\n").unwrap();
+    let (code, _, err) = common::ncsight(&["check", lathe.to_str().unwrap(), "--machine", "gsk980td"]);
+    assert_eq!(code, 2);
+    assert!(err.contains("did you mean gsk980tdi?"), "{err}");
+    let (_, _, err) = common::ncsight(&["check", lathe.to_str().unwrap(), "--machine", "fanuc0i"]);
+    assert!(err.contains("did you mean fanuc0i-tf or fanuc0i-mf?"), "{err}");
+    let (code, out, _) = common::ncsight(&["check", lathe.to_str().unwrap(), "--machine", "gsk980tdi"]);
+    assert_eq!(code, 0, "{out}");
+    assert!(!out.contains("NCS-W09"), "{out}");
+    let mill = dir.join("mill.nc");
+    std::fs::write(&mill, "G21 G17 G90\nG00 X10. Y10. Z5.\nG81 Z-5. R2. F100.\nG80\nM30\n").unwrap();
+    let (code, out, _) = common::ncsight(&["check", mill.to_str().unwrap(), "--machine", "gsk980tdi"]);
+    assert_eq!(code, 1);
+    assert!(out.contains("a machining centre programme? choose one of fanuc0m, fanuc0i-mf"), "{out}");
+    assert!(out.contains("G81 is a code of the machining centre profiles (fanuc0m, fanuc0i-mf)"), "{out}");
+    let _ = std::fs::remove_dir_all(dir);
+}

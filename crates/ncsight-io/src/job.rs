@@ -87,6 +87,32 @@ pub fn check_operator(o: &Options, name: fn(&str) -> String) -> Result<(), Strin
     Ok(())
 }
 
+/// The profile whose name is nearest `name` (a letter or two off, or one begins the other:
+/// `gsk980td`, `fanuc0i-t`), if one is near enough.
+pub fn nearest_machine(name: &str) -> Option<String> {
+    let name = name.to_ascii_lowercase();
+    let distance = |a: &str, b: &str| {
+        // Levenshtein distance, one row at a time.
+        let b: Vec<char> = b.chars().collect();
+        let mut row: Vec<usize> = (0..=b.len()).collect();
+        for (i, ca) in a.chars().enumerate() {
+            let mut prev = row[0];
+            row[0] = i + 1;
+            for j in 0..b.len() {
+                let cost = usize::from(ca != b[j]);
+                let next = (row[j + 1] + 1).min(row[j] + 1).min(prev + cost);
+                prev = row[j + 1];
+                row[j + 1] = next;
+            }
+        }
+        row[b.len()]
+    };
+    let scored: Vec<(&str, usize)> =
+        profile::all().into_iter().map(|p| (p.name, if p.name.starts_with(&name) || name.starts_with(p.name) { 0 } else { distance(&name, p.name) })).filter(|(_, d)| *d <= 2).collect();
+    let best = scored.iter().map(|(_, d)| *d).min()?;
+    Some(scored.iter().filter(|(_, d)| *d == best).map(|(n, _)| *n).collect::<Vec<_>>().join(" or "))
+}
+
 /// The profiles' names, for messages.
 pub fn machine_names() -> String {
     profile::all().iter().map(|p| p.name).collect::<Vec<_>>().join(", ")
@@ -99,7 +125,10 @@ impl Job {
     }
 
     pub fn profile(&self) -> Result<&'static Profile, JobError> {
-        profile::by_name(&self.machine).ok_or_else(|| usage(format!("unknown machine '{}': choose one of {}", self.machine, machine_names())))
+        profile::by_name(&self.machine).ok_or_else(|| {
+            let near = nearest_machine(&self.machine).map(|n| format!("did you mean {n}? ")).unwrap_or_default();
+            usage(format!("unknown machine '{}': {near}choose one of {}", self.machine, machine_names()))
+        })
     }
 
     /// The profile's parameters with the overrides applied.

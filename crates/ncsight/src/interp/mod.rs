@@ -969,7 +969,17 @@ fn collect<'w>(
                         } else {
                             format!("{}: no such G code on {}", w.text(), profile.name)
                         };
-                        return Err(step.alarm(Rule::ImproperGCode, w.span, msg));
+                        let d = step.alarm(Rule::ImproperGCode, w.span, msg);
+                        let simulated = |p: &Profile| p.g_code(major, minor).is_some_and(|g| !matches!(g.function, GFn::NotYet(_)));
+                        // A code of another G-code system of a profile (a FANUC lathe's B or C).
+                        if let Some(hint) = other_system(profile, &simulated) {
+                            return Err(d.with_hint(format!("{} is a code of {hint}", w.text())));
+                        }
+                        // A machining centre's code on a lathe (or the reverse): the other kind's profiles.
+                        return Err(match other_kind(profile, simulated) {
+                            Some((kind, names)) => d.with_hint(format!("{} is a code of the {kind} profiles ({names}): a {kind} programme? choose one with --machine", w.text())),
+                            None => d,
+                        });
                     }
                 }
             }
@@ -1033,6 +1043,12 @@ fn improper_address(step: &Step, w: &Word) -> Diagnostic {
             format!("address {} is not used on {} ({})", crate::read::address_name(letter), profile.name, w.text())
         },
     );
+    // Y on a lathe: a turning centre's Y axis, or a machining centre's programme.
+    if letter == b'Y' {
+        if let Some((kind, names)) = other_kind(profile, |p| p.axes.contains('Y')) {
+            return d.with_hint(format!("a {kind} programme? choose one of {names} with --machine"));
+        }
+    }
     // A comma word is FANUC's drawing dimensions: say how this controller writes them.
     if letter.is_ascii_lowercase() {
         d.with_hint(match profile.frame.drawing {
@@ -1048,6 +1064,30 @@ fn improper_address(step: &Step, w: &Word) -> Diagnostic {
     } else {
         d
     }
+}
+
+/// The profiles of the other kind (machining centres for a lathe, lathes for a machining
+/// centre) that `has` something this profile lacks: the kind's name and theirs, for a hint that
+/// the programme may be for the other kind of machine.
+fn other_kind(profile: &Profile, has: impl Fn(&Profile) -> bool) -> Option<(&'static str, String)> {
+    let names: Vec<&str> = crate::profile::all().into_iter().filter(|p| p.kind != profile.kind && has(p)).map(|p| p.name).collect();
+    let kind = if profile.is_lathe() { "machining centre" } else { "lathe" };
+    (!names.is_empty()).then(|| (kind, names.join(", ")))
+}
+
+/// The G-code systems (B, C) of the profiles of this kind that `has` something: where and how
+/// to choose it, for a hint (a lathe programme written in G-code system B, say).
+fn other_system(profile: &Profile, has: &dyn Fn(&Profile) -> bool) -> Option<String> {
+    let found: Vec<String> = crate::profile::all()
+        .into_iter()
+        .filter(|p| p.kind == profile.kind)
+        .filter_map(|p| {
+            let s = p.g_code_systems?;
+            let systems: Vec<String> = [("B", s.profile_b, s.b), ("C", s.profile_c, s.c)].into_iter().filter(|(_, v, _)| has(v)).map(|(n, _, key)| format!("{n} (--param {key}=1)")).collect();
+            (!systems.is_empty()).then(|| format!("{} in G-code system {}", p.name, systems.join(" or ")))
+        })
+        .collect();
+    (!found.is_empty()).then(|| format!("{}: a programme written for that system? choose it with --machine and --param", found.join(", ")))
 }
 
 /// What one block asks for after its G codes are sorted.

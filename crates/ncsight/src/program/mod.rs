@@ -963,6 +963,10 @@ impl Core {
             self.calls.note_program(n, place);
         }
         if self.status == Status::Ended {
+            // Subprogrammes after M30 (O blocks) are the shop files' habit: no warning for them.
+            if !self.warned_after_end && block.program.is_some() {
+                self.warned_after_end = true;
+            }
             if !self.warned_after_end {
                 self.warned_after_end = true;
                 let d = Diagnostic::new(
