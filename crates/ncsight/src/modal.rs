@@ -330,8 +330,9 @@ pub enum SpindleDir {
 
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Modal {
-    /// The feed (mm/min or mm/rev) an implausibility warning was last given for: once per value.
-    pub feed_warned: Option<f64>,
+    /// The feed mode (per revolution or not) an implausibility warning was given in: one hint
+    /// ("G99 was probably meant") per programme and mode, not one per F value.
+    pub feed_warned: Option<bool>,
     /// What was assumed without a setup and warned at its first word: the axes (a turning
     /// centre's C and Y) by their letters, the spindle selection P by P.
     pub assumed_warned: crate::profile::Letters,

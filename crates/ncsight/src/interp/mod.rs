@@ -438,7 +438,8 @@ impl Step<'_> {
 
     /// A word for the student (issue 15): a lathe feed per minute below 10 mm/min (`F0.2` under
     /// G98: a 22 mm cut takes nearly two hours) was meant per revolution; a feed per revolution
-    /// above 10 mm/rev was meant per minute. Once per F value, with the numbers.
+    /// above 10 mm/rev was meant per minute. Once per programme and feed mode, with the numbers
+    /// of the first F that was (issue 36: one hint, not one per F).
     #[cold]
     #[inline(never)]
     fn feed_plausible(&mut self, f: f64, point: &dyn Fn(f64) -> Vec3) {
@@ -462,7 +463,7 @@ impl Step<'_> {
                 if self.st.inch { "inch" } else { "mm" }
             )
         };
-        self.st.feed_warned = Some(f);
+        self.st.feed_warned = Some(self.st.per_rev);
         self.warn(Rule::Implausible, self.span, msg);
     }
 
@@ -540,7 +541,7 @@ impl Step<'_> {
         };
         // A lathe F that is implausible in its mode (the check inline, the message cold).
         let implausible = if self.st.per_rev { f > 10.0 } else { f < 10.0 };
-        if implausible && self.profile.is_lathe() && self.st.feed_warned != Some(f) {
+        if implausible && self.profile.is_lathe() && self.st.feed_warned != Some(self.st.per_rev) {
             self.feed_plausible(f, point);
         }
         if self.st.per_rev && self.rpm_here() == 0.0 {

@@ -556,7 +556,7 @@ pub(super) struct Contour {
 
 /// What reading a contour's blocks on a copy of the modal state leaves behind for the programme.
 pub(super) struct ContourNotes {
-    feed_warned: Option<f64>,
+    feed_warned: Option<bool>,
     increment_words: u32,
     increment_words_small: u32,
     /// Radius compensation in force after the ns block (a G41/G42 before the cycle or in it).
