@@ -325,3 +325,13 @@ fn near_misses_and_the_other_kind_of_machine_are_named() {
     assert!(out.contains("G81 is a code of the machining centre profiles (fanuc0m, fanuc0i-mf)"), "{out}");
     let _ = std::fs::remove_dir_all(dir);
 }
+
+/// G70 with a range no roughing collected, on a profile whose G70 needs the collected contour
+/// (the GSK980TDi): the message names the range the G71 did collect (issue 36: the real cause).
+#[test]
+fn a_g70_range_names_what_the_roughing_collected() {
+    let p = tmp("g70_range.nc", b"O0001\nG99 G00 X52. Z2. S800 M03\nG71 U1. R0.5\nG71 P10 Q20 U0.4 W0.1 F0.25\nN10 G00 X30.\nG01 Z-20. F0.1\nN20 X50.\nN30 Z-30.\nG70 P10 Q30\nM30\n");
+    let (code, out, _) = common::ncsight(&["check", p.to_str().unwrap(), "--machine", "gsk980tdi"]);
+    assert_eq!(code, 1, "{out}");
+    assert!(out.contains("collected the blocks N10 to N20, not N10 to N30") && out.contains("write G70 P10 Q20"), "{out}");
+}

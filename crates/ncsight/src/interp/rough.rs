@@ -471,11 +471,16 @@ impl Interpreter {
                 out.flow = Some(super::Flow::Finish(req));
                 return Ok(());
             }
-            return Err(self.contour_alarm(
-                Rule::ContourNotFound,
-                req.span,
-                format!("G70 P{} Q{}: no G71, G72 or G73 before it collected the blocks N{} to N{}", req.ns, req.nf, req.ns, req.nf),
-            ));
+            // The real cause where a roughing collected a range that shares one end (issue 36).
+            let near = self.contours.iter().rev().find(|c| c.ns == req.ns || c.nf == req.nf);
+            let msg = match near {
+                Some(c) => format!(
+                    "G70 P{} Q{}: the roughing cycle before it collected the blocks N{} to N{}, not N{} to N{}: G70 finishes the contour a G71, G72 or G73 collected (write G70 P{} Q{})",
+                    req.ns, req.nf, c.ns, c.nf, req.ns, req.nf, c.ns, c.nf
+                ),
+                None => format!("G70 P{} Q{}: no G71, G72 or G73 before it collected the blocks N{} to N{}", req.ns, req.nf, req.ns, req.nf),
+            };
+            return Err(self.contour_alarm(Rule::ContourNotFound, req.span, msg));
         };
         if contour.failed {
             // Its alarm was reported at the roughing cycle (check mode): G70 does nothing.
