@@ -30,7 +30,7 @@ struct Options {
 #[pymethods]
 impl Options {
     #[new]
-    #[pyo3(signature = (machine, params=Vec::new(), main=None, subprogram_dirs=Vec::new(), skip_missing_subprograms=false, max_blocks=None, variables=Vec::new(), block_delete=false, optional_stop=false, setup_path=None, setup_toml=None))]
+    #[pyo3(signature = (machine, params=Vec::new(), main=None, subprogram_dirs=Vec::new(), skip_missing_subprograms=false, max_blocks=None, variables=Vec::new(), block_delete=false, optional_stop=false, setup_path=None, setup_toml=None, call_args=None))]
     #[allow(clippy::too_many_arguments)]
     fn new(
         machine: &str,
@@ -44,6 +44,7 @@ impl Options {
         optional_stop: bool,
         setup_path: Option<PathBuf>,
         setup_toml: Option<String>,
+        call_args: Option<String>,
     ) -> PyResult<Options> {
         let mut job = Job {
             machine: machine.to_string(),
@@ -55,7 +56,7 @@ impl Options {
             skip_missing_subprograms,
             max_blocks,
             vars: variables,
-            call_args: None,
+            call_args,
             setup: None,
             setup_dir: None,
         };

@@ -224,3 +224,13 @@ def test_out_of_range_options_are_value_errors(tmp_path):
     (tmp_path / "big.toml").write_bytes(b"#" * (16 * 1024 * 1024 + 10))
     with pytest.raises(ValueError, match="at most 16 MiB"):
         ncsight.run(text, "gsk980tdi", setup=tmp_path / "big.toml")
+
+
+def test_a_macro_body_runs_with_its_arguments():
+    body = "O9010\n#3 = #1 + #2\nG01 X#3 F#9\nM99\n"
+    records = ncsight.run(body, "fanuc0m", call_args="A1. B2. F100.")
+    feeds = [r for r in records if r["kind"] == "feed"]
+    assert feeds[0]["x"] == 3 and feeds[0]["f"] == 100
+    assert not any(r.get("code") == "NCS-W08" for r in records)
+    with pytest.raises(ValueError, match="call_args"):
+        ncsight.run(body, "fanuc0m", call_args=["A1."])

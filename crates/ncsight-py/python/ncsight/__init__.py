@@ -94,7 +94,7 @@ def _setup(setup: Any) -> "tuple[Optional[str], Optional[str]]":
     raise ValueError("setup: the path of a setup file (TOML), or a mapping shaped as one")
 
 
-_OPTIONS = ("main", "subprogram_dirs", "skip_missing_subprograms", "max_blocks", "variables", "block_delete", "optional_stop")
+_OPTIONS = ("main", "subprogram_dirs", "skip_missing_subprograms", "max_blocks", "variables", "call_args", "block_delete", "optional_stop")
 
 
 def _options(caller: str, machine: str, params: Params, setup: Any, options: Mapping[str, Any]) -> Any:
@@ -120,6 +120,9 @@ def _options(caller: str, machine: str, params: Params, setup: Any, options: Map
     variables = options.get("variables")
     if variables is not None and not isinstance(variables, Mapping):
         raise ValueError("variables: a mapping such as {500: 1.5, 1002: 1}")
+    call_args = options.get("call_args")
+    if call_args is not None and not isinstance(call_args, str):
+        raise ValueError(f"call_args: the arguments as a G65 block writes them after P, such as 'A1. B2.', not {call_args!r}")
     if main is not None and (isinstance(main, bool) or not isinstance(main, (int, str))):
         raise ValueError(f"main: a programme number such as 1234 or 'O1234', not {main!r}")
     return _ncsight.Options(
@@ -134,6 +137,7 @@ def _options(caller: str, machine: str, params: Params, setup: Any, options: Map
         optional_stop=bool(options.get("optional_stop", False)),
         setup_path=setup_path,
         setup_toml=setup_toml,
+        call_args=call_args,
     )
 
 

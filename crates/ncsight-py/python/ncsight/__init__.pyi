@@ -18,13 +18,14 @@ Setup = Union[str, os.PathLike[str], Mapping[str, Any], None]
 
 class _Options(TypedDict, total=False):
     """The command line's options: --main, --subprogram-dir, --skip-missing-subprograms,
-    --max-blocks, --var, --block-delete, --optional-stop."""
+    --max-blocks, --var, --call-args, --block-delete, --optional-stop."""
 
     main: Union[int, str]
     subprogram_dirs: Union[PathLike, Sequence[PathLike]]
     skip_missing_subprograms: bool
     max_blocks: int
     variables: Mapping[int, float]
+    call_args: str
     block_delete: bool
     optional_stop: bool
 

@@ -18,6 +18,7 @@ class Options:
         optional_stop: bool = False,
         setup_path: Optional[Union[str, PathLike[str]]] = None,
         setup_toml: Optional[str] = None,
+        call_args: Optional[str] = None,
     ) -> None: ...
 
 def machines() -> List[str]: ...
