@@ -343,6 +343,19 @@ enum Command {
     Machines {
         machine: Option<String>,
     },
+    /// What an alarm or warning means, its usual causes, how to fix it, a wrong and a right
+    /// example: NCS-E53 or the controller's PS0063. In English, or in Chinese with --lang zh
+    /// (or a locale starting with zh).
+    Explain {
+        /// The code, as check gives it.
+        code: Option<String>,
+        /// en or zh.
+        #[arg(long)]
+        lang: Option<String>,
+        /// List every code with its title.
+        #[arg(long)]
+        list: bool,
+    },
 }
 
 /// Run the command line. Returns the exit status.
@@ -365,6 +378,7 @@ pub fn main_with(args: impl IntoIterator<Item = std::ffi::OsString>, out: &mut d
         Command::Check { files, machine, format } => check(&files, &machine, &format, out, err),
         Command::Expand { file, machine, to, output } => expand(&file, &machine, &to, output.as_deref(), out, err),
         Command::Machines { machine } => machines(machine.as_deref(), out),
+        Command::Explain { code, lang, list } => explain(code.as_deref(), lang.as_deref(), list, out),
         Command::Simulate { file, machine, stock, expect, format, image, stl, section, resolution } => {
             let outputs = SimOutputs { image: image.as_deref(), stl: stl.as_deref(), section: section.as_deref() };
             simulate(&file, &machine, stock.as_deref(), expect.as_deref(), &format, outputs, resolution.as_deref(), out, err)
@@ -1155,6 +1169,37 @@ fn code_line(out: &mut dyn Write, code: &str, status: ncsight::profile::CodeStat
         CodeStatus::NotYet => ("not yet", String::new()),
     };
     writeln!(out, "  {code:<7} {state:<10} {meaning}{why} [{source}]")
+}
+
+/// `ncsight explain CODE [--lang en|zh]`, `ncsight explain --list`.
+fn explain(code: Option<&str>, lang: Option<&str>, list: bool, out: &mut dyn Write) -> Result<i32, Failure> {
+    use ncsight::explain::Lang;
+    let lang = match lang {
+        Some(l) if l.eq_ignore_ascii_case("zh") || l.to_ascii_lowercase().starts_with("zh") => Lang::Zh,
+        Some(l) if l.eq_ignore_ascii_case("en") => Lang::En,
+        Some(l) => return Err(usage(format!("--lang {l}: choose en or zh"))),
+        None => {
+            // The locale, as a terminal gives it.
+            let zh = ["LC_ALL", "LC_MESSAGES", "LANG"].iter().find_map(|k| std::env::var(k).ok().filter(|v| !v.is_empty())).is_some_and(|v| v.to_ascii_lowercase().starts_with("zh"));
+            if zh { Lang::Zh } else { Lang::En }
+        }
+    };
+    if list {
+        for r in ncsight::Rule::ALL {
+            writeln!(out, "{:<8} {:<7} {}", r.project_code(), r.fanuc_code().unwrap_or("-"), r.title())?;
+        }
+        return Ok(EXIT_OK);
+    }
+    let Some(code) = code else {
+        return Err(usage("ncsight explain CODE (NCS-E53, PS0063), or --list"));
+    };
+    match ncsight::explain::explain(code) {
+        Some((rule, e)) => {
+            out.write_all(ncsight::explain::render(rule, &e, lang).as_bytes())?;
+            Ok(EXIT_OK)
+        }
+        None => Err(usage(format!("{code}: no such code (ncsight explain --list lists them)"))),
+    }
 }
 
 fn machines(name: Option<&str>, out: &mut dyn Write) -> Result<i32, Failure> {

@@ -17,7 +17,32 @@ from the code by `NCSIGHT_BLESS=1 cargo test --test docs`.\n\n\
         let sev = if r.severity() == ncsight::Severity::Alarm { "alarm" } else { "warning" };
         s.push_str(&format!("| {} | {} | {sev} | {} |\n", r.project_code(), r.fanuc_code().unwrap_or("–"), r.title()));
     }
+    // Each code explained, in English and Chinese: `ncsight explain CODE` gives the same text.
+    s.push_str("\n## Each code explained\n\nAs `ncsight explain CODE` (`--lang zh` for Chinese) gives it.\n");
+    for r in Rule::ALL {
+        let Some((rule, e)) = ncsight::explain::explain(r.project_code()) else { continue };
+        for lang in [ncsight::explain::Lang::En, ncsight::explain::Lang::Zh] {
+            s.push_str(&format!("\n```text\n{}```\n", ncsight::explain::render(rule, &e, lang)));
+        }
+    }
     common::expect_file(&common::root().join("docs/alarms.md"), &s);
+}
+
+/// `ncsight explain`: a code or the controller's number, English or Chinese; --list; an unknown
+/// code is a usage error (exit 2).
+#[test]
+fn explain_gives_each_code_in_both_languages() {
+    let (code, out, err) = common::ncsight(&["explain", "PS0063", "--lang", "zh"]);
+    assert_eq!(code, 0, "{err}");
+    assert!(out.starts_with("NCS-E53 / FANUC PS0063 (报警)") && out.contains("常见原因") && out.contains("错误示例"), "{out}");
+    let (code, out, _) = common::ncsight(&["explain", "ncs-w25", "--lang", "en"]);
+    assert_eq!(code, 0);
+    assert!(out.starts_with("NCS-W25 (warning)") && out.contains("Usual causes"), "{out}");
+    let (code, out, _) = common::ncsight(&["explain", "--list"]);
+    assert_eq!(code, 0);
+    assert_eq!(out.lines().count(), Rule::ALL.len());
+    let (code, _, err) = common::ncsight(&["explain", "NCS-E00"]);
+    assert_eq!(code, 2, "{err}");
 }
 
 #[test]

@@ -9,6 +9,7 @@ pub mod codes;
 pub mod comp;
 pub mod cycles;
 pub mod dialect;
+pub mod explain;
 pub mod event;
 pub mod geom;
 pub mod interp;

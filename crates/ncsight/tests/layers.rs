@@ -18,7 +18,7 @@ const LAYERS: &[&[&str]] = &[
     &["geom", "codes"],
     &["cycles", "event", "comp"],
     &["profile", "read", "dialect", "setup"],
-    &["time", "repair"],
+    &["time", "repair", "explain"],
     &["modal"],
     &["interp"],
     &["machine"],
