@@ -620,9 +620,14 @@ impl Tool {
     }
 }
 
+/// The number of an M code as a setup key writes it (`"165"` or `"M165"`).
+fn m_code_number(key: &str) -> Option<u32> {
+    key.trim().trim_start_matches(['M', 'm']).parse().ok()
+}
+
 /// One `[machine] m_macro` entry: the M code and the programme number it calls.
 pub fn m_macro_entry(code: &str, program: &str) -> Option<(u32, u32)> {
-    let code: u32 = code.trim().trim_start_matches(['M', 'm']).parse().ok()?;
+    let code = m_code_number(code)?;
     let digits = program.trim().trim_start_matches(['O', 'o']);
     let number: u32 = digits.parse().ok()?;
     let reserved = matches!(code, 0 | 1 | 2 | 30 | 98 | 99);
@@ -632,7 +637,7 @@ pub fn m_macro_entry(code: &str, program: &str) -> Option<(u32, u32)> {
 impl MachineSetup {
     /// The machine's own M codes (`m_codes`) by number.
     pub fn own_m_codes(&self) -> impl Iterator<Item = u32> + '_ {
-        self.m_codes.keys().filter_map(|c| c.trim().trim_start_matches(['M', 'm']).parse().ok())
+        self.m_codes.keys().filter_map(|c| m_code_number(c))
     }
 
     /// The M codes that call programmes, as (code, programme) pairs.
@@ -659,7 +664,7 @@ fn check_machine(m: &MachineSetup) -> Result<(), SetupError> {
         }
     }
     for (code, what) in &m.m_codes {
-        let n: Option<u32> = code.trim().trim_start_matches(['M', 'm']).parse().ok();
+        let n = m_code_number(code);
         if n.is_none_or(|n| n > 99_999_999) || what.len() > 200 {
             return Err(SetupError(format!("machine.m_codes: {code} = {what:?}: an M code number and what it does (at most 200 characters)")));
         }

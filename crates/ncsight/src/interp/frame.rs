@@ -636,25 +636,24 @@ pub(super) fn data_setting(step: &mut Step, words: &mut Words, span: Span) -> Re
     // Set (absolute) or add (incremental: G91 on a mill, U/V/W on a lathe) per axis.
     let incremental = step.st.incremental;
     let values = written_axes(step, words)?.map(|v| v.map(|(v, by_address)| (v, by_address || incremental)));
+    // Work system `i` with the values written merged into it.
+    let work = |i: usize| {
+        let old = step.tables.work_mm[i];
+        Some(TableWrite::Work(i, Vec3::new(merge(old.x, values[0]), merge(old.y, values[1]), merge(old.z, values[2]))))
+    };
     // G10 L20 P1-P48: the additional work systems, where the profile has G54.1 (FANUC 0i-MF).
-    let additional = step.profile.g_defs().any(|g| g.function == crate::profile::GFn::AdditionalWorkOffset);
-    if l == Some(20) && additional {
+    if l == Some(20) && step.profile.has(crate::profile::GFn::AdditionalWorkOffset) {
         let max = crate::setup::ADDITIONAL_WORK_SYSTEMS as u32;
         if !(1..=max).contains(&n) {
             return Err(p_out_of_range(step, pw, "G10 L20 sets additional work system P1 to P48 (G54.1)"));
         }
-        let i = 6 + n as usize;
-        let old = step.tables.work_mm[i];
-        let p = Vec3::new(merge(old.x, values[0]), merge(old.y, values[1]), merge(old.z, values[2]));
-        return Ok(Some(TableWrite::Work(i, p)));
+        return Ok(work(6 + n as usize));
     }
     if l == Some(2) {
         if n > 6 {
             return Err(p_out_of_range(step, pw, "G10 L2 sets work offset P0 (external) to P6 (G59)"));
         }
-        let old = step.tables.work_mm[n as usize];
-        let p = Vec3::new(merge(old.x, values[0]), merge(old.y, values[1]), merge(old.z, values[2]));
-        return Ok(Some(TableWrite::Work(n as usize, p)));
+        return Ok(work(n as usize));
     }
     match (forms, l) {
         (G10Forms::LatheOffsets, None) => lathe_offset_setting(step, words, n, pw, values),

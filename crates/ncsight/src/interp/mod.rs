@@ -308,6 +308,11 @@ impl Step<'_> {
         }
     }
 
+    /// The drawing's words are plain C, R and A in this run (FANUC 0i-TF 3405#4 CCR = 1).
+    fn plain_drawing(&self) -> bool {
+        self.profile.frame.drawing.is_some_and(|r| corner::plain_letters(self, r))
+    }
+
     /// The alarm of a move the machine refused in this block, if one was noted: beyond a soft
     /// limit first, then into G22's area.
     fn travel_alarm(&mut self) -> Result<(), Diagnostic> {
@@ -583,16 +588,17 @@ impl Interpreter {
     /// -200.`): the table changes as G10 changes it, the tool staying where it is on the
     /// machine. `None` where the number names no table entry.
     pub fn write_table_variable(&mut self, number: i64, value: f64) -> Option<Result<(), String>> {
-        let w = match self.tables.variable_write(self.profile, number, value)? {
-            Ok(w) => w,
-            Err(e) => return Some(Err(e)),
-        };
+        Some(self.tables.variable_write(self.profile, number, value)?.map(|w| self.write_table(w)))
+    }
+
+    /// A table written (G10, a system variable): the tool stays where it is on the machine, so
+    /// its programme coordinates move by what the write moved.
+    fn write_table(&mut self, w: TableWrite) {
         let moved = self.tables.write(w, &self.state.frame);
         self.state.pos = self.state.pos - moved;
         if let Some(a) = self.state.comp.actual {
             self.state.comp.actual = Some(a - moved);
         }
-        Some(Ok(()))
     }
 }
 
@@ -816,11 +822,7 @@ impl Interpreter {
         }
         // G10: the tables change; the tool stays where it is on the machine.
         if let Some(w) = out.table_write.take() {
-            let moved = self.tables.write(w, &self.state.frame);
-            self.state.pos = self.state.pos - moved;
-            if let Some(a) = self.state.comp.actual {
-                self.state.comp.actual = Some(a - moved);
-            }
+            self.write_table(w);
         }
         if let Some(req) = out.rough_request.take() {
             if self.replaying {
@@ -947,7 +949,7 @@ fn collect<'w>(
         // The GSK980TDi's G32.1 gives its start angle with C (help text G32.1), C axis or not.
         let rigid_start = letter == b'C' && profile.thread.g32_1.start_c && rigid_block();
         // FANUC 0i-TF 3405#4 CCR = 1: A and C are the drawing's words, without the comma.
-        let plain_drawing = matches!(letter, b'A' | b'C') && profile.frame.drawing.is_some_and(|r| corner::plain_letters(step, r));
+        let plain_drawing = matches!(letter, b'A' | b'C') && step.plain_drawing();
         if !profile.takes_address(letter) && !step.tables.added_addresses.contains(letter) && !hypothetical && !rigid_start && !plain_drawing && !not_yet() {
             return Err(improper_address(step, w));
         }
@@ -1022,7 +1024,7 @@ fn assumed_axis_word(step: &mut Step, w: &Word) {
         l => l,
     };
     // Under 3405#4 CCR = 1 a plain C is the drawing's chamfer, not an axis.
-    let chamfer_c = axis == b'C' && step.profile.frame.drawing.is_some_and(|r| corner::plain_letters(step, r));
+    let chamfer_c = axis == b'C' && step.plain_drawing();
     if step.tables.assumed_axes.contains(axis) && step.tables.added_addresses.contains(w.letter) && !step.st.assumed_warned.contains(axis) && !chamfer_c {
         step.st.assumed_warned = step.st.assumed_warned.with(axis);
         let kind = if axis == b'C' { "a rotary C axis in degrees, H its incremental address" } else { "a linear Y axis, V its incremental address" };
@@ -1643,14 +1645,13 @@ fn select_spindle(step: &mut Step, codes: &Codes, ms: &[(&Word, Option<&'static 
     let p_alone = || words.all().iter().all(|w| w.letter == b'P') && codes.motion.is_none();
     if !step.tables.spindle_p.is_empty() && (words.has(b'S') || spindle_m || p_alone()) && codes.non_modal.is_none() && !calls && codes.drill.or(step.st.drill.kind).is_none() && !thread_block {
         if let Some(w) = words.take(b'P') {
+            let list = || step.tables.spindle_p.iter().map(|p| format!("P{p}")).collect::<Vec<_>>().join(", ");
             let Some(i) = step.tables.spindle_p.iter().position(|p| f64::from(*p) == w.value) else {
-                let list: Vec<String> = step.tables.spindle_p.iter().map(|p| format!("P{p}")).collect();
-                return Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("{}: no such spindle: the setup's spindles are {}", w.text(), list.join(", "))));
+                return Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("{}: no such spindle: the setup's spindles are {}", w.text(), list())));
             };
             if step.tables.spindle_p_assumed && !step.st.assumed_warned.contains(b'P') {
+                let msg = format!("{}: no setup gives the spindles' P (spindle_p): taken as the spindle selection of a multi-spindle lathe, {} (the first spindle, the second); declare them with [machine] spindle_p", w.text(), list());
                 step.st.assumed_warned = step.st.assumed_warned.with(b'P');
-                let list: Vec<String> = step.tables.spindle_p.iter().map(|p| format!("P{p}")).collect();
-                let msg = format!("{}: no setup gives the spindles' P (spindle_p): taken as the spindle selection of a multi-spindle lathe, {} (the first spindle, the second); declare them with [machine] spindle_p", w.text(), list.join(", "));
                 step.warn(Rule::AxisAssumed, w.span, msg);
             }
             let i = i as u8;
@@ -2297,7 +2298,7 @@ fn extra_axes_target(step: &mut Step, words: &mut Words) -> Result<Option<([f64;
     let mut named = [false; 3];
     let mut any = false;
     // An assumed C is no axis while 3405#4 CCR = 1 makes a plain C the drawing's chamfer.
-    let chamfer_c = step.tables.assumed_axes.contains(b'C') && step.profile.frame.drawing.is_some_and(|r| corner::plain_letters(step, r));
+    let chamfer_c = step.tables.assumed_axes.contains(b'C') && step.plain_drawing();
     for (i, letter) in [b'A', b'B', b'C'].into_iter().enumerate() {
         if !step.tables.rotary[i] || (letter == b'C' && chamfer_c) {
             continue;

@@ -76,7 +76,7 @@ const MILL_LONG: [(i64, Field); 4] = [(10000, Field::WearLength), (11000, Field:
 fn slot(profile: &Profile, axes: &[u8], number: i64) -> Option<Slot> {
     let lathe = profile.kind == MachineKind::Lathe;
     // G54.1 P1-P48: #7001 + 20 (P - 1) + k - 1, system 6 + P.
-    if (7001..=7960).contains(&number) && profile.g_defs().any(|g| g.function == crate::profile::GFn::AdditionalWorkOffset) {
+    if (7001..=7960).contains(&number) && profile.has(crate::profile::GFn::AdditionalWorkOffset) {
         let (system, k) = (7 + (number - 7001) / 20, (number - 7001) % 20);
         let letter = *axes.get(usize::try_from(k).ok()?)?;
         return matches!(letter, b'X' | b'Y' | b'Z').then_some(Slot::Work(system as usize, letter));

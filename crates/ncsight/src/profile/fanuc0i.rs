@@ -169,14 +169,9 @@ const B_AND_C: &[GDef] = &[
     g(34, Group::Motion, GFn::Thread(ThreadCmd::VariableLead), "variable-lead thread cutting: F the lead at the start, K its change per revolution, Q start angle"),
 ];
 
-/// System B: A's multiple cycles' numbers, G77/G78/G79 the single cycles.
+/// System B: A's multiple cycles' numbers (`lathe_a::MULTIPLE_CYCLES` and G76), G77/G78/G79
+/// the single cycles.
 const SYSTEM_B: &[GDef] = &[
-    g(70, Group::NonModal, GFn::Finish, "finishing cycle"),
-    g(71, Group::NonModal, GFn::Rough(RoughKind::Turning), "stock removal in turning"),
-    g(72, Group::NonModal, GFn::Rough(RoughKind::Facing), "stock removal in facing"),
-    g(73, Group::NonModal, GFn::Rough(RoughKind::Pattern), "pattern repeating"),
-    g(74, Group::NonModal, GFn::PeckCycle(PeckKind::Face), "end face peck drilling"),
-    g(75, Group::NonModal, GFn::PeckCycle(PeckKind::Groove), "outer/inner diameter grooving"),
     g(76, Group::NonModal, GFn::CompoundThread(super::Compound::G76), "compound thread cutting cycle, two blocks"),
     g(77, Group::Motion, GFn::BoxCycle(BoxKind::Turning), "outer/inner diameter cutting cycle (system A's G90)"),
     g(78, Group::Motion, GFn::Thread(ThreadCmd::Cycle(&G78)), "thread cutting cycle (system A's G92): R taper, F lead, Q start angle"),
@@ -210,6 +205,7 @@ pub static TF_B: Profile = Profile {
         super::Codes { source: SOURCE_BC, codes: super::common::G_CODES },
         super::Codes { source: SOURCE_BC, codes: super::common::UNITS },
         super::Codes { source: SOURCE_BC, codes: B_AND_C },
+        super::Codes { source: SOURCE_BC, codes: super::lathe_a::MULTIPLE_CYCLES },
         super::Codes { source: SOURCE_BC, codes: SYSTEM_B },
         super::Codes { source: "FANUC 0i-T documentation (docs/commands/g83_g87_lathe.md)", codes: super::lathe_drill::CODES },
         super::Codes { source: SOURCE_BC, codes: super::later::FANUC_0T },
@@ -256,7 +252,7 @@ pub static TF: Profile = Profile {
     params: TF_PARAMS,
     g_codes: &[
         super::Codes { source: "the FANUC 0-TC G-code table, system A (the 0i-TC where it lacks)", codes: super::common::G_CODES }, super::Codes { source: "the FANUC 0-TC G-code table, system A (the 0i-TC where it lacks)", codes: super::common::UNITS },
-        super::Codes { source: "the FANUC 0-TC G-code table, system A (the 0i-TC where it lacks)", codes: super::lathe_a::G_CODES },
+        super::Codes { source: "the FANUC 0-TC G-code table, system A (the 0i-TC where it lacks)", codes: super::lathe_a::G_CODES }, super::Codes { source: "the FANUC 0-TC G-code table, system A (the 0i-TC where it lacks)", codes: super::lathe_a::MULTIPLE_CYCLES },
         super::Codes { source: "FANUC 0i-T documentation (docs/profiles.md)", codes: fanuc0t::EXTRA },
         super::Codes { source: "FANUC 0i-T documentation (docs/commands/g83_g87_lathe.md)", codes: super::lathe_drill::CODES },
         super::Codes { source: "the FANUC 0-TC G-code table, system A (the 0i-TC where it lacks)", codes: super::later::FANUC_0T },

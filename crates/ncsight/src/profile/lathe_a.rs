@@ -10,15 +10,20 @@ use crate::codes::BoxKind;
 
 pub(super) const LATER_G76: GFn = GFn::NotYet("the G76 compound threading cycle is not simulated by ncsight yet");
 
-/// Shared by all three lathe profiles.
-pub(super) const G_CODES: &[GDef] = &[
-    g(50, Group::NonModal, GFn::LatheCoordinateSet, "set the coordinates of the current position; S: spindle speed clamp"),
+/// The multiple repetitive cycles G70-G75, with the same numbers in G-code systems A and B
+/// (the FANUC lathe's system B, profile/fanuc0i.rs, has them too).
+pub(super) const MULTIPLE_CYCLES: &[GDef] = &[
     g(70, Group::NonModal, GFn::Finish, "finishing cycle"),
     g(71, Group::NonModal, GFn::Rough(RoughKind::Turning), "stock removal in turning"),
     g(72, Group::NonModal, GFn::Rough(RoughKind::Facing), "stock removal in facing"),
     g(73, Group::NonModal, GFn::Rough(RoughKind::Pattern), "pattern repeating"),
     g(74, Group::NonModal, GFn::PeckCycle(PeckKind::Face), "end face peck drilling"),
     g(75, Group::NonModal, GFn::PeckCycle(PeckKind::Groove), "outer/inner diameter grooving"),
+];
+
+/// Shared by all the system-A lathe profiles, with `MULTIPLE_CYCLES`.
+pub(super) const G_CODES: &[GDef] = &[
+    g(50, Group::NonModal, GFn::LatheCoordinateSet, "set the coordinates of the current position; S: spindle speed clamp"),
     g(90, Group::Motion, GFn::BoxCycle(BoxKind::Turning), "outer/inner diameter cutting cycle"),
     g(94, Group::Motion, GFn::BoxCycle(BoxKind::Facing), "end face cutting cycle"),
     g(96, Group::SpindleSpeedMode, GFn::ConstantSurfaceSpeed, "constant surface speed: S in m/min"),

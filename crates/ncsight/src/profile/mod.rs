@@ -1370,7 +1370,7 @@ impl Profile {
             return fail(format!("a rule names parameter {k}, which the profile does not define"));
         }
         for f in [GFn::Rapid, GFn::Linear, GFn::ArcCw, GFn::ArcCcw, GFn::PlaneXY, GFn::PlaneZX, GFn::PlaneYZ, GFn::Dwell, GFn::ReferenceReturn] {
-            if p.name_of(f) == "?" {
+            if !p.has(f) {
                 return fail(format!("no code for {f:?}"));
             }
         }
@@ -1406,6 +1406,11 @@ impl Profile {
     /// Every M code of the profile, in table order.
     pub fn m_defs(&self) -> impl Iterator<Item = &'static MDef> + '_ {
         self.m_codes.iter().flat_map(|t| t.codes.iter())
+    }
+
+    /// Whether a G code of the profile does `f`.
+    pub fn has(&self, f: GFn) -> bool {
+        self.g_defs().any(|g| g.function == f)
     }
 
     pub fn g_code(&self, major: u32, minor: Option<u32>) -> Option<&'static GDef> {

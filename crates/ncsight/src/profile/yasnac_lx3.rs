@@ -82,7 +82,7 @@ pub static PROFILE: Profile = Profile {
     addresses: super::Letters::new("GMSTFEXZUWRIKPQLN"),
     peck_back_off: None,
     box_taper: b'I',
-    g_codes: &[super::Codes { source: "inferred: FANUC 0-T system A (no YASNAC LX3 G-code table was found)", codes: common::G_CODES }, super::Codes { source: "inferred: FANUC 0-T system A (no YASNAC LX3 G-code table was found)", codes: common::UNITS }, super::Codes { source: "inferred: FANUC 0-T system A (no YASNAC LX3 G-code table was found)", codes: lathe_a::G_CODES }, super::Codes { source: "YASNAC LX3 manual, G92 (seed 004)", codes: EXTRA }, super::Codes { source: "inferred: FANUC 0-T system A (no YASNAC LX3 G-code table was found)", codes: super::later::YASNAC_LX3 }],
+    g_codes: &[super::Codes { source: "inferred: FANUC 0-T system A (no YASNAC LX3 G-code table was found)", codes: common::G_CODES }, super::Codes { source: "inferred: FANUC 0-T system A (no YASNAC LX3 G-code table was found)", codes: common::UNITS }, super::Codes { source: "inferred: FANUC 0-T system A (no YASNAC LX3 G-code table was found)", codes: lathe_a::G_CODES }, super::Codes { source: "inferred: FANUC 0-T system A (no YASNAC LX3 G-code table was found)", codes: lathe_a::MULTIPLE_CYCLES }, super::Codes { source: "YASNAC LX3 manual, G92 (seed 004)", codes: EXTRA }, super::Codes { source: "inferred: FANUC 0-T system A (no YASNAC LX3 G-code table was found)", codes: super::later::YASNAC_LX3 }],
     m_codes: &[super::Codes { source: "inferred: FANUC 0-T (no YASNAC LX3 M-code list was found)", codes: common::M_CODES }, super::Codes { source: "inferred: FANUC 0-T (no YASNAC LX3 M-code list was found)", codes: lathe_a::M_CODES }],
     params: &[PARAMS, DRY_RUN, super::YASNAC_LATHE_OFFSETS, SETTINGS],
     time: TimeKeys {

@@ -151,6 +151,12 @@ impl Calls {
     }
 
     /// The programme running now and where it starts: the innermost call's, or the main one.
+    /// Calls in progress of one kind (G65 macro calls, or M98 and M98 Q calls), which nest
+    /// separately; a G70 running the programme's blocks is no call.
+    pub fn nesting(&self, macro_call: bool) -> usize {
+        self.frames.iter().filter(|f| f.start.is_some() && f.macro_call == macro_call && f.finishing.is_none()).count()
+    }
+
     pub fn running(&self) -> Option<(Option<u32>, Place)> {
         match self.frames.last() {
             Some(f) => f.start.map(|s| (Some(f.number), s)),

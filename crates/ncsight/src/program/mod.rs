@@ -1563,10 +1563,10 @@ impl Core {
                     }
                 }
                 self.pass_on(sink);
-                if let Some(req) = self.calls.frames.last().and_then(|f| f.finishing) {
-                    if block.sequence == Some(req.nf) || self.interp.state().ended {
-                        return self.end_finishing(req, block, sink);
-                    }
+                // A programme end inside a G70's blocks ends the G70 (PS0063) before the run;
+                // its N nf ends it in interpret_item, whatever the block is.
+                if let Some(req) = self.calls.frames.last().and_then(|f| f.finishing).filter(|_| self.interp.state().ended) {
+                    return self.end_finishing(req, block, sink);
                 }
                 if self.interp.state().ended {
                     self.status = Status::Ended;
@@ -1715,7 +1715,7 @@ impl Core {
         let max = profile.calls.max_depth;
         // M98 and G65 nest separately, four levels each (FANUC Series 16i operator's manual,
         // custom macro; GSK980TDi help text, G65).
-        let depth = self.calls.frames.iter().filter(|f| f.start.is_some() && f.macro_call == macro_call && f.finishing.is_none()).count();
+        let depth = self.calls.nesting(macro_call);
         if depth >= max as usize {
             // FANUC 0 alarm 077 (FANUC 0i-TB/MB operator's manual 12.3: four levels).
             let what = if macro_call { "macro call (G65)" } else { "subprogramme call" };
@@ -1752,9 +1752,8 @@ impl Core {
     fn call_sequence(&mut self, n: u32, count: u32, span: Span, back: Place, finishing: Option<crate::interp::FinishRequest>) -> Result<bool, Diagnostic> {
         let profile = self.interp.profile();
         let max = profile.calls.max_depth;
-        // A G70 is no call: it does not count, nor is it counted.
-        let depth = self.calls.frames.iter().filter(|f| f.start.is_some() && !f.macro_call && f.finishing.is_none()).count();
-        if depth >= max as usize && finishing.is_none() {
+        // A G70 is no call: it is not counted (nor counts, calls::Calls::nesting).
+        if self.calls.nesting(false) >= max as usize && finishing.is_none() {
             let msg = format!("M98 Q{n} would be the {}th nested subprogramme call: {} allows {max} levels", max + 1, profile.name);
             return Err(Diagnostic::new(Rule::CallNesting, profile.alarm_style, span, msg));
         }
@@ -1776,6 +1775,15 @@ impl Core {
                 Ok(true)
             }
         }
+    }
+
+    /// A call's answer: whether the rest of the line is interpreted, or its alarm (after which a
+    /// check goes on and a run stops).
+    fn go_on_or_alarm(&mut self, called: Result<bool, Diagnostic>, sink: &mut dyn FnMut(Event)) -> bool {
+        called.unwrap_or_else(|d| {
+            self.alarm(d, sink);
+            self.mode != Mode::Run
+        })
     }
 
     /// A call has ended (its M99, a failed search): its local level and its loops go.
@@ -1880,38 +1888,19 @@ impl Core {
         let profile = self.interp.profile();
         let next = Place { block: place.block.saturating_add(1), ..place };
         match flow {
-            Flow::Call { count, mut span, sequence: Some(n), .. } => {
-                span.file = self.file;
-                match self.call_sequence(n, count, span, next, None) {
-                    Ok(go_on) => go_on,
-                    Err(d) => {
-                        self.alarm(d, sink);
-                        self.mode != Mode::Run
-                    }
-                }
+            Flow::Call { count, span, sequence: Some(n), .. } => {
+                let called = self.call_sequence(n, count, Span { file: self.file, ..span }, next, None);
+                self.go_on_or_alarm(called, sink)
             }
             // G70 whose blocks no roughing collected (FANUC: read from the programme): its
             // blocks N ns to N nf run as a call by sequence number that ends after N nf.
             Flow::Finish(req) => {
-                let mut span = req.span;
-                span.file = self.file;
-                match self.call_sequence(req.ns, 1, span, next, Some(req)) {
-                    Ok(go_on) => go_on,
-                    Err(d) => {
-                        self.alarm(d, sink);
-                        self.mode != Mode::Run
-                    }
-                }
+                let called = self.call_sequence(req.ns, 1, Span { file: self.file, ..req.span }, next, Some(req));
+                self.go_on_or_alarm(called, sink)
             }
-            Flow::Call { number, count, mut span, sequence: None } => {
-                span.file = self.file;
-                match self.call(number, count, span, next, None) {
-                    Ok(go_on) => go_on,
-                    Err(d) => {
-                        self.alarm(d, sink);
-                        self.mode != Mode::Run
-                    }
-                }
+            Flow::Call { number, count, span, sequence: None } => {
+                let called = self.call(number, count, Span { file: self.file, ..span }, next, None);
+                self.go_on_or_alarm(called, sink)
             }
             Flow::Return { sequence, span } => {
                 let Some(frame) = self.calls.frames.last_mut() else {
@@ -2045,6 +2034,7 @@ impl Core {
         let Some(s) = self.calls.search.take() else { return };
         let profile = self.interp.profile();
         let calling = matches!(s.target, Target::Program(_)) && self.calls.frames.last().is_some_and(|f| f.start.is_none());
+        let finishing = self.calls.frames.last().is_some_and(|f| f.finishing.is_some());
         let (message, hint) = match s.target {
             // A machine builder's macro (the setup's m_macro, parameters 6050-6089): its
             // resident programme lives in the machine.
@@ -2059,7 +2049,7 @@ impl Core {
             Target::Program(n) => (format!("O{n:04}: the main programme named is not in the file"), "name a programme the file holds with --main"),
             Target::Sequence(n) => (format!("N{n}: M99 P returns to a block with this sequence number, and the calling programme has none"), "the N of M99 P must be in the calling programme"),
             Target::Goto(n) => (format!("GOTO {n}: the programme has no block N{n}"), "the N of GOTO must be in the same programme"),
-            Target::CallSequence(n) if self.calls.frames.last().is_some_and(|f| f.finishing.is_some()) => {
+            Target::CallSequence(n) if finishing => {
                 (format!("G70 P{n}: the programme has no block N{n}"), "G70 P(ns) Q(nf) runs the programme's blocks N ns to N nf")
             }
             Target::CallSequence(n) => (format!("M98 Q{n}: the programme has no block N{n}"), "M98 Q calls a sequence number of the same programme"),
@@ -2078,7 +2068,6 @@ impl Core {
             return;
         }
         // FANUC 0: 078 for a programme or M99's N, 128 for GOTO's, 124 for a missing END.
-        let finishing = self.calls.frames.last().is_some_and(|f| f.finishing.is_some());
         let rule = match s.target {
             Target::Goto(_) => Rule::MacroSequence,
             Target::CallSequence(_) if finishing => Rule::ContourNotFound,
