@@ -11,6 +11,10 @@ use std::collections::BTreeMap;
 #[derive(Debug, Clone, Deserialize, PartialEq)]
 #[serde(deny_unknown_fields)]
 pub struct Explanation {
+    /// The title in Chinese, as a Chinese screen would show it beside the English
+    /// [`Rule::title`] (`非法G代码`). Empty only where the catalogue lacks it (a test fails).
+    #[serde(default)]
+    pub title_zh: String,
     pub meaning_en: String,
     pub meaning_zh: String,
     pub causes_en: Vec<String>,
@@ -55,7 +59,8 @@ pub fn explain(code: &str) -> Option<(Rule, Explanation)> {
     Some((rule, entry))
 }
 
-/// The explanation as text, in `lang` (the English title and codes in both).
+/// The explanation as text, in `lang` (the English title and codes in both; in Chinese the
+/// Chinese title after the English one).
 pub fn render(rule: Rule, e: &Explanation, lang: Lang) -> String {
     let mut s = String::new();
     let fanuc = rule.fanuc_code().map(|f| format!(" / FANUC {f}")).unwrap_or_default();
@@ -65,7 +70,11 @@ pub fn render(rule: Rule, e: &Explanation, lang: Lang) -> String {
         (crate::alarm::Severity::Alarm, Lang::Zh) => "报警",
         (crate::alarm::Severity::Warning, Lang::Zh) => "警告",
     };
-    s.push_str(&format!("{}{fanuc} ({kind}): {}\n\n", rule.project_code(), rule.title()));
+    let title_zh = match lang {
+        Lang::Zh if !e.title_zh.trim().is_empty() => format!(" {}", e.title_zh.trim()),
+        _ => String::new(),
+    };
+    s.push_str(&format!("{}{fanuc} ({kind}): {}{title_zh}\n\n", rule.project_code(), rule.title()));
     let (meaning, causes, fix, heads) = match lang {
         Lang::En => (&e.meaning_en, &e.causes_en, &e.fix_en, ["Usual causes", "How to fix it", "Wrong", "Right"]),
         Lang::Zh => (&e.meaning_zh, &e.causes_zh, &e.fix_zh, ["常见原因", "解决办法", "错误示例", "正确示例"]),

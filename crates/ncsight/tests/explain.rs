@@ -49,17 +49,32 @@ fn every_rule_is_explained_in_both_languages() {
         for (what, text) in [("meaning_en", &e.meaning_en), ("fix_en", &e.fix_en), ("wrong", &e.wrong), ("right", &e.right)] {
             assert!(!text.trim().is_empty(), "{code}: {what} is empty");
         }
-        for (what, text) in [("meaning_zh", &e.meaning_zh), ("fix_zh", &e.fix_zh)] {
-            assert!(has_chinese(text), "{code}: {what} has no Chinese");
+        for (what, text) in [("title_zh", &e.title_zh), ("meaning_zh", &e.meaning_zh), ("fix_zh", &e.fix_zh)] {
+            assert!(has_chinese(text), "{code}: {what} is missing, empty or has no Chinese");
         }
         assert!((1..=3).contains(&e.causes_en.len()) && e.causes_en.len() == e.causes_zh.len(), "{code}: causes in both languages, one to three");
         assert!(e.causes_zh.iter().all(|c| has_chinese(c)) && e.causes_en.iter().all(|c| !c.trim().is_empty()), "{code}: a cause is empty");
         assert!(profile::by_name(&e.profile).is_some(), "{code}: no profile {}", e.profile);
     }
+    let mut titles: Vec<(&str, &str)> = cat.iter().map(|(k, e)| (e.title_zh.trim(), k.as_str())).collect();
+    titles.sort();
+    for w in titles.windows(2) {
+        assert!(w[0].0 != w[1].0, "{} and {}: the same title_zh {:?}", w[0].1, w[1].1, w[0].0);
+    }
     let known: Vec<&str> = Rule::ALL.iter().map(|r| r.project_code()).collect();
     for k in cat.keys() {
         assert!(known.contains(&k.as_str()), "{k}: explained, but no rule has this code");
     }
+}
+
+/// The Chinese text shows the Chinese title after the English one; the English text does not.
+#[test]
+fn chinese_title_follows_the_english_one() {
+    let (rule, e) = ncsight::explain::explain("PS0010").unwrap();
+    let zh = ncsight::explain::render(rule, &e, ncsight::explain::Lang::Zh);
+    assert!(zh.starts_with("NCS-E10 / FANUC PS0010 (报警): IMPROPER G-CODE 非法G代码\n"), "{zh}");
+    let en = ncsight::explain::render(rule, &e, ncsight::explain::Lang::En);
+    assert!(en.starts_with("NCS-E10 / FANUC PS0010 (alarm): IMPROPER G-CODE\n"), "{en}");
 }
 
 #[test]

@@ -16,9 +16,12 @@ mod gsk988t;
 mod lathe_a;
 mod lathe_drill;
 mod later;
+mod meaning_zh;
 mod yasnac_lx3;
 
 use crate::alarm::AlarmStyle;
+
+pub use meaning_zh::meaning_zh;
 
 /// Highest spindle speed any profile turns (G96 at the centre without a G50 clamp), rpm. Assumed.
 pub const MAX_RPM: f64 = 10000.0;
