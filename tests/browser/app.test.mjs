@@ -178,7 +178,7 @@ test("report O0012: the thread, the player follows the source, a click in the pl
   const before = await app(page, () => window.ncsightApp.scene.head.total_s);
   await app(page, () => window.ncsightApp.setTime(4.5));
   await page.click("#hold");
-  assert.match(await page.textContent("#presses"), /hold 4\.50 s/);
+  assert.match(await page.textContent("#presses"), /FEED HOLD at 4\.50 s/);
   assert.notEqual(await app(page, () => window.ncsightApp.scene.head.total_s), before);
   // The hold parameter (GSK980TDi NO.18 bit 6): set in the parameter table, the same press
   // finishes the pass before stopping instead of pulling out at once.
@@ -194,7 +194,7 @@ test("report O0012: the thread, the player follows the source, a click in the pl
   await page.click("#clear-buttons");
   assert.equal(await app(page, () => window.ncsightApp.scene.head.total_s), before);
   // Time by tool, as a person reads it.
-  assert.match(await page.textContent("#time-by-tool"), /T01\s*0:12\.1/);
+  assert.match(await page.textContent("#time-by-tool"), /T01 螺纹刀\s*0:12\.1/); // named by its comment
   await context.close();
 });
 
@@ -231,14 +231,18 @@ test("every control: play, speed, next tool, run to cursor, keys, zoom, pan, fit
   await page.keyboard.press(" ");
   const spaced = await A(() => window.ncsightApp.now);
   assert.ok(spaced > 0 && spaced < total, `space played to ${spaced} s`);
-  // Play at 20x, then pause: time goes on.
+  // CYCLE START at 20x, then pause: time went on, and stays.
   await page.keyboard.press("Home");
   await page.selectOption("#speed", "20");
   await page.click("#play");
+  assert.equal(await A(() => window.ncsightApp.machineState), "run");
   await new Promise((r) => setTimeout(r, 300));
-  await page.click("#play");
+  await page.click("#pause");
   const played = await A(() => window.ncsightApp.now);
   assert.ok(played > 1 && played < total, `played to ${played} s`);
+  await new Promise((r) => setTimeout(r, 100));
+  assert.equal(await A(() => window.ncsightApp.now), played);
+  assert.equal(await A(() => window.ncsightApp.machineState), "stop");
   // Next tool: from the start (T0101 is in place at 0 s), T0303 on line 16.
   await page.keyboard.press("Home");
   await page.click("#next-tool");
@@ -400,14 +404,14 @@ test("Chinese interface for a zh-CN browser, with a switch; GBK comments shown a
   ]));
   const { page, context, errors } = await open(report(prog, "gsk980tdi"), { locale: "zh-CN" });
   assert.deepEqual(errors, []);
-  assert.equal(await page.textContent("#play"), "播放");
+  assert.equal(await page.textContent("#play"), "循环启动");
   // The stock simulation finds the rapid after the G92 cutting into the default bar: first, in Chinese.
   assert.match(await page.textContent("#banner"), /毛坯仿真发现 1 个问题/);
   assert.match(await page.textContent("#problems .p"), /毛坯 · crash · 行 3/);
   assert.match(await page.inputValue("#text"), /\(螺纹刀\)/);
   await shot(page, "app-zh.png");
   await page.click("#lang");
-  assert.equal(await page.textContent("#play"), "Play");
+  assert.equal(await page.textContent("#play"), "CYCLE START");
   await context.close();
 });
 
@@ -612,5 +616,274 @@ test("3D cut stock, mill: the pocket, slot and helical bore are cut into the blo
   const crash = await view3d(page, "cut3d-mill-crash.png");
   assert.deepEqual(crash.head.findings.map((f) => [f.kind, f.line]), [["crash", 6]]);
   assert.ok(pixels(crash.img, red) > 30, "the crash is marked");
+  await context.close();
+});
+
+// ---- the page teaches: the operator's player, alarms explained, the work kept, layout, mill ----
+
+// A textbook shaft on the GSK980TDi: G71/G70, M00, a G75 groove, a G92 thread.
+const shaft = `O0001 (SHAFT)
+T0101 (OD TOOL)
+G99 M03 S800
+G0 X42. Z2.
+G71 U1.5 R0.5
+G71 P10 Q20 U0.4 W0.1 F0.2
+N10 G0 X26.
+G1 Z0. F0.1
+X30. Z-2.
+Z-30.
+X38.
+N20 Z-45.
+G70 P10 Q20
+G0 X100. Z100.
+M00
+T0202 (GROOVE 3MM)
+G0 X40. Z-30.
+G75 R0.5
+G75 X26. Z-30. P1500 Q0 F0.05
+G0 X100. Z100.
+T0303 (THREAD)
+S500 M03
+G0 X32. Z5.
+G92 X29.2 Z-26. F2.
+X28.6
+X28.2
+X27.9
+G0 X100. Z100.
+M30
+`;
+const stateOf = (page) => page.evaluate(() => [document.getElementById("machine-state").textContent, document.getElementById("stop-why").textContent, window.ncsightApp.now]);
+const stopsOf = (page, reason) => app(page, (r) => window.ncsightApp.scene.head.events.filter((e) => e.k === "stop" && e.reason === r).map((e) => e.t), reason);
+
+test("the operator's player (zh-CN): stops at M00, at a FEED HOLD pressed in a G92 thread and at single-block stops; CYCLE START goes on", async () => {
+  const prog = join(work, "shaft.nc");
+  writeFileSync(prog, shaft);
+  const { page, context, errors } = await open(report(prog, "gsk980tdi"), { locale: "zh-CN" });
+  assert.deepEqual(errors, []);
+  // The panel in the controller's words, each label distinct.
+  assert.deepEqual(await page.$$eval("#play, #hold, #reset, #single + span, #pause, #prev, #next, #prev-motion, #next-motion", (e) => e.map((x) => x.textContent)),
+    ["循环启动", "进给保持", "复位", "单段", "❚❚ 暂停回放", "◀ 上一段", "下一段 ▶", "◀ 上一动作", "下一动作 ▶"]);
+  assert.equal((await stateOf(page))[0], "停止");
+  // CYCLE START from the start at 1000x: the player stops at the M00 (line 15), as the machine does.
+  const [m00] = await stopsOf(page, "program_stop");
+  await app(page, () => window.ncsightApp.setTime(0));
+  await page.selectOption("#speed", "1000");
+  await page.click("#play");
+  assert.equal((await stateOf(page))[0], "运行");
+  await until(page, () => document.getElementById("machine-state").textContent === "停止");
+  let [state, why, now] = await stateOf(page);
+  assert.equal(now, m00);
+  assert.match(why, /第 15 行 M00 程序停止：按“循环启动”继续/);
+  assert.equal(await app(page, () => window.ncsightApp.runLine), 15);
+  // FEED HOLD pressed during the first G92 pass: played at real time there (a press can be
+  // aimed), the run is made again with the press, and the player stops where the machine does:
+  // pulled out at once, back at the start point. HOLD (暂停) on the screen.
+  const pass = await app(page, () => { const a = window.ncsightApp; const i = [...Array(a.scene.n).keys()].find((j) => a.kindOf(j) === 3); return [a.startOf(i), a.endOf(i)]; });
+  await app(page, (t) => window.ncsightApp.setTime(t + 0.05), pass[0]);
+  await page.click("#play");
+  await new Promise((r) => setTimeout(r, 400));
+  const inThread = await app(page, () => window.ncsightApp.now);
+  assert.ok(inThread > pass[0] && inThread < pass[1], `in the thread at 1x: ${inThread} s in ${pass}`);
+  await page.click("#hold");
+  await until(page, () => document.getElementById("machine-state").textContent === "暂停");
+  [state, why, now] = await stateOf(page);
+  const [held] = await stopsOf(page, "feed_hold");
+  assert.equal(now, held);
+  assert.match(why, /螺纹中进给保持.*立即退尾，快速返回起点，停止。按“循环启动”重新车这一刀/);
+  assert.match(await page.textContent("#banner"), /含 .*秒进给保持/);
+  await shot(page, "player-hold-zh.png");
+  // CYCLE START: on to the end of the programme.
+  await page.click("#play");
+  await until(page, () => document.getElementById("machine-state").textContent === "停止", undefined, 30000);
+  [state, why, now] = await stateOf(page);
+  assert.equal(now, await app(page, () => window.ncsightApp.scene.head.total_s));
+  assert.match(why, /程序结束/);
+  // SINGLE BLOCK: each CYCLE START runs one block.
+  await page.click("#clear-buttons");
+  await page.check("#single");
+  const singles = await stopsOf(page, "single_block");
+  assert.ok(singles.length > 20, `${singles.length} single-block stops`);
+  await app(page, () => window.ncsightApp.setTime(0));
+  await page.click("#play");
+  await until(page, () => document.getElementById("machine-state").textContent === "停止");
+  [state, why, now] = await stateOf(page);
+  assert.equal(now, singles[0]);
+  assert.match(why, /单段：第 \d+ 行程序段执行完毕/);
+  await page.click("#play");
+  await until(page, () => document.getElementById("machine-state").textContent === "停止");
+  assert.equal((await stateOf(page))[2], singles[1]);
+  // Motion by motion: each pass of the G71 on its own (more motion steps than block steps).
+  await app(page, () => window.ncsightApp.setTime(0));
+  await page.uncheck("#single");
+  let blocks = 0, motions = 0;
+  await app(page, () => window.ncsightApp.setTime(0));
+  while ((await app(page, () => window.ncsightApp.runLine)) <= 6 && blocks < 50) { await page.click("#next"); blocks++; }
+  await app(page, () => window.ncsightApp.setTime(0));
+  while ((await app(page, () => window.ncsightApp.runLine)) <= 6 && motions < 200) { await page.click("#next-motion"); motions++; }
+  assert.ok(motions > blocks + 5, `${motions} motions against ${blocks} blocks up to the G71`);
+  // Keys after a click: space is CYCLE START / pause, not the button clicked.
+  await app(page, () => window.ncsightApp.setTime(0));
+  await page.click("#next");
+  const runs = await app(page, () => window.ncsightApp.runs);
+  await page.keyboard.press(" ");
+  assert.equal((await stateOf(page))[0], "运行");
+  await page.keyboard.press(" ");
+  assert.equal((await stateOf(page))[0], "停止");
+  assert.equal(await app(page, () => window.ncsightApp.runs), runs, "space ran nothing again");
+  assert.deepEqual(errors, []);
+  await context.close();
+});
+
+test("an alarm explained in Chinese with the controller's number (FANUC 0-T), and in English", async () => {
+  const prog = join(work, "alarm.nc");
+  writeFileSync(prog, "G0 X20. Z2.\nG100 Z5.\nM30\n");
+  for (const [locale, re] of [["zh-CN", /PS0010 · NCS-E10 · 非法G代码 · 报警[\s\S]*常见原因[\s\S]*解决办法[\s\S]*错误示例[\s\S]*正确示例/], ["en-GB", /PS0010 · NCS-E10 · IMPROPER G-CODE · alarm[\s\S]*Usual causes[\s\S]*How to fix it[\s\S]*Wrong[\s\S]*Right/]]) {
+    const { page, context, errors } = await open(report(prog, "fanuc0t"), { locale });
+    assert.deepEqual(errors, []);
+    await app(page, () => 0);
+    assert.match(await page.textContent("#explain"), re);
+    assert.match(await page.textContent("#banner"), locale === "zh-CN" ? /第 2 行：PS0010 非法G代码/ : /line 2: PS0010 IMPROPER G-CODE/);
+    // Played to the end: the run stops at the alarm, ALARM on the screen.
+    await app(page, () => window.ncsightApp.setTime(0));
+    await page.selectOption("#speed", "1000");
+    await page.click("#play");
+    await until(page, () => document.getElementById("machine-state").textContent !== (document.documentElement.lang === "zh-CN" ? "运行" : "RUN"));
+    assert.equal((await stateOf(page))[0], locale === "zh-CN" ? "报警" : "ALARM");
+    if (locale === "zh-CN") {
+      // Parameter meanings in Chinese too.
+      assert.match(await page.textContent("#param-table"), /[\u4e00-\u9fff]/);
+      await shot(page, "alarm-explained-zh.png");
+    }
+    await context.close();
+  }
+});
+
+test("the work is kept: GBK saved byte for byte, an edit kept in GBK and across a reload, the plot as PNG and SVG, a setup sheet", async () => {
+  const gbkComment = Buffer.from([0xcd, 0xe2, 0xd4, 0xb2, 0xb5, 0xb6]); // GBK: 外圆刀 (OD tool)
+  const bytes = Buffer.concat([Buffer.from("O0002\r\nT0101 (", "latin1"), gbkComment, Buffer.from(")\r\nG99 M03 S600\r\nG0 X30. Z2.\r\nG1 Z-20. F0.2\r\nX40.\r\nG0 X100. Z100.\r\nM30\r\n", "latin1")]);
+  const prog = join(work, "gbk-save.nc");
+  writeFileSync(prog, bytes);
+  const file = report(prog, "gsk980tdi");
+  const { page, context, errors } = await open(file, { locale: "zh-CN" });
+  assert.deepEqual(errors, []);
+  const save = async () => {
+    const [dl] = await Promise.all([page.waitForEvent("download"), page.click("#save")]);
+    assert.equal(dl.suggestedFilename(), "gbk-save.nc");
+    return readFileSync(await dl.path());
+  };
+  assert.ok((await save()).equals(bytes), "unedited: the bytes as opened");
+  // Edited: the same encoding and line ends, the Chinese comment still GBK.
+  const edited = (await page.inputValue("#text")).replace("F0.2", "F0.15");
+  await page.fill("#text", edited);
+  assert.ok((await save()).equals(Buffer.from(bytes.toString("latin1").replace("F0.2", "F0.15"), "latin1")), "edited: GBK and CR LF kept");
+  // The edit is kept in the browser: a reload offers it back, and Restore puts it in the editor.
+  await new Promise((r) => setTimeout(r, 1300));
+  await page.reload();
+  await page.evaluate(() => window.ncsightApp.ready);
+  assert.ok(await page.isVisible("#restore"), "the restore bar shows");
+  assert.match(await page.textContent("#restore"), /未下载的修改/);
+  await page.click("#restore-yes");
+  assert.equal(await page.inputValue("#text"), edited);
+  await until(page, () => window.ncsightApp.scene && /F0\.15/.test(document.getElementById("text").value));
+  // The plot as PNG and SVG.
+  const [png] = await Promise.all([page.waitForEvent("download"), page.click("#export-png")]);
+  assert.equal(readFileSync(await png.path()).subarray(1, 4).toString(), "PNG");
+  const [svg] = await Promise.all([page.waitForEvent("download"), page.click("#export-svg")]);
+  const svgText = readFileSync(await svg.path(), "utf8");
+  assert.match(svgText, /^<svg xmlns="http:\/\/www.w3.org\/2000\/svg"/);
+  assert.ok((svgText.match(/<path /g) || []).length >= 2, "rapids and the tool's cuts");
+  // The setup sheet: printed alone; a row per tool with its name from its comment.
+  await page.evaluate(() => { window.print = () => { window.__printed = true; }; });
+  await page.click("#print-sheet");
+  assert.equal(await page.evaluate(() => window.__printed), true);
+  const row = await page.textContent("#sheet-tools tr:nth-child(2)");
+  assert.match(row, /T01外圆刀2X Ø 30 – 40, Z -20 – 2.*mm\/min/);
+  await page.emulateMedia({ media: "print" });
+  await shot(page, "setup-sheet.png");
+  assert.equal(await page.isVisible("#left"), false);
+  await page.emulateMedia({ media: "screen" });
+  assert.deepEqual(errors, []);
+  await context.close();
+});
+
+test("layout at 1366 x 768 in both languages: no sideways scroll; a tall window gives the plot and editor its height", async () => {
+  const prog = join(work, "shaft-layout.nc");
+  writeFileSync(prog, shaft);
+  const file = report(prog, "gsk980tdi");
+  for (const locale of ["zh-CN", "en-GB"]) {
+    const context = await browser.newContext({ viewport: { width: 1366, height: 768 }, locale });
+    const page = await context.newPage();
+    await page.goto("file://" + file);
+    await page.evaluate(() => window.ncsightApp.ready);
+    await page.evaluate(() => window.ncsightApp.settled());
+    for (const id of ["passes-box", "params-box", "panel-box", "time-box"]) await page.evaluate((i) => { document.getElementById(i).open = true; }, id);
+    const [scroll, width] = await page.evaluate(() => [document.documentElement.scrollWidth, document.documentElement.clientWidth]);
+    assert.ok(scroll <= width, `${locale}: ${scroll} px wide in ${width}`);
+    await shot(page, `layout-1366-${locale}.png`);
+    const short = await page.evaluate(() => document.getElementById("plot-box").clientHeight);
+    await page.setViewportSize({ width: 1366, height: 1400 });
+    const tall = await page.evaluate(() => [document.getElementById("plot-box").clientHeight, document.getElementById("editor").clientHeight]);
+    assert.ok(tall[0] > short + 500 && tall[1] > 900, `plot ${short} -> ${tall[0]} px, editor ${tall[1]} px`);
+    await context.close();
+  }
+});
+
+test("mill: tool names from the T lines' comments, the tool-change time, every cycle at a hole, the iso view's block and axes", async () => {
+  const prog = join(work, "mill-ops.nc");
+  writeFileSync(prog, `O0003 (THREE OPERATIONS ON THE SAME HOLES)
+G21 G17 G40 G49 G80 G90
+T1 M06 (SPOT DRILL D10)
+G0 X0. Y0. Z50. S1500 M03
+G99 G81 X20. Y20. Z-2. R3. F100.
+X60.
+G80
+T2 M06 (DRILL D8.5)
+S1000 M03
+G99 G83 X20. Y20. Z-25. R3. Q5. F120.
+X60.
+G80
+T3 M06 (TAP M10X1.5)
+S400 M03
+G99 G84 X20. Y20. Z-20. R5. F600.
+X60.
+G80
+G0 Z100.
+M30
+`);
+  const { page, context, errors } = await open(report(prog, "fanuc0m", ["--param", "tool_change_s=6"]));
+  assert.deepEqual(errors, []);
+  assert.match(await page.textContent("#legend"), /T01 SPOT DRILL D10.*T02 DRILL D8\.5.*T03 TAP M10X1\.5/);
+  assert.match(await page.textContent("#time-by-op"), /tool changes \(3 × 6 s\)0:18\.0/);
+  // Each operation's marker at the hole X20 Y20: G81, G83 and G84 colours all there.
+  const img = await shot(page, "mill-three-operations.png", "#plot");
+  const [x, y] = (await app(page, () => window.ncsightApp.toScreen(20, 20, 0))).map(Math.round);
+  for (const [name, colour] of [["G81", [216, 27, 96]], ["G83", [0, 137, 123]], ["G84", [244, 81, 30]]]) assert.ok(count(img, colour, 30, x - 16, y - 16, x + 17, y + 17) > 8, `${name} marker at the hole`);
+  // The peck hole is marked at its bottom (Z-25), not at its first peck.
+  assert.ok(await app(page, () => window.ncsightApp.holeDepths().includes(-25)));
+  // The iso view: the stock block (guessed from the cuts, dashed) and the axis triad.
+  await page.selectOption("#view", "iso");
+  const iso = await shot(page, "mill-iso-block-triad.png", "#plot");
+  const h = iso.height;
+  assert.ok(count(iso, [198, 40, 40], 30, 0, h - 90, 90, h) > 20 && count(iso, [46, 125, 50], 30, 0, h - 90, 90, h) > 20 && count(iso, [21, 101, 192], 30, 0, h - 90, 90, h) > 20, "X, Y, Z arrows");
+  assert.ok(count(iso, [141, 110, 99], 30, 0, 0, iso.width, h) > 100, "the block's edges");
+  assert.match(await page.textContent("#legend"), /G81 holes.*G83 holes.*G84 holes/);
+  assert.deepEqual(errors, []);
+  await context.close();
+});
+
+test("a first line (ncsight: fanuc0m) chooses the controller in the page, as on the command line", async () => {
+  const file = join(work, "app-named.html");
+  ncsight(["app", "-o", file]);
+  const { page, context, errors } = await open(file);
+  await page.selectOption("#machine", "gsk980tdi");
+  await page.fill("#text", "(ncsight: fanuc0m)\nG0 X0. Y0. Z50.\nG99 G81 X20. Y20. Z-5. R3. F100.\nG80\nM30\n");
+  await until(page, () => window.ncsightApp.scene && window.ncsightApp.scene.h === 1);
+  assert.equal(await page.inputValue("#machine"), "fanuc0m");
+  assert.match(await page.textContent("#banner"), /No problems/);
+  // Chosen by hand afterwards, the choice stays while the first line does not change.
+  await page.selectOption("#machine", "fanuc0i-mf");
+  await page.fill("#text", "(ncsight: fanuc0m)\nG0 X0. Y0. Z50.\nG99 G81 X30. Y20. Z-5. R3. F100.\nG80\nM30\n");
+  await until(page, () => window.ncsightApp.scene && window.ncsightApp.scene.head.machine === "fanuc0i-mf");
+  assert.deepEqual(errors, []);
   await context.close();
 });

@@ -33,6 +33,12 @@ impl Decoding {
         }
     }
 
+    /// The WHATWG name of the encoding lines that are not UTF-8 are read in (`gb18030` by
+    /// default; a line that is not GB18030 either falls back to windows-1252 as it is read).
+    pub fn label(&self) -> &'static str {
+        self.forced.unwrap_or(encoding_rs::GB18030).name()
+    }
+
     /// One line's text.
     pub fn decode(&self, raw: &[u8]) -> String {
         match std::str::from_utf8(raw) {

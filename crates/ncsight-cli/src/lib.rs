@@ -43,7 +43,7 @@ struct Cli {
 
 #[derive(clap::Args, Debug)]
 struct MachineArgs {
-    /// Controller profile: gsk980tdi, gsk988t, fanuc0m, fanuc0t, yasnac-lx3, fanuc0i-tf, fanuc0i-mf (default gsk980tdi).
+    /// Controller profile: gsk980tdi, gsk988t, fanuc0m, fanuc0t, yasnac-lx3, fanuc0i-tf, fanuc0i-mf (default: the one a first line `(ncsight: NAME)` of the programme names, else gsk980tdi).
     #[arg(long, short = 'm')]
     machine: Option<String>,
     /// Override a parameter by the manual's number: N=V or N.B=V for a bit (e.g. 19=10, 18.6=1).
@@ -433,16 +433,45 @@ fn names() -> String {
     ncsight_io::machine_names()
 }
 
-/// The profile and parameters the arguments name.
-fn setup(m: &MachineArgs, err: &mut dyn Write) -> Result<(Params, Switches), Failure> {
-    let name = match &m.machine {
-        Some(n) => n.clone(),
-        None => {
-            let _ = writeln!(err, "ncsight: no --machine given, using gsk980tdi (profiles: {})", names());
-            "gsk980tdi".to_string()
+/// The profile and parameters the arguments name, or the programme's first line
+/// (`named`: the programme as shown and the name in its `(ncsight: NAME)`; [`machine_for`]).
+fn setup(m: &MachineArgs, named: Option<(&str, &str)>, err: &mut dyn Write) -> Result<(Params, Switches), Failure> {
+    let name = machine_for(m, named, true, err)?;
+    setup_on(m, &name)
+}
+
+/// The machine a run uses: `--machine`, else the one the programme's first line names
+/// (`(ncsight: fanuc0m)`: `named` is the programme as shown and that name), else gsk980tdi. A
+/// note on `err` says which, unless the machine is the given one (or the default with
+/// `say_default` false); `--machine` and a first line that differ are noted. An unknown name in
+/// the first line is a usage error, as an unknown `--machine` is.
+fn machine_for(m: &MachineArgs, named: Option<(&str, &str)>, say_default: bool, err: &mut dyn Write) -> Result<String, Failure> {
+    match (&m.machine, named) {
+        (Some(given), Some((shown, name))) => {
+            let differ = matches!(profile::by_name(given), Some(p) if profile::by_name(name).map(|q| q.name) != Some(p.name));
+            if differ {
+                let _ = writeln!(err, "ncsight: using --machine {given}, not {name} named by the first line of {shown}");
+            }
+            Ok(given.clone())
         }
-    };
-    let job = m.job(&name)?;
+        (Some(given), None) => Ok(given.clone()),
+        (None, Some((shown, name))) => {
+            let p = ncsight_io::Job::on(name).profile().map_err(|e| usage(format!("{shown}: first line (ncsight: {name}): {e}")))?;
+            let _ = writeln!(err, "ncsight: using {} named by the first line of {shown}", p.name);
+            Ok(p.name.to_string())
+        }
+        (None, None) => {
+            if say_default {
+                let _ = writeln!(err, "ncsight: no --machine given, using gsk980tdi (profiles: {})", names());
+            }
+            Ok("gsk980tdi".to_string())
+        }
+    }
+}
+
+/// The profile `name` and its parameters as the arguments set them.
+fn setup_on(m: &MachineArgs, name: &str) -> Result<(Params, Switches), Failure> {
+    let job = m.job(name)?;
     let params = job.parameters()?;
     let repair_position = m.repair_position.as_deref().map(|t| recorded(t, "--repair-position")).transpose()?;
     Ok((params, Switches { repair_position, ..job.switches }))
@@ -456,6 +485,58 @@ fn open(file: &str) -> Result<feed::Input, Failure> {
         return Err(usage(format!("cannot read {file}: it is a directory, not a programme file")));
     }
     feed::Input::open(std::path::Path::new(file)).map_err(|e| usage(format!("cannot read {file}: {e}")))
+}
+
+/// A programme's first line, read before the run for the machine it may name
+/// ([`ncsight_io::machine_from_first_line`]).
+struct Head {
+    /// NAME of a first line `(ncsight: NAME)`, as written.
+    named: Option<String>,
+    /// The input of standard input or a pipe, its first line given back in front of the rest
+    /// (they give their data once); `None` for a file, which the run opens again.
+    input: Option<feed::Input>,
+}
+
+impl Head {
+    fn of(file: &str) -> Result<Head, Failure> {
+        if file != "-" {
+            match std::fs::metadata(file) {
+                Ok(md) if md.is_file() => {
+                    // A file that cannot be read is named by the run's own opening.
+                    let head = std::fs::File::open(file).and_then(|f| ncsight_io::read_first_line(&mut BufReader::new(f)));
+                    return Ok(Head { named: head.ok().and_then(|h| ncsight_io::machine_from_first_line(&h)), input: None });
+                }
+                Ok(md) if !md.is_dir() => {}
+                _ => return Ok(Head { named: None, input: None }),
+            }
+        }
+        match open(file)? {
+            feed::Input::Stream(mut r) => {
+                let head = ncsight_io::read_first_line(&mut r).map_err(|e| usage(format!("cannot read {file}: {e}")))?;
+                let named = ncsight_io::machine_from_first_line(&head);
+                Ok(Head { named, input: Some(feed::Input::Stream(Box::new(io::Cursor::new(head).chain(r)))) })
+            }
+            input => Ok(Head { named: None, input: Some(input) }),
+        }
+    }
+
+    /// The programme as shown and the machine its first line names, for [`setup`].
+    fn named<'a>(&'a self, shown: &'a str) -> Option<(&'a str, &'a str)> {
+        self.named.as_deref().map(|n| (shown, n))
+    }
+
+    /// The run's input: the stream already opened, else `file` opened now.
+    fn input(&mut self, file: &str) -> Result<feed::Input, Failure> {
+        match self.input.take() {
+            Some(input) => Ok(input),
+            None => open(file),
+        }
+    }
+}
+
+/// How `file` is named in messages.
+fn shown(file: &str) -> &str {
+    if file == "-" { "<stdin>" } else { file }
 }
 
 /// [`feed::drive`] with an error in reading the input named by its file.
@@ -523,31 +604,33 @@ fn run(
     out: &mut dyn Write,
     err: &mut dyn Write,
 ) -> Result<i32, Failure> {
-    let (params, switches) = setup(m, err)?;
+    let head = Head::of(file)?;
+    let (params, switches) = setup(m, head.named(shown(file)), err)?;
     let operator = operator.options()?;
     let mut fmt = format::by_name(format, params.profile(), m.setup.is_some()).ok_or_else(|| usage(format!("unknown format '{format}': choose text, jsonl or canon")))?;
     let program = Program::with_operator(params, switches, Mode::Run, operator);
-    run_into(file, m, program, fmt.as_mut(), output, out, err)
+    run_into(file, head, m, program, fmt.as_mut(), output, out, err)
 }
 
 /// `ncsight expand`: the run written as plain moves for `to` (docs/commands/expand.md).
 fn expand(file: &str, m: &MachineArgs, to: &str, output: Option<&str>, out: &mut dyn Write, err: &mut dyn Write) -> Result<i32, Failure> {
     let target = format::expand::Target::by_name(to).ok_or_else(|| usage(format!("--to {to}: choose linuxcnc or grbl")))?;
-    let (params, switches) = setup(m, err)?;
-    let shown = if file == "-" { "<stdin>" } else { file };
-    let mut fmt = format::expand::Expand::new(params.profile(), target, shown);
+    let head = Head::of(file)?;
+    let (params, switches) = setup(m, head.named(shown(file)), err)?;
+    let mut fmt = format::expand::Expand::new(params.profile(), target, shown(file));
     let program = Program::new(params, switches, Mode::Run);
-    run_into(file, m, program, &mut fmt, output, out, err)
+    run_into(file, head, m, program, &mut fmt, output, out, err)
 }
 
-/// Run `program` on `file` and write its events through `fmt` to `output` (or `out`); alarms,
-/// and diagnostics the format does not carry, go to `err`. A record the format refuses
-/// ([`format::expand::Refused`]) is an alarm there, and the run stops.
-fn run_into(file: &str, m: &MachineArgs, mut program: Program, fmt: &mut dyn format::Format, output: Option<&str>, out: &mut dyn Write, err: &mut dyn Write) -> Result<i32, Failure> {
+/// Run `program` on `file` (its `head` read) and write its events through `fmt` to `output` (or
+/// `out`); alarms, and diagnostics the format does not carry, go to `err`. A record the format
+/// refuses ([`format::expand::Refused`]) is an alarm there, and the run stops.
+#[allow(clippy::too_many_arguments)]
+fn run_into(file: &str, mut head: Head, m: &MachineArgs, mut program: Program, fmt: &mut dyn format::Format, output: Option<&str>, out: &mut dyn Write, err: &mut dyn Write) -> Result<i32, Failure> {
     let decoding = m.decoding()?;
-    // Refused before anything is read; created only when there is something to write.
+    // Refused before the programme is run; created only when there is something to write.
     let mut file_out = output.map(|path| output::LazyFile::new(path, &m.read_files(file), OUTPUT_BUFFER_BYTES)).transpose().map_err(usage)?;
-    let input = open(file)?;
+    let input = head.input(file)?;
     let mut stdout_buf;
     let writer: &mut dyn Write = match file_out.as_mut() {
         Some(f) => f,
@@ -602,7 +685,11 @@ fn run_into(file: &str, m: &MachineArgs, mut program: Program, fmt: &mut dyn for
 }
 
 fn check(files: &[String], m: &MachineArgs, format: &str, out: &mut dyn Write, err: &mut dyn Write) -> Result<i32, Failure> {
-    let (params, switches) = setup(m, err)?;
+    // With --machine, every file on it; without, each file on the machine its first line
+    // names, else gsk980tdi (said once).
+    let given = m.machine.as_ref().map(|_| setup(m, None, err)).transpose()?;
+    let mut default_said = false;
+    let mut machines: Vec<(String, (Params, Switches))> = Vec::new();
     let decoding = m.decoding()?;
     let style = match format {
         "full" => Some(diag::Style::Full),
@@ -614,16 +701,35 @@ fn check(files: &[String], m: &MachineArgs, format: &str, out: &mut dyn Write, e
     let mut unreadable = false;
     let mut w = Tolerant::new(io::BufWriter::new(Tolerant::new(out)));
     for file in files {
-        let shown = if file == "-" { "<stdin>" } else { file.as_str() };
-        // A file that cannot be read is reported, and the others are still checked.
-        let input = match open(file) {
-            Ok(i) => i,
+        let shown = shown(file);
+        // A file that cannot be read, or whose first line names no machine ncsight has, is
+        // reported, and the others are still checked.
+        let read = Head::of(file).and_then(|mut head| {
+            let machine = machine_for(m, head.named(shown), !default_said, err)?;
+            default_said |= head.named.is_none();
+            Ok((machine, head.input(file)?))
+        });
+        let (machine, input) = match read {
+            Ok(r) => r,
             Err(Failure::Usage(msg)) => {
                 writeln!(err, "ncsight: {msg}")?;
                 unreadable = true;
                 continue;
             }
             Err(e) => return Err(e),
+        };
+        let (params, switches) = match &given {
+            Some(p) => p.clone(),
+            None => {
+                match machines.iter().find(|(n, _)| *n == machine) {
+                    Some((_, p)) => p.clone(),
+                    None => {
+                        let p = setup_on(m, &machine)?;
+                        machines.push((machine, p.clone()));
+                        p
+                    }
+                }
+            }
         };
         let mut program = Program::diagnostics_only(params.clone(), switches);
         let mut library = m.prepare(&mut program)?;
@@ -733,18 +839,21 @@ fn report(
     if let Some(why) = report::engine_missing() {
         return Err(usage(why));
     }
-    let (params, switches) = setup(m, err)?;
+    let mut head = Head::of(file)?;
+    let (params, switches) = setup(m, head.named(shown(file)), err)?;
     let decoding = m.decoding()?;
     let file_out = output.map(|path| output::LazyFile::new(path, &m.read_files(file), 1 << 16)).transpose().map_err(usage)?;
     let opts = operator.options()?;
     let job = job_setup(m, params.profile(), stock)?;
     let sim_options = simulate::options(None, expect).map_err(usage)?;
-    let source = if file == "-" {
-        let mut v = Vec::new();
-        io::stdin().read_to_end(&mut v)?;
-        v
-    } else {
-        std::fs::read(file).map_err(|e| usage(format!("cannot read {file}: {e}")))?
+    let source = match head.input.take() {
+        Some(feed::Input::Stream(mut r)) => {
+            let mut v = Vec::new();
+            r.read_to_end(&mut v)?;
+            v
+        }
+        Some(feed::Input::Memory(text)) => text.to_vec(),
+        Some(feed::Input::File(_)) | None => std::fs::read(file).map_err(|e| usage(format!("cannot read {file}: {e}")))?,
     };
     let mut settings = vec![format!("profile {} ({})", params.profile().name, params.profile().title)];
     settings.extend(setup_notes(m.setup.as_deref().map(|p| (p, &job)), params.profile()));
@@ -799,6 +908,8 @@ fn report(
     let page = report::Preload {
         file_name: if file == "-" { "<stdin>" } else { file },
         text: editor_text(&source, &decoding),
+        original: &source,
+        encoding: decoding.label(),
         machine: params.profile().name,
         params: &m.params,
         setup: m.setup_text()?.map(str::to_string),
@@ -884,7 +995,8 @@ fn simulate(
     if format != "text" && format != "json" {
         return Err(usage(format!("unknown format '{format}': choose text or json")));
     }
-    let (params, switches) = setup(m, err)?;
+    let mut head = Head::of(file)?;
+    let (params, switches) = setup(m, head.named(shown(file)), err)?;
     let decoding = m.decoding()?;
     let mut job = job_setup(m, params.profile(), stock)?;
     let reads = m.read_files(file);
@@ -912,7 +1024,7 @@ fn simulate(
     // then the cut, each record as it comes; nothing holds the programme's records, so a
     // programme of any length is simulated. Standard input or a pipe is read once, into a
     // temporary file both runs read.
-    let source = Spooled::of(file)?;
+    let source = Spooled::of(file, head.input.take())?;
     let shown = if file == "-" { "<stdin>" } else { file };
     let mut lathe_survey = ncsight::stock::survey::LatheSurvey::new(&job);
     let mut mill_survey = ncsight::stock::survey::MillSurvey::default();
@@ -1053,7 +1165,8 @@ struct Spooled {
 }
 
 impl Spooled {
-    fn of(file: &str) -> Result<Spooled, Failure> {
+    /// `file`, or its `input` already opened (standard input or a pipe, its first line read).
+    fn of(file: &str, input: Option<feed::Input>) -> Result<Spooled, Failure> {
         if file != "-" {
             let regular = std::fs::metadata(file).map(|m| m.is_file()).map_err(|e| usage(format!("cannot read {file}: {e}")))?;
             if regular {
@@ -1065,7 +1178,11 @@ impl Spooled {
         let path = std::env::temp_dir().join(format!("ncsight-simulate-{}-{n}.nc", std::process::id()));
         let spooled = Spooled { path, temporary: true };
         let mut to = std::fs::File::create(&spooled.path).map_err(|e| usage(format!("cannot write a temporary copy of {file} at {}: {e}", spooled.path.display())))?;
-        let copied = match open(file)? {
+        let input = match input {
+            Some(input) => input,
+            None => open(file)?,
+        };
+        let copied = match input {
             feed::Input::Stream(mut r) => io::copy(&mut r, &mut to),
             feed::Input::File(p) => std::fs::File::open(p).and_then(|mut f| io::copy(&mut f, &mut to)),
             feed::Input::Memory(t) => to.write_all(&t).map(|_| t.len() as u64),
@@ -1108,7 +1225,7 @@ fn repair(
     out: &mut dyn Write,
     err: &mut dyn Write,
 ) -> Result<i32, Failure> {
-    let (params, _) = setup(m, err)?;
+    let (params, _) = setup(m, None, err)?;
     let profile = params.profile();
     let Some(enable) = profile.thread.repair_enable.filter(|_| profile.g_code(32, Some(1)).is_some_and(|g| matches!(g.function, ncsight::profile::GFn::Thread(_)))) else {
         let how = if profile.thread.repair_enable.is_some() {

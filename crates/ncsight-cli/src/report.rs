@@ -48,6 +48,10 @@ pub struct Preload<'a> {
     pub library: Vec<(String, String)>,
     /// The run's options and switches, described.
     pub settings: Vec<String>,
+    /// The file's bytes as read: the page saves them back unchanged while the text is not edited.
+    pub original: &'a [u8],
+    /// The encoding of its lines that are not UTF-8 (`gb18030` unless `--encoding` said).
+    pub encoding: &'static str,
     pub sim: Option<&'a Simulation>,
     /// Why the thread could not be simulated, when it could not.
     pub sim_error: Option<&'a str>,
@@ -65,7 +69,7 @@ fn script_safe(json: &str) -> String {
 /// The job the page starts with, as JSON.
 fn job_json(p: Option<&Preload>) -> String {
     let machines: Vec<String> = ncsight::profile::all().iter().map(|m| format!("[{},{},{}]", json_str(m.name), json_str(m.title), m.is_lathe())).collect();
-    let mut s = format!("{{\"machines\":[{}]", machines.join(","));
+    let mut s = format!("{{\"machines\":[{}],\"explain\":{}", machines.join(","), explanations_json());
     let Some(p) = p else {
         s.push('}');
         return s;
@@ -82,6 +86,20 @@ fn job_json(p: Option<&Preload>) -> String {
         json_str(p.setup.as_deref().unwrap_or("")),
         strs(&p.settings)
     );
+    // The bytes as opened, when the text alone does not give them back (a byte-order mark, CR LF
+    // line ends, lines in GBK): the page's download writes them unchanged, or an edited text
+    // in the same form.
+    if p.original != p.text.as_bytes() {
+        let utf8 = std::str::from_utf8(p.original).is_ok();
+        let _ = write!(
+            s,
+            ",\"original\":{{\"base64\":\"{}\",\"encoding\":\"{}\",\"crlf\":{},\"bom\":{}}}",
+            base64(p.original),
+            if utf8 { "utf-8" } else { p.encoding },
+            p.original.windows(2).any(|w| w == b"\r\n"),
+            p.original.starts_with(&[0xEF, 0xBB, 0xBF])
+        );
+    }
     let holds: Vec<String> = o.feed_hold_at.iter().map(|t| num(*t, 4)).collect();
     let _ = write!(
         s,
@@ -126,6 +144,36 @@ fn job_json(p: Option<&Preload>) -> String {
     }
     s.push('}');
     s
+}
+
+/// Every code's explanation (`ncsight explain`'s catalogue) for the page, by project code:
+/// severity, the controller's FANUC number where it has one, the title in English and Chinese,
+/// then meaning, causes and fix as `[English, Chinese]`, and the wrong and right examples.
+fn explanations_json() -> String {
+    let Ok(all) = ncsight::explain::catalogue() else { return "{}".into() };
+    let pair = |en: &str, zh: &str| format!("[{},{}]", json_str(en), json_str(zh));
+    let list = |v: &[String]| format!("[{}]", v.iter().map(|x| json_str(x)).collect::<Vec<_>>().join(","));
+    let rows: Vec<String> = all
+        .iter()
+        .filter_map(|(code, e)| {
+            let rule = ncsight::explain::rule_of(code)?;
+            let sev = if rule.severity() == ncsight::Severity::Alarm { "alarm" } else { "warning" };
+            Some(format!(
+                "{}:{{\"sev\":\"{sev}\",\"fanuc\":{},\"title\":{},\"meaning\":{},\"causes\":[{},{}],\"fix\":{},\"wrong\":{},\"right\":{},\"profile\":{}}}",
+                json_str(code),
+                rule.fanuc_code().map(json_str).unwrap_or_else(|| "null".into()),
+                pair(rule.title(), &e.title_zh),
+                pair(&e.meaning_en, &e.meaning_zh),
+                list(&e.causes_en),
+                list(&e.causes_zh),
+                pair(&e.fix_en, &e.fix_zh),
+                json_str(&e.wrong),
+                json_str(&e.right),
+                json_str(&e.profile)
+            ))
+        })
+        .collect();
+    format!("{{{}}}", rows.join(","))
 }
 
 /// Write the page: empty (`app`) or opening with `preload` (`report`).

@@ -113,6 +113,66 @@ pub fn nearest_machine(name: &str) -> Option<String> {
     Some(scored.iter().filter(|(_, d)| *d == best).map(|(n, _)| *n).collect::<Vec<_>>().join(" or "))
 }
 
+/// How far [`read_first_line`] reads for the line that may name the machine: blank and `%`
+/// lines before it, and the line itself, up to this many bytes in all.
+pub const FIRST_LINE_SCAN_BYTES: usize = 64 * 1024;
+
+/// Whether a line is one that is passed over looking for the first line: only `%` (the tape
+/// start) and white space, or nothing.
+fn passed_over(line: &[u8]) -> bool {
+    line.iter().all(|&b| b == b'%' || b.is_ascii_whitespace())
+}
+
+/// The controller a programme names in its first line, as `(ncsight: MACHINE)`: the name as
+/// written (trimmed), whether or not a profile has it ([`Job::profile`] says). The first line is
+/// the first that is not blank or only `%` (the tape start), after a UTF-8 byte-order mark; the
+/// comment may be the whole line or follow other words on it; `ncsight` in any case, spaces
+/// allowed around the colon. `None` when that line holds no such comment (or the text ends
+/// first). No I/O: the command line, the Python package and the page give it the text's start.
+pub fn machine_from_first_line(text: &[u8]) -> Option<String> {
+    let text = text.strip_prefix(&[0xEF, 0xBB, 0xBF][..]).unwrap_or(text);
+    let line = text.split(|&b| b == b'\n').find(|l| !passed_over(l))?;
+    let mut rest = line;
+    while let Some(open) = rest.iter().position(|&b| b == b'(') {
+        let after = &rest[open + 1..];
+        let close = after.iter().position(|&b| b == b')')?;
+        if let Some(name) = named_machine(&after[..close]) {
+            return Some(name);
+        }
+        rest = &after[close + 1..];
+    }
+    None
+}
+
+/// `ncsight: NAME` (a comment's text between its parentheses): NAME.
+fn named_machine(comment: &[u8]) -> Option<String> {
+    let c = comment.trim_ascii();
+    let (word, rest) = c.split_at_checked(7)?;
+    if !word.eq_ignore_ascii_case(b"ncsight") {
+        return None;
+    }
+    let name = rest.trim_ascii_start().strip_prefix(b":")?.trim_ascii();
+    (!name.is_empty()).then(|| String::from_utf8_lossy(name).into_owned())
+}
+
+/// The start of a text up to and with its first line (as [`machine_from_first_line`] finds
+/// it), at most [`FIRST_LINE_SCAN_BYTES`]: what a caller reading a stream gives that function.
+/// What is read is in the result; a stream's caller reads the rest after it.
+pub fn read_first_line(r: &mut dyn io::BufRead) -> io::Result<Vec<u8>> {
+    use std::io::{BufRead, Read};
+    let mut head = Vec::new();
+    loop {
+        let start = head.len();
+        let room = FIRST_LINE_SCAN_BYTES.saturating_sub(start) as u64;
+        let n = (&mut *r).take(room).read_until(b'\n', &mut head)?;
+        let line = &head[start..];
+        let line = if start == 0 { line.strip_prefix(&[0xEF, 0xBB, 0xBF][..]).unwrap_or(line) } else { line };
+        if n == 0 || !passed_over(line) || head.len() >= FIRST_LINE_SCAN_BYTES {
+            return Ok(head);
+        }
+    }
+}
+
 /// The profiles' names, for messages.
 pub fn machine_names() -> String {
     profile::all().iter().map(|p| p.name).collect::<Vec<_>>().join(", ")
@@ -375,6 +435,33 @@ pub fn clip_lines(message: &str) -> String {
 
 #[cfg(test)]
 mod tests {
+    #[test]
+    fn the_first_line_names_the_machine() {
+        let m = |t: &str| super::machine_from_first_line(t.as_bytes());
+        assert_eq!(m("(ncsight: fanuc0m)\nG81\n").as_deref(), Some("fanuc0m"));
+        assert_eq!(m("O0001 (PART 12) (NCSight:FANUC0M )\r\nG0 X0\n").as_deref(), Some("FANUC0M"));
+        assert_eq!(m("\u{feff}%\r\n\n  %  \n( ncsight :  yasnac-lx3 )\n").as_deref(), Some("yasnac-lx3"));
+        assert_eq!(m("(ncsight: nosuch)").as_deref(), Some("nosuch"));
+        assert_eq!(m("G0 X0\n(ncsight: fanuc0m)\n"), None, "only the first line");
+        assert_eq!(m("(ncsight fanuc0m)\n"), None, "the colon is needed");
+        assert_eq!(m("(ncsight:)\n"), None);
+        assert_eq!(m("(ncsight: fanuc0m\n"), None, "an unclosed comment");
+        assert_eq!(m("(ncsightx: fanuc0m)\n"), None);
+        assert_eq!(m("%\n%\n"), None);
+        assert_eq!(m(""), None);
+    }
+
+    #[test]
+    fn the_first_line_is_read_with_what_comes_before_it() {
+        let text = b"\xEF\xBB\xBF%\n\n(ncsight: fanuc0t)\nG0 X0\nM30\n";
+        let mut r = std::io::Cursor::new(&text[..]);
+        let head = super::read_first_line(&mut r).unwrap();
+        assert_eq!(head, &text[..text.len() - b"G0 X0\nM30\n".len()]);
+        assert_eq!(super::machine_from_first_line(&head).as_deref(), Some("fanuc0t"));
+        let long = vec![b'%'; 3 * super::FIRST_LINE_SCAN_BYTES];
+        assert_eq!(super::read_first_line(&mut &long[..]).unwrap().len(), super::FIRST_LINE_SCAN_BYTES);
+    }
+
     #[test]
     fn long_lines_are_clipped() {
         let long = "x".repeat(1000);

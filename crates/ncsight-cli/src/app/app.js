@@ -27,21 +27,45 @@
     auto: ["run as I type", "输入即运行"],
     run: ["Run", "运行"],
     fit: ["Fit", "适应窗口"],
-    play: ["Play", "播放"],
-    pause: ["Pause", "暂停"],
-    prev: ["◀ Block", "◀ 单段"],
-    next: ["Block ▶", "单段 ▶"],
+    play: ["CYCLE START", "循环启动"],
+    pause: ["❚❚ Pause", "❚❚ 暂停回放"],
+    prev: ["◀ Block", "◀ 上一段"],
+    next: ["Block ▶", "下一段 ▶"],
+    prevm: ["◀ Motion", "◀ 上一动作"],
+    nextm: ["Motion ▶", "下一动作 ▶"],
     nexttool: ["Next tool", "下一把刀"],
     tocursor: ["Run to cursor", "运行到光标"],
+    slow: ["threads at real time", "螺纹处按实际速度"],
     speed: ["Speed", "速度"],
     panel: ["Operator panel", "操作面板"],
-    hold: ["Feed hold now", "此刻进给保持"],
-    reset: ["Reset now", "此刻复位"],
+    hold: ["FEED HOLD", "进给保持"],
+    reset: ["RESET", "复位"],
     clear: ["Clear presses", "清除按键"],
-    single: ["Single block", "单段"],
+    single: ["SINGLE BLOCK", "单段"],
     dry: ["Dry run", "空运行"],
     bdel: ["Block delete", "程序段跳过"],
-    opt: ["Optional stop", "选择停"],
+    opt: ["Optional stop (M01)", "选择停 (M01)"],
+    ms_run: ["RUN", "运行"],
+    ms_hold: ["HOLD", "暂停"],
+    ms_stop: ["STOP", "停止"],
+    ms_alarm: ["ALARM", "报警"],
+    why_paused: ["The player is paused (the machine would go on): CYCLE START or space plays on.", "回放已暂停（机床并未停止）：按“循环启动”或空格继续。"],
+    why_m00: ["M00 programme stop at line {line}: CYCLE START goes on.", "第 {line} 行 M00 程序停止：按“循环启动”继续。"],
+    why_m01: ["M01 optional stop at line {line} (optional stop on): CYCLE START goes on.", "第 {line} 行 M01 选择停（选择停开关已开）：按“循环启动”继续。"],
+    why_g88: ["G88 at line {line}: the operator retracts the tool by hand, then CYCLE START.", "第 {line} 行 G88：操作者手动退刀后按“循环启动”。"],
+    why_single: ["Single block: the block at line {line} is done; CYCLE START runs the next.", "单段：第 {line} 行程序段执行完毕；按“循环启动”执行下一段。"],
+    why_reset: ["RESET: the axes stopped and the programme ended.", "复位：各轴停止，程序结束。"],
+    why_stop: ["Stopped at line {line}.", "在第 {line} 行停止。"],
+    why_end: ["End of programme.", "程序结束。"],
+    why_textend: ["The text ended without M30 or M02.", "程序文本已完，没有 M30 或 M02。"],
+    why_alarm: ["Alarm at line {line}: {code} {title}. The run stops here, as the controller does.", "第 {line} 行报警：{code} {title}。运行在此停止，与系统相同。"],
+    why_hold: ["FEED HOLD at {t}: the axes decelerated to a stop; CYCLE START goes on.", "{t} 进给保持：各轴减速停止；按“循环启动”继续。"],
+    why_hold_end: ["FEED HOLD at {t}: the machine stopped where this block lets it (a tapping or thread block goes on to its end); CYCLE START goes on.", "{t} 进给保持：机床在本段允许处停止（攻丝、螺纹段执行到底才停）；按“循环启动”继续。"],
+    why_hold_thread: ["Thread hold (FEED HOLD at {t}): {pulled}{back}stopped. CYCLE START cuts the pass again.", "螺纹中进给保持（{t}）：{pulled}{back}停止。按“循环启动”重新车这一刀。"],
+    why_hold_thread_finish: ["Thread hold (FEED HOLD at {t}): the pass went on to its end and its pull-out, {back}stopped. CYCLE START goes on.", "螺纹中进给保持（{t}）：本刀车到终点并退尾，{back}停止。按“循环启动”继续。"],
+    why_pulled: ["pulled out at once, ", "立即退尾，"],
+    why_back: ["returned to the start point, ", "快速返回起点，"],
+    withholds: ["with {list}", "含 {list}"],
     feedov: ["Feed override", "进给倍率"],
     rapidov: ["Rapid override", "快速倍率"],
     params: ["Parameters (N=V or N.B=V, one a line)", "参数（N=V 或 N.B=V，每行一个）"],
@@ -58,6 +82,28 @@
     ended: ["ended", "程序结束"],
     stopped: ["stopped", "停止"],
     alarm: ["alarm", "报警"],
+    warningk: ["warning", "警告"],
+    ex_causes: ["Usual causes", "常见原因"],
+    save: ["Download programme", "下载程序"],
+    png: ["Plot PNG", "导出 PNG"],
+    svg: ["Plot SVG", "导出 SVG"],
+    sheet: ["Setup sheet", "调整单"],
+    restore_yes: ["Restore", "恢复"],
+    restore_no: ["Discard", "丢弃"],
+    restore: ["Edits of {file} not downloaded, kept in this browser at {at}:", "{file} 未下载的修改已保存在此浏览器（{at}）："],
+    newfile: ["the new programme", "新程序"],
+    gbk_missing: ["Downloaded in GBK, as opened; {n} character(s) GBK lacks are written as ?", "已按打开时的 GBK 编码下载；{n} 个 GBK 没有的字符写成了 ?"],
+    sh_tool: ["Tool", "刀具"],
+    sh_name: ["Name (its comment)", "名称（注释）"],
+    sh_xz: ["Cutting extents (mm)", "切削范围 (mm)"],
+    sh_xyz: ["Cutting extents (mm)", "切削范围 (mm)"],
+    sh_feed: ["Feeds", "进给"],
+    sh_speed: ["Spindle", "主轴转速"],
+    sh_cut: ["Cutting", "切削时间"],
+    sheet_note: ["Times as ncsight runs the programme on this controller (tool changes, spindle waits and stops are in the total). Extents are of the cutting moves, X as a diameter on a lathe.", "时间为 ncsight 按此控制器运行程序所得（换刀、主轴等待和停止计入合计）。范围为切削移动的范围，车床 X 为直径。"],
+    ex_fix: ["How to fix it", "解决办法"],
+    ex_wrong: ["Wrong", "错误示例"],
+    ex_right: ["Right", "正确示例"],
     running: ["running…", "运行中…"],
     usage: ["Cannot run: {msg}", "无法运行：{msg}"],
     total: ["Total", "合计"],
@@ -69,6 +115,7 @@
     dwell: ["dwell", "暂停"],
     turn: ["rotary turn", "回转轴"],
     waits: ["spindle, tool change, stops", "主轴、换刀、停止"],
+    toolchanges: ["tool changes ({n} × {s} s)", "换刀（{n} × {s} 秒）"],
     line: ["line", "行"],
     col: ["col", "列"],
     state_t: ["t", "时间"],
@@ -79,8 +126,8 @@
     feedrate: ["feed", "进给"],
     empty: ["Paste a programme, drop a file here, or open one.", "粘贴程序、把文件拖到这里，或打开文件。"],
     presses: ["presses: {list}", "按键：{list}"],
-    holdat: ["hold {t} s", "{t} 秒进给保持"],
-    resetat: ["reset {t} s", "{t} 秒复位"],
+    holdat: ["FEED HOLD at {t} s", "{t} 秒进给保持"],
+    resetat: ["RESET at {t} s", "{t} 秒复位"],
     more: ["{n} more not listed", "另有 {n} 条未列出"],
     hole: ["holes", "孔"],
     view_lathe: ["Z–X (lathe)", "Z–X（车床）"],
@@ -93,6 +140,8 @@
     gl_none: ["The 3D view needs WebGL, which this browser does not offer", "三维视图需要 WebGL，此浏览器不支持"],
     gl_wait: ["cutting the stock…", "正在切削毛坯…"],
     work_zero: ["work zero", "工件零点"],
+    block: ["stock {x} × {y} × {z}", "毛坯 {x} × {y} × {z}"],
+    blockguess: ["stock guessed from the cuts {x} × {y} × {z} (type XxYxZ in Stock to set)", "按切削估计的毛坯 {x} × {y} × {z}（在“毛坯”中输入 XxYxZ 设定）"],
     stockguess: ["stock from the programme (type DIAxLEN to set)", "按程序估计的毛坯（输入 直径x长度 设定）"],
     part: ["part", "工件"],
     notrun: ["Not run: the text is larger than auto-run allows; press Run.", "未运行：程序太大，不自动运行；请按“运行”。"],
@@ -132,7 +181,7 @@
     document.documentElement.lang = lang === "zh" ? "zh-CN" : "en";
     document.querySelectorAll("[data-i18n]").forEach((e) => { e.textContent = t(e.getAttribute("data-i18n")); });
     $("lang").textContent = t("lang");
-    $("play").textContent = timer ? t("pause") : t("play");
+    setMachineState(machineState, stopWhy);
     fillViews();
   }
 
@@ -408,9 +457,24 @@
     paintEditor();
   }
   ta.addEventListener("click", () => { selLine = caretLine(); paintEditor(); draw(); });
+  /** The machine a programme names on its first line, `(ncsight: fanuc0m)` (the first line that is
+   * not blank or only %), when the page has that profile: as the command line reads it. */
+  function namedMachine(text) {
+    const first = text.replace(/^\uFEFF/, "").split("\n").find((l) => !/^[\s%]*$/.test(l)) || "";
+    const m = /\(\s*ncsight\s*:\s*([^()]*?)\s*\)/i.exec(first);
+    return m && [...$("machine").options].some((o) => o.value === m[1]) ? m[1] : null;
+  }
+  let lastNamed = namedMachine(JOB.text || "");
+  /** A first line that names another machine chooses it (opened, restored or typed). */
+  function followNamedMachine() {
+    const n = namedMachine(programmeText().slice(0, 4096));
+    if (n && n !== lastNamed) $("machine").value = n;
+    lastNamed = n;
+  }
   let debounce = 0;
   ta.addEventListener("input", () => {
     simCurrent = false;
+    followNamedMachine();
     countLines(); paintEditor();
     if (!$("auto").checked) return;
     clearTimeout(debounce);
@@ -465,11 +529,20 @@
     if (wasLathe !== lathe || !$("view").options.length) { fillViews(); fitted = true; }
     markDiagnostics();
     // A new programme opens at its end (the whole path, the finished part); an edit keeps the moment.
+    if (fresh) { pause(); setMachineState("stop", null); }
     now = fresh ? S.head.total_s : Math.min(now, S.head.total_s);
     fresh = false;
     partCache = null;
     if (fitted) fit();
     showProblems(); showTime(); showParams(); legend(); showPasses(); setTime(now, false); paintEditor();
+    // A press made while playing: the player may have gone past where the machine stopped in the
+    // run made with it (the engine took longer than the hold's pull-out): it goes back there.
+    if (pressedAt !== null) {
+      doneStop = stopsDoneAt(pressedAt - 1e-6);
+      const st = stopBetween(pressedAt - 1e-6, Math.max(now, pressedAt));
+      pressedAt = null;
+      if (st) { pause(); ticking = true; setTime(st.t, true, st.l); ticking = false; reachedStop(st); }
+    }
     // When the first path was drawn, in ms from navigation (what the size tests measure).
     if (!firstPathMs) firstPathMs = performance.now();
     return true;
@@ -519,13 +592,15 @@
     const warnings = Math.max(0, H.diagnostics_total - alarms);
     const nf = stockFindings().length;
     const cut = H.cut ? " — " + t("cut", { n: (H.segments + H.events.length).toLocaleString() }) : "";
+    // The operator's presses change the run: the banner says so (a hold makes it longer).
+    const pressed = presses.holds.length || presses.reset !== null ? " — " + t("withholds", { list: pressList().join(", ") }) : "";
     if (nf) banner("alarm", t("findings", { n: nf }) + (H.diagnostics_total ? " — " + t("problems", { alarms, warnings }) : ""));
     else if (!H.diagnostics_total) {
-      if (cut) banner("warning", t("ok", { status: t(H.status), time: hms(H.total_s) }) + cut);
-      else banner("ok", programmeText().trim() ? t("ok", { status: t(H.status), time: hms(H.total_s) }) : t("empty"));
+      if (cut) banner("warning", t("ok", { status: t(H.status), time: hms(H.total_s) }) + cut + pressed);
+      else banner("ok", programmeText().trim() ? t("ok", { status: t(H.status), time: hms(H.total_s) }) + pressed : t("empty"));
     } else {
       const firstD = H.diagnostics[0];
-      banner(alarms ? "alarm" : "warning", t("problems", { alarms, warnings }) + " — " + t("first", { line: firstD.l, msg: firstD.code + " " + firstD.msg }) + cut);
+      banner(alarms ? "alarm" : "warning", t("problems", { alarms, warnings }) + " — " + t("first", { line: firstD.l, msg: firstD.code + " " + (titleOf(firstD) ? titleOf(firstD) + ": " : "") + firstD.msg }) + cut + pressed);
     }
     const frag = document.createDocumentFragment();
     // What the stock simulation could not do, and its findings (crash, chuck, phase, deviation),
@@ -538,12 +613,50 @@
       frag.appendChild(p);
     });
     H.diagnostics.slice(0, 500).forEach((d) => {
-      const p = el("div", { class: "p " + d.sev, "data-line": d.l }, t("line") + " " + d.l + " " + t("col") + " " + d.c + " · " + d.code + " · " + d.msg + (d.hint ? " (" + d.hint + ")" : "") + (d.check ? " " + t(H.status === "ended" ? "bycheck_ended" : "bycheck") : ""));
-      p.addEventListener("click", () => select(d.l, true));
+      const title = titleOf(d);
+      const p = el("div", { class: "p " + d.sev, "data-line": d.l }, t("line") + " " + d.l + " " + t("col") + " " + d.c + " · " + d.code + (title ? " " + title : "") + " · " + d.msg + (d.hint ? " (" + d.hint + ")" : "") + (d.check ? " " + t(H.status === "ended" ? "bycheck_ended" : "bycheck") : ""));
+      p.addEventListener("click", () => { select(d.l, true); explain(d); });
       frag.appendChild(p);
     });
     if (H.diagnostics_total > 500) frag.appendChild(el("div", {}, t("more", { n: H.diagnostics_total - 500 })));
     box.appendChild(frag);
+    // The first alarm (else the first warning) is explained at once; a click explains another.
+    const firstD = H.diagnostics.find((d) => d.sev === "alarm") || H.diagnostics[0];
+    if (firstD) explain(firstD); else $("explain").hidden = true;
+  }
+  /** A diagnostic's title in the page's language, from the explanations' catalogue. */
+  function titleOf(d) {
+    const E = JOB.explain && JOB.explain[d.rule];
+    return E ? E.title[lang === "zh" ? 1 : 0] : "";
+  }
+  let explained = null;
+  /** Explain a diagnostic under the list: the controller's number and title, what it means, the
+   * usual causes, how to fix it, a wrong and a right example (`ncsight explain`'s catalogue). */
+  function explain(d) {
+    explained = d;
+    const E = JOB.explain && JOB.explain[d.rule], box = $("explain"), z = lang === "zh" ? 1 : 0;
+    box.textContent = "";
+    box.hidden = false;
+    box.className = d.sev;
+    const number = d.code + (E && E.fanuc && E.fanuc !== d.code ? " (FANUC " + E.fanuc + ")" : "") + (d.code !== d.rule ? " · " + d.rule : "");
+    box.appendChild(el("div", { class: "ex-title" }, number + " · " + (E ? E.title[z] : "") + " · " + t(d.sev === "alarm" ? "alarm" : "warningk")));
+    box.appendChild(el("div", { class: "ex-msg" }, t("line") + " " + d.l + ": " + d.msg + (d.hint ? " (" + d.hint + ")" : "")));
+    if (!E) return;
+    box.appendChild(el("p", {}, E.meaning[z]));
+    box.appendChild(el("div", { class: "ex-h" }, t("ex_causes")));
+    const ul = el("ul");
+    E.causes[z].forEach((c) => ul.appendChild(el("li", {}, c)));
+    box.appendChild(ul);
+    box.appendChild(el("div", { class: "ex-h" }, t("ex_fix")));
+    box.appendChild(el("p", {}, E.fix[z]));
+    const ex = el("div", { class: "ex-ab" });
+    [["ex_wrong", E.wrong, "wrong"], ["ex_right", E.right, "right"]].forEach(([k, text, cls]) => {
+      const col = el("div", { class: cls });
+      col.appendChild(el("div", { class: "ex-h" }, t(k) + " (" + E.profile + ")"));
+      col.appendChild(el("pre", {}, text));
+      ex.appendChild(col);
+    });
+    box.appendChild(ex);
   }
 
   // ---- time as a person reads it --------------------------------------------------------------
@@ -566,6 +679,14 @@
       between -= d;
     }
     S.head.events.forEach((e) => { if (e.k === "dwell") { add(byOp, t("dwell"), e.s); between -= e.s; } if (e.k === "rotary") { add(byOp, t("turn"), e.s); between -= e.s; } });
+    // Tool changes: each change to another tool (the first included: the machine's model starts
+    // with no tool known) costs the setting tool_change_s (the setup's
+    // [machine] tool_change_s, or N=V in the parameters box; 0 when not given).
+    const change = S.head.params.find((p) => p[0] === "tool_change_s");
+    const perChange = change ? +change[1] : 0;
+    let changes = 0, inUse = null;
+    S.head.events.forEach((e) => { if (e.k === "tool") { if (e.tool !== inUse) changes++; inUse = e.tool; } });
+    if (changes && perChange > 0) { add(byOp, t("toolchanges", { n: changes, s: numLabel(perChange) }), changes * perChange); between -= changes * perChange; }
     if (between > 1e-6) add(byOp, t("waits"), between);
     const box = $("time");
     box.textContent = "";
@@ -579,7 +700,7 @@
       });
       box.appendChild(tb);
     };
-    table(t("bytool"), [...byTool].sort((a, b) => b[1] - a[1]).map(([k, v]) => ["T" + String(k).padStart(2, "0"), v]), "time-by-tool");
+    table(t("bytool"), [...byTool].sort((a, b) => b[1] - a[1]).map(([k, v]) => [toolLabel(k), v]), "time-by-tool");
     table(t("byop"), [...byOp].sort((a, b) => b[1] - a[1]), "time-by-op");
   }
   /** Set parameter `key` to `value` in the parameters box, in place of an earlier setting of it. */
@@ -605,7 +726,8 @@
       input.addEventListener("change", () => setParam(p[0], p[2] === "bit" ? (input.checked ? "1" : "0") : input.value));
       td.appendChild(input);
       tr.appendChild(td);
-      p.slice(2).forEach((c) => tr.appendChild(el("td", {}, c)));
+      // unit, meaning (in Chinese in the Chinese page), source
+      [p[2], lang === "zh" && p[5] ? p[5] : p[3], p[4]].forEach((c) => tr.appendChild(el("td", {}, c)));
       tb.appendChild(tr);
     });
     (JOB.settings || []).forEach((s) => box.appendChild(el("div", {}, s)));
@@ -757,8 +879,66 @@
       ctx.strokeStyle = "#455a64"; ctx.lineWidth = 1.2; ctx.setLineDash([14, 4, 3, 4]);
       ctx.beginPath(); ctx.moveTo(0, sy(0)); ctx.lineTo(cw, sy(0)); ctx.stroke(); ctx.setLineDash([]);
     }
-    for (const f of [drawPaths, drawHoles, drawExtents, drawSelection, drawDiagnostics, drawFindings, drawTool]) f(A, B);
+    if (!lathe) drawBlock(A, B);
+    for (const f of [drawHold, drawPaths, drawHoles, drawExtents, drawSelection, drawDiagnostics, drawFindings, drawTool]) f(A, B);
+    if (!lathe) drawTriad(A, B);
     lastDrawMs = performance.now() - t0;
+  }
+  /** In HOLD, what the hold made the machine do (a thread's pull-out and return) under a wide
+   * amber band, so it is seen without zooming in. */
+  function drawHold(A, B) {
+    if (machineState !== "hold" || !holdSpan) return;
+    const q = [0, 0, 0];
+    ctx.strokeStyle = "rgba(255,160,0,0.55)"; ctx.lineWidth = 9; ctx.lineCap = "round";
+    ctx.beginPath();
+    for (let i = Math.max(0, segAt(holdSpan[0]) - 1); i < S.n && S.t0[i] < holdSpan[1] - 1e-9; i++) {
+      if (S.t[i] < holdSpan[0] - 1e-9) continue;
+      const m = (S.kind[i] & 7) === 2 || (S.kind[i] & 7) === 4 ? 16 : 1;
+      for (let j = 0; j <= m; j++) { pointAt(i, j / m, q); const x = screenX(A, q), y = screenY(B, q); if (j) ctx.lineTo(x, y); else ctx.moveTo(x, y); }
+    }
+    ctx.stroke(); ctx.lineCap = "butt";
+  }
+  /** A mill's stock block: the Stock box's XxYxZ (its corner at the work zero, its top at Z0,
+   * along +X, +Y and -Z, as `simulate` takes it), else guessed from the cutting moves (dashed). */
+  function millBlock() {
+    const m = /^\s*([0-9.]+)\s*[xX×*]\s*([0-9.]+)\s*[xX×*]\s*([0-9.]+)\s*$/.exec($("stock").value);
+    if (m && +m[1] > 0 && +m[2] > 0 && +m[3] > 0) return { min: [0, 0, -m[3]], max: [+m[1], +m[2], 0], guessed: false };
+    if (!S || !S.n) return null;
+    const min = [Infinity, Infinity, Infinity], max = [-Infinity, -Infinity, -Infinity];
+    for (let i = 0; i < S.n; i++) {
+      if ((S.kind[i] & 7) === 0) continue;
+      for (let a = 0; a < 3; a++) { const v = S.p[6 * i + 3 + a]; if (v < min[a]) min[a] = v; if (v > max[a]) max[a] = v; }
+    }
+    if (!(min[0] < Infinity)) return null;
+    return { min: [min[0], min[1], Math.min(min[2], -1)], max: [max[0], max[1], Math.max(0, Math.min(max[2], 0))], guessed: true };
+  }
+  function drawBlock(A, B) {
+    const b = millBlock();
+    if (!b) return;
+    const c = (i) => [i & 1 ? b.max[0] : b.min[0], i & 2 ? b.max[1] : b.min[1], i & 4 ? b.max[2] : b.min[2]];
+    ctx.strokeStyle = "#8d6e63"; ctx.lineWidth = 1.2; ctx.setLineDash(b.guessed ? [6, 4] : []);
+    ctx.beginPath();
+    for (let i = 0; i < 8; i++) for (const bit of [1, 2, 4]) {
+      if (i & bit) continue;
+      const p = c(i), q = c(i | bit);
+      ctx.moveTo(screenX(A, p), screenY(B, p)); ctx.lineTo(screenX(A, q), screenY(B, q));
+    }
+    ctx.stroke(); ctx.setLineDash([]);
+    ctx.fillStyle = "#6d4c41"; ctx.font = "12px system-ui,sans-serif";
+    const p = c(3);
+    ctx.fillText(t(b.guessed ? "blockguess" : "block", { x: numLabel(b.max[0] - b.min[0]), y: numLabel(b.max[1] - b.min[1]), z: numLabel(b.max[2] - b.min[2]) }), screenX(A, p) + 4, screenY(B, p) - 4);
+  }
+  /** The axes' directions in the view, at the bottom left: X red, Y green, Z blue. */
+  function drawTriad(A, B) {
+    const ox = 44, oy = ch - 44, len = 30;
+    [["X", [1, 0, 0], "#c62828"], ["Y", [0, 1, 0], "#2e7d32"], ["Z", [0, 0, 1], "#1565c0"]].forEach(([name, d, colour]) => {
+      const u = A[0] * d[0] + A[1] * d[1] + A[2] * d[2], v = B[0] * d[0] + B[1] * d[1] + B[2] * d[2];
+      if (Math.hypot(u, v) < 0.05) { ctx.fillStyle = colour; ctx.beginPath(); ctx.arc(ox, oy, 3, 0, 7); ctx.fill(); ctx.fillText(name, ox + 5, oy + 14); return; }
+      const x = ox + len * u, y = oy - len * v;
+      ctx.strokeStyle = colour; ctx.fillStyle = colour; ctx.lineWidth = 2;
+      ctx.beginPath(); ctx.moveTo(ox, oy); ctx.lineTo(x, y); ctx.stroke();
+      ctx.font = "bold 12px system-ui,sans-serif"; ctx.fillText(name, x + 3 * Math.sign(u || 1), y - 3);
+    });
   }
   /** The turned part as a solid of revolution: its cross-sections from the chuck forward, each an
    * ellipse (the yaw of the view), shaded as a lit cylinder; edges where the diameter steps. */
@@ -912,28 +1092,33 @@
   }
   function drawHoles(A, B) {
     if (!S.h) return;
-    // One marker per cell of its own size (markers that would overlap are not drawn): 200,000
-    // holes cost what the screen can show. Holes drilled by now are filled; those to come open.
-    const r = Math.max(3, Math.min(7, 1.5 * view.s));
-    const cell = 2 * r + 1, gw = Math.ceil(cw / cell) + 1, seen = new Uint8Array(gw * (Math.ceil(ch / cell) + 2));
+    // One marker per cell of its own size and per cycle (markers that would overlap are not
+    // drawn): 200,000 holes cost what the screen can show. Each cycle at a hole has its own
+    // size, the later cycles larger, so a spot drill, a drill and a tap at one hole all show.
+    // Holes drilled by now are filled; those to come open.
+    const r0 = Math.max(3, Math.min(7, 1.5 * view.s)), kinds = S.head.hole_kinds.length;
+    const size = (k) => r0 + 3 * Math.min(k, 5);
+    const cell = 2 * r0 + 1, gw = Math.ceil(cw / cell) + 1, seen = new Uint32Array(gw * (Math.ceil(ch / cell) + 2));
     const paths = S.head.hole_kinds.map(() => [new Path2D(), new Path2D()]);
     for (let j = 0; j < S.h; j++) {
       const o = 3 * j;
       const x = sx(A[0] * S.holeAt[o] + A[1] * S.holeAt[o + 1] + A[2] * S.holeAt[o + 2]), y = sy(B[0] * S.holeAt[o] + B[1] * S.holeAt[o + 1] + B[2] * S.holeAt[o + 2]);
       if (x < -8 || y < -8 || x > cw + 8 || y > ch + 8) continue;
       const c = Math.floor(Math.max(0, y) / cell) * gw + Math.floor(Math.max(0, x) / cell);
-      if (seen[c]) continue;
-      seen[c] = 1;
-      const k = S.holeKind[j];
-      marker(paths[k][S.t[S.holeSeg[j]] <= now + 1e-9 ? 1 : 0], x, y, holeLook(k).shape, r);
+      const k = S.holeKind[j], bit = 1 << (k & 31);
+      if (seen[c] & bit) continue;
+      seen[c] |= bit;
+      marker(paths[k][S.t[S.holeSeg[j]] <= now + 1e-9 ? 1 : 0], x, y, holeLook(k).shape, size(k));
     }
-    paths.forEach(([open, done], k) => {
-      const colour = holeLook(k).colour;
+    // The largest first, so that the smaller markers stay on top.
+    for (let k = kinds - 1; k >= 0; k--) {
+      const [open, done] = paths[k], colour = holeLook(k).colour;
       ctx.lineWidth = 1.6; ctx.strokeStyle = colour;
       ctx.fillStyle = "#ffffff"; ctx.fill(open); ctx.fillStyle = colour; ctx.fill(done);
       ctx.stroke(open); ctx.stroke(done);
-    });
+    }
   }
+
   function drawExtents(A, B) {
     // The extents of the cutting moves, dimensioned below and to the right of them.
     const [u0, u1, v0, v1] = cutBox(A, B);
@@ -1008,12 +1193,28 @@
     ctx.beginPath(); ctx.arc(x, y, 6, 0, 2 * Math.PI); ctx.fill(); ctx.stroke();
     ctx.beginPath(); ctx.moveTo(x - 10, y); ctx.lineTo(x + 10, y); ctx.moveTo(x, y - 10); ctx.lineTo(x, y + 10); ctx.stroke();
   }
+  /** A tool's name: the comment of the block that called it (CAM writes "T1 (D10 FLAT END
+   * MILL)"; a lathe programme "T0101 (OD TOOL)"), else the comment of the line before it. */
+  function toolName(tool) {
+    if (!S) return "";
+    if (!S.toolNames) {
+      S.toolNames = new Map();
+      const comment = (l) => { const m = l > 0 ? /\(([^()]*)\)/.exec(sourceLine(l)) : null; return m ? m[1].trim() : ""; };
+      S.head.events.forEach((x) => {
+        if (x.k !== "tool" || S.toolNames.has(x.tool)) return;
+        const before = x.l > 1 && /^\s*\(([^()]*)\)\s*$/.test(sourceLine(x.l - 1)) ? comment(x.l - 1) : "";
+        S.toolNames.set(x.tool, comment(x.l) || before);
+      });
+    }
+    return S.toolNames.get(tool) || "";
+  }
+  const toolLabel = (tool) => "T" + String(tool).padStart(2, "0") + (toolName(tool) ? " " + toolName(tool) : "");
   function legend() {
     const L = $("legend");
     L.textContent = "";
     const item = (colour, text, dashed) => { const s = el("span", { class: "lg" }); const sw = el("span", { class: "sw" }); sw.style.borderTopColor = colour; if (dashed) sw.style.borderTopStyle = "dashed"; s.appendChild(sw); s.appendChild(document.createTextNode(text)); L.appendChild(s); };
     item("#9e9e9e", t("rapid"), true);
-    (S.tools.length ? S.tools : [0]).forEach((tool) => item(toolColour(tool), "T" + String(tool).padStart(2, "0")));
+    (S.tools.length ? S.tools : [0]).forEach((tool) => item(toolColour(tool), toolLabel(tool)));
     if (S.head.threads.length) item("#8e24aa", t("pullout"));
     S.head.hole_kinds.forEach((k, i) => item(holeLook(i).colour, k + " " + t("hole")));
   }
@@ -1041,6 +1242,7 @@
     if (!S) return;
     const total = Math.max(S.head.total_s, 1e-9);
     now = Math.max(0, Math.min(total, time));
+    if (!ticking) doneStop = stopsDoneAt(now);
     $("slider").value = String(Math.round(now / total * 10000));
     const i = segAt(now);
     // Between motions (a dwell, a spindle wait, a tool change) the record under way is not a motion.
@@ -1061,7 +1263,7 @@
     const th = i >= 0 ? S.threadOf.get(i) : null;
     const pos = lathe ? "X " + (2 * q[0]).toFixed(3) + " (Ø)  Z " + q[2].toFixed(3) : "X " + q[0].toFixed(3) + "  Y " + q[1].toFixed(3) + "  Z " + q[2].toFixed(3);
     const lines = [
-      t("state_t") + " " + hms(now) + " " + t("of") + " " + hms(S.head.total_s) + "   " + t("state_line") + " " + (runLine || "-") + "   " + (between ? between.k : k >= 0 ? t("kinds")[k] : "") + (i >= 0 ? "   T" + String(S.tool[i]).padStart(2, "0") : ""),
+      t("state_t") + " " + hms(now) + " " + t("of") + " " + hms(S.head.total_s) + "   " + t("state_line") + " " + (runLine || "-") + "   " + (between ? between.k : k >= 0 ? t("kinds")[k] : "") + (i >= 0 ? "   " + toolLabel(S.tool[i]) : ""),
       pos,
       t("spindle") + " " + (th ? th[2] : rpm) + " rpm" + (th ? "   " + t("lead") + " " + S.rate[i] + " mm   " + t("angle") + " " + (((th[1] + 360 * Math.abs(th[2]) * Math.max(0, now - S.t0[i]) / 60) % 360)).toFixed(1) + "°" : k === 1 || k === 2 ? "   " + t("feedrate") + " " + S.rate[i] + " mm/min" : ""),
     ];
@@ -1071,22 +1273,122 @@
     $("state").textContent = lines.join("\n");
     $("clock").textContent = hms(now);
   }
-  function play() {
-    if (timer) { cancelAnimationFrame(timer); timer = 0; $("play").textContent = t("play"); return; }
-    if (!S) return;
-    if (now >= S.head.total_s) setTime(0);
-    $("play").textContent = t("pause");
+  // ---- the operator's player: it runs as the machine does and stops where the machine stops ----
+  // The run's stop records (single block, M00, M01 with the optional-stop switch, G88, a FEED
+  // HOLD pressed, RESET) are where Play stops; CYCLE START goes on from there. The state is
+  // shown as the controller's screen shows it: RUN, HOLD, STOP, ALARM.
+  let machineState = "stop"; // run | hold | stop | alarm
+  let stopWhy = null; // what the last stop was and what the machine did: a function of the language
+  let holdSpan = null; // [press, stop] of the hold shown
+  let slowed = false; // a thread under way, played at real time so a press can be aimed
+  const THREAD_SPEED = 1; // playing speed in a thread: real time
+  // The stop records the player has passed: the index of the last in the header's records. Each
+  // CYCLE START passes one stop, so stops at the same moment (blocks that take no time under
+  // single block) are one press each; a time the player is put at has its stops passed, except
+  // at the programme's start, where nothing has run yet.
+  let doneStop = -1, ticking = false;
+  function stopsDoneAt(time) {
+    let done = -1;
+    if (!S || time <= 1e-12) return done;
+    S.head.events.forEach((e, j) => { if (e.k === "stop" && e.t <= time + 1e-9) done = j; });
+    return done;
+  }
+  /** The first stop record not passed yet, from `from` to `to`, or null. */
+  function stopBetween(from, to) {
+    if (!S) return null;
+    const ev = S.head.events;
+    for (let j = doneStop + 1; j < ev.length; j++) {
+      const e = ev[j];
+      if (e.t > to + 1e-9) break;
+      if (e.k === "stop" && e.t >= from - 1e-9) { doneStop = j; return e; }
+    }
+    return null;
+  }
+  function setMachineState(state, why) {
+    machineState = state;
+    stopWhy = why || null;
+    const box = $("machine-state");
+    box.className = "ms " + state;
+    box.textContent = t("ms_" + state);
+    $("stop-why").textContent = stopWhy ? stopWhy() : "";
+    $("play").classList.toggle("lit", state === "run");
+    $("hold").classList.toggle("lit", state === "hold");
+  }
+  /** CYCLE START: run from where the player is (from the start once at the end). */
+  function cycleStart() {
+    if (!S || timer) return;
+    if (now >= S.head.total_s - 1e-9) setTime(0);
+    setMachineState("run");
     let last = performance.now();
     const tick = (ts) => {
-      const dt = (ts - last) / 1000; last = ts;
-      setTime(now + dt * +$("speed").value);
-      if (now >= S.head.total_s) { timer = 0; $("play").textContent = t("play"); return; }
+      const dt = Math.max(0, (ts - last) / 1000); last = ts;
+      const i = segAt(now);
+      slowed = i >= 0 && (S.kind[i] & 7) >= 3 && now >= S.t0[i] - 1e-9 && $("slow-threads").checked;
+      const speed = slowed ? Math.min(THREAD_SPEED, +$("speed").value) : +$("speed").value;
+      const to = now + dt * speed;
+      const stop = stopBetween(now, to);
+      ticking = true;
+      try {
+        if (stop) { setTime(stop.t, true, stop.l); pause(); return reachedStop(stop); }
+        setTime(to);
+      } finally { ticking = false; }
+      if (now >= S.head.total_s - 1e-9) { pause(); return reachedEnd(); }
       timer = requestAnimationFrame(tick);
     };
     timer = requestAnimationFrame(tick);
   }
+  /** The player pauses (the viewer's pause: the machine would go on). */
+  function pause() {
+    if (timer) cancelAnimationFrame(timer);
+    timer = 0;
+    slowed = false;
+    $("pause").disabled = true;
+    if (machineState === "run") setMachineState("stop", () => t("why_paused"));
+  }
+  function playPause() { if (timer) pause(); else { cycleStart(); $("pause").disabled = !timer; } }
+  /** The player reached a stop record: the state and what the machine did. */
+  function reachedStop(e) {
+    const why = { program_stop: "why_m00", optional_stop: "why_m01", manual_retract: "why_g88", single_block: "why_single", reset: "why_reset" }[e.reason];
+    if (e.reason === "feed_hold") return setMachineState("hold", holdStory(e));
+    setMachineState("stop", () => t(why || "why_stop", { line: e.l }));
+  }
+  function reachedEnd() {
+    const H = S.head;
+    if (H.status === "alarm") {
+      const d = H.diagnostics.find((x) => x.sev === "alarm" && !x.check) || H.diagnostics[0];
+      setMachineState("alarm", d ? () => t("why_alarm", { line: d.l, code: d.code, title: titleOf(d) }) : null);
+      if (d) explain(d);
+    } else { const key = H.status === "ended" ? "why_end" : presses.reset !== null ? "why_reset" : "why_textend"; setMachineState("stop", () => t(key)); }
+  }
+  /** What a FEED HOLD did, read from the run's records between the press and the stop. */
+  function holdStory(e) {
+    const press = presses.holds.filter((x) => x <= e.t + 1e-9).pop();
+    if (press === undefined || !S) return () => t("why_hold", { t: "-" });
+    holdSpan = [press, e.t];
+    let threadCut = false, pulled = false, back = false, finished = false;
+    for (let i = Math.max(0, segAt(press)); i < S.n && S.t0[i] < e.t - 1e-9; i++) {
+      const k = S.kind[i] & 7;
+      if (k >= 3 && !(S.kind[i] & 32) && S.t0[i] <= press + 1e-9 && S.t[i] >= press - 1e-9) {
+        // The thread motion under way at the press: cut short there, or finished.
+        threadCut = true;
+        finished = S.t[i] > press + 1e-6;
+      }
+      if (S.kind[i] & 32) pulled = true;
+      if (k === 0 && S.t0[i] >= press - 1e-9) back = true;
+    }
+    if (!threadCut) return () => t(e.t > press + 0.05 ? "why_hold_end" : "why_hold", { t: hms(press) });
+    return () => t(finished ? "why_hold_thread_finish" : "why_hold_thread", { t: hms(press), pulled: pulled ? t("why_pulled") : "", back: back ? t("why_back") : "" });
+  }
+  /** Step to the next (previous) motion's end: each pass of a G71, G92 or G75 on its own. */
+  function stepMotion(dir) {
+    if (!S || !S.n) return;
+    pause();
+    if (dir > 0) { const i = segAt(now + 1e-6); if (i >= 0 && S.t[i] > now + 1e-9) return setTime(S.t[i]); for (let k = Math.max(0, i); k < S.n; k++) if (S.t[k] > now + 1e-9) return setTime(S.t[k]); setTime(S.head.total_s); }
+    else { for (let k = segAt(now); k >= 0; k--) if (S.t[k] < now - 1e-9) return setTime(S.t[k]); setTime(0); }
+  }
   function stepBlock(dir) {
     if (!S) return;
+    pause();
     const E = S.blockEnds;
     if (dir > 0) { for (let k = 0; k < E.length; k++) if (E[k] > now + 1e-9) return setTime(E[k]); setTime(S.head.total_s); }
     else { for (let k = E.length - 1; k >= 0; k--) if (E[k] < now - 1e-9) return setTime(E[k]); setTime(0); }
@@ -1103,21 +1405,37 @@
     for (let i = 0; i < S.n; i++) if (S.line[i] === n) return setTime(S.t[i]);
   }
   function select(line, moveCaret) { selLine = line; showLine(line, moveCaret); draw(); }
-  $("play").addEventListener("click", play);
+  $("play").addEventListener("click", () => { cycleStart(); $("pause").disabled = !timer; });
+  $("pause").addEventListener("click", pause);
+  $("next-motion").addEventListener("click", () => stepMotion(1));
+  $("prev-motion").addEventListener("click", () => stepMotion(-1));
   $("next").addEventListener("click", () => stepBlock(1));
   $("prev").addEventListener("click", () => stepBlock(-1));
   $("next-tool").addEventListener("click", nextTool);
   $("to-cursor").addEventListener("click", toCursor);
-  $("slider").addEventListener("input", (e) => { if (S) setTime(e.target.value / 10000 * S.head.total_s); });
+  $("slider").addEventListener("input", (e) => { if (S) { pause(); setTime(e.target.value / 10000 * S.head.total_s); } });
 
   // ---- the operator panel: each press runs the programme again ---------------------------------
   const rerun = () => { run(); showPresses(); };
-  function showPresses() {
+  function pressList() {
     const list = presses.holds.map((x) => t("holdat", { t: x.toFixed(2) }));
     if (presses.reset !== null) list.push(t("resetat", { t: presses.reset.toFixed(2) }));
+    return list;
+  }
+  function showPresses() {
+    const list = pressList();
     $("presses").textContent = list.length ? t("presses", { list: list.join(", ") }) : "";
   }
-  $("hold").addEventListener("click", () => { presses.holds.push(+now.toFixed(3)); presses.holds.sort((a, b) => a - b); rerun(); });
+  // FEED HOLD and RESET press the button at the moment the player shows; playing, the player goes
+  // on in the run made again with the press, to where the machine stops.
+  let pressedAt = null; // a FEED HOLD pressed while playing, until the run made with it is shown
+  $("hold").addEventListener("click", () => {
+    const at = +now.toFixed(3);
+    if (presses.holds.includes(at)) return;
+    presses.holds.push(at); presses.holds.sort((a, b) => a - b);
+    if (timer) pressedAt = at;
+    rerun();
+  });
   $("reset").addEventListener("click", () => { presses.reset = +now.toFixed(3); rerun(); });
   $("clear-buttons").addEventListener("click", () => { presses.holds = []; presses.reset = null; rerun(); });
   ["single", "dry", "bdel", "opt", "feed-ov", "rapid-ov"].forEach((id) => $(id).addEventListener("change", rerun));
@@ -1200,16 +1518,21 @@
   $("zoom-in").addEventListener("click", () => zoom(1.25));
   $("zoom-out").addEventListener("click", () => zoom(0.8));
   window.addEventListener("resize", () => { editorHeight = 0; if (fitted) fit(); draw(); paintEditor(); });
-  // Keys, when not typing: space play, arrows block by block, T next tool, F fit, + and - zoom.
+  // Keys, when not typing: space CYCLE START and pause, arrows block by block (with Shift motion
+  // by motion), Home, End, T next tool, F fit, + and - zoom.
   document.addEventListener("keydown", (e) => {
     const tag = (e.target && e.target.tagName) || "";
-    if (tag === "TEXTAREA" || tag === "INPUT" || tag === "SELECT" || tag === "BUTTON" || tag === "SUMMARY") return;
+    // Typing keys belong to the field; a button or a switch clicked a moment ago keeps the focus,
+    // yet space is still the player's (it would press that button again).
+    const type = tag === "INPUT" ? e.target.type : "";
+    const field = tag === "TEXTAREA" || tag === "SELECT" || (tag === "INPUT" && type !== "checkbox" && type !== "button");
+    if (field && !(type === "range" && e.key === " ")) return;
     const k = e.key;
-    if (k === " ") { e.preventDefault(); play(); }
-    else if (k === "ArrowRight") stepBlock(1);
-    else if (k === "ArrowLeft") stepBlock(-1);
-    else if (k === "Home") setTime(0);
-    else if (k === "End" && S) setTime(S.head.total_s);
+    if (k === " ") { e.preventDefault(); playPause(); }
+    else if (k === "ArrowRight") (e.shiftKey ? stepMotion : stepBlock)(1);
+    else if (k === "ArrowLeft") (e.shiftKey ? stepMotion : stepBlock)(-1);
+    else if (k === "Home") { pause(); setTime(0); }
+    else if (k === "End" && S) { pause(); setTime(S.head.total_s); }
     else if (k === "t" || k === "T") nextTool();
     else if (k === "f" || k === "F") { fit(); draw(); }
     else if (k === "+" || k === "=") zoom(1.25);
@@ -1222,7 +1545,10 @@
   }
   function load(file) {
     file.arrayBuffer().then((b) => {
-      setProgramme(decode(new Uint8Array(b)).replace(/^\uFEFF/, ""));
+      const bytes = new Uint8Array(b), text = decode(bytes).replace(/^\uFEFF/, "");
+      setProgramme(text);
+      remember(bytes, programmeText());
+      lastNamed = null; followNamedMachine();
       fileName = file.name;
       simCurrent = false;
       $("file-name").textContent = fileName;
@@ -1233,6 +1559,187 @@
   $("file").addEventListener("change", (e) => { if (e.target.files[0]) load(e.target.files[0]); });
   document.addEventListener("dragover", (e) => e.preventDefault());
   document.addEventListener("drop", (e) => { e.preventDefault(); const f = e.dataTransfer && e.dataTransfer.files[0]; if (f) load(f); });
+
+  // ---- keep the work: download, autosave with a restore, the plot as PNG and SVG, a setup sheet --
+  // The programme as opened: its bytes, and how to write an edited text the same way (GBK or
+  // UTF-8, CR LF line ends, a byte-order mark).
+  let original = null;
+  function remember(bytes, text) {
+    let utf8 = true;
+    try { new TextDecoder("utf-8", { fatal: true }).decode(bytes); } catch (_) { utf8 = false; }
+    let crlf = false;
+    for (let i = 1; i < bytes.length && !crlf; i++) crlf = bytes[i] === 10 && bytes[i - 1] === 13;
+    original = { bytes, text, gbk: !utf8, crlf, bom: bytes[0] === 0xef && bytes[1] === 0xbb && bytes[2] === 0xbf };
+  }
+  if (JOB.original) {
+    const raw = atob(JOB.original.base64), bytes = new Uint8Array(raw.length);
+    for (let i = 0; i < raw.length; i++) bytes[i] = raw.charCodeAt(i);
+    remember(bytes, JOB.text || "");
+  } else if (JOB.text) remember(enc.encode(JOB.text), JOB.text);
+  /** GBK (GB18030's two-byte part) for an edited text of a GBK file: the table is the browser's own
+   * decoder run backwards, built once. Characters GBK lacks are written as "?" and counted. */
+  let gbkTable = null;
+  function gbkEncode(text) {
+    if (!gbkTable) {
+      gbkTable = new Map();
+      const dec = new TextDecoder("gbk"), pair = new Uint8Array(2);
+      for (let a = 0x81; a <= 0xfe; a++) for (let b = 0x40; b <= 0xfe; b++) {
+        if (b === 0x7f) continue;
+        pair[0] = a; pair[1] = b;
+        const c = dec.decode(pair);
+        if (c.length === 1 && c !== "\ufffd" && !gbkTable.has(c)) gbkTable.set(c, (a << 8) | b);
+      }
+    }
+    const out = [];
+    let missing = 0;
+    for (const c of text) {
+      const u = c.codePointAt(0);
+      if (u < 0x80) { out.push(u); continue; }
+      const g = gbkTable.get(c);
+      if (g === undefined) { out.push(0x3f); missing++; } else out.push(g >> 8, g & 0xff);
+    }
+    return { bytes: Uint8Array.from(out), missing };
+  }
+  function download(bytes, name, type) {
+    const url = URL.createObjectURL(new Blob([bytes], { type }));
+    const a = el("a", { href: url, download: name });
+    document.body.appendChild(a); a.click(); a.remove();
+    setTimeout(() => URL.revokeObjectURL(url), 10000);
+  }
+  const baseName = () => (fileName || "programme.nc").replace(/^.*[\\/]/, "");
+  /** The programme as a file: unedited, the bytes as opened; edited, in the form it was opened in. */
+  function programmeBytes() {
+    const text = programmeText();
+    if (original && text === original.text) return { bytes: original.bytes, missing: 0 };
+    const like = original || { gbk: false, crlf: false, bom: false };
+    const body = like.crlf ? text.replace(/\r?\n/g, "\r\n") : text;
+    if (like.gbk) return gbkEncode(body);
+    const b = enc.encode(body);
+    if (!like.bom) return { bytes: b, missing: 0 };
+    const out = new Uint8Array(b.length + 3);
+    out.set([0xef, 0xbb, 0xbf]); out.set(b, 3);
+    return { bytes: out, missing: 0 };
+  }
+  $("save").addEventListener("click", () => {
+    const { bytes, missing } = programmeBytes();
+    download(bytes, baseName(), "text/plain");
+    if (missing) banner("warning", t("gbk_missing", { n: missing }));
+    // Saved: the autosave has done its work.
+    try { localStorage.removeItem(autosaveKey()); } catch (_) {}
+  });
+  // Autosave: the edited text is kept in the browser (per file name) a second after typing
+  // stops; opening the page again offers it back, visibly, never silently.
+  const autosaveKey = () => "ncsight.autosave:" + (fileName || "(new)");
+  let autosaveTimer = 0;
+  ta.addEventListener("input", () => {
+    clearTimeout(autosaveTimer);
+    autosaveTimer = setTimeout(() => {
+      try {
+        if (original && programmeText() === original.text) localStorage.removeItem(autosaveKey());
+        else localStorage.setItem(autosaveKey(), JSON.stringify({ text: programmeText(), at: Date.now(), machine: $("machine").value }));
+      } catch (_) { /* storage full or off: nothing kept, nothing lost */ }
+    }, 1000);
+  });
+  function offerRestore() {
+    let kept = null;
+    try { kept = JSON.parse(localStorage.getItem(autosaveKey()) || "null"); } catch (_) {}
+    if (!kept || typeof kept.text !== "string" || kept.text === programmeText()) return;
+    $("restore-text").textContent = t("restore", { file: fileName || t("newfile"), at: new Date(kept.at).toLocaleString(lang === "zh" ? "zh-CN" : "en-GB") });
+    $("restore").hidden = false;
+    $("restore-yes").onclick = () => {
+      $("restore").hidden = true;
+      setProgramme(kept.text);
+      if (kept.machine && [...$("machine").options].some((o) => o.value === kept.machine)) $("machine").value = kept.machine;
+      lastNamed = namedMachine(kept.text);
+      simCurrent = false; fresh = true; fitted = true;
+      paintEditor(); run();
+    };
+    $("restore-no").onclick = () => { $("restore").hidden = true; try { localStorage.removeItem(autosaveKey()); } catch (_) {} };
+  }
+  /** The plot as the screen shows it (PNG), or as lines (SVG: the same view, cuts in their tool's
+   * colour, rapids dashed, pull-outs purple, true arcs in chords). */
+  $("export-png").addEventListener("click", () => {
+    const gl = G.renderer && !$("gl-box").hidden ? G.renderer.domElement : null;
+    if (gl) glRender();
+    (gl || canvas).toBlob((b) => b && b.arrayBuffer().then((a) => download(new Uint8Array(a), baseName().replace(/\.[^.]*$/, "") + ".png", "image/png")), "image/png");
+  });
+  $("export-svg").addEventListener("click", () => download(enc.encode(plotSvg()), baseName().replace(/\.[^.]*$/, "") + ".svg", "image/svg+xml"));
+  function plotSvg() {
+    const xml = (v) => String(v).replace(/&/g, "&amp;").replace(/</g, "&lt;").replace(/>/g, "&gt;").replace(/"/g, "&quot;");
+    const out = [`<svg xmlns="http://www.w3.org/2000/svg" width="${cw}" height="${ch}" viewBox="0 0 ${cw} ${ch}">`, `<rect width="${cw}" height="${ch}" fill="#fff"/>`];
+    out.push(`<title>${xml(baseName() + " — " + (S ? S.head.title : ""))}</title>`);
+    if (S && S.n) {
+      const pv = V(), A = pv.pu, B = pv.pv, q = [0, 0, 0];
+      const runs = new Map(); // style -> path data
+      for (let i = 0; i < S.n; i++) {
+        const k = S.kind[i] & 7, m = k === 2 || k === 4 ? 24 : 1;
+        let d = "";
+        for (let j = 0; j <= m; j++) { pointAt(i, j / m, q); d += (j ? "L" : "M") + screenX(A, q).toFixed(1) + " " + screenY(B, q).toFixed(1); }
+        const st = S.style[i];
+        runs.set(st, (runs.get(st) || "") + d);
+      }
+      runs.forEach((d, st) => {
+        const colour = st === 0 ? "#9e9e9e" : st === 1 ? "#8e24aa" : toolColour(S.tools[Math.floor((st - 2) / 2) - 1]);
+        out.push(`<path d="${d}" fill="none" stroke="${colour}" stroke-width="${st % 2 && st > 1 ? 2.2 : 1.3}"${st === 0 ? ' stroke-dasharray="4 3"' : ""}/>`);
+      });
+    }
+    out.push(`<text x="8" y="${ch - 8}" font-family="sans-serif" font-size="12" fill="#37474f">${xml(baseName() + " · " + (S ? S.head.machine : "") + " · " + t("view_" + view.kind))}</text>`, "</svg>");
+    return out.join("\n");
+  }
+  /** Per tool: its motions' time by kind, the extents of its cutting moves, its feeds, leads and
+   * spindle speeds, the line that called it. */
+  function toolSheet() {
+    const rows = new Map();
+    const row = (tool) => {
+      if (!rows.has(tool)) rows.set(tool, { tool, line: 0, time: [0, 0, 0, 0], min: [Infinity, Infinity, Infinity], max: [-Infinity, -Infinity, -Infinity], feed: [Infinity, 0], lead: new Set(), rpm: [Infinity, 0], total: 0 });
+      return rows.get(tool);
+    };
+    let rpm = 0, e = 0;
+    const ev = S.head.events;
+    for (let i = 0; i < S.n; i++) {
+      while (e < ev.length && ev[e].seg <= i) { const x = ev[e++]; if (x.k === "spindle") rpm = Math.abs(x.rpm); if (x.k === "tool" && !row(x.tool).line) row(x.tool).line = x.l; }
+      const r = row(S.tool[i]), k = S.kind[i] & 7, d = S.t[i] - S.t0[i];
+      r.time[Math.min(k, 3)] += d; r.total += d;
+      if (k === 0) continue;
+      const o = 6 * i;
+      for (let a = 0; a < 3; a++) { const v = a === 0 && lathe ? 2 : 1; r.min[a] = Math.min(r.min[a], v * S.p[o + a], v * S.p[o + 3 + a]); r.max[a] = Math.max(r.max[a], v * S.p[o + a], v * S.p[o + 3 + a]); }
+      if (k >= 3) r.lead.add(S.rate[i]); else { r.feed[0] = Math.min(r.feed[0], S.rate[i]); r.feed[1] = Math.max(r.feed[1], S.rate[i]); }
+      if (rpm) { r.rpm[0] = Math.min(r.rpm[0], rpm); r.rpm[1] = Math.max(r.rpm[1], rpm); }
+    }
+    return [...rows.values()];
+  }
+  /** The setup sheet: the programme, its controller and time, the plot, and a row per tool; printed
+   * alone (the page's print style shows only it). */
+  function setupSheet() {
+    const box = $("sheet");
+    box.textContent = "";
+    if (!S) return box;
+    const range = (a, b, f) => (a > b ? "-" : a === b ? f(a) : f(a) + " – " + f(b));
+    const mm = (v) => numLabel(+v.toFixed(3));
+    box.appendChild(el("h2", {}, t("sheet") + ": " + baseName()));
+    box.appendChild(el("div", {}, S.head.title + " · " + t("total") + " " + hms(S.head.total_s) + " · " + new Date().toLocaleString(lang === "zh" ? "zh-CN" : "en-GB")));
+    const img = el("img", { alt: t("view_" + view.kind), src: canvas.toDataURL("image/png") });
+    img.className = "sheet-plot";
+    box.appendChild(img);
+    const tb = el("table", { id: "sheet-tools" });
+    const head = el("tr");
+    ["sh_tool", "sh_name", "line", lathe ? "sh_xz" : "sh_xyz", "sh_feed", "sh_speed", "sh_cut", "rapid", "total"].forEach((k) => head.appendChild(el("th", {}, t(k))));
+    tb.appendChild(head);
+    toolSheet().forEach((r) => {
+      const tr = el("tr");
+      const ext = lathe ? "X Ø " + range(r.min[0], r.max[0], mm) + ", Z " + range(r.min[2], r.max[2], mm) : ["X", "Y", "Z"].map((a, j) => a + " " + range(r.min[j], r.max[j], mm)).join(", ");
+      // On a lathe the feed per revolution too, where the spindle speed was one.
+      const perRev = lathe && r.rpm[1] && r.rpm[0] === r.rpm[1] && r.feed[1] ? " (" + range(r.feed[0] / r.rpm[0], r.feed[1] / r.rpm[0], (v) => numLabel(+v.toFixed(3))) + " mm/r)" : "";
+      const feeds = [r.feed[1] ? range(r.feed[0], r.feed[1], (v) => numLabel(+v.toFixed(1))) + " mm/min" + perRev : "", r.lead.size ? t("lead") + " " + [...r.lead].map((v) => numLabel(+v.toFixed(4))).join(", ") + " mm" : ""].filter(Boolean).join("; ");
+      [["T" + String(r.tool).padStart(2, "0")], [toolName(r.tool)], [r.line || "-"], [ext], [feeds || "-"], [r.rpm[1] ? range(r.rpm[0], r.rpm[1], (v) => Math.round(v)) + " rpm" : "-"], [hms(r.time[1] + r.time[2] + r.time[3]), "num"], [hms(r.time[0]), "num"], [hms(r.total), "num"]].forEach(([v, cls]) => tr.appendChild(el("td", cls ? { class: cls } : {}, v)));
+      tb.appendChild(tr);
+    });
+    box.appendChild(tb);
+    box.appendChild(el("div", { class: "sheet-note" }, t("sheet_note")));
+    return box;
+  }
+  $("print-sheet").addEventListener("click", () => { setupSheet(); window.print(); });
+  window.addEventListener("beforeprint", setupSheet);
 
   // ---- the thread passes, unrolled: the long axis across, the spindle angle down ------------
   // Each pass is the line the tool's point follows on the surface, in its own colour: passes that
@@ -1628,7 +2135,8 @@
 
   // ---- start ------------------------------------------------------------------------------------
   applyWords();
-  paintEditor(); draw(); showThread(); showPresses();
+  paintEditor(); draw(); showThread(); showPresses(); offerRestore();
+  $("pause").disabled = true;
   const ready = compiled.then(() => { if (programmeText().trim()) return run(); banner("ok", t("empty")); }).catch((e) => banner("usage", t("usage", { msg: String(e.message || e) })));
   window.ncsightApp = {
     ready,
@@ -1642,6 +2150,11 @@
     get runs() { return runs; },
     get firstPathMs() { return firstPathMs; },
     passes: () => (S ? S.head.passes : 0),
+    kindOf: (i) => S.kind[i] & 7,
+    startOf: (i) => S.t0[i],
+    endOf: (i) => S.t[i],
+    holeDepths: () => (S ? Array.from(S.holeAt.filter((_, j) => j % 3 === 2)) : []),
+    get machineState() { return machineState; },
     setTime, stepBlock, nextTool, select, zoom, fit: () => { fit(); draw(); }, run, pick,
     stock3d: () => G.data && { head: G.data.head, busy: G.busy || !!G.want, fail: G.fail, note: $("gl-note").textContent },
     view3d: (yaw, pitch, zoom) => { G.yaw = yaw; G.pitch = pitch; if (zoom) G.dist *= zoom; glRender(); },

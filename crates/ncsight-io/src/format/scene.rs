@@ -262,22 +262,28 @@ fn diagnostic_json(d: &ncsight::Diagnostic, seg: Option<usize>) -> String {
         let place = if d.span.file == 0 { String::new() } else { format!(" (line {} of another file)", d.span.line) };
         message = format!("{message}{place} - in a subprogramme called at {}", chain.join(", called at "));
     }
+    // `rule`: the project code the explanations are kept under (`code` is the profile's own).
     format!(
-        "{{\"l\":{line},\"c\":{}{},\"code\":{},\"sev\":\"{sev}\",\"msg\":{}{}}}",
+        "{{\"l\":{line},\"c\":{}{},\"code\":{},\"rule\":{},\"sev\":\"{sev}\",\"msg\":{}{}}}",
         d.span.col,
         seg.map(|s| format!(",\"seg\":{s}")).unwrap_or_default(),
         json_str(d.code),
+        json_str(d.rule.project_code()),
         json_str(&message),
         d.hint.as_ref().map(|h| format!(",\"hint\":{}", json_str(h))).unwrap_or_default()
     )
 }
 
-/// The profile's parameters as the run had them: key, value, unit, meaning, source.
+/// The profile's parameters as the run had them: key, value, unit, meaning, source, and the
+/// meaning in Chinese.
 fn params_json(params: &ncsight::profile::Params) -> String {
     let rows: Vec<String> = params
         .profile()
         .all_params()
-        .map(|d| format!("[{},{},{},{},{}]", json_str(&d.key.to_string()), num(params.get(d.key), 4), json_str(d.unit), json_str(d.meaning), json_str(d.source)))
+        .map(|d| {
+            let zh = ncsight::profile::meaning_zh(d.meaning).unwrap_or(d.meaning);
+            format!("[{},{},{},{},{},{}]", json_str(&d.key.to_string()), num(params.get(d.key), 4), json_str(d.unit), json_str(d.meaning), json_str(d.source), json_str(zh))
+        })
         .collect();
     rows.join(",")
 }
