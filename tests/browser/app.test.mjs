@@ -655,25 +655,47 @@ M30
 const stateOf = (page) => page.evaluate(() => [document.getElementById("machine-state").textContent, document.getElementById("stop-why").textContent, window.ncsightApp.now]);
 const stopsOf = (page, reason) => app(page, (r) => window.ncsightApp.scene.head.events.filter((e) => e.k === "stop" && e.reason === r).map((e) => e.t), reason);
 
-test("the operator's player (zh-CN): stops at M00, at a FEED HOLD pressed in a G92 thread and at single-block stops; CYCLE START goes on", async () => {
+// The panel's and the screen's words (docs/reference/interface.md, third round) in each language.
+const PLAYER_WORDS = {
+  "zh-CN": {
+    labels: ["循环启动", "进给保持", "复位", "单段", "❚❚ 暂停回放", "◀ 上一段", "下一段 ▶", "◀ 上一动作", "下一动作 ▶"],
+    run: "运行", hold: "暂停", stop: "停止",
+    m00: /第 15 行 M00 程序停止：按“循环启动”继续/,
+    held: /螺纹中进给保持.*立即退尾，快速返回起点，停止。按“循环启动”重新车这一刀/,
+    banner: /含 .*秒进给保持/,
+    end: /程序结束/,
+    single: /单段：第 \d+ 行程序段执行完毕/,
+  },
+  "en-GB": {
+    labels: ["CYCLE START", "FEED HOLD", "RESET", "SINGLE BLOCK", "❚❚ Pause", "◀ Block", "Block ▶", "◀ Motion", "Motion ▶"],
+    run: "RUN", hold: "HOLD", stop: "STOP",
+    m00: /M00 programme stop at line 15: CYCLE START goes on/,
+    held: /Thread hold .*pulled out at once, returned to the start point, stopped\. CYCLE START cuts the pass again/,
+    banner: /with FEED HOLD at .* s/,
+    end: /End of programme/,
+    single: /Single block: the block at line \d+ is done/,
+  },
+};
+for (const [locale, W] of Object.entries(PLAYER_WORDS))
+test(`the operator's player (${locale}): stops at M00, at a FEED HOLD pressed in a G92 thread and at single-block stops; CYCLE START goes on`, async () => {
   const prog = join(work, "shaft.nc");
   writeFileSync(prog, shaft);
-  const { page, context, errors } = await open(report(prog, "gsk980tdi"), { locale: "zh-CN" });
+  const { page, context, errors } = await open(report(prog, "gsk980tdi"), { locale });
   assert.deepEqual(errors, []);
   // The panel in the controller's words, each label distinct.
   assert.deepEqual(await page.$$eval("#play, #hold, #reset, #single + span, #pause, #prev, #next, #prev-motion, #next-motion", (e) => e.map((x) => x.textContent)),
-    ["循环启动", "进给保持", "复位", "单段", "❚❚ 暂停回放", "◀ 上一段", "下一段 ▶", "◀ 上一动作", "下一动作 ▶"]);
-  assert.equal((await stateOf(page))[0], "停止");
+    W.labels);
+  assert.equal((await stateOf(page))[0], W.stop);
   // CYCLE START from the start at 1000x: the player stops at the M00 (line 15), as the machine does.
   const [m00] = await stopsOf(page, "program_stop");
   await app(page, () => window.ncsightApp.setTime(0));
   await page.selectOption("#speed", "1000");
   await page.click("#play");
-  assert.equal((await stateOf(page))[0], "运行");
-  await until(page, () => document.getElementById("machine-state").textContent === "停止");
+  assert.equal((await stateOf(page))[0], W.run);
+  await until(page, (w) => document.getElementById("machine-state").textContent === w, W.stop);
   let [state, why, now] = await stateOf(page);
   assert.equal(now, m00);
-  assert.match(why, /第 15 行 M00 程序停止：按“循环启动”继续/);
+  assert.match(why, W.m00);
   assert.equal(await app(page, () => window.ncsightApp.runLine), 15);
   // FEED HOLD pressed during the first G92 pass: played at real time there (a press can be
   // aimed), the run is made again with the press, and the player stops where the machine does:
@@ -685,19 +707,22 @@ test("the operator's player (zh-CN): stops at M00, at a FEED HOLD pressed in a G
   const inThread = await app(page, () => window.ncsightApp.now);
   assert.ok(inThread > pass[0] && inThread < pass[1], `in the thread at 1x: ${inThread} s in ${pass}`);
   await page.click("#hold");
-  await until(page, () => document.getElementById("machine-state").textContent === "暂停");
+  await until(page, (w) => document.getElementById("machine-state").textContent === w, W.hold);
   [state, why, now] = await stateOf(page);
   const [held] = await stopsOf(page, "feed_hold");
   assert.equal(now, held);
-  assert.match(why, /螺纹中进给保持.*立即退尾，快速返回起点，停止。按“循环启动”重新车这一刀/);
-  assert.match(await page.textContent("#banner"), /含 .*秒进给保持/);
-  await shot(page, "player-hold-zh.png");
+  assert.match(why, W.held);
+  assert.match(await page.textContent("#banner"), W.banner);
+  await shot(page, `player-hold-${locale}.png`);
+  // What the hold did is drawn under an amber band, seen without zooming in.
+  const band = await shot(page, `player-hold-plot-${locale}.png`, "#plot");
+  assert.ok(count(band, [255, 199, 115], 40) > 150, "the hold band");
   // CYCLE START: on to the end of the programme.
   await page.click("#play");
-  await until(page, () => document.getElementById("machine-state").textContent === "停止", undefined, 30000);
+  await until(page, (w) => document.getElementById("machine-state").textContent === w, W.stop, 30000);
   [state, why, now] = await stateOf(page);
   assert.equal(now, await app(page, () => window.ncsightApp.scene.head.total_s));
-  assert.match(why, /程序结束/);
+  assert.match(why, W.end);
   // SINGLE BLOCK: each CYCLE START runs one block.
   await page.click("#clear-buttons");
   await page.check("#single");
@@ -705,12 +730,12 @@ test("the operator's player (zh-CN): stops at M00, at a FEED HOLD pressed in a G
   assert.ok(singles.length > 20, `${singles.length} single-block stops`);
   await app(page, () => window.ncsightApp.setTime(0));
   await page.click("#play");
-  await until(page, () => document.getElementById("machine-state").textContent === "停止");
+  await until(page, (w) => document.getElementById("machine-state").textContent === w, W.stop);
   [state, why, now] = await stateOf(page);
   assert.equal(now, singles[0]);
-  assert.match(why, /单段：第 \d+ 行程序段执行完毕/);
+  assert.match(why, W.single);
   await page.click("#play");
-  await until(page, () => document.getElementById("machine-state").textContent === "停止");
+  await until(page, (w) => document.getElementById("machine-state").textContent === w, W.stop);
   assert.equal((await stateOf(page))[2], singles[1]);
   // Motion by motion: each pass of the G71 on its own (more motion steps than block steps).
   await app(page, () => window.ncsightApp.setTime(0));
@@ -726,9 +751,9 @@ test("the operator's player (zh-CN): stops at M00, at a FEED HOLD pressed in a G
   await page.click("#next");
   const runs = await app(page, () => window.ncsightApp.runs);
   await page.keyboard.press(" ");
-  assert.equal((await stateOf(page))[0], "运行");
+  assert.equal((await stateOf(page))[0], W.run);
   await page.keyboard.press(" ");
-  assert.equal((await stateOf(page))[0], "停止");
+  assert.equal((await stateOf(page))[0], W.stop);
   assert.equal(await app(page, () => window.ncsightApp.runs), runs, "space ran nothing again");
   assert.deepEqual(errors, []);
   await context.close();

@@ -84,9 +84,10 @@
     alarm: ["alarm", "报警"],
     warningk: ["warning", "警告"],
     ex_causes: ["Usual causes", "常见原因"],
-    save: ["Download programme", "下载程序"],
-    png: ["Plot PNG", "导出 PNG"],
-    svg: ["Plot SVG", "导出 SVG"],
+    save: ["Download", "下载程序"],
+    png: ["PNG", "PNG"],
+    svg: ["SVG", "SVG"],
+    export_title: ["the plot as an image", "导出图形"],
     sheet: ["Setup sheet", "调整单"],
     restore_yes: ["Restore", "恢复"],
     restore_no: ["Discard", "丢弃"],
@@ -910,7 +911,8 @@
       for (let a = 0; a < 3; a++) { const v = S.p[6 * i + 3 + a]; if (v < min[a]) min[a] = v; if (v > max[a]) max[a] = v; }
     }
     if (!(min[0] < Infinity)) return null;
-    return { min: [min[0], min[1], Math.min(min[2], -1)], max: [max[0], max[1], Math.max(0, Math.min(max[2], 0))], guessed: true };
+    // A margin of 5 mm around the cuts in X and Y (a row of holes is not a block of no width).
+    return { min: [min[0] - 5, min[1] - 5, Math.min(min[2], -1)], max: [max[0] + 5, max[1] + 5, 0], guessed: true };
   }
   function drawBlock(A, B) {
     const b = millBlock();
@@ -925,8 +927,9 @@
     }
     ctx.stroke(); ctx.setLineDash([]);
     ctx.fillStyle = "#6d4c41"; ctx.font = "12px system-ui,sans-serif";
-    const p = c(3);
-    ctx.fillText(t(b.guessed ? "blockguess" : "block", { x: numLabel(b.max[0] - b.min[0]), y: numLabel(b.max[1] - b.min[1]), z: numLabel(b.max[2] - b.min[2]) }), screenX(A, p) + 4, screenY(B, p) - 4);
+    const label = t(b.guessed ? "blockguess" : "block", { x: numLabel(b.max[0] - b.min[0]), y: numLabel(b.max[1] - b.min[1]), z: numLabel(b.max[2] - b.min[2]) });
+    ctx.fillStyle = "rgba(255,255,255,0.85)"; ctx.fillRect(92, ch - 26, ctx.measureText(label).width + 8, 18);
+    ctx.fillStyle = "#6d4c41"; ctx.fillText(label, 96, ch - 12);
   }
   /** The axes' directions in the view, at the bottom left: X red, Y green, Z blue. */
   function drawTriad(A, B) {
@@ -1313,6 +1316,7 @@
     $("stop-why").textContent = stopWhy ? stopWhy() : "";
     $("play").classList.toggle("lit", state === "run");
     $("hold").classList.toggle("lit", state === "hold");
+    if (S) draw(); // the hold's band comes and goes with the state
   }
   /** CYCLE START: run from where the player is (from the start once at the end). */
   function cycleStart() {
