@@ -356,6 +356,15 @@ enum Command {
         #[arg(long)]
         list: bool,
     },
+    /// A Language Server Protocol server on standard input and output, for editors: the
+    /// diagnostics of check as you type, hover, definitions, the outline (docs/editors.md).
+    /// The controller: the first line's (ncsight: MACHINE), else ncsight.toml beside the
+    /// programmes, else the editor's setting ncsight.machine, else gsk980tdi.
+    Lsp {
+        /// Accepted for editors that pass it (the server always speaks on standard input and output).
+        #[arg(long)]
+        stdio: bool,
+    },
 }
 
 /// Run the command line. Returns the exit status.
@@ -379,6 +388,7 @@ pub fn main_with(args: impl IntoIterator<Item = std::ffi::OsString>, out: &mut d
         Command::Expand { file, machine, to, output } => expand(&file, &machine, &to, output.as_deref(), out, err),
         Command::Machines { machine } => machines(machine.as_deref(), out),
         Command::Explain { code, lang, list } => explain(code.as_deref(), lang.as_deref(), list, out),
+        Command::Lsp { stdio: _ } => ncsight_lsp::run_stdio().map(|()| EXIT_OK).map_err(|e| usage(format!("lsp: {e}"))),
         Command::Simulate { file, machine, stock, expect, format, image, stl, section, resolution } => {
             let outputs = SimOutputs { image: image.as_deref(), stl: stl.as_deref(), section: section.as_deref() };
             simulate(&file, &machine, stock.as_deref(), expect.as_deref(), &format, outputs, resolution.as_deref(), out, err)
