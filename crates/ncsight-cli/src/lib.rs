@@ -245,6 +245,26 @@ enum Command {
         #[arg(short = 'o', long = "output")]
         output: Option<String>,
     },
+    /// Rewrite the programme for another controller, keeping its structure, and verify it by
+    /// running both: exit 0 the motion is the same, 4 it differs (each difference listed), 1 the
+    /// programme alarms on its own controller, 2 usage.
+    Port {
+        /// Programme file, or - for standard input.
+        file: String,
+        #[command(flatten)]
+        machine: MachineArgs,
+        /// The controller the programme is written for: gsk980tdi, gsk988t, fanuc0t,
+        /// yasnac-lx3, fanuc0i-tf (lathes).
+        #[arg(long = "to", value_name = "MACHINE")]
+        to: String,
+        /// Write the programme to this file instead of standard output.
+        #[arg(short = 'o', long = "output")]
+        output: Option<String>,
+        /// text (the report on standard error) or json (the report on standard output, the
+        /// programme in it as "text" unless -o is given).
+        #[arg(long, default_value = "text")]
+        format: String,
+    },
     /// Report every alarm and warning with file:line:column; run nothing.
     Check {
         /// Programme files, or - for standard input.
@@ -386,6 +406,7 @@ pub fn main_with(args: impl IntoIterator<Item = std::ffi::OsString>, out: &mut d
         Command::Run { file, machine, format, output, operator } => run(&file, &machine, &operator, &format, output.as_deref(), out, err),
         Command::Check { files, machine, format } => check(&files, &machine, &format, out, err),
         Command::Expand { file, machine, to, output } => expand(&file, &machine, &to, output.as_deref(), out, err),
+        Command::Port { file, machine, to, output, format } => port(&file, &machine, &to, output.as_deref(), &format, out, err),
         Command::Machines { machine } => machines(machine.as_deref(), out),
         Command::Explain { code, lang, list } => explain(code.as_deref(), lang.as_deref(), list, out),
         Command::Lsp { stdio: _ } => ncsight_lsp::run_stdio().map(|()| EXIT_OK).map_err(|e| usage(format!("lsp: {e}"))),
@@ -630,6 +651,70 @@ fn expand(file: &str, m: &MachineArgs, to: &str, output: Option<&str>, out: &mut
     let mut fmt = format::expand::Expand::new(params.profile(), target, shown(file));
     let program = Program::new(params, switches, Mode::Run);
     run_into(file, head, m, program, &mut fmt, output, out, err)
+}
+
+/// Exit status of a port whose motion differs on the target (docs/reference/interface.md).
+const EXIT_PORT_DIFFERS: i32 = 4;
+
+/// `ncsight port`: the programme in the target's words, verified by running both.
+fn port(file: &str, m: &MachineArgs, to: &str, output: Option<&str>, format: &str, out: &mut dyn Write, err: &mut dyn Write) -> Result<i32, Failure> {
+    if format != "text" && format != "json" {
+        return Err(usage(format!("--format {format}: choose text or json")));
+    }
+    let head = Head::of(file)?;
+    let from_name = machine_for(m, head.named(shown(file)), true, err)?;
+    let from = m.job(&from_name)?;
+    let target = ncsight_io::Job::on(to);
+    let to_profile = target.profile()?;
+    let source = read_whole(file)?;
+    let decoding = m.decoding()?;
+    let text = editor_text(&source, &decoding);
+    let result = match ncsight_io::port::port(&from, &target, text.as_bytes()) {
+        Ok(p) => p,
+        Err(ncsight_io::port::PortError::Usage(e)) => return Err(usage(e)),
+        Err(ncsight_io::port::PortError::SourceAlarm(line, msg)) => {
+            let _ = writeln!(err, "ncsight: {}:{line}: the programme alarms on {from_name}: {msg}; nothing is written", shown(file));
+            return Ok(EXIT_ALARM);
+        }
+    };
+    // The programme names its controller on its first line (`(ncsight: TO)`, port.rs).
+    let programme = result.text.clone();
+    let status = if result.exact() { EXIT_OK } else { EXIT_PORT_DIFFERS };
+    match output {
+        Some(path) => {
+            if m.read_files(file).iter().any(|f| same_file::is_same_file(f, path).unwrap_or(false)) {
+                return Err(usage(format!("-o {path}: that is the programme being read; choose another file")));
+            }
+            std::fs::write(path, programme.as_bytes()).map_err(|e| usage(format!("cannot write {path}: {e}")))?;
+        }
+        None if format == "text" => out.write_all(programme.as_bytes())?,
+        None => {}
+    }
+    if format == "json" {
+        let diffs: Vec<String> = result.differences.iter().map(|d| format!("{{\"line\":{},\"what\":{},\"size\":{}}}", d.line, ncsight_io::format::jsonl::json_str(&d.what), d.size)).collect();
+        let rewrites: Vec<String> = result.rewritten.iter().map(|(l, why)| format!("{{\"line\":{l},\"why\":{}}}", ncsight_io::format::jsonl::json_str(why))).collect();
+        let text_field = if output.is_none() { format!(",\"text\":{}", ncsight_io::format::jsonl::json_str(&programme)) } else { String::new() };
+        writeln!(out, "{{\"from\":{},\"to\":{},\"exact\":{},\"rewritten\":[{}],\"differences\":[{}]{text_field}}}", ncsight_io::format::jsonl::json_str(&from_name), ncsight_io::format::jsonl::json_str(to_profile.name), result.exact(), rewrites.join(","), diffs.join(","))?;
+    } else {
+        for (l, why) in &result.rewritten {
+            let _ = writeln!(err, "ncsight: line {l} written as its moves: {why}");
+        }
+        for d in &result.differences {
+            let _ = writeln!(err, "ncsight: difference at line {}: {} ({})", d.line, d.what, d.size);
+        }
+        let _ = writeln!(err, "ncsight: {} -> {}: {}", from_name, to_profile.name, if result.exact() { "the same motion" } else { "approximate" });
+    }
+    Ok(status)
+}
+
+/// A programme file (or standard input) read whole.
+fn read_whole(file: &str) -> Result<Vec<u8>, Failure> {
+    if file == "-" {
+        let mut v = Vec::new();
+        io::stdin().read_to_end(&mut v)?;
+        return Ok(v);
+    }
+    std::fs::read(file).map_err(|e| usage(format!("cannot read {file}: {e}")))
 }
 
 /// Run `program` on `file` (its `head` read) and write its events through `fmt` to `output` (or

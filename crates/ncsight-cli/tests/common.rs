@@ -118,3 +118,34 @@ pub fn same_calls(what: &str, ours: &[(String, Vec<f64>)], theirs: &[(String, Ve
     }
     ours.len()
 }
+
+/// A folder of its own under the system's temporary folder, removed when dropped.
+pub struct Scratch(pub PathBuf);
+
+impl Scratch {
+    /// `ncsight-NAME-PID` under the temporary folder, empty.
+    pub fn new(name: &str) -> Scratch {
+        let p = std::env::temp_dir().join(format!("ncsight-{name}-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&p);
+        std::fs::create_dir_all(&p).unwrap();
+        Scratch(p)
+    }
+
+    /// Write `text` to the file `name` in it; its path.
+    pub fn file(&self, name: &str, text: &str) -> String {
+        let p = self.0.join(name);
+        std::fs::write(&p, text).unwrap();
+        p.to_str().unwrap().to_string()
+    }
+
+    /// The path of `name` in it.
+    pub fn path(&self, name: &str) -> String {
+        self.0.join(name).to_str().unwrap().to_string()
+    }
+}
+
+impl Drop for Scratch {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_dir_all(&self.0);
+    }
+}

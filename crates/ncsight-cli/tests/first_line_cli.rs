@@ -4,39 +4,17 @@
 
 mod common;
 
+use common::Scratch;
+
 use std::io::Write;
 use std::path::PathBuf;
-
-/// A folder of its own under the system's temporary folder, removed when dropped.
-struct Scratch(PathBuf);
-
-impl Scratch {
-    fn new(name: &str) -> Scratch {
-        let p = std::env::temp_dir().join(format!("ncsight-firstline-{name}-{}", std::process::id()));
-        let _ = std::fs::remove_dir_all(&p);
-        std::fs::create_dir_all(&p).unwrap();
-        Scratch(p)
-    }
-
-    fn file(&self, name: &str, text: &str) -> String {
-        let p = self.0.join(name);
-        std::fs::write(&p, text).unwrap();
-        p.to_str().unwrap().to_string()
-    }
-}
-
-impl Drop for Scratch {
-    fn drop(&mut self) {
-        let _ = std::fs::remove_dir_all(&self.0);
-    }
-}
 
 /// A drilling programme of a machining centre: G81 is NCS-E10 on the default gsk980tdi.
 const DRILL: &str = "G90 G0 X0 Y0 Z10. S1000 M03\nG81 X10. Y5. Z-5. R2. F100\nG80\nM30\n";
 
 #[test]
 fn the_first_line_selects_the_machine() {
-    let dir = Scratch::new("selects");
+    let dir = Scratch::new("firstline-selects");
     let bare = dir.file("bare.nc", DRILL);
     let (code, out, err) = common::ncsight(&["check", &bare]);
     assert_eq!(code, 1, "{out}{err}");
@@ -83,7 +61,7 @@ fn the_first_line_selects_the_machine() {
 
 #[test]
 fn machine_given_wins_with_a_note() {
-    let dir = Scratch::new("wins");
+    let dir = Scratch::new("firstline-wins");
     let named = dir.file("named.nc", &format!("(ncsight: fanuc0m)\n{DRILL}"));
     let (code, out, err) = common::ncsight(&["check", &named, "--machine", "gsk980tdi"]);
     assert_eq!(code, 1, "{out}{err}");
@@ -103,7 +81,7 @@ fn machine_given_wins_with_a_note() {
 
 #[test]
 fn an_unknown_name_is_a_usage_error_with_a_suggestion() {
-    let dir = Scratch::new("unknown");
+    let dir = Scratch::new("firstline-unknown");
     let odd = dir.file("odd.nc", &format!("(ncsight: fanucom)\n{DRILL}"));
     for cmd in [&["run"][..], &["check"], &["expand", "--to", "grbl"], &["simulate", "--stock", "40x20x10"]] {
         let mut args = vec![cmd[0], odd.as_str()];
@@ -123,7 +101,7 @@ fn an_unknown_name_is_a_usage_error_with_a_suggestion() {
 
 #[test]
 fn a_percent_line_and_a_byte_order_mark_come_before_the_first_line() {
-    let dir = Scratch::new("percent");
+    let dir = Scratch::new("firstline-percent");
     let tape = dir.file("tape.nc", &format!("\u{feff}%\r\n\r\n(ncsight: fanuc0m)\r\n{}%\r\n", DRILL.replace('\n', "\r\n")));
     let (code, out, err) = common::ncsight(&["check", &tape]);
     assert_eq!(code, 0, "{out}{err}");
@@ -134,7 +112,7 @@ fn a_percent_line_and_a_byte_order_mark_come_before_the_first_line() {
 
 #[test]
 fn check_takes_each_files_machine() {
-    let dir = Scratch::new("each");
+    let dir = Scratch::new("firstline-each");
     let mill = dir.file("mill.nc", &format!("(ncsight: fanuc0m)\n{DRILL}"));
     let lathe = dir.file("lathe.nc", "G99 S500 M03\nG0 X40. Z2.\nG1 X38. F0.2\nM30\n");
     let lathe_t = dir.file("lathe_t.nc", "(ncsight: fanuc0t)\nG99 S500 M03\nG0 X40. Z2.\nG1 X38. F0.2\nM30\n");

@@ -665,6 +665,13 @@ impl Program {
         self.core.status
     }
 
+    /// The calls (M98, G65, ...) that led to the block running now, outermost first: what a
+    /// consumer that groups records by the main programme's lines attributes a subprogramme's
+    /// records to.
+    pub fn call_chain(&self) -> Vec<Span> {
+        self.core.calls.chain()
+    }
+
     /// Alarms reported so far.
     pub fn alarm_count(&self) -> usize {
         self.core.alarms
