@@ -37,7 +37,8 @@ fn o0012_ports_to_every_lathe_with_the_same_motion() {
         // Checked again: the written programme run on the target moves as the original.
         assert_eq!(motion(&out, to), original, "{to}");
         let text = std::fs::read_to_string(&out).unwrap();
-        assert!(text.starts_with(&format!("O0012; (ncsight: {to})\n(PORTED FROM GSK980TDI BY NCSIGHT PORT)\n")), "{text}");
+        // The target named on the first line (the O line's), where it came from below it.
+        assert!(text.starts_with(&format!("O0012; (ncsight: {to})\n")) && text.contains("\n(PORTED FROM GSK980TDI BY NCSIGHT PORT)\n"), "{text}");
     }
 }
 
@@ -137,4 +138,74 @@ fn every_golden_lathe_programme_to_every_other_lathe() {
     }
     eprintln!("port of the golden lathe programmes: {exact} exact, {approximate} approximate (differences listed), {refused} refused (they alarm on their own controller)");
     assert!(exact > 150, "{exact} exact");
+}
+
+mod generated {
+    use super::*;
+    use proptest::prelude::*;
+
+    /// A GSK980TDi programme of the kinds a port must carry: a G71/G70 roughing and finishing
+    /// of a stepped shaft, G92 passes, a G32 thread with its pull-out, a subprogramme called
+    /// with M98.
+    fn programme(steps: &[(u32, u32)], passes: &[u32], lead_tenths: u32, pull_out: bool, calls: u32) -> String {
+        let mut p = String::from("O0100 (GENERATED)\nG99 M03 S600 T0101\nG00 X62. Z2.\nG71 U1. R0.5\nG71 P10 Q20 U0.4 W0.1 F0.2\n");
+        // Type I roughing: the diameters grow from step to step (GSK980TDi help text, G71 note 3).
+        let (mut z, mut d) = (0u32, 18u32);
+        for (k, (grow, len)) in steps.iter().enumerate() {
+            let n = if k == 0 { "N10 " } else { "" };
+            d += grow;
+            p.push_str(&format!("{n}G01 X{d}. F0.15\nZ-{}.\n", z + len));
+            z += len;
+        }
+        p.push_str("N20 X62.\nG70 P10 Q20\nG00 X100. Z100.\nT0303\nG97 S400 M03\nG00 X40. Z5.\n");
+        let lead = f64::from(lead_tenths) / 10.0;
+        for (k, depth) in passes.iter().enumerate() {
+            let x = 38.0 - f64::from(*depth) / 10.0;
+            if k == 0 {
+                p.push_str(&format!("G92 X{x:.1} Z-20. F{lead:.1}\n"));
+            } else {
+                p.push_str(&format!("X{x:.1}\n"));
+            }
+        }
+        p.push_str("G00 X36. Z5.\n");
+        p.push_str(&format!("G32 Z-18. F{lead:.1}\n"));
+        if pull_out {
+            p.push_str(&format!("G32 X40. Z-20. F{lead:.1}\n"));
+        }
+        p.push_str("G00 X45.\nZ5.\n");
+        if calls > 0 {
+            p.push_str(&format!("M98 P{calls}0200\n"));
+        }
+        p.push_str("G00 X100. Z100.\nM30\nO0200\nG00 U-2.\nG00 U2.\nM99\n");
+        p
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig { cases: 16, failure_persistence: None, ..ProptestConfig::default() })]
+
+        /// Whatever the port says holds when the written programme is run on its own.
+        #[test]
+        fn a_generated_programme_ports_as_the_port_says(
+            steps in prop::collection::vec((2u32..13, 3u32..15), 1..4),
+            passes in prop::collection::vec(5u32..20, 1..4),
+            lead_tenths in 10u32..30,
+            pull_out in any::<bool>(),
+            calls in 0u32..3,
+            to in prop::sample::select(&LATHES[1..]),
+        ) {
+            let dir = Scratch::new("port-generated");
+            let src = dir.file("gen.nc", &programme(&steps, &passes, lead_tenths, pull_out, calls));
+            let out = dir.path("out.nc");
+            let (code, json, err) = ncsight(&["port", &src, "--machine", "gsk980tdi", "--to", to, "-o", &out, "--format", "json"]);
+            // The generated programmes run on the GSK980TDi: never refused.
+            prop_assert!(code == 0 || code == 4, "exit {code}: {err}");
+            if code == 0 {
+                prop_assert_eq!(motion(&out, to), motion(&src, "gsk980tdi"));
+            }
+            if code == 4 {
+                let v: serde_json::Value = serde_json::from_str(json.trim()).unwrap();
+                prop_assert!(!v["differences"].as_array().unwrap().is_empty());
+            }
+        }
+    }
 }

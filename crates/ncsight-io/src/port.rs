@@ -114,8 +114,11 @@ pub fn port(from: &Job, to: &Job, text: &[u8]) -> Result<Port, PortError> {
     // source's is set first, so that an F before any G98/G99 means what it meant.
     let from_profile = from.profile()?;
     if from_profile.power_on_per_rev != to_profile.power_on_per_rev && from_profile.is_lathe() && to_profile.is_lathe() {
-        // Right after the note that says where the programme came from.
-        let at = kept.iter().position(|(n, l)| *n == 0 && l.starts_with("(PORTED FROM")).map_or(0, |i| i + 1);
+        // After the programme's O line where it has one (a block before it would be a
+        // programme of its own), else after the note that says where the programme came from.
+        let o_line = kept.iter().position(|(_, l)| l.trim_start().starts_with(['O', 'o']) && l.trim_start()[1..].starts_with(|c: char| c.is_ascii_digit()));
+        let note = kept.iter().position(|(n, l)| *n == 0 && l.starts_with("(PORTED FROM"));
+        let at = o_line.or(note).map_or(0, |i| i + 1);
         kept.insert(at, (0, format!("{} (FEED MODE AT POWER ON ON {})", if from_profile.power_on_per_rev { "G99" } else { "G98" }, from_profile.name.to_ascii_uppercase())));
     }
     let mut rewritten: Vec<(u32, String)> = Vec::new();
