@@ -255,6 +255,7 @@ fn assemble(kept: &[(u32, String)], rewritten: &[(u32, String)], source: &Run, m
 /// A source line written as the moves it makes on the source controller, in the target's words;
 /// then the feed mode, F and motion mode the source has after it, for the lines that follow.
 fn plain_moves(n: u32, line: &str, why: &str, source: &Run, machine: &str) -> Vec<String> {
+    let dialect = Dialect { lathe: ncsight::profile::by_name(machine).map_or(true, |p| p.is_lathe()) };
     let comment = line.find('(').map(|a| line[a..].to_string()).unwrap_or_default();
     // Why is in the port's report; the comment stays short (a controller reads a long comment's
     // tail as words).
@@ -268,7 +269,7 @@ fn plain_moves(n: u32, line: &str, why: &str, source: &Run, machine: &str) -> Ve
     let mut last_motion = None;
     let mut in_thread = false;
     for (_, r) in source.records.iter().filter(|(l, _)| *l == n) {
-        if let Some(mut w) = words_of(&r.op) {
+        if let Some(mut w) = dialect.words_of(&r.op) {
             // A thread run that starts away from the one-revolution signal (a second start, a
             // shifted pass): the GSK controllers' G32 takes the start angle as Q in 0.001 degree
             // (GSK980TDi help text, G32); the others have no such word, and the difference stays.
@@ -290,7 +291,7 @@ fn plain_moves(n: u32, line: &str, why: &str, source: &Run, machine: &str) -> Ve
     }
     // What the lines after it take from the modal state: the feed mode and F, the motion mode.
     if let Some(&(_, per_rev, feed, inch_after)) = source.per_rev_after.iter().rev().find(|(l, ..)| *l == n) {
-        let mode = if per_rev { "G99" } else { "G98" };
+        let mode = if per_rev { dialect.per_rev() } else { dialect.per_minute() };
         // F in force is in mm (per minute or revolution); under G20 it is given back in inch.
         let f = feed.map(|f| format!(" F{}", with_point(if inch_after { f / 25.4 } else { f }))).unwrap_or_default();
         let units = if inch_after { "G20 " } else { "" };
@@ -302,31 +303,66 @@ fn plain_moves(n: u32, line: &str, why: &str, source: &Run, machine: &str) -> Ve
     out
 }
 
-fn xz(p: &Vec3) -> String {
-    format!("X{} Z{}", with_point(2.0 * p.x), with_point(p.z))
+/// How the target writes what a record is: a lathe (X a diameter, G98/G99, T with its offset) or
+/// a machining centre (X Y Z, G94/G95, T and M06).
+#[derive(Clone, Copy)]
+struct Dialect {
+    lathe: bool,
 }
 
-/// A record in a lathe's words (X a diameter; feeds per minute under G98).
-fn words_of(op: &Op) -> Option<String> {
-    Some(match *op {
-        Op::Rapid { to, .. } => format!("G00 {}", xz(&to)),
-        Op::Feed { to, feed_mm_min, .. } => format!("G98 G01 {} F{}", xz(&to), with_point(feed_mm_min)),
-        Op::Arc { from, to, center, plane: Plane::ZX, dir, feed_mm_min } => {
-            let g = if dir == ArcDir::Cw { "G02" } else { "G03" };
-            format!("G98 {g} {} I{} K{} F{}", xz(&to), with_point(center.x - from.x), with_point(center.z - from.z), with_point(feed_mm_min))
+impl Dialect {
+    fn per_minute(self) -> &'static str {
+        if self.lathe { "G98" } else { "G94" }
+    }
+
+    fn per_rev(self) -> &'static str {
+        if self.lathe { "G99" } else { "G95" }
+    }
+
+    fn point(self, p: &Vec3) -> String {
+        if self.lathe {
+            format!("X{} Z{}", with_point(2.0 * p.x), with_point(p.z))
+        } else {
+            format!("X{} Y{} Z{}", with_point(p.x), with_point(p.y), with_point(p.z))
         }
-        Op::Thread { to, lead_mm, .. } => format!("G32 {} F{}", xz(&to), with_point(lead_mm)),
-        Op::Dwell { seconds } => format!("G04 X{}", with_point(seconds)),
-        Op::Spindle { rpm, .. } if rpm == 0.0 => "M05".into(),
-        Op::Spindle { rpm, .. } => format!("G97 S{} {}", with_point(rpm.abs()).trim_end_matches('.'), if rpm > 0.0 { "M03" } else { "M04" }),
-        Op::Tool { number, offset } => format!("T{number:02}{:02}", offset.unwrap_or(0)),
-        Op::Rotary { axis, to_deg, rapid: true, .. } => format!("G00 {}{}", axis as char, with_point(to_deg)),
-        Op::Rotary { axis, to_deg, rate_deg_min, .. } => format!("G98 G01 {}{} F{}", axis as char, with_point(to_deg), with_point(rate_deg_min)),
-        Op::Stop { reason: ncsight::motion::StopReason::ProgramStop } => "M00".into(),
-        Op::Stop { reason: ncsight::motion::StopReason::OptionalStop } => "M01".into(),
-        Op::End { code } => format!("M{code:02}"),
-        _ => return None,
-    })
+    }
+
+    /// An arc's plane code and its centre words (from the start point).
+    fn arc_centre(self, plane: Plane, from: &Vec3, centre: &Vec3) -> String {
+        let d = |a: f64, b: f64| with_point(b - a);
+        match plane {
+            Plane::XY => format!("G17 I{} J{}", d(from.x, centre.x), d(from.y, centre.y)),
+            Plane::ZX if self.lathe => format!("I{} K{}", d(from.x, centre.x), d(from.z, centre.z)),
+            Plane::ZX => format!("G18 I{} K{}", d(from.x, centre.x), d(from.z, centre.z)),
+            Plane::YZ => format!("G19 J{} K{}", d(from.y, centre.y), d(from.z, centre.z)),
+        }
+    }
+
+    /// A record in the target's words; None where it has none (a thread on a machining centre,
+    /// an arc thread): the difference is then listed.
+    fn words_of(self, op: &Op) -> Option<String> {
+        let minute = self.per_minute();
+        Some(match *op {
+            Op::Rapid { to, .. } => format!("G00 {}", self.point(&to)),
+            Op::Feed { to, feed_mm_min, .. } => format!("{minute} G01 {} F{}", self.point(&to), with_point(feed_mm_min)),
+            Op::Arc { from, to, center, plane, dir, feed_mm_min } => {
+                let g = if dir == ArcDir::Cw { "G02" } else { "G03" };
+                format!("{minute} {g} {} {} F{}", self.point(&to), self.arc_centre(plane, &from, &center), with_point(feed_mm_min))
+            }
+            Op::Thread { to, lead_mm, .. } if self.lathe => format!("G32 {} F{}", self.point(&to), with_point(lead_mm)),
+            Op::Dwell { seconds } => format!("G04 X{}", with_point(seconds)),
+            Op::Spindle { rpm, .. } if rpm == 0.0 => "M05".into(),
+            Op::Spindle { rpm, .. } => format!("{}S{} {}", if self.lathe { "G97 " } else { "" }, with_point(rpm.abs()).trim_end_matches('.'), if rpm > 0.0 { "M03" } else { "M04" }),
+            Op::Tool { number, offset } if self.lathe => format!("T{number:02}{:02}", offset.unwrap_or(0)),
+            Op::Tool { number, .. } => format!("T{number} M06"),
+            Op::Rotary { axis, to_deg, rapid: true, .. } => format!("G00 {}{}", axis as char, with_point(to_deg)),
+            Op::Rotary { axis, to_deg, rate_deg_min, .. } => format!("{minute} G01 {}{} F{}", axis as char, with_point(to_deg), with_point(rate_deg_min)),
+            Op::Stop { reason: ncsight::motion::StopReason::ProgramStop } => "M00".into(),
+            Op::Stop { reason: ncsight::motion::StopReason::OptionalStop } => "M01".into(),
+            Op::End { code } => format!("M{code:02}"),
+            _ => return None,
+        })
+    }
 }
 
 /// The records both runs should agree on: motions, dwells, spindle, tools, stops, the end.
