@@ -912,3 +912,33 @@ test("a first line (ncsight: fanuc0m) chooses the controller in the page, as on 
   assert.deepEqual(errors, []);
   await context.close();
 });
+
+test("port to another controller in the page: the two programmes side by side, the ported path overlaid, the differences listed", async () => {
+  const { page, context, errors } = await open(report(join(root, "examples/gsk980tdi_o0012.nc"), "gsk980tdi"), { locale: "zh-CN" });
+  assert.deepEqual(errors, []);
+  await page.click("#port-box summary");
+  await page.selectOption("#port-to", "fanuc0t");
+  await page.click("#port-run");
+  await until(page, () => document.getElementById("port-text").textContent.length > 0);
+  assert.match(await page.textContent("#port-status"), /在 fanuc0t 上运动相同，已运行两者验证/);
+  assert.match(await page.textContent("#port-text"), /^O0012; \(ncsight: fanuc0t\)/);
+  assert.equal(await page.textContent("#port-from"), await page.inputValue("#text"));
+  // The ported path under the original's: an orange band on the plot.
+  const img = await shot(page, "port-overlay.png", "#plot");
+  assert.ok(count(img, [255, 190, 128], 40) > 200, "the ported path's band");
+  await shot(page, "port-side-by-side.png");
+  // The download is the ported programme.
+  const [dl] = await Promise.all([page.waitForEvent("download"), page.click("#port-save")]);
+  assert.equal(dl.suggestedFilename(), "gsk980tdi_o0012-fanuc0t.nc");
+  assert.match(readFileSync(await dl.path(), "utf8"), /^O0012; \(ncsight: fanuc0t\)/);
+  // What cannot be the same is listed: the GSK988T's arc thread on the FANUC 0-T.
+  await page.selectOption("#machine", "gsk988t");
+  await page.fill("#text", readFileSync(join(root, "tests/golden/seed002_arc_thread/input.nc"), "utf8"));
+  await until(page, () => window.ncsightApp.scene && window.ncsightApp.scene.head.machine === "gsk988t");
+  await page.selectOption("#port-to", "fanuc0t");
+  await page.click("#port-run");
+  await until(page, () => /近似/.test(document.getElementById("port-status").textContent));
+  assert.ok((await page.$$("#port-list .p.alarm")).length > 0, "differences listed");
+  assert.deepEqual(errors, []);
+  await context.close();
+});

@@ -100,6 +100,29 @@ pub fn stock(text: &[u8], machine: &str, params: &str, setup: &str, options: &st
     page_job(machine, params, setup, &rest, library).and_then(|(job, files)| format::stock::stock_view(&job, text, files, &stock_text, until_s, resolution)).unwrap_or_else(usage_answer)
 }
 
+/// The programme ported to another controller (`ncsight port`, ncsight_io::port): `options` holds
+/// `to=MACHINE`. JSON: `{"to","exact","text","rewritten":[{"line","why"}],"differences":[{"line",
+/// "what","size"}]}`, or `{"alarm":{"line","message"}}` when the programme alarms on its own
+/// controller. A usage mistake is `NCSE` and its message.
+pub fn port(text: &[u8], machine: &str, params: &str, setup: &str, options: &str, library: &[u8]) -> Vec<u8> {
+    use ncsight_io::format::jsonl::json_str;
+    let to = options.lines().find_map(|l| l.trim().strip_prefix("to=")).unwrap_or("").trim().to_string();
+    let answer = page_job(machine, params, setup, "", library).and_then(|(job, _)| {
+        let target = Job::on(&to);
+        target.profile()?;
+        Ok(match ncsight_io::port::port(&job, &target, text) {
+            Ok(p) => {
+                let rewritten: Vec<String> = p.rewritten.iter().map(|(l, why)| format!("{{\"line\":{l},\"why\":{}}}", json_str(why))).collect();
+                let diffs: Vec<String> = p.differences.iter().map(|d| format!("{{\"line\":{},\"what\":{},\"size\":{}}}", d.line, json_str(&d.what), d.size)).collect();
+                format!("{{\"to\":{},\"exact\":{},\"text\":{},\"rewritten\":[{}],\"differences\":[{}]}}", json_str(&to), p.exact(), json_str(&p.text), rewritten.join(","), diffs.join(","))
+            }
+            Err(ncsight_io::port::PortError::SourceAlarm(line, message)) => format!("{{\"alarm\":{{\"line\":{line},\"message\":{}}}}}", json_str(&message)),
+            Err(ncsight_io::port::PortError::Usage(m)) => return Err(ncsight_io::JobError::Usage(m)),
+        })
+    });
+    answer.map(String::into_bytes).unwrap_or_else(usage_answer)
+}
+
 /// The files of a library buffer (see [`scene`]); None when it is cut short.
 fn files(mut b: &[u8]) -> Option<Vec<(String, &[u8])>> {
     fn take<'a>(b: &mut &'a [u8]) -> Option<&'a [u8]> {
@@ -306,6 +329,17 @@ mod tests {
         let check = run_jsonl(b"G00 X0 Q1\nM30\n", "gsk980tdi", "", "", Mode::Check);
         assert!(check.lines().all(|l| l.contains("\"severity\"")), "{check}");
     }
+}
+
+/// A programme ported to another controller (see [`port`]), behind its 4-byte little-endian length.
+///
+/// # Safety
+/// As [`ncsight_scene`].
+#[no_mangle]
+#[allow(clippy::too_many_arguments)]
+pub unsafe extern "C" fn ncsight_port(text: *const u8, text_len: usize, machine: *const u8, machine_len: usize, params: *const u8, params_len: usize, setup: *const u8, setup_len: usize, options: *const u8, options_len: usize, library: *const u8, library_len: usize) -> *mut u8 {
+    // SAFETY: the caller guarantees the six buffers (see above).
+    unsafe { page_call([(text, text_len), (machine, machine_len), (params, params_len), (setup, setup_len), (options, options_len), (library, library_len)], port) }
 }
 
 /// The cut stock of a programme for the page's 3D view (see [`stock`]), behind its 4-byte

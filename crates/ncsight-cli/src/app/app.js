@@ -84,6 +84,18 @@
     alarm: ["alarm", "报警"],
     warningk: ["warning", "警告"],
     ex_causes: ["Usual causes", "常见原因"],
+    port_title: ["Port to another controller", "移植到其他系统"],
+    port_to: ["To", "目标"],
+    port_run: ["Port", "移植"],
+    port_overlay: ["overlay the ported path", "叠加移植后的路径"],
+    port_download: ["Download ported", "下载移植程序"],
+    port_from: ["as written", "原程序"],
+    port_result: ["ported", "移植后"],
+    port_exact: ["The same motion on {to}, verified by running both ({n} line(s) written as their moves)", "在 {to} 上运动相同，已运行两者验证（{n} 行改写为直接运动）"],
+    port_approx: ["Approximate on {to}: {d} difference(s) ({n} line(s) written as their moves)", "在 {to} 上近似：{d} 处不同（{n} 行改写为直接运动）"],
+    port_alarm: ["The programme alarms on {from} (line {line}): nothing to port", "程序在 {from} 上报警（第 {line} 行）：无法移植"],
+    port_rewritten: ["line {line} written as its moves: {why}", "第 {line} 行改写为直接运动：{why}"],
+    port_diff: ["difference at line {line}: {what} ({size})", "第 {line} 行不同：{what}（{size}）"],
     save: ["Download", "下载程序"],
     png: ["PNG", "PNG"],
     svg: ["SVG", "SVG"],
@@ -528,6 +540,9 @@
     S = next;
     lathe = S.head.lathe;
     if (wasLathe !== lathe || !$("view").options.length) { fillViews(); fitted = true; }
+    fillPortTargets();
+    // A new text or controller: an earlier port is of another programme.
+    if (ported && fresh) { ported = null; portScene = null; $("port-save").disabled = true; $("port-status").textContent = ""; $("port-list").textContent = ""; }
     markDiagnostics();
     // A new programme opens at its end (the whole path, the finished part); an edit keeps the moment.
     if (fresh) { pause(); setMachineState("stop", null); }
@@ -881,7 +896,7 @@
       ctx.beginPath(); ctx.moveTo(0, sy(0)); ctx.lineTo(cw, sy(0)); ctx.stroke(); ctx.setLineDash([]);
     }
     if (!lathe) drawBlock(A, B);
-    for (const f of [drawHold, drawPaths, drawHoles, drawExtents, drawSelection, drawDiagnostics, drawFindings, drawTool]) f(A, B);
+    for (const f of [drawHold, drawPorted, drawPaths, drawHoles, drawExtents, drawSelection, drawDiagnostics, drawFindings, drawTool]) f(A, B);
     if (!lathe) drawTriad(A, B);
     lastDrawMs = performance.now() - t0;
   }
@@ -1744,6 +1759,66 @@
   }
   $("print-sheet").addEventListener("click", () => { setupSheet(); window.print(); });
   window.addEventListener("beforeprint", setupSheet);
+
+  // ---- port to another controller (ncsight port, in the engine): the two programmes side by
+  // side, the ported one's path overlaid on the plot, the differences listed ----------------
+  let portScene = null, ported = null;
+  function fillPortTargets() {
+    const sel = $("port-to"), keep = sel.value;
+    while (sel.firstChild) sel.removeChild(sel.firstChild);
+    JOB.machines.filter((m) => m[2] === lathe && m[0] !== $("machine").value).forEach((m) => sel.appendChild(el("option", { value: m[0] }, m[0])));
+    if ([...sel.options].some((o) => o.value === keep)) sel.value = keep;
+  }
+  async function portTo() {
+    const to = $("port-to").value, from = $("machine").value;
+    if (!to) return;
+    await settled();
+    const text = programmeText();
+    const buf = await callEngine("ncsight_port", enc.encode(text), from, $("params").value, JOB.setup || "", "to=" + to);
+    const answer = new TextDecoder().decode(new Uint8Array(buf));
+    const status = $("port-status"), list = $("port-list");
+    list.textContent = "";
+    if (answer.startsWith("NCSE")) { status.className = "alarm"; status.textContent = answer.slice(4); return; }
+    const P = JSON.parse(answer);
+    if (P.alarm) {
+      status.className = "alarm"; status.textContent = t("port_alarm", { from, line: P.alarm.line });
+      list.appendChild(el("div", { class: "p alarm" }, P.alarm.message));
+      ported = null; portScene = null; $("port-save").disabled = true; draw();
+      return;
+    }
+    ported = P;
+    status.className = P.exact ? "ok" : "approx";
+    status.textContent = t(P.exact ? "port_exact" : "port_approx", { to, n: P.rewritten.length, d: P.differences.length });
+    const item = (cls, line, text) => { const d = el("div", { class: "p " + cls, "data-line": line }, text); d.addEventListener("click", () => line && select(line, true)); list.appendChild(d); };
+    P.differences.forEach((d) => item("alarm", d.line, t("port_diff", { line: d.line, what: d.what, size: +Number(d.size).toFixed(4) })));
+    P.rewritten.forEach((r) => item("warning", r.line, t("port_rewritten", { line: r.line, why: r.why })));
+    $("port-from").textContent = text;
+    $("port-text").textContent = P.text;
+    $("port-save").disabled = false;
+    // The ported programme run on its controller: its path over the original's.
+    const sb = await callEngine("ncsight_scene", enc.encode(P.text), to, "", "", "");
+    const scene = parseScene(sb);
+    portScene = scene.usage ? null : scene;
+    draw();
+  }
+  /** The ported programme's path, a wide orange band under the original's: where they agree the
+   * original's line runs inside it; where they differ the band stands alone. */
+  function drawPorted(A, B) {
+    if (!portScene || !$("port-overlay").checked) return;
+    const P = portScene.p;
+    ctx.strokeStyle = "rgba(255,111,0,0.45)"; ctx.lineWidth = 6; ctx.lineCap = "round";
+    ctx.beginPath();
+    for (let i = 0; i < portScene.n; i++) {
+      if ((portScene.kind[i] & 7) === 0) continue;
+      const o = 6 * i;
+      ctx.moveTo(sx(A[0] * P[o] + A[1] * P[o + 1] + A[2] * P[o + 2]), sy(B[0] * P[o] + B[1] * P[o + 1] + B[2] * P[o + 2]));
+      ctx.lineTo(sx(A[0] * P[o + 3] + A[1] * P[o + 4] + A[2] * P[o + 5]), sy(B[0] * P[o + 3] + B[1] * P[o + 4] + B[2] * P[o + 5]));
+    }
+    ctx.stroke(); ctx.lineCap = "butt";
+  }
+  $("port-run").addEventListener("click", portTo);
+  $("port-overlay").addEventListener("change", draw);
+  $("port-save").addEventListener("click", () => ported && download(enc.encode(ported.text), baseName().replace(/\.[^.]*$/, "") + "-" + ported.to + ".nc", "text/plain"));
 
   // ---- the thread passes, unrolled: the long axis across, the spindle angle down ------------
   // Each pass is the line the tool's point follows on the surface, in its own colour: passes that
