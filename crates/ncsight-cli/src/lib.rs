@@ -693,7 +693,9 @@ fn port(file: &str, m: &MachineArgs, to: &str, output: Option<&str>, format: &st
     if format == "json" {
         let diffs: Vec<String> = result.differences.iter().map(|d| format!("{{\"line\":{},\"what\":{},\"size\":{}}}", d.line, ncsight_io::format::jsonl::json_str(&d.what), d.size)).collect();
         let rewrites: Vec<String> = result.rewritten.iter().map(|(l, why)| format!("{{\"line\":{l},\"why\":{}}}", ncsight_io::format::jsonl::json_str(why))).collect();
-        let text_field = if output.is_none() { format!(",\"text\":{}", ncsight_io::format::jsonl::json_str(&programme)) } else { String::new() };
+        let mut text_field = if output.is_none() { format!(",\"text\":{}", ncsight_io::format::jsonl::json_str(&programme)) } else { String::new() };
+        let params: Vec<String> = result.parameters.iter().map(|(k, v, m)| format!("{{\"key\":{},\"value\":{v},\"meaning\":{}}}", ncsight_io::format::jsonl::json_str(k), ncsight_io::format::jsonl::json_str(m))).collect();
+        text_field.push_str(&format!(",\"parameters\":[{}]", params.join(",")));
         writeln!(out, "{{\"from\":{},\"to\":{},\"exact\":{},\"rewritten\":[{}],\"differences\":[{}]{text_field}}}", ncsight_io::format::jsonl::json_str(&from_name), ncsight_io::format::jsonl::json_str(to_profile.name), result.exact(), rewrites.join(","), diffs.join(","))?;
     } else {
         for (l, why) in &result.rewritten {
@@ -701,6 +703,9 @@ fn port(file: &str, m: &MachineArgs, to: &str, output: Option<&str>, format: &st
         }
         for d in &result.differences {
             let _ = writeln!(err, "ncsight: difference at line {}: {} ({})", d.line, d.what, d.size);
+        }
+        for (k, v, m) in &result.parameters {
+            let _ = writeln!(err, "ncsight: {} parameter {k} = {v} as assumed (its power-on value): {m}", to_profile.name);
         }
         let _ = writeln!(err, "ncsight: {} -> {}: {}", from_name, to_profile.name, if result.exact() { "the same motion" } else { "approximate" });
     }

@@ -111,7 +111,7 @@ fn targets(from: &str) -> Vec<&'static str> {
 fn every_golden_programme_to_every_other_profile_of_its_kind() {
     let dir = Scratch::new("port-goldens");
     let (mut exact, mut approximate, mut refused, mut round_trips) = (0, 0, 0, 0);
-    // Exact one way, approximate back (docs/commands/port.md says which and why).
+    // Exact one way, approximate back.
     let mut not_back: Vec<String> = Vec::new();
     let mut golden: Vec<_> = std::fs::read_dir(root().join("tests/golden")).unwrap().map(|e| e.unwrap().path()).collect();
     golden.sort();
@@ -160,9 +160,9 @@ fn every_golden_programme_to_every_other_profile_of_its_kind() {
     }
     eprintln!("port of the golden programmes: {exact} exact, {approximate} approximate (differences listed), {refused} refused (they alarm on their own controller); {round_trips} round trips as the original; back approximate: {not_back:?}");
     assert!(exact > 230, "{exact} exact");
-    // The one known: the GSK980TDi's M29 before G84 kept while the G84 became its moves on the
-    // GSK988T; back on the GSK980TDi an axis move after M29 is its alarm (docs/commands/port.md).
-    assert_eq!(not_back, ["gsk980tdi_g84_g88 gsk980tdi -> gsk988t"]);
+    // Every round trip runs as the original (the GSK980TDi's M29 before a rigid tap came back
+    // as an alarm until a line before an alarming one was written as its moves too).
+    assert!(not_back.is_empty(), "{not_back:?}");
 }
 
 mod generated {
@@ -233,4 +233,19 @@ mod generated {
             }
         }
     }
+}
+
+#[test]
+fn the_header_names_the_parameters_the_kept_cycles_read() {
+    // O0024's G76 kept on the GSK988T: its G76 parameters (5140-5143, as the profile numbers
+    // them) and the thread chamfer 5130/5131 are named with the values the port assumed.
+    let src = root().join("examples/gsk980tdi_g71_g70_part.nc");
+    let (code, out, err) = ncsight(&["port", src.to_str().unwrap(), "--machine", "gsk980tdi", "--to", "gsk988t", "--format", "json"]);
+    assert_eq!(code, 0, "{err}");
+    let v: serde_json::Value = serde_json::from_str(out.trim()).unwrap();
+    let keys: Vec<&str> = v["parameters"].as_array().unwrap().iter().map(|p| p["key"].as_str().unwrap()).collect();
+    assert!(keys.contains(&"5142") && keys.contains(&"5143"), "{keys:?}");
+    let text = v["text"].as_str().unwrap();
+    assert!(text.contains("(TARGET PARAMETERS:") && text.contains("5143=60"), "{text}");
+    assert!(text.lines().all(|l| !l.starts_with("(TARGET") || l.len() <= 60), "short comments");
 }

@@ -39,6 +39,9 @@ pub struct Port {
     /// Source lines written as plain moves, and why.
     pub rewritten: Vec<(u32, String)>,
     pub differences: Vec<Difference>,
+    /// The target's parameters the kept cycles read (their values as the port assumed them:
+    /// TO's power-on values): key, value, meaning. Named in the header comment too.
+    pub parameters: Vec<(String, f64, &'static str)>,
 }
 
 impl Port {
@@ -125,10 +128,20 @@ pub fn port(from: &Job, to: &Job, text: &[u8]) -> Result<Port, PortError> {
     for _ in 0..MAX_REWRITES {
         let (candidate, line_map) = assemble(&kept, &rewritten, &source, to_profile.name);
         let target = run(to, candidate.as_bytes())?;
+        let done = |l: u32| rewritten.iter().any(|(r, _)| *r == l);
         if let Some((line, why)) = first_difference(&source, &target, &line_map) {
-            if line > 0 && !rewritten.iter().any(|(l, _)| *l == line) {
+            if line > 0 && !done(line) {
                 rewritten.push((line, why));
                 continue;
+            }
+            // The target still alarms at a line already written as its moves: a mode the lines
+            // before it set (M29 before a rigid tap) is what it refuses: the nearest of the three
+            // lines before it still as written goes too.
+            if line > 0 && why.starts_with("the target alarms") {
+                if let Some(prev) = (line.saturating_sub(3)..line).rev().find(|&l| l > 0 && !done(l)) {
+                    rewritten.push((prev, format!("the line after it alarms on the target as its moves: {why}")));
+                    continue;
+                }
             }
         }
         // The first difference is at a line already written as its moves (or at none): the
@@ -137,13 +150,75 @@ pub fn port(from: &Job, to: &Job, text: &[u8]) -> Result<Port, PortError> {
         let differences = all_differences(&source, &target, &line_map);
         match differences.iter().find(|d| d.line > 0 && !rewritten.iter().any(|(l, _)| *l == d.line)) {
             Some(d) => rewritten.push((d.line, d.what.clone())),
-            None => return Ok(Port { text: candidate, rewritten, differences }),
+            None => return finish(to, candidate, rewritten, differences),
         }
     }
     let (candidate, line_map) = assemble(&kept, &rewritten, &source, to_profile.name);
     let target = run(to, candidate.as_bytes())?;
     let differences = all_differences(&source, &target, &line_map);
-    Ok(Port { text: candidate, rewritten, differences })
+    finish(to, candidate, rewritten, differences)
+}
+
+/// The port as written: the parameters of the target that the kept lines' G codes read, named
+/// in comments after the note that says where the programme came from (comments: the motion
+/// verified is the same).
+fn finish(to: &Job, text: String, rewritten: Vec<(u32, String)>, differences: Vec<Difference>) -> Result<Port, PortError> {
+    let params = to.parameters()?;
+    let codes = codes_in(&text);
+    let mut parameters = Vec::new();
+    for d in params.profile().all_params() {
+        let mentions = codes.iter().any(|c| d.meaning.split(|ch: char| !ch.is_ascii_alphanumeric() && ch != '.').any(|w| w == c));
+        if mentions {
+            parameters.push((d.key.to_string(), params.get(d.key), d.meaning));
+        }
+    }
+    let mut lines: Vec<String> = text.split('\n').map(str::to_string).collect();
+    let at = lines.iter().position(|l| l.starts_with("(PORTED FROM")).map_or(0, |i| i + 1);
+    // Short comments (a controller reads a long comment's tail as words).
+    let mut notes = Vec::new();
+    let mut note = String::from("(TARGET PARAMETERS:");
+    for (k, v, _) in &parameters {
+        let item = format!(" {k}={}", with_point(*v).trim_end_matches('.'));
+        if note.len() + item.len() > 56 {
+            notes.push(format!("{note})"));
+            note = String::from("(TARGET PARAMETERS:");
+        }
+        note.push_str(&item);
+    }
+    if !parameters.is_empty() {
+        notes.push(format!("{note})"));
+    }
+    for (i, n) in notes.into_iter().enumerate() {
+        lines.insert(at + i, n);
+    }
+    Ok(Port { text: lines.join("\n"), rewritten, differences, parameters })
+}
+
+/// The G codes of a text's blocks (comments left out), as the parameters' meanings name them
+/// (`G76`, `G92`, `G71`): written without leading zeros beyond two digits (`G0` is `G00`).
+fn codes_in(text: &str) -> Vec<String> {
+    let mut codes: Vec<String> = Vec::new();
+    for line in text.lines() {
+        let mut depth = 0;
+        let b = line.as_bytes();
+        for (i, &c) in b.iter().enumerate() {
+            match c {
+                b'(' => depth += 1,
+                b')' => depth = (depth - 1).max(0),
+                b'G' | b'g' if depth == 0 => {
+                    let digits: String = line[i + 1..].chars().take_while(|c| c.is_ascii_digit() || *c == '.').collect();
+                    if let Ok(n) = digits.trim_end_matches('.').parse::<f64>() {
+                        let code = if n.fract() == 0.0 { format!("G{:02}", n as u32) } else { format!("G{:02}.{}", n.trunc() as u32, ((n.fract() * 10.0).round()) as u32) };
+                        if !codes.contains(&code) {
+                            codes.push(code);
+                        }
+                    }
+                }
+                _ => {}
+            }
+        }
+    }
+    codes
 }
 
 /// The programme names its controller on its first line, as `run`, `check`, the page and the
