@@ -254,9 +254,13 @@ enum Command {
         #[command(flatten)]
         machine: MachineArgs,
         /// The controller the programme is written for: gsk980tdi, gsk988t, fanuc0t,
-        /// yasnac-lx3, fanuc0i-tf (lathes).
+        /// yasnac-lx3, fanuc0i-tf (lathes); fanuc0m, fanuc0i-mf (machining centres).
         #[arg(long = "to", value_name = "MACHINE")]
         to: String,
+        /// The target machine's setup (axes, offsets, limits, tools), as --setup is the source's.
+        /// Without it the target has none.
+        #[arg(long = "to-setup", value_name = "S.toml")]
+        to_setup: Option<String>,
         /// Write the programme to this file instead of standard output.
         #[arg(short = 'o', long = "output")]
         output: Option<String>,
@@ -406,7 +410,7 @@ pub fn main_with(args: impl IntoIterator<Item = std::ffi::OsString>, out: &mut d
         Command::Run { file, machine, format, output, operator } => run(&file, &machine, &operator, &format, output.as_deref(), out, err),
         Command::Check { files, machine, format } => check(&files, &machine, &format, out, err),
         Command::Expand { file, machine, to, output } => expand(&file, &machine, &to, output.as_deref(), out, err),
-        Command::Port { file, machine, to, output, format } => port(&file, &machine, &to, output.as_deref(), &format, out, err),
+        Command::Port { file, machine, to, to_setup, output, format } => port(&file, &machine, (&to, to_setup.as_deref()), output.as_deref(), &format, out, err),
         Command::Machines { machine } => machines(machine.as_deref(), out),
         Command::Explain { code, lang, list } => explain(code.as_deref(), lang.as_deref(), list, out),
         Command::Lsp { stdio: _ } => ncsight_lsp::run_stdio().map(|()| EXIT_OK).map_err(|e| usage(format!("lsp: {e}"))),
@@ -657,15 +661,18 @@ fn expand(file: &str, m: &MachineArgs, to: &str, output: Option<&str>, out: &mut
 const EXIT_PORT_DIFFERS: i32 = 4;
 
 /// `ncsight port`: the programme in the target's words, verified by running both.
-fn port(file: &str, m: &MachineArgs, to: &str, output: Option<&str>, format: &str, out: &mut dyn Write, err: &mut dyn Write) -> Result<i32, Failure> {
+fn port(file: &str, m: &MachineArgs, (to, to_setup): (&str, Option<&str>), output: Option<&str>, format: &str, out: &mut dyn Write, err: &mut dyn Write) -> Result<i32, Failure> {
     if format != "text" && format != "json" {
         return Err(usage(format!("--format {format}: choose text or json")));
     }
     let head = Head::of(file)?;
     let from_name = machine_for(m, head.named(shown(file)), true, err)?;
     let from = m.job(&from_name)?;
-    let target = ncsight_io::Job::on(to);
+    let mut target = ncsight_io::Job::on(to);
     let to_profile = target.profile()?;
+    if let Some(path) = to_setup {
+        target.read_setup(path)?;
+    }
     let source = read_whole(file)?;
     let decoding = m.decoding()?;
     let text = editor_text(&source, &decoding);

@@ -445,9 +445,13 @@ fn compared(r: &Record) -> bool {
     !matches!(r.op, Op::Stop { reason: ncsight::motion::StopReason::SingleBlock | ncsight::motion::StopReason::FeedHold })
 }
 
-/// Why two records differ and by how much, or None when they agree.
-fn differ(a: &Op, b: &Op) -> Option<(String, f64)> {
-    let pos = |p: &Vec3, q: &Vec3| p.dist(q);
+/// Why two records differ and by how much, or None when they agree. Positions are compared on
+/// the machine (each record's point plus its offsets: controllers apply tool offsets each their
+/// own way, the tool must go to the same place).
+fn differ(ra: &Record, rb: &Record) -> Option<(String, f64)> {
+    let (a, b) = (&ra.op, &rb.op);
+    let (ma, mb) = (ra.to_machine, rb.to_machine);
+    let pos = |p: &Vec3, q: &Vec3| Vec3::new(p.x + ma.x, p.y + ma.y, p.z + ma.z).dist(&Vec3::new(q.x + mb.x, q.y + mb.y, q.z + mb.z));
     match (a, b) {
         (Op::Rapid { to: p, .. }, Op::Rapid { to: q, .. }) => (pos(p, q) > POSITION_MM).then(|| ("rapid end point".to_string(), pos(p, q))),
         (Op::Feed { to: p, feed_mm_min: f, .. }, Op::Feed { to: q, feed_mm_min: g, .. }) | (Op::Arc { to: p, feed_mm_min: f, .. }, Op::Arc { to: q, feed_mm_min: g, .. }) => {
@@ -486,7 +490,7 @@ fn first_difference(source: &Run, target: &Run, map: &[u32]) -> Option<(u32, Str
     for (k, (sa, ra)) in a.iter().map(|x| (x.0, &x.1)).enumerate() {
         let Some((lb, rb)) = b.get(k).map(|x| (x.0, &x.1)) else { return Some((sa, "the target's run ends before".into())) };
         let tb = map.get(lb.saturating_sub(1) as usize).copied().unwrap_or(0);
-        if let Some((why, size)) = differ(&ra.op, &rb.op) {
+        if let Some((why, size)) = differ(ra, rb) {
             // The earlier of the two lines is the one to rewrite.
             let line = if tb > 0 && tb < sa { tb } else { sa };
             return Some((line, if size > 0.0 { format!("{why} differs by {}", with_point(size)) } else { why }));
@@ -506,7 +510,7 @@ fn all_differences(source: &Run, target: &Run, map: &[u32]) -> Vec<Difference> {
     for (k, x) in a.iter().enumerate() {
         match b.get(k) {
             Some(y) => {
-                if let Some((what, size)) = differ(&x.1.op, &y.1.op) {
+                if let Some((what, size)) = differ(&x.1, &y.1) {
                     out.push(Difference { line: x.0, what, size });
                 }
             }

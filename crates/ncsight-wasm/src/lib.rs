@@ -108,8 +108,12 @@ pub fn port(text: &[u8], machine: &str, params: &str, setup: &str, options: &str
     use ncsight_io::format::jsonl::json_str;
     let to = options.lines().find_map(|l| l.trim().strip_prefix("to=")).unwrap_or("").trim().to_string();
     let answer = page_job(machine, params, setup, "", library).and_then(|(job, _)| {
-        let target = Job::on(&to);
+        // The page has one setup: the target machine is taken to have it too.
+        let mut target = Job::on(&to);
         target.profile()?;
+        if !setup.trim().is_empty() {
+            target.set_setup_text(setup, "setup")?;
+        }
         Ok(match ncsight_io::port::port(&job, &target, text) {
             Ok(p) => {
                 let rewritten: Vec<String> = p.rewritten.iter().map(|(l, why)| format!("{{\"line\":{l},\"why\":{}}}", json_str(why))).collect();
