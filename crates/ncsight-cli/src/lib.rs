@@ -687,14 +687,15 @@ fn port(file: &str, m: &MachineArgs, (to, to_setup): (&str, Option<&str>), outpu
     // The programme names its controller on its first line (`(ncsight: TO)`, port.rs).
     let programme = result.text.clone();
     let status = if result.exact() { EXIT_OK } else { EXIT_PORT_DIFFERS };
+    let bytes = as_opened(&programme, &source, &decoding);
     match output {
         Some(path) => {
             if m.read_files(file).iter().any(|f| same_file::is_same_file(f, path).unwrap_or(false)) {
                 return Err(usage(format!("-o {path}: that is the programme being read; choose another file")));
             }
-            std::fs::write(path, programme.as_bytes()).map_err(|e| usage(format!("cannot write {path}: {e}")))?;
+            std::fs::write(path, &bytes).map_err(|e| usage(format!("cannot write {path}: {e}")))?;
         }
-        None if format == "text" => out.write_all(programme.as_bytes())?,
+        None if format == "text" => out.write_all(&bytes)?,
         None => {}
     }
     if format == "json" {
@@ -717,6 +718,26 @@ fn port(file: &str, m: &MachineArgs, (to, to_setup): (&str, Option<&str>), outpu
         let _ = writeln!(err, "ncsight: {} -> {}: {}", from_name, to_profile.name, if result.exact() { "the same motion" } else { "approximate" });
     }
     Ok(status)
+}
+
+/// A text written the way `source` was: GBK (the encoding its lines that are not UTF-8 were read
+/// in) when it was not UTF-8, as GSK controllers and Chinese editors save; CR LF line ends and a
+/// byte-order mark where it had them.
+fn as_opened(text: &str, source: &[u8], decoding: &diag::Decoding) -> Vec<u8> {
+    let crlf = source.windows(2).any(|w| w == b"\r\n");
+    let text = if crlf { text.replace("\r\n", "\n").replace('\n', "\r\n") } else { text.to_string() };
+    let mut out = Vec::with_capacity(text.len() + 3);
+    if source.starts_with(&[0xEF, 0xBB, 0xBF]) {
+        out.extend_from_slice(&[0xEF, 0xBB, 0xBF]);
+    }
+    match std::str::from_utf8(source) {
+        Ok(_) => out.extend_from_slice(text.as_bytes()),
+        Err(_) => {
+            let enc = encoding_rs::Encoding::for_label(decoding.label().as_bytes()).unwrap_or(encoding_rs::GB18030);
+            out.extend_from_slice(&enc.encode(&text).0);
+        }
+    }
+    out
 }
 
 /// A programme file (or standard input) read whole.

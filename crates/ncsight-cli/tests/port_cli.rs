@@ -267,3 +267,21 @@ fn the_header_names_the_parameters_the_kept_cycles_read() {
     assert!(text.contains("(TARGET PARAMETERS:") && text.contains("5143=60"), "{text}");
     assert!(text.lines().all(|l| !l.starts_with("(TARGET") || l.len() <= 60), "short comments");
 }
+
+#[test]
+fn a_gbk_programme_is_written_in_gbk_with_its_line_ends() {
+    // 外圆刀 (OD tool) in GBK, CR LF line ends, as a GSK controller saves a programme.
+    let dir = Scratch::new("port-gbk");
+    let mut bytes = b"O0005 (".to_vec();
+    bytes.extend_from_slice(&[0xcd, 0xe2, 0xd4, 0xb2, 0xb5, 0xb6]);
+    bytes.extend_from_slice(b")\r\nG99 M03 S600 T0101\r\nG0 X30. Z2.\r\nG1 Z-20. F0.2\r\nG0 X100. Z100.\r\nM30\r\n");
+    let src = dir.0.join("gbk.nc");
+    std::fs::write(&src, &bytes).unwrap();
+    let out = dir.path("out.nc");
+    let (code, _, err) = ncsight(&["port", src.to_str().unwrap(), "--machine", "gsk980tdi", "--to", "fanuc0t", "-o", &out]);
+    assert_eq!(code, 0, "{err}");
+    let written = std::fs::read(&out).unwrap();
+    assert!(written.windows(6).any(|w| w == [0xcd, 0xe2, 0xd4, 0xb2, 0xb5, 0xb6]), "the comment in GBK");
+    assert!(written.windows(2).filter(|w| *w == b"\r\n").count() >= 6, "CR LF kept");
+    assert!(std::str::from_utf8(&written).is_err(), "not UTF-8");
+}
