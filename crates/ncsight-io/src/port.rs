@@ -73,6 +73,13 @@ struct Run {
     per_rev_after: Vec<(u32, bool, Option<f64>, bool)>,
 }
 
+impl Run {
+    /// The records both runs should agree on, with their lines.
+    fn compared(&self) -> Vec<&(u32, Record)> {
+        self.records.iter().filter(|(_, r)| compared(r)).collect()
+    }
+}
+
 fn run(job: &Job, text: &[u8]) -> Result<Run, PortError> {
     let (program, _) = job.program(Mode::Run)?;
     let mut events = ncsight::events(program, text);
@@ -485,8 +492,7 @@ fn first_difference(source: &Run, target: &Run, map: &[u32]) -> Option<(u32, Str
         let src = map.get(line.saturating_sub(1) as usize).copied().unwrap_or(0);
         return Some((src, format!("the target alarms: {msg}")));
     }
-    let a: Vec<&(u32, Record)> = source.records.iter().filter(|(_, r)| compared(r)).collect();
-    let b: Vec<&(u32, Record)> = target.records.iter().filter(|(_, r)| compared(r)).collect();
+    let (a, b) = (source.compared(), target.compared());
     for (k, (sa, ra)) in a.iter().map(|x| (x.0, &x.1)).enumerate() {
         let Some((lb, rb)) = b.get(k).map(|x| (x.0, &x.1)) else { return Some((sa, "the target's run ends before".into())) };
         let tb = map.get(lb.saturating_sub(1) as usize).copied().unwrap_or(0);
@@ -505,8 +511,7 @@ fn all_differences(source: &Run, target: &Run, map: &[u32]) -> Vec<Difference> {
     if let Some((line, msg)) = &target.alarm {
         out.push(Difference { line: map.get(line.saturating_sub(1) as usize).copied().unwrap_or(0), what: format!("the target alarms: {msg}"), size: 0.0 });
     }
-    let a: Vec<&(u32, Record)> = source.records.iter().filter(|(_, r)| compared(r)).collect();
-    let b: Vec<&(u32, Record)> = target.records.iter().filter(|(_, r)| compared(r)).collect();
+    let (a, b) = (source.compared(), target.compared());
     for (k, x) in a.iter().enumerate() {
         match b.get(k) {
             Some(y) => {
