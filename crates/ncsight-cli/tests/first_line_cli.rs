@@ -7,7 +7,6 @@ mod common;
 use common::Scratch;
 
 use std::io::Write;
-use std::path::PathBuf;
 
 /// A drilling programme of a machining centre: G81 is NCS-E10 on the default gsk980tdi.
 const DRILL: &str = "G90 G0 X0 Y0 Z10. S1000 M03\nG81 X10. Y5. Z-5. R2. F100\nG80\nM30\n";

@@ -5,7 +5,6 @@ mod common;
 
 use common::Scratch;
 
-use std::path::PathBuf;
 
 /// A Ø40 shaft roughed with G71, finished with G70 and threaded M20x2.5, simulated without
 /// `--stock`: the stock is guessed from the cuts (Ø40.5, the roughing's allowance, by 65 mm:
