@@ -823,6 +823,7 @@ test("the work is kept: GBK saved byte for byte, an edit kept in GBK and across 
   assert.equal(await page.evaluate(() => window.__printed), true);
   const row = await page.textContent("#sheet-tools tr:nth-child(2)");
   assert.match(row, /T01外圆刀2X Ø 30 – 40, Z -20 – 2.*mm\/min/);
+  assert.match(await page.textContent("#sheet-ops"), /快速/, "the time by operation on the sheet");
   await page.emulateMedia({ media: "print" });
   await shot(page, "setup-sheet.png");
   assert.equal(await page.isVisible("#left"), false);

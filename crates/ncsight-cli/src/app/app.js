@@ -1754,6 +1754,9 @@
       tb.appendChild(tr);
     });
     box.appendChild(tb);
+    // The time by operation (rapid, feed, arc, thread, dwell, tool changes), as the Time panel.
+    const ops = $("time-by-op");
+    if (ops) { const copy = ops.cloneNode(true); copy.id = "sheet-ops"; box.appendChild(copy); }
     box.appendChild(el("div", { class: "sheet-note" }, t("sheet_note")));
     return box;
   }
