@@ -163,3 +163,20 @@ async def test_time_hints_at_the_end_of_each_block(client, tmp_path):
     assert 5 in by_line and all(h.position.character == len(lines[h.position.line]) for h in hints), by_line
     seconds = {k: sum(float(x) * 60 ** i for i, x in enumerate(reversed(v.split(":")))) for k, v in by_line.items()}
     assert max(seconds, key=seconds.get) == 5, seconds
+
+
+async def test_odd_text_and_a_loop_do_not_stop_the_server(client, tmp_path):
+    # A letter before Chinese text outside a comment, ';' between blocks, a loop: hover,
+    # definition and the outline answer, quickly, and the server lives on.
+    text = "(ncsight: GSK980TDi)\nN10 G0 X10. Z2. T刀具号\nG0 X1. ; M98 P1234\nG0 X2.\nGOTO10\nM30\nO1234\nM99\n"
+    uri = open_text(client, tmp_path / "odd.nc", text)
+    await diagnostics(client, uri, 1)
+    start = time.monotonic()
+    for line, character in ((1, 17), (4, 2), (2, 14)):
+        await client.text_document_hover_async(types.HoverParams(text_document=types.TextDocumentIdentifier(uri=uri), position=types.Position(line=line, character=character)))
+    assert time.monotonic() - start < 3, "hover on a looping programme answers quickly"
+    loc = await client.text_document_definition_async(types.DefinitionParams(text_document=types.TextDocumentIdentifier(uri=uri), position=types.Position(line=2, character=14)))
+    loc = loc if isinstance(loc, types.Location) else loc[0]
+    assert loc.range.start.line == 6  # M98 P1234 after ';' goes to O1234
+    symbols = await client.text_document_document_symbol_async(types.DocumentSymbolParams(text_document=types.TextDocumentIdentifier(uri=uri)))
+    assert "M98" in [c.name for s in symbols for c in (s.children or [])] + [s.name for s in symbols]

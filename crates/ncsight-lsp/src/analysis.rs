@@ -98,6 +98,11 @@ pub fn usage_diagnostic(message: &str) -> LspDiagnostic {
     }
 }
 
+/// Blocks run again after jumps back (a loop) that hover and the time hints follow at most: they
+/// answer on the message loop, so a programme that loops stops them early (the state shown is
+/// then as far as that; `check`'s diagnostics keep the command line's limit).
+pub const EDITOR_MAX_BLOCKS: u64 = 20_000;
+
 /// What the machine is like before and after a block, for hover.
 #[derive(Debug, Clone, Default)]
 pub struct BlockState {
@@ -113,7 +118,8 @@ pub struct BlockState {
 /// time so far and the block's. Read as the text goes, to that line (a jump back from later in
 /// the programme is not followed: the hover says "as read to this line").
 pub fn state_at(cfg: &RunConfig, text: &[u8], line: u32) -> Result<BlockState, String> {
-    let job = job_of(cfg)?;
+    let mut job = job_of(cfg)?;
+    job.max_blocks = Some(EDITOR_MAX_BLOCKS);
     let lathe = job.profile().map_err(|e| e.to_string())?.is_lathe();
     let cut = |n: u32| -> &[u8] {
         let mut at = 0;
@@ -144,7 +150,8 @@ pub fn state_at(cfg: &RunConfig, text: &[u8], line: u32) -> Result<BlockState, S
 /// The time each line of the text takes when the programme runs (seconds, by the line of the
 /// records; a subprogramme's lines in another file are not this text's), for the time hints.
 pub fn time_by_line(cfg: &RunConfig, text: &Arc<Vec<u8>>, line_count: usize) -> Result<Vec<f32>, String> {
-    let job = job_of(cfg)?;
+    let mut job = job_of(cfg)?;
+    job.max_blocks = Some(EDITOR_MAX_BLOCKS);
     let (mut program, mut library) = job.program(Mode::Run).map_err(|e| e.to_string())?;
     let mut times = vec![0f32; line_count];
     let mut t_before = 0.0f64;

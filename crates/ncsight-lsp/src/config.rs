@@ -62,6 +62,11 @@ pub fn for_document(path: Option<&Path>, text: &[u8], setting: Option<&str>) -> 
             None => (cfg.machine, cfg.from) = ("gsk980tdi".into(), "the default (no first line, ncsight.toml or setting names one)".into()),
         }
     }
+    // The profile's own spelling (`GSK980TDi` names gsk980tdi): the tables hover and
+    // definitions read are by that name.
+    if let Some(p) = ncsight::profile::by_name(&cfg.machine) {
+        cfg.machine = p.name.to_string();
+    }
     cfg
 }
 

@@ -75,6 +75,7 @@ fn entry_for<'c>(code: &str, machine: &str, words: &[Word]) -> Option<&'c CodeEn
 /// (found by reading back to the block that set it: a group 01 code or a drilling cycle, up to
 /// G80 or another motion code).
 fn block_code(lines: &text::Lines, n: usize, machine: &str) -> Option<(String, usize)> {
+    let here = text::words(lines.line(n));
     for k in (0..=n).rev().take(2000) {
         let words = text::words(lines.line(k));
         let codes: Vec<String> = words.iter().filter_map(code_name).collect();
@@ -83,7 +84,7 @@ fn block_code(lines: &text::Lines, n: usize, machine: &str) -> Option<(String, u
             if c.starts_with('G') && (c == "G80" || (k != n && matches!(c.as_str(), "G00" | "G01" | "G02" | "G03"))) {
                 return None;
             }
-            if entry_for(c, machine, &text::words(lines.line(n))).is_some() {
+            if entry_for(c, machine, &here).is_some() {
                 return Some((c.clone(), k));
             }
         }
@@ -93,6 +94,9 @@ fn block_code(lines: &text::Lines, n: usize, machine: &str) -> Option<(String, u
 
 /// The hover text for byte column `col` of line `n` (0-based), in Markdown.
 pub fn hover(lines: &text::Lines, n: usize, col: usize, cfg: &RunConfig, state: Option<&BlockState>) -> Option<String> {
+    if n >= lines.count() {
+        return None;
+    }
     let line = lines.line(n);
     let words = text::words(line);
     let word = text::word_at(&words, col);

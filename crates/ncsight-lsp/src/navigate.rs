@@ -19,8 +19,9 @@ fn has_code(words: &[Word], letter: &str, codes: &[u32]) -> bool {
     words.iter().any(|w| w.address.eq_ignore_ascii_case(letter) && w.value.split('.').next().and_then(|v| v.parse::<u32>().ok()).is_some_and(|v| codes.contains(&v) && !w.value.contains('.')))
 }
 
-/// The target of word `w` in a block of `words` on `machine`.
-pub fn target_of(w: &Word, words: &[Word], machine: &str, lathe: bool) -> Option<Target> {
+/// The target of word `w` in a block of `words` (the controller does not change how a call is
+/// written, the kind of machine does: G70-G73 P/Q are sequence numbers on lathes only).
+pub fn target_of(w: &Word, words: &[Word], _machine: &str, lathe: bool) -> Option<Target> {
     let addr = w.address.to_ascii_uppercase();
     let n = w.integer()?;
     match addr.as_str() {
@@ -28,10 +29,12 @@ pub fn target_of(w: &Word, words: &[Word], machine: &str, lathe: bool) -> Option
         "O" => Some(Target::Programme(n)),
         "N" => Some(Target::Sequence(n)),
         "P" if has_code(words, "M", &[98]) => {
-            // GSK: M98 P○○○○□□□□, the count before the four-digit programme number (GSK980TDi
-            // manual, M98); FANUC 0: M98 P_ L_.
+            // M98 P○○○○□□□□ without L: the count before the four-digit programme number, as the
+            // engine reads it on every profile (GSK980TDi manual, M98); with L (FANUC's
+            // M98 P_ L_), P is the number.
             let digits = w.value.trim_start_matches('+');
-            let number = if machine.starts_with("gsk") && digits.len() > 4 { digits[digits.len() - 4..].parse().ok()? } else { n };
+            let has_l = words.iter().any(|x| x.address.eq_ignore_ascii_case("L"));
+            let number = if !has_l && digits.len() > 4 { digits[digits.len() - 4..].parse().ok()? } else { n };
             Some(Target::Programme(number))
         }
         "Q" if has_code(words, "M", &[98]) => Some(Target::Sequence(n)),
@@ -175,7 +178,11 @@ mod tests {
         let lines = Lines::new(text);
         let w = text::words(lines.line(2));
         assert_eq!(target_of(&w[1], &w, "gsk980tdi", true), Some(Target::Programme(1234)));
-        assert_eq!(target_of(&w[1], &w, "fanuc0t", true), Some(Target::Programme(21234)));
+        // The same without L on the FANUC (the engine reads the count before the number there
+        // too); with L, P is the number.
+        assert_eq!(target_of(&w[1], &w, "fanuc0t", true), Some(Target::Programme(1234)));
+        let l = text::words("M98 P21234 L3");
+        assert_eq!(target_of(&l[1], &l, "fanuc0t", true), Some(Target::Programme(21234)));
         assert_eq!(find_in(&lines, Target::Programme(1234), 0).map(|f| f.0), Some(6));
         let w = text::words(lines.line(3));
         assert_eq!(target_of(&w[2], &w, "gsk980tdi", true), Some(Target::Sequence(20)));

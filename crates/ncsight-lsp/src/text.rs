@@ -1,7 +1,7 @@
 //! The document as an editor sees it: lines, positions in the client's encoding (UTF-16 code
 //! units unless the client takes UTF-8), and the words of a block found without running it
-//! (for definitions, symbols and hover). Comments `( )` and `;` are skipped, as the reader
-//! skips them.
+//! (for definitions, symbols and hover). Comments `( )` are skipped, as the reader skips them;
+//! `;` ends a block, and the words after it are the next block's.
 
 use lsp_types::{Position, Range};
 
@@ -57,7 +57,8 @@ impl<'a> Lines<'a> {
 /// A client column on `line` as a byte column.
 pub fn byte_col(line: &str, character: u32, enc: Encoding) -> usize {
     match enc {
-        Encoding::Utf8 => (character as usize).min(line.len()),
+        // A column inside a character (a client that counts wrongly) goes to its start.
+        Encoding::Utf8 => floor_char_boundary(line, (character as usize).min(line.len())),
         Encoding::Utf16 => {
             let mut units = 0u32;
             for (i, c) in line.char_indices() {
@@ -132,13 +133,17 @@ pub fn words(line: &str) -> Vec<Word<'_>> {
             i = line[i..].find(')').map_or(b.len(), |e| i + e + 1);
             continue;
         }
+        // `;` ends a block (the reader reads on after it): the words after it are the next
+        // block's, on the same line.
         if c == b';' {
-            break;
+            i += 1;
+            continue;
         }
         if c.is_ascii_alphabetic() || c == b',' {
             let start = i;
             // A keyword, or a letter (a comma word `,C` is an address of its own).
-            let kw = KEYWORDS.iter().find(|k| line[i..].len() >= k.len() && line[i..i + k.len()].eq_ignore_ascii_case(k));
+            // Bytes, not characters: a letter may stand before a Chinese character.
+            let kw = KEYWORDS.iter().find(|k| b[i..].get(..k.len()).is_some_and(|w| w.eq_ignore_ascii_case(k.as_bytes())));
             let addr_end = match kw {
                 Some(k) => i + k.len(),
                 None if c == b',' && i + 1 < b.len() && b[i + 1].is_ascii_alphabetic() => i + 2,
@@ -210,10 +215,11 @@ mod tests {
 
     #[test]
     fn words_skip_comments_and_find_keywords() {
-        // A comment ends at its first ')' (they do not nest); ';' ends the block's words.
-        let w = words("/N20 M98 P0031000 (CALL GOTO 5) ; GOTO 6");
+        // A comment ends at its first ')' (they do not nest); ';' ends a block, the next one's
+        // words follow; a letter before a Chinese character is no keyword and no panic.
+        let w = words("/N20 M98 P0031000 (CALL GOTO 5) ; GOTO 6 T刀");
         let a: Vec<_> = w.iter().map(|w| (w.address, w.value)).collect();
-        assert_eq!(a, [("N", "20"), ("M", "98"), ("P", "0031000")]);
+        assert_eq!(a, [("N", "20"), ("M", "98"), ("P", "0031000"), ("GOTO", "6"), ("T", "")]);
         let w = words("IF [#1 GT 2] GOTO 30");
         assert!(w.iter().any(|w| w.address == "GOTO" && w.value == "30"));
         assert_eq!(sequence_number(" /N20 G1"), Some((20, 2, 5)));
