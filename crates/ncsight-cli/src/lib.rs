@@ -665,15 +665,37 @@ fn port(file: &str, m: &MachineArgs, (to, to_setup): (&str, Option<&str>), outpu
     if format != "text" && format != "json" {
         return Err(usage(format!("--format {format}: choose text or json")));
     }
-    let head = Head::of(file)?;
+    let mut head = Head::of(file)?;
     let from_name = machine_for(m, head.named(shown(file)), true, err)?;
     let from = m.job(&from_name)?;
-    let mut target = ncsight_io::Job::on(to);
+    // The target runs as the source is asked to (switches, variables, the main programme,
+    // where called programmes are), on its own machine with its own setup.
+    let mut target = ncsight_io::Job {
+        switches: from.switches,
+        vars: from.vars.clone(),
+        main: from.main.clone(),
+        call_args: from.call_args.clone(),
+        subprogram_dirs: from.subprogram_dirs.clone(),
+        skip_missing_subprograms: from.skip_missing_subprograms,
+        max_blocks: from.max_blocks,
+        ..ncsight_io::Job::on(to)
+    };
     let to_profile = target.profile()?;
+    if from.profile()?.is_lathe() != to_profile.is_lathe() {
+        return Err(usage(format!("--to {to}: a {} programme ports to a {} only", if from.profile()?.is_lathe() { "lathe" } else { "machining centre" }, if from.profile()?.is_lathe() { "lathe" } else { "machining centre" })));
+    }
     if let Some(path) = to_setup {
         target.read_setup(path)?;
     }
-    let source = read_whole(file)?;
+    // Standard input was read for its first line already: the rest comes through the head.
+    let source = match head.input(file)? {
+        feed::Input::Stream(mut r) => {
+            let mut v = Vec::new();
+            r.read_to_end(&mut v)?;
+            v
+        }
+        _ => read_whole(file)?,
+    };
     let decoding = m.decoding()?;
     let text = editor_text(&source, &decoding);
     let result = match ncsight_io::port::port(&from, &target, text.as_bytes()) {

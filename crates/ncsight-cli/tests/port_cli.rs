@@ -99,6 +99,25 @@ fn exit_statuses() {
     assert_eq!(ncsight(&["port", &good, "--machine", "gsk980tdi", "--to", "fanuc0x"]).0, 2);
     assert_eq!(ncsight(&["port", &good, "--machine", "gsk980tdi", "--to", "fanuc0t", "--format", "xml"]).0, 2);
     assert_eq!(ncsight(&["port", &good, "--machine", "gsk980tdi", "--to", "fanuc0t", "-o", &good]).0, 2);
+    // A lathe programme does not port to a machining centre.
+    assert_eq!(ncsight(&["port", &good, "--machine", "gsk980tdi", "--to", "fanuc0m"]).0, 2);
+}
+
+#[test]
+fn the_target_runs_as_the_source_is_asked_to() {
+    // Block delete on: the '/' line stays as written and is skipped on both sides (it was
+    // deleted from the port, and M01 showed as a difference, when only the source had it).
+    let dir = Scratch::new("port-switches");
+    let src = dir.file("bd.nc", "G99 M03 S500\nG00 X20. Z2.\n/G01 Z-10. F0.2\nG00 X40.\nM30\n");
+    let (code, out, err) = ncsight(&["port", &src, "--machine", "gsk980tdi", "--to", "fanuc0t", "--block-delete"]);
+    assert_eq!(code, 0, "{err}");
+    assert!(out.contains("/G01 Z-10. F0.2"), "{out}");
+    // A rotary axis is compared too: C without a decimal point on the FANUC is 0.001 degree.
+    let setup = dir.file("c.toml", "[machine]\naxes = [{ name = \"C\", kind = \"rotary\" }]\n");
+    let c = dir.file("c.nc", "G00 X20. Z2.\nG00 C90000\nM30\n");
+    let (code, out, err) = ncsight(&["port", &c, "--machine", "fanuc0t", "--setup", &setup, "--to", "gsk980tdi", "--to-setup", &setup]);
+    assert_eq!(code, 0, "{err}");
+    assert!(out.contains("C90."), "{out}");
 }
 
 /// The machining centres: the FANUC 0-M and the 0i-MF both ways.

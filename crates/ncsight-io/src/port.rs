@@ -80,9 +80,22 @@ impl Run {
     }
 }
 
+/// The files of the job's subprogramme folders (each at most 8 MB), where called programmes the
+/// text lacks are found.
+fn library_of(job: &Job) -> Vec<(String, Vec<u8>)> {
+    let mut files: Vec<std::path::PathBuf> = job.subprogram_dirs.iter().filter_map(|d| std::fs::read_dir(d).ok()).flat_map(|rd| rd.filter_map(|e| e.ok()).map(|e| e.path())).filter(|p| p.is_file()).collect();
+    files.sort();
+    files
+        .into_iter()
+        .filter(|p| std::fs::metadata(p).is_ok_and(|m| m.len() <= 8 << 20))
+        .filter_map(|p| std::fs::read(&p).ok().map(|b| (p.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default(), b)))
+        .collect()
+}
+
 fn run(job: &Job, text: &[u8]) -> Result<Run, PortError> {
     let (program, _) = job.program(Mode::Run)?;
-    let mut events = ncsight::events(program, text);
+    let library = library_of(job);
+    let mut events = ncsight::events_with_library(program, text, library.iter().map(|(n, b)| (n.clone(), b.as_slice())).collect());
     let mut out = Run { records: Vec::new(), alarm: None, per_rev_after: Vec::new() };
     while let Some(e) = events.next() {
         match e {
@@ -126,7 +139,10 @@ pub fn port(from: &Job, to: &Job, text: &[u8]) -> Result<Port, PortError> {
     if from_profile.power_on_per_rev != to_profile.power_on_per_rev && from_profile.is_lathe() && to_profile.is_lathe() {
         // After the programme's O line where it has one (a block before it would be a
         // programme of its own), else after the note that says where the programme came from.
-        let o_line = kept.iter().position(|(_, l)| l.trim_start().starts_with(['O', 'o']) && l.trim_start()[1..].starts_with(|c: char| c.is_ascii_digit()));
+        // The programme's first block (comment lines are none): an O line, or the first block of
+        // a main programme without a number.
+        let first = kept.iter().position(|(n, l)| *n > 0 && !outside_comments(l).trim().chars().all(|c| c == '%' || c == ';' || c.is_whitespace()));
+        let o_line = first.filter(|&i| crate::port::starts_with_o_number(&kept[i].1));
         let note = kept.iter().position(|(n, l)| *n == 0 && l.starts_with("(PORTED FROM"));
         let at = o_line.or(note).map_or(0, |i| i + 1);
         kept.insert(at, (0, format!("{} (FEED MODE AT POWER ON ON {})", if from_profile.power_on_per_rev { "G99" } else { "G98" }, from_profile.name.to_ascii_uppercase())));
@@ -238,7 +254,9 @@ fn name_the_target(lines: &mut Vec<(u32, String)>, from: &str, to: &str) {
     let note = (0, format!("(PORTED FROM {} BY NCSIGHT PORT)", from.to_ascii_uppercase()));
     if named {
         let l = &lines[first].1;
-        let a = l.to_ascii_lowercase().find("(ncsight").unwrap_or(0);
+        // The comment that names it: the '(' before the word ncsight (spaces may stand between).
+        let lower = l.to_ascii_lowercase();
+        let a = lower.find("ncsight").and_then(|w| lower[..w].rfind('(')).unwrap_or(0);
         let b = l[a..].find(')').map_or(l.len(), |e| a + e + 1);
         lines[first].1 = format!("{}(ncsight: {to}){}", &l[..a], &l[b..]);
         lines.insert(first + 1, note);
@@ -251,6 +269,28 @@ fn name_the_target(lines: &mut Vec<(u32, String)>, from: &str, to: &str) {
         lines.insert(first, note);
         lines.insert(first, (0, format!("(ncsight: {to})")));
     }
+}
+
+/// A line without its `( )` comments.
+fn outside_comments(line: &str) -> String {
+    let mut depth = 0;
+    line.chars().filter(|&c| {
+        match c {
+            '(' => depth += 1,
+            ')' if depth > 0 => {
+                depth -= 1;
+                return false;
+            }
+            _ => {}
+        }
+        depth == 0
+    }).collect()
+}
+
+/// A line that starts with a programme number (`O1234`).
+fn starts_with_o_number(line: &str) -> bool {
+    let t = line.trim_start();
+    t.starts_with(['O', 'o']) && t[1..].starts_with(|c: char| c.is_ascii_digit())
 }
 
 /// Positions written with a decimal point, as the source controller reads them.
@@ -270,7 +310,9 @@ fn normalise_line(line: &str, params: &ncsight::profile::Params) -> String {
             i += ch.len_utf8();
             continue;
         }
-        let is_length = matches!(c.to_ascii_uppercase(), b'X' | b'Z' | b'U' | b'W' | b'Y' | b'V') && (i == 0 || !b[i - 1].is_ascii_alphabetic()) && i + 1 < b.len() && (b[i + 1] == b'-' || b[i + 1] == b'+' || b[i + 1].is_ascii_digit());
+        // Lengths, and the rotary axes' angles (read by the same rule: 0.001 degree where lengths
+        // are in least increments).
+        let is_length = matches!(c.to_ascii_uppercase(), b'X' | b'Z' | b'U' | b'W' | b'Y' | b'V' | b'A' | b'B' | b'C') && (i == 0 || !b[i - 1].is_ascii_alphabetic()) && i + 1 < b.len() && (b[i + 1] == b'-' || b[i + 1] == b'+' || b[i + 1].is_ascii_digit());
         if !is_length {
             // Copy one character (a multi-byte one whole).
             let ch = line[i..].chars().next().unwrap_or(' ');
@@ -479,6 +521,20 @@ fn differ(ra: &Record, rb: &Record) -> Option<(String, f64)> {
             }
         }
         (Op::Dwell { seconds: s }, Op::Dwell { seconds: t }) => ((s - t).abs() > 1e-3).then(|| ("dwell seconds".to_string(), (s - t).abs())),
+        (Op::Rotary { axis: x, to_deg: p, .. }, Op::Rotary { axis: y, to_deg: q, .. }) => {
+            if x != y {
+                Some((format!("{} turned where the source turns {}", *y as char, *x as char), 0.0))
+            } else {
+                ((p - q).abs() > 1e-3).then(|| (format!("{} end, degrees", *x as char), (p - q).abs()))
+            }
+        }
+        (Op::ThreadArc { to: p, lead_mm: l, .. }, Op::ThreadArc { to: q, lead_mm: m, .. }) => {
+            if pos(p, q) > POSITION_MM {
+                Some(("arc thread end point".into(), pos(p, q)))
+            } else {
+                ((l - m).abs() > 1e-6).then(|| ("arc thread lead".to_string(), (l - m).abs()))
+            }
+        }
         (Op::Spindle { rpm: s, .. }, Op::Spindle { rpm: t, .. }) => ((s - t).abs() > 0.5).then(|| ("spindle rpm".to_string(), (s - t).abs())),
         (Op::Tool { number: n, .. }, Op::Tool { number: m, .. }) => (n != m).then(|| ("tool".to_string(), (*n as f64 - *m as f64).abs())),
         (x, y) if std::mem::discriminant(x) == std::mem::discriminant(y) => None,
