@@ -682,7 +682,8 @@ fn port(file: &str, m: &MachineArgs, (to, to_setup): (&str, Option<&str>), outpu
     };
     let to_profile = target.profile()?;
     if from.profile()?.is_lathe() != to_profile.is_lathe() {
-        return Err(usage(format!("--to {to}: a {} programme ports to a {} only", if from.profile()?.is_lathe() { "lathe" } else { "machining centre" }, if from.profile()?.is_lathe() { "lathe" } else { "machining centre" })));
+        let kind = if from.profile()?.is_lathe() { "lathe" } else { "machining centre" };
+        return Err(usage(format!("--to {to}: a {kind} programme ports to a {kind} only")));
     }
     if let Some(path) = to_setup {
         target.read_setup(path)?;
@@ -1087,22 +1088,7 @@ fn report(
 /// programmes in (each by its file name, as the editor would show it). Files over 8 MB are left
 /// out (not programme files; the page says so if one is called).
 fn library_texts(dirs: &[std::path::PathBuf], decoding: &diag::Decoding) -> Vec<(String, String)> {
-    const MAX_LIBRARY_FILE_BYTES: u64 = 8 << 20;
-    let mut files: Vec<std::path::PathBuf> = dirs
-        .iter()
-        .filter_map(|d| std::fs::read_dir(d).ok())
-        .flatten()
-        .filter_map(|e| e.ok().map(|e| e.path()))
-        .filter(|p| p.metadata().map(|m| m.is_file() && m.len() <= MAX_LIBRARY_FILE_BYTES).unwrap_or(false))
-        .collect();
-    files.sort();
-    files
-        .into_iter()
-        .filter_map(|p| {
-            let bytes = std::fs::read(&p).ok()?;
-            Some((p.file_name()?.to_string_lossy().into_owned(), editor_text(&bytes, decoding)))
-        })
-        .collect()
+    feed::library_files(dirs).into_iter().map(|(name, bytes)| (name, editor_text(&bytes, decoding))).collect()
 }
 
 /// A programme file as the page's editor shows it: without a byte-order mark, each line as

@@ -127,6 +127,24 @@ pub struct Library {
     contents: Option<Vec<(std::path::PathBuf, Vec<u32>)>>,
 }
 
+/// Files above this size in a subprogramme folder are no programme files and are left out of
+/// [`library_files`].
+pub const MAX_LIBRARY_FILE_BYTES: u64 = 8 << 20;
+
+/// Every file of `dirs` (in name order, each at most [`MAX_LIBRARY_FILE_BYTES`]) with its name
+/// and bytes: the called programmes a run held in memory looks for (the page, a port).
+pub fn library_files(dirs: &[std::path::PathBuf]) -> Vec<(String, Vec<u8>)> {
+    let mut files: Vec<std::path::PathBuf> = dirs
+        .iter()
+        .filter_map(|d| std::fs::read_dir(d).ok())
+        .flatten()
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .filter(|p| p.metadata().map(|m| m.is_file() && m.len() <= MAX_LIBRARY_FILE_BYTES).unwrap_or(false))
+        .collect();
+    files.sort();
+    files.into_iter().filter_map(|p| Some((p.file_name()?.to_string_lossy().into_owned(), std::fs::read(&p).ok()?))).collect()
+}
+
 impl Library {
     pub fn new(dirs: Vec<std::path::PathBuf>) -> Library {
         Library { dirs, contents: None }

@@ -80,21 +80,10 @@ impl Run {
     }
 }
 
-/// The files of the job's subprogramme folders (each at most 8 MB), where called programmes the
-/// text lacks are found.
-fn library_of(job: &Job) -> Vec<(String, Vec<u8>)> {
-    let mut files: Vec<std::path::PathBuf> = job.subprogram_dirs.iter().filter_map(|d| std::fs::read_dir(d).ok()).flat_map(|rd| rd.filter_map(|e| e.ok()).map(|e| e.path())).filter(|p| p.is_file()).collect();
-    files.sort();
-    files
-        .into_iter()
-        .filter(|p| std::fs::metadata(p).is_ok_and(|m| m.len() <= 8 << 20))
-        .filter_map(|p| std::fs::read(&p).ok().map(|b| (p.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default(), b)))
-        .collect()
-}
-
-fn run(job: &Job, text: &[u8]) -> Result<Run, PortError> {
+/// Run `text` as `job` says; a called programme the text lacks is looked for in `library`
+/// (the files of the job's subprogramme folders, read once per port).
+fn run(job: &Job, text: &[u8], library: &[(String, Vec<u8>)]) -> Result<Run, PortError> {
     let (program, _) = job.program(Mode::Run)?;
-    let library = library_of(job);
     let mut events = ncsight::events_with_library(program, text, library.iter().map(|(n, b)| (n.clone(), b.as_slice())).collect());
     let mut out = Run { records: Vec::new(), alarm: None, per_rev_after: Vec::new() };
     while let Some(e) = events.next() {
@@ -125,7 +114,11 @@ fn run(job: &Job, text: &[u8]) -> Result<Run, PortError> {
 pub fn port(from: &Job, to: &Job, text: &[u8]) -> Result<Port, PortError> {
     let source_text = String::from_utf8_lossy(text).into_owned();
     let lines: Vec<&str> = source_text.split('\n').map(|l| l.trim_end_matches('\r')).collect();
-    let source = run(from, text)?;
+    // The subprogramme folders, read once for all the runs (the target's are the source's, as
+    // the front ends set them, unless the target's job names its own).
+    let from_library = crate::feed::library_files(&from.subprogram_dirs);
+    let to_library = if to.subprogram_dirs == from.subprogram_dirs { from_library.clone() } else { crate::feed::library_files(&to.subprogram_dirs) };
+    let source = run(from, text, &from_library)?;
     if let Some((line, msg)) = source.alarm {
         return Err(PortError::SourceAlarm(line, msg));
     }
@@ -150,7 +143,7 @@ pub fn port(from: &Job, to: &Job, text: &[u8]) -> Result<Port, PortError> {
     let mut rewritten: Vec<(u32, String)> = Vec::new();
     for _ in 0..MAX_REWRITES {
         let (candidate, line_map) = assemble(&kept, &rewritten, &source, to_profile.name);
-        let target = run(to, candidate.as_bytes())?;
+        let target = run(to, candidate.as_bytes(), &to_library)?;
         let done = |l: u32| rewritten.iter().any(|(r, _)| *r == l);
         if let Some((line, why)) = first_difference(&source, &target, &line_map) {
             if line > 0 && !done(line) {
@@ -177,7 +170,7 @@ pub fn port(from: &Job, to: &Job, text: &[u8]) -> Result<Port, PortError> {
         }
     }
     let (candidate, line_map) = assemble(&kept, &rewritten, &source, to_profile.name);
-    let target = run(to, candidate.as_bytes())?;
+    let target = run(to, candidate.as_bytes(), &to_library)?;
     let differences = all_differences(&source, &target, &line_map);
     finish(to, candidate, rewritten, differences)
 }
@@ -353,19 +346,11 @@ fn assemble(kept: &[(u32, String)], rewritten: &[(u32, String)], source: &Run, m
     let mut text = String::new();
     let mut map = Vec::new();
     for &(n, ref line) in kept {
-        match rewritten.iter().find(|(l, _)| n > 0 && *l == n) {
-            None => {
-                text.push_str(line);
-                text.push('\n');
-                map.push(n);
-            }
-            Some((_, why)) => {
-                for out in plain_moves(n, line, why, source, machine) {
-                    text.push_str(&out);
-                    text.push('\n');
-                    map.push(n);
-                }
-            }
+        let lines = if n > 0 && rewritten.iter().any(|(l, _)| *l == n) { plain_moves(n, line, source, machine) } else { vec![line.clone()] };
+        for out in lines {
+            text.push_str(&out);
+            text.push('\n');
+            map.push(n);
         }
     }
     // The text's own last line end: none added past it.
@@ -378,12 +363,11 @@ fn assemble(kept: &[(u32, String)], rewritten: &[(u32, String)], source: &Run, m
 
 /// A source line written as the moves it makes on the source controller, in the target's words;
 /// then the feed mode, F and motion mode the source has after it, for the lines that follow.
-fn plain_moves(n: u32, line: &str, why: &str, source: &Run, machine: &str) -> Vec<String> {
+fn plain_moves(n: u32, line: &str, source: &Run, machine: &str) -> Vec<String> {
     let dialect = Dialect { lathe: ncsight::profile::by_name(machine).map_or(true, |p| p.is_lathe()) };
     let comment = line.find('(').map(|a| line[a..].to_string()).unwrap_or_default();
     // Why is in the port's report; the comment stays short (a controller reads a long comment's
     // tail as words).
-    let _ = why;
     let mut out = vec![format!("(PORT: LINE {n} AS ITS MOVES)")];
     // The moves are written in mm: under G20 the block is set to G21 and back after.
     let inch = source.per_rev_after.iter().find(|(l, ..)| *l == n).is_some_and(|r| r.3);
