@@ -1048,14 +1048,7 @@ fn report(
     } else {
         (None, None)
     };
-    let mut extra = Vec::new();
-    extra.extend(m.main.iter().map(|v| format!("main={v}")));
-    extra.extend(m.vars.iter().map(|v| format!("var={v}")));
-    extra.extend(m.call_args.iter().map(|v| format!("call_args={v}")));
-    if m.skip_missing_subprograms {
-        extra.push("skip_missing_subprograms=1".into());
-    }
-    extra.extend(m.max_blocks.iter().map(|v| format!("max_blocks={v}")));
+    let extra = page_settings(m);
     let page = report::Preload {
         file_name: if file == "-" { "<stdin>" } else { file },
         text: editor_text(&source, &decoding),
@@ -1082,6 +1075,20 @@ fn report(
         None => report::write(Some(&page), out)?,
     }
     Ok(status_with_findings(program.status() == Status::Alarm, sim.as_ref().map(|s| &s.measurement.findings[..]).unwrap_or(&[])))
+}
+
+/// What the report's command line gave besides the machine, as the page's operator settings
+/// pass it on (`main=`, `var=`, `call_args=`, `skip_missing_subprograms=`, `max_blocks=`).
+fn page_settings(m: &MachineArgs) -> Vec<String> {
+    let mut extra = Vec::new();
+    extra.extend(m.main.iter().map(|v| format!("main={v}")));
+    extra.extend(m.vars.iter().map(|v| format!("var={v}")));
+    extra.extend(m.call_args.iter().map(|v| format!("call_args={v}")));
+    if m.skip_missing_subprograms {
+        extra.push("skip_missing_subprograms=1".into());
+    }
+    extra.extend(m.max_blocks.iter().map(|v| format!("max_blocks={v}")));
+    extra
 }
 
 /// The files of the `--subprogram-dir` directories, for the page to look for called
