@@ -97,7 +97,7 @@ fn run(job: &Job, text: &[u8], library: &[(String, Vec<u8>)]) -> Result<Run, Por
                     _ => 0,
                 };
                 let st = events.program().interpreter().state();
-                out.per_rev_after.push((line, st.per_rev, st.feed, st.inch));
+                out.per_rev_after.push((line, st.modes.per_rev, st.modes.feed, st.modes.inch));
                 out.records.push((line, r));
             }
             Event::Diagnostic(d) if d.is_alarm() && out.alarm.is_none() => out.alarm = Some((d.span.line, format!("{} {}", d.code, d.message))),

@@ -144,7 +144,7 @@ pub fn state_at(cfg: &RunConfig, text: &[u8], line: u32) -> Result<BlockState, S
     };
     let (before, t0) = run(cut(line))?;
     let (after, t1) = run(cut(line + 1))?;
-    Ok(BlockState { before: Some(before), after_pos: Some(after.pos), t_before_s: t0, t_block_s: (t1 - t0).max(0.0), lathe })
+    Ok(BlockState { before: Some(before), after_pos: Some(after.place.pos), t_before_s: t0, t_block_s: (t1 - t0).max(0.0), lathe })
 }
 
 /// The time each line of the text takes when the programme runs (seconds, by the line of the

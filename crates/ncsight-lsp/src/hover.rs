@@ -149,31 +149,31 @@ fn motion_name(m: &ncsight::modal::Motion) -> String {
 /// The modal state before the block, the tool's position after it, and the times.
 fn state_text(s: &BlockState, cfg: &RunConfig) -> String {
     let Some(st) = &s.before else { return String::new() };
-    let feed = match st.feed {
-        Some(f) if st.per_rev => format!("F{} mm/rev ({})", num(f), if s.lathe { "G99" } else { "G95" }),
+    let feed = match st.modes.feed {
+        Some(f) if st.modes.per_rev => format!("F{} mm/rev ({})", num(f), if s.lathe { "G99" } else { "G95" }),
         Some(f) => format!("F{} mm/min ({})", num(f), if s.lathe { "G98" } else { "G94" }),
-        None => format!("no F yet ({})", if st.per_rev { if s.lathe { "G99" } else { "G95" } } else if s.lathe { "G98" } else { "G94" }),
+        None => format!("no F yet ({})", if st.modes.per_rev { if s.lathe { "G99" } else { "G95" } } else if s.lathe { "G98" } else { "G94" }),
     };
-    let spindle = match st.spindle {
+    let spindle = match st.modes.spindle {
         ncsight::modal::SpindleDir::Stopped => "spindle stopped".to_string(),
-        ncsight::modal::SpindleDir::Positive => format!("M03 S{}", num(st.s_word)),
-        ncsight::modal::SpindleDir::Negative => format!("M04 S{}", num(st.s_word)),
-    } + if st.css { " m/min (G96)" } else { " rpm (G97)" };
-    let tool = if s.lathe { format!("T{:02}{:02}", st.tool, st.frame.offset_number) } else { format!("T{} H{}", st.tool, st.frame.offset_number) };
-    let distance = if s.lathe { "X Z absolute, U W incremental" } else if st.incremental { "G91 incremental" } else { "G90 absolute" };
+        ncsight::modal::SpindleDir::Positive => format!("M03 S{}", num(st.modes.s_word)),
+        ncsight::modal::SpindleDir::Negative => format!("M04 S{}", num(st.modes.s_word)),
+    } + if st.modes.css { " m/min (G96)" } else { " rpm (G97)" };
+    let tool = if s.lathe { format!("T{:02}{:02}", st.modes.tool, st.frame.offset_number) } else { format!("T{} H{}", st.modes.tool, st.frame.offset_number) };
+    let distance = if s.lathe { "X Z absolute, U W incremental" } else if st.modes.incremental { "G91 incremental" } else { "G90 absolute" };
     let pos = |p: ncsight::Vec3| if s.lathe { format!("X{} (Ø) Z{}", num(2.0 * p.x), num(p.z)) } else { format!("X{} Y{} Z{}", num(p.x), num(p.y), num(p.z)) };
     format!(
         "**Before this block** on {} ({}): {} · {} · G{} · {} · {} · plane {:?} · {}\n\nTool at {} before, {} after · time so far {}, this block {}",
         cfg.machine,
         cfg.from,
-        motion_name(&st.motion),
+        motion_name(&st.modes.motion),
         tool,
         53 + u32::from(st.frame.work),
         feed,
         spindle,
-        st.plane,
+        st.modes.plane,
         distance,
-        pos(st.pos),
+        pos(st.place.pos),
         s.after_pos.map(pos).unwrap_or_default(),
         hms(s.t_before_s),
         hms(s.t_block_s)

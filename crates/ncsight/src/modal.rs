@@ -1,5 +1,7 @@
-//! The modal state a controller carries from block to block. It is a plain value: the
-//! interpreter works on a copy and commits it only when the whole block is valid.
+//! The modal state a controller carries from block to block, split by owner (the modes, the
+//! tool's place, the notes only warnings read, the cycles' memories, the frame, compensation,
+//! threading, drilling). A block changes the parts it must, each saved the first time ([`Kept`]),
+//! and an alarm puts those back: no block copies the whole state.
 
 use crate::cycles::thread::Pass;
 use crate::motion::{Op, Plane, Vec3};
@@ -328,32 +330,9 @@ pub enum SpindleDir {
     Negative,
 }
 
+/// The modes: what each modal group commands, with the words a later block reads again (F, S, T).
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Modal {
-    /// The feed mode (per revolution or not) an implausibility warning was given in: one hint
-    /// ("G99 was probably meant") per programme and mode, not one per F value.
-    pub feed_warned: Option<bool>,
-    /// What was assumed without a setup and warned at its first word: the axes (a turning
-    /// centre's C and Y) by their letters, the spindle selection P by P.
-    pub assumed_warned: crate::profile::Letters,
-    /// G71 / G72 depth of cut and back-off from their first blocks (index 0 G71, 1 G72).
-    pub rough_data: [Option<(f64, f64)>; 2],
-    /// G73 relief Δi (radius), Δk and number of passes d from its first block.
-    pub pattern_data: Option<(f64, f64, u32)>,
-    /// G74 / G75 back-off e set by a first block (one value for both, as the parameter).
-    pub peck_back_off_mm: Option<f64>,
-    /// G90/G94 end point and taper of the last cycle block, for the blocks that repeat it.
-    pub box_cycle: BoxMemory,
-    /// Current position, programme coordinates, mm, X as a radius.
-    pub pos: Vec3,
-    /// Where the rotary axes A, B, C stand, degrees (those the setup declares; no offsets).
-    pub rotary_deg: [f64; 3],
-    /// Polar coordinates, mirror image, scaling and rotation in force.
-    pub transform: Transforms,
-    /// G22: the stored stroke check 2 area in force, machine coordinates (X a radius).
-    pub stroke2: Option<StrokeArea>,
-    /// Where those coordinates are on the machine.
-    pub frame: Frame,
+pub struct Modes {
     pub motion: Motion,
     pub plane: Plane,
     /// G91 on mills. Lathes use U/W instead and keep this false.
@@ -381,12 +360,37 @@ pub struct Modal {
     pub tool: u32,
     /// G98 (return to the initial level) on mills.
     pub return_initial: bool,
-    /// Tool radius compensation (G40/G41/G42) and its held-back move.
-    pub comp: CompState,
-    pub thread: ThreadState,
-    pub drill: DrillData,
     /// M02/M30 reached.
     pub ended: bool,
+    /// Between `G10 L3` / `G10 L50` (`L52`) and `G11`, the lines are data, not motion.
+    pub data_input: Option<DataInput>,
+    /// G63 tapping mode in force (group 15).
+    pub tapping_mode: bool,
+    /// G12.1 polar coordinate interpolation in force.
+    pub polar_interp: Option<PolarInterp>,
+}
+
+/// Where the tool stands, in the programme's coordinates.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Place {
+    /// Current position, programme coordinates, mm, X as a radius.
+    pub pos: Vec3,
+    /// Where the rotary axes A, B, C stand, degrees (those the setup declares; no offsets).
+    pub rotary_deg: [f64; 3],
+    /// The intermediate point of the last G28 or G30, per axis it named, in the coordinates the
+    /// programme gave it (G29 goes through it; a coordinate change shifts it with the system).
+    pub reference_mid: [Option<f64>; 3],
+}
+
+/// What only warnings and the macro variables #4001-#4120 read.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Notes {
+    /// The feed mode (per revolution or not) an implausibility warning was given in: one hint
+    /// ("G99 was probably meant") per programme and mode, not one per F value.
+    pub feed_warned: Option<bool>,
+    /// What was assumed without a setup and warned at its first word: the axes (a turning
+    /// centre's C and Y) by their letters, the spindle selection P by P.
+    pub assumed_warned: crate::profile::Letters,
     /// The last code commanded in each modal group since power on, ten times its number
     /// (G41 -> 410, G32.1 -> 321; 0: none yet), indexed by `Group as usize`: what #4001-#4022
     /// read for the groups ncsight accepts without modelling (G43/G49, G54-G59, G61/G64, the
@@ -394,15 +398,40 @@ pub struct Modal {
     pub group_codes: [u16; crate::profile::Group::COUNT],
     /// The last B, D, E, H and M words (#4102, #4107, #4108, #4111, #4113).
     pub last_words: LastWords,
-    /// The intermediate point of the last G28 or G30, per axis it named, in the coordinates the
-    /// programme gave it (G29 goes through it; a coordinate change shifts it with the system).
-    pub reference_mid: [Option<f64>; 3],
-    /// Between `G10 L3` / `G10 L50` (`L52`) and `G11`, the lines are data, not motion.
-    pub data_input: Option<DataInput>,
-    /// G63 tapping mode in force (group 15).
-    pub tapping_mode: bool,
-    /// G12.1 polar coordinate interpolation in force.
-    pub polar_interp: Option<PolarInterp>,
+}
+
+/// What the lathe's cycles keep from their first blocks for the blocks that follow.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CycleMemories {
+    /// G71 / G72 depth of cut and back-off from their first blocks (index 0 G71, 1 G72).
+    pub rough_data: [Option<(f64, f64)>; 2],
+    /// G73 relief Δi (radius), Δk and number of passes d from its first block.
+    pub pattern_data: Option<(f64, f64, u32)>,
+    /// G74 / G75 back-off e set by a first block (one value for both, as the parameter).
+    pub peck_back_off_mm: Option<f64>,
+    /// G90/G94 end point and taper of the last cycle block, for the blocks that repeat it.
+    pub box_cycle: BoxMemory,
+}
+
+/// The modal state a controller carries from block to block, split by owner. Each part is
+/// [`Kept`]: a block that changes a part saves it first, so a block that alarms puts back what it
+/// changed ([`Modal::roll_back`]) and no block copies the whole state.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Modal {
+    pub modes: Kept<Modes>,
+    pub place: Kept<Place>,
+    pub notes: Kept<Notes>,
+    pub memory: Kept<CycleMemories>,
+    /// Polar coordinates, mirror image, scaling and rotation in force.
+    pub transform: Kept<Transforms>,
+    /// G22: the stored stroke check 2 area in force, machine coordinates (X a radius).
+    pub stroke2: Kept<Option<StrokeArea>>,
+    /// Where those coordinates are on the machine.
+    pub frame: Kept<Frame>,
+    /// Tool radius compensation (G40/G41/G42) and its held-back move.
+    pub comp: Kept<CompState>,
+    pub thread: Kept<ThreadState>,
+    pub drill: Kept<DrillData>,
 }
 
 /// G12.1 or G07.1 in force: the plane and the machine's Y before it (the plane's Y is the
@@ -446,19 +475,8 @@ pub struct LastWords {
 impl Modal {
     /// Power-on state of a profile.
     pub fn power_on(profile: &Profile) -> Modal {
-        Modal {
-            feed_warned: None,
-            assumed_warned: crate::profile::Letters::EMPTY,
-            pos: Vec3::default(),
-            rotary_deg: [0.0; 3],
-            transform: Transforms::default(),
-            stroke2: None,
-            frame: Frame { work: 1, ..Frame::default() },
+        let modes = Modes {
             motion: Motion::Rapid,
-            rough_data: [None; 2],
-            pattern_data: None,
-            peck_back_off_mm: None,
-            box_cycle: BoxMemory::default(),
             plane: if profile.kind == MachineKind::Lathe { Plane::ZX } else { Plane::XY },
             incremental: false,
             inch: false,
@@ -466,41 +484,83 @@ impl Modal {
             css: false,
             spindle: SpindleDir::Stopped,
             s_word: 0.0,
-            rpm_clamp: None,
             spindle_sel: 0,
             spindles: [(SpindleDir::Stopped, 0.0); crate::setup::MAX_SPINDLES],
+            rpm_clamp: None,
             spindle_position_mode: false,
             feed: None,
             tool: 0,
             return_initial: true,
-            comp: CompState::default(),
-            thread: ThreadState {
-                lead_mm: None,
-                j: None,
-                k: None,
-                starts: 1,
-                cycle_end: None,
-                taper_mm: 0.0,
-                rigid_rpm: None,
-                pending: None,
-                memory: None,
-                cycles: 0,
-                repair: false,
-                g76: None,
-                g78: None,
-                left_hand: false,
-            },
-            drill: DrillData::default(),
             ended: false,
-            group_codes: [0; crate::profile::Group::COUNT],
-            last_words: LastWords::default(),
-            reference_mid: [None; 3],
             data_input: None,
-            polar_interp: None,
             tapping_mode: false,
+            polar_interp: None,
+        };
+        let thread = ThreadState {
+            lead_mm: None,
+            j: None,
+            k: None,
+            starts: 1,
+            cycle_end: None,
+            taper_mm: 0.0,
+            rigid_rpm: None,
+            pending: None,
+            memory: None,
+            cycles: 0,
+            repair: false,
+            g76: None,
+            g78: None,
+            left_hand: false,
+        };
+        Modal {
+            modes: Kept::new(modes),
+            place: Kept::new(Place { pos: Vec3::default(), rotary_deg: [0.0; 3], reference_mid: [None; 3] }),
+            notes: Kept::new(Notes {
+                feed_warned: None,
+                assumed_warned: crate::profile::Letters::EMPTY,
+                group_codes: [0; crate::profile::Group::COUNT],
+                last_words: LastWords::default(),
+            }),
+            memory: Kept::new(CycleMemories { rough_data: [None; 2], pattern_data: None, peck_back_off_mm: None, box_cycle: BoxMemory::default() }),
+            transform: Kept::new(Transforms::default()),
+            stroke2: Kept::new(None),
+            frame: Kept::new(Frame { work: 1, ..Frame::default() }),
+            comp: Kept::new(CompState::default()),
+            thread: Kept::new(thread),
+            drill: Kept::new(DrillData::default()),
         }
     }
 
+    /// A block begins: what each part is now is what an alarm in the block goes back to.
+    pub fn begin_block(&mut self) {
+        self.modes.begin();
+        self.place.begin();
+        self.notes.begin();
+        self.memory.begin();
+        self.transform.begin();
+        self.stroke2.begin();
+        self.frame.begin();
+        self.comp.begin();
+        self.thread.begin();
+        self.drill.begin();
+    }
+
+    /// The block alarmed: every part it changed goes back to what it was at [`Modal::begin_block`].
+    pub fn roll_back(&mut self) {
+        self.modes.roll_back();
+        self.place.roll_back();
+        self.notes.roll_back();
+        self.memory.roll_back();
+        self.transform.roll_back();
+        self.stroke2.roll_back();
+        self.frame.roll_back();
+        self.comp.roll_back();
+        self.thread.roll_back();
+        self.drill.roll_back();
+    }
+}
+
+impl Modes {
     /// The G96 surface speed in m/min: S is feet per minute under G20.
     pub fn surface_m_min(&self) -> f64 {
         if self.inch { self.s_word * 0.3048 } else { self.s_word }
@@ -522,6 +582,60 @@ impl Modal {
         // G50 S clamps the speed that G96 computes (TDi help G96/97).
         let clamp_rpm = if self.css { self.rpm_clamp.unwrap_or(max_rpm).min(max_rpm) } else { max_rpm };
         SpindleSpeed { sign, css: self.css, clamp_rpm, surface_m_min: self.surface_m_min(), s_rpm: self.s_word.min(max_rpm) }
+    }
+}
+
+/// One part of the modal state, and what it was before the block in progress first changed it.
+///
+/// Reading goes through `Deref`; every change goes through `DerefMut`, which saves the part
+/// first. So the type proves what a roll-back needs: no code can change a part without saving
+/// it, and a block costs a copy of the parts it changes (a hole block: the place and the drilling
+/// data, about 150 bytes), not of the whole state (1,720 bytes, copied before every block until
+/// 2026-11).
+#[derive(Debug, Clone, Copy)]
+pub struct Kept<T: Copy> {
+    now: T,
+    before: Option<T>,
+}
+
+impl<T: Copy> Kept<T> {
+    const fn new(value: T) -> Self {
+        Kept { now: value, before: None }
+    }
+
+    fn begin(&mut self) {
+        self.before = None;
+    }
+
+    fn roll_back(&mut self) {
+        if let Some(before) = self.before.take() {
+            self.now = before;
+        }
+    }
+}
+
+impl<T: Copy> std::ops::Deref for Kept<T> {
+    type Target = T;
+    #[inline]
+    fn deref(&self) -> &T {
+        &self.now
+    }
+}
+
+impl<T: Copy> std::ops::DerefMut for Kept<T> {
+    #[inline]
+    fn deref_mut(&mut self) -> &mut T {
+        if self.before.is_none() {
+            self.before = Some(self.now);
+        }
+        &mut self.now
+    }
+}
+
+/// Two states are equal when their parts are (what a part was before a block is not compared).
+impl<T: Copy + PartialEq> PartialEq for Kept<T> {
+    fn eq(&self, other: &Self) -> bool {
+        self.now == other.now
     }
 }
 

@@ -118,3 +118,34 @@ fn events_are_pulled_line_by_line() {
     let rest = events.count();
     assert!(rest > 99_000);
 }
+
+/// Block atomicity without a copy of the whole state: a block that changes the modes (G91,
+/// G20), the frame (G54 to G55) and the drilling memory before it alarms (G01 with no F ever
+/// given) leaves every part as it was, and the next block runs from there.
+#[test]
+fn a_block_that_changed_parts_before_its_alarm_is_rolled_back() {
+    let p = profile::by_name("fanuc0m").unwrap();
+    let reader = Reader::new(p.alarm_style);
+    let mut interp = Interpreter::new(Params::defaults(p), Switches::default());
+    for (i, l) in ["G21 G17 G90 G54 G00 X1. Y2. Z10.", "G81 X5. Y5. Z-2. R1. F100.", "G80"].iter().enumerate() {
+        for b in reader.read_line(i as u32 + 1, l.as_bytes()).blocks.into_iter().flatten() {
+            interp.execute(&b).unwrap();
+        }
+    }
+    let mut fresh = Interpreter::new(Params::defaults(p), Switches::default());
+    for (i, l) in ["G21 G17 G90 G54 G00 X1. Y2. Z10.", "G81 X5. Y5. Z-2. R1. F100.", "G80"].iter().enumerate() {
+        for b in reader.read_line(i as u32 + 1, l.as_bytes()).blocks.into_iter().flatten() {
+            fresh.execute(&b).unwrap();
+        }
+    }
+    let before = *interp.state();
+    let bad = reader.read_line(4, b"G91 G20 G55 G83 X1. Y1. Z-1. R1. Q0. F100.").blocks.into_iter().flatten().next().unwrap();
+    assert!(interp.execute(&bad).is_err(), "Q0 in G83 alarms");
+    assert_eq!(interp.state(), &before);
+    assert!(!interp.state().modes.incremental && !interp.state().modes.inch && interp.state().frame.work == 1);
+    // The next block runs as it would had the bad block never been read.
+    let next = reader.read_line(5, b"G01 X3. Y4.").blocks.into_iter().flatten().next().unwrap();
+    let (a, b) = (interp.execute(&next).unwrap(), fresh.execute(&next).unwrap());
+    assert_eq!(a.records, b.records);
+    assert_eq!(interp.state(), fresh.state());
+}

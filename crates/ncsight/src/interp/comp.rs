@@ -75,7 +75,7 @@ pub(super) fn command(step: &mut Step, side: i8, d: Option<u32>, span: Span, arc
         return Err(step.alarm(Rule::ValueOutOfRange, span, format!("offset {number}: the radius with its wear is negative ({radius:.3} mm)")));
     }
     // In polar coordinate interpolation the tip direction is 0 (GSK980TDi help text, G12.1 note 6).
-    let tip = if lathe && step.st.polar_interp.is_none() {
+    let tip = if lathe && step.st.modes.polar_interp.is_none() {
         let (dx, dz) = comp::tip_direction(e.tip);
         Vec3::new(radius * dx, 0.0, radius * dz)
     } else {
@@ -108,7 +108,7 @@ pub(super) fn command(step: &mut Step, side: i8, d: Option<u32>, span: Span, arc
 /// `op` (a move) with its in-plane coordinates at centre `c` (its normal-axis ones kept), as the
 /// controller positions it.
 fn at_point(step: &Step, op: Op, c: P2) -> Op {
-    let plane = step.st.plane;
+    let plane = step.st.modes.plane;
     let tip = step.st.comp.tip;
     let place = |p: Vec3| comp::with_local(&p, c, plane) + tip;
     match op {
@@ -121,7 +121,7 @@ fn at_point(step: &Step, op: Op, c: P2) -> Op {
 /// A record the stage takes: a move in the plane is held (the one held before is made, with
 /// the corner between); anything else waits behind a held move, or goes out now.
 pub(super) fn take(step: &mut Step, span: Span, n: Option<u32>, op: Op) {
-    let plane = step.st.plane;
+    let plane = step.st.modes.plane;
     match Seg::of(&op, plane) {
         Some(seg) if !seg.is_point() => plane_move(step, span, n, op, seg),
         _ => {
@@ -144,7 +144,7 @@ pub(super) fn take(step: &mut Step, span: Span, n: Option<u32>, op: Op) {
 }
 
 fn plane_move(step: &mut Step, span: Span, n: Option<u32>, op: Op, seg: Seg) {
-    let plane = step.st.plane;
+    let plane = step.st.modes.plane;
     let (side, r) = (step.st.comp.side as f64, step.st.comp.radius_mm);
     step.out.comp_plane_move = true;
     step.st.comp.idle_blocks = 0;
@@ -183,7 +183,7 @@ fn plane_move(step: &mut Step, span: Span, n: Option<u32>, op: Op, seg: Seg) {
 /// The first move in the plane with nothing held (`start3` its start): the start-up, held; an
 /// arc after a break in the path is reached by a straight move to its offset start.
 fn start_up(step: &mut Step, span: Span, n: Option<u32>, op: Op, seg: Seg, start3: Vec3) {
-    let plane = step.st.plane;
+    let plane = step.st.modes.plane;
     let (side, r) = (step.st.comp.side as f64, step.st.comp.radius_mm);
     // Start-up (type A), or a new start after the path was broken off.
     let centre = step.st.comp.actual.take().unwrap_or(start3 - step.st.comp.tip);
@@ -215,7 +215,7 @@ fn start_up(step: &mut Step, span: Span, n: Option<u32>, op: Op, seg: Seg, start
 /// an outer corner: the held move is made, then the arc, and this move is held. Whether the
 /// corner is dealt with (made, or failed); false: it is made as without G39.
 fn outer_corner_arc(step: &mut Step, span: Span, n: Option<u32>, op: Op, held: &Record, hseg: &Seg, seg: &Seg) -> bool {
-    let plane = step.st.plane;
+    let plane = step.st.modes.plane;
     let start3 = op.start_point().unwrap_or_default();
     let (side, r) = (step.st.comp.side as f64, step.st.comp.radius_mm);
     // G39 between the held move and this one: an outer corner is an arc about the corner point,
@@ -269,7 +269,7 @@ fn inside_corner_override(step: &Step, op: Op, held: &Record, hseg: &Seg, seg: &
 /// The moves from the held move's offset end around the corner to this move's offset start
 /// (`start3` its start), as rapids or feeds as this move is.
 fn outer_corner_moves(step: &mut Step, span: Span, n: Option<u32>, op: Op, corner: &comp::Corner, start3: Vec3) {
-    let plane = step.st.plane;
+    let plane = step.st.modes.plane;
     // The moves around an outer corner, at the next move's rate.
     let mut at = corner.first_end;
     for p in corner.between.iter().copied().chain(std::iter::once(corner.second_start)) {
@@ -347,7 +347,7 @@ pub(super) fn feed_of(op: &Op) -> f64 {
 /// `slow_end_mm`: the last this much of it runs at G62's inner-corner override (and its first
 /// `slow_start_mm`, when an inner corner came before it).
 fn make_held(step: &mut Step, end: P2, slow_end_mm: f64) -> Result<Vec3, CompError> {
-    let plane = step.st.plane;
+    let plane = step.st.modes.plane;
     let (side, r) = (step.st.comp.side as f64, step.st.comp.radius_mm);
     let queue = std::mem::take(step.queue);
     let Some((held, rest)) = queue.split_first() else {
@@ -384,7 +384,7 @@ fn make_held(step: &mut Step, end: P2, slow_end_mm: f64) -> Result<Vec3, CompErr
         let percent = step.profile.frame.corner_override.map_or(100.0, |k| step.params.get(k.percent));
         for (k, piece) in slowed(made, slow_start_mm, slow_end_mm, percent / 100.0).into_iter().enumerate() {
             // The pieces run on without stopping: only the first accelerates.
-            if k == 0 || step.st.polar_interp.is_some() {
+            if k == 0 || step.st.modes.polar_interp.is_some() {
                 step.push_record(held.span, held.n, piece);
             } else {
                 step.push_machine(held.span, held.n, piece, Some(0.0));
@@ -419,7 +419,7 @@ pub(super) fn break_off(step: &mut Step) {
     if step.queue.is_empty() {
         return;
     }
-    let plane = step.st.plane;
+    let plane = step.st.modes.plane;
     let held = step.queue[0].clone();
     let hseg = Seg::of(&held.op, plane).expect("the queue's first record is a move in the plane");
     let (side, r) = (step.st.comp.side as f64, step.st.comp.radius_mm);
@@ -448,11 +448,11 @@ pub(super) fn break_off(step: &mut Step) {
 /// on the compensated side, clockwise with G41 and counter-clockwise with G42; the path goes on
 /// from there.
 pub(super) fn corner_arc(step: &mut Step, words: &mut super::Words, span: Span) -> Result<(), Diagnostic> {
-    let plane = step.st.plane;
+    let plane = step.st.modes.plane;
     let (ia, ib, _) = plane.axes();
     let centre_letters = [b'I', b'J', b'K'];
     let (la, lb) = (centre_letters[ia], centre_letters[ib]);
-    let corner = step.st.pos;
+    let corner = step.st.place.pos;
     let direction = if words.has(la) || words.has(lb) {
         let a = words.take(la).map(|w| step.length(w)).transpose()?.unwrap_or(0.0);
         let b = words.take(lb).map(|w| step.length(w)).transpose()?.unwrap_or(0.0);
@@ -486,7 +486,7 @@ pub(super) fn corner_arc(step: &mut Step, words: &mut super::Words, span: Span) 
 
 /// G39 with a direction `d` from the corner (the held move's programmed end `corner`).
 fn directed_corner_arc(step: &mut Step, span: Span, d: P2, corner: Vec3) -> Result<(), Diagnostic> {
-    let plane = step.st.plane;
+    let plane = step.st.modes.plane;
     let (side, r) = (step.st.comp.side as f64, step.st.comp.radius_mm);
     if d.len() < 1e-9 {
         return Err(step.alarm(Rule::ValueOutOfRange, span, "G39: the direction given is of length 0"));
@@ -531,7 +531,7 @@ fn directed_corner_arc(step: &mut Step, span: Span, d: P2, corner: Vec3) -> Resu
 /// the held move ends perpendicular; the controller's limit of such blocks is an alarm (GSK980TDi
 /// help text, G40-G42 note 1). The programme's end cancels compensation (note 3).
 pub(super) fn end_of_block(step: &mut Step) -> Result<(), Diagnostic> {
-    if step.st.ended {
+    if step.st.modes.ended {
         break_off(step);
         step.st.comp.side = 0;
         return Ok(());

@@ -24,7 +24,7 @@ pub(super) fn increments(step: &Step, w: &Word, code: &str) -> Result<f64, Diagn
             format!("{}: {code} gives this in least input increments, without a decimal point", w.text()),
         ));
     }
-    let unit = if step.st.inch { 0.0001 * 25.4 } else { 0.001 };
+    let unit = if step.st.modes.inch { 0.0001 * 25.4 } else { 0.001 };
     Ok(w.value * unit)
 }
 
@@ -170,7 +170,7 @@ fn cut(step: &mut Step, words: &mut Words, name: &str, kind: Compound, data: G78
         None => return Err(cycle_alarm(step, name, "the first depth Q(dd) is missing")),
     };
     let rpm = step.follow_rpm(name)?;
-    let a = step.st.pos;
+    let a = step.st.place.pos;
     let (c, _) = axis_target(step, words)?;
     if (c.z - a.z).abs() < 1e-9 {
         return Err(cycle_alarm(step, name, "the end point has the start point's Z: it cuts no face thread"));
@@ -248,12 +248,12 @@ pub(super) fn tap(step: &mut Step, words: &mut Words) -> Result<(), Diagnostic> 
     }
     // Help note 1: the spindle must turn before G33, in the tap's direction.
     let rpm = step.follow_rpm("G33")?;
-    let a = step.st.pos;
+    let a = step.st.place.pos;
     let (bottom, _) = axis_target(step, words)?;
     if bottom == a {
         return Ok(());
     }
-    let position_mode = step.st.spindle_position_mode;
+    let position_mode = step.st.modes.spindle_position_mode;
     let first = step.out.records.len();
     // Steps 2-4: M05 at the bottom, wait for the stop, turn the other way.
     let reverse = [
@@ -268,7 +268,7 @@ pub(super) fn tap(step: &mut Step, words: &mut Words) -> Result<(), Diagnostic> 
         // Step 6: M05.
         step.emit(Op::Spindle { rpm: 0.0, surface_m_min: None, position_mode, oriented: false, p: step.spindle_p() });
     }
-    step.st.spindle = SpindleDir::Stopped;
+    step.st.modes.spindle = SpindleDir::Stopped;
     // Help note 4: single block and feed hold wait for the end of the tapping.
     for r in step.records_since(first) {
         r.hold = Hold::AfterRun;
@@ -303,7 +303,7 @@ pub(super) fn variable_lead(step: &mut Step, words: &mut Words, run_deg: Option<
     };
     let q = step.read_q(words, 0.001, false)?;
     let rpm = step.follow_rpm("G34")?;
-    let from = step.st.pos;
+    let from = step.st.place.pos;
     let (to, _) = axis_target(step, words)?;
     if to == from {
         return Ok(());

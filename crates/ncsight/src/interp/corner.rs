@@ -19,7 +19,7 @@ use crate::source::Span;
 /// corner between this block's move and the next, each a line or an arc.
 pub(super) fn words(step: &mut Step, words: &mut super::Words, rules: crate::profile::DrawingRules) -> Result<(), Diagnostic> {
     refuse_comma(step, words, rules)?;
-    let right_angle = if rules.right_angle && step.st.motion == crate::modal::Motion::Linear { right_angle_words(step, words, rules)? } else { None };
+    let right_angle = if rules.right_angle && step.st.modes.motion == crate::modal::Motion::Linear { right_angle_words(step, words, rules)? } else { None };
     let asked = match right_angle {
         Some(asked) => Some(asked),
         None => drawing_words(step, words, rules)?,
@@ -161,7 +161,7 @@ pub(super) fn waits(step: &Step) -> bool {
 /// A record the stage takes: a move in the plane is held (the one held before is made, with
 /// the corner between); anything else waits behind a held move, or goes on now.
 pub(super) fn take(step: &mut Step, span: Span, n: Option<u32>, op: Op) {
-    match Seg::of(&op, step.st.plane) {
+    match Seg::of(&op, step.st.modes.plane) {
         // A T block's offset movement (the block bypasses compensation) waits as it is.
         Some(seg) if !seg.is_point() && !(step.bypass_comp && !step.contour) => plane_move(step, span, n, op, seg),
         _ if !step.corners.is_empty() => step.corners.push(Record::of_block(span, n, op)),
@@ -186,7 +186,7 @@ fn pass(step: &mut Step, span: Span, n: Option<u32>, op: Op) {
 /// Make the held move from where it starts to `end` (in the plane), then `then` (its chamfer
 /// or corner arc), then what waited behind it. The queue is left empty.
 fn make_held(step: &mut Step, end: geometry::P2, then: Option<Op>) {
-    let plane = step.st.plane;
+    let plane = step.st.modes.plane;
     let queue = std::mem::take(step.corners);
     let Some((held, rest)) = queue.split_first() else {
         return;
@@ -220,7 +220,7 @@ fn plane_move(step: &mut Step, span: Span, n: Option<u32>, op: Op, seg: Seg) {
     if step.st.comp.angle_line.is_some() {
         return super::drawing::refuse(step);
     }
-    let plane = step.st.plane;
+    let plane = step.st.modes.plane;
     let start3 = op.start_point().unwrap_or_default();
     let mut next_start = start3;
     if let Some(held) = step.corners.first().cloned() {
@@ -308,7 +308,7 @@ pub(super) fn break_off(step: &mut Step) {
         }
     }
     if let Some(held) = step.corners.first() {
-        let end = Seg::of(&held.op, step.st.plane).expect("the corner queue's first record is a move in the plane").to();
+        let end = Seg::of(&held.op, step.st.modes.plane).expect("the corner queue's first record is a move in the plane").to();
         make_held(step, end, None);
     }
 }
@@ -319,7 +319,7 @@ pub(super) fn end_of_block(step: &mut Step) -> Result<(), Diagnostic> {
     if let Some(held) = step.st.comp.angle_line {
         return super::drawing::end_of_block(step, held);
     }
-    if step.st.ended || !step.st.comp.held_corner.is_some_and(|c| c.span == step.span) {
+    if step.st.modes.ended || !step.st.comp.held_corner.is_some_and(|c| c.span == step.span) {
         break_off(step);
     }
     Ok(())

@@ -21,9 +21,9 @@ fn local(p: &Vec3, a: usize, b: usize) -> Pt {
 /// (help text G6.2 note 6), its curve words read all the same.
 pub(super) fn block(step: &mut Step, words: &mut Words, kind: Curve) -> Result<(), Diagnostic> {
     let code = step.profile.name_of(GFn::Curve(kind));
-    let plane = step.st.plane;
+    let plane = step.st.modes.plane;
     let (a, b, _) = plane.axes();
-    let from = step.st.pos;
+    let from = step.st.place.pos;
     let (to, _) = axis_target(step, words)?;
     match kind {
         Curve::ThreePoint { mid_absolute } => three_point(step, words, code, mid_absolute, from, to),
@@ -64,7 +64,7 @@ pub(super) fn block(step: &mut Step, words: &mut Words, kind: Curve) -> Result<(
             let p = match words.take(b'P') {
                 Some(w) if w.value != 0.0 && w.value.is_finite() => {
                     // Least input increment: 0.001 mm, or 0.0001 inch under G20.
-                    let (unit, increment) = if step.st.inch { (25.4, 0.0001) } else { (1.0, 0.001) };
+                    let (unit, increment) = if step.st.modes.inch { (25.4, 0.0001) } else { (1.0, 0.001) };
                     let v = if w.decimal { w.value } else { w.value * increment } * unit;
                     if !w.decimal && w.value.abs() < 100.0 {
                         let msg = format!("{}: P is in least input increments without a decimal point: {} mm (P2000 is 2 mm)", w.text(), shown(v.abs(), 4));
@@ -110,7 +110,7 @@ fn curve_alarm(step: &Step, code: &str, e: CurveError) -> Diagnostic {
 /// G05 (I/K the middle point from the start, as radii) or G05.1 (I/K its coordinates): the arc
 /// through the three points, the way they turn.
 fn three_point(step: &mut Step, words: &mut Words, code: &'static str, mid_absolute: bool, from: Vec3, to: Vec3) -> Result<(), Diagnostic> {
-    let plane = step.st.plane;
+    let plane = step.st.modes.plane;
     let (a, b, _) = plane.axes();
     let letter = |axis: usize| [b'I', b'J', b'K'][axis];
     let (wa, wb) = (words.take(letter(a)), words.take(letter(b)));
@@ -156,7 +156,7 @@ fn three_point(step: &mut Step, words: &mut Words, code: &'static str, mid_absol
 /// moves with them in proportion. The controller interpolates one curve: the time model
 /// accelerates once, at the first chord (the others carry a time constant of 0).
 fn chords(step: &mut Step, code: &'static str, from: Vec3, to: Vec3, pts: &[Pt]) -> Result<(), Diagnostic> {
-    let plane = step.st.plane;
+    let plane = step.st.modes.plane;
     let (a, b, n) = plane.axes();
     let count = pts.len();
     let corners: Vec<Vec3> = std::iter::once(from)

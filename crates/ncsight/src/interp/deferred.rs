@@ -77,7 +77,7 @@ impl Step<'_> {
             && self.corners.is_empty()
             && (self.bypass_comp || self.st.comp.side == 0)
             && self.st.comp.actual.is_none()
-            && self.st.polar_interp.is_none()
+            && self.st.modes.polar_interp.is_none()
     }
 
     /// Whether a cycle of `count` moves is deferred (true) or made now (false); past what either
@@ -123,7 +123,7 @@ impl Step<'_> {
         }
         if let Some(end) = end {
             // The tool offset's movement is made with the cycle's first move.
-            self.st.pos = end;
+            self.st.place.pos = end;
             self.st.frame.unmoved = Vec3::default();
         }
         let cuts = DeferredCuts { moves, feed, span: self.span, n: self.n, to_machine, ends_block: true };

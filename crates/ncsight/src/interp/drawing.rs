@@ -23,8 +23,8 @@ const UNKNOWN_REACH_MM: f64 = 1.0e4;
 
 /// The angle word of a G01 block (or G00, where the profile has the forms there), degrees.
 pub(super) fn angle<'w>(step: &mut Step, words: &mut Words<'w>, rules: DrawingRules) -> Option<(f64, &'w Word)> {
-    let rapid = step.st.motion == Motion::Rapid;
-    if !(step.st.motion == Motion::Linear || rapid && rules.angle_in_rapid) {
+    let rapid = step.st.modes.motion == Motion::Rapid;
+    if !(step.st.modes.motion == Motion::Linear || rapid && rules.angle_in_rapid) {
         return None;
     }
     let plain = super::corner::plain_letters(step, rules);
@@ -36,7 +36,7 @@ pub(super) fn angle<'w>(step: &mut Step, words: &mut Words<'w>, rules: DrawingRu
 /// What the block's line does: go to `target` (an end worked out from the angle, or as
 /// written), or wait for the next block (`None`: its angle alone).
 pub(super) fn line(step: &mut Step, rules: DrawingRules, angle: Option<(f64, &Word)>, target: Vec3, how: [Option<Given>; 3]) -> Result<Option<Vec3>, Diagnostic> {
-    let plane = step.st.plane;
+    let plane = step.st.modes.plane;
     let (ia, ib, _) = plane.axes();
     if let Some(held) = step.st.comp.angle_line {
         return close(step, held, angle, target, how).map(Some);
@@ -49,7 +49,7 @@ pub(super) fn line(step: &mut Step, rules: DrawingRules, angle: Option<(f64, &Wo
         // FANUC alarm 212: direct drawing dimensions in the ZX plane only.
         return Err(step.alarm(Rule::IllegalPlane, w.span, format!("{}: a line given by its angle is programmed in the ZX plane (G18) only", w.text())));
     }
-    let start = step.st.pos + step.st.frame.unmoved;
+    let start = step.st.place.pos + step.st.frame.unmoved;
     let from = geometry::local(&start, plane);
     let names = plane_names(plane);
     match (given[ia], given[ib]) {
@@ -93,7 +93,7 @@ fn plane_names(plane: Plane) -> (&'static str, &'static str) {
 fn open(step: &mut Step, deg: f64, w: &Word, target: Vec3) -> Result<(), Diagnostic> {
     let why = if step.bypass_comp && !step.contour {
         Some("in a block that radius compensation does not act in (a T word, a cycle)")
-    } else if step.carry.is_some() || step.st.polar_interp.is_some() {
+    } else if step.carry.is_some() || step.st.modes.polar_interp.is_some() {
         Some("under a coordinate transform or G12.1/G07.1")
     } else {
         None
@@ -101,14 +101,14 @@ fn open(step: &mut Step, deg: f64, w: &Word, target: Vec3) -> Result<(), Diagnos
     if let Some(why) = why {
         return Err(step.alarm(Rule::NotSupported, w.span, format!("{}: a line given by its angle alone {why} is not simulated by ncsight yet", w.text())));
     }
-    let plane = step.st.plane;
-    let from = step.st.pos;
+    let plane = step.st.modes.plane;
+    let from = step.st.place.pos;
     // The line starts where the controller shows the tool (a tool offset's movement not made
     // yet is made with it, as with any move).
     let start = geometry::local(&target, plane);
     let reach = geometry::with_local(&target, start.plus(geometry::direction(deg).scale(UNKNOWN_REACH_MM)), plane);
     step.st.frame.unmoved = Vec3::default();
-    let op = match step.st.motion {
+    let op = match step.st.modes.motion {
         Motion::Rapid => Op::Rapid { from, to: reach },
         // Under G96 the feed per minute is the start point's (the end is not known yet).
         _ => Op::Feed { from, to: reach, feed_mm_min: step.cutting_feed(super::What::Code(crate::profile::GFn::Linear), &|_| from)? },
@@ -121,7 +121,7 @@ fn open(step: &mut Step, deg: f64, w: &Word, target: Vec3) -> Result<(), Diagnos
 /// The block after a line of an angle alone: its absolute end point and its angle give its line;
 /// the held line ends where the two meet, and this block's line starts there.
 fn close(step: &mut Step, held: AngleLine, angle: Option<(f64, &Word)>, target: Vec3, how: [Option<Given>; 3]) -> Result<Vec3, Diagnostic> {
-    let plane = step.st.plane;
+    let plane = step.st.modes.plane;
     let (ia, ib, _) = plane.axes();
     let names = plane_names(plane);
     let end_given = how[ia] == Some(Given::Absolute) && how[ib] == Some(Given::Absolute);
@@ -157,7 +157,7 @@ fn close(step: &mut Step, held: AngleLine, angle: Option<(f64, &Word)>, target: 
     let first = step.corners.first_mut().expect("a line of an angle alone is held in the corner stage");
     first.op = first.op.with_ends(first.op.start_point().expect("the held line is a move"), end);
     step.st.comp.angle_line = None;
-    step.st.pos = end;
+    step.st.place.pos = end;
     // This block's axes not written count from there.
     let mut target = target;
     for axis in [0, 1, 2] {
@@ -171,7 +171,7 @@ fn close(step: &mut Step, held: AngleLine, angle: Option<(f64, &Word)>, target: 
 /// After a block while a line of an angle alone waits for its end: one block without a move may
 /// come between (note 7); the programme's end may not.
 pub(super) fn end_of_block(step: &mut Step, mut held: AngleLine) -> Result<(), Diagnostic> {
-    if step.st.ended {
+    if step.st.modes.ended {
         return Err(step.alarm(Rule::DrawingEndNotFound, step.span, "the programme ends before the line of an angle alone is given its end (the next block's line; FANUC alarm 058)"));
     }
     if held.span != step.span {

@@ -22,8 +22,8 @@ fn letter(axis: usize) -> u8 {
 
 /// Take the hole words (R, Q, P, the drilling-axis word) into the modal data.
 fn take_hole_words(step: &mut Step, words: &mut Words) -> Result<(), Diagnostic> {
-    let (_, _, n) = step.st.plane.axes();
-    let inc = step.st.incremental;
+    let (_, _, n) = step.st.modes.plane.axes();
+    let inc = step.st.modes.incremental;
     if let Some(w) = words.take(letter(n)) {
         let v = step.length(w)?;
         step.st.drill.bottom = Some((v, inc));
@@ -108,17 +108,17 @@ fn hole_end(hole: &Hole, from: Vec3, global: impl Fn(drill::Local, &Vec3) -> Vec
 
 /// Emit the steps of one hole, mapped by `global`; single block stops after the hole.
 fn emit_hole(step: &mut Step, hole: &Hole, global: impl Fn(drill::Local, &Vec3) -> Vec3) -> usize {
-    let (position_mode, spindle_p) = (step.st.spindle_position_mode, step.spindle_p());
+    let (position_mode, spindle_p) = (step.st.modes.spindle_position_mode, step.spindle_p());
     let first = step.out.records.len();
     if step.out.discard_records {
         // Nothing is kept: only where the hole leaves the tool matters.
-        if let Some(end) = hole_end(hole, step.st.pos, &global) {
-            step.st.pos = end;
+        if let Some(end) = hole_end(hole, step.st.place.pos, &global) {
+            step.st.place.pos = end;
         }
         return first;
     }
     drill::expand_each(hole, &mut |s| {
-        if let Some(op) = step_op(s, step.st.pos, &global, position_mode, spindle_p) {
+        if let Some(op) = step_op(s, step.st.place.pos, &global, position_mode, spindle_p) {
             step.emit(op);
         }
     });
@@ -188,7 +188,7 @@ fn may_defer(step: &Step, kind: DrillKind) -> bool {
         && step.st.comp.side == 0
         && !step.tables.limited
         && step.st.stroke2.is_none()
-        && !step.st.tapping_mode
+        && !step.st.modes.tapping_mode
         && !matches!(kind, DrillKind::G74 | DrillKind::G84)
 }
 
@@ -235,8 +235,8 @@ fn from_start_block(step: &mut Step, words: &mut Words, kind: DrillKind) -> Resu
     if (place_at.is_none() && bottom_at.is_none()) || repeats == 0 {
         return Ok(());
     }
-    let target = place_at.unwrap_or(step.st.pos.axis(place));
-    let start = step.st.pos.axis(along);
+    let target = place_at.unwrap_or(step.st.place.pos.axis(place));
+    let start = step.st.place.pos.axis(along);
     let axis_name = axis_name(along);
     let (bottom, _) = bottom_in_force(step, code, along)?;
     if bottom == start {
@@ -256,7 +256,7 @@ fn from_start_block(step: &mut Step, words: &mut Words, kind: DrillKind) -> Resu
     let rpm = step.rpm_here();
     let global = lathe_global(place, along);
     for _ in 0..repeats {
-        let from_g = step.st.pos;
+        let from_g = step.st.place.pos;
         let at = [target, from_g.y];
         let feed = step.cutting_feed(code, &|u| global([at[0], at[1], start + (bottom - start) * u], &from_g))?;
         let hole = Hole {
@@ -284,7 +284,7 @@ fn from_start_block(step: &mut Step, words: &mut Words, kind: DrillKind) -> Resu
 /// and drills along Z, G87 the other way round; only in the G18 plane (GSK help text G83/87
 /// note 2; a FANUC lathe has no other).
 fn lathe_axes(step: &Step, kind: DrillKind) -> Result<(usize, usize), Diagnostic> {
-    if step.st.plane != crate::motion::Plane::ZX {
+    if step.st.modes.plane != crate::motion::Plane::ZX {
         return Err(step.alarm(Rule::PlaneMismatch, step.span, format!("{} drills only in the G18 plane (GSK980TDi help, G83/87 note 2)", kind.code())));
     }
     Ok(if kind.along_x() { (2, 0) } else { (0, 2) })
@@ -318,7 +318,7 @@ fn lathe_word(step: &mut Step, words: &mut Words, axis: usize) -> Result<Option<
 /// A lathe axis word as a position on that axis: absolute, or from where the tool stands.
 fn lathe_position(step: &mut Step, words: &mut Words, axis: usize) -> Result<Option<f64>, Diagnostic> {
     let word = lathe_word(step, words, axis)?;
-    Ok(word.map(|(v, inc)| if inc { step.st.pos.axis(axis) + v } else { v }))
+    Ok(word.map(|(v, inc)| if inc { step.st.place.pos.axis(axis) + v } else { v }))
 }
 
 /// How a lathe cycle's drilling axis is named in its messages.
@@ -344,8 +344,8 @@ fn lathe_from_r_block(step: &mut Step, words: &mut Words, kind: DrillKind) -> Re
     let (place, along) = lathe_axes(step, kind)?;
     if step.st.drill.kind != Some(kind) {
         // A new cycle (or the other one: its bottom lies on the other axis).
-        step.st.drill = Default::default();
-        step.st.drill.initial = step.st.pos.axis(along);
+        *step.st.drill = Default::default();
+        step.st.drill.initial = step.st.place.pos.axis(along);
         step.st.drill.kind = Some(kind);
     }
     let drilling = matches!(kind, DrillKind::FaceFromR | DrillKind::SideFromR);
@@ -374,7 +374,7 @@ fn lathe_from_r_block(step: &mut Step, words: &mut Words, kind: DrillKind) -> Re
     if let Some(b) = lathe_word(step, words, along)? {
         step.st.drill.bottom = Some(b);
     }
-    let target = lathe_position(step, words, place)?.unwrap_or(step.st.pos.axis(place));
+    let target = lathe_position(step, words, place)?.unwrap_or(step.st.place.pos.axis(place));
     if !drills || repeats == 0 {
         return Ok(());
     }
@@ -395,7 +395,7 @@ fn lathe_from_r_block(step: &mut Step, words: &mut Words, kind: DrillKind) -> Re
     let rpm = step.rpm_here();
     let global = lathe_global(place, along);
     for _ in 0..repeats {
-        let from_g = step.st.pos;
+        let from_g = step.st.place.pos;
         let at = [target, from_g.y];
         let feed = step.cutting_feed(code, &|u| global([at[0], at[1], r_level + (bottom - r_level) * u], &from_g))?;
         let hole = Hole {
@@ -406,7 +406,7 @@ fn lathe_from_r_block(step: &mut Step, words: &mut Words, kind: DrillKind) -> Re
             r: r_level,
             bottom,
             // G-code systems B and C have G98/G99 (the initial level at power on); A has none.
-            return_initial: step.st.return_initial,
+            return_initial: step.st.modes.return_initial,
             q,
             dwell_s: d.dwell_s.unwrap_or(0.0),
             d: d_mm,
@@ -470,7 +470,7 @@ fn rigid_tap_block(step: &mut Step, words: &mut Words, kind: DrillKind) -> Resul
                 return Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("{}: the lead of {code} must be other than 0 and at most {} mm", w.text(), super::thread::MAX_LEAD_MM)));
             }
             step.st.drill.tap_left = lead < 0.0;
-            step.st.feed = Some(lead.abs());
+            step.st.modes.feed = Some(lead.abs());
             step.st.thread.lead_mm = None;
             lead.abs()
         }
@@ -495,12 +495,12 @@ fn rigid_tap_block(step: &mut Step, words: &mut Words, kind: DrillKind) -> Resul
     step.st.drill.tap_waiting = false;
     let dwell_s = step.st.drill.dwell_s.unwrap_or(0.0);
     for _ in 0..repeats {
-        let mut start = step.st.pos;
+        let mut start = step.st.place.pos;
         if let Some(t) = target {
             start.set_axis(place, t);
         }
-        if start != step.st.pos {
-            step.emit(Op::Rapid { from: step.st.pos, to: start });
+        if start != step.st.place.pos {
+            step.emit(Op::Rapid { from: step.st.place.pos, to: start });
         }
         let mut end = start;
         end.set_axis(along, bottom);
@@ -551,11 +551,11 @@ pub(super) fn block(step: &mut Step, words: &mut Words, kind: DrillKind, enterin
     if kind.on_lathe() {
         return lathe_from_r_block(step, words, kind);
     }
-    let plane = step.st.plane;
+    let plane = step.st.modes.plane;
     let (a, b, n) = plane.axes();
     if entering && step.st.drill.kind.is_none() {
         // The initial level is where the tool stands when the cycle mode is entered (docs/reference/behaviour.md).
-        step.st.drill.initial = step.st.pos.axis(n);
+        step.st.drill.initial = step.st.place.pos.axis(n);
     }
     step.st.drill.kind = Some(kind);
     let drills = words.has(letter(a)) || words.has(letter(b)) || words.has(letter(n)) || words.has(b'R');
@@ -567,7 +567,7 @@ pub(super) fn block(step: &mut Step, words: &mut Words, kind: DrillKind, enterin
         return Ok(());
     }
     let (r, bottom) = hole_levels(step, kind)?;
-    if kind == DrillKind::G87 && !step.st.return_initial {
+    if kind == DrillKind::G87 && !step.st.modes.return_initial {
         step.warn(Rule::ReturnLevel, step.span, "G87 returns to the initial level even under G99 (the R level is below the part)");
     }
     let rpm = step.rpm_here();
@@ -582,7 +582,7 @@ pub(super) fn block(step: &mut Step, words: &mut Words, kind: DrillKind, enterin
         initial: d.initial,
         r,
         bottom,
-        return_initial: step.st.return_initial,
+        return_initial: step.st.modes.return_initial,
         q: d.q.unwrap_or(0.0),
         dwell_s: d.dwell_s.unwrap_or(0.0),
         d: peck_retract_mm(step, kind),
@@ -602,11 +602,11 @@ fn hole_position(step: &mut Step, words: &mut Words, a: usize, b: usize) -> Resu
     // Positioning words in the plane.
     // Kept in scalars, not arrays written element by element: this runs for every hole.
     let (mut delta_a, mut delta_b) = (0.0, 0.0);
-    let (mut target_a, mut target_b) = (step.st.pos.axis(a), step.st.pos.axis(b));
+    let (mut target_a, mut target_b) = (step.st.place.pos.axis(a), step.st.place.pos.axis(b));
     for (delta, target, axis) in [(&mut delta_a, &mut target_a, a), (&mut delta_b, &mut target_b, b)] {
         if let Some(w) = words.take(letter(axis)) {
             let v = step.length(w)?;
-            if step.st.incremental {
+            if step.st.modes.incremental {
                 *delta = v;
                 *target += v;
             } else {
@@ -661,17 +661,17 @@ fn tapping_warnings(step: &mut Step, kind: DrillKind, rpm: f64) {
     let code = kind.code();
     if matches!(kind, DrillKind::G74 | DrillKind::G84) {
         let (want, name) = if kind == DrillKind::G84 { (SpindleDir::Positive, "M03") } else { (SpindleDir::Negative, "M04") };
-        if step.st.spindle != want {
+        if step.st.modes.spindle != want {
             let msg = format!("{code} taps with the spindle turning {name}-wise; it is not (FANUC 0-M manual, canned cycles: program {name} before the cycle)");
             step.warn(Rule::TapDirection, step.span, msg);
         }
     }
     if matches!(kind, DrillKind::G74 | DrillKind::G84) {
         // The pitch the feed and speed make (seed 003: F/S is the pitch): a word for F/S slips.
-        if let (Some(f), true) = (step.st.feed, rpm.abs() > 0.0) {
-            let pitch = if step.st.per_rev { f } else { f / rpm.abs() };
+        if let (Some(f), true) = (step.st.modes.feed, rpm.abs() > 0.0) {
+            let pitch = if step.st.modes.per_rev { f } else { f / rpm.abs() };
             if !(0.2..=10.0).contains(&pitch) {
-                let unit = if step.st.inch { 25.4 } else { 1.0 };
+                let unit = if step.st.modes.inch { 25.4 } else { 1.0 };
                 let msg = format!(
                     "{code}: F{} at {} rpm taps a pitch of {} mm; taps run from 0.2 to 10 mm (F = pitch x S under G94)",
                     crate::alarm::shown(f / unit, 4),
@@ -750,16 +750,16 @@ fn make_holes(step: &mut Step, template: &Hole, repeats: u32, (delta_a, delta_b)
     let kind = template.kind;
     let code = kind.code();
     let (r, bottom) = (template.r, template.bottom);
-    let plane = step.st.plane;
+    let plane = step.st.modes.plane;
     let (a, b, n) = plane.axes();
     let mut deferred = Vec::new();
     for k in 0..repeats {
-        if k > 0 && step.st.incremental {
+        if k > 0 && step.st.modes.incremental {
             // Under G91 each repeat moves by the increment again: equally spaced holes.
             target_a += delta_a;
             target_b += delta_b;
         }
-        let from_g = step.st.pos;
+        let from_g = step.st.place.pos;
         let from = [from_g.axis(a), from_g.axis(b), from_g.axis(n)];
         let at = [target_a, target_b];
         let feed = step.cutting_feed(code, &|u| {
@@ -769,8 +769,8 @@ fn make_holes(step: &mut Step, template: &Hole, repeats: u32, (delta_a, delta_b)
         let hole = Hole { from, at, feed, ..*template };
         if defer {
             // Laid out now, made as they are handed on: the tool is where the hole leaves it.
-            if let Some(end) = hole_end(&hole, step.st.pos, |l, _| plane.from_local(l)) {
-                step.st.pos = end;
+            if let Some(end) = hole_end(&hole, step.st.place.pos, |l, _| plane.from_local(l)) {
+                step.st.place.pos = end;
                 step.st.frame.unmoved = Vec3::default();
             }
             deferred.push(hole);
@@ -784,7 +784,7 @@ fn make_holes(step: &mut Step, template: &Hole, repeats: u32, (delta_a, delta_b)
         }
     }
     if !deferred.is_empty() && !step.out.discard_records {
-        let holes = DeferredHoles { holes: deferred, span: step.span, n: step.n, to_machine: step.tables.to_machine(&step.st.frame), plane, position_mode: step.st.spindle_position_mode, spindle_p: step.spindle_p() };
+        let holes = DeferredHoles { holes: deferred, span: step.span, n: step.n, to_machine: step.tables.to_machine(&step.st.frame), plane, position_mode: step.st.modes.spindle_position_mode, spindle_p: step.spindle_p() };
         step.out.deferred = Some(Box::new((step.out.records.len(), super::Deferred::Holes(holes))));
     }
     Ok(())

@@ -235,7 +235,7 @@ pub(super) fn reframe(step: &mut Step, change: impl FnOnce(&mut Frame)) {
     let before = step.tables.to_machine(&step.st.frame);
     change(&mut step.st.frame);
     let after = step.tables.to_machine(&step.st.frame);
-    step.st.pos = step.st.pos + before - after;
+    step.st.place.pos = step.st.place.pos + before - after;
     // Where the compensated tool waits moves with it.
     if let Some(a) = step.st.comp.actual {
         step.st.comp.actual = Some(a + before - after);
@@ -254,14 +254,14 @@ pub(super) fn set_coordinates(step: &mut Step, words: &mut Words) -> Result<(), 
     let (target, given) = axis_target(step, words)?;
     let st = &mut *step.st;
     // The position shown (the tool's plus an offset's movement not made yet) gets the values.
-    let shown = st.pos + st.frame.unmoved;
+    let shown = st.place.pos + st.frame.unmoved;
     for (a, _) in given.iter().enumerate().filter(|(_, g)| g.is_some()) {
         let shift = st.frame.shift.axis(a) + st.frame.local.axis(a) + shown.axis(a) - target.axis(a);
         st.frame.shift.set_axis(a, shift);
         st.frame.local.set_axis(a, 0.0);
     }
-    let moved = (target - st.frame.unmoved) - st.pos;
-    st.pos = target - st.frame.unmoved;
+    let moved = (target - st.frame.unmoved) - st.place.pos;
+    st.place.pos = target - st.frame.unmoved;
     // Where a compensated tool waits is in the new coordinates too.
     if let Some(a) = st.comp.actual {
         st.comp.actual = Some(a + moved);
@@ -306,7 +306,7 @@ pub(super) fn local(step: &mut Step, words: &mut Words) -> Result<(), Diagnostic
 /// FANUC manuals make it absolute only: given incrementally (G91, U/W), G53 is ignored and the
 /// block moves as it would without it (warning NCS-W30). Returns whether the move was made.
 pub(super) fn machine_move(step: &mut Step, words: &mut Words, span: Span) -> Result<bool, Diagnostic> {
-    let incremental = step.st.incremental || {
+    let incremental = step.st.modes.incremental || {
         let letters: &[u8] = if step.profile.incremental_addresses { b"UVW" } else { b"" };
         letters.iter().any(|l| words.has(*l))
     };
@@ -319,7 +319,7 @@ pub(super) fn machine_move(step: &mut Step, words: &mut Words, span: Span) -> Re
     // The declared A, B, C: no work offset applies to them, so machine and programme agree.
     let extra = super::rotary_target(step, words)?;
     let origin = step.tables.to_machine(&step.st.frame);
-    let from = step.st.pos;
+    let from = step.st.place.pos;
     let mut to = from;
     for (a, v) in values.iter().enumerate() {
         if let Some((v, _)) = v {
@@ -349,16 +349,16 @@ pub(super) fn reference_return(step: &mut Step, words: &mut Words, n: usize, spa
         return Ok(());
     }
     let reference = if linear { reference_point(step, n, span) } else { Vec3::default() };
-    let moved = mid != step.st.pos;
+    let moved = mid != step.st.place.pos;
     if moved {
-        step.emit(Op::Rapid { from: step.st.pos, to: mid });
+        step.emit(Op::Rapid { from: step.st.place.pos, to: mid });
     }
     if let Some((extra_mid, _)) = extra {
         super::emit_rotary(step, extra_mid, true, 0.0, moved);
     }
     // Kept for G29, per axis named (FANUC 0i manual, G29: the G28 or G30 before it).
     for (a, _) in given.iter().enumerate().filter(|(_, g)| g.is_some()) {
-        step.st.reference_mid[a] = Some(mid.axis(a));
+        step.st.place.reference_mid[a] = Some(mid.axis(a));
     }
     if step.profile.frame.reference_cancels_tool_offset && linear {
         reframe(step, |f| {
@@ -369,13 +369,13 @@ pub(super) fn reference_return(step: &mut Step, words: &mut Words, n: usize, spa
         });
     }
     let origin = step.tables.to_machine(&step.st.frame);
-    let mut home = step.st.pos;
+    let mut home = step.st.place.pos;
     for (a, _) in given.iter().enumerate().filter(|(_, g)| g.is_some()) {
         home.set_axis(a, reference.axis(a) - origin.axis(a));
     }
-    let moved = home != step.st.pos;
+    let moved = home != step.st.place.pos;
     if moved {
-        step.emit(Op::Rapid { from: step.st.pos, to: home });
+        step.emit(Op::Rapid { from: step.st.place.pos, to: home });
     }
     if let Some((mut extra_home, named)) = extra {
         for i in (0..3).filter(|&i| named[i]) {
@@ -410,25 +410,25 @@ fn reference_point(step: &mut Step, n: usize, span: Span) -> Vec3 {
 /// An axis no G28/G30 has named since power on has no intermediate point: alarm NCS-E88
 /// (ncsight's rule; what the control does then was not found).
 pub(super) fn from_reference(step: &mut Step, words: &mut Words, span: Span) -> Result<(), Diagnostic> {
-    let shown = step.st.pos + step.st.frame.unmoved;
+    let shown = step.st.place.pos + step.st.frame.unmoved;
     let (written, given) = axis_target(step, words)?;
     if !given.iter().any(Option::is_some) {
         return Ok(());
     }
-    let (mut mid, mut end) = (step.st.pos, step.st.pos);
+    let (mut mid, mut end) = (step.st.place.pos, step.st.place.pos);
     for (a, how) in given.iter().enumerate().filter_map(|(a, g)| g.map(|g| (a, g))) {
-        let Some(m) = step.st.reference_mid[a] else {
+        let Some(m) = step.st.place.reference_mid[a] else {
             let letter = ['X', 'Y', 'Z'][a];
             return Err(step.alarm(Rule::NoIntermediatePoint, span, format!("G29 names {letter}, and no G28 or G30 has given {letter} an intermediate point since the start")));
         };
         mid.set_axis(a, m);
         end.set_axis(a, if how == super::Given::Incremental { m + (written.axis(a) - shown.axis(a)) } else { written.axis(a) });
     }
-    if mid != step.st.pos {
-        step.emit(Op::Rapid { from: step.st.pos, to: mid });
+    if mid != step.st.place.pos {
+        step.emit(Op::Rapid { from: step.st.place.pos, to: mid });
     }
-    if end != step.st.pos {
-        step.emit(Op::Rapid { from: step.st.pos, to: end });
+    if end != step.st.place.pos {
+        step.emit(Op::Rapid { from: step.st.place.pos, to: end });
     }
     Ok(())
 }
@@ -442,7 +442,7 @@ pub(super) fn from_reference(step: &mut Step, words: &mut Words, span: Span) -> 
 pub(super) fn data_line(step: &mut Step, block: &crate::read::Block, mode: DataInput) -> Result<(), Diagnostic> {
     let ends = super::codes_of(step.profile, &block.words).any(|g| g.function == crate::profile::GFn::DataSettingEnd);
     if ends {
-        step.st.data_input = None;
+        step.st.modes.data_input = None;
         return Ok(());
     }
     let DataInput::Parameters(entry) = mode else {
@@ -586,7 +586,7 @@ fn put_offset(step: &mut Step, geometry: Vec3, wear: Vec3, number: u32, geometry
     if with_next_move || has_axis {
         step.st.frame.unmoved = unmoved;
     } else {
-        let from = step.st.pos;
+        let from = step.st.place.pos;
         step.emit(Op::Rapid { from, to: from + unmoved });
     }
 }
@@ -634,7 +634,7 @@ pub(super) fn data_setting(step: &mut Step, words: &mut Words, span: Span) -> Re
     };
     let (n, pw) = p;
     // Set (absolute) or add (incremental: G91 on a mill, U/V/W on a lathe) per axis.
-    let incremental = step.st.incremental;
+    let incremental = step.st.modes.incremental;
     let values = written_axes(step, words)?.map(|v| v.map(|(v, by_address)| (v, by_address || incremental)));
     // Work system `i` with the values written merged into it.
     let work = |i: usize| {
@@ -685,7 +685,7 @@ fn starts_data_lines(step: &mut Step, l: Option<u32>, span: Span) -> Result<bool
     // The parameter lines follow, up to G11 (FANUC 0i manual, G10 L50; GSK980TDi help text,
     // parameter reading and writing, G10 L52).
     if let Some(entry) = step.profile.frame.parameter_entry.filter(|e| l == Some(e.l)) {
-        step.st.data_input = Some(DataInput::Parameters(entry));
+        step.st.modes.data_input = Some(DataInput::Parameters(entry));
         return Ok(true);
     }
     if step.profile.frame.g10 == G10Forms::ToolLifeAndParameters {
@@ -693,7 +693,7 @@ fn starts_data_lines(step: &mut Step, l: Option<u32>, span: Span) -> Result<bool
         // ignored (note 1). ncsight does not count tool life: the lines are read and dropped.
         if l == Some(3) {
             step.warn(Rule::NotSimulated, span, "G10 L3: the tool life management data up to G11 are read and not kept (ncsight does not count tool life)");
-            step.st.data_input = Some(DataInput::ToolLife);
+            step.st.modes.data_input = Some(DataInput::ToolLife);
             return Ok(true);
         }
         return Err(step.alarm(Rule::ImproperGCode, span, format!("G10 on {}: its help text has G10 L3 (tool life) and G10 L52 (parameters) only, no work or tool offset setting", step.profile.name)));
@@ -743,7 +743,7 @@ fn mill_offset_setting(step: &mut Step, words: &mut Words, n: u32, pw: &crate::r
     let Some(rw) = words.take(b'R') else {
         return Err(step.alarm(Rule::MissingWord, span, "G10 P_ R_: R gives the offset value"));
     };
-    let r = Some((step.length(rw)?, step.st.incremental));
+    let r = Some((step.length(rw)?, step.st.modes.incremental));
     let mut e = step.tables.offset(n).copied().unwrap_or(Offset { number: n, ..Offset::default() });
     match l {
         // Memory A: one value per number, read by H and by D (inferred).
@@ -774,7 +774,7 @@ pub(super) fn offset_move(step: &mut Step, words: &mut Words, factor: i8, span: 
         Some(w) => super::offset_number(step, w)?,
         None => step.st.comp.d,
     };
-    if matches!(step.st.motion, Motion::ArcCw | Motion::ArcCcw) {
+    if matches!(step.st.modes.motion, Motion::ArcCw | Motion::ArcCcw) {
         return Err(step.alarm(Rule::NotSupported, span, "G45-G48 with a circular move: not simulated by ncsight yet (G00 or G01)"));
     }
     let e = entry(step, d, span);
@@ -783,7 +783,7 @@ pub(super) fn offset_move(step: &mut Step, words: &mut Words, factor: i8, span: 
     let mut zero_sign = [None::<f64>; 3];
     for (abs_l, inc_l, axis) in [(b'X', b'U', 0), (b'Y', b'V', 1), (b'Z', b'W', 2)] {
         let w = match (words.peek(abs_l), words.peek(inc_l).filter(|_| step.profile.incremental_addresses)) {
-            (Some(w), _) if step.st.incremental => Some(w),
+            (Some(w), _) if step.st.modes.incremental => Some(w),
             (None, Some(w)) => Some(w),
             _ => None,
         };
@@ -792,7 +792,7 @@ pub(super) fn offset_move(step: &mut Step, words: &mut Words, factor: i8, span: 
         }
     }
     let (target, given) = axis_target(step, words)?;
-    let shown = step.st.pos + step.st.frame.unmoved;
+    let shown = step.st.place.pos + step.st.frame.unmoved;
     let mut to = target;
     for (a, _) in given.iter().enumerate().filter(|(_, g)| g.is_some()) {
         let delta = target.axis(a) - shown.axis(a);
@@ -803,11 +803,11 @@ pub(super) fn offset_move(step: &mut Step, words: &mut Words, factor: i8, span: 
             to.set_axis(a, target.axis(a) + sign * value * scale);
         }
     }
-    let from = step.st.pos;
+    let from = step.st.place.pos;
     if to == from {
         return Ok(());
     }
-    match step.st.motion {
+    match step.st.modes.motion {
         Motion::Linear => {
             let feed = step.cutting_feed(super::What::Code(crate::profile::GFn::Linear), &|u| super::lerp(&from, &to, u))?;
             step.emit(Op::Feed { from, to, feed_mm_min: feed });
@@ -822,7 +822,7 @@ pub(super) fn offset_move(step: &mut Step, words: &mut Words, factor: i8, span: 
 /// alarm 092 when it is not (the setup's reference point, else the profile's assumed one).
 pub(super) fn reference_check(step: &mut Step, words: &mut Words, span: Span) -> Result<(), Diagnostic> {
     let (target, given) = axis_target(step, words)?;
-    let from = step.st.pos;
+    let from = step.st.place.pos;
     if target != from {
         step.emit(Op::Rapid { from, to: target });
     }

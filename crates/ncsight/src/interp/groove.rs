@@ -19,7 +19,7 @@ pub(super) fn block(step: &mut Step, words: &mut Words, kind: PeckKind) -> Resul
             if e < 0.0 {
                 return Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("{}: the back-off e of {code} cannot be negative", w.text())));
             }
-            step.st.peck_back_off_mm = Some(e);
+            step.st.memory.peck_back_off_mm = Some(e);
         }
         return Ok(());
     }
@@ -39,8 +39,8 @@ pub(super) fn block(step: &mut Step, words: &mut Words, kind: PeckKind) -> Resul
         Some(w) => step.length(w)?.abs() * halved,
         None => 0.0,
     };
-    let back_off_mm = step.st.peck_back_off_mm.or_else(|| step.profile.peck_back_off.map(|k| step.params.get(k))).unwrap_or(0.0);
-    let start = step.st.pos;
+    let back_off_mm = step.st.memory.peck_back_off_mm.or_else(|| step.profile.peck_back_off.map(|k| step.params.get(k))).unwrap_or(0.0);
+    let start = step.st.place.pos;
     let (end, _) = axis_target(step, words)?;
     let cycle = PeckCycle {
         kind,

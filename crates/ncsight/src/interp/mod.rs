@@ -234,10 +234,10 @@ impl Step<'_> {
     /// The P of the spindle selected (the setup's `spindle_p`), 0 on a machine with one.
     fn spindle_p(&self) -> u32 {
         // Assumed spindles are named once the programme has selected one with P.
-        if self.tables.spindle_p_assumed && !self.st.assumed_warned.contains(b'P') {
+        if self.tables.spindle_p_assumed && !self.st.notes.assumed_warned.contains(b'P') {
             return 0;
         }
-        self.tables.spindle_p.get(usize::from(self.st.spindle_sel)).copied().unwrap_or(0)
+        self.tables.spindle_p.get(usize::from(self.st.modes.spindle_sel)).copied().unwrap_or(0)
     }
 
     fn emit(&mut self, op: Op) {
@@ -248,7 +248,7 @@ impl Step<'_> {
     /// [`MAX_MOTIONS_PER_BLOCK`] nothing more is kept: the block then alarms.
     fn emit_at(&mut self, span: Span, n: Option<u32>, op: Op) {
         if let Some(p) = op.end_point() {
-            self.st.pos = p;
+            self.st.place.pos = p;
             // The tool offset's movement is made (FANUC 5002#6 LWM: with the next move).
             self.st.frame.unmoved = Vec3::default();
         }
@@ -272,7 +272,7 @@ impl Step<'_> {
 
     /// Put a record in the block's outcome: as it is, or in G12.1 as the machine makes it.
     fn push_record(&mut self, span: Span, n: Option<u32>, op: Op) {
-        match self.st.polar_interp {
+        match self.st.modes.polar_interp {
             Some(p) => polar::push(self, span, n, op, p),
             None => self.push_machine(span, n, op, None),
         }
@@ -300,7 +300,7 @@ impl Step<'_> {
             }
             // G63: a tap fed by G01 in a floating holder; the override is 100 % and FEED HOLD
             // lets the move end (FANUC group 15, "tapping mode").
-            if self.st.tapping_mode && matches!(r.op, Op::Feed { .. } | Op::Arc { .. }) {
+            if self.st.modes.tapping_mode && matches!(r.op, Op::Feed { .. } | Op::Arc { .. }) {
                 r.override_free = true;
                 r.hold = crate::motion::Hold::AfterRecord;
             }
@@ -328,7 +328,7 @@ impl Step<'_> {
     /// The first move of the block into G22's forbidden area or beyond a soft limit, noted (the
     /// block then alarms).
     fn travel_checks(&mut self, span: Span, op: &Op, to_machine: &Vec3) {
-        if let (Some(area), None) = (self.st.stroke2, &self.out.stroke_hit) {
+        if let (Some(area), None) = (*self.st.stroke2, &self.out.stroke_hit) {
             if let Some(why) = stroke::entered(&area, op, to_machine) {
                 self.out.stroke_hit = Some((span, why));
             }
@@ -398,16 +398,16 @@ impl Step<'_> {
     fn length(&mut self, w: &Word) -> Result<f64, Diagnostic> {
         let mut v = w.value;
         if !w.decimal && self.params.integer_lengths() == IntegerLengths::LeastIncrement {
-            v *= if self.st.inch { 0.0001 } else { 0.001 };
+            v *= if self.st.modes.inch { 0.0001 } else { 0.001 };
             if w.value != 0.0 {
                 self.warn_increments(w, v);
             }
         }
-        let limit = if self.st.inch { MAX_COORD_INCH } else { MAX_COORD_MM };
+        let limit = if self.st.modes.inch { MAX_COORD_INCH } else { MAX_COORD_MM };
         if v.abs() > limit + 1e-9 {
             return Err(self.out_of_range(w, v));
         }
-        if self.st.inch {
+        if self.st.modes.inch {
             v *= 25.4;
         }
         Ok(v)
@@ -416,11 +416,11 @@ impl Step<'_> {
     #[cold]
     fn warn_increments(&mut self, w: &Word, v: f64) {
         self.out.increment_words += 1;
-        if v.abs() < if self.st.inch { 0.1 } else { 1.0 } {
+        if v.abs() < if self.st.modes.inch { 0.1 } else { 1.0 } {
             self.out.increment_words_small += 1;
         }
-        let unit = if self.st.inch { "inch" } else { "mm" };
-        let shown = if self.st.inch { format!("{v:.4}") } else { format!("{v:.3}") };
+        let unit = if self.st.modes.inch { "inch" } else { "mm" };
+        let shown = if self.st.modes.inch { format!("{v:.4}") } else { format!("{v:.3}") };
         self.warn(
             Rule::IntegerLength,
             w.span,
@@ -433,7 +433,7 @@ impl Step<'_> {
         self.alarm(
             Rule::ValueOutOfRange,
             w.span,
-            if self.st.inch {
+            if self.st.modes.inch {
                 format!("{}: {} inch is beyond the controller's range (at most {MAX_COORD_INCH:.4} inch)", w.text(), crate::alarm::shown(v, 4))
             } else {
                 format!("{}: {} mm is beyond the controller's range (at most {MAX_COORD_MM:.3} mm)", w.text(), crate::alarm::shown(v, 3))
@@ -448,27 +448,27 @@ impl Step<'_> {
     #[cold]
     #[inline(never)]
     fn feed_plausible(&mut self, f: f64, point: &dyn Fn(f64) -> Vec3) {
-        let unit = if self.st.inch { 25.4 } else { 1.0 };
+        let unit = if self.st.modes.inch { 25.4 } else { 1.0 };
         let shown = crate::alarm::shown(f / unit, 4);
         // The caller has found F implausible in its mode.
-        let msg = if !self.st.per_rev {
+        let msg = if !self.st.modes.per_rev {
             // Along the path (an arc's length, not its chord).
             let length: f64 = (0..16).map(|k| point(k as f64 / 16.0).dist(&point((k + 1) as f64 / 16.0))).sum();
             let minutes = length / f;
             format!(
                 "F{shown} under feed per minute is {} {}/min: this {} mm cut takes {}; feed per revolution (G99) was probably meant",
                 shown,
-                if self.st.inch { "inch" } else { "mm" },
+                if self.st.modes.inch { "inch" } else { "mm" },
                 crate::alarm::shown(length, 3),
                 hours_minutes(minutes * 60.0)
             )
         } else {
             format!(
                 "F{shown} under feed per revolution is {shown} {}/rev, more than any cutting tool takes; feed per minute (G98 on these lathes) was probably meant",
-                if self.st.inch { "inch" } else { "mm" }
+                if self.st.modes.inch { "inch" } else { "mm" }
             )
         };
-        self.st.feed_warned = Some(self.st.per_rev);
+        self.st.notes.feed_warned = Some(self.st.modes.per_rev);
         self.warn(Rule::Implausible, self.span, msg);
     }
 
@@ -485,13 +485,13 @@ impl Step<'_> {
     /// Spindle speed at a point (G96 makes it depend on the diameter), signed.
     fn rpm_at(&self, p: &Vec3) -> f64 {
         // Without G96 the speed is S whatever the diameter (the parameter is not read).
-        let dia = if self.st.css { self.css_axis().map_or(0.0, |k| 2.0 * p.axis(k)) } else { 0.0 };
-        self.st.rpm_at(dia, MAX_RPM)
+        let dia = if self.st.modes.css { self.css_axis().map_or(0.0, |k| 2.0 * p.axis(k)) } else { 0.0 };
+        self.st.modes.rpm_at(dia, MAX_RPM)
     }
 
     /// Spindle speed at the current position.
     fn rpm_here(&self) -> f64 {
-        self.rpm_at(&self.st.pos)
+        self.rpm_at(&self.st.place.pos)
     }
 
     /// The cutting feed of a move in mm/min, or the alarm that it has none. `point(u)` gives
@@ -501,7 +501,7 @@ impl Step<'_> {
     fn cutting_feed(&mut self, what: impl Into<What>, point: &dyn Fn(f64) -> Vec3) -> Result<f64, Diagnostic> {
         let f = self.checked_feed(what, point)?;
         // Feed per minute (the common case, every drilled hole): F, at most the limit.
-        if !self.st.per_rev {
+        if !self.st.modes.per_rev {
             let max = self.params.feed_max_mm_min();
             if f > max {
                 self.warn_clamped(f, max);
@@ -534,7 +534,7 @@ impl Step<'_> {
     /// `point`.
     fn checked_feed(&mut self, what: impl Into<What>, point: &dyn Fn(f64) -> Vec3) -> Result<f64, Diagnostic> {
         let what: What = what.into();
-        let f = match self.st.feed {
+        let f = match self.st.modes.feed {
             Some(f) if f > 0.0 => f,
             _ => {
                 return Err(self.alarm(
@@ -545,11 +545,11 @@ impl Step<'_> {
             }
         };
         // A lathe F that is implausible in its mode (the check inline, the message cold).
-        let implausible = if self.st.per_rev { f > 10.0 } else { f < 10.0 };
-        if implausible && self.profile.is_lathe() && self.st.feed_warned != Some(self.st.per_rev) {
+        let implausible = if self.st.modes.per_rev { f > 10.0 } else { f < 10.0 };
+        if implausible && self.profile.is_lathe() && self.st.notes.feed_warned != Some(self.st.modes.per_rev) {
             self.feed_plausible(f, point);
         }
-        if self.st.per_rev && self.rpm_here() == 0.0 {
+        if self.st.modes.per_rev && self.rpm_here() == 0.0 {
             return Err(self.alarm(
                 Rule::SpindleStopped,
                 self.span,
@@ -561,7 +561,7 @@ impl Step<'_> {
 
     /// The feed rule of F in the modes in force.
     fn cut_feed(&self, f: f64) -> CutFeed {
-        CutFeed { f, per_rev: self.st.per_rev, max_mm_min: self.params.feed_max_mm_min(), spindle: self.st.spindle_speed(MAX_RPM), css_axis: if self.st.css { self.css_axis() } else { None } }
+        CutFeed { f, per_rev: self.st.modes.per_rev, max_mm_min: self.params.feed_max_mm_min(), spindle: self.st.modes.spindle_speed(MAX_RPM), css_axis: if self.st.modes.css { self.css_axis() } else { None } }
     }
 }
 
@@ -576,7 +576,7 @@ impl Interpreter {
     pub fn set_setup(&mut self, setup: &crate::setup::Setup) {
         self.tables = Tables::from_setup(setup, self.profile);
         if let Some(p) = self.tables.power_on_mm {
-            self.state.pos = p - self.tables.to_machine(&self.state.frame);
+            self.state.place.pos = p - self.tables.to_machine(&self.state.frame);
         }
     }
 
@@ -595,7 +595,7 @@ impl Interpreter {
     /// its programme coordinates move by what the write moved.
     fn write_table(&mut self, w: TableWrite) {
         let moved = self.tables.write(w, &self.state.frame);
-        self.state.pos = self.state.pos - moved;
+        self.state.place.pos = self.state.place.pos - moved;
         if let Some(a) = self.state.comp.actual {
             self.state.comp.actual = Some(a - moved);
         }
@@ -700,8 +700,8 @@ impl Interpreter {
     }
 
     /// Put back the modal state and the held records as they were before a block that alarmed.
-    fn roll_back(&mut self, before: Modal, [comp, corners]: [Option<Vec<Record>>; 2]) {
-        self.state = before;
+    fn roll_back(&mut self, [comp, corners]: [Option<Vec<Record>>; 2]) {
+        self.state.roll_back();
         self.comp_queue = comp.unwrap_or_default();
         self.corner_queue = corners.unwrap_or_default();
     }
@@ -723,12 +723,12 @@ impl Interpreter {
         if self.collecting.is_some() {
             return self.collect_contour(block, out);
         }
-        let before = self.state;
+        self.state.begin_block();
         let held_before = self.held();
         let result = self.run_through_stages(block, out).and_then(|()| self.apply_effects(block, out));
         if result.is_err() {
             out.clear();
-            self.roll_back(before, held_before);
+            self.roll_back(held_before);
         }
         result
     }
@@ -763,10 +763,10 @@ impl Interpreter {
         // Compensation's block end and the stage's or the limits' alarm (rare: tested before
         // anything is moved).
         let mut result = result;
-        if result.is_ok() && (!step.corners.is_empty() || step.st.ended) {
+        if result.is_ok() && (!step.corners.is_empty() || step.st.modes.ended) {
             result = corner::end_of_block(&mut step);
         }
-        if result.is_ok() && (!step.queue.is_empty() || step.st.ended) {
+        if result.is_ok() && (!step.queue.is_empty() || step.st.modes.ended) {
             result = comp::end_of_block(&mut step);
         }
         if result.is_ok() {
@@ -939,13 +939,13 @@ fn collect<'w>(
         let motion_code = codes_of(profile, all).filter(|g| g.group == Group::Motion).last();
         match motion_code {
             Some(g) => g.function == rigid,
-            None => step.st.motion == Motion::Thread(crate::profile::ThreadCmd::Rigid),
+            None => step.st.modes.motion == Motion::Thread(crate::profile::ThreadCmd::Rigid),
         }
     };
     for (i, w) in all.iter().enumerate() {
         let letter = w.letter;
         // In G12.1 the hypothetical C is read as the plane's Y (V incremental; interp/polar.rs).
-        let hypothetical = step.st.polar_interp.is_some() && matches!(letter, b'Y' | b'V');
+        let hypothetical = step.st.modes.polar_interp.is_some() && matches!(letter, b'Y' | b'V');
         // The GSK980TDi's G32.1 gives its start angle with C (help text G32.1), C axis or not.
         let rigid_start = letter == b'C' && profile.thread.g32_1.start_c && rigid_block();
         // FANUC 0i-TF 3405#4 CCR = 1: A and C are the drawing's words, without the comma.
@@ -1025,8 +1025,8 @@ fn assumed_axis_word(step: &mut Step, w: &Word) {
     };
     // Under 3405#4 CCR = 1 a plain C is the drawing's chamfer, not an axis.
     let chamfer_c = axis == b'C' && step.plain_drawing();
-    if step.tables.assumed_axes.contains(axis) && step.tables.added_addresses.contains(w.letter) && !step.st.assumed_warned.contains(axis) && !chamfer_c {
-        step.st.assumed_warned = step.st.assumed_warned.with(axis);
+    if step.tables.assumed_axes.contains(axis) && step.tables.added_addresses.contains(w.letter) && !step.st.notes.assumed_warned.contains(axis) && !chamfer_c {
+        step.st.notes.assumed_warned = step.st.notes.assumed_warned.with(axis);
         let kind = if axis == b'C' { "a rotary C axis in degrees, H its incremental address" } else { "a linear Y axis, V its incremental address" };
         let msg = format!("{}: no setup says which axes the machine has: taken as {kind}; declare them with [machine] axes (docs/setup.md)", w.text());
         step.warn(Rule::AxisAssumed, w.span, msg);
@@ -1133,7 +1133,7 @@ struct Codes {
 /// 11. M codes that act after the motion (stops, ends), then every word must have been used.
 fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), Diagnostic> {
     // Between G10 L3/L50/L52 and G11 a block is a line of data.
-    if let Some(mode) = step.st.data_input {
+    if let Some(mode) = step.st.modes.data_input {
         return frame::data_line(step, block, mode);
     }
     let mut read_as = ReadAs::default();
@@ -1149,7 +1149,7 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
     rigid_tap_waits(step, &codes, &words)?;
     // 4. What a new motion mode cancels.
     cancel_by_motion(step, &codes);
-    let motion_now = codes.motion.map(|(_, m)| m).unwrap_or(step.st.motion);
+    let motion_now = codes.motion.map(|(_, m)| m).unwrap_or(step.st.modes.motion);
     let axis_letters: &[u8] = if step.profile.incremental_addresses { b"XYZUVW" } else { b"XYZ" };
     let has_axis = axis_letters.iter().any(|l| words.has(*l));
     // 5. A held-back thread run.
@@ -1190,7 +1190,7 @@ fn block_words<'a>(step: &mut Step, block: &'a Block, read_as: &'a mut ReadAs) -
     // 0. Under G16 the plane's two words are a radius and an angle: the block is read with the
     // X, Y, Z words they stand for (not in a block that sets or ends a transform, or G15's own).
     // The block's own G16/G15, G90/G91 and plane count: its words are read in its modes.
-    let (mut incremental, mut plane, mut polar_on) = (step.st.incremental, step.st.plane, step.st.transform.polar);
+    let (mut incremental, mut plane, mut polar_on) = (step.st.modes.incremental, step.st.modes.plane, step.st.transform.polar);
     for g in codes_of(step.profile, &block.words) {
         match g.function {
             GFn::Absolute => incremental = false,
@@ -1210,7 +1210,7 @@ fn block_words<'a>(step: &mut Step, block: &'a Block, read_as: &'a mut ReadAs) -
     }
     // In G12.1 the hypothetical C is the plane's Y (interp/polar.rs).
     let ReadAs { plane: plane_store, polar: polar_store } = read_as;
-    let block_words: &'a [Word] = if step.st.polar_interp.is_some() {
+    let block_words: &'a [Word] = if step.st.modes.polar_interp.is_some() {
         *plane_store = polar::plane_words(step, &block.words)?;
         plane_store
     } else {
@@ -1256,7 +1256,7 @@ fn sort_g_codes<'w>(step: &mut Step, gs: &[(&'w Word, &'static GDef)]) -> Result
             ));
         }
         // FANUC 0i-T manual: the codes a block may use in polar coordinate interpolation.
-        if step.st.polar_interp.is_some() && !polar::allowed(g.function) {
+        if step.st.modes.polar_interp.is_some() && !polar::allowed(g.function) {
             return Err(step.alarm(Rule::ImproperGCode, w.span, format!("{}: in polar coordinate interpolation (G12.1) a block may use G01, G02, G03, G04, G40-G42, G65-G67, G98, G99 and G13.1 only", w.text())));
         }
         if let GFn::NotYet(why) = g.function {
@@ -1333,7 +1333,7 @@ fn suspend_compensation(step: &mut Step, last_of: &[(Group, &Word, &'static GDef
             )
         };
         let plain_motion = last_of.iter().any(|(_, _, g)| matches!(g.function, GFn::Rapid | GFn::Linear | GFn::ArcCw | GFn::ArcCcw));
-        let mode_suspends = !plain_motion && (matches!(step.st.motion, Motion::Thread(_) | Motion::Box(_)) || step.st.drill.kind.is_some());
+        let mode_suspends = !plain_motion && (matches!(step.st.modes.motion, Motion::Thread(_) | Motion::Box(_)) || step.st.drill.kind.is_some());
         if let Some((_, w, g)) = last_of.iter().find(|(_, _, g)| suspends(g.function)) {
             corner::break_off(step);
             comp::break_off(step);
@@ -1382,7 +1382,7 @@ fn modal_codes(step: &mut Step, block: &Block, last_of: &[(Group, &Word, &'stati
         }
         let st = &mut step.st;
         if g.group != Group::NonModal {
-            st.group_codes[g.group as usize] = (w.value * 10.0).round() as u16;
+            st.notes.group_codes[g.group as usize] = (w.value * 10.0).round() as u16;
         }
         // G63 holds until another code of its group (G61, G62, G64). A tap in cutter
         // compensation is not simulated: the held moves would take the wrong block's rules.
@@ -1390,7 +1390,7 @@ fn modal_codes(step: &mut Step, block: &Block, last_of: &[(Group, &Word, &'stati
             return Err(step.alarm(Rule::NotSupported, w.span, format!("{}: tapping mode in cutter compensation (G41/G42) is not simulated: G40 first", w.text())));
         }
         if g.group == Group::PathMode {
-            st.tapping_mode = g.function == GFn::TappingMode;
+            st.modes.tapping_mode = g.function == GFn::TappingMode;
             st.comp.corner_override = g.function == GFn::CornerOverride;
         }
         match g.function {
@@ -1402,14 +1402,14 @@ fn modal_codes(step: &mut Step, block: &Block, last_of: &[(Group, &Word, &'stati
             GFn::BoxCycle(kind) => codes.motion = Some((w.span, Motion::Box(kind))),
             GFn::Curve(kind) => codes.motion = Some((w.span, Motion::Curve(kind))),
             GFn::PlaneXY | GFn::PlaneZX | GFn::PlaneYZ => set_plane(step, w, g.function)?,
-            GFn::Inch => st.inch = true,
-            GFn::Metric => st.inch = false,
-            GFn::Absolute => st.incremental = false,
-            GFn::Incremental => st.incremental = true,
-            GFn::FeedPerMinute => st.per_rev = false,
-            GFn::FeedPerRevolution => st.per_rev = true,
-            GFn::ConstantSurfaceSpeed => st.css = true,
-            GFn::ConstantRpm => st.css = false,
+            GFn::Inch => st.modes.inch = true,
+            GFn::Metric => st.modes.inch = false,
+            GFn::Absolute => st.modes.incremental = false,
+            GFn::Incremental => st.modes.incremental = true,
+            GFn::FeedPerMinute => st.modes.per_rev = false,
+            GFn::FeedPerRevolution => st.modes.per_rev = true,
+            GFn::ConstantSurfaceSpeed => st.modes.css = true,
+            GFn::ConstantRpm => st.modes.css = false,
             // Step 6 puts it in force, with the block's D.
             GFn::RadiusComp(side) => codes.comp = Some((w.span, side)),
             // After step 5: a thread run held back from the block before is made in its frame.
@@ -1423,16 +1423,16 @@ fn modal_codes(step: &mut Step, block: &Block, last_of: &[(Group, &Word, &'stati
             GFn::PolarCoordinates(on) => {
                 // On a lathe G16 is the polar interpolation plane's (GSK980TDi help text,
                 // G12.1/13.1: G15/G16 in that plane).
-                if on && profile.is_lathe() && st.polar_interp.is_none() {
+                if on && profile.is_lathe() && st.modes.polar_interp.is_none() {
                     return Err(step.alarm(Rule::PlaneMismatch, w.span, format!("{}: polar coordinate command on a lathe is for the polar interpolation plane: G12.1 first", w.text())));
                 }
                 st.transform.polar = on;
             }
             GFn::PolarInterpolation(_) | GFn::CylindricalInterpolation => codes.polar_interp = Some((w.span, g.function)),
-            GFn::ReturnInitial => st.return_initial = true,
-            GFn::ReturnR => st.return_initial = false,
+            GFn::ReturnInitial => st.modes.return_initial = true,
+            GFn::ReturnR => st.modes.return_initial = false,
             // G80: the cycle and its hole data end; F stays (seed 003 8.1.4).
-            GFn::CycleCancel => step.st.drill = Default::default(),
+            GFn::CycleCancel => *step.st.drill = Default::default(),
             GFn::Drill(kind) => {
                 codes.drill = Some(kind);
                 // The GSK lathe's G83/G87 (and G84/G88) are group 01 codes: they end the motion
@@ -1455,7 +1455,7 @@ fn modal_codes(step: &mut Step, block: &Block, last_of: &[(Group, &Word, &'stati
 #[inline(always)]
 fn note_last_words(st: &mut crate::modal::Modal, block: &Block) {
     for w in &block.words {
-        let last = &mut st.last_words;
+        let last = &mut st.notes.last_words;
         match w.letter {
             b'B' => last.b = Some(w.value),
             b'D' => last.d = Some(w.value),
@@ -1477,14 +1477,14 @@ fn set_plane(step: &mut Step, w: &Word, function: GFn) -> Result<(), Diagnostic>
             _ => Plane::YZ,
         };
         // FANUC 037; GSK980TDi help text, G17-G19 (no plane change in compensation).
-        if st.comp.side != 0 && plane != st.plane {
+        if st.comp.side != 0 && plane != st.modes.plane {
             return Err(step.alarm(Rule::CompPlaneChange, w.span, format!("{}: the plane cannot change while radius compensation is in force (G40 first)", w.text())));
         }
         // FANUC: no plane change in coordinate rotation (G69 first).
         if st.transform.rotation.is_some_and(|r| r.plane != plane) {
             return Err(step.alarm(Rule::NotSupported, w.span, format!("{}: a plane change under coordinate rotation (G68) is not simulated: G69 first", w.text())));
         }
-        st.plane = plane;
+        st.modes.plane = plane;
     Ok(())
 }
 
@@ -1511,7 +1511,7 @@ fn cancel_by_motion(step: &mut Step, codes: &Codes) {
         if !matches!(m, Motion::Thread(_)) {
             // Seed 001 G32.1 note 1: a non-thread code cancels the rigid commands' J/K. Seed 000
             // and the G32 help only call J/K modal: they stay for G32 and G92 (docs).
-            if matches!(step.st.motion, Motion::Thread(cmd) if thread::is_rigid(cmd)) {
+            if matches!(step.st.modes.motion, Motion::Thread(cmd) if thread::is_rigid(cmd)) {
                 step.st.thread.j = None;
                 step.st.thread.k = None;
             }
@@ -1519,15 +1519,15 @@ fn cancel_by_motion(step: &mut Step, codes: &Codes) {
             step.st.thread.repair = false;
         }
         // Another group 01 code, or the other box cycle, ends the remembered X, Z and R.
-        if m != step.st.motion {
-            step.st.box_cycle = Default::default();
+        if m != step.st.modes.motion {
+            step.st.memory.box_cycle = Default::default();
         }
         // A group 01 code cancels a drilling cycle as G80 does (seed 003 8.1.4); a GSK lathe
         // cycle restated keeps its data, another one starts afresh (its bottom is on another
         // axis).
         if !codes.drill.is_some_and(|k| k.ends_motion_mode() && step.st.drill.kind == Some(k)) {
             let before = step.st.drill;
-            step.st.drill = Default::default();
+            *step.st.drill = Default::default();
             if codes.drill.is_some_and(|k| k.rigid_tap()) {
                 // M29's rigid tapping mode is for the G84/G88 that follows; between G84 and G88
                 // only the bottom is to be given again (note 1): the hand and P stay.
@@ -1625,8 +1625,8 @@ fn feed_word(step: &mut Step, codes: &Codes, words: &mut Words, thread_block: bo
             // Below the finest feed increment (0.0001 mm/rev or inch/rev): the control reads 0.
             return Err(step.alarm(Rule::FeedZero, w.span, format!("{}: below the least feed increment 0.0001, the control reads it as F0", w.text())));
         }
-        let unit = if step.st.inch { 25.4 } else { 1.0 };
-        step.st.feed = Some(w.value * unit);
+        let unit = if step.st.modes.inch { 25.4 } else { 1.0 };
+        step.st.modes.feed = Some(w.value * unit);
     }
     Ok(())
 }
@@ -1649,17 +1649,17 @@ fn select_spindle(step: &mut Step, codes: &Codes, ms: &[(&Word, Option<&'static 
             let Some(i) = step.tables.spindle_p.iter().position(|p| f64::from(*p) == w.value) else {
                 return Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("{}: no such spindle: the setup's spindles are {}", w.text(), list())));
             };
-            if step.tables.spindle_p_assumed && !step.st.assumed_warned.contains(b'P') {
+            if step.tables.spindle_p_assumed && !step.st.notes.assumed_warned.contains(b'P') {
                 let msg = format!("{}: no setup gives the spindles' P (spindle_p): taken as the spindle selection of a multi-spindle lathe, {} (the first spindle, the second); declare them with [machine] spindle_p", w.text(), list());
-                step.st.assumed_warned = step.st.assumed_warned.with(b'P');
+                step.st.notes.assumed_warned = step.st.notes.assumed_warned.with(b'P');
                 step.warn(Rule::AxisAssumed, w.span, msg);
             }
             let i = i as u8;
-            if i != step.st.spindle_sel {
-                let st = &mut *step.st;
-                st.spindles[usize::from(st.spindle_sel)] = (st.spindle, st.s_word);
-                (st.spindle, st.s_word) = st.spindles[usize::from(i)];
-                st.spindle_sel = i;
+            if i != step.st.modes.spindle_sel {
+                let modes = &mut *step.st.modes;
+                modes.spindles[usize::from(modes.spindle_sel)] = (modes.spindle, modes.s_word);
+                (modes.spindle, modes.s_word) = modes.spindles[usize::from(i)];
+                modes.spindle_sel = i;
             }
         }
     }
@@ -1677,17 +1677,17 @@ fn speed_word(step: &mut Step, codes: &Codes, last_of: &[(Group, &Word, &'static
     // G50 S on the lathes, G92 S on a machining centre with constant surface speed (FANUC 0i-M,
     // inferred for the 0-M): the maximum spindle speed.
     let g50_clamp = matches!(codes.non_modal, Some((_, GFn::LatheCoordinateSet))) || (matches!(codes.non_modal, Some((_, GFn::MillCoordinateSet))) && profile.css_axis.is_some());
-    let spindle_before = (step.st.spindle, step.st.s_word, step.st.css, step.st.spindle_position_mode);
+    let spindle_before = (step.st.modes.spindle, step.st.modes.s_word, step.st.modes.css, step.st.modes.spindle_position_mode);
     let s_word = if rigid_thread { None } else { words.take(b'S') };
     if let Some(w) = s_word {
         if w.value < 0.0 {
             return Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("{}: a spindle speed cannot be negative here", w.text())));
         }
         if g50_clamp {
-            step.st.rpm_clamp = Some(w.value); // G50 S: maximum spindle speed (TDi help G96/97)
+            step.st.modes.rpm_clamp = Some(w.value); // G50 S: maximum spindle speed (TDi help G96/97)
         } else {
-            step.st.s_word = w.value;
-            let css = codes_css(last_of).unwrap_or(step.st.css);
+            step.st.modes.s_word = w.value;
+            let css = codes_css(last_of).unwrap_or(step.st.modes.css);
             if !css && w.value > MAX_RPM {
                 let msg = format!("{}: above the spindle's maximum of {MAX_RPM} rpm (assumed for every profile): the spindle turns at {MAX_RPM} rpm", w.text());
                 step.warn(Rule::SpeedClamped, w.span, msg);
@@ -1712,7 +1712,7 @@ fn tool_word(step: &mut Step, words: &mut Words, has_axis: bool) -> Result<(), D
         None => None,
     };
     if let Some(((number, offset), span)) = tool {
-        step.st.tool = number;
+        step.st.modes.tool = number;
         if profile.is_lathe() {
             step.emit(Op::Tool { number, offset });
             if let Some(o) = offset {
@@ -1749,16 +1749,16 @@ fn m_codes_before<'w>(step: &mut Step, ms: &[(&'w Word, Option<&'static MDef>)],
             ),
             Some(m) => match m.function {
                 MFn::SpindleCw => {
-                    step.st.spindle = SpindleDir::Positive;
+                    step.st.modes.spindle = SpindleDir::Positive;
                 }
                 MFn::SpindleCcw => {
-                    step.st.spindle = SpindleDir::Negative;
+                    step.st.modes.spindle = SpindleDir::Negative;
                 }
                 MFn::SpindlePositionMode => {
-                    step.st.spindle_position_mode = true;
+                    step.st.modes.spindle_position_mode = true;
                 }
                 MFn::SpindleSpeedMode => {
-                    step.st.spindle_position_mode = false;
+                    step.st.modes.spindle_position_mode = false;
                 }
                 MFn::RigidTapping => {
                     // Help text G84/88: M29 may not be given again while the mode is on.
@@ -1785,8 +1785,8 @@ fn m_codes_before<'w>(step: &mut Step, ms: &[(&'w Word, Option<&'static MDef>)],
     step.out.flow = flow;
     // 9. A spindle record when the spindle's state changes in a way the machine shows: a new
     // direction or mode, or a new speed while it turns.
-    let spindle_after = (step.st.spindle, step.st.s_word, step.st.css, step.st.spindle_position_mode);
-    let turning = step.st.spindle != SpindleDir::Stopped;
+    let spindle_after = (step.st.modes.spindle, step.st.modes.s_word, step.st.modes.css, step.st.modes.spindle_position_mode);
+    let turning = step.st.modes.spindle != SpindleDir::Stopped;
     if spindle_before != spindle_after
         && (turning || spindle_before.0 != spindle_after.0 || spindle_before.3 != spindle_after.3)
     {
@@ -1802,13 +1802,13 @@ fn motion_of_block<'w>(step: &mut Step, words: &mut Words<'w>, codes: &Codes, af
     // 10. The one-shot code, or the motion of the mode in force.
     // A one-shot code other than G04 ends the box cycles' remembered X, Z and R (FANUC 0-T).
     if matches!(codes.non_modal, Some((_, f)) if f != GFn::Dwell) {
-        step.st.box_cycle = Default::default();
+        step.st.memory.box_cycle = Default::default();
     }
     // A group 01 code beside a one-shot code is in force for the blocks after (`G53 G0 Z0`).
     if codes.non_modal.is_some() {
         if let Some((_, m)) = codes.motion {
             if matches!(m, Motion::Rapid | Motion::Linear | Motion::ArcCw | Motion::ArcCcw) {
-                step.st.motion = m;
+                step.st.modes.motion = m;
             }
         }
     }
@@ -1817,7 +1817,7 @@ fn motion_of_block<'w>(step: &mut Step, words: &mut Words<'w>, codes: &Codes, af
     if !codes.transforms.is_empty() && set_transforms(step, words, codes)? {
         // The block's group 01 code is in force for the blocks after it.
         if let Some((_, m)) = codes.motion {
-            step.st.motion = m;
+            step.st.modes.motion = m;
         }
         return finish_block(step, words, codes, after, switches);
     }
@@ -1853,9 +1853,9 @@ fn set_transforms(step: &mut Step, words: &mut Words, codes: &Codes) -> Result<b
         return Err(step.alarm(Rule::NotSupported, span, "a coordinate rotation, scaling or mirror image set or ended in a drilling cycle is not simulated: cancel the cycle (G80) first"));
     }
     // The centres default to where the tool is, in programmed coordinates.
-    let here = step.st.pos;
+    let here = step.st.place.pos;
     if transform::moves_records(&t) {
-        step.st.pos = transform::programmed(&t, here);
+        step.st.place.pos = transform::programmed(&t, here);
     }
     let mut set = Ok(false);
     let mut order: Vec<(Span, GFn)> = codes.transforms.iter().filter(|(_, f)| !sets(f)).copied().collect();
@@ -1873,7 +1873,7 @@ fn set_transforms(step: &mut Step, words: &mut Words, codes: &Codes) -> Result<b
             break;
         }
     }
-    step.st.pos = here;
+    step.st.place.pos = here;
     set
 }
 
@@ -1895,8 +1895,8 @@ fn programmed_coordinates(step: &mut Step, words: &Words, codes: &Codes, has_axi
             return Err(step.alarm(Rule::NotSupported, step.span, "radius compensation under coordinate rotation, scaling or mirror image (G68, G51, G51.1) is not simulated"));
         }
         // An arc this block makes (its motion mode an arc, and axis or centre words in it).
-        let arc = matches!(codes.motion.map_or(step.st.motion, |(_, m)| m), Motion::ArcCw | Motion::ArcCcw | Motion::Curve(_)) && (has_axis || b"RIJK".iter().any(|l| words.has(*l)));
-        if let Some(why) = transform::arc_refused(&t, step.st.plane).filter(|_| arc && codes.drill.or(step.st.drill.kind).is_none()) {
+        let arc = matches!(codes.motion.map_or(step.st.modes.motion, |(_, m)| m), Motion::ArcCw | Motion::ArcCcw | Motion::Curve(_)) && (has_axis || b"RIJK".iter().any(|l| words.has(*l)));
+        if let Some(why) = transform::arc_refused(&t, step.st.modes.plane).filter(|_| arc && codes.drill.or(step.st.drill.kind).is_none()) {
             return Err(step.alarm(Rule::NotSupported, step.span, format!("an arc under this transform is not simulated: {why}")));
         }
         // FANUC: Q and d of the peck cycles and the G76/G87 shift are not scaled (and the shift is
@@ -1904,8 +1904,8 @@ fn programmed_coordinates(step: &mut Step, words: &Words, codes: &Codes, has_axi
         if let Some(kind) = codes.drill.or(step.st.drill.kind).filter(|k| matches!(k, crate::codes::DrillKind::G73 | crate::codes::DrillKind::G83 | crate::codes::DrillKind::G76 | crate::codes::DrillKind::G87)) {
             return Err(step.alarm(Rule::NotSupported, step.span, format!("{} under coordinate rotation, scaling or mirror image is not simulated (its Q and shift are not transformed on the controller)", kind.code())));
         }
-        step.st.pos = transform::programmed(&t, step.st.pos);
-        step.carry = Some(t);
+        step.st.place.pos = transform::programmed(&t, step.st.place.pos);
+        step.carry = Some(*t);
     }
     Ok(())
 }
@@ -1950,9 +1950,9 @@ fn modal_motion(step: &mut Step, words: &mut Words, codes: &Codes, has_axis: boo
         return Ok(());
     }
     if let Some((_, m)) = codes.motion {
-        step.st.motion = m;
+        step.st.modes.motion = m;
     }
-    if step.st.polar_interp.is_some() && has_axis && !matches!(step.st.motion, Motion::Linear | Motion::ArcCw | Motion::ArcCcw) {
+    if step.st.modes.polar_interp.is_some() && has_axis && !matches!(step.st.modes.motion, Motion::Linear | Motion::ArcCw | Motion::ArcCcw) {
         return Err(step.alarm(Rule::ImproperGCode, step.span, "a move in polar coordinate interpolation (G12.1) is G01, G02 or G03 (FANUC 0i-T manual)"));
     }
     let drill_kind = codes.drill.or(step.st.drill.kind);
@@ -1960,19 +1960,19 @@ fn modal_motion(step: &mut Step, words: &mut Words, codes: &Codes, has_axis: boo
         drill::block(step, words, kind, codes.drill.is_some())?;
         return Ok(());
     }
-    if let Motion::Thread(cmd) = step.st.motion {
+    if let Motion::Thread(cmd) = step.st.modes.motion {
         if has_axis {
             thread::block(step, words, cmd, codes.motion.is_some(), run_deg)?;
         }
         return Ok(());
     }
-    if let Motion::Box(kind) = step.st.motion {
+    if let Motion::Box(kind) = step.st.modes.motion {
         if has_axis || words.has(step.profile.box_taper) {
             turning::block(step, words, kind)?;
         }
         return Ok(());
     }
-    if let Motion::Curve(kind) = step.st.motion {
+    if let Motion::Curve(kind) = step.st.modes.motion {
         // Without an end point the curve's own words still count (help text G6.2 note 6);
         // P is left out: M98/M99 and the spindle selection take it too.
         if has_axis || b"IJKABQ".iter().any(|l| words.has_unused(*l)) {
@@ -1980,12 +1980,12 @@ fn modal_motion(step: &mut Step, words: &mut Words, codes: &Codes, has_axis: boo
         }
         return Ok(());
     }
-    let arc_words = matches!(step.st.motion, Motion::ArcCw | Motion::ArcCcw) && b"RIJK".iter().any(|l| words.has(*l));
+    let arc_words = matches!(step.st.modes.motion, Motion::ArcCw | Motion::ArcCcw) && b"RIJK".iter().any(|l| words.has(*l));
     // A rotary axis the setup declares moves in G00/G01 alone too (FANUC 0-M G91 A45.).
     let rotary_words = step.tables.rotary.iter().any(|r| *r) && b"ABCH".iter().any(|l| step.tables.added_addresses.contains(*l) && words.has(*l));
     // A line given by its angle alone (docs/commands/drawing.md) moves too.
-    let angle_word = step.profile.frame.drawing.is_some_and(|d| words.has(d.angle)) && matches!(step.st.motion, Motion::Rapid | Motion::Linear);
-    let motion_words = has_axis || arc_words || angle_word || (rotary_words && matches!(step.st.motion, Motion::Rapid | Motion::Linear));
+    let angle_word = step.profile.frame.drawing.is_some_and(|d| words.has(d.angle)) && matches!(step.st.modes.motion, Motion::Rapid | Motion::Linear);
+    let motion_words = has_axis || arc_words || angle_word || (rotary_words && matches!(step.st.modes.motion, Motion::Rapid | Motion::Linear));
     if motion_words {
         motion(step, words)?;
     }
@@ -2030,7 +2030,7 @@ fn finish_block(step: &mut Step, words: &Words, codes: &Codes, after: Vec<(&Word
     }
     // A block worked out in programmed coordinates ends where its records took the tool.
     if let Some(t) = step.carry.take() {
-        step.st.pos = transform::apply(&t, step.st.pos);
+        step.st.place.pos = transform::apply(&t, step.st.place.pos);
     }
     // A stop or an end after a held-back thread run end: the run ends first.
     if !after.is_empty() {
@@ -2041,7 +2041,7 @@ fn finish_block(step: &mut Step, words: &Words, codes: &Codes, after: Vec<(&Word
     for (w, f) in after {
         match f {
             MFn::SpindleStop => {
-                step.st.spindle = SpindleDir::Stopped;
+                step.st.modes.spindle = SpindleDir::Stopped;
                 emit_spindle(step);
             }
             MFn::ProgramStop => step.emit(Op::Stop { reason: StopReason::ProgramStop }),
@@ -2051,11 +2051,11 @@ fn finish_block(step: &mut Step, words: &Words, codes: &Codes, after: Vec<(&Word
                 }
             }
             MFn::ToolChange => {
-                let number = step.st.tool;
+                let number = step.st.modes.tool;
                 step.emit(Op::Tool { number, offset: None });
             }
             MFn::ProgramEnd => {
-                step.st.ended = true;
+                step.st.modes.ended = true;
                 step.emit(Op::End { code: w.value as u32 });
             }
             // The jump itself is the programme driver's (`Outcome::flow`).
@@ -2102,12 +2102,12 @@ fn describe_command(step: &Step, codes: &Codes) -> String {
         Some((_, GFn::PeckCycle(kind))) => return format!("{} (peck cutting cycle)", kind.code()),
         Some((_, GFn::Rough(kind))) => return format!("{} (roughing cycle)", kind.code()),
         Some((_, f @ GFn::Finish)) => return format!("{} (finishing cycle)", name(f)),
-        _ => ((), step.st.motion),
+        _ => ((), step.st.modes.motion),
     };
     if let Some(kind) = step.st.drill.kind {
         return format!("{} (drilling cycle; the repeat count is K)", kind.code());
     }
-    let plane = name(match step.st.plane {
+    let plane = name(match step.st.modes.plane {
         Plane::XY => GFn::PlaneXY,
         Plane::ZX => GFn::PlaneZX,
         Plane::YZ => GFn::PlaneYZ,
@@ -2125,8 +2125,8 @@ fn describe_command(step: &Step, codes: &Codes) -> String {
 
 fn emit_spindle(step: &mut Step) {
     let rpm = step.rpm_here();
-    let surface = if step.st.css { Some(step.st.surface_m_min()) } else { None };
-    let position_mode = step.st.spindle_position_mode;
+    let surface = if step.st.modes.css { Some(step.st.modes.surface_m_min()) } else { None };
+    let position_mode = step.st.modes.spindle_position_mode;
     step.emit(Op::Spindle { rpm, surface_m_min: surface, position_mode, oriented: false, p: step.spindle_p() });
 }
 
@@ -2170,7 +2170,7 @@ fn axis_target(step: &mut Step, words: &mut Words) -> Result<(Vec3, [Option<Give
     let profile = step.profile;
     // From the position the controller shows: an axis not written goes there too (a tool
     // offset's movement not made yet is made with this move, on every axis).
-    let mut target = step.st.pos + step.st.frame.unmoved;
+    let mut target = step.st.place.pos + step.st.frame.unmoved;
     let mut given = [None; 3];
     let pairs: [(u8, u8, usize); 3] = [(b'X', b'U', 0), (b'Y', b'V', 1), (b'Z', b'W', 2)];
     for (abs_l, inc_l, axis) in pairs {
@@ -2186,11 +2186,11 @@ fn axis_target(step: &mut Step, words: &mut Words) -> Result<(Vec3, [Option<Give
         }
         // Incremental words count from the position the controller shows: the tool's, plus a
         // tool offset's movement not made yet (FANUC 5002#6 LWM).
-        let shown = step.st.pos.axis(axis) + step.st.frame.unmoved.axis(axis);
+        let shown = step.st.place.pos.axis(axis) + step.st.frame.unmoved.axis(axis);
         if let Some(w) = abs_w {
             let v = step.length(w)? * scale;
-            target.set_axis(axis, if step.st.incremental { shown + v } else { v });
-            given[axis] = Some(if step.st.incremental { Given::Incremental } else { Given::Absolute });
+            target.set_axis(axis, if step.st.modes.incremental { shown + v } else { v });
+            given[axis] = Some(if step.st.modes.incremental { Given::Incremental } else { Given::Absolute });
         } else if let Some(w) = inc_w {
             let v = step.length(w)? * scale;
             target.set_axis(axis, shown + v);
@@ -2210,7 +2210,7 @@ fn skip(step: &mut Step, words: &mut Words, span: Span) -> Result<(), Diagnostic
         }
     }
     let (target, _) = axis_target(step, words)?;
-    let from = step.st.pos;
+    let from = step.st.place.pos;
     let feed = step.cutting_feed(What::Name("G31"), &|u| lerp(&from, &target, u))?;
     step.warn(Rule::NoSkipSignal, span, "G31: no skip signal comes in a simulation: the move runs to its end (the position a signal would store is its end point)");
     if target != from {
@@ -2230,11 +2230,11 @@ fn tool_measure(step: &mut Step, words: &mut Words, axis: u8, span: Span) -> Res
     let name = if axis == 0 { "G36" } else { "G37" };
     let inc = if step.profile.incremental_addresses { words.take(inc_l) } else { None };
     let scale = if axis == 0 && step.profile.diameter_x { 0.5 } else { 1.0 };
-    let from = step.st.pos;
+    let from = step.st.place.pos;
     let at = match (words.take(abs_l), inc) {
         (Some(w), None) => {
             let v = step.length(w)? * scale;
-            if step.st.incremental { from.axis(axis) + v } else { v }
+            if step.st.modes.incremental { from.axis(axis) + v } else { v }
         }
         (None, Some(w)) => from.axis(axis) + step.length(w)? * scale,
         (Some(a), Some(i)) => return Err(step.alarm(Rule::DuplicateWord, i.span, format!("{} and {} both give the measuring position", a.text(), i.text()))),
@@ -2263,7 +2263,7 @@ fn tool_measure(step: &mut Step, words: &mut Words, axis: u8, span: Span) -> Res
 /// same side whatever the direction it came from. With every overrun 0 it is a rapid there.
 fn single_direction(step: &mut Step, words: &mut Words) -> Result<(), Diagnostic> {
     let (target, given) = axis_target(step, words)?;
-    let from = step.st.pos;
+    let from = step.st.place.pos;
     let keys = [ParamKey::Setting("g60_overrun_x_mm"), ParamKey::Setting("g60_overrun_y_mm"), ParamKey::Setting("g60_overrun_z_mm")];
     let mut via = target;
     for (a, _) in given.iter().enumerate().filter(|(_, g)| g.is_some()) {
@@ -2294,7 +2294,7 @@ fn extra_axes_target(step: &mut Step, words: &mut Words) -> Result<Option<([f64;
     if !step.tables.rotary.iter().any(|r| *r) {
         return Ok(None);
     }
-    let mut target = step.st.rotary_deg;
+    let mut target = step.st.place.rotary_deg;
     let mut named = [false; 3];
     let mut any = false;
     // An assumed C is no axis while 3405#4 CCR = 1 makes a plain C the drawing's chamfer.
@@ -2314,8 +2314,8 @@ fn extra_axes_target(step: &mut Step, words: &mut Words) -> Result<Option<([f64;
         if !v.is_finite() || v.abs() > MAX_COORD_MM {
             return Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("{}: an axis moves at most {MAX_COORD_MM} (mm or degrees) from its zero", w.text())));
         }
-        let incremental = inc_w.is_some() || step.st.incremental;
-        target[i] = if incremental { step.st.rotary_deg[i] + v } else { v };
+        let incremental = inc_w.is_some() || step.st.modes.incremental;
+        target[i] = if incremental { step.st.place.rotary_deg[i] + v } else { v };
         named[i] = true;
         any = true;
     }
@@ -2334,7 +2334,7 @@ fn extra_axes_target(step: &mut Step, words: &mut Words) -> Result<Option<([f64;
 fn emit_rotary(step: &mut Step, to_deg: [f64; 3], rapid: bool, rate_per_unit: f64, with_move: bool) {
     let mut with_move = with_move;
     for i in 0..3 {
-        let from_deg = step.st.rotary_deg[i];
+        let from_deg = step.st.place.rotary_deg[i];
         if to_deg[i] != from_deg {
             let rate_deg_min = rate_per_unit * (to_deg[i] - from_deg).abs();
             let linear = step.tables.linear_extra[i];
@@ -2342,17 +2342,17 @@ fn emit_rotary(step: &mut Step, to_deg: [f64; 3], rapid: bool, rate_per_unit: f6
             with_move = true;
         }
     }
-    step.st.rotary_deg = to_deg;
+    step.st.place.rotary_deg = to_deg;
 }
 
 fn motion(step: &mut Step, words: &mut Words) -> Result<(), Diagnostic> {
     if let Some(rules) = step.profile.frame.drawing {
         // FANUC's corners follow G01 lines only (alarm 052): in an arc their words are not taken.
-        if step.st.motion == Motion::Linear || (matches!(step.st.motion, Motion::ArcCw | Motion::ArcCcw) && !rules.corner_needs_g01) {
+        if step.st.modes.motion == Motion::Linear || (matches!(step.st.modes.motion, Motion::ArcCw | Motion::ArcCcw) && !rules.corner_needs_g01) {
             corner::words(step, words, rules)?;
         }
     }
-    let rotary = if matches!(step.st.motion, Motion::Rapid | Motion::Linear) { rotary_target(step, words)? } else { None };
+    let rotary = if matches!(step.st.modes.motion, Motion::Rapid | Motion::Linear) { rotary_target(step, words)? } else { None };
     // A line given by its angle (docs/commands/drawing.md): the end it gives, or none yet.
     let drawing = step.profile.frame.drawing;
     let angle = match drawing {
@@ -2372,8 +2372,8 @@ fn motion(step: &mut Step, words: &mut Words) -> Result<(), Diagnostic> {
         }
         _ => target,
     };
-    let from = step.st.pos;
-    match step.st.motion {
+    let from = step.st.place.pos;
+    match step.st.modes.motion {
         Motion::Rapid => {
             if target != from {
                 step.emit(Op::Rapid { from, to: target });
@@ -2386,9 +2386,9 @@ fn motion(step: &mut Step, words: &mut Words) -> Result<(), Diagnostic> {
             let feed = step.cutting_feed(What::Code(GFn::Linear), &|u| lerp(&from, &target, u))?;
             // The move's length in the input unit, the degrees counted as that unit (a linear
             // extra axis's millimetres converted to it); F in it.
-            let unit = if step.st.inch { 25.4 } else { 1.0 };
+            let unit = if step.st.modes.inch { 25.4 } else { 1.0 };
             let per_unit = |i: usize| if step.tables.linear_extra[i] { unit } else { 1.0 };
-            let turn = rotary.map_or(0.0, |to| (0..3).map(|i| ((to[i] - step.st.rotary_deg[i]) / per_unit(i)).powi(2)).sum::<f64>().sqrt());
+            let turn = rotary.map_or(0.0, |to| (0..3).map(|i| ((to[i] - step.st.place.rotary_deg[i]) / per_unit(i)).powi(2)).sum::<f64>().sqrt());
             let length = from.dist(&target) / unit;
             let whole = (length * length + turn * turn).sqrt();
             if target != from {
@@ -2400,7 +2400,7 @@ fn motion(step: &mut Step, words: &mut Words) -> Result<(), Diagnostic> {
             }
         }
         Motion::ArcCw | Motion::ArcCcw => {
-            let dir = if step.st.motion == Motion::ArcCw { ArcDir::Cw } else { ArcDir::Ccw };
+            let dir = if step.st.modes.motion == Motion::ArcCw { ArcDir::Cw } else { ArcDir::Ccw };
             arc(step, words, from, target, dir)?;
         }
         Motion::Thread(_) => unreachable!("thread blocks go to thread::block"),
@@ -2442,7 +2442,7 @@ enum ArcOutcome {
 fn resolve_arc(step: &mut Step, words: &mut Words, from: Vec3, to: Vec3, dir: ArcDir, gname: impl Into<What>) -> Result<ArcOutcome, Diagnostic> {
     // The name is looked up only when a message needs it.
     let gname = gname.into();
-    let plane = step.st.plane;
+    let plane = step.st.modes.plane;
     let (a, b, _) = plane.axes();
     let letter_of = |axis: usize| [b'I', b'J', b'K'][axis];
     let r_word = words.take(b'R');
@@ -2504,7 +2504,7 @@ fn resolve_arc(step: &mut Step, words: &mut Words, from: Vec3, to: Vec3, dir: Ar
 }
 
 fn arc(step: &mut Step, words: &mut Words, from: Vec3, to: Vec3, dir: ArcDir) -> Result<(), Diagnostic> {
-    let plane = step.st.plane;
+    let plane = step.st.modes.plane;
     let gname = What::Code(if dir == ArcDir::Cw { GFn::ArcCw } else { GFn::ArcCcw });
     match resolve_arc(step, words, from, to, dir, gname)? {
         ArcOutcome::Arc(g) => {

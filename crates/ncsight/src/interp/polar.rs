@@ -50,7 +50,7 @@ pub(super) fn allowed(f: GFn) -> bool {
 /// A Y word of the machine itself is not simulated in the mode. The block of G07.1 itself (the
 /// cancel, `G07.1 C0`) keeps its C.
 pub(super) fn plane_words(step: &mut Step, all: &[Word]) -> Result<Vec<Word>, Diagnostic> {
-    let Some(mode) = step.st.polar_interp else { return Ok(all.to_vec()) };
+    let Some(mode) = step.st.modes.polar_interp else { return Ok(all.to_vec()) };
     let functions: Vec<GFn> = super::codes_of(step.profile, all).map(|g| g.function).collect();
     if functions.contains(&GFn::CylindricalInterpolation) {
         return Ok(all.to_vec());
@@ -59,9 +59,9 @@ pub(super) fn plane_words(step: &mut Step, all: &[Word]) -> Result<Vec<Word>, Di
     let motion = functions.iter().rev().find(|f| matches!(f, GFn::Rapid | GFn::Linear | GFn::ArcCw | GFn::ArcCcw)).copied();
     let arc = match motion {
         Some(f) => matches!(f, GFn::ArcCw | GFn::ArcCcw),
-        None => matches!(step.st.motion, crate::modal::Motion::ArcCw | crate::modal::Motion::ArcCcw),
+        None => matches!(step.st.modes.motion, crate::modal::Motion::ArcCw | crate::modal::Motion::ArcCcw),
     };
-    let unit = if step.st.inch { 25.4 } else { 1.0 };
+    let unit = if step.st.modes.inch { 25.4 } else { 1.0 };
     let mut out = Vec::with_capacity(all.len());
     for w in all {
         let letter = match w.letter {
@@ -113,7 +113,7 @@ pub(super) fn switch(step: &mut Step, words: &mut Words, f: GFn, span: Span) -> 
     }
     if on {
         start_mode(step, f, code, span, radius_mm)
-    } else if let Some(p) = step.st.polar_interp {
+    } else if let Some(p) = step.st.modes.polar_interp {
         end_mode(step, f, code, span, p)
     } else {
         Ok(())
@@ -146,7 +146,7 @@ fn switch_words(step: &mut Step, words: &mut Words, f: GFn, code: &str, span: Sp
 /// Start polar coordinate interpolation (`radius_mm` None) or cylindrical interpolation on a
 /// cylinder of that radius: the hypothetical C becomes the plane's Y, at the C axis's turn.
 fn start_mode(step: &mut Step, f: GFn, code: &str, span: Span, radius_mm: Option<f64>) -> Result<(), Diagnostic> {
-    if let Some(m) = step.st.polar_interp {
+    if let Some(m) = step.st.modes.polar_interp {
         let same = matches!((m.kind, f), (Hypothetical::Polar, GFn::PolarInterpolation(_)) | (Hypothetical::Cylinder { .. }, GFn::CylindricalInterpolation));
         if same && radius_mm.is_none() {
             return Ok(());
@@ -156,20 +156,20 @@ fn start_mode(step: &mut Step, f: GFn, code: &str, span: Span, radius_mm: Option
     if !step.tables.rotary[C] {
         return Err(step.alarm(Rule::ImproperAddress, span, format!("{code} needs the C axis: declare it in the setup ([machine] axes = [\"X\", \"Z\", \"C\"])")));
     }
-    let c_deg = step.st.rotary_deg[C];
+    let c_deg = step.st.place.rotary_deg[C];
     let kind = hypothetical_axis(step, span, radius_mm, c_deg)?;
-    let mode = PolarInterp { kind, plane_before: step.st.plane, y_before: step.st.pos.y };
-    step.st.polar_interp = Some(mode);
+    let mode = PolarInterp { kind, plane_before: step.st.modes.plane, y_before: step.st.place.pos.y };
+    step.st.modes.polar_interp = Some(mode);
     let c_plane = match kind {
         Hypothetical::Polar => 0.0,
         Hypothetical::Cylinder { radius_mm, sign } => sign * c_deg.to_radians() * radius_mm,
     };
-    step.st.pos.y = c_plane;
+    step.st.place.pos.y = c_plane;
     // Where compensation last left the tool (a G40 without a move), in the plane too.
     if let Some(a) = step.st.comp.actual.as_mut() {
         a.y = c_plane;
     }
-    step.st.plane = match kind {
+    step.st.modes.plane = match kind {
         Hypothetical::Polar => Plane::XY,
         Hypothetical::Cylinder { .. } => Plane::YZ,
     };
@@ -182,7 +182,7 @@ fn start_mode(step: &mut Step, f: GFn, code: &str, span: Span, radius_mm: Option
 fn hypothetical_axis(step: &Step, span: Span, radius_mm: Option<f64>, c_deg: f64) -> Result<Hypothetical, Diagnostic> {
     Ok(match radius_mm {
         None => {
-            if step.st.per_rev && step.profile.frame.polar_refuses_per_rev {
+            if step.st.modes.per_rev && step.profile.frame.polar_refuses_per_rev {
                 return Err(step.alarm(Rule::ImproperGCode, span, "G12.1 under feed per revolution (G99): polar coordinate interpolation is in G98 (help text G12.1 note 3)"));
             }
             // Note 4: polar coordinate interpolation starts with the C axis at 0 degrees.
@@ -198,7 +198,7 @@ fn hypothetical_axis(step: &Step, span: Span, radius_mm: Option<f64>, c_deg: f64
             // The unrolled plane: Z and C as the programme's plane has them. In G19 (C
             // parallel to Y) C comes first; in G18 (C in X's place) Z does, so C is kept as
             // -Y to turn the same way in the plane YZ.
-            let sign = match step.st.plane {
+            let sign = match step.st.modes.plane {
                 Plane::YZ => 1.0,
                 Plane::ZX => -1.0,
                 Plane::XY => return Err(step.alarm(Rule::PlaneMismatch, span, "G07.1 in the XY plane (G17): cylindrical interpolation is in the plane of Z and C (G18 or G19)")),
@@ -215,14 +215,14 @@ fn end_mode(step: &mut Step, f: GFn, code: &str, span: Span, p: PolarInterp) -> 
     if !ends {
         return Err(step.alarm(Rule::ImproperGCode, span, format!("{code} does not end the interpolation in force")));
     }
-    let (x, c) = (step.st.pos.x, step.st.pos.y);
+    let (x, c) = (step.st.place.pos.x, step.st.place.pos.y);
     match p.kind {
         Hypothetical::Polar => {
-            step.st.rotary_deg[C] = angle_near(x, c, step.st.rotary_deg[C]);
-            step.st.pos.x = x.hypot(c);
+            step.st.place.rotary_deg[C] = angle_near(x, c, step.st.place.rotary_deg[C]);
+            step.st.place.pos.x = x.hypot(c);
         }
         Hypothetical::Cylinder { radius_mm, sign } => {
-            step.st.rotary_deg[C] = if radius_mm > 0.0 { (sign * c / radius_mm).to_degrees() } else { step.st.rotary_deg[C] };
+            step.st.place.rotary_deg[C] = if radius_mm > 0.0 { (sign * c / radius_mm).to_degrees() } else { step.st.place.rotary_deg[C] };
         }
     }
     if let Some(a) = step.st.comp.actual.as_mut() {
@@ -231,9 +231,9 @@ fn end_mode(step: &mut Step, f: GFn, code: &str, span: Span, p: PolarInterp) -> 
         }
         a.y = p.y_before;
     }
-    step.st.polar_interp = None;
-    step.st.pos.y = p.y_before;
-    step.st.plane = p.plane_before;
+    step.st.modes.polar_interp = None;
+    step.st.place.pos.y = p.y_before;
+    step.st.modes.plane = p.plane_before;
     // G16 belongs to the plane that ends here.
     step.st.transform.polar = false;
     Ok(())
@@ -260,7 +260,7 @@ pub(super) fn push(step: &mut Step, span: Span, n: Option<u32>, op: Op, mode: Po
         };
         (p.x, p.y, p.z)
     };
-    let start_deg = step.st.rotary_deg[C];
+    let start_deg = step.st.place.rotary_deg[C];
     let (list, mut r0) = match mode.kind {
         Hypothetical::Polar => (pieces(&at, length, curvature, start_deg, PIECE_TOLERANCE_MM), from.x.hypot(from.y)),
         Hypothetical::Cylinder { radius_mm, sign } => (unrolled(&at, length, curvature, radius_mm, sign, PIECE_TOLERANCE_MM), from.x),
@@ -282,5 +282,5 @@ pub(super) fn push(step: &mut Step, span: Span, n: Option<u32>, op: Op, mode: Po
         }
         (r0, a0, z0) = (piece.radius_mm, piece.angle_deg, piece.z);
     }
-    step.st.rotary_deg[C] = a0;
+    step.st.place.rotary_deg[C] = a0;
 }

@@ -62,7 +62,7 @@ fn p_and_q(step: &mut Step, words: &mut Words, code: &str) -> Result<(u32, u32),
 /// G71 or G72, either block.
 /// The first G73 block: U(Δi) W(Δk) R(d).
 fn pattern_first(step: &mut Step, words: &mut Words) -> Result<(), Diagnostic> {
-    let mut data = step.st.pattern_data.unwrap_or((0.0, 0.0, 1));
+    let mut data = step.st.memory.pattern_data.unwrap_or((0.0, 0.0, 1));
     if let Some(w) = words.take(b'U') {
         data.0 = step.length(w)?;
     }
@@ -76,7 +76,7 @@ fn pattern_first(step: &mut Step, words: &mut Words) -> Result<(), Diagnostic> {
         }
         data.2 = w.value as u32;
     }
-    step.st.pattern_data = Some(data);
+    step.st.memory.pattern_data = Some(data);
     Ok(())
 }
 
@@ -89,7 +89,7 @@ pub(super) fn block(step: &mut Step, words: &mut Words, kind: RoughKind) -> Resu
     if !(words.has(b'P') || words.has(b'Q')) {
         // First block: Δd (U for G71, W for G72) and e.
         let depth_letter = if kind == RoughKind::Turning { b'U' } else { b'W' };
-        let mut data = step.st.rough_data[slot].unwrap_or((0.0, 0.0));
+        let mut data = step.st.memory.rough_data[slot].unwrap_or((0.0, 0.0));
         if let Some(w) = words.take(depth_letter) {
             let d = step.length(w)?;
             if d <= 0.0 {
@@ -100,19 +100,19 @@ pub(super) fn block(step: &mut Step, words: &mut Words, kind: RoughKind) -> Resu
         if let Some(w) = words.take(b'R') {
             data.1 = step.length(w)?.abs();
         }
-        step.st.rough_data[slot] = Some(data);
+        step.st.memory.rough_data[slot] = Some(data);
         return Ok(());
     }
     let (ns, nf) = p_and_q(step, words, code)?;
     // G73 takes its relief and passes from its first block; G71/G72 their depth of cut and
     // back-off (G73 has neither: 0).
     let (depth_mm, back_off_mm, pattern) = if kind == RoughKind::Pattern {
-        let Some((di, dk, d)) = step.st.pattern_data else {
+        let Some((di, dk, d)) = step.st.memory.pattern_data else {
             return Err(step.alarm(Rule::MissingWord, step.span, format!("G73 P{ns} Q{nf} needs its first block G73 U(Δi) W(Δk) R(d) before it")));
         };
         (0.0, 0.0, Some((Vec3::new(di, 0.0, dk), d)))
     } else {
-        let Some((depth_mm, back_off_mm)) = step.st.rough_data[slot].filter(|d| d.0 > 0.0) else {
+        let Some((depth_mm, back_off_mm)) = step.st.memory.rough_data[slot].filter(|d| d.0 > 0.0) else {
             let letter = if kind == RoughKind::Turning { 'U' } else { 'W' };
             return Err(step.alarm(Rule::MissingWord, step.span, format!("{code} P{ns} Q{nf} needs the depth of cut first: a block {code} {letter}(Δd) R(e) before it")));
         };
@@ -132,14 +132,14 @@ pub(super) fn block(step: &mut Step, words: &mut Words, kind: RoughKind) -> Resu
             step.warn(Rule::NotSimulated, w.span, msg);
         }
     }
-    step.out.rough_request = Some(Box::new(RoughRequest { kind, span: step.span, n: step.n, ns, nf, allowance, depth_mm, back_off_mm, pattern, start: step.st.pos }));
+    step.out.rough_request = Some(Box::new(RoughRequest { kind, span: step.span, n: step.n, ns, nf, allowance, depth_mm, back_off_mm, pattern, start: step.st.place.pos }));
     Ok(())
 }
 
 /// G70 P(ns) Q(nf).
 pub(super) fn finishing(step: &mut Step, words: &mut Words) -> Result<(), Diagnostic> {
     let (ns, nf) = p_and_q(step, words, "G70")?;
-    step.out.finish_request = Some(FinishRequest { span: step.span, n: step.n, ns, nf, start: step.st.pos });
+    step.out.finish_request = Some(FinishRequest { span: step.span, n: step.n, ns, nf, start: step.st.place.pos });
     Ok(())
 }
 
@@ -172,7 +172,7 @@ impl Interpreter {
         if ends_programme(block) {
             self.collecting = None;
             // The end still ends the programme (check mode reads on after the alarm).
-            self.state.ended = true;
+            self.state.modes.ended = true;
             return Err(self.contour_alarm(Rule::ContourNotFound, block.span, format!("{code} Q{}: the programme ends before block N{}", req.nf, req.nf)));
         }
         if blocks.len() >= MAX_CONTOUR_BLOCKS {
@@ -274,7 +274,7 @@ impl Interpreter {
                 return Err(self.contour_alarm(Rule::ContourCommand, b.span, format!("{code}: a contour block cannot run the drilling cycle {}", kind.code())));
             }
             if k == 0 {
-                after_ns = Some((st.motion, st.pos));
+                after_ns = Some((st.modes.motion, st.place.pos));
                 comp_at_ns = st.comp;
                 ns_corner = st.comp.held_corner.is_some_and(|c| c.span == b.span);
             }
@@ -294,7 +294,7 @@ impl Interpreter {
             debug_assert!(corners.is_empty());
         }
         let (ns_move, moves) = self.split_contour(code, blocks, &scratch.records, after_ns, ns_corner)?;
-        let notes = ContourNotes { feed_warned: st.feed_warned, increment_words: scratch.increment_words, increment_words_small: scratch.increment_words_small, comp: comp_at_ns };
+        let notes = ContourNotes { feed_warned: st.notes.feed_warned, increment_words: scratch.increment_words, increment_words_small: scratch.increment_words_small, comp: *comp_at_ns };
         Ok((ns_move, moves, scratch.warnings, notes))
     }
 
@@ -351,7 +351,7 @@ impl Interpreter {
         let (ns_move, rest, warnings, notes) = self.contour_moves(code, blocks)?;
         // What the contour's blocks said stays said: an implausible F once, the lengths without a
         // decimal point counted for the summary.
-        self.state.feed_warned = notes.feed_warned;
+        self.state.notes.feed_warned = notes.feed_warned;
         out.increment_words += notes.increment_words;
         out.increment_words_small += notes.increment_words_small;
         let first = &blocks[0];
@@ -386,7 +386,7 @@ impl Interpreter {
             let axis = if level_axis == 0 { "X (U)" } else { "Z (W)" };
             return Err(self.contour_alarm(Rule::ContourCommand, first.span, format!("{code}: the contour's first block N{} must move along {axis}, the axis {code} steps its depth on (help text note 2)", req.ns)));
         }
-        let r = Roughing { kind: req.kind, start: req.start, contour: &contour, allowance: req.allowance, depth_mm: req.depth_mm, back_off_mm: req.back_off_mm, ns_rapid, type_two, tolerance_mm: if self.state.inch { 0.00254 } else { 0.001 } };
+        let r = Roughing { kind: req.kind, start: req.start, contour: &contour, allowance: req.allowance, depth_mm: req.depth_mm, back_off_mm: req.back_off_mm, ns_rapid, type_two, tolerance_mm: if self.state.modes.inch { 0.00254 } else { 0.001 } };
         let rough = lay_out(&r, super::MAX_MOTIONS_PER_BLOCK).map_err(|e| match e {
             RoughError::NotMonotonic(axis) => {
                 let rule = if type_two { "type II roughing needs that along the cut axis" } else { "type I roughing needs that" };
@@ -520,7 +520,7 @@ impl Interpreter {
     /// is. Its records go to `out`, the last one ending the block (single block stops after the
     /// whole G70).
     pub fn finish_return(&mut self, req: FinishRequest, out: &mut Outcome) -> Result<(), Diagnostic> {
-        let from = self.state.pos;
+        let from = self.state.place.pos;
         let before = self.state;
         let mut scratch = Outcome::default();
         let mut step = Step { profile: self.profile, params: &self.params, tables: &self.tables, queue: &mut self.comp_queue, corners: &mut self.corner_queue, bypass_comp: true, contour: false, repair: None, span: req.span, n: req.n, st: &mut self.state, carry: None, out: &mut scratch };

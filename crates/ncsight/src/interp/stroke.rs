@@ -16,7 +16,7 @@ use crate::source::Span;
 /// G22 (on, with its area) or G23 (off).
 pub(super) fn set(step: &mut Step, words: &mut Words, on: bool, span: Span) -> Result<(), Diagnostic> {
     if !on {
-        step.st.stroke2 = None;
+        *step.st.stroke2 = None;
         return Ok(());
     }
     let mut lo = Vec3::new(f64::NEG_INFINITY, f64::NEG_INFINITY, f64::NEG_INFINITY);
@@ -37,12 +37,12 @@ pub(super) fn set(step: &mut Step, words: &mut Words, on: bool, span: Span) -> R
     let outside = step.profile.param(ParamKey::Setting("stroke2_outside")).is_some_and(|_| step.params.get(ParamKey::Setting("stroke2_outside")) != 0.0);
     let area = StrokeArea { lo, hi, outside };
     let t = step.st.transform;
-    let here = if transform::moves_records(&t) { transform::apply(&t, step.st.pos) } else { step.st.pos };
+    let here = if transform::moves_records(&t) { transform::apply(&t, step.st.place.pos) } else { step.st.place.pos };
     let at = here + step.tables.to_machine(&step.st.frame);
     if forbidden_point(&area, &at) {
         return Err(step.alarm(Rule::StrokeCheck2, span, format!("G22: the tool stands {} the area already", if outside { "outside" } else { "inside" })));
     }
-    step.st.stroke2 = Some(area);
+    *step.st.stroke2 = Some(area);
     Ok(())
 }
 

@@ -63,9 +63,9 @@ impl Step<'_> {
     pub(super) fn lead_word(&mut self, w: &Word) -> f64 {
         let mut v = w.value;
         if !w.decimal && self.params.integer_lengths() == IntegerLengths::LeastIncrement {
-            v *= if self.st.inch { 0.0001 } else { 0.001 };
+            v *= if self.st.modes.inch { 0.0001 } else { 0.001 };
         }
-        if self.st.inch { v * 25.4 } else { v }
+        if self.st.modes.inch { v * 25.4 } else { v }
     }
 
     /// Read F (and I threads per inch, E) into the lead in force; return the lead to use.
@@ -81,7 +81,7 @@ impl Step<'_> {
                 if lead > MAX_LEAD_MM {
                     return Err(self.alarm(Rule::ValueOutOfRange, w.span, format!("{}: the lead of {gname} must be at most {MAX_LEAD_MM} mm", w.text())));
                 }
-                self.st.feed = Some(lead);
+                self.st.modes.feed = Some(lead);
                 self.st.thread.lead_mm = None;
                 self.st.thread.left_hand = true;
                 return Ok((lead, -1.0));
@@ -119,7 +119,7 @@ impl Step<'_> {
                 ));
             }
             // One F register, as on the controller: the lead stays as the F of later blocks.
-            self.st.feed = Some(lead);
+            self.st.modes.feed = Some(lead);
             self.st.thread.lead_mm = None;
         }
         if let Some(w) = i {
@@ -134,7 +134,7 @@ impl Step<'_> {
             self.st.thread.lead_mm = Some(25.4 / w.value);
         }
         // The lead in force: I threads per inch if the last lead word was I, else the F register.
-        match self.st.thread.lead_mm.or(self.st.feed).filter(|l| *l > 0.0) {
+        match self.st.thread.lead_mm.or(self.st.modes.feed).filter(|l| *l > 0.0) {
             Some(l) if l <= max_mm + 1e-9 => Ok(l),
             Some(l) => Err(self.alarm(
                 Rule::ValueOutOfRange,
@@ -203,7 +203,7 @@ impl Step<'_> {
 
     /// Spindle speed of an encoder-following thread: the spindle must turn.
     pub(super) fn follow_rpm(&mut self, gname: &str) -> Result<f64, Diagnostic> {
-        if self.st.css {
+        if self.st.modes.css {
             // Issue 3: warn about G96 during threading.
             let msg = format!(
                 "{gname} under G96: the speed is taken at the thread's start diameter; the controller changes it along the cut and the lead suffers (program G97)"
@@ -224,7 +224,7 @@ impl Step<'_> {
     /// Spindle speed of a rigid thread: S in the block or the last rigid S, signed; position
     /// mode required (seed 001 G32.1 notes 12 and 14, G92.1 note 12).
     fn rigid_rpm(&mut self, words: &mut Words, gname: &str) -> Result<f64, Diagnostic> {
-        if !self.st.spindle_position_mode {
+        if !self.st.modes.spindle_position_mode {
             return Err(self.alarm(
                 Rule::SpindleMode,
                 self.span,
@@ -243,9 +243,9 @@ impl Step<'_> {
         if let Some(r) = self.st.thread.rigid_rpm {
             return Ok(r);
         }
-        if self.st.s_word > 0.0 {
-            let sign = if self.st.spindle == SpindleDir::Negative { -1.0 } else { 1.0 };
-            return Ok(sign * self.st.s_word.min(MAX_RPM));
+        if self.st.modes.s_word > 0.0 {
+            let sign = if self.st.modes.spindle == SpindleDir::Negative { -1.0 } else { 1.0 };
+            return Ok(sign * self.st.modes.s_word.min(MAX_RPM));
         }
         Err(self.alarm(
             Rule::MissingWord,
@@ -380,7 +380,7 @@ fn straight(step: &mut Step, words: &mut Words, cmd: ThreadCmd, run_deg: Option<
     };
     let rpm = if rigid { hand * step.rigid_rpm(words, gname)? } else { step.follow_rpm(gname)? };
     let (target, _) = axis_target(step, words)?;
-    let from = step.st.pos;
+    let from = step.st.place.pos;
     if target == from {
         return Ok(());
     }
@@ -415,7 +415,7 @@ fn straight(step: &mut Step, words: &mut Words, cmd: ThreadCmd, run_deg: Option<
     // The GSK980TDi's G32.1 takes J/K as its G32 (inferred): they do not end the run there.
     let ends_run = rigid && rules.k_zero_after_end && (j_given || k_given) && (step.st.thread.j.unwrap_or(0.0) != 0.0 || step.st.thread.k.unwrap_or(0.0) != 0.0);
     let end_deg = phase_after(start_deg, length, lead);
-    step.st.pos = target;
+    step.st.place.pos = target;
     step.st.thread.pending = Some(PendingThread { span: step.span, n: step.n, body: PendingBody::Straight(pass), ends_run, rigid, end_deg });
     Ok(())
 }
@@ -463,8 +463,8 @@ fn arc(step: &mut Step, words: &mut Words, dir: ArcDir, run_deg: Option<f64>) ->
         }
     }
     let (to, _) = axis_target(step, words)?;
-    let from = step.st.pos;
-    let plane = step.st.plane;
+    let from = step.st.place.pos;
+    let plane = step.st.modes.plane;
     let g = match resolve_arc(step, words, from, to, dir, gname)? {
         ArcOutcome::Arc(g) => g,
         ArcOutcome::Zero | ArcOutcome::Straight => return Ok(()),
@@ -489,7 +489,7 @@ fn arc(step: &mut Step, words: &mut Words, dir: ArcDir, run_deg: Option<f64>) ->
     let i = long_axis.index();
     let long_travel = (to.axis(i) - from.axis(i)).abs();
     let op = Op::ThreadArc { from, to, center: g.center, plane, dir, lead_mm: lead, long_axis, spindle_deg: wrap_deg(start_deg), rpm };
-    step.st.pos = to;
+    step.st.place.pos = to;
     step.st.thread.pending = Some(PendingThread {
         span: step.span,
         n: step.n,
@@ -518,7 +518,7 @@ fn cycle(step: &mut Step, words: &mut Words, rules: &'static CycleRules, explici
     let q = if rules.q_start { step.read_q(words, 0.001, false)? } else { None };
     // Help note 6 (G92.1): the interpolation type needs the servo spindle in position mode.
     let rpm = if rules.rigid { hand * step.rigid_rpm(words, gname)? } else { step.follow_rpm(gname)? };
-    let a = step.st.pos;
+    let a = step.st.place.pos;
     let c = cycle_end_point(step, words, rules, explicit)?;
     let taper = step.st.thread.taper_mm;
     let cut_start = Vec3::new(c.x + taper, a.y, a.z + flank_mm);
@@ -601,7 +601,7 @@ fn cycle_end_point(step: &mut Step, words: &mut Words, rules: &'static CycleRule
     let gname = rules.code;
     // Taper: R on GSK and FANUC, I on the YASNAC; radius, cut start minus cut end.
     let taper_word = words.take(rules.taper);
-    let a = step.st.pos;
+    let a = step.st.place.pos;
     let given_z = words.has(b'Z') || words.has(b'W');
     let given_x = words.has(b'X') || words.has(b'U');
     let (mut c, _) = axis_target(step, words)?;

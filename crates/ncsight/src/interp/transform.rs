@@ -129,7 +129,7 @@ pub(super) fn carry(t: &Transforms, op: Op) -> Op {
 /// The centre words of G68 and G51 (absolute, programmed coordinates): the axes given, the
 /// current programmed position for those not given (FANUC).
 fn centre_words(step: &mut Step, words: &mut Words, axes: &[usize]) -> Result<Vec3, Diagnostic> {
-    let mut c = step.st.pos;
+    let mut c = step.st.place.pos;
     for &a in axes {
         if let Some(w) = words.take(b"XYZ"[a]) {
             c.set_axis(a, step.length(w)?);
@@ -147,14 +147,14 @@ pub(super) fn rotation(step: &mut Step, words: &mut Words, on: bool, span: crate
         return Ok(());
     }
     let keys = step.profile.frame.transform_keys;
-    let plane = step.st.plane;
+    let plane = step.st.modes.plane;
     let (a, b, _) = plane.axes();
     let centre = centre_words(step, words, &[a, b])?;
     let before = step.st.transform.rotation.map_or(0.0, |r| r.angle_deg);
     let angle_deg = match words.take(b'R') {
         Some(w) => {
             let v = step.degrees(w);
-            let incremental = step.st.incremental && keys.rotation_incremental.is_some_and(|k| step.params.get(k) != 0.0);
+            let incremental = step.st.modes.incremental && keys.rotation_incremental.is_some_and(|k| step.params.get(k) != 0.0);
             if incremental { before + v } else { v }
         }
         None => match keys.rotation_angle {
@@ -270,7 +270,7 @@ pub(super) fn polar_words(step: &mut Step, all: &[Word], incremental: bool, plan
     }
     // Where the tool is in programmed coordinates (under a rotation, scaling or mirror image).
     let t = step.st.transform;
-    let here = if moves_records(&t) { programmed(&t, step.st.pos) } else { step.st.pos };
+    let here = if moves_records(&t) { programmed(&t, step.st.place.pos) } else { step.st.place.pos };
     let mut origin = Vec3::default();
     let mut radius = step.st.transform.polar_radius;
     if let Some(w) = radius_w {
@@ -288,7 +288,7 @@ pub(super) fn polar_words(step: &mut Step, all: &[Word], incremental: bool, plan
     step.st.transform.polar_angle_deg = angle;
     let (sin, cos) = angle.to_radians().sin_cos();
     let point = [origin.axis(a) + radius * cos, origin.axis(b) + radius * sin];
-    let unit = if step.st.inch { 25.4 } else { 1.0 };
+    let unit = if step.st.modes.inch { 25.4 } else { 1.0 };
     let mut out: Vec<Word> = all.iter().filter(|w| w.letter != la && w.letter != lb).cloned().collect();
     for (k, (letter, w)) in [(la, radius_w.or(angle_w)), (lb, angle_w.or(radius_w))].into_iter().enumerate() {
         let axis = if k == 0 { a } else { b };

@@ -11,13 +11,13 @@ use crate::modal::BoxMemory;
 pub(super) fn block(step: &mut Step, words: &mut Words, kind: BoxKind) -> Result<(), Diagnostic> {
     let name = kind.code();
     let taper_word = words.take(step.profile.box_taper);
-    let a = step.st.pos;
+    let a = step.st.place.pos;
     let given_x = words.has(b'X') || words.has(b'U');
     let given_z = words.has(b'Z') || words.has(b'W');
     let (mut c, _) = axis_target(step, words)?;
     // X, Z and R are modal in the cycle: what a block leaves out comes from the last cycle block,
     // whether or not it names G90/G94 again.
-    let memory = step.st.box_cycle;
+    let memory = step.st.memory.box_cycle;
     if let Some(m) = memory.end {
         if !given_x {
             c.x = m.x;
@@ -44,7 +44,7 @@ pub(super) fn block(step: &mut Step, words: &mut Words, kind: BoxKind) -> Result
             format!("{name}: {} and the step to the end point differ in sign, so its size may be at most |{letter}| = {shown:.3} mm", step.profile.box_taper as char),
         ));
     }
-    step.st.box_cycle = BoxMemory { end: Some(c), taper_mm };
+    step.st.memory.box_cycle = BoxMemory { end: Some(c), taper_mm };
     if c == a && taper_mm == 0.0 {
         return Ok(());
     }

@@ -126,7 +126,7 @@ impl Reading<'_> {
         let f = match group {
             // A lathe's drilling cycle is a group 01 code on the GSK profiles.
             Group::Motion | Group::CannedCycle if drill_code.is_some() => drill_code,
-            Group::Motion => Some(match m.motion {
+            Group::Motion => Some(match m.modes.motion {
                 Motion::Rapid => GFn::Rapid,
                 Motion::Linear => GFn::Linear,
                 Motion::ArcCw => GFn::ArcCw,
@@ -136,16 +136,16 @@ impl Reading<'_> {
                 Motion::Curve(kind) => GFn::Curve(kind),
             }),
             Group::CannedCycle => Some(GFn::CycleCancel),
-            Group::Plane => Some(match m.plane {
+            Group::Plane => Some(match m.modes.plane {
                 Plane::XY => GFn::PlaneXY,
                 Plane::ZX => GFn::PlaneZX,
                 Plane::YZ => GFn::PlaneYZ,
             }),
-            Group::Distance => Some(if m.incremental { GFn::Incremental } else { GFn::Absolute }),
-            Group::FeedMode => Some(if m.per_rev { GFn::FeedPerRevolution } else { GFn::FeedPerMinute }),
-            Group::Units => Some(if m.inch { GFn::Inch } else { GFn::Metric }),
-            Group::SpindleSpeedMode => Some(if m.css { GFn::ConstantSurfaceSpeed } else { GFn::ConstantRpm }),
-            Group::ReturnLevel => Some(if m.return_initial { GFn::ReturnInitial } else { GFn::ReturnR }),
+            Group::Distance => Some(if m.modes.incremental { GFn::Incremental } else { GFn::Absolute }),
+            Group::FeedMode => Some(if m.modes.per_rev { GFn::FeedPerRevolution } else { GFn::FeedPerMinute }),
+            Group::Units => Some(if m.modes.inch { GFn::Inch } else { GFn::Metric }),
+            Group::SpindleSpeedMode => Some(if m.modes.css { GFn::ConstantSurfaceSpeed } else { GFn::ConstantRpm }),
+            Group::ReturnLevel => Some(if m.modes.return_initial { GFn::ReturnInitial } else { GFn::ReturnR }),
             Group::MacroCall => Some(if self.modal_call { GFn::ModalMacroCall } else { GFn::ModalMacroCancel }),
             _ => None,
         };
@@ -156,7 +156,7 @@ impl Reading<'_> {
         // The last code commanded in the group, else its power-on code: only for a group whose
         // codes the profile simulates (G61/G64 are not simulated on the lathes yet).
         let simulated = p.g_defs().any(|d| d.group == group && !matches!(d.function, GFn::NotYet(_)));
-        match m.group_codes[group as usize] {
+        match m.notes.group_codes[group as usize] {
             0 if !simulated => Err(no_such(number, "the codes of this group are not simulated by ncsight yet")),
             0 => match POWER_ON.iter().find(|(g, _)| *g == group) {
                 Some((_, code)) => Ok(Some(*code)),
@@ -172,15 +172,15 @@ impl expr::Variables for Reading<'_> {
         let m = self.modal;
         // The position the controller shows (the tool's, plus a tool offset not moved out yet);
         // #5021-#5026 add the machine's offsets.
-        let shown = m.pos + m.frame.unmoved;
-        let machine = m.pos + self.to_machine;
+        let shown = m.place.pos + m.frame.unmoved;
+        let machine = m.place.pos + self.to_machine;
         let axis = |letter: u8, p: &crate::motion::Vec3| {
             let (i, v) = match letter {
                 b'X' => (0, p.x),
                 b'Y' => (1, p.y),
                 b'Z' => (2, p.z),
                 // A rotary axis: degrees, the same in every coordinate system (no offsets).
-                r => return Some(self.modal.rotary_deg[usize::from(r - b'A').min(2)]),
+                r => return Some(self.modal.place.rotary_deg[usize::from(r - b'A').min(2)]),
             };
             // A diameter X reads as a diameter (docs/reference/macro.md section 8, inferred).
             Some(if i == 0 && self.profile.diameter_x { v * 2.0 } else { v })
@@ -198,16 +198,16 @@ impl expr::Variables for Reading<'_> {
             OUTPUT_WORD => Some(self.vars.outputs.iter().rev().fold(0.0, |w, on| w * 2.0 + f64::from(u8::from(*on)))),
             // Modal information (FANUC #4001-#4022, #4102-#4120).
             4001..=4022 => return self.group_code(number),
-            4102 => m.last_words.b,
-            4107 => m.last_words.d,
-            4108 => m.last_words.e,
-            4111 => m.last_words.h,
-            4113 => m.last_words.m,
-            4109 => m.feed,
+            4102 => m.notes.last_words.b,
+            4107 => m.notes.last_words.d,
+            4108 => m.notes.last_words.e,
+            4111 => m.notes.last_words.h,
+            4113 => m.notes.last_words.m,
+            4109 => m.modes.feed,
             4114 => self.last_n.map(f64::from),
             4115 => self.program.map(f64::from),
-            4119 => Some(m.s_word),
-            4120 => Some(f64::from(m.tool)),
+            4119 => Some(m.modes.s_word),
+            4120 => Some(f64::from(m.modes.tool)),
             // Positions: the block end point, the machine and the current position. Without a
             // setup (work and tool offsets) the three are the same (docs/reference/macro.md section 8); with
             // one, #5021-#5026 are in machine coordinates.

@@ -1054,7 +1054,7 @@ impl Core {
         evaluated.program = None;
         evaluated.words.clear();
         evaluated.comments.clone_from(&block.comments);
-        let inch = self.interp.state().inch;
+        let inch = self.interp.state().modes.inch;
         // A G65/G66 block's words are arguments: values pass as they are.
         let arguments = words.iter().any(|w| w.letter == b'G' && matches!(m.arena.nodes.get(w.node as usize), Some(crate::read::expr::Node::Num(v)) if *v == 65.0 || *v == 66.0));
         let mut failed = None;
@@ -1572,10 +1572,10 @@ impl Core {
                 self.pass_on(sink);
                 // A programme end inside a G70's blocks ends the G70 (PS0063) before the run;
                 // its N nf ends it in interpret_item, whatever the block is.
-                if let Some(req) = self.calls.frames.last().and_then(|f| f.finishing).filter(|_| self.interp.state().ended) {
+                if let Some(req) = self.calls.frames.last().and_then(|f| f.finishing).filter(|_| self.interp.state().modes.ended) {
                     return self.end_finishing(req, block, sink);
                 }
-                if self.interp.state().ended {
+                if self.interp.state().modes.ended {
                     self.status = Status::Ended;
                     if self.mode == Mode::Run {
                         return false;
@@ -1599,7 +1599,7 @@ impl Core {
                     return false;
                 }
                 // A programme end inside an unfinished contour still ends the programme.
-                if self.interp.state().ended {
+                if self.interp.state().modes.ended {
                     self.status = Status::Ended;
                 }
             }
@@ -1621,10 +1621,10 @@ impl Core {
             Ok(()) => self.pass_on(sink),
             Err(d) => {
                 self.alarm(d, sink);
-                if self.interp.state().ended {
+                if self.interp.state().modes.ended {
                     self.status = Status::Ended;
                 }
-                if self.mode == Mode::Run || self.interp.state().ended {
+                if self.mode == Mode::Run || self.interp.state().modes.ended {
                     return false;
                 }
             }
@@ -1838,7 +1838,7 @@ impl Core {
     /// whole-number addresses M S T H D and the feed F pass as written (inferred).
     fn argument_value(&self, w: &Word) -> f64 {
         let lii = self.interp.params().integer_lengths() == crate::profile::IntegerLengths::LeastIncrement;
-        let increment = if self.interp.state().inch { 1e-4 } else { 1e-3 };
+        let increment = if self.interp.state().modes.inch { 1e-4 } else { 1e-3 };
         if !w.decimal && lii && !matches!(w.letter, b'M' | b'S' | b'T' | b'H' | b'D' | b'F') { w.value * increment } else { w.value }
     }
 
