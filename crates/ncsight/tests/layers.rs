@@ -357,3 +357,33 @@ fn longest_functions() {
     println!("{} functions over 100 lines", over.len());
     assert!(over.is_empty(), "functions over 100 lines: {over:?}");
 }
+
+/// Adding a cycle family touches one dispatch point in the interpreter (docs/ARCHITECTURE.md,
+/// "Adding a cycle"): a one-shot code whose block function is a cycle family's (a module with a
+/// file in cycles/) is named in interp/mod.rs by its dispatch arm in `one_shot` and nowhere else;
+/// what the interpreter asks of every such code is asked of the code (`GFn` methods) or the
+/// profile's rules, never by listing the variant again.
+#[test]
+fn a_cycle_family_is_named_once_in_the_interpreter() {
+    let text = code_of(&std::fs::read_to_string(src().join("interp/mod.rs")).unwrap());
+    let body = &text[text.find("fn one_shot(").expect("one_shot in interp/mod.rs")..];
+    let body = &body[..body.find("\n}\n").unwrap()];
+    let mut cycle_files = Vec::new();
+    files(&src().join("cycles"), &mut cycle_files);
+    let is_family = |m: &str| cycle_files.iter().any(|p| p.file_stem().is_some_and(|s| s == m));
+    let mut families = Vec::new();
+    for line in body.lines() {
+        let (Some(g), Some(arrow)) = (line.find("GFn::"), line.find("=> ")) else { continue };
+        let variant = ident(&line[g + 5..]);
+        let module = ident(&line[arrow + 3..]);
+        if line[arrow + 3 + module.len()..].starts_with("::") && is_family(module) {
+            families.push(variant.to_string());
+        }
+    }
+    assert!(families.len() >= 3, "the families dispatched by one_shot: {families:?}");
+    for v in &families {
+        let needle = format!("GFn::{v}");
+        let uses: Vec<&str> = text.lines().filter(|l| l.split(&needle).skip(1).any(|rest| !rest.starts_with(|c: char| c.is_alphanumeric() || c == '_'))).collect();
+        assert_eq!(uses.len(), 1, "{needle} is named {} times in interp/mod.rs (once, at its dispatch):\n{}", uses.len(), uses.join("\n"));
+    }
+}

@@ -28,7 +28,7 @@ use crate::alarm::{Diagnostic, Rule};
 use crate::geom::{self, ArcError};
 use crate::modal::{Modal, Motion, SpindleDir};
 use crate::motion::{ArcDir, Op, Plane, Record, StopReason, Vec3};
-use crate::profile::{Compound, GDef, GFn, Group, IntegerLengths, MDef, MFn, ParamKey, Params, Profile, MAX_RPM};
+use crate::profile::{CompInCycle, GDef, GFn, Group, IntegerLengths, MDef, MFn, ParamKey, Params, Profile, MAX_RPM};
 use crate::read::{Block, Word};
 use crate::source::Span;
 use words::Words;
@@ -1305,49 +1305,21 @@ fn suspend_compensation(step: &mut Step, last_of: &[(Group, &Word, &'static GDef
         corner::break_off(step);
     }
     if step.st.comp.side != 0 || !step.queue.is_empty() || !step.corners.is_empty() {
-        let suspends = |f: GFn| {
-            matches!(
-                f,
-                GFn::WorkOffset(_)
-                    | GFn::AdditionalWorkOffset
-                    | GFn::LocalCoordinates
-                    | GFn::MachineCoordinates
-                    | GFn::ReferenceReturn
-                    | GFn::OtherReferenceReturn
-                    | GFn::FromReference
-                    | GFn::LatheCoordinateSet
-                    | GFn::MillCoordinateSet
-                    | GFn::DataSetting
-                    | GFn::OffsetMove(_)
-                    | GFn::ReferenceCheck
-                    | GFn::Skip
-                    | GFn::SingleDirection
-                    | GFn::Thread(_)
-                    | GFn::BoxCycle(_)
-                    | GFn::Drill(_)
-                    | GFn::CompoundThread(_)
-                    | GFn::PeckCycle(_)
-                    | GFn::Rough(_)
-                    | GFn::Finish
-                    | GFn::LengthComp(_)
-            )
-        };
+        let suspends = |f: GFn| f.suspends_compensation();
         let plain_motion = last_of.iter().any(|(_, _, g)| matches!(g.function, GFn::Rapid | GFn::Linear | GFn::ArcCw | GFn::ArcCcw));
         let mode_suspends = !plain_motion && (matches!(step.st.modes.motion, Motion::Thread(_) | Motion::Box(_)) || step.st.drill.kind.is_some());
         if let Some((_, w, g)) = last_of.iter().find(|(_, _, g)| suspends(g.function)) {
             corner::break_off(step);
             comp::break_off(step);
             step.bypass_comp = true;
-            // GSK980TDi help text, G40-G42 note 6: G71-G73 cancel the mode; the finishing
-            // shape's first block starts it again.
-            if matches!(g.function, GFn::Rough(_)) && profile.frame.rough_cancels_comp {
+            // G71-G73 cancel the mode on the GSK (the finishing shape's first block starts it
+            // again); G70 runs its contour's blocks in compensation (they are moves of their own).
+            let in_cycle = profile.frame.compensation_in(g.function);
+            if in_cycle == CompInCycle::Cancelled {
                 step.st.comp.side = 0;
                 step.st.comp.started = false;
             }
-            // G70 runs its contour's blocks in compensation (they are moves of their own); G71/
-            // G72 rough along the compensated shape (FANUC) or cancel it (GSK).
-            let rough_compensated = (matches!(g.function, GFn::Rough(_)) && !profile.frame.rough_cancels_comp) || (matches!(g.function, GFn::BoxCycle(_)) && profile.frame.box_by_tip);
-            if matches!(g.function, GFn::BoxCycle(_) | GFn::Rough(_) | GFn::Drill(_) | GFn::PeckCycle(_)) && step.st.comp.side != 0 && !rough_compensated {
+            if g.function.is_canned_cycle() && step.st.comp.side != 0 && in_cycle == CompInCycle::Suspended {
                 let msg = format!("{}: radius compensation is suspended in this cycle: its moves are the programmed ones (docs/compensation.md)", w.text());
                 step.warn(Rule::NotSimulated, w.span, msg);
             }
@@ -1442,10 +1414,10 @@ fn modal_codes(step: &mut Step, block: &Block, last_of: &[(Group, &Word, &'stati
                     codes.motion = Some((w.span, Motion::Rapid));
                 }
             }
-            GFn::Dwell | GFn::DataSetting | GFn::OffsetMove(_) | GFn::ReferenceCheck | GFn::Skip | GFn::ToolMeasure(_) | GFn::SingleDirection | GFn::ReferenceReturn | GFn::OtherReferenceReturn | GFn::FromReference | GFn::DataSettingEnd | GFn::CornerArc | GFn::LocalCoordinates | GFn::MachineCoordinates | GFn::LatheCoordinateSet | GFn::MillCoordinateSet | GFn::CompoundThread(_) | GFn::PeckCycle(_) | GFn::Rough(_) | GFn::Finish => {
-                codes.non_modal = Some((w.span, g.function))
-            }
             GFn::NotYet(_) | GFn::MacroCall | GFn::ModalMacroCall | GFn::ModalMacroCancel => unreachable!("rejected above"),
+            // What is left is the block's one-shot command (`GFn::is_one_shot`), run by
+            // `one_shot` in step 10.
+            f => codes.non_modal = Some((w.span, f)),
         }
     }
     Ok(codes)
@@ -1936,7 +1908,7 @@ fn one_shot(step: &mut Step, words: &mut Words, code: (Span, GFn)) -> Result<(),
     (span, GFn::Skip) => skip(step, words, span)?,
     (span, GFn::ToolMeasure(axis)) => tool_measure(step, words, axis, span)?,
     (_, GFn::SingleDirection) => single_direction(step, words)?,
-    _ => unreachable!("only one-shot functions are stored"),
+    (span, f) => return Err(step.alarm(Rule::NotSupported, span, format!("{}: a one-shot command ncsight has no block function for", step.profile.name_of(f)))),
     }
     Ok(())
 }
@@ -2083,27 +2055,10 @@ fn finish_block(step: &mut Step, words: &Words, codes: &Codes, after: Vec<(&Word
 
 fn describe_command(step: &Step, codes: &Codes) -> String {
     let name = |f: GFn| step.profile.name_of(f);
-    let (_, m) = match codes.non_modal {
-        Some((_, f @ GFn::Dwell)) => return format!("{} (dwell)", name(f)),
-        Some((_, f @ (GFn::ReferenceReturn | GFn::OtherReferenceReturn))) => return format!("{} (reference return)", name(f)),
-        Some((_, f @ GFn::FromReference)) => return format!("{} (return from the reference point)", name(f)),
-        Some((_, f @ GFn::LocalCoordinates)) => return format!("{} (local coordinate system)", name(f)),
-        Some((_, f @ GFn::DataSetting)) => return format!("{} (data setting)", name(f)),
-        Some((_, f @ GFn::DataSettingEnd)) => return format!("{} (data setting end)", name(f)),
-        Some((_, f @ GFn::CornerArc)) => return format!("{} (corner circular interpolation)", name(f)),
-        Some((_, f @ GFn::OffsetMove(_))) => return format!("{} (tool offset increase/decrease)", name(f)),
-        Some((_, f @ GFn::ReferenceCheck)) => return format!("{} (reference point return check)", name(f)),
-        Some((_, f @ GFn::Skip)) => return format!("{} (skip function)", name(f)),
-        Some((_, f @ GFn::SingleDirection)) => return format!("{} (single direction positioning)", name(f)),
-        Some((_, f @ GFn::MachineCoordinates)) => return format!("{} (positioning in machine coordinates)", name(f)),
-        Some((_, f @ (GFn::LatheCoordinateSet | GFn::MillCoordinateSet))) => return format!("{} (coordinate setting)", name(f)),
-        Some((_, f @ GFn::CompoundThread(Compound::G76))) => return format!("{} (compound threading)", name(f)),
-        Some((_, f @ GFn::CompoundThread(Compound::G78))) => return format!("{} (compound threading with infeed modes)", name(f)),
-        Some((_, GFn::PeckCycle(kind))) => return format!("{} (peck cutting cycle)", kind.code()),
-        Some((_, GFn::Rough(kind))) => return format!("{} (roughing cycle)", kind.code()),
-        Some((_, f @ GFn::Finish)) => return format!("{} (finishing cycle)", name(f)),
-        _ => ((), step.st.modes.motion),
-    };
+    if let Some((f, title)) = codes.non_modal.and_then(|(_, f)| Some((f, f.one_shot_title()?))) {
+        return format!("{} ({title})", name(f));
+    }
+    let m = step.st.modes.motion;
     if let Some(kind) = step.st.drill.kind {
         return format!("{} (drilling cycle; the repeat count is K)", kind.code());
     }

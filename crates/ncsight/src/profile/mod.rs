@@ -678,7 +678,29 @@ impl DrawingRules {
     }
 }
 
+/// What radius compensation does in a block whose code suspends it (`GFn::suspends_compensation`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum CompInCycle {
+    /// The cycle's moves are the programmed ones; a canned cycle warns that they are.
+    Suspended,
+    /// The mode ends (G40 in effect): GSK980TDi help text, G40-G42 note 6, for G71-G73.
+    Cancelled,
+    /// The cycle offsets its own moves (FANUC roughing along the compensated shape, G90/G94 by
+    /// the imaginary tool nose).
+    OffsetByCycle,
+}
+
 impl FrameRules {
+    /// What radius compensation does in a block of the code `f` (one that suspends it).
+    pub fn compensation_in(&self, f: GFn) -> CompInCycle {
+        match f {
+            GFn::Rough(_) if self.rough_cancels_comp => CompInCycle::Cancelled,
+            GFn::Rough(_) => CompInCycle::OffsetByCycle,
+            GFn::BoxCycle(_) if self.box_by_tip => CompInCycle::OffsetByCycle,
+            _ => CompInCycle::Suspended,
+        }
+    }
+
     pub const FANUC: FrameRules = FrameRules {
         coordinate_set_wins: false,
         reference_cancels_tool_offset: false,
@@ -968,7 +990,71 @@ pub enum CodeStatus {
     NotYet,
 }
 
+/// What each function is, asked of the code (never of the controller) wherever the interpreter
+/// treats a kind of command alike: a new cycle family answers here, beside its variant, and
+/// the interpreter names it in one place only, its dispatch (`interp::one_shot` or
+/// `modal_motion`; `crates/ncsight/tests/layers.rs` holds it).
 impl GFn {
+    /// Radius compensation acts on plain moves only: a block with a cycle, a thread, a reference
+    /// return or a coordinate change runs uncompensated, and the compensated path ends before it
+    /// (GSK980TDi help text, G40-G42 notes 5-6; FANUC threading likewise, inferred).
+    pub fn suspends_compensation(self) -> bool {
+        self.is_canned_cycle()
+            || matches!(
+                self,
+                GFn::WorkOffset(_)
+                    | GFn::AdditionalWorkOffset
+                    | GFn::LocalCoordinates
+                    | GFn::MachineCoordinates
+                    | GFn::ReferenceReturn
+                    | GFn::OtherReferenceReturn
+                    | GFn::FromReference
+                    | GFn::LatheCoordinateSet
+                    | GFn::MillCoordinateSet
+                    | GFn::DataSetting
+                    | GFn::OffsetMove(_)
+                    | GFn::ReferenceCheck
+                    | GFn::Skip
+                    | GFn::SingleDirection
+                    | GFn::Thread(_)
+                    | GFn::CompoundThread(_)
+                    | GFn::Finish
+                    | GFn::LengthComp(_)
+            )
+    }
+
+    /// A canned cycle whose moves are the programmed ones when radius compensation is in force
+    /// (the compensation is suspended in it, and a warning says so): the box, roughing, drilling
+    /// and peck cycles.
+    pub fn is_canned_cycle(self) -> bool {
+        matches!(self, GFn::BoxCycle(_) | GFn::Rough(_) | GFn::Drill(_) | GFn::PeckCycle(_))
+    }
+
+    /// What a one-shot command is called in a message ("G74 (peck cutting cycle)").
+    pub fn one_shot_title(self) -> Option<&'static str> {
+        Some(match self {
+            GFn::Dwell => "dwell",
+            GFn::ReferenceReturn | GFn::OtherReferenceReturn => "reference return",
+            GFn::FromReference => "return from the reference point",
+            GFn::LocalCoordinates => "local coordinate system",
+            GFn::DataSetting => "data setting",
+            GFn::DataSettingEnd => "data setting end",
+            GFn::CornerArc => "corner circular interpolation",
+            GFn::OffsetMove(_) => "tool offset increase/decrease",
+            GFn::ReferenceCheck => "reference point return check",
+            GFn::Skip => "skip function",
+            GFn::SingleDirection => "single direction positioning",
+            GFn::MachineCoordinates => "positioning in machine coordinates",
+            GFn::LatheCoordinateSet | GFn::MillCoordinateSet => "coordinate setting",
+            GFn::CompoundThread(Compound::G76) => "compound threading",
+            GFn::CompoundThread(Compound::G78) => "compound threading with infeed modes",
+            GFn::PeckCycle(_) => "peck cutting cycle",
+            GFn::Rough(_) => "roughing cycle",
+            GFn::Finish => "finishing cycle",
+            _ => return None,
+        })
+    }
+
     pub fn status(self) -> CodeStatus {
         match self {
             GFn::NotYet(_) => CodeStatus::NotYet,
