@@ -607,6 +607,17 @@ impl<T: Copy> Kept<T> {
         self.before = None;
     }
 
+    /// Take the value out of an optional field of the part, saving the part only when the field
+    /// holds one (`Option::take` through `DerefMut` would save the part at every block).
+    #[inline]
+    pub fn take_some<V>(&mut self, field: impl Fn(&mut T) -> &mut Option<V>) -> Option<V> {
+        // Only looked at: the part is unchanged when the field is empty.
+        if field(&mut self.now).is_none() {
+            return None;
+        }
+        field(&mut **self).take()
+    }
+
     fn roll_back(&mut self) {
         if let Some(before) = self.before.take() {
             self.now = before;

@@ -250,7 +250,9 @@ impl Step<'_> {
         if let Some(p) = op.end_point() {
             self.st.place.pos = p;
             // The tool offset's movement is made (FANUC 5002#6 LWM: with the next move).
-            self.st.frame.unmoved = Vec3::default();
+            if self.st.frame.unmoved != Vec3::default() {
+                self.st.frame.unmoved = Vec3::default();
+            }
         }
         let op = match &self.carry {
             Some(t) => transform::carry(t, op),
@@ -660,7 +662,7 @@ impl Interpreter {
         }
         let repair = self.switches.repair_position;
         let mut step = Step { profile: self.profile, params: &self.params, tables: &self.tables, queue: &mut self.comp_queue, corners: &mut self.corner_queue, bypass_comp: false, contour: false, repair, span: Span::default(), n: None, st: &mut self.state, carry: None, out };
-        if let Some(p) = step.st.thread.pending.take() {
+        if let Some(p) = step.st.thread.take_some(|t| &mut t.pending) {
             step.bypass_comp = true;
             thread::flush(&mut step, p, true);
             step.bypass_comp = false;
@@ -1520,7 +1522,7 @@ fn cancel_by_motion(step: &mut Step, codes: &Codes) {
 fn held_thread_run(step: &mut Step, codes: &Codes, no_m_codes: bool, words: &Words, motion_now: Motion, has_axis: bool) -> Option<f64> {
     // 5. A held-back thread run end: does this block continue the run?
     let mut run_deg = None;
-    if let Some(p) = step.st.thread.pending.take() {
+    if let Some(p) = step.st.thread.take_some(|t| &mut t.pending) {
         let goes_on = match motion_now {
             Motion::Thread(cmd) => {
                 has_axis && codes.non_modal.is_none() && no_m_codes && !words.has(b'T') && thread::continues(cmd, &p)
@@ -1991,13 +1993,13 @@ fn codes_css(last_of: &[(Group, &Word, &GDef)]) -> Option<bool> {
 /// 11. M codes that act after the motion, then the check that every word was used.
 fn finish_block(step: &mut Step, words: &Words, codes: &Codes, after: Vec<(&Word, MFn)>, switches: Switches) -> Result<(), Diagnostic> {
     // A D changed in compensation: the new radius from the end of this block's move on.
-    if let Some(d) = step.st.comp.next_d.take() {
+    if let Some(d) = step.st.comp.take_some(|c| &mut c.next_d) {
         let e = frame::entry(step, d, step.span);
         step.st.comp.d = d;
         step.st.comp.radius_mm = e.radius_mm + e.wear_radius_mm;
     }
     // An L or D whose block made no move in the plane has no corner to make.
-    if let Some(c) = step.st.comp.corner_for_next.take() {
+    if let Some(c) = step.st.comp.take_some(|c| &mut c.corner_for_next) {
         step.warn(Rule::TextIgnored, c.span, format!("{}: the block makes no move in the plane: no corner is made", c.word()));
     }
     // A block worked out in programmed coordinates ends where its records took the tool.
@@ -2006,7 +2008,7 @@ fn finish_block(step: &mut Step, words: &Words, codes: &Codes, after: Vec<(&Word
     }
     // A stop or an end after a held-back thread run end: the run ends first.
     if !after.is_empty() {
-        if let Some(p) = step.st.thread.pending.take() {
+        if let Some(p) = step.st.thread.take_some(|t| &mut t.pending) {
             thread::flush(step, p, true);
         }
     }
