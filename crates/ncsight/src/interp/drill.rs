@@ -557,7 +557,10 @@ pub(super) fn block(step: &mut Step, words: &mut Words, kind: DrillKind, enterin
         // The initial level is where the tool stands when the cycle mode is entered (docs/reference/behaviour.md).
         step.st.drill.initial = step.st.place.pos.axis(n);
     }
-    step.st.drill.kind = Some(kind);
+    // Read before it is written: a hole block of the cycle in force changes no drilling data.
+    if step.st.drill.kind != Some(kind) {
+        step.st.drill.kind = Some(kind);
+    }
     let drills = words.has(letter(a)) || words.has(letter(b)) || words.has(letter(n)) || words.has(b'R');
     take_hole_words(step, words)?;
     let repeats = repeats(step, words)?;
