@@ -12,7 +12,16 @@ use std::process::Command;
 fn main() {
     let manifest = PathBuf::from(std::env::var("CARGO_MANIFEST_DIR").unwrap());
     let root = manifest.join("../..");
-    for dir in ["crates/ncsight/src", "crates/ncsight-io/src", "crates/ncsight-wasm/src", "crates/ncsight-wasm/Cargo.toml", "crates/ncsight/Cargo.toml", "crates/ncsight-io/Cargo.toml", "Cargo.toml", "Cargo.lock"] {
+    for dir in [
+        "crates/ncsight/src",
+        "crates/ncsight-io/src",
+        "crates/ncsight-wasm/src",
+        "crates/ncsight-wasm/Cargo.toml",
+        "crates/ncsight/Cargo.toml",
+        "crates/ncsight-io/Cargo.toml",
+        "Cargo.toml",
+        "Cargo.lock",
+    ] {
         println!("cargo:rerun-if-changed={}", root.join(dir).display());
     }
     println!("cargo:rerun-if-env-changed=NCSIGHT_ENGINE_WASM");
@@ -48,7 +57,11 @@ fn ensure_target() {
 fn build(root: &std::path::Path, out: &std::path::Path) -> Result<(), String> {
     ensure_target();
     // A relative CARGO_TARGET_DIR is the workspace root's (where cargo was run from, normally).
-    let target_dir = std::env::var_os("CARGO_TARGET_DIR").map(PathBuf::from).map(|d| if d.is_absolute() { d } else { root.join(d) }).unwrap_or_else(|| root.join("target")).join("engine");
+    let target_dir = std::env::var_os("CARGO_TARGET_DIR")
+        .map(PathBuf::from)
+        .map(|d| if d.is_absolute() { d } else { root.join(d) })
+        .unwrap_or_else(|| root.join("target"))
+        .join("engine");
     let cargo = std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into());
     let mut cmd = Command::new(cargo);
     cmd.current_dir(root)
@@ -61,12 +74,24 @@ fn build(root: &std::path::Path, out: &std::path::Path) -> Result<(), String> {
         .env("CARGO_PROFILE_RELEASE_CODEGEN_UNITS", "1");
     // What the outer build set for its own target must not reach this one (a fuzzing build's
     // sanitizer flags, clippy's wrapper, the host's target).
-    for var in ["RUSTFLAGS", "CARGO_ENCODED_RUSTFLAGS", "RUSTC_WRAPPER", "RUSTC_WORKSPACE_WRAPPER", "CARGO_BUILD_TARGET", "CARGO_TARGET_DIR", "CARGO_BUILD_RUSTFLAGS", "CARGO_BUILD_RUSTC_WRAPPER", "CARGO_BUILD_RUSTC_WORKSPACE_WRAPPER"] {
+    for var in [
+        "RUSTFLAGS",
+        "CARGO_ENCODED_RUSTFLAGS",
+        "RUSTC_WRAPPER",
+        "RUSTC_WORKSPACE_WRAPPER",
+        "CARGO_BUILD_TARGET",
+        "CARGO_TARGET_DIR",
+        "CARGO_BUILD_RUSTFLAGS",
+        "CARGO_BUILD_RUSTC_WRAPPER",
+        "CARGO_BUILD_RUSTC_WORKSPACE_WRAPPER",
+    ] {
         cmd.env_remove(var);
     }
     let status = cmd.status().map_err(|e| format!("cannot run cargo: {e}"))?;
     if !status.success() {
-        return Err("cargo build -p ncsight-wasm --target wasm32-unknown-unknown failed; is the target installed (rustup target add wasm32-unknown-unknown)?".into());
+        return Err(
+            "cargo build -p ncsight-wasm --target wasm32-unknown-unknown failed; is the target installed (rustup target add wasm32-unknown-unknown)?".into()
+        );
     }
     let wasm = target_dir.join("wasm32-unknown-unknown/release/ncsight_wasm.wasm");
     std::fs::copy(&wasm, out).map(|_| ()).map_err(|e| format!("{}: {e}", wasm.display()))

@@ -72,7 +72,11 @@ impl Decoding {
 
 /// The width of a character as shown (after [`printable`]).
 fn shown_width(c: char) -> usize {
-    if c.is_control() { 1 } else { c.width().unwrap_or(0) }
+    if c.is_control() {
+        1
+    } else {
+        c.width().unwrap_or(0)
+    }
 }
 
 /// The line without its break and byte-order mark, at most 200 bytes, tabs as spaces.
@@ -90,7 +94,17 @@ fn trimmed(raw: &[u8]) -> &[u8] {
 
 /// Control characters (a NUL byte, an escape) are never printed raw inside a message.
 fn printable(s: &str) -> String {
-    s.chars().map(|c| if c.is_control() && c != '\t' { '\u{fffd}' } else if c == '\t' { ' ' } else { c }).collect()
+    s.chars()
+        .map(|c| {
+            if c.is_control() && c != '\t' {
+                '\u{fffd}'
+            } else if c == '\t' {
+                ' '
+            } else {
+                c
+            }
+        })
+        .collect()
 }
 
 /// At most this many characters of a line are shown.

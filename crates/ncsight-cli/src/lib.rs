@@ -157,7 +157,8 @@ impl MachineArgs {
     fn decoding(&self) -> Result<diag::Decoding, Failure> {
         match &self.encoding {
             None => Ok(diag::Decoding::default()),
-            Some(label) => diag::Decoding::by_label(label).ok_or_else(|| usage(format!("--encoding {label}: unknown encoding (try gbk, gb18030, big5, shift_jis, latin1)"))),
+            Some(label) => diag::Decoding::by_label(label)
+                .ok_or_else(|| usage(format!("--encoding {label}: unknown encoding (try gbk, gb18030, big5, shift_jis, latin1)"))),
         }
     }
 }
@@ -364,9 +365,7 @@ enum Command {
         k: Option<f64>,
     },
     /// List the controller profiles; with a name, its parameters.
-    Machines {
-        machine: Option<String>,
-    },
+    Machines { machine: Option<String> },
     /// What an alarm or warning means, its usual causes, how to fix it, a wrong and a right
     /// example: NCS-E53 or the controller's PS0063. In English, or in Chinese with --lang zh
     /// (or a locale starting with zh).
@@ -410,7 +409,9 @@ pub fn main_with(args: impl IntoIterator<Item = std::ffi::OsString>, out: &mut d
         Command::Run { file, machine, format, output, operator } => run(&file, &machine, &operator, &format, output.as_deref(), out, err),
         Command::Check { files, machine, format } => check(&files, &machine, &format, out, err),
         Command::Expand { file, machine, to, output } => expand(&file, &machine, &to, output.as_deref(), out, err),
-        Command::Port { file, machine, to, to_setup, output, format } => port(&file, &machine, (&to, to_setup.as_deref()), output.as_deref(), &format, out, err),
+        Command::Port { file, machine, to, to_setup, output, format } => {
+            port(&file, &machine, (&to, to_setup.as_deref()), output.as_deref(), &format, out, err)
+        }
         Command::Machines { machine } => machines(machine.as_deref(), out),
         Command::Explain { code, lang, list } => explain(code.as_deref(), lang.as_deref(), list, out),
         Command::Lsp { stdio: _ } => ncsight_lsp::run_stdio().map(|()| EXIT_OK).map_err(|e| usage(format!("lsp: {e}"))),
@@ -422,9 +423,7 @@ pub fn main_with(args: impl IntoIterator<Item = std::ffi::OsString>, out: &mut d
             report(&file, &machine, &operator, stock.as_deref(), expect.as_deref(), output.as_deref(), out, err)
         }
         Command::App { output } => app(output.as_deref(), out),
-        Command::Repair { machine, start, end, lead, tpi, rpm, measured, j, k } => {
-            repair(&machine, &start, &end, lead, tpi, rpm, &measured, j, k, out, err)
-        }
+        Command::Repair { machine, start, end, lead, tpi, rpm, measured, j, k } => repair(&machine, &start, &end, lead, tpi, rpm, &measured, j, k, out, err),
     };
     match result {
         Ok(code) => code,
@@ -571,7 +570,11 @@ impl Head {
 
 /// How `file` is named in messages.
 fn shown(file: &str) -> &str {
-    if file == "-" { "<stdin>" } else { file }
+    if file == "-" {
+        "<stdin>"
+    } else {
+        file
+    }
 }
 
 /// [`feed::drive`] with an error in reading the input named by its file.
@@ -582,7 +585,8 @@ fn drive(
     program: &mut Program,
     on_event: &mut dyn FnMut(&Event, &[u8], feed::FileName) -> io::Result<()>,
 ) -> Result<(), Failure> {
-    feed::drive(input, library, program, on_event).map_err(|e| if feed::is_read_failure(&e) { usage(format!("cannot read {file}: {e}")) } else { Failure::Io(e) })
+    feed::drive(input, library, program, on_event)
+        .map_err(|e| if feed::is_read_failure(&e) { usage(format!("cannot read {file}: {e}")) } else { Failure::Io(e) })
 }
 
 /// A writer whose reader went away (`ncsight check big.nc | head -1`): the rest is dropped
@@ -626,7 +630,6 @@ impl<W: Write> Write for Tolerant<W> {
     }
 }
 
-
 /// Output buffer: large writes, few system calls.
 const OUTPUT_BUFFER_BYTES: usize = 256 * 1024;
 
@@ -642,7 +645,8 @@ fn run(
     let head = Head::of(file)?;
     let (params, switches) = setup(m, head.named(shown(file)), err)?;
     let operator = operator.options()?;
-    let mut fmt = format::by_name(format, params.profile(), m.setup.is_some()).ok_or_else(|| usage(format!("unknown format '{format}': choose text, jsonl or canon")))?;
+    let mut fmt =
+        format::by_name(format, params.profile(), m.setup.is_some()).ok_or_else(|| usage(format!("unknown format '{format}': choose text, jsonl or canon")))?;
     let program = Program::with_operator(params, switches, Mode::Run, operator);
     run_into(file, head, m, program, fmt.as_mut(), output, out, err)
 }
@@ -661,7 +665,15 @@ fn expand(file: &str, m: &MachineArgs, to: &str, output: Option<&str>, out: &mut
 const EXIT_PORT_DIFFERS: i32 = 4;
 
 /// `ncsight port`: the programme in the target's words, verified by running both.
-fn port(file: &str, m: &MachineArgs, (to, to_setup): (&str, Option<&str>), output: Option<&str>, format: &str, out: &mut dyn Write, err: &mut dyn Write) -> Result<i32, Failure> {
+fn port(
+    file: &str,
+    m: &MachineArgs,
+    (to, to_setup): (&str, Option<&str>),
+    output: Option<&str>,
+    format: &str,
+    out: &mut dyn Write,
+    err: &mut dyn Write,
+) -> Result<i32, Failure> {
     if format != "text" && format != "json" {
         return Err(usage(format!("--format {format}: choose text or json")));
     }
@@ -722,12 +734,31 @@ fn port(file: &str, m: &MachineArgs, (to, to_setup): (&str, Option<&str>), outpu
         None => {}
     }
     if format == "json" {
-        let diffs: Vec<String> = result.differences.iter().map(|d| format!("{{\"line\":{},\"what\":{},\"size\":{}}}", d.line, ncsight_io::format::jsonl::json_str(&d.what), d.size)).collect();
-        let rewrites: Vec<String> = result.rewritten.iter().map(|(l, why)| format!("{{\"line\":{l},\"why\":{}}}", ncsight_io::format::jsonl::json_str(why))).collect();
+        let diffs: Vec<String> = result
+            .differences
+            .iter()
+            .map(|d| format!("{{\"line\":{},\"what\":{},\"size\":{}}}", d.line, ncsight_io::format::jsonl::json_str(&d.what), d.size))
+            .collect();
+        let rewrites: Vec<String> =
+            result.rewritten.iter().map(|(l, why)| format!("{{\"line\":{l},\"why\":{}}}", ncsight_io::format::jsonl::json_str(why))).collect();
         let mut text_field = if output.is_none() { format!(",\"text\":{}", ncsight_io::format::jsonl::json_str(&programme)) } else { String::new() };
-        let params: Vec<String> = result.parameters.iter().map(|(k, v, m)| format!("{{\"key\":{},\"value\":{v},\"meaning\":{}}}", ncsight_io::format::jsonl::json_str(k), ncsight_io::format::jsonl::json_str(m))).collect();
+        let params: Vec<String> = result
+            .parameters
+            .iter()
+            .map(|(k, v, m)| {
+                format!("{{\"key\":{},\"value\":{v},\"meaning\":{}}}", ncsight_io::format::jsonl::json_str(k), ncsight_io::format::jsonl::json_str(m))
+            })
+            .collect();
         text_field.push_str(&format!(",\"parameters\":[{}]", params.join(",")));
-        writeln!(out, "{{\"from\":{},\"to\":{},\"exact\":{},\"rewritten\":[{}],\"differences\":[{}]{text_field}}}", ncsight_io::format::jsonl::json_str(&from_name), ncsight_io::format::jsonl::json_str(to_profile.name), result.exact(), rewrites.join(","), diffs.join(","))?;
+        writeln!(
+            out,
+            "{{\"from\":{},\"to\":{},\"exact\":{},\"rewritten\":[{}],\"differences\":[{}]{text_field}}}",
+            ncsight_io::format::jsonl::json_str(&from_name),
+            ncsight_io::format::jsonl::json_str(to_profile.name),
+            result.exact(),
+            rewrites.join(","),
+            diffs.join(",")
+        )?;
     } else {
         for (l, why) in &result.rewritten {
             let _ = writeln!(err, "ncsight: line {l} written as its moves: {why}");
@@ -777,7 +808,16 @@ fn read_whole(file: &str) -> Result<Vec<u8>, Failure> {
 /// `out`); alarms, and diagnostics the format does not carry, go to `err`. A record the format
 /// refuses ([`format::expand::Refused`]) is an alarm there, and the run stops.
 #[allow(clippy::too_many_arguments)]
-fn run_into(file: &str, mut head: Head, m: &MachineArgs, mut program: Program, fmt: &mut dyn format::Format, output: Option<&str>, out: &mut dyn Write, err: &mut dyn Write) -> Result<i32, Failure> {
+fn run_into(
+    file: &str,
+    mut head: Head,
+    m: &MachineArgs,
+    mut program: Program,
+    fmt: &mut dyn format::Format,
+    output: Option<&str>,
+    out: &mut dyn Write,
+    err: &mut dyn Write,
+) -> Result<i32, Failure> {
     let decoding = m.decoding()?;
     // Refused before the programme is run; created only when there is something to write.
     let mut file_out = output.map(|path| output::LazyFile::new(path, &m.read_files(file), OUTPUT_BUFFER_BYTES)).transpose().map_err(usage)?;
@@ -871,23 +911,25 @@ fn check(files: &[String], m: &MachineArgs, format: &str, out: &mut dyn Write, e
         };
         let (params, switches) = match &given {
             Some(p) => p.clone(),
-            None => {
-                match machines.iter().find(|(n, _)| *n == machine) {
-                    Some((_, p)) => p.clone(),
-                    None => {
-                        let p = setup_on(m, &machine)?;
-                        machines.push((machine, p.clone()));
-                        p
-                    }
+            None => match machines.iter().find(|(n, _)| *n == machine) {
+                Some((_, p)) => p.clone(),
+                None => {
+                    let p = setup_on(m, &machine)?;
+                    machines.push((machine, p.clone()));
+                    p
                 }
-            }
+            },
         };
         let mut program = Program::diagnostics_only(params.clone(), switches);
         let mut library = m.prepare(&mut program)?;
         let (mut alarms, mut warnings) = (0usize, 0usize);
         let result = drive(file, input, &mut library, &mut program, &mut |e, text, name| {
             if let Event::Diagnostic(d) = e {
-                if d.is_alarm() { alarms += 1 } else { warnings += 1 }
+                if d.is_alarm() {
+                    alarms += 1
+                } else {
+                    warnings += 1
+                }
                 let shown = name.unwrap_or(shown);
                 match style {
                     Some(style) => w.write_all(diag::render(shown, text, d, style, &decoding).as_bytes())?,
@@ -911,7 +953,13 @@ fn check(files: &[String], m: &MachineArgs, format: &str, out: &mut dyn Write, e
     }
     w.flush()?;
     // An unreadable file outranks what the others held: the check is not complete.
-    Ok(if unreadable { EXIT_USAGE } else if any_alarm { EXIT_ALARM } else { EXIT_OK })
+    Ok(if unreadable {
+        EXIT_USAGE
+    } else if any_alarm {
+        EXIT_ALARM
+    } else {
+        EXIT_OK
+    })
 }
 
 /// Progress of long work on a terminal: after a second, "simulating: 37 %" on standard error,
@@ -961,9 +1009,17 @@ fn setup_notes(setup: Option<(&str, &ncsight::stock::Setup)>, profile: &ncsight:
         Some(_) => "soft travel limits from the setup".into(),
         None => "no travel limits".into(),
     });
-    let works: Vec<&str> = s.work.as_ref().map(|w| ["external", "G54", "G55", "G56", "G57", "G58", "G59"].into_iter().zip(w.all()).filter(|(_, p)| p.is_some()).map(|(n, _)| n).collect()).unwrap_or_default();
+    let works: Vec<&str> = s
+        .work
+        .as_ref()
+        .map(|w| ["external", "G54", "G55", "G56", "G57", "G58", "G59"].into_iter().zip(w.all()).filter(|(_, p)| p.is_some()).map(|(n, _)| n).collect())
+        .unwrap_or_default();
     out.push(if works.is_empty() { "work offsets 0".into() } else { format!("work offsets {} from the setup, the others 0", works.join(", ")) });
-    out.push(if s.offsets.is_empty() { "no offset table: tool offsets and radii 0".into() } else { format!("{} tool offset(s) from the setup, the others 0", s.offsets.len()) });
+    out.push(if s.offsets.is_empty() {
+        "no offset table: tool offsets and radii 0".into()
+    } else {
+        format!("{} tool offset(s) from the setup, the others 0", s.offsets.len())
+    });
     out
 }
 
@@ -1152,7 +1208,10 @@ fn simulate(
         None => false,
     };
     if outputs.section.is_some() && !params.profile().is_lathe() {
-        return Err(usage(format!("--section draws a turned part's axial section; {} is a machining centre (--stl writes its cut block)", params.profile().name)));
+        return Err(usage(format!(
+            "--section draws a turned part's axial section; {} is a machining centre (--stl writes its cut block)",
+            params.profile().name
+        )));
     }
     let section_out = outputs.section.map(|path| output::LazyFile::new(path, &reads, 1 << 16)).transpose().map_err(usage)?;
     if image_out.is_some() && !params.profile().is_lathe() {
@@ -1238,7 +1297,11 @@ fn simulate(
         w.flush()?;
     }
     if let Some(mut w) = section_out {
-        if dxf { simulate::section_dxf(&mut w, &sim.stock)? } else { simulate::section_svg(&mut w, &sim.stock)? }
+        if dxf {
+            simulate::section_dxf(&mut w, &sim.stock)?
+        } else {
+            simulate::section_svg(&mut w, &sim.stock)?
+        }
         w.flush()?;
     }
     Ok(status_with_findings(alarmed, &sim.measurement.findings))
@@ -1261,7 +1324,13 @@ const CUT_BATCH: usize = 512;
 
 /// Run the programme and hand its records to `cut` on a thread of its own, in batches, so the
 /// interpreter and the cut work at once (a machining centre's cut is one thread's work).
-fn cut_beside(file: &str, input: feed::Input, library: &mut feed::Library, program: &mut Program, cut: &mut (dyn FnMut(&ncsight::Record) + Send)) -> Result<(), Failure> {
+fn cut_beside(
+    file: &str,
+    input: feed::Input,
+    library: &mut feed::Library,
+    program: &mut Program,
+    cut: &mut (dyn FnMut(&ncsight::Record) + Send),
+) -> Result<(), Failure> {
     let (to_cut, batches) = std::sync::mpsc::sync_channel::<Vec<ncsight::Record>>(8);
     std::thread::scope(|scope| {
         // The cut runs on the parallel pool's threads, where a move splits its rows between the
@@ -1320,7 +1389,8 @@ impl Spooled {
         let n = NEXT.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
         let path = std::env::temp_dir().join(format!("ncsight-simulate-{}-{n}.nc", std::process::id()));
         let spooled = Spooled { path, temporary: true };
-        let mut to = std::fs::File::create(&spooled.path).map_err(|e| usage(format!("cannot write a temporary copy of {file} at {}: {e}", spooled.path.display())))?;
+        let mut to =
+            std::fs::File::create(&spooled.path).map_err(|e| usage(format!("cannot write a temporary copy of {file} at {}: {e}", spooled.path.display())))?;
         let input = match input {
             Some(input) => input,
             None => open(file)?,
@@ -1370,12 +1440,10 @@ fn repair(
 ) -> Result<i32, Failure> {
     let (params, _) = setup(m, None, err)?;
     let profile = params.profile();
-    let Some(enable) = profile.thread.repair_enable.filter(|_| profile.g_code(32, Some(1)).is_some_and(|g| matches!(g.function, ncsight::profile::GFn::Thread(_)))) else {
-        let how = if profile.thread.repair_enable.is_some() {
-            "repairs with G92 P1 / G92.1 P1 and `run --repair-position`"
-        } else {
-            "has no thread repair"
-        };
+    let Some(enable) =
+        profile.thread.repair_enable.filter(|_| profile.g_code(32, Some(1)).is_some_and(|g| matches!(g.function, ncsight::profile::GFn::Thread(_))))
+    else {
+        let how = if profile.thread.repair_enable.is_some() { "repairs with G92 P1 / G92.1 P1 and `run --repair-position`" } else { "has no thread repair" };
         return Err(usage(format!("the thread-repair screen that writes G32.1 is a GSK988T function (GSK988T manual); {} {how}", profile.name)));
     };
     let s = numbers(start, "--start", 2)?;
@@ -1440,8 +1508,15 @@ fn explain(code: Option<&str>, lang: Option<&str>, list: bool, out: &mut dyn Wri
         Some(l) => return Err(usage(format!("--lang {l}: choose en or zh"))),
         None => {
             // The locale, as a terminal gives it.
-            let zh = ["LC_ALL", "LC_MESSAGES", "LANG"].iter().find_map(|k| std::env::var(k).ok().filter(|v| !v.is_empty())).is_some_and(|v| v.to_ascii_lowercase().starts_with("zh"));
-            if zh { Lang::Zh } else { Lang::En }
+            let zh = ["LC_ALL", "LC_MESSAGES", "LANG"]
+                .iter()
+                .find_map(|k| std::env::var(k).ok().filter(|v| !v.is_empty()))
+                .is_some_and(|v| v.to_ascii_lowercase().starts_with("zh"));
+            if zh {
+                Lang::Zh
+            } else {
+                Lang::En
+            }
         }
     };
     if list {

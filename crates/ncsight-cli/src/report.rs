@@ -22,9 +22,7 @@ const ENGINE: &[u8] = include_bytes!(concat!(env!("OUT_DIR"), "/engine.wasm"));
 
 /// Why no page can be written: the engine was not built into this binary.
 pub fn engine_missing() -> Option<&'static str> {
-    ENGINE.is_empty().then_some(
-        "this ncsight was built without the page's engine: run `rustup target add wasm32-unknown-unknown`, then build ncsight again",
-    )
+    ENGINE.is_empty().then_some("this ncsight was built without the page's engine: run `rustup target add wasm32-unknown-unknown`, then build ncsight again")
 }
 
 /// A programme for the page to open with (`ncsight report`).
@@ -115,10 +113,18 @@ fn job_json(p: Option<&Preload>) -> String {
         json_str(&p.extra_options.join("\n"))
     );
     if let Some(b) = p.stock {
-        let _ = write!(s, ",\"stock\":{{\"diameter_mm\":{},\"length_mm\":{},\"front_z_mm\":{}}}", num(b.diameter_mm, 4), num(b.length_mm, 4), num(b.front_z_mm, 4));
+        let _ =
+            write!(s, ",\"stock\":{{\"diameter_mm\":{},\"length_mm\":{},\"front_z_mm\":{}}}", num(b.diameter_mm, 4), num(b.length_mm, 4), num(b.front_z_mm, 4));
     }
     if let Some(e) = p.expect {
-        let _ = write!(s, ",\"expect\":{{\"name\":{},\"major_mm\":{},\"minor_mm\":{},\"pitch_mm\":{}}}", json_str(&e.name), num(e.major_mm, 4), num(e.minor_mm, 4), num(e.pitch_mm, 4));
+        let _ = write!(
+            s,
+            ",\"expect\":{{\"name\":{},\"major_mm\":{},\"minor_mm\":{},\"pitch_mm\":{}}}",
+            json_str(&e.name),
+            num(e.major_mm, 4),
+            num(e.minor_mm, 4),
+            num(e.pitch_mm, 4)
+        );
     }
     let lib: Vec<String> = p.library.iter().map(|(n, t)| format!("[{},{}]", json_str(n), json_str(t))).collect();
     let _ = write!(s, ",\"library\":[{}]", lib.join(","));

@@ -37,7 +37,11 @@ pub fn assumed_tools(m: &Measurement) -> Vec<String> {
             ToolKind::Thread if t.internal => format!("T{n}: internal threading insert, {} degrees, sharp", num(t.included_angle_deg, 1)),
             ToolKind::Thread => format!("T{n}: threading insert, {} degrees, sharp", num(t.included_angle_deg, 1)),
             ToolKind::Drill => format!("T{n}: drill {} mm on the spindle axis, {}-degree point", num(t.diameter_mm, 3), num(t.point_angle_deg, 1)),
-            ToolKind::Turning => format!("T{n}: turning insert, {} degrees, nose radius {} mm (each move cuts the side of the material it is nearer to)", num(t.included_angle_deg, 1), num(t.tip_radius_mm, 3)),
+            ToolKind::Turning => format!(
+                "T{n}: turning insert, {} degrees, nose radius {} mm (each move cuts the side of the material it is nearer to)",
+                num(t.included_angle_deg, 1),
+                num(t.tip_radius_mm, 3)
+            ),
             ToolKind::Boring => format!("T{n}: boring bar, {}-degree insert, nose radius {} mm", num(t.included_angle_deg, 1), num(t.tip_radius_mm, 3)),
             // Never assumed (measure.rs assumes the kinds above); named for completeness.
             other => format!("T{n}: {other:?}").to_lowercase(),
@@ -47,11 +51,7 @@ pub fn assumed_tools(m: &Measurement) -> Vec<String> {
 
 /// The measurement as one JSON object.
 pub fn json(m: &Measurement) -> String {
-    let findings: Vec<String> = m
-        .findings
-        .iter()
-        .map(finding_json)
-        .collect();
+    let findings: Vec<String> = m.findings.iter().map(finding_json).collect();
     let flanks = m.flank_angles_deg.map(|(a, b)| format!("[{},{}]", num(a, 2), num(b, 2))).unwrap_or_else(|| "null".into());
     format!(
         "{{\"assumed_tools\":[{}],\"stock_diameter_mm\":{},\"stock_guessed\":{},\"major_diameter_mm\":{},\"minor_diameter_mm\":{},\"depth_mm\":{},\"pitch_mm\":{},\"lead_mm\":{},\"hand\":{},\"starts\":{},\"start_spacing_deg\":{},\"flank_angles_deg\":{flanks},\"full_depth_length_mm\":{},\"runout_length_mm\":{},\"grid\":{{\"dz_mm\":{},\"dtheta_deg\":{},\"cell_updates\":{}}},\"profile\":[{}],\"findings\":[{}]}}\n",
@@ -93,11 +93,7 @@ pub fn mill_json(sim: &ncsight::stock::measure::MillSimulation) -> String {
         .iter()
         .map(|h| format!("{{\"x\":{},\"y\":{},\"depth_mm\":{},\"diameter_mm\":{}}}", num(h.x, 3), num(h.y, 3), num(h.depth_mm, 3), num(h.diameter_mm, 3)))
         .collect();
-    let findings: Vec<String> = sim
-        .findings
-        .iter()
-        .map(finding_json)
-        .collect();
+    let findings: Vec<String> = sim.findings.iter().map(finding_json).collect();
     let floors: Vec<String> = sim.stock.floors().iter().map(|(z, a)| format!("{{\"z_mm\":{},\"area_mm2\":{}}}", num(*z, 3), num(*a, 2))).collect();
     let assumed: Vec<String> = mill_assumed(sim).iter().map(|t| json_str(t)).collect();
     let guessed = match sim.block_guessed {
@@ -179,7 +175,11 @@ pub fn text(m: &Measurement) -> String {
     line(&mut s, "pitch", m.pitch_mm, "mm");
     line(&mut s, "lead", m.lead_mm, "mm");
     s.push_str(&format!("{:<22} {}\n", "hand", m.hand.unwrap_or("-")));
-    s.push_str(&format!("{:<22} {}\n", "starts", m.starts.map(|v| format!("{v}, {} deg apart", num(m.start_spacing_deg.unwrap_or(0.0), 2))).unwrap_or_else(|| "-".into())));
+    s.push_str(&format!(
+        "{:<22} {}\n",
+        "starts",
+        m.starts.map(|v| format!("{v}, {} deg apart", num(m.start_spacing_deg.unwrap_or(0.0), 2))).unwrap_or_else(|| "-".into())
+    ));
     s.push_str(&format!(
         "{:<22} {}\n",
         "flank angles",
@@ -235,7 +235,9 @@ pub fn options(res: Option<&str>, expect: Option<&str>) -> Result<SimOptions, St
             Ok(v) if v.is_finite() && v > 0.0 => (Some(v), None),
             _ => return Err(format!("--resolution {r}: write MM (a mill's cell) or DZ,DTHETA in mm and degrees, e.g. 0.01,0.5")),
         },
-        Some(r) => resolution(r).map(|(a, b)| (Some(a), Some(b))).ok_or_else(|| format!("--resolution {r}: write MM (a mill's cell) or DZ,DTHETA in mm and degrees, e.g. 0.01,0.5"))?,
+        Some(r) => resolution(r)
+            .map(|(a, b)| (Some(a), Some(b)))
+            .ok_or_else(|| format!("--resolution {r}: write MM (a mill's cell) or DZ,DTHETA in mm and degrees, e.g. 0.01,0.5"))?,
         None => (None, None),
     };
     // `bore=D` and `od=D` are sizes; the rest names the thread (`M24x2`, `major=..,minor=..`).
@@ -340,7 +342,12 @@ pub fn section_svg(w: &mut dyn Write, stock: &ncsight::stock::lathe::LatheStock)
         let d: Vec<String> = o.iter().map(|(z, y)| format!("{},{}", num(*z, 4), num(-*y, 4))).collect();
         writeln!(w, "<polygon points=\"{}\" fill=\"#cfd8dc\" stroke=\"#000\" stroke-width=\"0.05\"/>", d.join(" "))?;
     }
-    writeln!(w, "<line x1=\"{}\" y1=\"0\" x2=\"{}\" y2=\"0\" stroke=\"#455a64\" stroke-width=\"0.05\" stroke-dasharray=\"3 0.8 0.6 0.8\"/>", num(z0, 4), num(z1, 4))?;
+    writeln!(
+        w,
+        "<line x1=\"{}\" y1=\"0\" x2=\"{}\" y2=\"0\" stroke=\"#455a64\" stroke-width=\"0.05\" stroke-dasharray=\"3 0.8 0.6 0.8\"/>",
+        num(z0, 4),
+        num(z1, 4)
+    )?;
     writeln!(w, "</svg>")
 }
 

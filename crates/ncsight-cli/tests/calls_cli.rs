@@ -32,7 +32,11 @@ fn a_programme_from_a_subprogram_dir() {
     // Rapid, two runs of Y+1 in the other file at depth 1, X5, M30.
     assert_eq!(lines.len(), 5, "{out}");
     let file = lib.join("o0200.txt");
-    assert!(lines[1].contains(&format!("\"line\":3,\"file\":\"{}\"", file.display())) && lines[1].contains("\"y\":1,") && lines[1].contains("\"call_depth\":1"), "{}", lines[1]);
+    assert!(
+        lines[1].contains(&format!("\"line\":3,\"file\":\"{}\"", file.display())) && lines[1].contains("\"y\":1,") && lines[1].contains("\"call_depth\":1"),
+        "{}",
+        lines[1]
+    );
     assert!(lines[2].contains("\"y\":2,"), "{}", lines[2]);
     assert!(lines[3].contains("\"call_depth\":0") && !lines[3].contains("\"file\""), "{}", lines[3]);
     // Found by its content when no file is named after it.

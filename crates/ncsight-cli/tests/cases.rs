@@ -98,7 +98,11 @@ fn differences(expected: &str, actual: &str) -> Option<String> {
             (Some(x), Some(y)) => format!("{:+.4} s", y - x),
             _ => "one has no time".to_string(),
         };
-        told.push(format!("time differs first at line {} ({by}; the motion there {})", k + 1, if pairs().nth(k).is_some_and(|(_, (x, _), (y, _), _, _)| x == y) { "is the same" } else { "differs too" }));
+        told.push(format!(
+            "time differs first at line {} ({by}; the motion there {})",
+            k + 1,
+            if pairs().nth(k).is_some_and(|(_, (x, _), (y, _), _, _)| x == y) { "is the same" } else { "differs too" }
+        ));
     }
     if told.is_empty() {
         told.push("the text differs (spacing or number format)".into());

@@ -53,8 +53,7 @@ pub fn expect_file(path: &Path, actual: &str) {
         std::fs::write(path, actual).unwrap();
         return;
     }
-    let expected = std::fs::read_to_string(path)
-        .unwrap_or_else(|e| panic!("{}: {e} (run with NCSIGHT_BLESS=1 to create it)", path.display()));
+    let expected = std::fs::read_to_string(path).unwrap_or_else(|e| panic!("{}: {e} (run with NCSIGHT_BLESS=1 to create it)", path.display()));
     if expected != actual {
         let diff: Vec<String> = expected
             .lines()
@@ -64,13 +63,7 @@ pub fn expect_file(path: &Path, actual: &str) {
             .take(5)
             .map(|(i, (a, b))| format!("line {}:\n  expected: {a}\n  actual:   {b}", i + 1))
             .collect();
-        panic!(
-            "{} differs ({} vs {} lines):\n{}",
-            path.display(),
-            expected.lines().count(),
-            actual.lines().count(),
-            diff.join("\n")
-        );
+        panic!("{} differs ({} vs {} lines):\n{}", path.display(), expected.lines().count(), actual.lines().count(), diff.join("\n"));
     }
 }
 

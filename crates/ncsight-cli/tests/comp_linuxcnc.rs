@@ -121,10 +121,12 @@ fn cutter_compensation_matches_linuxcnc_where_both_define_the_path() {
         let setup = tmp.join(format!("c{case}.toml"));
         std::fs::write(&setup, format!("[[offset]]\nnumber = 1\nradius_mm = {r}\n")).unwrap();
         let out = std::process::Command::new("rs274").arg("-t").arg(&tools).arg("-g").arg(&ngc).output().unwrap();
-        let theirs_text = String::from_utf8_lossy(&out.stdout).lines().map(|l| l.trim_start().split_once("N..... ").map_or(l, |(_, r)| r)).collect::<Vec<_>>().join("\n");
+        let theirs_text =
+            String::from_utf8_lossy(&out.stdout).lines().map(|l| l.trim_start().split_once("N..... ").map_or(l, |(_, r)| r)).collect::<Vec<_>>().join("\n");
         let stderr = String::from_utf8_lossy(&out.stderr);
         assert!(out.status.success() && theirs_text.contains("PROGRAM_END()"), "case {case}: rs274 refused it: {stderr}\n{theirs_text}\n{text}");
-        let (code, ours_text, err) = common::ncsight(&["run", ngc.to_str().unwrap(), "--machine", "fanuc0m", "--setup", setup.to_str().unwrap(), "--format", "canon"]);
+        let (code, ours_text, err) =
+            common::ncsight(&["run", ngc.to_str().unwrap(), "--machine", "fanuc0m", "--setup", setup.to_str().unwrap(), "--format", "canon"]);
         assert_eq!(code, 0, "case {case}: {err}\n{text}");
         let what = format!("case {case} ({side}, r {r:.3}, {k} corners, arcs {arc:.3})\n{text}");
         compared += common::same_calls(&what, &common::motion_calls(&ours_text), &common::motion_calls(&theirs_text));

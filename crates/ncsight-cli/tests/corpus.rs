@@ -45,13 +45,21 @@ fn machine_for(name: &str) -> &'static str {
         "linuxcnc__mmount.ngc",
         "linuxcnc__tests-interp-g81__g17-g98-g81.ngc",
     ];
-    if MILL.contains(&name) { "fanuc0m" } else { "gsk980tdi" }
+    if MILL.contains(&name) {
+        "fanuc0m"
+    } else {
+        "gsk980tdi"
+    }
 }
 
 /// Settings a programme's own machine evidently had: the ICNC course programmes write lengths
 /// without a decimal point as millimetres (`X55`, `R3`), a FANUC with calculator-type input.
 fn params_for(name: &str) -> &'static [&'static str] {
-    if name.starts_with("icnc__") { &["--param", "3401.0=1"] } else { &[] }
+    if name.starts_with("icnc__") {
+        &["--param", "3401.0=1"]
+    } else {
+        &[]
+    }
 }
 
 #[test]
@@ -77,15 +85,20 @@ fn corpus_checks_give_clear_answers() {
         if common::root().join(&setup).is_file() {
             params.extend(["--setup".to_string(), setup]);
         }
-        let run_params: Vec<String> = params.iter().map(|p| if p.starts_with("tests/") { common::root().join(p).to_str().unwrap().to_string() } else { p.clone() }).collect();
+        let run_params: Vec<String> =
+            params.iter().map(|p| if p.starts_with("tests/") { common::root().join(p).to_str().unwrap().to_string() } else { p.clone() }).collect();
         let params: Vec<&str> = params.iter().map(String::as_str).collect();
         let args: Vec<&str> = ["check", f.to_str().unwrap(), "--machine", machine].into_iter().chain(run_params.iter().map(String::as_str)).collect();
         let (code, out, err) = common::ncsight(&args);
         assert!(code == 0 || code == 1, "{name}: exit {code}: {err}");
         let out = out.replace(f.to_str().unwrap(), &shown);
         assert!(out.contains(&format!("{shown}: ")), "{name}: no summary line");
-        common::expect_file(&out_dir.join(format!("{name}.check")), &format!("$ ncsight check {shown} --machine {machine}{}\n{out}", params.iter().map(|p| format!(" {p}")).collect::<String>()));
-        let args: Vec<&str> = ["run", f.to_str().unwrap(), "--machine", machine, "--format", "jsonl"].into_iter().chain(run_params.iter().map(String::as_str)).collect();
+        common::expect_file(
+            &out_dir.join(format!("{name}.check")),
+            &format!("$ ncsight check {shown} --machine {machine}{}\n{out}", params.iter().map(|p| format!(" {p}")).collect::<String>()),
+        );
+        let args: Vec<&str> =
+            ["run", f.to_str().unwrap(), "--machine", machine, "--format", "jsonl"].into_iter().chain(run_params.iter().map(String::as_str)).collect();
         let (code, _, err) = common::ncsight(&args);
         assert!(code == 0 || code == 1, "{name}: run exit {code}: {err}");
         // The stock simulation: its exit status, the stock or block it guessed and every
@@ -94,10 +107,26 @@ fn corpus_checks_give_clear_answers() {
         let args: Vec<&str> = ["simulate", f.to_str().unwrap(), "--machine", machine].into_iter().chain(run_params.iter().map(String::as_str)).collect();
         let (code, out, err) = common::ncsight(&args);
         assert!(matches!(code, 0 | 1 | 3), "{name}: simulate exit {code}: {err}");
-        let kept: Vec<&str> = out.lines().chain(err.lines()).filter(|l| l.starts_with("finding") || l.starts_with("stock guessed") || l.starts_with("block guessed") || l.starts_with("ncsight: the stock was not simulated")).collect();
-        common::expect_file(&out_dir.join(format!("{name}.simulate")), &format!("$ ncsight simulate {shown} --machine {machine}{}
+        let kept: Vec<&str> = out
+            .lines()
+            .chain(err.lines())
+            .filter(|l| {
+                l.starts_with("finding")
+                    || l.starts_with("stock guessed")
+                    || l.starts_with("block guessed")
+                    || l.starts_with("ncsight: the stock was not simulated")
+            })
+            .collect();
+        common::expect_file(
+            &out_dir.join(format!("{name}.simulate")),
+            &format!(
+                "$ ncsight simulate {shown} --machine {machine}{}
 exit {code}
-{}", params.iter().map(|p| format!(" {p}")).collect::<String>(), kept.iter().map(|l| format!("{l}\n")).collect::<String>()));
+{}",
+                params.iter().map(|p| format!(" {p}")).collect::<String>(),
+                kept.iter().map(|l| format!("{l}\n")).collect::<String>()
+            ),
+        );
     }
 }
 
@@ -124,7 +153,11 @@ fn corpus_programme_libraries_run_from_each_entry() {
         let setup = format!("tests/corpus/{name}.toml");
         let setup_path = common::root().join(&setup);
         let with_setup: Vec<&str> = if setup_path.is_file() { vec!["--setup", setup_path.to_str().unwrap()] } else { vec![] };
-        let args: Vec<&str> = ["check", f.to_str().unwrap(), "--machine", machine, "--main", main].into_iter().chain(extra.iter().copied()).chain(with_setup.iter().copied()).collect();
+        let args: Vec<&str> = ["check", f.to_str().unwrap(), "--machine", machine, "--main", main]
+            .into_iter()
+            .chain(extra.iter().copied())
+            .chain(with_setup.iter().copied())
+            .collect();
         let (code, out, err) = common::ncsight(&args);
         assert!(code == 0 || code == 1, "{name} O{main}: exit {code}: {err}");
         let out = out.replace(f.to_str().unwrap(), &shown);
@@ -132,7 +165,10 @@ fn corpus_programme_libraries_run_from_each_entry() {
         if setup_path.is_file() {
             shown_args.push_str(&format!(" --setup {setup}"));
         }
-        common::expect_file(&out_dir.join(format!("{name}.O{main}.check")), &format!("$ ncsight check {shown} --machine {machine} --main {main}{shown_args}\n{out}"));
+        common::expect_file(
+            &out_dir.join(format!("{name}.O{main}.check")),
+            &format!("$ ncsight check {shown} --machine {machine} --main {main}{shown_args}\n{out}"),
+        );
     }
 }
 

@@ -165,7 +165,23 @@ fn output_is_never_the_input() {
 /// 300-digit J in blocks meant to be typed into a controller.
 #[test]
 fn repair_refuses_numbers_the_control_cannot_take() {
-    let base = ["repair", "--machine", "gsk988t", "--param", "8135.7=1", "--start", "60,5", "--end", "60,-30", "--lead", "2", "--rpm", "500", "--measured", "58,-10,90"];
+    let base = [
+        "repair",
+        "--machine",
+        "gsk988t",
+        "--param",
+        "8135.7=1",
+        "--start",
+        "60,5",
+        "--end",
+        "60,-30",
+        "--lead",
+        "2",
+        "--rpm",
+        "500",
+        "--measured",
+        "58,-10,90",
+    ];
     for extra in [["--j", "nan"], ["--k", "inf"], ["--j", "1e300"], ["--k", "-1"]] {
         let args: Vec<&str> = base.iter().copied().chain(extra).collect();
         let (code, out, err) = common::ncsight(&args);
@@ -229,7 +245,8 @@ fn report_and_simulate_are_bounded() {
 fn the_stock_simulation_measures_the_thread_only() {
     let prog = "O0024\nT0101\nG99 G97 S800 M03\nG0 X32. Z2.\nG71 U1.5 R0.5\nG71 P10 Q20 U0.4 W0.1 F0.2\nN10 G0 X20.\nG1 Z0. F0.1\nX24. Z-2.\nZ-30.\nX28.\nN20 Z-40.\nG70 P10 Q20\nG0 X100. Z100.\nT0202\nG0 X0. Z5.\nG1 Z-10. F0.1\nG0 Z5.\nG0 X100. Z100.\nT0303\nG97 S500 M03\nG0 X30. Z5.\nG76 P021060 Q50 R0.05\nG76 X21.55 Z-26. P1227 Q400 F2.\nG0 X100. Z100.\nM30\n";
     let p = tmp("m24.nc", prog.as_bytes());
-    let (code, out, err) = common::ncsight(&["simulate", p.to_str().unwrap(), "--machine", "gsk980tdi", "--stock", "32x60", "--expect", "M24x2", "--format", "json"]);
+    let (code, out, err) =
+        common::ncsight(&["simulate", p.to_str().unwrap(), "--machine", "gsk980tdi", "--stock", "32x60", "--expect", "M24x2", "--format", "json"]);
     assert_eq!(code, 0, "{err}{out}");
     let v: serde_json::Value = serde_json::from_str(&out).unwrap();
     assert!((v["minor_diameter_mm"].as_f64().unwrap() - 21.55).abs() <= 0.02, "{out}");
@@ -330,7 +347,10 @@ fn near_misses_and_the_other_kind_of_machine_are_named() {
 /// (the GSK980TDi): the message names the range the G71 did collect (issue 36: the real cause).
 #[test]
 fn a_g70_range_names_what_the_roughing_collected() {
-    let p = tmp("g70_range.nc", b"O0001\nG99 G00 X52. Z2. S800 M03\nG71 U1. R0.5\nG71 P10 Q20 U0.4 W0.1 F0.25\nN10 G00 X30.\nG01 Z-20. F0.1\nN20 X50.\nN30 Z-30.\nG70 P10 Q30\nM30\n");
+    let p = tmp(
+        "g70_range.nc",
+        b"O0001\nG99 G00 X52. Z2. S800 M03\nG71 U1. R0.5\nG71 P10 Q20 U0.4 W0.1 F0.25\nN10 G00 X30.\nG01 Z-20. F0.1\nN20 X50.\nN30 Z-30.\nG70 P10 Q30\nM30\n",
+    );
     let (code, out, _) = common::ncsight(&["check", p.to_str().unwrap(), "--machine", "gsk980tdi"]);
     assert_eq!(code, 1, "{out}");
     assert!(out.contains("collected the blocks N10 to N20, not N10 to N30") && out.contains("write G70 P10 Q20"), "{out}");

@@ -44,7 +44,11 @@ fn expand_says_what_it_cannot_do() {
     let dir = std::env::temp_dir().join(format!("ncsight-expand-small-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let f = dir.join("o1.nc");
-    std::fs::write(&f, "O1\nG21 G17 G90 G00 X0. Y0. Z10.\nS1000 M03\nN20 G01 Z-1. F200.\nG02 X10. Y0. I5. J0.\nG00 Z10.\nG98 G81 X20. Y5. Z-3. R2. F100.\nG80\nM30\n").unwrap();
+    std::fs::write(
+        &f,
+        "O1\nG21 G17 G90 G00 X0. Y0. Z10.\nS1000 M03\nN20 G01 Z-1. F200.\nG02 X10. Y0. I5. J0.\nG00 Z10.\nG98 G81 X20. Y5. Z-3. R2. F100.\nG80\nM30\n",
+    )
+    .unwrap();
     let (code, text, err) = common::ncsight(&["expand", f.to_str().unwrap(), "--machine", "fanuc0m", "--to", "grbl"]);
     assert_eq!(code, 0, "{err}");
     let body: Vec<&str> = text.lines().skip(2).collect();

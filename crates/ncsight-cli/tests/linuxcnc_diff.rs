@@ -24,18 +24,8 @@ fn canon_matches_rs274_traces() {
         let expected = std::fs::read_to_string(ngc.with_extension("expected")).unwrap();
         let fanuc = ngc.with_extension("nc");
         let input = if fanuc.exists() { fanuc } else { ngc.clone() };
-        let (code, out, err) = common::ncsight(&[
-            "run",
-            input.to_str().unwrap(),
-            "--machine",
-            "fanuc0m",
-            "--format",
-            "canon",
-            "--param",
-            "531=254",
-            "--param",
-            "532=254",
-        ]);
+        let (code, out, err) =
+            common::ncsight(&["run", input.to_str().unwrap(), "--machine", "fanuc0m", "--format", "canon", "--param", "531=254", "--param", "532=254"]);
         assert_eq!(code, 0, "{}: {err}", ngc.display());
         let ours = common::motion_calls(&out);
         let theirs = common::motion_calls(&expected);

@@ -30,12 +30,7 @@ fn write_programme(path: &Path, bytes: usize) {
 /// Run the binary and return its exit status and its peak resident memory in KiB, polled from
 /// /proc/<pid>/status (the last value read before it exits).
 fn peak_kb(args: &[&str]) -> (i32, u64) {
-    let mut child = Command::new(env!("CARGO_BIN_EXE_ncsight"))
-        .args(args)
-        .stdout(Stdio::null())
-        .stderr(Stdio::null())
-        .spawn()
-        .unwrap();
+    let mut child = Command::new(env!("CARGO_BIN_EXE_ncsight")).args(args).stdout(Stdio::null()).stderr(Stdio::null()).spawn().unwrap();
     let status_path = format!("/proc/{}/status", child.id());
     let mut peak = 0;
     loop {
@@ -134,7 +129,11 @@ fn a_million_pecks_run_in_constant_memory() {
 /// programme: under 16 MiB.
 #[test]
 fn a_roughing_of_a_hundred_thousand_levels_runs_in_constant_memory() {
-    let levels = |depth: &str| format!("G97 S500 M03 T0101\nG99 G00 X202. Z2.\nG71 U{depth} R0.0005\nG71 P10 Q20 U0.4 W0.1 F0.2\nN10 G00 X0.\nG01 Z-10.\nN20 X202.\nG00 X250. Z50.\nM30\n");
+    let levels = |depth: &str| {
+        format!(
+            "G97 S500 M03 T0101\nG99 G00 X202. Z2.\nG71 U{depth} R0.0005\nG71 P10 Q20 U0.4 W0.1 F0.2\nN10 G00 X0.\nG01 Z-10.\nN20 X202.\nG00 X250. Z50.\nM30\n"
+        )
+    };
     // A fifth of the levels (Δd 0.005: 20,200 levels, past the point where they are deferred):
     // the peak does not grow with the block's moves.
     let (_, kb_fifth, _) = run_canon("gsk980tdi", &levels("0.005"));

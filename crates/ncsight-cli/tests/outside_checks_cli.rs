@@ -5,7 +5,6 @@ mod common;
 
 use common::Scratch;
 
-
 /// A Ø40 shaft roughed with G71, finished with G70 and threaded M20x2.5, simulated without
 /// `--stock`: the stock is guessed from the cuts (Ø40.5, the roughing's allowance, by 65 mm:
 /// Z0 to 5 mm behind the deepest cut at Z-60) and said to be guessed; no chuck finding. The old
@@ -87,7 +86,11 @@ fn a_cut_output_pipe_stops_run_and_expand() {
     }
     text.push_str("G90 G02 X0 Y0 R0.1\nM30\n");
     let f = dir.file("k.nc", &text);
-    for args in [vec!["run", f.as_str(), "-m", "fanuc0m", "--format", "canon"], vec!["expand", f.as_str(), "-m", "fanuc0m", "--to", "grbl"], vec!["check", f.as_str(), "-m", "fanuc0m"]] {
+    for args in [
+        vec!["run", f.as_str(), "-m", "fanuc0m", "--format", "canon"],
+        vec!["expand", f.as_str(), "-m", "fanuc0m", "--to", "grbl"],
+        vec!["check", f.as_str(), "-m", "fanuc0m"],
+    ] {
         let mut err = Vec::new();
         let argv = std::iter::once("ncsight").chain(args.iter().copied()).map(std::ffi::OsString::from);
         let code = ncsight_cli::main_with(argv, &mut CutPipe, &mut err);
@@ -115,7 +118,9 @@ fn a_named_pipe_is_read_once() {
         p
     };
     let exe = env!("CARGO_BIN_EXE_ncsight");
-    let feed = |path: String, text: &'static str| std::thread::spawn(move || std::fs::File::options().write(true).open(path).unwrap().write_all(text.as_bytes()).unwrap());
+    let feed = |path: String, text: &'static str| {
+        std::thread::spawn(move || std::fs::File::options().write(true).open(path).unwrap().write_all(text.as_bytes()).unwrap())
+    };
     let programme = "G97 S500 M03\nG0 X40. Z2.\nG1 X38. F0.2\nZ-10.\nM30\n";
     for cmd in [&["check"][..], &["run"], &["expand", "--to", "linuxcnc"], &["simulate", "--stock", "40x20"]] {
         let p = fifo(&format!("p{}", cmd[0]));
@@ -130,7 +135,8 @@ fn a_named_pipe_is_read_once() {
     let s = fifo("s.toml");
     let writer = feed(s.clone(), "[stock]\ndiameter_mm = 40.0\nlength_mm = 20.0\n");
     let main = dir.file("m.nc", programme);
-    let mut child = std::process::Command::new(exe).args(["simulate", &main, "-m", "gsk980tdi", "--setup", &s]).stdout(std::process::Stdio::null()).spawn().unwrap();
+    let mut child =
+        std::process::Command::new(exe).args(["simulate", &main, "-m", "gsk980tdi", "--setup", &s]).stdout(std::process::Stdio::null()).spawn().unwrap();
     let status = wait_at_most(&mut child, 20);
     writer.join().unwrap();
     assert_eq!(status, Some(0), "--setup from a named pipe");

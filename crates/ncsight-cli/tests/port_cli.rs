@@ -125,7 +125,13 @@ const MILLS: [&str; 2] = ["fanuc0m", "fanuc0i-mf"];
 
 /// The profiles a programme of `from` ports to.
 fn targets(from: &str) -> Vec<&'static str> {
-    let family: &[&'static str] = if LATHES.contains(&from) { &LATHES } else if MILLS.contains(&from) { &MILLS } else { &[] };
+    let family: &[&'static str] = if LATHES.contains(&from) {
+        &LATHES
+    } else if MILLS.contains(&from) {
+        &MILLS
+    } else {
+        &[]
+    };
     family.iter().copied().filter(|t| *t != from).collect()
 }
 

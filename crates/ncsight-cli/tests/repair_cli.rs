@@ -5,8 +5,23 @@ mod common;
 #[test]
 fn repair_prints_the_two_blocks() {
     let args = [
-        "repair", "--machine", "gsk988t", "--param", "8135.7=1", "--start", "30.14,3", "--end", "51.57,-72", "--lead", "2", "--rpm", "500",
-        "--measured", "40,-30.5,12.345", "--j", "1",
+        "repair",
+        "--machine",
+        "gsk988t",
+        "--param",
+        "8135.7=1",
+        "--start",
+        "30.14,3",
+        "--end",
+        "51.57,-72",
+        "--lead",
+        "2",
+        "--rpm",
+        "500",
+        "--measured",
+        "40,-30.5,12.345",
+        "--j",
+        "1",
     ];
     let (code, out, err) = common::ncsight(&args);
     assert_eq!(code, 0, "{err}");
@@ -29,6 +44,7 @@ fn repair_alarms() {
     // Usage errors exit 2.
     let (code, _, _) = common::ncsight(&[&base[..], &["--measured", "30,10"]].concat());
     assert_eq!(code, 2);
-    let (code, _, err) = common::ncsight(&["repair", "--machine", "fanuc0m", "--start", "1,1", "--end", "1,-1", "--lead", "1", "--rpm", "1", "--measured", "1,0,0"]);
+    let (code, _, err) =
+        common::ncsight(&["repair", "--machine", "fanuc0m", "--start", "1,1", "--end", "1,-1", "--lead", "1", "--rpm", "1", "--measured", "1,0,0"]);
     assert_eq!(code, 2, "{err}");
 }

@@ -44,7 +44,8 @@ fn report_carries_the_programme_and_its_library() {
     std::fs::create_dir_all(&lib).unwrap();
     std::fs::write(lib.join("o0200.nc"), "O0200\nG00 X5.\nM99\n").unwrap();
     std::fs::write(&prog, "G90 G00 X0. Y0. Z10.\nM98 P0200\nM30\n").unwrap();
-    let (code, _, err) = common::ncsight(&["report", prog.to_str().unwrap(), "--machine", "fanuc0m", "--subprogram-dir", lib.to_str().unwrap(), "-o", out.to_str().unwrap()]);
+    let (code, _, err) =
+        common::ncsight(&["report", prog.to_str().unwrap(), "--machine", "fanuc0m", "--subprogram-dir", lib.to_str().unwrap(), "-o", out.to_str().unwrap()]);
     assert_eq!(code, 0, "{err}");
     let html = std::fs::read_to_string(&out).unwrap();
     assert!(html.contains(r#"o0200.nc","O0200\nG00 X5.\nM99\n"]]"#), "the library is on the page");
@@ -66,7 +67,8 @@ fn report_says_what_the_setup_gives_and_what_is_assumed() {
     assert!(html.contains("reference point assumed at X200 Z200"));
     let setup = dir.join("s.toml");
     std::fs::write(&setup, "[work]\nG54 = { z_mm = -300.0 }\n[[offset]]\nnumber = 1\nradius_mm = 0.4\n").unwrap();
-    let (code, _, err) = common::ncsight(&["report", prog.to_str().unwrap(), "--machine", "gsk980tdi", "--setup", setup.to_str().unwrap(), "-o", out.to_str().unwrap()]);
+    let (code, _, err) =
+        common::ncsight(&["report", prog.to_str().unwrap(), "--machine", "gsk980tdi", "--setup", setup.to_str().unwrap(), "-o", out.to_str().unwrap()]);
     assert_eq!(code, 0, "{err}");
     let html = std::fs::read_to_string(&out).unwrap();
     assert!(html.contains("work offsets G54 from the setup, the others 0"), "what the setup gives is said");

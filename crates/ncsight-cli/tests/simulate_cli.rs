@@ -8,8 +8,18 @@ fn simulate_o0012_json_and_image() {
     let ex = root.join("examples/gsk980tdi_o0012.nc");
     let png = std::env::temp_dir().join(format!("ncsight-o0012-{}.png", std::process::id()));
     let (code, out, err) = common::ncsight(&[
-        "simulate", ex.to_str().unwrap(), "--machine", "gsk980tdi", "--stock", "60x80", "--expect", "M60x3",
-        "--format", "json", "--image", png.to_str().unwrap(),
+        "simulate",
+        ex.to_str().unwrap(),
+        "--machine",
+        "gsk980tdi",
+        "--stock",
+        "60x80",
+        "--expect",
+        "M60x3",
+        "--format",
+        "json",
+        "--image",
+        png.to_str().unwrap(),
     ]);
     // O0012's M60x3 is a deviation (its minor 56.9 mm is not M60x3's 56.32): exit status 3.
     assert_eq!(code, 3, "{err}");
@@ -59,7 +69,11 @@ fn simulate_writes_a_closed_stl() {
     std::fs::create_dir_all(&dir).unwrap();
     let cases = [
         ("lathe.nc", "G99 M03 S600\nG00 X0. Z2.\nG01 Z-10. F0.1\nG00 Z2.\nM30\n", vec!["-m", "gsk980tdi", "--stock", "20x20", "--resolution", "0.1,10"]),
-        ("mill.nc", "G21 G17 G90 G00 X0 Y0 Z5.\nS1000 M03\nG00 X5. Y5.\nG01 Z-2. F100.\nG01 X15. F300.\nG00 Z5.\nM30\n", vec!["-m", "fanuc0m", "--resolution", "0.5"]),
+        (
+            "mill.nc",
+            "G21 G17 G90 G00 X0 Y0 Z5.\nS1000 M03\nG00 X5. Y5.\nG01 Z-2. F100.\nG01 X15. F300.\nG00 Z5.\nM30\n",
+            vec!["-m", "fanuc0m", "--resolution", "0.5"],
+        ),
     ];
     for (name, text, args) in cases {
         let f = dir.join(name);
@@ -104,17 +118,42 @@ fn simulate_draws_the_section_as_svg_and_dxf() {
     let prog = dir.join("part.nc");
     std::fs::write(&prog, "G99 M03 S600\nT0101\nG00 X0. Z2.\nG01 Z-30. F0.1\nG00 Z2.\nT0202\nG00 X18. Z2.\nG01 Z-25. F0.1\nG00 X16.\nG00 Z2.\nT0303\nG00 X42. Z2.\nG01 X38. F0.2\nG01 Z-30.\nG00 X42.\nG00 X100. Z100.\nM30\n").unwrap();
     let tools = dir.join("tools.toml");
-    std::fs::write(&tools, "[[tool]]\nnumber = 1\nkind = \"drill\"\ndiameter_mm = 16.0\n[[tool]]\nnumber = 2\nkind = \"boring\"\n[[tool]]\nnumber = 3\nkind = \"turning\"\n").unwrap();
+    std::fs::write(
+        &tools,
+        "[[tool]]\nnumber = 1\nkind = \"drill\"\ndiameter_mm = 16.0\n[[tool]]\nnumber = 2\nkind = \"boring\"\n[[tool]]\nnumber = 3\nkind = \"turning\"\n",
+    )
+    .unwrap();
     let (svg, dxf) = (dir.join("part.svg"), dir.join("part.dxf"));
     for out in [&svg, &dxf] {
-        let (code, _, err) = common::ncsight(&["simulate", prog.to_str().unwrap(), "--machine", "gsk980tdi", "--stock", "40x50", "--setup", tools.to_str().unwrap(), "--section", out.to_str().unwrap()]);
+        let (code, _, err) = common::ncsight(&[
+            "simulate",
+            prog.to_str().unwrap(),
+            "--machine",
+            "gsk980tdi",
+            "--stock",
+            "40x50",
+            "--setup",
+            tools.to_str().unwrap(),
+            "--section",
+            out.to_str().unwrap(),
+        ]);
         assert_eq!(code, 0, "{err}");
     }
     let svg = std::fs::read_to_string(&svg).unwrap();
     let polygons: Vec<Vec<(f64, f64)>> = svg
         .lines()
         .filter_map(|l| l.strip_prefix("<polygon points=\""))
-        .map(|l| l.split('"').next().unwrap().split(' ').map(|p| { let (z, y) = p.split_once(',').unwrap(); (z.parse().unwrap(), y.parse().unwrap()) }).collect())
+        .map(|l| {
+            l.split('"')
+                .next()
+                .unwrap()
+                .split(' ')
+                .map(|p| {
+                    let (z, y) = p.split_once(',').unwrap();
+                    (z.parse().unwrap(), y.parse().unwrap())
+                })
+                .collect()
+        })
         .collect();
     assert_eq!(polygons.len(), 2, "{svg}");
     let near = |p: (f64, f64), q: (f64, f64)| (p.0 - q.0).abs() <= 0.011 && (p.1 - q.1).abs() <= 0.011;
@@ -173,7 +212,11 @@ fn simulate_takes_the_stock_from_a_billet_line() {
     let dir = std::env::temp_dir().join(format!("ncsight-billet-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let prog = dir.join("billet.nc");
-    std::fs::write(&prog, "O0001\n[BILLET X42 Z60\nG21 G99 T0101\nG00 X45. Z2. S800 M03\nG01 Z0. F0.2\nX0.\nG00 X40. Z1.\nG01 Z-20.\nX45.\nG00 X100. Z100.\nM30\n").unwrap();
+    std::fs::write(
+        &prog,
+        "O0001\n[BILLET X42 Z60\nG21 G99 T0101\nG00 X45. Z2. S800 M03\nG01 Z0. F0.2\nX0.\nG00 X40. Z1.\nG01 Z-20.\nX45.\nG00 X100. Z100.\nM30\n",
+    )
+    .unwrap();
     let p = prog.to_str().unwrap();
     let (code, out, err) = common::ncsight(&["simulate", p, "--machine", "fanuc0t", "--format", "json"]);
     assert_eq!(code, 0, "{err}");

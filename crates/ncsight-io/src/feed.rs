@@ -350,13 +350,16 @@ fn next_batch<T>(rx: &mpsc::Receiver<T>) -> Option<T> {
 /// read elsewhere, if it makes one (the run is then not finished).
 /// `on_event` says whether its consumer wants more: once it does not (a reader that went away,
 /// a record the output cannot take), the run stops at the end of that line.
-fn stream_forward(input: Box<dyn BufRead + Send>, source: &Source, program: &mut Program, on_event: &mut dyn FnMut(&Event, &[u8]) -> bool) -> io::Result<Option<Request>> {
+fn stream_forward(
+    input: Box<dyn BufRead + Send>,
+    source: &Source,
+    program: &mut Program,
+    on_event: &mut dyn FnMut(&Event, &[u8]) -> bool,
+) -> io::Result<Option<Request>> {
     let reader = program.line_reader();
     let (full_tx, full_rx) = mpsc::sync_channel::<io::Result<Batch>>(BATCHES_IN_FLIGHT);
     let (empty_tx, empty_rx) = mpsc::channel::<Batch>();
-    let reading = std::thread::Builder::new()
-        .name("ncsight-read".into())
-        .spawn(move || read_ahead(input, &reader, &full_tx, &empty_rx))?;
+    let reading = std::thread::Builder::new().name("ncsight-read".into()).spawn(move || read_ahead(input, &reader, &full_tx, &empty_rx))?;
     let mut stopped = false;
     // The number of the line being fed (the reader counts the same way), and the text of the
     // last line fed once its batch is gone (for what the end of the input says about it).
@@ -637,12 +640,7 @@ impl Pages {
 }
 
 /// The reading thread: lines into batches, until the input ends or nobody listens.
-fn read_ahead(
-    mut input: Box<dyn BufRead + Send>,
-    reader: &LineReader,
-    full: &mpsc::SyncSender<io::Result<Batch>>,
-    empty: &mpsc::Receiver<Batch>,
-) {
+fn read_ahead(mut input: Box<dyn BufRead + Send>, reader: &LineReader, full: &mpsc::SyncSender<io::Result<Batch>>, empty: &mpsc::Receiver<Batch>) {
     let mut batch = Batch::default();
     let mut line_no = 0u32;
     // Where the line being gathered starts in the batch text, how long it is in the input; the
@@ -810,12 +808,13 @@ mod tests {
         }
         let mut p = program(Mode::Check);
         let mut alarms = Vec::new();
-        let r = drive(Input::Stream(Box::new(io::BufReader::new(Broken(Some(b"G0 X1. Q5\nG0 X2".to_vec()))))), &mut Library::default(), &mut p, &mut |e, _, _| {
-            if let Event::Diagnostic(d) = e {
-                alarms.push(d.span.line);
-            }
-            Ok(())
-        });
+        let r =
+            drive(Input::Stream(Box::new(io::BufReader::new(Broken(Some(b"G0 X1. Q5\nG0 X2".to_vec()))))), &mut Library::default(), &mut p, &mut |e, _, _| {
+                if let Event::Diagnostic(d) = e {
+                    alarms.push(d.span.line);
+                }
+                Ok(())
+            });
         assert_eq!(r.unwrap_err().kind(), io::ErrorKind::ConnectionReset);
         assert_eq!(alarms, vec![1]);
     }

@@ -107,8 +107,11 @@ pub fn nearest_machine(name: &str) -> Option<String> {
         }
         row[b.len()]
     };
-    let scored: Vec<(&str, usize)> =
-        profile::all().into_iter().map(|p| (p.name, if p.name.starts_with(&name) || name.starts_with(p.name) { 0 } else { distance(&name, p.name) })).filter(|(_, d)| *d <= 2).collect();
+    let scored: Vec<(&str, usize)> = profile::all()
+        .into_iter()
+        .map(|p| (p.name, if p.name.starts_with(&name) || name.starts_with(p.name) { 0 } else { distance(&name, p.name) }))
+        .filter(|(_, d)| *d <= 2)
+        .collect();
     let best = scored.iter().map(|(_, d)| *d).min()?;
     Some(scored.iter().filter(|(_, d)| *d == best).map(|(n, _)| *n).collect::<Vec<_>>().join(" or "))
 }
@@ -356,7 +359,13 @@ impl Job {
             }
             Ok(())
         };
-        feed::drive(input, &mut library, &mut program, &mut on_event).map_err(|e| if feed::is_read_failure(&e) { usage(format!("cannot read {name}: {e}")) } else { JobError::Io(e) })?;
+        feed::drive(input, &mut library, &mut program, &mut on_event).map_err(|e| {
+            if feed::is_read_failure(&e) {
+                usage(format!("cannot read {name}: {e}"))
+            } else {
+                JobError::Io(e)
+            }
+        })?;
         Ok(program.status())
     }
 
@@ -399,7 +408,10 @@ pub const MAX_SETUP_BYTES: u64 = 16 << 20;
 pub const MAX_MESSAGE_LINE_CHARS: usize = 200;
 
 fn too_large(name: &str, at_least: u64) -> JobError {
-    usage(format!("{name}: a setup file holds at most {} MiB ({MAX_SETUP_BYTES} bytes); this one holds {at_least} bytes or more (a setup is a few kB)", MAX_SETUP_BYTES >> 20))
+    usage(format!(
+        "{name}: a setup file holds at most {} MiB ({MAX_SETUP_BYTES} bytes); this one holds {at_least} bytes or more (a setup is a few kB)",
+        MAX_SETUP_BYTES >> 20
+    ))
 }
 
 /// The text of the setup file at `path`, read once (a named pipe gives its data once), at most

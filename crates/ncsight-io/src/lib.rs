@@ -8,4 +8,7 @@ pub mod format;
 mod job;
 pub mod port;
 
-pub use job::{check_operator, clip_lines, machine_from_first_line, machine_names, read_first_line, read_setup_file, Job, JobError, JsonlWriter, FIRST_LINE_SCAN_BYTES, MAX_SETUP_BYTES};
+pub use job::{
+    check_operator, clip_lines, machine_from_first_line, machine_names, read_first_line, read_setup_file, Job, JobError, JsonlWriter, FIRST_LINE_SCAN_BYTES,
+    MAX_SETUP_BYTES,
+};

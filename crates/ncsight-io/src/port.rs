@@ -138,7 +138,10 @@ pub fn port(from: &Job, to: &Job, text: &[u8]) -> Result<Port, PortError> {
         let o_line = first.filter(|&i| crate::port::starts_with_o_number(&kept[i].1));
         let note = kept.iter().position(|(n, l)| *n == 0 && l.starts_with("(PORTED FROM"));
         let at = o_line.or(note).map_or(0, |i| i + 1);
-        kept.insert(at, (0, format!("{} (FEED MODE AT POWER ON ON {})", if from_profile.power_on_per_rev { "G99" } else { "G98" }, from_profile.name.to_ascii_uppercase())));
+        kept.insert(
+            at,
+            (0, format!("{} (FEED MODE AT POWER ON ON {})", if from_profile.power_on_per_rev { "G99" } else { "G98" }, from_profile.name.to_ascii_uppercase())),
+        );
     }
     let mut rewritten: Vec<(u32, String)> = Vec::new();
     for _ in 0..MAX_REWRITES {
@@ -224,7 +227,11 @@ fn codes_in(text: &str) -> Vec<String> {
                 b'G' | b'g' if depth == 0 => {
                     let digits: String = line[i + 1..].chars().take_while(|c| c.is_ascii_digit() || *c == '.').collect();
                     if let Ok(n) = digits.trim_end_matches('.').parse::<f64>() {
-                        let code = if n.fract() == 0.0 { format!("G{:02}", n as u32) } else { format!("G{:02}.{}", n.trunc() as u32, ((n.fract() * 10.0).round()) as u32) };
+                        let code = if n.fract() == 0.0 {
+                            format!("G{:02}", n as u32)
+                        } else {
+                            format!("G{:02}.{}", n.trunc() as u32, ((n.fract() * 10.0).round()) as u32)
+                        };
                         if !codes.contains(&code) {
                             codes.push(code);
                         }
@@ -267,17 +274,19 @@ fn name_the_target(lines: &mut Vec<(u32, String)>, from: &str, to: &str) {
 /// A line without its `( )` comments.
 fn outside_comments(line: &str) -> String {
     let mut depth = 0;
-    line.chars().filter(|&c| {
-        match c {
-            '(' => depth += 1,
-            ')' if depth > 0 => {
-                depth -= 1;
-                return false;
+    line.chars()
+        .filter(|&c| {
+            match c {
+                '(' => depth += 1,
+                ')' if depth > 0 => {
+                    depth -= 1;
+                    return false;
+                }
+                _ => {}
             }
-            _ => {}
-        }
-        depth == 0
-    }).collect()
+            depth == 0
+        })
+        .collect()
 }
 
 /// A line that starts with a programme number (`O1234`).
@@ -305,7 +314,10 @@ fn normalise_line(line: &str, params: &ncsight::profile::Params) -> String {
         }
         // Lengths, and the rotary axes' angles (read by the same rule: 0.001 degree where lengths
         // are in least increments).
-        let is_length = matches!(c.to_ascii_uppercase(), b'X' | b'Z' | b'U' | b'W' | b'Y' | b'V' | b'A' | b'B' | b'C') && (i == 0 || !b[i - 1].is_ascii_alphabetic()) && i + 1 < b.len() && (b[i + 1] == b'-' || b[i + 1] == b'+' || b[i + 1].is_ascii_digit());
+        let is_length = matches!(c.to_ascii_uppercase(), b'X' | b'Z' | b'U' | b'W' | b'Y' | b'V' | b'A' | b'B' | b'C')
+            && (i == 0 || !b[i - 1].is_ascii_alphabetic())
+            && i + 1 < b.len()
+            && (b[i + 1] == b'-' || b[i + 1] == b'+' || b[i + 1].is_ascii_digit());
         if !is_length {
             // Copy one character (a multi-byte one whole).
             let ch = line[i..].chars().next().unwrap_or(' ');
@@ -420,11 +432,19 @@ struct Dialect {
 
 impl Dialect {
     fn per_minute(self) -> &'static str {
-        if self.lathe { "G98" } else { "G94" }
+        if self.lathe {
+            "G98"
+        } else {
+            "G94"
+        }
     }
 
     fn per_rev(self) -> &'static str {
-        if self.lathe { "G99" } else { "G95" }
+        if self.lathe {
+            "G99"
+        } else {
+            "G95"
+        }
     }
 
     fn point(self, p: &Vec3) -> String {
@@ -460,7 +480,9 @@ impl Dialect {
             Op::Thread { to, lead_mm, .. } if self.lathe => format!("G32 {} F{}", self.point(&to), with_point(lead_mm)),
             Op::Dwell { seconds } => format!("G04 X{}", with_point(seconds)),
             Op::Spindle { rpm, .. } if rpm == 0.0 => "M05".into(),
-            Op::Spindle { rpm, .. } => format!("{}S{} {}", if self.lathe { "G97 " } else { "" }, with_point(rpm.abs()).trim_end_matches('.'), if rpm > 0.0 { "M03" } else { "M04" }),
+            Op::Spindle { rpm, .. } => {
+                format!("{}S{} {}", if self.lathe { "G97 " } else { "" }, with_point(rpm.abs()).trim_end_matches('.'), if rpm > 0.0 { "M03" } else { "M04" })
+            }
             Op::Tool { number, offset } if self.lathe => format!("T{number:02}{:02}", offset.unwrap_or(0)),
             Op::Tool { number, .. } => format!("T{number} M06"),
             Op::Rotary { axis, to_deg, rapid: true, .. } => format!("G00 {}{}", axis as char, with_point(to_deg)),
@@ -487,7 +509,8 @@ fn differ(ra: &Record, rb: &Record) -> Option<(String, f64)> {
     let pos = |p: &Vec3, q: &Vec3| Vec3::new(p.x + ma.x, p.y + ma.y, p.z + ma.z).dist(&Vec3::new(q.x + mb.x, q.y + mb.y, q.z + mb.z));
     match (a, b) {
         (Op::Rapid { to: p, .. }, Op::Rapid { to: q, .. }) => (pos(p, q) > POSITION_MM).then(|| ("rapid end point".to_string(), pos(p, q))),
-        (Op::Feed { to: p, feed_mm_min: f, .. }, Op::Feed { to: q, feed_mm_min: g, .. }) | (Op::Arc { to: p, feed_mm_min: f, .. }, Op::Arc { to: q, feed_mm_min: g, .. }) => {
+        (Op::Feed { to: p, feed_mm_min: f, .. }, Op::Feed { to: q, feed_mm_min: g, .. })
+        | (Op::Arc { to: p, feed_mm_min: f, .. }, Op::Arc { to: q, feed_mm_min: g, .. }) => {
             if pos(p, q) > POSITION_MM {
                 Some(("end point".into(), pos(p, q)))
             } else {

@@ -11,7 +11,8 @@ use std::sync::Arc;
 
 /// The job of a configuration (machine, parameters, setup, subprogramme folders).
 pub fn job_of(cfg: &RunConfig) -> Result<Job, String> {
-    let mut job = Job { params: cfg.params.clone(), subprogram_dirs: cfg.subprogram_dirs.iter().filter(|d| d.is_dir()).cloned().collect(), ..Job::on(&cfg.machine) };
+    let mut job =
+        Job { params: cfg.params.clone(), subprogram_dirs: cfg.subprogram_dirs.iter().filter(|d| d.is_dir()).cloned().collect(), ..Job::on(&cfg.machine) };
     if let Some(setup) = &cfg.setup {
         job.read_setup(&setup.to_string_lossy()).map_err(|e| e.to_string())?;
     }
@@ -64,7 +65,9 @@ pub const MAX_DIAGNOSTICS: usize = 10_000;
 pub fn to_lsp(d: &ncsight::Diagnostic, file: Option<&str>, lines: &Lines, enc: Encoding) -> LspDiagnostic {
     let (line, from, to, place) = match (d.span.file, d.calls.first()) {
         (0, _) => (d.span.line, d.span.col, d.span.col + u32::from(d.span.len.max(1)), String::new()),
-        (_, Some(call)) => (call.line, call.col, call.col + u32::from(call.len.max(1)), format!(" (in {} line {}, called here)", file.unwrap_or("another file"), d.span.line)),
+        (_, Some(call)) => {
+            (call.line, call.col, call.col + u32::from(call.len.max(1)), format!(" (in {} line {}, called here)", file.unwrap_or("another file"), d.span.line))
+        }
         (_, None) => (1, 1, 2, format!(" (in {} line {})", file.unwrap_or("another file"), d.span.line)),
     };
     let n = line.saturating_sub(1) as usize;

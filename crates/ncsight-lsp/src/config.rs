@@ -72,7 +72,8 @@ pub fn for_document(path: Option<&Path>, text: &[u8], setting: Option<&str>) -> 
 
 fn read_config(file: &Path, cfg: &mut RunConfig) {
     let base = file.parent().unwrap_or(Path::new("."));
-    let parsed: Result<ConfigFile, String> = std::fs::read_to_string(file).map_err(|e| e.to_string()).and_then(|t| toml::from_str(&t).map_err(|e| e.to_string()));
+    let parsed: Result<ConfigFile, String> =
+        std::fs::read_to_string(file).map_err(|e| e.to_string()).and_then(|t| toml::from_str(&t).map_err(|e| e.to_string()));
     let c = match parsed {
         Ok(c) => c,
         Err(e) => {

@@ -65,9 +65,16 @@ fn code_name(w: &Word) -> Option<String> {
 /// The catalogue's entry for `code` on `machine` in a block with `words`.
 fn entry_for<'c>(code: &str, machine: &str, words: &[Word]) -> Option<&'c CodeEntry> {
     let has = |a: &str| words.iter().any(|w| w.address.eq_ignore_ascii_case(a));
-    let same = |a: &str, b: &str| a.eq_ignore_ascii_case(b) || a.trim_start_matches(['G', 'M']).trim_start_matches('0') == b.trim_start_matches(['G', 'M']).trim_start_matches('0') && a.as_bytes().first() == b.as_bytes().first();
+    let same = |a: &str, b: &str| {
+        a.eq_ignore_ascii_case(b)
+            || a.trim_start_matches(['G', 'M']).trim_start_matches('0') == b.trim_start_matches(['G', 'M']).trim_start_matches('0')
+                && a.as_bytes().first() == b.as_bytes().first()
+    };
     catalogue().code.iter().find(|e| {
-        same(&e.code, code) && e.profiles.iter().any(|p| p == machine) && e.when_has.as_deref().map_or(true, has) && e.when_lacks.as_deref().map_or(true, |a| !has(a))
+        same(&e.code, code)
+            && e.profiles.iter().any(|p| p == machine)
+            && e.when_has.as_deref().map_or(true, has)
+            && e.when_lacks.as_deref().map_or(true, |a| !has(a))
     })
 }
 
@@ -152,7 +159,20 @@ fn state_text(s: &BlockState, cfg: &RunConfig) -> String {
     let feed = match st.modes.feed {
         Some(f) if st.modes.per_rev => format!("F{} mm/rev ({})", num(f), if s.lathe { "G99" } else { "G95" }),
         Some(f) => format!("F{} mm/min ({})", num(f), if s.lathe { "G98" } else { "G94" }),
-        None => format!("no F yet ({})", if st.modes.per_rev { if s.lathe { "G99" } else { "G95" } } else if s.lathe { "G98" } else { "G94" }),
+        None => format!(
+            "no F yet ({})",
+            if st.modes.per_rev {
+                if s.lathe {
+                    "G99"
+                } else {
+                    "G95"
+                }
+            } else if s.lathe {
+                "G98"
+            } else {
+                "G94"
+            }
+        ),
     };
     let spindle = match st.modes.spindle {
         ncsight::modal::SpindleDir::Stopped => "spindle stopped".to_string(),
@@ -160,7 +180,13 @@ fn state_text(s: &BlockState, cfg: &RunConfig) -> String {
         ncsight::modal::SpindleDir::Negative => format!("M04 S{}", num(st.modes.s_word)),
     } + if st.modes.css { " m/min (G96)" } else { " rpm (G97)" };
     let tool = if s.lathe { format!("T{:02}{:02}", st.modes.tool, st.frame.offset_number) } else { format!("T{} H{}", st.modes.tool, st.frame.offset_number) };
-    let distance = if s.lathe { "X Z absolute, U W incremental" } else if st.modes.incremental { "G91 incremental" } else { "G90 absolute" };
+    let distance = if s.lathe {
+        "X Z absolute, U W incremental"
+    } else if st.modes.incremental {
+        "G91 incremental"
+    } else {
+        "G90 absolute"
+    };
     let pos = |p: ncsight::Vec3| if s.lathe { format!("X{} (Ø) Z{}", num(2.0 * p.x), num(p.z)) } else { format!("X{} Y{} Z{}", num(p.x), num(p.y), num(p.z)) };
     format!(
         "**Before this block** on {} ({}): {} · {} · G{} · {} · {} · plane {:?} · {}\n\nTool at {} before, {} after · time so far {}, this block {}",

@@ -17,8 +17,8 @@ pub use config::{for_document, RunConfig, CONFIG_FILE};
 
 use lsp_server::{Connection, Message};
 use lsp_types::{
-    HoverProviderCapability, InitializeParams, OneOf, PositionEncodingKind, ServerCapabilities, ServerInfo, TextDocumentSyncCapability, TextDocumentSyncKind, TextDocumentSyncOptions,
-    TextDocumentSyncSaveOptions,
+    HoverProviderCapability, InitializeParams, OneOf, PositionEncodingKind, ServerCapabilities, ServerInfo, TextDocumentSyncCapability, TextDocumentSyncKind,
+    TextDocumentSyncOptions, TextDocumentSyncSaveOptions,
 };
 use text::Encoding;
 
@@ -38,7 +38,10 @@ pub fn serve(connection: &Connection) -> Result<(), String> {
     let utf8 = init.capabilities.general.as_ref().and_then(|g| g.position_encodings.as_ref()).is_some_and(|e| e.contains(&PositionEncodingKind::UTF8));
     let enc = if utf8 { Encoding::Utf8 } else { Encoding::Utf16 };
     let setting = init.initialization_options.as_ref().and_then(server::machine_setting);
-    let result = lsp_types::InitializeResult { capabilities: capabilities(enc), server_info: Some(ServerInfo { name: "ncsight".into(), version: Some(env!("CARGO_PKG_VERSION").into()) }) };
+    let result = lsp_types::InitializeResult {
+        capabilities: capabilities(enc),
+        server_info: Some(ServerInfo { name: "ncsight".into(), version: Some(env!("CARGO_PKG_VERSION").into()) }),
+    };
     connection.initialize_finish(id, serde_json::to_value(result).map_err(|e| e.to_string())?).map_err(|e| e.to_string())?;
     let (mut server, worker) = server::Server::new(connection.sender.clone(), enc, setting);
     for message in &connection.receiver {

@@ -16,7 +16,10 @@ pub enum Target {
 }
 
 fn has_code(words: &[Word], letter: &str, codes: &[u32]) -> bool {
-    words.iter().any(|w| w.address.eq_ignore_ascii_case(letter) && w.value.split('.').next().and_then(|v| v.parse::<u32>().ok()).is_some_and(|v| codes.contains(&v) && !w.value.contains('.')))
+    words.iter().any(|w| {
+        w.address.eq_ignore_ascii_case(letter)
+            && w.value.split('.').next().and_then(|v| v.parse::<u32>().ok()).is_some_and(|v| codes.contains(&v) && !w.value.contains('.'))
+    })
 }
 
 /// The target of word `w` in a block of `words` (the controller does not change how a call is
@@ -69,7 +72,12 @@ pub fn find_in(lines: &Lines, t: Target, from: usize) -> Option<(usize, usize, u
 /// A programme in the subprogramme folders: the file named after it (O1234, o1234.nc, ...) or
 /// the first file (in name order) with a line O1234; and where its O word is.
 pub fn find_programme_file(dirs: &[PathBuf], n: u64, skip: Option<&Path>) -> Option<(PathBuf, usize, usize, usize)> {
-    let mut files: Vec<PathBuf> = dirs.iter().filter_map(|d| std::fs::read_dir(d).ok()).flat_map(|rd| rd.filter_map(|e| e.ok()).map(|e| e.path())).filter(|p| p.is_file() && Some(p.as_path()) != skip).collect();
+    let mut files: Vec<PathBuf> = dirs
+        .iter()
+        .filter_map(|d| std::fs::read_dir(d).ok())
+        .flat_map(|rd| rd.filter_map(|e| e.ok()).map(|e| e.path()))
+        .filter(|p| p.is_file() && Some(p.as_path()) != skip)
+        .collect();
     files.sort();
     let stem_number = |p: &Path| p.file_stem().and_then(|s| s.to_str()).and_then(|s| s.strip_prefix(['O', 'o'])).and_then(|d| d.parse::<u64>().ok());
     files.sort_by_key(|p| stem_number(p) != Some(n));
@@ -115,15 +123,27 @@ pub fn symbols(lines: &Lines, enc: Encoding, machine: &str, lathe: bool) -> Vec<
     let jumped: std::collections::HashSet<u64> = (0..lines.count())
         .flat_map(|k| {
             let words = text::words(lines.line(k));
-            words.iter().filter_map(|w| match target_of(w, &words, machine, lathe) {
-                Some(Target::Sequence(n)) if !w.address.eq_ignore_ascii_case("N") => Some(n),
-                _ => None,
-            }).collect::<Vec<_>>()
+            words
+                .iter()
+                .filter_map(|w| match target_of(w, &words, machine, lathe) {
+                    Some(Target::Sequence(n)) if !w.address.eq_ignore_ascii_case("N") => Some(n),
+                    _ => None,
+                })
+                .collect::<Vec<_>>()
         })
         .collect();
     let mut top: Vec<DocumentSymbol> = Vec::new();
     let mut count = 0;
-    let sym = |name: String, detail: Option<String>, kind: SymbolKind, range: Range| DocumentSymbol { name, detail, kind, tags: None, deprecated: None, range, selection_range: range, children: None };
+    let sym = |name: String, detail: Option<String>, kind: SymbolKind, range: Range| DocumentSymbol {
+        name,
+        detail,
+        kind,
+        tags: None,
+        deprecated: None,
+        range,
+        selection_range: range,
+        children: None,
+    };
     for k in 0..lines.count() {
         if count >= MAX_SYMBOLS {
             break;
@@ -152,7 +172,8 @@ pub fn symbols(lines: &Lines, enc: Encoding, machine: &str, lathe: bool) -> Vec<
         }
         for w in &words {
             let a = w.address.to_ascii_uppercase();
-            let cycle = a == "G" && matches!(w.value.split('.').next().and_then(|v| v.parse::<u32>().ok()), Some(32 | 33 | 34 | 65 | 66 | 70..=89 | 90 | 92 | 94));
+            let cycle =
+                a == "G" && matches!(w.value.split('.').next().and_then(|v| v.parse::<u32>().ok()), Some(32 | 33 | 34 | 65 | 66 | 70..=89 | 90 | 92 | 94));
             let call = a == "M" && matches!(w.value.parse::<u32>().ok(), Some(98));
             if a == "T" || cycle || call {
                 let kind = if a == "T" { SymbolKind::OBJECT } else { SymbolKind::EVENT };

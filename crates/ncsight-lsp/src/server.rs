@@ -56,7 +56,10 @@ impl Server {
         let (checks, jobs) = mpsc::channel();
         let latest: Latest = Arc::default();
         let (worker_latest, worker_out) = (latest.clone(), out.clone());
-        let worker = std::thread::Builder::new().name("ncsight-check".into()).spawn(move || check_worker(jobs, worker_latest, worker_out, enc)).expect("the checking thread starts");
+        let worker = std::thread::Builder::new()
+            .name("ncsight-check".into())
+            .spawn(move || check_worker(jobs, worker_latest, worker_out, enc))
+            .expect("the checking thread starts");
         (Server { docs: HashMap::new(), enc, setting, checks, latest, generation: 0, out }, worker)
     }
 
@@ -128,7 +131,11 @@ impl Server {
             req::DocumentSymbolRequest::METHOD => self.symbols(r.params).map(|d| serde_json::to_value(d).unwrap_or_default()),
             req::InlayHintRequest::METHOD => self.inlay_hints(r.params).map(|d| serde_json::to_value(d).unwrap_or_default()),
             _ => {
-                let _ = self.out.send(Message::Response(Response::new_err(id, lsp_server::ErrorCode::MethodNotFound as i32, format!("{} is not offered", r.method))));
+                let _ = self.out.send(Message::Response(Response::new_err(
+                    id,
+                    lsp_server::ErrorCode::MethodNotFound as i32,
+                    format!("{} is not offered", r.method),
+                )));
                 return;
             }
         };
@@ -195,7 +202,10 @@ impl Server {
         let doc = self.docs.get(&uri)?;
         let lines = Lines::new(&doc.text);
         let lathe = ncsight::profile::by_name(&cfg.machine).is_some_and(|p| p.is_lathe());
-        let mut out: Vec<Location> = navigate::references(&lines, t, &cfg.machine, lathe).into_iter().map(|(k, a, b)| Location { uri: uri.clone(), range: lines.range(k, a, b, self.enc) }).collect();
+        let mut out: Vec<Location> = navigate::references(&lines, t, &cfg.machine, lathe)
+            .into_iter()
+            .map(|(k, a, b)| Location { uri: uri.clone(), range: lines.range(k, a, b, self.enc) })
+            .collect();
         if p.context.include_declaration {
             if let Some((k, a, b)) = navigate::find_in(&lines, t, n) {
                 out.insert(0, Location { uri: uri.clone(), range: lines.range(k, a, b, self.enc) });

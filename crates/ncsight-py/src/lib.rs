@@ -124,7 +124,14 @@ fn source(text: Option<&Bound<'_, PyAny>>, path: Option<PathBuf>) -> PyResult<So
 /// an alarm.
 #[pyfunction]
 #[pyo3(signature = (options, mode, name, text=None, path=None))]
-fn jsonl_lines(py: Python<'_>, options: &Options, mode: &str, name: &str, text: Option<&Bound<'_, PyAny>>, path: Option<PathBuf>) -> PyResult<(Vec<String>, bool)> {
+fn jsonl_lines(
+    py: Python<'_>,
+    options: &Options,
+    mode: &str,
+    name: &str,
+    text: Option<&Bound<'_, PyAny>>,
+    path: Option<PathBuf>,
+) -> PyResult<(Vec<String>, bool)> {
     let mode = mode_of(mode)?;
     let src = source(text, path)?;
     let job = &options.job;

@@ -70,7 +70,10 @@ pub fn scene(text: &[u8], machine: &str, params: &str, setup: &str, options: &st
 /// Every diagnostic of a check of `text` (see `ncsight_io::format::scene::check`), with the same
 /// arguments as [`scene`], as JSON; a usage mistake is `NCSE` and its message.
 pub fn check(text: &[u8], machine: &str, params: &str, setup: &str, options: &str, library: &[u8]) -> Vec<u8> {
-    page_job(machine, params, setup, options, library).and_then(|(job, files)| format::scene::check(&job, text, files)).map(String::into_bytes).unwrap_or_else(usage_answer)
+    page_job(machine, params, setup, options, library)
+        .and_then(|(job, files)| format::scene::check(&job, text, files))
+        .map(String::into_bytes)
+        .unwrap_or_else(usage_answer)
 }
 
 /// The cut stock of `text` for the page's 3D view (see `ncsight_io::format::stock`), with the
@@ -97,7 +100,9 @@ pub fn stock(text: &[u8], machine: &str, params: &str, setup: &str, options: &st
             }
         }
     }
-    page_job(machine, params, setup, &rest, library).and_then(|(job, files)| format::stock::stock_view(&job, text, files, &stock_text, until_s, resolution)).unwrap_or_else(usage_answer)
+    page_job(machine, params, setup, &rest, library)
+        .and_then(|(job, files)| format::stock::stock_view(&job, text, files, &stock_text, until_s, resolution))
+        .unwrap_or_else(usage_answer)
 }
 
 /// The programme ported to another controller (`ncsight port`, ncsight_io::port): `options` holds
@@ -117,8 +122,16 @@ pub fn port(text: &[u8], machine: &str, params: &str, setup: &str, options: &str
         Ok(match ncsight_io::port::port(&job, &target, text) {
             Ok(p) => {
                 let rewritten: Vec<String> = p.rewritten.iter().map(|(l, why)| format!("{{\"line\":{l},\"why\":{}}}", json_str(why))).collect();
-                let diffs: Vec<String> = p.differences.iter().map(|d| format!("{{\"line\":{},\"what\":{},\"size\":{}}}", d.line, json_str(&d.what), d.size)).collect();
-                format!("{{\"to\":{},\"exact\":{},\"text\":{},\"rewritten\":[{}],\"differences\":[{}]}}", json_str(&to), p.exact(), json_str(&p.text), rewritten.join(","), diffs.join(","))
+                let diffs: Vec<String> =
+                    p.differences.iter().map(|d| format!("{{\"line\":{},\"what\":{},\"size\":{}}}", d.line, json_str(&d.what), d.size)).collect();
+                format!(
+                    "{{\"to\":{},\"exact\":{},\"text\":{},\"rewritten\":[{}],\"differences\":[{}]}}",
+                    json_str(&to),
+                    p.exact(),
+                    json_str(&p.text),
+                    rewritten.join(","),
+                    diffs.join(",")
+                )
             }
             Err(ncsight_io::port::PortError::SourceAlarm(line, message)) => format!("{{\"alarm\":{{\"line\":{line},\"message\":{}}}}}", json_str(&message)),
             Err(ncsight_io::port::PortError::Usage(m)) => return Err(ncsight_io::JobError::Usage(m)),
@@ -173,10 +186,25 @@ pub unsafe extern "C" fn ncsight_free(ptr: *mut u8, len: usize) {
 /// and `setup_len` readable bytes (buffers from [`ncsight_alloc`]).
 #[no_mangle]
 #[allow(clippy::too_many_arguments)]
-pub unsafe extern "C" fn ncsight_run(text: *const u8, text_len: usize, machine: *const u8, machine_len: usize, params: *const u8, params_len: usize, setup: *const u8, setup_len: usize, mode: u32) -> *mut u8 {
+pub unsafe extern "C" fn ncsight_run(
+    text: *const u8,
+    text_len: usize,
+    machine: *const u8,
+    machine_len: usize,
+    params: *const u8,
+    params_len: usize,
+    setup: *const u8,
+    setup_len: usize,
+    mode: u32,
+) -> *mut u8 {
     // SAFETY: the caller guarantees the four buffers (see above).
     let (text, machine, params, setup) = unsafe {
-        (std::slice::from_raw_parts(text, text_len), std::slice::from_raw_parts(machine, machine_len), std::slice::from_raw_parts(params, params_len), std::slice::from_raw_parts(setup, setup_len))
+        (
+            std::slice::from_raw_parts(text, text_len),
+            std::slice::from_raw_parts(machine, machine_len),
+            std::slice::from_raw_parts(params, params_len),
+            std::slice::from_raw_parts(setup, setup_len),
+        )
     };
     let mode = if mode == 1 { Mode::Check } else { Mode::Run };
     let jsonl = run_jsonl(text, &String::from_utf8_lossy(machine), &String::from_utf8_lossy(params), &String::from_utf8_lossy(setup), mode);
@@ -201,9 +229,24 @@ unsafe fn page_call(b: [(*const u8, usize); 6], f: fn(&[u8], &str, &str, &str, &
 /// readable bytes.
 #[no_mangle]
 #[allow(clippy::too_many_arguments)]
-pub unsafe extern "C" fn ncsight_scene(text: *const u8, text_len: usize, machine: *const u8, machine_len: usize, params: *const u8, params_len: usize, setup: *const u8, setup_len: usize, options: *const u8, options_len: usize, library: *const u8, library_len: usize) -> *mut u8 {
+pub unsafe extern "C" fn ncsight_scene(
+    text: *const u8,
+    text_len: usize,
+    machine: *const u8,
+    machine_len: usize,
+    params: *const u8,
+    params_len: usize,
+    setup: *const u8,
+    setup_len: usize,
+    options: *const u8,
+    options_len: usize,
+    library: *const u8,
+    library_len: usize,
+) -> *mut u8 {
     // SAFETY: the caller guarantees the six buffers (see above).
-    unsafe { page_call([(text, text_len), (machine, machine_len), (params, params_len), (setup, setup_len), (options, options_len), (library, library_len)], scene) }
+    unsafe {
+        page_call([(text, text_len), (machine, machine_len), (params, params_len), (setup, setup_len), (options, options_len), (library, library_len)], scene)
+    }
 }
 
 /// Every diagnostic of a check (see [`check`]) as JSON, behind its 4-byte little-endian length.
@@ -212,9 +255,24 @@ pub unsafe extern "C" fn ncsight_scene(text: *const u8, text_len: usize, machine
 /// As [`ncsight_scene`].
 #[no_mangle]
 #[allow(clippy::too_many_arguments)]
-pub unsafe extern "C" fn ncsight_check(text: *const u8, text_len: usize, machine: *const u8, machine_len: usize, params: *const u8, params_len: usize, setup: *const u8, setup_len: usize, options: *const u8, options_len: usize, library: *const u8, library_len: usize) -> *mut u8 {
+pub unsafe extern "C" fn ncsight_check(
+    text: *const u8,
+    text_len: usize,
+    machine: *const u8,
+    machine_len: usize,
+    params: *const u8,
+    params_len: usize,
+    setup: *const u8,
+    setup_len: usize,
+    options: *const u8,
+    options_len: usize,
+    library: *const u8,
+    library_len: usize,
+) -> *mut u8 {
     // SAFETY: the caller guarantees the six buffers (see above).
-    unsafe { page_call([(text, text_len), (machine, machine_len), (params, params_len), (setup, setup_len), (options, options_len), (library, library_len)], check) }
+    unsafe {
+        page_call([(text, text_len), (machine, machine_len), (params, params_len), (setup, setup_len), (options, options_len), (library, library_len)], check)
+    }
 }
 
 /// `bytes` behind their 4-byte little-endian length, in a buffer the page frees.
@@ -341,9 +399,24 @@ mod tests {
 /// As [`ncsight_scene`].
 #[no_mangle]
 #[allow(clippy::too_many_arguments)]
-pub unsafe extern "C" fn ncsight_port(text: *const u8, text_len: usize, machine: *const u8, machine_len: usize, params: *const u8, params_len: usize, setup: *const u8, setup_len: usize, options: *const u8, options_len: usize, library: *const u8, library_len: usize) -> *mut u8 {
+pub unsafe extern "C" fn ncsight_port(
+    text: *const u8,
+    text_len: usize,
+    machine: *const u8,
+    machine_len: usize,
+    params: *const u8,
+    params_len: usize,
+    setup: *const u8,
+    setup_len: usize,
+    options: *const u8,
+    options_len: usize,
+    library: *const u8,
+    library_len: usize,
+) -> *mut u8 {
     // SAFETY: the caller guarantees the six buffers (see above).
-    unsafe { page_call([(text, text_len), (machine, machine_len), (params, params_len), (setup, setup_len), (options, options_len), (library, library_len)], port) }
+    unsafe {
+        page_call([(text, text_len), (machine, machine_len), (params, params_len), (setup, setup_len), (options, options_len), (library, library_len)], port)
+    }
 }
 
 /// The cut stock of a programme for the page's 3D view (see [`stock`]), behind its 4-byte
@@ -353,7 +426,22 @@ pub unsafe extern "C" fn ncsight_port(text: *const u8, text_len: usize, machine:
 /// As [`ncsight_scene`].
 #[no_mangle]
 #[allow(clippy::too_many_arguments)]
-pub unsafe extern "C" fn ncsight_stock(text: *const u8, text_len: usize, machine: *const u8, machine_len: usize, params: *const u8, params_len: usize, setup: *const u8, setup_len: usize, options: *const u8, options_len: usize, library: *const u8, library_len: usize) -> *mut u8 {
+pub unsafe extern "C" fn ncsight_stock(
+    text: *const u8,
+    text_len: usize,
+    machine: *const u8,
+    machine_len: usize,
+    params: *const u8,
+    params_len: usize,
+    setup: *const u8,
+    setup_len: usize,
+    options: *const u8,
+    options_len: usize,
+    library: *const u8,
+    library_len: usize,
+) -> *mut u8 {
     // SAFETY: the caller guarantees the six buffers (see above).
-    unsafe { page_call([(text, text_len), (machine, machine_len), (params, params_len), (setup, setup_len), (options, options_len), (library, library_len)], stock) }
+    unsafe {
+        page_call([(text, text_len), (machine, machine_len), (params, params_len), (setup, setup_len), (options, options_len), (library, library_len)], stock)
+    }
 }

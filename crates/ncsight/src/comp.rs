@@ -101,7 +101,9 @@ impl Seg {
     pub fn of(op: &Op, plane: Plane) -> Option<Seg> {
         match op {
             Op::Rapid { from, to } | Op::Feed { from, to, .. } => Some(Seg::Line { from: local(from, plane), to: local(to, plane) }),
-            Op::Arc { from, to, center, dir, .. } => Some(Seg::Arc { from: local(from, plane), to: local(to, plane), center: local(center, plane), ccw: *dir == ArcDir::Ccw }),
+            Op::Arc { from, to, center, dir, .. } => {
+                Some(Seg::Arc { from: local(from, plane), to: local(to, plane), center: local(center, plane), ccw: *dir == ArcDir::Ccw })
+            }
             _ => None,
         }
     }
@@ -204,7 +206,11 @@ fn max_chord(seg: &Seg) -> f64 {
         Seg::Line { from, to } => from.dist(to),
         Seg::Arc { from, to, center, ccw } => {
             let (r, sweep) = (from.dist(center), arc_sweep(center, ccw, from, to));
-            if sweep >= std::f64::consts::PI { 2.0 * r } else { 2.0 * r * (sweep / 2.0).sin() }
+            if sweep >= std::f64::consts::PI {
+                2.0 * r
+            } else {
+                2.0 * r * (sweep / 2.0).sin()
+            }
         }
     }
 }
@@ -562,7 +568,10 @@ mod tests {
         let arc = Seg::Arc { from: P2::new(5.0, 0.0), to: P2::new(0.0, 5.0), center: P2::new(0.0, 0.0), ccw: true };
         assert_eq!(offset_radius(&arc, 1.0, 1.0).unwrap().1, 4.0);
         assert_eq!(offset_radius(&arc, 1.0, 6.0), None);
-        assert_eq!(offset(&arc, P2::new(4.0, 0.0), P2::new(0.0, 4.0), 1.0, 1.0).unwrap(), Seg::Arc { from: P2::new(4.0, 0.0), to: P2::new(0.0, 4.0), center: P2::new(0.0, 0.0), ccw: true });
+        assert_eq!(
+            offset(&arc, P2::new(4.0, 0.0), P2::new(0.0, 4.0), 1.0, 1.0).unwrap(),
+            Seg::Arc { from: P2::new(4.0, 0.0), to: P2::new(0.0, 4.0), center: P2::new(0.0, 0.0), ccw: true }
+        );
         // A 270-degree arc whose shortened ends cross: its start forward to 300 degrees, its end
         // back to 200 degrees (from 90 and 0 = 360).
         let long = Seg::Arc { from: P2::new(0.0, 5.0), to: P2::new(5.0, 0.0), center: P2::new(0.0, 0.0), ccw: true };
@@ -622,7 +631,9 @@ pub fn path(ops: &[Op], plane: Plane, side: f64, r: f64, tip: Vec3) -> Result<Ve
         out.push(match *op {
             Op::Rapid { .. } => Op::Rapid { from: place(&from3, at), to: place(&to3, end) },
             Op::Feed { feed_mm_min, .. } => Op::Feed { from: place(&from3, at), to: place(&to3, end), feed_mm_min },
-            Op::Arc { center, plane, dir, feed_mm_min, .. } => Op::Arc { from: place(&from3, at), to: place(&to3, end), center: center + tip, plane, dir, feed_mm_min },
+            Op::Arc { center, plane, dir, feed_mm_min, .. } => {
+                Op::Arc { from: place(&from3, at), to: place(&to3, end), center: center + tip, plane, dir, feed_mm_min }
+            }
             other => other,
         });
         let mut p = end;

@@ -67,14 +67,13 @@ pub fn sniff(line: &[u8]) -> Option<Foreign> {
     if starts_with_ci(t, "%MPF") || starts_with_ci(t, "%SPF") || t[0] == b'@' {
         return Some(Foreign::Sinumerik);
     }
-    let r_assign = t.windows(3).any(|w| (w[0] == b'R' || w[0] == b'r') && w[1].is_ascii_digit() && (w[2] == b'=' || (w[2].is_ascii_digit())))
-        && t.contains(&b'=');
+    let r_assign =
+        t.windows(3).any(|w| (w[0] == b'R' || w[0] == b'r') && w[1].is_ascii_digit() && (w[2] == b'=' || (w[2].is_ascii_digit()))) && t.contains(&b'=');
     if r_assign && !t.contains(&b'#') {
         return Some(Foreign::Sinumerik);
     }
     // LinuxCNC: `o100 sub`, `#<name>`.
-    if (t[0] == b'o' || t[0] == b'O')
-        && [" sub", " endsub", " call", " if", " while", " endif", " else", " do"].iter().any(|k| contains_ci(t, k))
+    if (t[0] == b'o' || t[0] == b'O') && [" sub", " endsub", " call", " if", " while", " endif", " else", " do"].iter().any(|k| contains_ci(t, k))
         || contains_ci(t, "#<")
     {
         return Some(Foreign::LinuxCnc);

@@ -183,10 +183,7 @@ mod tests {
         let s = Vec3::new(1.0, 0.0, 0.0);
         let g = arc_from_center(s, s, Plane::XY, ArcDir::Cw, Vec3::default(), 0.01).unwrap();
         assert!((g.sweep_rad - 2.0 * PI).abs() < 1e-9);
-        assert!(matches!(
-            arc_from_center(s, Vec3::new(0.0, 2.0, 0.0), Plane::XY, ArcDir::Cw, Vec3::default(), 0.01),
-            Err(ArcError::RadiusMismatch(..))
-        ));
+        assert!(matches!(arc_from_center(s, Vec3::new(0.0, 2.0, 0.0), Plane::XY, ArcDir::Cw, Vec3::default(), 0.01), Err(ArcError::RadiusMismatch(..))));
         // ZX plane: from Z=0,X=1 ... CW seen from +Y.
         let g = arc_from_center(Vec3::new(1.0, 0.0, 0.0), Vec3::new(0.0, 0.0, 1.0), Plane::ZX, ArcDir::Ccw, Vec3::default(), 0.01).unwrap();
         // In (Z, X) coordinates the start is (0,1) at 90 deg, the end (1,0) at 0 deg: CCW is 270 deg.

@@ -9,8 +9,8 @@ pub mod codes;
 pub mod comp;
 pub mod cycles;
 pub mod dialect;
-pub mod explain;
 pub mod event;
+pub mod explain;
 pub mod geom;
 pub mod interp;
 pub mod machine;
@@ -30,4 +30,7 @@ pub use interp::{Interpreter, Switches};
 pub use machine::{Machine, Options};
 pub use motion::{Op, Record, Vec3};
 pub use profile::{Params, Profile};
-pub use program::{events, events_with_library, run_text, run_text_with, CallOptions, Event, LeaderScan, LEADER_SCAN_BYTES, LineReader, Mode, Place, Program, ReadBatch, Request, Status};
+pub use program::{
+    events, events_with_library, run_text, run_text_with, CallOptions, Event, LeaderScan, LineReader, Mode, Place, Program, ReadBatch, Request, Status,
+    LEADER_SCAN_BYTES,
+};

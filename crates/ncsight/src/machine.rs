@@ -18,11 +18,11 @@
 
 use crate::alarm::{AlarmStyle, Diagnostic, Rule};
 use crate::cycles::thread::{phase_after, wrap_deg};
+use crate::event::Event;
 use crate::geom;
+use crate::geom::arc_geom_of;
 use crate::motion::{Hold, Op, Record, StopReason, ThreadHold, ThreadHoldStyle, Vec3};
 use crate::profile::Params;
-use crate::event::Event;
-use crate::geom::arc_geom_of;
 use crate::time::{Overrides, TimeModel};
 
 /// What the operator does during the run.
@@ -124,12 +124,7 @@ impl Machine {
         if self.reset {
             return;
         }
-        let late: Vec<String> = self
-            .holds
-            .iter()
-            .map(|h| format!("FEED HOLD at {h} s"))
-            .chain(self.reset_at.map(|r| format!("RESET at {r} s")))
-            .collect();
+        let late: Vec<String> = self.holds.iter().map(|h| format!("FEED HOLD at {h} s")).chain(self.reset_at.map(|r| format!("RESET at {r} s"))).collect();
         if !late.is_empty() {
             let msg = format!("{}: the programme had ended at {:.3} s", late.join(", "), self.t);
             out(Event::Diagnostic(Diagnostic::new(Rule::NotReached, self.style, self.last_span, msg)));
@@ -427,10 +422,7 @@ fn split_op(op: &Op, u: f64) -> (Op, Op) {
             let p = lerp(&from, &to);
             let i = long_axis.index();
             let deg = phase_after(spindle_deg, (p.axis(i) - from.axis(i)).abs(), lead_mm);
-            (
-                Op::Thread { from, to: p, lead_mm, long_axis, spindle_deg, rpm },
-                Op::Thread { from: p, to, lead_mm, long_axis, spindle_deg: wrap_deg(deg), rpm },
-            )
+            (Op::Thread { from, to: p, lead_mm, long_axis, spindle_deg, rpm }, Op::Thread { from: p, to, lead_mm, long_axis, spindle_deg: wrap_deg(deg), rpm })
         }
         Op::Arc { from, to, center, plane, dir, feed_mm_min } => {
             let g = arc_geom_of(op).expect("a stored arc");

@@ -563,7 +563,11 @@ impl Modal {
 impl Modes {
     /// The G96 surface speed in m/min: S is feet per minute under G20.
     pub fn surface_m_min(&self) -> f64 {
-        if self.inch { self.s_word * 0.3048 } else { self.s_word }
+        if self.inch {
+            self.s_word * 0.3048
+        } else {
+            self.s_word
+        }
     }
 
     /// Spindle speed in rpm at a given diameter (G96 needs it), signed by direction; 0 if
@@ -679,7 +683,11 @@ impl SpindleSpeed {
         let rpm = if self.css {
             let d = diameter_mm.abs();
             // S is m/min, or ft/min under G20 (FANUC and GSK lathe manuals, G96): mm per unit.
-            if d < 1e-9 { self.clamp_rpm } else { (self.surface_m_min * 1000.0 / (std::f64::consts::PI * d)).min(self.clamp_rpm) }
+            if d < 1e-9 {
+                self.clamp_rpm
+            } else {
+                (self.surface_m_min * 1000.0 / (std::f64::consts::PI * d)).min(self.clamp_rpm)
+            }
         } else {
             self.s_rpm
         };

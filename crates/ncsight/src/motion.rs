@@ -178,15 +178,36 @@ impl StopReason {
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Op {
     /// Positioning. `rates_mm_min` are the per-axis rates used (each axis at its own rate).
-    Rapid { from: Vec3, to: Vec3 },
+    Rapid {
+        from: Vec3,
+        to: Vec3,
+    },
     /// Straight cutting feed at `feed_mm_min` (per-revolution feeds already multiplied out).
-    Feed { from: Vec3, to: Vec3, feed_mm_min: f64 },
+    Feed {
+        from: Vec3,
+        to: Vec3,
+        feed_mm_min: f64,
+    },
     /// Circular (helical along the plane's normal) cutting feed.
-    Arc { from: Vec3, to: Vec3, center: Vec3, plane: Plane, dir: ArcDir, feed_mm_min: f64 },
+    Arc {
+        from: Vec3,
+        to: Vec3,
+        center: Vec3,
+        plane: Plane,
+        dir: ArcDir,
+        feed_mm_min: f64,
+    },
     /// Spindle-synchronised straight motion: the long axis moves `lead_mm` per spindle
     /// revolution. `spindle_deg` is the spindle angle at the start, from the one-revolution
     /// signal in the direction of turning; `rpm` is signed.
-    Thread { from: Vec3, to: Vec3, lead_mm: f64, long_axis: LongAxis, spindle_deg: f64, rpm: f64 },
+    Thread {
+        from: Vec3,
+        to: Vec3,
+        lead_mm: f64,
+        long_axis: LongAxis,
+        spindle_deg: f64,
+        rpm: f64,
+    },
     /// Spindle-synchronised circular motion (G32.2/G32.3).
     ThreadArc {
         from: Vec3,
@@ -199,25 +220,48 @@ pub enum Op {
         spindle_deg: f64,
         rpm: f64,
     },
-    Dwell { seconds: f64 },
+    Dwell {
+        seconds: f64,
+    },
     /// A rotary axis (`axis`: b'A', b'B' or b'C', as the setup declares it) turns from
     /// `from_deg` to `to_deg`: at its rapid rate, or at `rate_deg_min`. `with_move`: it turns
     /// together with the linear move recorded just before it (the block moved both), and takes
     /// only the time that move does not already take. `linear`: the axis is declared linear (a
     /// sub-spindle's travel B): a slide, its `_deg` values millimetres and its rate mm/min, its
     /// rapid the linear axes' (JSONL kind `slide`).
-    Rotary { axis: u8, from_deg: f64, to_deg: f64, rate_deg_min: f64, rapid: bool, with_move: bool, linear: bool },
+    Rotary {
+        axis: u8,
+        from_deg: f64,
+        to_deg: f64,
+        rate_deg_min: f64,
+        rapid: bool,
+        with_move: bool,
+        linear: bool,
+    },
     /// Spindle state changed. `rpm` is signed: negative = the spindle's negative direction;
     /// 0 = stopped. `surface_m_min` is the G96 surface speed when constant surface speed is on.
     /// `oriented`: an oriented spindle stop (G76, G87).
     /// `p`: the spindle it is, by the P that selects it on a machine with several (the setup's
     /// `spindle_p`); 0 on a machine with one.
-    Spindle { rpm: f64, surface_m_min: Option<f64>, position_mode: bool, oriented: bool, p: u32 },
+    Spindle {
+        rpm: f64,
+        surface_m_min: Option<f64>,
+        position_mode: bool,
+        oriented: bool,
+        p: u32,
+    },
     /// Tool selected (lathe T word) or changed (M06). `offset` is the lathe offset number.
-    Tool { number: u32, offset: Option<u32> },
-    Stop { reason: StopReason },
+    Tool {
+        number: u32,
+        offset: Option<u32>,
+    },
+    Stop {
+        reason: StopReason,
+    },
     /// M02 / M30 (and M99 in a main programme).
-    End { code: u32 },
+    End {
+        code: u32,
+    },
 }
 
 impl Op {
@@ -242,11 +286,7 @@ impl Op {
     /// Start point of a motion.
     pub fn start_point(&self) -> Option<Vec3> {
         match self {
-            Op::Rapid { from, .. }
-            | Op::Feed { from, .. }
-            | Op::Arc { from, .. }
-            | Op::Thread { from, .. }
-            | Op::ThreadArc { from, .. } => Some(*from),
+            Op::Rapid { from, .. } | Op::Feed { from, .. } | Op::Arc { from, .. } | Op::Thread { from, .. } | Op::ThreadArc { from, .. } => Some(*from),
             _ => None,
         }
     }
@@ -270,11 +310,7 @@ impl Op {
     /// End point of a motion.
     pub fn end_point(&self) -> Option<Vec3> {
         match self {
-            Op::Rapid { to, .. }
-            | Op::Feed { to, .. }
-            | Op::Arc { to, .. }
-            | Op::Thread { to, .. }
-            | Op::ThreadArc { to, .. } => Some(*to),
+            Op::Rapid { to, .. } | Op::Feed { to, .. } | Op::Arc { to, .. } | Op::Thread { to, .. } | Op::ThreadArc { to, .. } => Some(*to),
             _ => None,
         }
     }

@@ -130,15 +130,13 @@ impl RepairJob {
         let n = |v: f64| {
             let s = format!("{v:.4}");
             let s = s.trim_end_matches('0');
-            if s == "-0." { "0.".to_string() } else { s.to_string() }
+            if s == "-0." {
+                "0.".to_string()
+            } else {
+                s.to_string()
+            }
         };
-        let mut second = format!(
-            "G32.1 X{} Z{} F{} Q{q} S{}",
-            n(2.0 * self.end.x),
-            n(self.end.z),
-            n(self.lead_mm),
-            self.rpm.round() as i64
-        );
+        let mut second = format!("G32.1 X{} Z{} F{} Q{q} S{}", n(2.0 * self.end.x), n(self.end.z), n(self.lead_mm), self.rpm.round() as i64);
         if let Some(j) = self.j_mm {
             second.push_str(&format!(" J{}", n(j)));
         }
@@ -169,10 +167,7 @@ mod tests {
         assert!((q - 90.0).abs() < 1e-9);
         // Outside the span: no programme.
         let rec = Recorded { point: Vec3::new(15.0, 0.0, 8.0), c_deg: 0.0 };
-        assert!(matches!(
-            start_angle_deg(Vec3::new(15.0, 0.0, 3.0), Vec3::new(25.0, 0.0, -72.0), 2.0, 500.0, &rec),
-            Err(RepairError::OutsideSpan { .. })
-        ));
+        assert!(matches!(start_angle_deg(Vec3::new(15.0, 0.0, 3.0), Vec3::new(25.0, 0.0, -72.0), 2.0, 500.0, &rec), Err(RepairError::OutsideSpan { .. })));
     }
 
     #[test]

@@ -22,7 +22,11 @@ fn exactly_opt<'de, D: Deserializer<'de>, const N: usize>(d: D) -> Result<Option
 
 /// A number as a message shows it: `inf`, `NaN`, `12.5`.
 fn shown(v: f64) -> String {
-    if v.is_nan() { "NaN".into() } else { format!("{v}") }
+    if v.is_nan() {
+        "NaN".into()
+    } else {
+        format!("{v}")
+    }
 }
 
 /// The job setup (`--setup FILE.toml`): the machine (axes, travel limits, reference points),
@@ -202,7 +206,9 @@ pub const ADDITIONAL_WORK_SYSTEMS: usize = 48;
 impl WorkOffsets {
     /// The external offset, then G54-G59, then G54.1 P1-P48 (each absent where not given).
     pub fn all(&self) -> impl Iterator<Item = Option<Point>> + '_ {
-        [self.external, self.g54, self.g55, self.g56, self.g57, self.g58, self.g59].into_iter().chain((0..ADDITIONAL_WORK_SYSTEMS).map(|i| self.g54_1.get(i).copied()))
+        [self.external, self.g54, self.g55, self.g56, self.g57, self.g58, self.g59]
+            .into_iter()
+            .chain((0..ADDITIONAL_WORK_SYSTEMS).map(|i| self.g54_1.get(i).copied()))
     }
 }
 
@@ -496,7 +502,11 @@ impl Tool {
             (ToolKind::Mill, MillShape::Bull) => {
                 let rc = self.corner_radius_mm.clamp(0.0, r);
                 let flat = r - rc;
-                if d <= flat { 0.0 } else { rc - (rc * rc - (d - flat).powi(2)).max(0.0).sqrt() }
+                if d <= flat {
+                    0.0
+                } else {
+                    rc - (rc * rc - (d - flat).powi(2)).max(0.0).sqrt()
+                }
             }
             // A drill or a tap: the cone of its point.
             _ => d / (self.point_angle_deg.clamp(1.0, 179.0) / 2.0).to_radians().tan(),
@@ -589,7 +599,11 @@ impl Tool {
         }
         let rc = self.corner_radius_mm.clamp(0.0, w / 2.0);
         let e = (s - a).min(b - s).max(0.0);
-        if e >= rc { 0.0 } else { rc - (rc * rc - (rc - e) * (rc - e)).max(0.0).sqrt() }
+        if e >= rc {
+            0.0
+        } else {
+            rc - (rc * rc - (rc - e) * (rc - e)).max(0.0).sqrt()
+        }
     }
 
     pub fn profile(&self, u: f64) -> f64 {
@@ -754,7 +768,20 @@ impl Setup {
         }
         for t in &self.tools {
             let holder = t.holder.map_or([0.0, 0.0], |h| [h.diameter_mm, h.length_mm]);
-            let lengths_ok = [t.tip_radius_mm, t.tip_flat_mm, t.width_mm, t.min_bore_mm, t.diameter_mm, t.corner_radius_mm, t.flute_length_mm, t.stick_out_mm, holder[0], holder[1]].into_iter().all(|v| length(v) && v >= 0.0);
+            let lengths_ok = [
+                t.tip_radius_mm,
+                t.tip_flat_mm,
+                t.width_mm,
+                t.min_bore_mm,
+                t.diameter_mm,
+                t.corner_radius_mm,
+                t.flute_length_mm,
+                t.stick_out_mm,
+                holder[0],
+                holder[1],
+            ]
+            .into_iter()
+            .all(|v| length(v) && v >= 0.0);
             let angles_ok = [t.included_angle_deg, t.point_angle_deg].into_iter().all(|a| a.is_finite() && a > 0.0 && a < 180.0);
             if !(lengths_ok && angles_ok) {
                 return Err(SetupError(format!(

@@ -159,7 +159,11 @@ impl TimeModel {
 
     /// Long-axis speed of a thread record, mm/min.
     pub fn thread_speed(&self, lead_mm: f64, rpm: f64) -> f64 {
-        if self.ov.dry_run { self.dry_run_mm_min } else { lead_mm * rpm.abs() }
+        if self.ov.dry_run {
+            self.dry_run_mm_min
+        } else {
+            lead_mm * rpm.abs()
+        }
     }
 
     /// The speed along the path while the record runs (for the distance a hold needs to stop).
@@ -174,16 +178,20 @@ impl TimeModel {
 
     /// The time constant that applies to a record.
     pub fn accel_s(&self, r: &Record) -> f64 {
-        if matches!(r.op, Op::Rapid { .. }) { self.rapid_accel_s } else { r.accel_s.unwrap_or(self.feed_accel_s) }
+        if matches!(r.op, Op::Rapid { .. }) {
+            self.rapid_accel_s
+        } else {
+            r.accel_s.unwrap_or(self.feed_accel_s)
+        }
     }
 
     /// Seconds a record takes. `run_start`: a thread record that starts a synchronised run
     /// (it carries the run's acceleration).
     pub fn duration_s(&self, r: &Record, run_start: bool) -> f64 {
         match &r.op {
-            Op::Rapid { from, to } => (0..3)
-                .map(|a| trapezoid_s((to.axis(a) - from.axis(a)).abs(), self.rapid_mm_min[a], self.rapid_accel_s))
-                .fold(0.0, f64::max),
+            Op::Rapid { from, to } => {
+                (0..3).map(|a| trapezoid_s((to.axis(a) - from.axis(a)).abs(), self.rapid_mm_min[a], self.rapid_accel_s)).fold(0.0, f64::max)
+            }
             Op::Feed { from, to, feed_mm_min } => trapezoid_s(from.dist(to), self.feed_speed(r, *feed_mm_min), self.accel_s(r)),
             Op::Arc { from, to, plane, feed_mm_min, .. } => {
                 let len = geom::arc_geom_of(&r.op).map(|g| geom::arc_length(from, to, *plane, &g)).unwrap_or(0.0);
@@ -214,7 +222,11 @@ impl TimeModel {
     /// with a linear move takes only what that move does not already take.
     pub fn duration_after_s(&self, r: &Record, run_start: bool, previous_s: f64) -> f64 {
         let d = self.duration_s(r, run_start);
-        if matches!(r.op, Op::Rotary { with_move: true, .. }) { (d - previous_s).max(0.0) } else { d }
+        if matches!(r.op, Op::Rotary { with_move: true, .. }) {
+            (d - previous_s).max(0.0)
+        } else {
+            d
+        }
     }
 }
 

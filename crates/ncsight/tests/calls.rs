@@ -75,10 +75,7 @@ fn gsk_counts_in_p_and_refuses_l() {
 fn a_second_call_jumps_back_to_the_noted_place() {
     let text = "O0001\nG90 G00 X0. Y0. Z10.\nM98 P0100\nG00 Y5.\nM98 P0100\nM30\nO0100\nG91 G00 X1.\nG90 M99\n";
     let e = run("fanuc0m", text);
-    assert_eq!(
-        trace(&e),
-        t(&["2:rapid:0,0,10@0", "8:rapid:1,0,10@1", "4:rapid:1,5,10@0", "8:rapid:2,5,10@1", "6:end@0"])
-    );
+    assert_eq!(trace(&e), t(&["2:rapid:0,0,10@0", "8:rapid:1,0,10@1", "4:rapid:1,5,10@0", "8:rapid:2,5,10@1", "6:end@0"]));
 }
 
 /// Four levels nest; the fifth call is FANUC alarm 077 (FANUC 0i-TB/MB operator's manual 12.3).
@@ -224,9 +221,8 @@ fn calls_give_what_their_expansion_gives() {
     let sub_b = format!("G91 G00 Z-1.\nG90\nM98 P0020300\n");
     for (count_b, count_a) in [(1, 1), (2, 3), (3, 2)] {
         let sub_a = format!("G91 G00 X2.\nG90\nM98 P{count_b:03}0200\n");
-        let text = format!(
-            "O0001\nG21 G17 G90 G00 X0. Y0. Z10.\nM98 P{count_a:03}0100\nG00 X0. Y0.\nM30\nO0100\n{sub_a}M99\nO0200\n{sub_b}M99\nO0300\n{sub_c}M99\n"
-        );
+        let text =
+            format!("O0001\nG21 G17 G90 G00 X0. Y0. Z10.\nM98 P{count_a:03}0100\nG00 X0. Y0.\nM30\nO0100\n{sub_a}M99\nO0200\n{sub_b}M99\nO0300\n{sub_c}M99\n");
         let mut flat = String::from("G21 G17 G90 G00 X0. Y0. Z10.\n");
         for _ in 0..count_a {
             flat.push_str("G91 G00 X2.\nG90\n");
@@ -289,7 +285,13 @@ fn searches_count_for_the_runaway_guard() {
     let text = "#1 = 0\nWHILE [1 EQ 1] DO1\nGOTO 99\nEND1\nM30\n";
     let options = CallOptions { max_repeated_blocks: 1_000, ..CallOptions::default() };
     let e = run_with("fanuc0m", Mode::Check, options, text, &[]);
-    let codes: Vec<&str> = e.iter().filter_map(|e| match e { Event::Diagnostic(d) if d.is_alarm() => Some(d.code), _ => None }).collect();
+    let codes: Vec<&str> = e
+        .iter()
+        .filter_map(|e| match e {
+            Event::Diagnostic(d) if d.is_alarm() => Some(d.code),
+            _ => None,
+        })
+        .collect();
     assert_eq!(codes, vec!["PS0128", "NCS-E63"]);
     let mut main = String::from("O0001\nM98 P0100\n");
     for i in 0..3_000 {

@@ -3,7 +3,7 @@
 //! the coordinate given; two lines that meet, meet on both; what they refuse is within the
 //! 1-degree tolerance of the notes.
 
-use ncsight::comp::{corner_cut, direction, end_by_angle, meet, CornerCut, Seg, P2, DRAWING_TOLERANCE_DEG};
+use ncsight::comp::{corner_cut, direction, end_by_angle, meet, CornerCut, Seg, DRAWING_TOLERANCE_DEG, P2};
 use proptest::prelude::*;
 
 /// How far `p` is from the line through `s` along `u` (a unit vector).

@@ -15,10 +15,7 @@ fn alarm(d: &[Diagnostic]) -> Option<&'static str> {
 }
 
 fn feeds_on_line(r: &[Record], line: u32) -> Vec<(f64, f64)> {
-    r.iter()
-        .filter(|r| r.span.line == line)
-        .filter_map(|r| if let Op::Feed { to, .. } = r.op { Some((2.0 * to.x, to.z)) } else { None })
-        .collect()
+    r.iter().filter(|r| r.span.line == line).filter_map(|r| if let Op::Feed { to, .. } = r.op { Some((2.0 * to.x, to.z)) } else { None }).collect()
 }
 
 const START: &str = "G97 S500 M03\nG99 G0 X50 Z2\n";
@@ -67,7 +64,8 @@ fn g74_and_g75_share_one_back_off() {
     // G74 R0.5 sets e for G75 too: each G75 peck is followed by a 0.5 mm rapid back in X.
     let (r, d) = run("G97 S500 M03\nG99 G0 X42 Z-10\nG74 R0.5\nG75 X36 Z-10 P2000 F0.05\nM30\n");
     assert_eq!(alarm(&d), None);
-    let backs: Vec<f64> = r.iter().filter(|r| r.span.line == 4).filter_map(|r| if let Op::Rapid { from, to } = r.op { Some(to.x - from.x) } else { None }).collect();
+    let backs: Vec<f64> =
+        r.iter().filter(|r| r.span.line == 4).filter_map(|r| if let Op::Rapid { from, to } = r.op { Some(to.x - from.x) } else { None }).collect();
     assert!((backs[0] - 0.5).abs() < 1e-9, "{backs:?}");
 }
 
@@ -182,10 +180,8 @@ fn rigid_tapping_goes_in_and_out_with_the_spindle() {
     let (r, d) = run("G97 M03 S500\nG00 X0 Z3\nM29 S300\nG84 Z-20 P200 F1.5\nM30\n");
     assert_eq!(alarm(&d), None, "{d:?}");
     let taps: Vec<&Record> = r.iter().filter(|r| r.span.line == 4).collect();
-    let threads: Vec<(f64, f64, f64)> = taps
-        .iter()
-        .filter_map(|r| if let Op::Thread { to, spindle_deg, rpm, .. } = r.op { Some((to.z, spindle_deg, rpm)) } else { None })
-        .collect();
+    let threads: Vec<(f64, f64, f64)> =
+        taps.iter().filter_map(|r| if let Op::Thread { to, spindle_deg, rpm, .. } = r.op { Some((to.z, spindle_deg, rpm)) } else { None }).collect();
     // 23 mm at 1.5 mm a turn = 15 1/3 turns: the way in ends at 120 degrees, the way out
     // (turning back) starts at 240.
     assert_eq!(threads.len(), 2);
@@ -295,7 +291,9 @@ fn a_peck_cycle_past_the_cap_runs_pushed_and_alarms_pulled() {
 /// (140,000 moves) run pushed and stop pulled at the cap.
 #[test]
 fn a_deferred_pattern_cycle_makes_the_records_the_ordinary_path_makes() {
-    let text = |passes: u32| format!("G50 S2500\nG96 S150 M03\nG99 G0 X62 Z2\nG73 U4 W0 R{passes}\nG73 P10 Q20 U0.4 W0.1 F0.2\nN10 G0 X20\nG1 Z-10\nG2 X40 Z-20 R10\nG1 Z-30\nN20 X62\nG0 X100 Z50\nM30\n");
+    let text = |passes: u32| {
+        format!("G50 S2500\nG96 S150 M03\nG99 G0 X62 Z2\nG73 U4 W0 R{passes}\nG73 P10 Q20 U0.4 W0.1 F0.2\nN10 G0 X20\nG1 Z-10\nG2 X40 Z-20 R10\nG1 Z-30\nN20 X62\nG0 X100 Z50\nM30\n")
+    };
     let (deferred, d1) = common::run_pushed("gsk980tdi", None, &text(9000));
     let (ordinary, d2) = run(&text(9000));
     assert_eq!((alarm(&d1), alarm(&d2)), (None, None), "{d1:?} {d2:?}");

@@ -67,7 +67,9 @@ fn code_of(text: &str) -> String {
                 i += 1;
             }
             i += 2;
-        } else if c == b'r' && (b.get(i + 1) == Some(&b'"') || (b.get(i + 1) == Some(&b'#') && !b[..i].last().is_some_and(|p| p.is_ascii_alphanumeric() || *p == b'_'))) {
+        } else if c == b'r'
+            && (b.get(i + 1) == Some(&b'"') || (b.get(i + 1) == Some(&b'#') && !b[..i].last().is_some_and(|p| p.is_ascii_alphanumeric() || *p == b'_')))
+        {
             // A raw string r"..." or r#"..."#.
             let mut j = i + 1;
             let mut hashes = 0;
@@ -276,7 +278,11 @@ fn interp_and_cycles_name_no_controller() {
                 found.push(format!("{shown}:{}: a parameter number in the code: {}", n + 1, line.trim()));
             }
             let compact: String = line.chars().filter(|c| !c.is_whitespace()).collect();
-            if compact.contains(".name==") || compact.contains(".title==") || compact.contains("matchstep.profile.name") || compact.contains("matchprofile.name") {
+            if compact.contains(".name==")
+                || compact.contains(".title==")
+                || compact.contains("matchstep.profile.name")
+                || compact.contains("matchprofile.name")
+            {
                 found.push(format!("{shown}:{}: a test of which controller this is: {}", n + 1, line.trim()));
             }
         }
@@ -383,7 +389,8 @@ fn a_cycle_family_is_named_once_in_the_interpreter() {
     assert!(families.len() >= 3, "the families dispatched by one_shot: {families:?}");
     for v in &families {
         let needle = format!("GFn::{v}");
-        let uses: Vec<&str> = text.lines().filter(|l| l.split(&needle).skip(1).any(|rest| !rest.starts_with(|c: char| c.is_alphanumeric() || c == '_'))).collect();
+        let uses: Vec<&str> =
+            text.lines().filter(|l| l.split(&needle).skip(1).any(|rest| !rest.starts_with(|c: char| c.is_alphanumeric() || c == '_'))).collect();
         assert_eq!(uses.len(), 1, "{needle} is named {} times in interp/mod.rs (once, at its dispatch):\n{}", uses.len(), uses.join("\n"));
     }
 }

@@ -71,7 +71,8 @@ fn while_loops_nest() {
 fn computed_goto_and_if() {
     // #1 = 2: GOTO [#1*10] goes to N20 (X2 is passed over); N20 counts #2 up to 3 through
     // IF [..] GOTO 20 backwards, moving Y 1, 2, 3; then IF [..] THEN sets #3 = 7 -> Z7.
-    let text = "G90 G00 X0 Y0 Z0\n#1 = 2\n#2 = 0\nGOTO [#1*10]\nN10 G00 X2.\nN20 #2 = #2 + 1\nG00 Y#2\nIF [#2 LT 3] GOTO 20\nIF [#2 EQ 3] THEN #3 = 7\nG00 Z#3\nM30\n";
+    let text =
+        "G90 G00 X0 Y0 Z0\n#1 = 2\n#2 = 0\nGOTO [#1*10]\nN10 G00 X2.\nN20 #2 = #2 + 1\nG00 Y#2\nIF [#2 LT 3] GOTO 20\nIF [#2 EQ 3] THEN #3 = 7\nG00 Z#3\nM30\n";
     assert_eq!(trace("fanuc0m", text), t(&["7:0,1,0", "7:0,2,0", "7:0,3,0", "10:0,3,7"]));
 }
 
@@ -97,7 +98,16 @@ fn g65_arguments() {
     // GSK980TDi: P comes right after G65; X10 is 10 mm, so #24 = 10 and W-#24 goes back 10.
     let gsk = "O0001\nG00 X20. Z0.\nG65 P100 X10 Z4.\nM30\nO0100\nG00 U#24 W#26\nM99\n";
     let e = run_mode("gsk980tdi", Mode::Run, gsk);
-    let moves: Vec<(f64, f64)> = e.iter().filter_map(|e| match e { Event::Record(r) => match &r.op { Op::Rapid { to, .. } => Some((to.x * 2.0, to.z)), _ => None }, _ => None }).collect();
+    let moves: Vec<(f64, f64)> = e
+        .iter()
+        .filter_map(|e| match e {
+            Event::Record(r) => match &r.op {
+                Op::Rapid { to, .. } => Some((to.x * 2.0, to.z)),
+                _ => None,
+            },
+            _ => None,
+        })
+        .collect();
     assert_eq!(moves, vec![(20.0, 0.0), (30.0, 4.0)]);
     // L repeats the call: O0100 adds 1 to X three times.
     let text = "O0001\nG90 G00 X0 Y0 Z0\nG65 P100 L3 A1.\nM30\nO0100\n#100 = #100 + #1\nG00 X#100\nM99\n";
@@ -130,7 +140,16 @@ fn position_variables() {
     // A lathe reads X as a diameter.
     let lathe = "G00 X40. Z2.\n#1 = #5001\nG00 X[#1-10]\nM30\n";
     let e = run_mode("gsk980tdi", Mode::Run, lathe);
-    let x: Vec<f64> = e.iter().filter_map(|e| match e { Event::Record(r) => match &r.op { Op::Rapid { to, .. } => Some(to.x * 2.0), _ => None }, _ => None }).collect();
+    let x: Vec<f64> = e
+        .iter()
+        .filter_map(|e| match e {
+            Event::Record(r) => match &r.op {
+                Op::Rapid { to, .. } => Some(to.x * 2.0),
+                _ => None,
+            },
+            _ => None,
+        })
+        .collect();
     assert_eq!(x, vec![40.0, 30.0]);
 }
 
@@ -143,7 +162,13 @@ fn user_alarm_and_clock() {
     assert_eq!(d.code, "PS3000");
     assert!(d.message.contains("3007") && d.message.contains("SPINDLE NOT READY"), "{}", d.message);
     let text = "G90 G00 X0 Y0 Z0\nG00 X10.\n#1 = #3001\nG00 Y#1\nM30\n";
-    let y: Vec<f64> = run_mode("fanuc0m", Mode::Run, text).iter().filter_map(|e| match e { Event::Record(r) => r.op.end_point().map(|p| p.y), _ => None }).collect();
+    let y: Vec<f64> = run_mode("fanuc0m", Mode::Run, text)
+        .iter()
+        .filter_map(|e| match e {
+            Event::Record(r) => r.op.end_point().map(|p| p.y),
+            _ => None,
+        })
+        .collect();
     assert!(y.last().is_some_and(|y| *y > 50.0 && *y < 500.0), "{y:?}");
 }
 
@@ -159,9 +184,8 @@ fn modal_information() {
 #[test]
 fn macros_give_what_their_expansion_gives() {
     for (n, step) in [(3, 2.5), (5, 1.25), (1, 10.0)] {
-        let text = format!(
-            "G21 G90 G00 X0 Y0 Z5.\n#1 = 0\nWHILE [#1 LT {n}] DO1\nG01 X[#1*{step}] Y[SIN[#1*30]*10] F300.\nG00 Z[5-#1]\n#1 = #1 + 1\nEND1\nM30\n"
-        );
+        let text =
+            format!("G21 G90 G00 X0 Y0 Z5.\n#1 = 0\nWHILE [#1 LT {n}] DO1\nG01 X[#1*{step}] Y[SIN[#1*30]*10] F300.\nG00 Z[5-#1]\n#1 = #1 + 1\nEND1\nM30\n");
         let mut flat = String::from("G21 G90 G00 X0 Y0 Z5.\n");
         for i in 0..n {
             let y = ((i as f64 * 30.0).to_radians().sin() * 10.0 * 1000.0).round() / 1000.0;
@@ -186,7 +210,13 @@ fn macros_give_what_their_expansion_gives() {
 fn a_check_reports_a_loop_alarm_once() {
     let text = "#1 = 0\nWHILE [#1 LT 5] DO1\n#2 = 1 / 0\n#1 = #1 + 1\nEND1\nM30\n";
     let e = run_mode("fanuc0m", Mode::Check, text);
-    let alarms: Vec<&str> = e.iter().filter_map(|e| match e { Event::Diagnostic(d) if d.is_alarm() => Some(d.code), _ => None }).collect();
+    let alarms: Vec<&str> = e
+        .iter()
+        .filter_map(|e| match e {
+            Event::Diagnostic(d) if d.is_alarm() => Some(d.code),
+            _ => None,
+        })
+        .collect();
     assert_eq!(alarms, vec!["PS0112"]);
 }
 
@@ -196,14 +226,17 @@ fn a_check_reports_a_loop_alarm_once() {
 #[test]
 fn g66_calls_after_each_move() {
     let text = "O0001\nG90 G00 X0 Y0 Z5.\nG66 P9200 Z-2.\nG00 X10.\nX20.\nG67\nX30.\nM30\nO9200\nG01 Z#26 F100.\nG00 Z5.\nM99\n";
-    assert_eq!(
-        trace("fanuc0m", text),
-        t(&["2:0,0,5", "4:10,0,5", "10:10,0,-2", "11:10,0,5", "5:20,0,5", "10:20,0,-2", "11:20,0,5", "7:30,0,5"])
-    );
+    assert_eq!(trace("fanuc0m", text), t(&["2:0,0,5", "4:10,0,5", "10:10,0,-2", "11:10,0,5", "5:20,0,5", "10:20,0,-2", "11:20,0,5", "7:30,0,5"]));
     // GSK: a G65 cancels G66 (GSK980TDi help text, G66): after it, W-1 calls nothing.
     let gsk = "O0001\nG00 X10. Z5.\nG66 P9200 A1.\nG00 W-1\nG65 P9300\nG00 W-1\nM30\nO9200\nG00 U#1\nM99\nO9300\nM99\n";
     let e = run_mode("gsk980tdi", Mode::Run, gsk);
-    let lines: Vec<u32> = e.iter().filter_map(|e| match e { Event::Record(r) if matches!(r.op, Op::Rapid { .. }) => Some(r.span.line), _ => None }).collect();
+    let lines: Vec<u32> = e
+        .iter()
+        .filter_map(|e| match e {
+            Event::Record(r) if matches!(r.op, Op::Rapid { .. }) => Some(r.span.line),
+            _ => None,
+        })
+        .collect();
     assert_eq!(lines, vec![2, 4, 9, 6]);
 }
 
@@ -227,7 +260,9 @@ fn review_fixes() {
 fn review_fixes_block_delete_and_macro_a() {
     let program = |switches: Switches| {
         let p = Program::new(Params::defaults(profile::by_name("fanuc0m").unwrap()), switches, Mode::Run);
-        events(p, b"O0001\nG90 G00 X0 Y0 Z0\n/G65 P100 A1.\nM30\nO0100\nG00 X#1\nM99\n".as_slice()).filter(|e| matches!(e, Event::Record(r) if matches!(r.op, Op::Rapid { .. }))).count()
+        events(p, b"O0001\nG90 G00 X0 Y0 Z0\n/G65 P100 A1.\nM30\nO0100\nG00 X#1\nM99\n".as_slice())
+            .filter(|e| matches!(e, Event::Record(r) if matches!(r.op, Op::Rapid { .. })))
+            .count()
     };
     assert_eq!(program(Switches { block_delete: true, ..Switches::default() }), 0);
     assert_eq!(program(Switches::default()), 1);
@@ -244,7 +279,16 @@ fn review_fixes_block_delete_and_macro_a() {
 fn gsk_macro_a() {
     let text = "G00 X20. Z0.\nG65 H01 P#100 Q5\nG65 H02 P#101 Q#100 R3\nG65 H04 P#102 Q#101 R2\nG65 H31 P#103 Q10 R30\nG65 H34 P#104 Q1 R1\nG65 H26 P#102 Q3 R4\nG00 U#102 W#103\nG65 H81 P50 Q#100 R5\nG00 W99\nN50 G00 W#104\nG65 H99 P7 (DOOR OPEN)\nM30\n";
     let e = run_mode("gsk980tdi", Mode::Run, text);
-    let moves: Vec<(f64, f64)> = e.iter().filter_map(|e| match e { Event::Record(r) => match &r.op { Op::Rapid { to, .. } => Some((to.x * 2.0, (to.z * 1000.0).round() / 1000.0)), _ => None }, _ => None }).collect();
+    let moves: Vec<(f64, f64)> = e
+        .iter()
+        .filter_map(|e| match e {
+            Event::Record(r) => match &r.op {
+                Op::Rapid { to, .. } => Some((to.x * 2.0, (to.z * 1000.0).round() / 1000.0)),
+                _ => None,
+            },
+            _ => None,
+        })
+        .collect();
     assert_eq!(moves, vec![(20.0, 0.0), (32.0, 5.0), (32.0, 50.0)]);
     let Some(Event::Diagnostic(d)) = e.last() else { panic!() };
     assert!(d.code == "NCS-E75" && d.message.contains("507") && d.message.contains("DOOR OPEN"), "{d:?}");
@@ -293,7 +337,16 @@ fn builder_calls_by_parameter() {
     assert_eq!(plain.first().map(String::as_str), Some("PS0010"), "{plain:?}");
     let gsk = "O0001\nG00 X10. Z0.\nM9123\nM30\nO9123\nG00 W-2.\nM99\n";
     let e = run_mode("gsk980tdi", Mode::Run, gsk);
-    let z: Vec<f64> = e.iter().filter_map(|e| match e { Event::Record(r) => match &r.op { Op::Rapid { to, .. } => Some(to.z), _ => None }, _ => None }).collect();
+    let z: Vec<f64> = e
+        .iter()
+        .filter_map(|e| match e {
+            Event::Record(r) => match &r.op {
+                Op::Rapid { to, .. } => Some(to.z),
+                _ => None,
+            },
+            _ => None,
+        })
+        .collect();
     assert_eq!(z, vec![0.0, -2.0]);
 }
 
@@ -352,7 +405,10 @@ fn single_block_stops_at_macro_statements_with_sbm() {
 #[test]
 fn modal_information_by_group_number() {
     let text = "G21 G17 G90 G00 X0. Y0. Z0.\nG41 D7 G43 H3 G55 G61 M08 X1.\nG00 X#4007 Y#4008 Z#4014\nG00 X#4015 Y#4107 Z#4111\nG00 X#4113 Y#4012 Z#4010\nG99 G81 X1. Y1. Z-5. R2. F100.\n#1 = #4009\n#2 = #4010\nG80 G40 G49\nG00 X#1 Y#2 Z#4009\nG00 X#4007 Y#4008 Z#4001\nM30\n";
-    let moves: Vec<String> = trace("fanuc0m", text).into_iter().filter(|s| s.starts_with("3:") || s.starts_with("4:") || s.starts_with("5:") || s.starts_with("10:") || s.starts_with("11:")).collect();
+    let moves: Vec<String> = trace("fanuc0m", text)
+        .into_iter()
+        .filter(|s| s.starts_with("3:") || s.starts_with("4:") || s.starts_with("5:") || s.starts_with("10:") || s.starts_with("11:"))
+        .collect();
     assert_eq!(moves, t(&["3:41,43,55", "4:61,7,3", "5:8,67,98", "10:81,99,80", "11:40,49,0"]));
     // Group 13 (G96/G97): G97 at power on, G96 once given.
     let e = trace("fanuc0m", "G00 X0 Y0 Z0\nG00 X#4013\nG96 S100 M03\nG00 X#4013\nM30\n");
@@ -364,7 +420,8 @@ fn modal_information_by_group_number() {
     // 92, X92. a diameter), 02 G96/G97 (97), 16 the plane (G18), 05 the feed mode (G99 per
     // revolution at power on on the FANUC 0-T, G98 per minute on the GSK980TDi), M 8; group 03
     // does not exist in system A (alarm 115).
-    let lathe = "G00 X50. Z5. S500 M03\nG92 X48. Z-20. F2.\n#1 = #4001\nG00 X#1 Z#4002\nG00 X#4016 Z#4005\nG01 X30. F0.2 M08\nG00 X#4001 Z#4113\n#2 = #4003\nM30\n";
+    let lathe =
+        "G00 X50. Z5. S500 M03\nG92 X48. Z-20. F2.\n#1 = #4001\nG00 X#1 Z#4002\nG00 X#4016 Z#4005\nG01 X30. F0.2 M08\nG00 X#4001 Z#4113\n#2 = #4003\nM30\n";
     let lathe_moves = |m: &str| -> Vec<String> {
         trace(m, lathe).into_iter().filter(|s| s.starts_with("4:") || s.starts_with("5:") || s.starts_with("7:") || !s.contains(':')).collect()
     };
@@ -500,14 +557,7 @@ mod expansion {
 
     /// M98 repeating an incremental step n times, from the base point.
     fn with_m98(p: &Pattern) -> (String, String) {
-        let call = format!(
-            "G00 X{} Y{} Z5.\nG01 Z{} F{}.\nG00 Z5.\nM98 P{:04}0200\n",
-            mm(p.base_um.0),
-            mm(p.base_um.1),
-            mm(p.z_um),
-            p.feed,
-            p.n - 1
-        );
+        let call = format!("G00 X{} Y{} Z5.\nG01 Z{} F{}.\nG00 Z5.\nM98 P{:04}0200\n", mm(p.base_um.0), mm(p.base_um.1), mm(p.z_um), p.feed, p.n - 1);
         let body = format!("O0200\nG91 G00 X{} Y{}\nG90 G01 Z{} F{}.\nG00 Z5.\nM99\n", mm(p.step_um.0), mm(p.step_um.1), mm(p.z_um), p.feed);
         (call, body)
     }
@@ -544,9 +594,18 @@ fn statement_stops_inputs_and_unsimulated_groups() {
     let operator = ncsight::Options { single_block: true, ..ncsight::Options::default() };
     let text = "G00 X40. Z5. S500 M03\nG32 W-10. F1.5\n#1 = 1\nG00 X50.\nM30\n";
     let events = ncsight::run_text_with(params, Switches::default(), Mode::Run, operator, text.as_bytes());
-    let times: Vec<f64> = events.iter().filter_map(|e| match e { Event::Record(r) => Some(r.t_s), _ => None }).collect();
+    let times: Vec<f64> = events
+        .iter()
+        .filter_map(|e| match e {
+            Event::Record(r) => Some(r.t_s),
+            _ => None,
+        })
+        .collect();
     assert!(times.windows(2).all(|w| w[0] <= w[1] + 1e-9), "{times:?}");
-    let line3 = events.iter().position(|e| matches!(e, Event::Record(r) if r.span.line == 3 && r.op == (Op::Stop { reason: StopReason::SingleBlock }))).expect("a stop at the statement");
+    let line3 = events
+        .iter()
+        .position(|e| matches!(e, Event::Record(r) if r.span.line == 3 && r.op == (Op::Stop { reason: StopReason::SingleBlock })))
+        .expect("a stop at the statement");
     let last_thread = events.iter().rposition(|e| matches!(e, Event::Record(r) if r.span.line == 2)).unwrap();
     assert!(last_thread < line3);
 

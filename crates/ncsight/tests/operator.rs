@@ -161,12 +161,7 @@ fn thousands_of_presses_do_not_overflow_the_stack() {
     let end = plain.last().unwrap().t_s;
     let presses: Vec<f64> = (0..8000).map(|i| end * i as f64 / 8000.0).collect();
     let opts = Options { feed_hold_at: presses, ..Options::default() };
-    let (r, _) = std::thread::Builder::new()
-        .stack_size(256 * 1024)
-        .spawn(move || run_diags("gsk980tdi", opts, O0012))
-        .unwrap()
-        .join()
-        .unwrap();
+    let (r, _) = std::thread::Builder::new().stack_size(256 * 1024).spawn(move || run_diags("gsk980tdi", opts, O0012)).unwrap().join().unwrap();
     assert!(r.last().is_some_and(|r| matches!(r.op, Op::End { .. })));
 }
 
@@ -375,13 +370,7 @@ fn a_second_thread_hold_in_a_restarted_cycle_restarts_it_once() {
     let pull = (plain[i].t_s + plain[i + 1].t_s) / 2.0;
     let first = run("gsk980tdi", &[], hold_at(pull), O0012);
     // The restarted cycle's thread: the next thread record that starts at the cycle's Z5.
-    let k = first
-        .iter()
-        .enumerate()
-        .skip(i + 1)
-        .find(|(_, r)| matches!(r.op, Op::Thread { from, .. } if (from.z - 5.0).abs() < 1e-9))
-        .map(|(k, _)| k)
-        .unwrap();
+    let k = first.iter().enumerate().skip(i + 1).find(|(_, r)| matches!(r.op, Op::Thread { from, .. } if (from.z - 5.0).abs() < 1e-9)).map(|(k, _)| k).unwrap();
     let again = (first[k - 1].t_s + first[k].t_s) / 2.0;
     let r = run("gsk980tdi", &[], Options { feed_hold_at: vec![pull, again], ..Options::default() }, O0012);
     let mut at: Option<Vec3> = None;

@@ -15,7 +15,8 @@ use common::first_alarm;
 fn g34_pulls_out_as_g32() {
     let (records, diags) = common::run_plain("gsk980tdi", &[], "G97 S300 M03\nG0 X30. Z5.\nG34 Z-20. F2. R0.1 J1. K2.\nM30\n");
     assert!(diags.is_empty(), "{diags:?}");
-    let threads: Vec<(f64, f64, f64)> = records.iter().filter_map(|r| if let Op::Thread { to, lead_mm, .. } = r.op { Some((to.x * 2.0, to.z, lead_mm)) } else { None }).collect();
+    let threads: Vec<(f64, f64, f64)> =
+        records.iter().filter_map(|r| if let Op::Thread { to, lead_mm, .. } = r.op { Some((to.x * 2.0, to.z, lead_mm)) } else { None }).collect();
     assert_eq!(threads.len(), 11, "{threads:?}");
     let (x, z, lead) = threads[9];
     assert!((x - 30.0).abs() < 1e-9 && (z + 18.0).abs() < 1e-9 && (lead - 2.95).abs() < 1e-9, "{:?}", threads[9]);
@@ -76,7 +77,10 @@ fn setup_shapes_are_checked_and_named() {
     assert!(refused("[block]\nmin_mm = [0.0, 0.0, 0.0, 1.0]\nmax_mm = [1.0, 1.0, 1.0]\n").contains("give exactly 3 numbers, not 4"));
     assert!(refused("[machine]\nlimits = { z_mm = [5.0, -5.0] }\n").contains("z_mm = [5, -5]"));
     // What a machine can have still reads.
-    let s = Setup::from_toml("[machine]\naxes = [\"X\", \"Y\", \"Z\", \"C\"]\nlimits = { x_mm = [-1.0, 300.0] }\n[block]\nmin_mm = [0.0, 0.0, -20.0]\nmax_mm = [100.0, 50.0, 0.0]\n").unwrap();
+    let s = Setup::from_toml(
+        "[machine]\naxes = [\"X\", \"Y\", \"Z\", \"C\"]\nlimits = { x_mm = [-1.0, 300.0] }\n[block]\nmin_mm = [0.0, 0.0, -20.0]\nmax_mm = [100.0, 50.0, 0.0]\n",
+    )
+    .unwrap();
     assert_eq!(s.block.unwrap().max_mm, [100.0, 50.0, 0.0]);
 }
 

@@ -53,7 +53,8 @@ fn a_profile_with_a_missing_parameter_is_refused() {
         pull_out: PullOutRule::Chamfer { amount: ParamKey::Number(4242, None), angle: ParamKey::Number(4243, None) },
         hold: HoldRule::AfterRun,
     };
-    static G93: &[GDef] = &[GDef { major: 93, minor: None, name: "G93", group: Group::Motion, function: GFn::Thread(ThreadCmd::Cycle(&RULES)), meaning: "test" }];
+    static G93: &[GDef] =
+        &[GDef { major: 93, minor: None, name: "G93", group: Group::Motion, function: GFn::Thread(ThreadCmd::Cycle(&RULES)), meaning: "test" }];
     let base = profile::by_name("fanuc0m").unwrap();
     let mut codes: Vec<profile::Codes<GDef>> = base.g_codes.to_vec();
     codes.push(profile::Codes { source: "test", codes: G93 });

@@ -15,7 +15,10 @@ fn every_profile() -> impl Strategy<Value = &'static ncsight::Profile> {
 fn gcode_line() -> impl Strategy<Value = String> {
     let word = (
         prop::sample::select(b"GXYZUWIJKRFSTMPQLNODE".to_vec()),
-        prop::sample::select(vec!["0", "1", "2", "3", "4", "-1.5", "10.", "92", "32.1", "99", "0.0", "1e3", "[1/0]", "[2*3]", ".", "-", "70", "71", "72", "73", "74", "75", "76", "78", "90", "94", "500", "010260"]),
+        prop::sample::select(vec![
+            "0", "1", "2", "3", "4", "-1.5", "10.", "92", "32.1", "99", "0.0", "1e3", "[1/0]", "[2*3]", ".", "-", "70", "71", "72", "73", "74", "75", "76",
+            "78", "90", "94", "500", "010260",
+        ]),
     )
         .prop_map(|(l, v)| format!("{}{}", l as char, v));
     prop::collection::vec(word, 0..8).prop_map(|ws| ws.join(" "))
@@ -89,10 +92,7 @@ fn a_100_kb_line_is_one_alarm() {
     text.extend(std::iter::repeat(b'X').take(100_000));
     text.extend(b"\nM30\n");
     let events = run_text(Params::defaults(profile::by_name("fanuc0m").unwrap()), Switches::default(), Mode::Check, &text);
-    let alarms: Vec<_> = events
-        .iter()
-        .filter_map(|e| if let Event::Diagnostic(d) = e { d.is_alarm().then_some(d) } else { None })
-        .collect();
+    let alarms: Vec<_> = events.iter().filter_map(|e| if let Event::Diagnostic(d) = e { d.is_alarm().then_some(d) } else { None }).collect();
     assert_eq!(alarms.len(), 1, "{alarms:?}");
     assert_eq!(alarms[0].span.line, 2);
     assert!(alarms[0].message.contains("100000 bytes"));

@@ -117,15 +117,7 @@ fn repair_round_trip_removes_no_extra_material() {
         let i = ((-12.0 - g.z0_mm) / g.dz_mm).round() as usize;
         let (jm, _) = (0..g.ntheta).map(|j| (j, sim.stock.row(j)[i])).fold((0, f32::MAX), |a, b| if b.1 < a.1 { b } else { a });
         let recorded = Recorded { point: Vec3::new(19.5, 0.0, -12.0), c_deg: jm as f64 * dt };
-        let job = RepairJob {
-            start: Vec3::new(19.5, 0.0, 3.0),
-            end: Vec3::new(19.5, 0.0, -30.0),
-            lead_mm: 2.0,
-            rpm,
-            j_mm: None,
-            k_mm: None,
-            recorded,
-        };
+        let job = RepairJob { start: Vec3::new(19.5, 0.0, 3.0), end: Vec3::new(19.5, 0.0, -30.0), lead_mm: 2.0, rpm, j_mm: None, k_mm: None, recorded };
         let repair = records("gsk988t", &["8135.7=1"], &format!("M14\n{}G0 X45\nM15\nM30\n", job.programme().unwrap()));
         let before = sim.stock.outer.clone();
         let tool = Setup::default().tool(0);

@@ -63,7 +63,9 @@ fn diameter_at(sim: &ncsight::stock::measure::Simulation, z: f64) -> f64 {
 #[test]
 fn a_part_finished_under_g42_has_its_programmed_diameters() {
     let setup = Setup::from_toml(SETUP).unwrap();
-    let sim = simulate(&records(&programme(true), &setup), &setup, &SimOptions { dz_mm: Some(0.01), dtheta_deg: Some(2.0), expect: None, ..SimOptions::default() }).unwrap();
+    let sim =
+        simulate(&records(&programme(true), &setup), &setup, &SimOptions { dz_mm: Some(0.01), dtheta_deg: Some(2.0), expect: None, ..SimOptions::default() })
+            .unwrap();
     for (z, want) in [(-5.0, 24.0), (-15.0, 24.0), (-27.0, 24.0), (-33.0, 28.0), (-38.0, 28.0)] {
         let d = diameter_at(&sim, z);
         assert!((d - want).abs() <= 0.01, "Z{z}: {d:.4} mm turned, {want} programmed");
@@ -77,7 +79,9 @@ fn a_part_finished_under_g42_has_its_programmed_diameters() {
     // Without compensation the nose radius leaves material on the chamfer and the face corner,
     // and with the tip vector the straight portions are still right: the check above is not
     // empty.
-    let plain = simulate(&records(&programme(false), &setup), &setup, &SimOptions { dz_mm: Some(0.01), dtheta_deg: Some(2.0), expect: None, ..SimOptions::default() }).unwrap();
+    let plain =
+        simulate(&records(&programme(false), &setup), &setup, &SimOptions { dz_mm: Some(0.01), dtheta_deg: Some(2.0), expect: None, ..SimOptions::default() })
+            .unwrap();
     let chamfer_mid = |s: &ncsight::stock::measure::Simulation| diameter_at(s, -1.0);
     assert!((chamfer_mid(&sim) - 22.0).abs() <= 0.02, "chamfer at Z-1: {:.4}", chamfer_mid(&sim));
     assert!(chamfer_mid(&plain) - 22.0 > 0.2, "uncompensated, the nose leaves the chamfer high: {:.4}", chamfer_mid(&plain));
@@ -92,7 +96,10 @@ fn fanuc_roughs_and_finishes_along_the_compensated_shape() {
     let recs = records_on("fanuc0t", text, &setup);
     // The roughing's last pass along the contour leaves the allowance on the compensated shape:
     // X24.4 on the X24 portion, the tip on it as on the finishing pass.
-    assert!(recs.iter().any(|r| r.span.line == 6 && matches!(r.op, ncsight::Op::Feed { to, .. } if (to.x * 2.0 - 24.4).abs() < 1e-9 && (to.z + 29.9).abs() < 1e-9)), "no roughing pass along X24.4 to Z-29.9");
+    assert!(
+        recs.iter().any(|r| r.span.line == 6 && matches!(r.op, ncsight::Op::Feed { to, .. } if (to.x * 2.0 - 24.4).abs() < 1e-9 && (to.z + 29.9).abs() < 1e-9)),
+        "no roughing pass along X24.4 to Z-29.9"
+    );
     let sim = simulate(&recs, &setup, &SimOptions { dz_mm: Some(0.01), dtheta_deg: Some(2.0), expect: None, ..SimOptions::default() }).unwrap();
     for (z, want) in [(-5.0, 24.0), (-15.0, 24.0), (-27.0, 24.0), (-33.0, 28.0), (-38.0, 28.0), (-1.0, 22.0)] {
         let d = diameter_at(&sim, z);

@@ -66,7 +66,12 @@ fn a_cut_with_the_spindle_stopped_is_found() {
 fn material_only_decreases_and_a_move_cut_twice_cuts_once() {
     let recs = records(PROGRAMME);
     let once = simulate_mill(&recs, &setup(), Some(0.2), None).unwrap();
-    let twice: Vec<Record> = recs.iter().flat_map(|r| if matches!(r.op, ncsight::motion::Op::Feed { .. } | ncsight::motion::Op::Arc { .. }) { vec![r.clone(), r.clone()] } else { vec![r.clone()] }).collect();
+    let twice: Vec<Record> = recs
+        .iter()
+        .flat_map(
+            |r| if matches!(r.op, ncsight::motion::Op::Feed { .. } | ncsight::motion::Op::Arc { .. }) { vec![r.clone(), r.clone()] } else { vec![r.clone()] },
+        )
+        .collect();
     let twice = simulate_mill(&twice, &setup(), Some(0.2), None).unwrap();
     assert_eq!(once.stock.top, twice.stock.top);
     assert!(once.stock.top.iter().all(|z| *z <= 0.0));
@@ -78,7 +83,12 @@ fn material_only_decreases_and_a_move_cut_twice_cuts_once() {
 /// reaches Z-4 (line 19: its face at Z-0.5, the block's top at Z0 within 15 mm).
 #[test]
 fn the_tools_shape_forbids_plunges_deep_cuts_and_holder_contact() {
-    let tool = |extra: &str| Setup::from_toml(&format!("[block]\nmin_mm = [0.0, 0.0, -20.0]\nmax_mm = [90.0, 60.0, 0.0]\n[[tool]]\nnumber = 1\nkind = \"mill\"\ndiameter_mm = 6.0\n{extra}")).unwrap();
+    let tool = |extra: &str| {
+        Setup::from_toml(&format!(
+            "[block]\nmin_mm = [0.0, 0.0, -20.0]\nmax_mm = [90.0, 60.0, 0.0]\n[[tool]]\nnumber = 1\nkind = \"mill\"\ndiameter_mm = 6.0\n{extra}"
+        ))
+        .unwrap()
+    };
     let first = |s: &Setup, kind: &str| {
         let sim = simulate_mill(&records(PROGRAMME), s, Some(0.1), None).unwrap();
         sim.findings.iter().find(|f| f.kind == kind).map(|f| (f.line, f.tool, f.message.clone()))
@@ -106,19 +116,30 @@ fn the_tools_shape_forbids_plunges_deep_cuts_and_holder_contact() {
 #[test]
 fn a_contour_climb_or_conventional_leaves_its_walls_where_drawn() {
     let setup = Setup::from_toml("[block]\nmin_mm = [0.0, 0.0, -10.0]\nmax_mm = [60.0, 40.0, 0.0]\n[[tool]]\nnumber = 1\nkind = \"mill\"\ndiameter_mm = 10.0\n[[offset]]\nnumber = 1\nradius_mm = 5.0\n").unwrap();
-    let climb = "G21 G17 G90 G54\nT1 M06\nS3000 M03\nG00 X5. Y5. Z5.\nG01 Z-5. F200.\nG41 D1 G01 X15. Y10.\nY30.\nX45.\nY10.\nX15.\nG40 G01 X5. Y5.\nG00 Z5.\nM30\n";
-    let conventional = "G21 G17 G90 G54\nT1 M06\nS3000 M03\nG00 X5. Y5. Z5.\nG01 Z-5. F200.\nG42 D1 G01 X15. Y10.\nX45.\nY30.\nX15.\nY10.\nG40 G01 X5. Y5.\nG00 Z5.\nM30\n";
+    let climb =
+        "G21 G17 G90 G54\nT1 M06\nS3000 M03\nG00 X5. Y5. Z5.\nG01 Z-5. F200.\nG41 D1 G01 X15. Y10.\nY30.\nX45.\nY10.\nX15.\nG40 G01 X5. Y5.\nG00 Z5.\nM30\n";
+    let conventional =
+        "G21 G17 G90 G54\nT1 M06\nS3000 M03\nG00 X5. Y5. Z5.\nG01 Z-5. F200.\nG42 D1 G01 X15. Y10.\nX45.\nY30.\nX15.\nY10.\nG40 G01 X5. Y5.\nG00 Z5.\nM30\n";
     for (name, text) in [("climb", climb), ("conventional", conventional)] {
-        let (recs, diags) = common::run_setup("fanuc0m", "[block]\nmin_mm = [0.0, 0.0, -10.0]\nmax_mm = [60.0, 40.0, 0.0]\n[[offset]]\nnumber = 1\nradius_mm = 5.0\n", text, false);
+        let (recs, diags) = common::run_setup(
+            "fanuc0m",
+            "[block]\nmin_mm = [0.0, 0.0, -10.0]\nmax_mm = [60.0, 40.0, 0.0]\n[[offset]]\nnumber = 1\nradius_mm = 5.0\n",
+            text,
+            false,
+        );
         assert!(diags.iter().all(|d| !d.is_alarm()), "{name}: {diags:?}");
         let sim = simulate_mill(&recs, &setup, Some(0.1), None).unwrap();
         assert!(sim.findings.is_empty(), "{name}: {:?}", sim.findings);
         let s = &sim.stock;
         let top = |x: f64, y: f64| s.top[((y / 0.1) as usize) * s.nx + (x / 0.1) as usize] as f64;
         // Across the middle row and column: the walls within a cell of where they are drawn.
-        for (inside, outside) in [((15.05, 20.0), (14.95, 20.0)), ((44.95, 20.0), (45.05, 20.0)), ((30.0, 10.05), (30.0, 9.95)), ((30.0, 29.95), (30.0, 30.05))] {
+        for (inside, outside) in [((15.05, 20.0), (14.95, 20.0)), ((44.95, 20.0), (45.05, 20.0)), ((30.0, 10.05), (30.0, 9.95)), ((30.0, 29.95), (30.0, 30.05))]
+        {
             let (a, b) = (top(inside.0, inside.1), top(outside.0, outside.1));
-            let (c, d) = (top(inside.0 + (inside.0 - outside.0), inside.1 + (inside.1 - outside.1)), top(outside.0 - (inside.0 - outside.0), outside.1 - (inside.1 - outside.1)));
+            let (c, d) = (
+                top(inside.0 + (inside.0 - outside.0), inside.1 + (inside.1 - outside.1)),
+                top(outside.0 - (inside.0 - outside.0), outside.1 - (inside.1 - outside.1)),
+            );
             assert!(a == 0.0 && c == 0.0, "{name}: the boss stands at {inside:?}: {a} {c}");
             assert!(b == -5.0 && d == -5.0, "{name}: the floor beside it at {outside:?}: {b} {d}");
         }
@@ -130,7 +151,7 @@ fn a_contour_climb_or_conventional_leaves_its_walls_where_drawn() {
 
 mod property {
     use super::*;
-    use ncsight::motion::{Op, Plane, ArcDir};
+    use ncsight::motion::{ArcDir, Op, Plane};
     use ncsight::source::Span;
     use ncsight::Vec3;
     use proptest::prelude::*;
@@ -158,7 +179,14 @@ mod property {
                     if arc {
                         // A half circle from `from` to the point opposite it about the middle.
                         let center = Vec3::new((ax + bx) / 2.0, (ay + by) / 2.0, az);
-                        Op::Arc { from, to: Vec3::new(2.0 * center.x - ax, 2.0 * center.y - ay, az), center, plane: Plane::XY, dir: ArcDir::Ccw, feed_mm_min: 300.0 }
+                        Op::Arc {
+                            from,
+                            to: Vec3::new(2.0 * center.x - ax, 2.0 * center.y - ay, az),
+                            center,
+                            plane: Plane::XY,
+                            dir: ArcDir::Ccw,
+                            feed_mm_min: 300.0,
+                        }
                     } else {
                         Op::Feed { from, to, feed_mm_min: 300.0 }
                     }

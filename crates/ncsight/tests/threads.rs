@@ -31,10 +31,7 @@ impl Run {
 
     /// End points in the display convention (X as a diameter), rounded to 1e-6.
     fn ends(&self) -> Vec<(&'static str, f64, f64)> {
-        self.records
-            .iter()
-            .filter_map(|r| r.op.end_point().map(|p| (r.op.kind(), round(2.0 * p.x), round(p.z))))
-            .collect()
+        self.records.iter().filter_map(|r| r.op.end_point().map(|p| (r.op.kind(), round(2.0 * p.x), round(p.z)))).collect()
     }
 
     fn threads(&self) -> Vec<(Vec3, Vec3, f64, f64, f64, LongAxis)> {
@@ -319,8 +316,8 @@ fn seed_001_g32_1_note_1_j_k_only_on_the_last_block() {
     let t = r.threads();
     assert_eq!(t.len(), 3);
     assert!((t[1].3 - 0.0).abs() < 1e-9); // 10 mm at lead 2: 5 revolutions
-    // A first block with J/K is not continuous: it pulls out, and the next block starts anew
-    // at its own Q (J/K stay modal, so it pulls out too).
+                                          // A first block with J/K is not continuous: it pulls out, and the next block starts anew
+                                          // at its own Q (J/K stay modal, so it pulls out too).
     let r = g321("G32.1 W-10 F2 S500 J1 K1\nG32.1 W-10 Q90000").ok();
     let t = r.threads();
     assert_eq!(t.len(), 4);

@@ -49,7 +49,8 @@ pub fn read_back(rs274: &str, tools: Option<&Path>, ngc: &Path) -> (String, Stri
         cmd.arg("-t").arg(t);
     }
     let out = cmd.arg("-g").arg(ngc).output().unwrap();
-    let calls: String = String::from_utf8_lossy(&out.stdout).lines().map(|l| l.trim_start().split_once("N..... ").map_or(l, |(_, r)| r)).collect::<Vec<_>>().join("\n");
+    let calls: String =
+        String::from_utf8_lossy(&out.stdout).lines().map(|l| l.trim_start().split_once("N..... ").map_or(l, |(_, r)| r)).collect::<Vec<_>>().join("\n");
     let stderr = String::from_utf8_lossy(&out.stderr).trim().to_string();
     assert!(out.status.success(), "{}: rs274 refused the expansion: {stderr}\n{calls}", ngc.display());
     (calls, stderr)
@@ -82,7 +83,10 @@ pub fn linuxcnc_round_trip(programmes: &[Programme]) -> (usize, usize) {
         }
         assert!(!err.contains("NCS-E76"), "{name}: {err}");
         assert!(text.starts_with("(expanded by ncsight from"), "{name}: {text}");
-        assert!(text.lines().filter(|l| !l.starts_with('(')).all(|l| !l.contains("G76") && !l.contains("G81") && !l.contains("G71")), "{name}: a cycle left in\n{text}");
+        assert!(
+            text.lines().filter(|l| !l.starts_with('(')).all(|l| !l.contains("G76") && !l.contains("G81") && !l.contains("G71")),
+            "{name}: a cycle left in\n{text}"
+        );
         let Some(rs274) = rs274 else { continue };
         let ngc = tmp.join(format!("{name}.ngc"));
         std::fs::write(&ngc, &text).unwrap();
@@ -127,8 +131,8 @@ pub fn rigid_taps_as_feeds(text: &str) -> String {
 
 /// grbl 1.1's G and M codes and words (its documentation's list of supported commands).
 pub const GRBL_G: &[&str] = &[
-    "0", "1", "2", "3", "4", "10", "17", "18", "19", "20", "21", "28", "28.1", "30", "30.1", "38.2", "38.3", "38.4", "38.5", "40", "43.1", "49", "53", "54", "55",
-    "56", "57", "58", "59", "61", "80", "90", "91", "91.1", "92", "92.1", "93", "94",
+    "0", "1", "2", "3", "4", "10", "17", "18", "19", "20", "21", "28", "28.1", "30", "30.1", "38.2", "38.3", "38.4", "38.5", "40", "43.1", "49", "53", "54",
+    "55", "56", "57", "58", "59", "61", "80", "90", "91", "91.1", "92", "92.1", "93", "94",
 ];
 pub const GRBL_M: &[&str] = &["0", "1", "2", "3", "4", "5", "7", "8", "9", "30", "56"];
 pub const GRBL_WORDS: &str = "FIJKLNPRSTXYZGM";

@@ -64,12 +64,14 @@ fn file_label(path: &str) -> String {
 /// Text safe inside a comment: brackets for parentheses (a `(` nests, a `)` ends the comment on
 /// both targets), spaces for control characters.
 fn comment_text(text: &str) -> String {
-    text.chars().map(|c| match c {
-        '(' => '[',
-        ')' => ']',
-        c if c.is_control() => ' ',
-        c => c,
-    }).collect()
+    text.chars()
+        .map(|c| match c {
+            '(' => '[',
+            ')' => ']',
+            c if c.is_control() => ' ',
+            c => c,
+        })
+        .collect()
 }
 
 fn same(a: &Vec3, b: &Vec3) -> bool {
@@ -266,7 +268,9 @@ impl Expand {
         let Some((held, _)) = &self.held else { return false };
         match (&held.op, &r.op) {
             (_, Op::Spindle { oriented: false, .. } | Op::Dwell { .. }) => true,
-            (Op::Thread { from: f1, to: t1, rpm: r1, .. }, Op::Thread { from: f2, to: t2, rpm: r2, .. }) => same(t1, f2) && same(t2, f1) && r1.signum() == -r2.signum() && *r1 != 0.0,
+            (Op::Thread { from: f1, to: t1, rpm: r1, .. }, Op::Thread { from: f2, to: t2, rpm: r2, .. }) => {
+                same(t1, f2) && same(t2, f1) && r1.signum() == -r2.signum() && *r1 != 0.0
+            }
             _ => false,
         }
     }
@@ -340,7 +344,13 @@ impl Expand {
                 return Err(self.refuse(r.span, why));
             }
             Op::Rotary { axis, .. } => {
-                return Err(self.refuse(r.span, &format!("a move of the axis {}: expand writes the X, Y and Z moves only (a block that moved both would come out as two moves)", *axis as char)));
+                return Err(self.refuse(
+                    r.span,
+                    &format!(
+                        "a move of the axis {}: expand writes the X, Y and Z moves only (a block that moved both would come out as two moves)",
+                        *axis as char
+                    ),
+                ));
             }
             Op::Dwell { .. } | Op::Spindle { oriented: false, .. } if self.held.is_some() => {
                 if let Some((_, after)) = self.held.as_mut() {

@@ -200,7 +200,26 @@ mod tests {
             state ^= state << 17;
             state
         };
-        let mut values = vec![0.0, -0.0, 0.5, 1.5, 2.5, -2.5, 0.00005, 0.03125, -0.03125, 1e-300, 5e-324, 999_999_999.99999, 1e9, -1e9, 1e20, f64::NAN, f64::INFINITY, f64::NEG_INFINITY];
+        let mut values = vec![
+            0.0,
+            -0.0,
+            0.5,
+            1.5,
+            2.5,
+            -2.5,
+            0.00005,
+            0.03125,
+            -0.03125,
+            1e-300,
+            5e-324,
+            999_999_999.99999,
+            1e9,
+            -1e9,
+            1e20,
+            f64::NAN,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+        ];
         for _ in 0..20_000 {
             let r = next();
             values.push(f64::from_bits(r));

@@ -115,12 +115,23 @@ fn scene_of_at_most(job: &Job, text: &[u8], library: Vec<(String, &[u8])>, max_r
                     Op::Stop { reason } => format!("\"stop\",\"reason\":\"{}\"", reason.as_str()),
                     Op::Dwell { seconds } => format!("\"dwell\",\"s\":{}", num(*seconds, 3)),
                     // A linear extra axis (a sub-spindle's B) is timed as a turn, its value in mm.
-                    Op::Rotary { axis, to_deg, linear, .. } => format!("\"rotary\",\"axis\":\"{}\",\"{}\":{},\"s\":{}", *axis as char, if *linear { "mm" } else { "deg" }, num(*to_deg, 3), num(took_s, 4)),
+                    Op::Rotary { axis, to_deg, linear, .. } => format!(
+                        "\"rotary\",\"axis\":\"{}\",\"{}\":{},\"s\":{}",
+                        *axis as char,
+                        if *linear { "mm" } else { "deg" },
+                        num(*to_deg, 3),
+                        num(took_s, 4)
+                    ),
                     Op::End { code } => format!("\"end\",\"code\":{code}"),
                     _ => format!("\"{}\"", r.op.kind()),
                 };
                 // A block end here (a tapping hole's spindle reversal, a dwell) is a single-block stop too.
-                others.push(format!("{{\"k\":{what},\"l\":{line},\"t\":{},\"seg\":{}{}}}", num(r.t_s, 4), c.kind.len(), if r.block_end { ",\"be\":1" } else { "" }));
+                others.push(format!(
+                    "{{\"k\":{what},\"l\":{line},\"t\":{},\"seg\":{}{}}}",
+                    num(r.t_s, 4),
+                    c.kind.len(),
+                    if r.block_end { ",\"be\":1" } else { "" }
+                ));
                 prev_thread_end = None;
                 // A hole may end on its spindle's restart (G76, G86, G87) or a dwell.
                 if r.block_end {
@@ -282,7 +293,15 @@ fn params_json(params: &ncsight::profile::Params) -> String {
         .all_params()
         .map(|d| {
             let zh = ncsight::profile::meaning_zh(d.meaning).unwrap_or(d.meaning);
-            format!("[{},{},{},{},{},{}]", json_str(&d.key.to_string()), num(params.get(d.key), 4), json_str(d.unit), json_str(d.meaning), json_str(d.source), json_str(zh))
+            format!(
+                "[{},{},{},{},{},{}]",
+                json_str(&d.key.to_string()),
+                num(params.get(d.key), 4),
+                json_str(d.unit),
+                json_str(d.meaning),
+                json_str(d.source),
+                json_str(zh)
+            )
         })
         .collect();
     rows.join(",")
@@ -387,6 +406,9 @@ mod tests {
         let text = std::fs::read(concat!(env!("CARGO_MANIFEST_DIR"), "/../../tests/golden/fanuc0m_cycles_g17/input.nc")).unwrap();
         let h = head(&scene(&Job::on("fanuc0m"), &text, Vec::new()).unwrap());
         // X10 ... X120: twelve holes, one kind each.
-        assert!(h.contains("\"holes\":12,\"hole_kinds\":[\"G81\",\"G82\",\"G73\",\"G83\",\"G76\",\"G85\",\"G86\",\"G87\",\"G88\",\"G89\",\"G74\",\"G84\"]"), "{h}");
+        assert!(
+            h.contains("\"holes\":12,\"hole_kinds\":[\"G81\",\"G82\",\"G73\",\"G83\",\"G76\",\"G85\",\"G86\",\"G87\",\"G88\",\"G89\",\"G74\",\"G84\"]"),
+            "{h}"
+        );
     }
 }

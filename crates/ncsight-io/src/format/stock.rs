@@ -54,7 +54,14 @@ pub fn finding_json(f: &Finding) -> String {
 /// Run `text` as `job` says and cut its stock (the job's setup, with `stock` as `--stock` takes
 /// it when not empty), the records that have ended by `until_s` (all when None), on the view's
 /// grid or one of `resolution_mm` cells.
-pub fn stock_view(job: &Job, text: &[u8], library: Vec<(String, &[u8])>, stock: &str, until_s: Option<f64>, resolution_mm: Option<f64>) -> Result<Vec<u8>, JobError> {
+pub fn stock_view(
+    job: &Job,
+    text: &[u8],
+    library: Vec<(String, &[u8])>,
+    stock: &str,
+    until_s: Option<f64>,
+    resolution_mm: Option<f64>,
+) -> Result<Vec<u8>, JobError> {
     let profile = job.profile()?;
     let mut setup = job.setup.clone().unwrap_or_default();
     if !stock.trim().is_empty() {
@@ -73,7 +80,8 @@ pub fn stock_view(job: &Job, text: &[u8], library: Vec<(String, &[u8])>, stock: 
         }
     }
     let until = until_s.map_or("null".to_string(), |t| num(t, 4));
-    let (head, arrays) = if profile.is_lathe() { lathe_view(&records, &setup, until_s, resolution_mm)? } else { mill_view(&records, &setup, until_s, resolution_mm)? };
+    let (head, arrays) =
+        if profile.is_lathe() { lathe_view(&records, &setup, until_s, resolution_mm)? } else { mill_view(&records, &setup, until_s, resolution_mm)? };
     let head = format!("{{{head},\"until_s\":{until},\"cut\":{cut}}}");
     let mut out = Vec::with_capacity(8 + head.len() + 4 * arrays.iter().map(|a| a.len()).sum::<usize>());
     out.extend_from_slice(b"NCST");
@@ -94,7 +102,12 @@ fn findings_json(findings: &[Finding]) -> String {
 
 /// The lathe's header fields and its outer and inner radii, on a grid of at most [`VIEW_NZ`]
 /// cells along the bar (at least 0.01 mm apart) and [`VIEW_NTHETA`] around.
-fn lathe_view(records: &[Record], setup: &ncsight::setup::Setup, until_s: Option<f64>, resolution_mm: Option<f64>) -> Result<(String, Vec<Vec<f32>>), JobError> {
+fn lathe_view(
+    records: &[Record],
+    setup: &ncsight::setup::Setup,
+    until_s: Option<f64>,
+    resolution_mm: Option<f64>,
+) -> Result<(String, Vec<Vec<f32>>), JobError> {
     let length_mm = match setup.stock {
         Some(b) => b.length_mm,
         // The programme's extent along Z, which a guessed stock spans (and 5 mm more).

@@ -17,7 +17,11 @@ pub struct Text {
 }
 
 fn dir_name(dir: ArcDir) -> &'static str {
-    if dir == ArcDir::Cw { "cw" } else { "ccw" }
+    if dir == ArcDir::Cw {
+        "cw"
+    } else {
+        "ccw"
+    }
 }
 
 impl Text {

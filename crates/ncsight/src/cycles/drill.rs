@@ -240,7 +240,11 @@ fn from_start(h: &Hole, p: &impl Fn(f64) -> Local, s: &mut dyn FnMut(Step)) {
     // d short of `depth`, clamped at the start (J0 step 3).
     let back = |depth: f64| {
         let t = depth - down * h.d;
-        if (t - start) * down < 0.0 { start } else { t }
+        if (t - start) * down < 0.0 {
+            start
+        } else {
+            t
+        }
     };
     if h.q <= 0.0 || (!h.deep && h.d <= 0.0) {
         s(Step::Feed(p(h.bottom), h.feed));
@@ -316,10 +320,7 @@ mod tests {
     #[test]
     fn g83_returns_to_r_after_each_peck() {
         let s = expand(&hole(DrillKind::G83));
-        assert_eq!(
-            levels(&s),
-            vec![10.0, 2.0, 1.0, 2.0, 1.254, 0.0, 2.0, 0.254, -1.0, 2.0, -0.746, -2.0, 2.0, -1.746, -3.0, 10.0]
-        );
+        assert_eq!(levels(&s), vec![10.0, 2.0, 1.0, 2.0, 1.254, 0.0, 2.0, 0.254, -1.0, 2.0, -0.746, -2.0, 2.0, -1.746, -3.0, 10.0]);
     }
 
     #[test]

@@ -184,7 +184,15 @@ mod tests {
     fn g74_centre_hole_pecks_and_backs_off() {
         // From X0 Z1 to Z-10, peck 4, back-off 0.5: depths 4, back to 3.5, 8, back to 7.5, 11
         // (the bottom), then out to Z1.
-        let c = PeckCycle { kind: PeckKind::Face, start: Vec3::new(0.0, 0.0, 1.0), end: Vec3::new(0.0, 0.0, -10.0), back_off_mm: 0.5, peck_mm: 4.0, step_mm: 0.0, relief_mm: 0.0 };
+        let c = PeckCycle {
+            kind: PeckKind::Face,
+            start: Vec3::new(0.0, 0.0, 1.0),
+            end: Vec3::new(0.0, 0.0, -10.0),
+            back_off_mm: 0.5,
+            peck_mm: 4.0,
+            step_mm: 0.0,
+            relief_mm: 0.0,
+        };
         let got = pts(&expand(&c, 100).unwrap());
         let want = [('f', 0.0, -3.0), ('r', 0.0, -2.5), ('f', 0.0, -7.0), ('r', 0.0, -6.5), ('f', 0.0, -10.0), ('r', 0.0, 1.0)];
         assert_eq!(got.len(), want.len(), "{got:?}");
@@ -196,7 +204,15 @@ mod tests {
     #[test]
     fn g75_steps_across_and_stops_at_the_end() {
         // Grooves from Z0 to Z-5 with step 2: at Z0, -2, -4, -5; relief 0.2 toward the start.
-        let c = PeckCycle { kind: PeckKind::Groove, start: Vec3::new(20.0, 0.0, 0.0), end: Vec3::new(18.0, 0.0, -5.0), back_off_mm: 0.0, peck_mm: 5.0, step_mm: 2.0, relief_mm: 0.2 };
+        let c = PeckCycle {
+            kind: PeckKind::Groove,
+            start: Vec3::new(20.0, 0.0, 0.0),
+            end: Vec3::new(18.0, 0.0, -5.0),
+            back_off_mm: 0.0,
+            peck_mm: 5.0,
+            step_mm: 2.0,
+            relief_mm: 0.2,
+        };
         let m = expand(&c, 100).unwrap();
         let bottoms: Vec<f64> = m.iter().filter_map(|m| if let Move::Feed(v) = m { Some(v.z) } else { None }).collect();
         assert_eq!(bottoms, vec![0.0, -2.0, -4.0, -5.0]);
@@ -207,7 +223,15 @@ mod tests {
 
     #[test]
     fn missing_peck_or_step_and_the_limit() {
-        let mut c = PeckCycle { kind: PeckKind::Face, start: Vec3::new(0.0, 0.0, 1.0), end: Vec3::new(5.0, 0.0, -10.0), back_off_mm: 0.0, peck_mm: 1.0, step_mm: 0.0, relief_mm: 0.0 };
+        let mut c = PeckCycle {
+            kind: PeckKind::Face,
+            start: Vec3::new(0.0, 0.0, 1.0),
+            end: Vec3::new(5.0, 0.0, -10.0),
+            back_off_mm: 0.0,
+            peck_mm: 1.0,
+            step_mm: 0.0,
+            relief_mm: 0.0,
+        };
         assert_eq!(expand(&c, 100), Err(PeckError::NoStep));
         c.step_mm = 1.0;
         c.peck_mm = 0.0;
@@ -215,7 +239,15 @@ mod tests {
         c.peck_mm = 0.001;
         assert_eq!(expand(&c, 1000), Err(PeckError::TooMany));
         // No depth: the grooves alone are counted, before anything is made or cast.
-        let flat = PeckCycle { kind: PeckKind::Groove, start: Vec3::new(20.0, 0.0, 0.0), end: Vec3::new(20.0, 0.0, -100.0), back_off_mm: 0.0, peck_mm: 1.0, step_mm: 1e-9, relief_mm: 0.0 };
+        let flat = PeckCycle {
+            kind: PeckKind::Groove,
+            start: Vec3::new(20.0, 0.0, 0.0),
+            end: Vec3::new(20.0, 0.0, -100.0),
+            back_off_mm: 0.0,
+            peck_mm: 1.0,
+            step_mm: 1e-9,
+            relief_mm: 0.0,
+        };
         assert_eq!(lay_out(&flat, crate::cycles::MOST_MOVES), Err(PeckError::TooMany));
     }
 }

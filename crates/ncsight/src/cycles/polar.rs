@@ -44,7 +44,16 @@ pub fn pieces(at: &dyn Fn(f64) -> (f64, f64, f64), length_mm: f64, curvature: f6
 /// The piece from `from` (its fraction and point) to fraction `u`, halved until it is close
 /// enough (or 40 halvings, or [`MAX_PIECES`] pieces); returns the end.
 #[allow(clippy::too_many_arguments)]
-fn split(at: &dyn Fn(f64) -> (f64, f64, f64), from: (f64, (f64, f64, f64)), u: f64, angle: &mut f64, length_mm: f64, tol_mm: f64, depth: u32, out: &mut Vec<Piece>) -> (f64, (f64, f64, f64)) {
+fn split(
+    at: &dyn Fn(f64) -> (f64, f64, f64),
+    from: (f64, (f64, f64, f64)),
+    u: f64,
+    angle: &mut f64,
+    length_mm: f64,
+    tol_mm: f64,
+    depth: u32,
+    out: &mut Vec<Piece>,
+) -> (f64, (f64, f64, f64)) {
     let (u0, p0) = from;
     let p1 = at(u);
     let a1 = angle_near(p1.0, p1.1, *angle);
@@ -63,7 +72,11 @@ fn split(at: &dyn Fn(f64) -> (f64, f64, f64), from: (f64, (f64, f64, f64)), u: f
 /// within `tol_mm` of it: 1 for a line, at most [`MAX_PIECES`].
 fn chords(length_mm: f64, curvature: f64, tol_mm: f64) -> usize {
     let n = if curvature > 0.0 { (length_mm / (8.0 * tol_mm / curvature).sqrt()).ceil() } else { 1.0 };
-    if n.is_finite() { (n as usize).clamp(1, MAX_PIECES) } else { MAX_PIECES }
+    if n.is_finite() {
+        (n as usize).clamp(1, MAX_PIECES)
+    } else {
+        MAX_PIECES
+    }
 }
 
 /// Cylindrical interpolation (G07.1): the pieces of a move on the cylinder of `radius_mm`

@@ -367,7 +367,6 @@ impl Expansion for RoughPlan {
         // 8: back to A.
         let _ = m.go(self.start, false);
     }
-
 }
 
 impl RoughPlan {
@@ -576,7 +575,11 @@ impl<'a> Outermost<'a> {
 
     /// The one of `a` and `b` further out (`out` gives the outward sign); `a` on a tie.
     fn outer_of(out: f64, a: f64, b: f64) -> f64 {
-        if (a - b) * out >= 0.0 { a } else { b }
+        if (a - b) * out >= 0.0 {
+            a
+        } else {
+            b
+        }
     }
 
     /// The outermost level of the points with cut-axis position in `lo..=hi`, if any.
@@ -584,7 +587,11 @@ impl<'a> Outermost<'a> {
         let (i0, i1) = if self.dir_c == 0.0 {
             // All at one cut-axis position.
             let inside = self.pts.first().is_some_and(|p| p.axis(self.c) >= lo && p.axis(self.c) <= hi);
-            if inside { (0, self.pts.len()) } else { (0, 0) }
+            if inside {
+                (0, self.pts.len())
+            } else {
+                (0, 0)
+            }
         } else {
             let key = |p: &Vec3| p.axis(self.c) * self.dir_c;
             let (a, b) = if self.dir_c > 0.0 { (lo, hi) } else { (-hi, -lo) };
@@ -605,15 +612,7 @@ impl<'a> Outermost<'a> {
 /// All levels at once, in one pass over the contour: a
 /// segment's ends lie on different sides only of the levels between them, so each segment is
 /// looked at for those levels alone (and one more each side, where rounding could tip it).
-fn all_stretches(
-    pts: &[Vec3],
-    l: usize,
-    c: usize,
-    level_of: &dyn Fn(usize) -> f64,
-    count: usize,
-    dir_l: f64,
-    start_c: f64,
-) -> Vec<Vec<(f64, f64)>> {
+fn all_stretches(pts: &[Vec3], l: usize, c: usize, level_of: &dyn Fn(usize) -> f64, count: usize, dir_l: f64, start_c: f64) -> Vec<Vec<(f64, f64)>> {
     let mut crossings: Vec<Vec<u32>> = vec![Vec::new(); count];
     if count > 0 && pts.len() > 1 {
         let deeper = |p: &Vec3, k: usize| (p.axis(l) - level_of(k)) * dir_l > 0.0;
@@ -760,13 +759,26 @@ mod tests {
             feed((20.0, -10.0), (20.0, -20.0)),
             feed((20.0, -20.0), (25.0, -20.0)),
         ];
-        let r = Roughing { kind: RoughKind::Turning, start: Vec3::new(25.0, 0.0, 2.0), contour: &contour, allowance: Vec3::new(0.5, 0.0, 0.1), depth_mm: 4.0, back_off_mm: 1.0, ns_rapid: true, type_two: false, tolerance_mm: 0.001 };
+        let r = Roughing {
+            kind: RoughKind::Turning,
+            start: Vec3::new(25.0, 0.0, 2.0),
+            contour: &contour,
+            allowance: Vec3::new(0.5, 0.0, 0.1),
+            depth_mm: 4.0,
+            back_off_mm: 1.0,
+            ns_rapid: true,
+            type_two: false,
+            tolerance_mm: 0.001,
+        };
         let ops = expand(&r, 1000).unwrap().ops;
         // A' = (25.5, 2.1); levels 21.5, 17.5, 13.5 (B' is at 10.5).
-        let cuts: Vec<(f64, f64)> = ops.iter().filter_map(|o| match o {
-            Op::Feed { from, to, feed_mm_min } if *feed_mm_min == 0.0 && from.x == to.x && from.z == 2.1 => Some((to.x, to.z)),
-            _ => None,
-        }).collect();
+        let cuts: Vec<(f64, f64)> = ops
+            .iter()
+            .filter_map(|o| match o {
+                Op::Feed { from, to, feed_mm_min } if *feed_mm_min == 0.0 && from.x == to.x && from.z == 2.1 => Some((to.x, to.z)),
+                _ => None,
+            })
+            .collect();
         // Level 21.5 meets the moved contour at Z -20 + 0.1 = -19.9; 17.5 and 13.5 at -9.9.
         assert_eq!(cuts.len(), 3, "{ops:?}");
         for (got, want) in cuts.iter().zip([(21.5, -19.9), (17.5, -9.9), (13.5, -9.9)]) {
@@ -780,10 +792,7 @@ mod tests {
 
     #[test]
     fn g73_passes_close_in_evenly() {
-        let contour = [
-            Op::Rapid { from: Vec3::new(25.0, 0.0, 2.0), to: Vec3::new(10.0, 0.0, 2.0) },
-            feed((10.0, 2.0), (20.0, -10.0)),
-        ];
+        let contour = [Op::Rapid { from: Vec3::new(25.0, 0.0, 2.0), to: Vec3::new(10.0, 0.0, 2.0) }, feed((10.0, 2.0), (20.0, -10.0))];
         // Three passes, relief (3, 0, 1), allowance (0.5, 0, 0): offsets 3.5/1, 2/0.5, 0.5/0.
         let ops = pattern(Vec3::new(25.0, 0.0, 2.0), &contour, Vec3::new(0.5, 0.0, 0.0), Vec3::new(3.0, 0.0, 1.0), 3, 100_000).unwrap();
         let cut_ends: Vec<(f64, f64)> = ops.iter().filter_map(|o| if let Op::Feed { to, .. } = o { Some((to.x, to.z)) } else { None }).collect();
@@ -799,7 +808,17 @@ mod tests {
             feed((20.0, -10.0), (15.0, -15.0)),
             feed((15.0, -15.0), (25.0, -20.0)),
         ];
-        let r = Roughing { kind: RoughKind::Turning, start: Vec3::new(25.0, 0.0, 2.0), contour: &contour, allowance: Vec3::default(), depth_mm: 2.0, back_off_mm: 0.5, ns_rapid: true, type_two: false, tolerance_mm: 0.001 };
+        let r = Roughing {
+            kind: RoughKind::Turning,
+            start: Vec3::new(25.0, 0.0, 2.0),
+            contour: &contour,
+            allowance: Vec3::default(),
+            depth_mm: 2.0,
+            back_off_mm: 0.5,
+            ns_rapid: true,
+            type_two: false,
+            tolerance_mm: 0.001,
+        };
         assert_eq!(expand(&r, 1000), Err(RoughError::NotMonotonic(0)));
     }
 
@@ -814,7 +833,17 @@ mod tests {
             feed((20.0, -10.0), (15.0, -15.0)),
             feed((15.0, -15.0), (25.0, -20.0)),
         ];
-        let r = Roughing { kind: RoughKind::Turning, start: Vec3::new(25.0, 0.0, 2.0), contour: &contour, allowance: Vec3::default(), depth_mm: 2.0, back_off_mm: 0.5, ns_rapid: true, type_two: true, tolerance_mm: 0.001 };
+        let r = Roughing {
+            kind: RoughKind::Turning,
+            start: Vec3::new(25.0, 0.0, 2.0),
+            contour: &contour,
+            allowance: Vec3::default(),
+            depth_mm: 2.0,
+            back_off_mm: 0.5,
+            ns_rapid: true,
+            type_two: true,
+            tolerance_mm: 0.001,
+        };
         let ops = expand(&r, 1000).unwrap().ops;
         let cuts: Vec<(f64, f64, f64)> = ops
             .iter()
@@ -837,12 +866,25 @@ mod tests {
         assert!(near(pocket_levels[1], 17.0));
         // The pocket is entered over the ridge: the last level cut over the ridge top 20 is 21,
         // plus e: travel at 21.5, down at rapid to the level before (21), feed in to 19.
-        assert!(ops.windows(3).any(|w| matches!(w, [Op::Rapid { to: a, .. }, Op::Rapid { to: b, .. }, Op::Feed { to: f, .. }]
-            if near(a.x, 21.5) && near(a.z, -11.0) && near(b.x, 21.0) && near(f.x, 19.0) && near(f.z, -11.0))), "{ops:?}");
+        assert!(
+            ops.windows(3).any(|w| matches!(w, [Op::Rapid { to: a, .. }, Op::Rapid { to: b, .. }, Op::Feed { to: f, .. }]
+            if near(a.x, 21.5) && near(a.z, -11.0) && near(b.x, 21.0) && near(f.x, 19.0) && near(f.z, -11.0))),
+            "{ops:?}"
+        );
         // No move passes through the part: every point of every move is outside the contour.
         let contour_x = |z: f64| -> f64 {
-            if z >= 2.0 { return f64::NEG_INFINITY; }
-            if z >= -10.0 { 10.0 + (2.0 - z) * 10.0 / 12.0 } else if z >= -15.0 { 20.0 - (-10.0 - z) } else if z >= -20.0 { 15.0 + (-15.0 - z) * 2.0 } else { 25.0 }
+            if z >= 2.0 {
+                return f64::NEG_INFINITY;
+            }
+            if z >= -10.0 {
+                10.0 + (2.0 - z) * 10.0 / 12.0
+            } else if z >= -15.0 {
+                20.0 - (-10.0 - z)
+            } else if z >= -20.0 {
+                15.0 + (-15.0 - z) * 2.0
+            } else {
+                25.0
+            }
         };
         for o in &ops {
             if let Op::Feed { from, to, .. } | Op::Rapid { from, to } = o {
@@ -865,7 +907,17 @@ mod tests {
             z -= 2.0;
         }
         contour.push(feed((10.0, z), (30.0, z - 1.0)));
-        let r = Roughing { kind: RoughKind::Turning, start: Vec3::new(30.0, 0.0, 2.0), contour: &contour, allowance: Vec3::default(), depth_mm: 1.0, back_off_mm: 0.5, ns_rapid: true, type_two: true, tolerance_mm: 0.001 };
+        let r = Roughing {
+            kind: RoughKind::Turning,
+            start: Vec3::new(30.0, 0.0, 2.0),
+            contour: &contour,
+            allowance: Vec3::default(),
+            depth_mm: 1.0,
+            back_off_mm: 0.5,
+            ns_rapid: true,
+            type_two: true,
+            tolerance_mm: 0.001,
+        };
         assert_eq!(expand(&r, 1000), Err(RoughError::TooManyPockets));
     }
 

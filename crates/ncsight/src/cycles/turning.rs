@@ -33,10 +33,12 @@ mod tests {
     use super::*;
 
     fn ends(ops: &[Op]) -> Vec<(f64, f64, bool)> {
-        ops.iter().map(|o| {
-            let e = o.end_point().unwrap();
-            (e.x, e.z, matches!(o, Op::Feed { .. }))
-        }).collect()
+        ops.iter()
+            .map(|o| {
+                let e = o.end_point().unwrap();
+                (e.x, e.z, matches!(o, Op::Feed { .. }))
+            })
+            .collect()
     }
 
     #[test]

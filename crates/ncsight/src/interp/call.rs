@@ -56,7 +56,11 @@ pub(super) fn call(step: &Step, words: &mut Words, m: &Word) -> Result<Flow, Dia
     }
     let Some(p) = words.take(b'P') else {
         // FANUC 0 alarm 076; the GSK980TDi help text gives M98 only with P.
-        let hint = if words.has(b'Q') { "M98 Q (a sequence number of the same programme) is the FANUC 0i-F's: choose fanuc0i-tf or fanuc0i-mf" } else { "M98 P<programme number>" };
+        let hint = if words.has(b'Q') {
+            "M98 Q (a sequence number of the same programme) is the FANUC 0i-F's: choose fanuc0i-tf or fanuc0i-mf"
+        } else {
+            "M98 P<programme number>"
+        };
         return Err(step.alarm(Rule::AddressPMissing, m.span, format!("{}: the subprogramme to call is not given (P)", m.text())).with_hint(hint));
     };
     let span = m.span.to(p.span);
@@ -80,7 +84,11 @@ pub(super) fn call(step: &Step, words: &mut Words, m: &Word) -> Result<Flow, Dia
         Some(l) => {
             let name = step.profile.name;
             return Err(step
-                .alarm(Rule::ImproperAddress, l.span, format!("{}: M98 on {name} takes no L: the repeat count is written in P, before the four digits of the programme number", l.text()))
+                .alarm(
+                    Rule::ImproperAddress,
+                    l.span,
+                    format!("{}: M98 on {name} takes no L: the repeat count is written in P, before the four digits of the programme number", l.text()),
+                )
                 .with_hint(format!("write M98 P{}{:04} for {} calls of O{:04}", l.value, p.value, l.value, p.value)));
         }
         None => {

@@ -25,13 +25,17 @@ pub(super) fn rule_of(e: CompError) -> Rule {
 
 fn alarm_of(step: &Step, e: CompError, span: Span) -> Diagnostic {
     match e {
-        CompError::NoIntersection => step.alarm(Rule::CompNoSolution, span, "radius compensation: the offset paths of this inner corner do not meet (the tool does not fit)"),
+        CompError::NoIntersection => {
+            step.alarm(Rule::CompNoSolution, span, "radius compensation: the offset paths of this inner corner do not meet (the tool does not fit)")
+        }
         CompError::Interference => step.alarm(
             Rule::CompInterference,
             span,
             "radius compensation: the compensated move would run against the programmed one (the tool is larger than this step: it would cut into the part)",
         ),
-        CompError::ArcTooSmall => step.alarm(Rule::CompInterference, span, "radius compensation: the arc's radius is smaller than the tool's on its inner side"),
+        CompError::ArcTooSmall => {
+            step.alarm(Rule::CompInterference, span, "radius compensation: the arc's radius is smaller than the tool's on its inner side")
+        }
     }
 }
 
@@ -87,7 +91,10 @@ pub(super) fn command(step: &mut Step, side: i8, d: Option<u32>, span: Span, arc
     }
     if c.side != side && radius == 0.0 {
         let whose = if lathe { format!("the T offset in force ({number})") } else { format!("D{number}") };
-        let msg = format!("G4{}: the radius of {whose} is 0 (no setup, or radius_mm 0 in its [[offset]]): the programmed path is the tool's", if side > 0 { 1 } else { 2 });
+        let msg = format!(
+            "G4{}: the radius of {whose} is 0 (no setup, or radius_mm 0 in its [[offset]]): the programmed path is the tool's",
+            if side > 0 { 1 } else { 2 }
+        );
         step.warn(Rule::CompRadiusZero, span, msg);
     }
     let st = &mut step.st.comp;
@@ -153,9 +160,7 @@ fn plane_move(step: &mut Step, span: Span, n: Option<u32>, op: Op, seg: Seg) {
         return start_up(step, span, n, op, seg, start3);
     }
     let held = step.queue[0].clone();
-    let Some(hseg) = Seg::of(&held.op, plane) else {
-        unreachable!("the queue's first record is a move in the plane")
-    };
+    let Some(hseg) = Seg::of(&held.op, plane) else { unreachable!("the queue's first record is a move in the plane") };
     if outer_corner_arc(step, span, n, op, &held, &hseg, &seg) {
         return;
     }
@@ -227,7 +232,11 @@ fn outer_corner_arc(step: &mut Step, span: Span, n: Option<u32>, op: Op, held: &
         let p = hseg.to();
         let turn = hseg.tangent(true).cross(seg.tangent(false));
         if turn * side > 1e-12 {
-            step.warn(Rule::CornerArcOvercut, span, "G39 at an inner corner: the FANUC manuals say the cutter overcuts here; ncsight makes the corner as without G39");
+            step.warn(
+                Rule::CornerArcOvercut,
+                span,
+                "G39 at an inner corner: the FANUC manuals say the cutter overcuts here; ncsight makes the corner as without G39",
+            );
         }
         if turn * side < -1e-12 {
             let (e, s) = (p.plus(comp::vector(hseg, true, side, r)), p.plus(comp::vector(seg, false, side, r)));
@@ -256,7 +265,13 @@ fn inside_corner_override(step: &Step, op: Op, held: &Record, hseg: &Seg, seg: &
     // G62: an inner corner no wider than the parameter's angle slows the feed about it (FANUC
     // 16i manual, inside-corner override: not after a start-up, not for rapids).
     match step.profile.frame.corner_override {
-        Some(keys) if step.st.comp.corner_override && !step.st.comp.held_startup && r > 0.0 && !matches!(op, Op::Rapid { .. }) && !matches!(held.op, Op::Rapid { .. }) => {
+        Some(keys)
+            if step.st.comp.corner_override
+                && !step.st.comp.held_startup
+                && r > 0.0
+                && !matches!(op, Op::Rapid { .. })
+                && !matches!(held.op, Op::Rapid { .. }) =>
+        {
             let (d1, d2) = (hseg.tangent(true), seg.tangent(false));
             let inner = d1.cross(d2) * side > 1e-12;
             let work_angle_deg = 180.0 - d1.dot(d2).clamp(-1.0, 1.0).acos().to_degrees();
@@ -306,7 +321,15 @@ fn slowed(op: Op, start_mm: f64, end_mm: f64, factor: f64) -> Vec<Op> {
     let mut b = (1.0 - end_mm / length).max(a);
     // Break points within a micrometre of another are one (no piece shorter than that: an
     // arc from a point to itself would be a whole circle).
-    let snap = |u: f64| if u * length < 1e-6 { 0.0 } else if (1.0 - u) * length < 1e-6 { 1.0 } else { u };
+    let snap = |u: f64| {
+        if u * length < 1e-6 {
+            0.0
+        } else if (1.0 - u) * length < 1e-6 {
+            1.0
+        } else {
+            u
+        }
+    };
     a = snap(a);
     b = snap(b).max(a);
     if (b - a) * length < 1e-6 {
@@ -320,7 +343,9 @@ fn slowed(op: Op, start_mm: f64, end_mm: f64, factor: f64) -> Vec<Op> {
         let (p, q) = (if u0 <= 0.0 { from } else { point(u0) }, if u1 >= 1.0 { to } else { point(u1) });
         match op {
             Op::Feed { feed_mm_min, .. } => Op::Feed { from: p, to: q, feed_mm_min: if slow { feed_mm_min * factor } else { feed_mm_min } },
-            Op::Arc { center, plane, dir, feed_mm_min, .. } => Op::Arc { from: p, to: q, center, plane, dir, feed_mm_min: if slow { feed_mm_min * factor } else { feed_mm_min } },
+            Op::Arc { center, plane, dir, feed_mm_min, .. } => {
+                Op::Arc { from: p, to: q, center, plane, dir, feed_mm_min: if slow { feed_mm_min * factor } else { feed_mm_min } }
+            }
             other => other,
         }
     };
@@ -366,9 +391,12 @@ fn make_held(step: &mut Step, end: P2, slow_end_mm: f64) -> Result<Vec3, CompErr
             // that the programmed path keeps F, down to parameter 1710 per cent at the least (the
             // FANUC 0i-M and 16i manuals, internal circular cutting feedrate change: in cutter
             // compensation whether G62 is on or not).
-            let (programmed, centre_path) = (comp::local(&from, plane).dist(comp::local(&center, plane)), comp::local(&start, plane).dist(comp::local(&center, plane)));
+            let (programmed, centre_path) =
+                (comp::local(&from, plane).dist(comp::local(&center, plane)), comp::local(&start, plane).dist(comp::local(&center, plane)));
             let feed_mm_min = match step.profile.frame.corner_override {
-                Some(keys) if centre_path < programmed - 1e-9 && programmed > 0.0 => feed_mm_min * (centre_path / programmed).max(step.params.get(keys.arc_min_percent) / 100.0),
+                Some(keys) if centre_path < programmed - 1e-9 && programmed > 0.0 => {
+                    feed_mm_min * (centre_path / programmed).max(step.params.get(keys.arc_min_percent) / 100.0)
+                }
                 _ => feed_mm_min,
             };
             Op::Arc { from: start + tip, to: end3 + tip, center: center + tip, plane, dir, feed_mm_min }
@@ -494,7 +522,11 @@ fn directed_corner_arc(step: &mut Step, span: Span, d: P2, corner: Vec3) -> Resu
     if step.queue.is_empty() && step.st.comp.actual.is_none() {
         // No offset vector yet (G41/G42 without a move, or the path started anew): an arc in
         // the start-up is FANUC alarm 034.
-        return Err(step.alarm(Rule::CompStartupArc, span, "G39 with a direction: no compensated move comes before it to turn from (an arc may not start compensation)"));
+        return Err(step.alarm(
+            Rule::CompStartupArc,
+            span,
+            "G39 with a direction: no compensated move comes before it to turn from (an arc may not start compensation)",
+        ));
     }
     let feed = step.cutting_feed(super::What::from("G39"), &|_| corner)?;
     // The held move ends at right angles to itself at the corner (its old vector).
@@ -519,7 +551,11 @@ fn directed_corner_arc(step: &mut Step, span: Span, d: P2, corner: Vec3) -> Resu
     if from.dist(&to) > 1e-9 {
         // G41 turns clockwise, G42 counter-clockwise (FANUC 16-MC manual).
         let dir = if side > 0.0 { ArcDir::Cw } else { ArcDir::Ccw };
-        step.push_record(span, step.n, Op::Arc { from: from + tip, to: to + tip, center: comp::with_local(&from, p, plane) + tip, plane, dir, feed_mm_min: feed });
+        step.push_record(
+            span,
+            step.n,
+            Op::Arc { from: from + tip, to: to + tip, center: comp::with_local(&from, p, plane) + tip, plane, dir, feed_mm_min: feed },
+        );
     }
     step.st.comp.actual = Some(to);
     step.st.comp.resume = true;

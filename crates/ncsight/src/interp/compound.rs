@@ -5,13 +5,13 @@ use super::thread::{chamfer_of, jk_pull_out};
 use super::words::Words;
 use super::{axis_target, Step};
 use crate::alarm::{Diagnostic, Rule};
+use crate::cycles::tap;
 use crate::cycles::thread::compound::{infeed_shift_mm, pass_depths, pass_line, Flank, Infeed, Schedule};
 use crate::cycles::thread::cycle::{expand_cycle, Cycle};
-use crate::cycles::tap;
 use crate::cycles::thread::variable_lead::{self, VariableLeadError};
 use crate::modal::{G76Data, G78Data, SpindleDir};
-use crate::profile::Compound;
 use crate::motion::{Hold, Op};
+use crate::profile::Compound;
 use crate::read::Word;
 
 /// Lengths the manual gives in least input increments whatever the profile's decimal-point
@@ -99,7 +99,13 @@ pub(super) fn compound(step: &mut Step, words: &mut Words, kind: Compound) -> Re
                 data.schedule = match m {
                     0 => Schedule::Equal,
                     1 => Schedule::Decreasing,
-                    _ => return Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("{}: G78 P(m) is 00 (equal depths) or 01 (decreasing depths), not {m:02}", w.text()))),
+                    _ => {
+                        return Err(step.alarm(
+                            Rule::ValueOutOfRange,
+                            w.span,
+                            format!("{}: G78 P(m) is 00 (equal depths) or 01 (decreasing depths), not {m:02}", w.text()),
+                        ))
+                    }
                 };
                 data.infeed = match r {
                     0 => Infeed::Radial,
@@ -129,7 +135,11 @@ pub(super) fn compound(step: &mut Step, words: &mut Words, kind: Compound) -> Re
     if kind == Compound::G78 {
         if let Some(w) = words.take(b'D') {
             if w.decimal || !(0.0..=99.0).contains(&w.value) {
-                return Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("{}: G78 D, the number of finishing passes, is a whole number 0 to 99", w.text())));
+                return Err(step.alarm(
+                    Rule::ValueOutOfRange,
+                    w.span,
+                    format!("{}: G78 D, the number of finishing passes, is a whole number 0 to 99", w.text()),
+                ));
             }
             data.base.finishing = w.value as u32;
         }
@@ -182,8 +192,7 @@ fn cut(step: &mut Step, words: &mut Words, name: &str, kind: Compound, data: G78
     if base.finishing == 0 {
         step.warn(Rule::AllowanceNotCut, step.span, format!("{name} with no finishing passes: the finishing allowance is never cut"));
     }
-    let schedule = pass_depths(data.schedule, height, first, base.dmin_mm, base.allowance_mm, base.finishing)
-        .map_err(|e| cycle_alarm(step, name, e))?;
+    let schedule = pass_depths(data.schedule, height, first, base.dmin_mm, base.allowance_mm, base.finishing).map_err(|e| cycle_alarm(step, name, e))?;
     // External thread when the start is outside the root: deeper passes are at smaller X.
     let outward = if a.x > c.x { 1.0 } else { -1.0 };
     let infeed = match kind {
@@ -315,7 +324,12 @@ pub(super) fn variable_lead(step: &mut Step, words: &mut Words, run_deg: Option<
         VariableLeadError::LeadLeavesRange(n) => step.alarm(
             rules.lead_rule,
             step.span,
-            format!("G34: after {n} revolutions the lead would leave 0 to {max} mm (F{} {}{})", crate::alarm::shown(lead, 4), rules.change as char, crate::alarm::shown(change, 4)),
+            format!(
+                "G34: after {n} revolutions the lead would leave 0 to {max} mm (F{} {}{})",
+                crate::alarm::shown(lead, 4),
+                rules.change as char,
+                crate::alarm::shown(change, 4)
+            ),
         ),
         VariableLeadError::TooMany => step.alarm(Rule::MotionLimit, step.span, format!("G34: more than {limit} revolutions in one block")),
         VariableLeadError::Pass(e) => step.pass_error("G34", e),

@@ -41,7 +41,11 @@ pub(super) fn refuse_comma(step: &Step, words: &super::Words, rules: crate::prof
         return Ok(());
     }
     match [rules.chamfer, rules.round, rules.angle].iter().find_map(|l| words.peek(*l)) {
-        Some(w) => Err(step.alarm(Rule::DrawingComma, w.span, format!("{}: parameter 3405#4 (CCR) is 1, so the drawing's words are C, R and A without the comma", w.text()))),
+        Some(w) => Err(step.alarm(
+            Rule::DrawingComma,
+            w.span,
+            format!("{}: parameter 3405#4 (CCR) is 1, so the drawing's words are C, R and A without the comma", w.text()),
+        )),
         None => Ok(()),
     }
 }
@@ -50,7 +54,14 @@ pub(super) fn refuse_comma(step: &Step, words: &super::Words, rules: crate::prof
 /// simulated; in a roughing contour it is.
 fn refuse_bypassed(step: &Step, w: &Word) -> Result<(), Diagnostic> {
     if step.bypass_comp && !step.contour {
-        return Err(step.alarm(Rule::NotSupported, w.span, format!("{}: a chamfer or corner arc in a block that radius compensation does not act in (a T word, a cycle) is not simulated by ncsight yet", w.text())));
+        return Err(step.alarm(
+            Rule::NotSupported,
+            w.span,
+            format!(
+                "{}: a chamfer or corner arc in a block that radius compensation does not act in (a T word, a cycle) is not simulated by ncsight yet",
+                w.text()
+            ),
+        ));
     }
     Ok(())
 }
@@ -66,7 +77,17 @@ fn drawing_words(step: &mut Step, words: &mut super::Words, rules: crate::profil
         (None, None) => return Ok(None),
         (Some(a), Some(b)) => {
             // FANUC alarm 053 is for two of I, K, R; here: one corner, one word (inferred).
-            return Err(step.alarm(Rule::DuplicateWord, b.span, format!("{} and {}: a corner is a chamfer ({}) or an arc ({}), not both", a.text(), b.text(), read::address_name(rules.chamfer), read::address_name(rules.round))));
+            return Err(step.alarm(
+                Rule::DuplicateWord,
+                b.span,
+                format!(
+                    "{} and {}: a corner is a chamfer ({}) or an arc ({}), not both",
+                    a.text(),
+                    b.text(),
+                    read::address_name(rules.chamfer),
+                    read::address_name(rules.round)
+                ),
+            ));
         }
         (Some(w), None) => (w, false),
         (None, Some(w)) => (w, true),
@@ -141,7 +162,11 @@ fn right_angle_next(step: &Step, c: &CornerRequest, span: Span, seg: &Seg) -> Re
     }
     if along * ra.sign < 0.0 {
         let way = if ra.sign > 0.0 { "+" } else { "-" };
-        return Err(step.alarm(Rule::CornerNoMove, span, format!("{}: its sign asks for the next move toward {way}{axis}; this one goes the other way (FANUC alarm 051)", c.word())));
+        return Err(step.alarm(
+            Rule::CornerNoMove,
+            span,
+            format!("{}: its sign asks for the next move toward {way}{axis}; this one goes the other way (FANUC alarm 051)", c.word()),
+        ));
     }
     Ok(())
 }
@@ -231,7 +256,15 @@ fn plane_move(step: &mut Step, span: Span, n: Option<u32>, op: Op, seg: Seg) {
         let strict = step.profile.frame.drawing.is_some_and(|d| d.corner_needs_g01);
         if let (Some(c), true) = (corner, strict && !matches!(op, Op::Feed { .. })) {
             // FANUC alarm 052: the block after a chamfer or corner R is a G01.
-            let d = step.alarm(Rule::CornerNotLinear, span, format!("{} asks for a corner with a G01 move: this block's move is a {} (FANUC alarm 052)", c.word(), if matches!(op, Op::Rapid { .. }) { "G00" } else { "G02/G03" }));
+            let d = step.alarm(
+                Rule::CornerNotLinear,
+                span,
+                format!(
+                    "{} asks for a corner with a G01 move: this block's move is a {} (FANUC alarm 052)",
+                    c.word(),
+                    if matches!(op, Op::Rapid { .. }) { "G00" } else { "G02/G03" }
+                ),
+            );
             step.out.comp_error.get_or_insert(d);
             return;
         }
@@ -264,7 +297,14 @@ fn plane_move(step: &mut Step, span: Span, n: Option<u32>, op: Op, seg: Seg) {
                     let (a3, b3) = (geometry::with_local(&start3, a, plane), geometry::with_local(&start3, b, plane));
                     let feed_mm_min = comp::feed_of(&held.op);
                     chamfer = Some(match arc {
-                        Some((centre, ccw)) => Op::Arc { from: a3, to: b3, center: geometry::with_local(&start3, centre, plane), plane, dir: if ccw { ArcDir::Ccw } else { ArcDir::Cw }, feed_mm_min },
+                        Some((centre, ccw)) => Op::Arc {
+                            from: a3,
+                            to: b3,
+                            center: geometry::with_local(&start3, centre, plane),
+                            plane,
+                            dir: if ccw { ArcDir::Ccw } else { ArcDir::Cw },
+                            feed_mm_min,
+                        },
                         None => Op::Feed { from: a3, to: b3, feed_mm_min },
                     });
                     next_start = b3;
@@ -272,8 +312,16 @@ fn plane_move(step: &mut Step, span: Span, n: Option<u32>, op: Op, seg: Seg) {
                 }
                 Err(reach) => {
                     // Case 2: the chamfer cannot join the two moves.
-                    let needs = if reach.is_finite() { format!("reaches {} mm from the corner, more than a move has", crate::alarm::shown(reach, 4)) } else { "cannot join these two moves".to_string() };
-                    let msg = format!("{}{}: the corner {needs} (GSK980TDi help text, chamfer function, case 2; FANUC alarm 055)", read::address_name(c.letter), crate::alarm::shown(c.size_mm, 4));
+                    let needs = if reach.is_finite() {
+                        format!("reaches {} mm from the corner, more than a move has", crate::alarm::shown(reach, 4))
+                    } else {
+                        "cannot join these two moves".to_string()
+                    };
+                    let msg = format!(
+                        "{}{}: the corner {needs} (GSK980TDi help text, chamfer function, case 2; FANUC alarm 055)",
+                        read::address_name(c.letter),
+                        crate::alarm::shown(c.size_mm, 4)
+                    );
                     let d = step.alarm(Rule::CornerTooLarge, c.span, msg);
                     step.out.comp_error.get_or_insert(d);
                     return;

@@ -50,13 +50,18 @@ pub(super) fn block(step: &mut Step, words: &mut Words, kind: Curve) -> Result<(
             if (half[0] - half[1]).abs() < 1e-12 {
                 // Note 1: A = B is the arc G02/G03 of that radius.
                 let g = geom::arc_from_radius(from, to, plane, dir, half[0], ARC_TOLERANCE_MM).map_err(|_| {
-                    step.alarm(Rule::CurveData, step.span, format!("{code}: with A = B = {} it is an arc of that radius, and the end point is more than its diameter away", shown(half[0], 4)))
+                    step.alarm(
+                        Rule::CurveData,
+                        step.span,
+                        format!("{code}: with A = B = {} it is an arc of that radius, and the end point is more than its diameter away", shown(half[0], 4)),
+                    )
                 })?;
                 let feed = step.cutting_feed(What::Code(GFn::Curve(kind)), &|u| geom::arc_point(&from, &to, plane, dir, &g, u))?;
                 step.emit(Op::Arc { from, to, center: g.center, plane, dir, feed_mm_min: feed });
                 return Ok(());
             }
-            let pts = curve::ellipse(local(&from, a, b), local(&to, a, b), half[0], half[1], tilt, dir, CHORD_TOLERANCE_MM).map_err(|e| curve_alarm(step, code, e))?;
+            let pts = curve::ellipse(local(&from, a, b), local(&to, a, b), half[0], half[1], tilt, dir, CHORD_TOLERANCE_MM)
+                .map_err(|e| curve_alarm(step, code, e))?;
             chords(step, code, from, to, &pts)
         }
         Curve::Parabola(dir) => {
@@ -74,7 +79,11 @@ pub(super) fn block(step: &mut Step, words: &mut Words, kind: Curve) -> Result<(
                 }
                 w => {
                     let span = w.map_or(step.span, |w| w.span);
-                    return Err(step.alarm(Rule::MissingWord, span, format!("{code}: P, the parabola's Y² = 2PX, must be given and not 0 (help text G7.2 note 1)")));
+                    return Err(step.alarm(
+                        Rule::MissingWord,
+                        span,
+                        format!("{code}: P, the parabola's Y² = 2PX, must be given and not 0 (help text G7.2 note 1)"),
+                    ));
                 }
             };
             let tilt = tilt(step, words, code);
@@ -140,7 +149,11 @@ fn three_point(step: &mut Step, words: &mut Words, code: &'static str, mid_absol
     let s = local(&from, a, b);
     let e = local(&to, a, b);
     if (s.0 - e.0).abs() < 1e-12 && (s.1 - e.1).abs() < 1e-12 {
-        return Err(step.alarm(Rule::CurveData, step.span, format!("{code}: the end point is the start point; a three-point arc cannot be a full circle (help text G05 note 5)")));
+        return Err(step.alarm(
+            Rule::CurveData,
+            step.span,
+            format!("{code}: the end point is the start point; a three-point arc cannot be a full circle (help text G05 note 5)"),
+        ));
     }
     let (c, dir) = curve::three_point_arc(s, (mid[0], mid[1]), e).map_err(|e| curve_alarm(step, code, e))?;
     let mut center = from;

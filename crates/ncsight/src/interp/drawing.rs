@@ -35,7 +35,13 @@ pub(super) fn angle<'w>(step: &mut Step, words: &mut Words<'w>, rules: DrawingRu
 
 /// What the block's line does: go to `target` (an end worked out from the angle, or as
 /// written), or wait for the next block (`None`: its angle alone).
-pub(super) fn line(step: &mut Step, rules: DrawingRules, angle: Option<(f64, &Word)>, target: Vec3, how: [Option<Given>; 3]) -> Result<Option<Vec3>, Diagnostic> {
+pub(super) fn line(
+    step: &mut Step,
+    rules: DrawingRules,
+    angle: Option<(f64, &Word)>,
+    target: Vec3,
+    how: [Option<Given>; 3],
+) -> Result<Option<Vec3>, Diagnostic> {
     let plane = step.st.modes.plane;
     let (ia, ib, _) = plane.axes();
     if let Some(held) = step.st.comp.angle_line {
@@ -55,7 +61,16 @@ pub(super) fn line(step: &mut Step, rules: DrawingRules, angle: Option<(f64, &Wo
     match (given[ia], given[ib]) {
         (true, true) => {
             // Note 1: with both coordinates the block is an ordinary line; the angle is not used.
-            step.warn(Rule::TextIgnored, w.span, format!("{}: the block gives both {} and {}: an ordinary line, the angle is not used (GSK980TDi help text, angle programming note 1)", w.text(), names.0, names.1));
+            step.warn(
+                Rule::TextIgnored,
+                w.span,
+                format!(
+                    "{}: the block gives both {} and {}: an ordinary line, the angle is not used (GSK980TDi help text, angle programming note 1)",
+                    w.text(),
+                    names.0,
+                    names.1
+                ),
+            );
             Ok(Some(target))
         }
         (false, false) => {
@@ -150,7 +165,8 @@ fn close(step: &mut Step, held: AngleLine, angle: Option<(f64, &Word)>, target: 
     let held_start = geometry::local(&step.st.comp.corner_start, plane);
     let placed = step.corners.first().and_then(|r| r.op.start_point()).map_or(start, |p| geometry::local(&p, plane));
     if held_start.dist(placed) > 1e-9 && meet.minus(held_start).dot(u) < -1e-9 {
-        let msg = format!("the corner before this line (its angle alone) needs more of it than it has: it ends {} mm from the corner", shown(meet.dist(start), 4));
+        let msg =
+            format!("the corner before this line (its angle alone) needs more of it than it has: it ends {} mm from the corner", shown(meet.dist(start), 4));
         return Err(step.alarm(Rule::CornerTooLarge, held.span, msg));
     }
     let end = geometry::with_local(&held.from, meet, plane);
@@ -172,7 +188,11 @@ fn close(step: &mut Step, held: AngleLine, angle: Option<(f64, &Word)>, target: 
 /// come between (note 7); the programme's end may not.
 pub(super) fn end_of_block(step: &mut Step, mut held: AngleLine) -> Result<(), Diagnostic> {
     if step.st.modes.ended {
-        return Err(step.alarm(Rule::DrawingEndNotFound, step.span, "the programme ends before the line of an angle alone is given its end (the next block's line; FANUC alarm 058)"));
+        return Err(step.alarm(
+            Rule::DrawingEndNotFound,
+            step.span,
+            "the programme ends before the line of an angle alone is given its end (the next block's line; FANUC alarm 058)",
+        ));
     }
     if held.span != step.span {
         held.between += 1;

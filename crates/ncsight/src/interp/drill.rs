@@ -323,7 +323,11 @@ fn lathe_position(step: &mut Step, words: &mut Words, axis: usize) -> Result<Opt
 
 /// How a lathe cycle's drilling axis is named in its messages.
 fn axis_name(along: usize) -> &'static str {
-    if along == 2 { "Z (W)" } else { "X (U)" }
+    if along == 2 {
+        "Z (W)"
+    } else {
+        "X (U)"
+    }
 }
 
 /// The hole bottom in force (as stored: the value and whether it counts from the R level), or
@@ -353,7 +357,11 @@ fn lathe_from_r_block(step: &mut Step, words: &mut Words, kind: DrillKind) -> Re
         if !drilling {
             // Peck tapping (FANUC 0i-T 5104#6 PCT) is not simulated; boring has no Q.
             if matches!(kind, DrillKind::FaceTapR | DrillKind::SideTapR) {
-                return Err(step.alarm(Rule::NotSupported, w.span, format!("{}: peck tapping (FANUC 5104 bit 6) is not simulated; {code} without Q taps in one feed", w.text())));
+                return Err(step.alarm(
+                    Rule::NotSupported,
+                    w.span,
+                    format!("{}: peck tapping (FANUC 5104 bit 6) is not simulated; {code} without Q taps in one feed", w.text()),
+                ));
             }
             return Err(step.alarm(Rule::WordNotTaken, w.span, format!("{}: {code} (boring) has no peck depth Q", w.text())));
         }
@@ -384,7 +392,11 @@ fn lathe_from_r_block(step: &mut Step, words: &mut Words, kind: DrillKind) -> Re
     if q > 0.0 {
         let pecks = ((bottom - r_level).abs() / q).ceil() * repeats as f64;
         if pecks > MAX_PECKS {
-            return Err(step.alarm(Rule::MotionLimit, step.span, format!("{code}: {pecks:.0} pecks in one block (Q too small for the depth, times K); at most {MAX_PECKS}")));
+            return Err(step.alarm(
+                Rule::MotionLimit,
+                step.span,
+                format!("{code}: {pecks:.0} pecks in one block (Q too small for the depth, times K); at most {MAX_PECKS}"),
+            ));
         }
     }
     let rules = step.profile.drill;
@@ -443,7 +455,10 @@ fn lathe_levels(step: &Step, code: &str, along: usize) -> Result<(f64, f64), Dia
         return Err(step.alarm(
             Rule::DrillLevels,
             step.span,
-            format!("{code}: R {r_level:.3} and bottom {bottom:.3}: the R level must lie on the initial level's side of the hole bottom (initial level {:.3})", d.initial),
+            format!(
+                "{code}: R {r_level:.3} and bottom {bottom:.3}: the R level must lie on the initial level's side of the hole bottom (initial level {:.3})",
+                d.initial
+            ),
         ));
     }
     Ok((r_level, bottom))
@@ -467,7 +482,11 @@ fn rigid_tap_block(step: &mut Step, words: &mut Words, kind: DrillKind) -> Resul
             // The hand from F's sign, the lead its size; it stays as the F in force.
             let lead = step.lead_word(w);
             if lead == 0.0 || lead.abs() > super::thread::MAX_LEAD_MM + 1e-9 {
-                return Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("{}: the lead of {code} must be other than 0 and at most {} mm", w.text(), super::thread::MAX_LEAD_MM)));
+                return Err(step.alarm(
+                    Rule::ValueOutOfRange,
+                    w.span,
+                    format!("{}: the lead of {code} must be other than 0 and at most {} mm", w.text(), super::thread::MAX_LEAD_MM),
+                ));
             }
             step.st.drill.tap_left = lead < 0.0;
             step.st.modes.feed = Some(lead.abs());
@@ -505,7 +524,11 @@ fn rigid_tap_block(step: &mut Step, words: &mut Words, kind: DrillKind) -> Resul
         let mut end = start;
         end.set_axis(along, bottom);
         if end == start {
-            return Err(step.alarm(Rule::DrillLevels, step.span, format!("{code}: the hole bottom {axis_name} is where the tool starts: there is nothing to tap")));
+            return Err(step.alarm(
+                Rule::DrillLevels,
+                step.span,
+                format!("{code}: the hole bottom {axis_name} is where the tool starts: there is nothing to tap"),
+            ));
         }
         let tapping = step.out.records.len();
         let dwell = [Op::Dwell { seconds: dwell_s }];
@@ -648,11 +671,7 @@ fn hole_levels(step: &Step, kind: DrillKind) -> Result<(f64, f64), Diagnostic> {
         } else {
             "the R level must be above the hole bottom Z"
         };
-        return Err(step.alarm(
-            Rule::DrillLevels,
-            step.span,
-            format!("{code}: R {r:.3} and bottom {bottom:.3}: {what}"),
-        ));
+        return Err(step.alarm(Rule::DrillLevels, step.span, format!("{code}: R {r:.3} and bottom {bottom:.3}: {what}")));
     }
     Ok((r, bottom))
 }
@@ -700,7 +719,11 @@ fn defers_holes(step: &Step, kind: DrillKind, r: f64, bottom: f64, repeats: u32)
     let records = 3.0 * pecks + 5.0 * repeats as f64;
     let defer = may_defer(step, kind) && records > DEFER_RECORDS;
     if defer && records > MAX_DEFERRED_RECORDS {
-        return Err(step.alarm(Rule::MotionLimit, step.span, format!("{code}: about {records:.0} moves in one block (Q too small for the depth, times K); at most {MAX_DEFERRED_RECORDS:.0}")));
+        return Err(step.alarm(
+            Rule::MotionLimit,
+            step.span,
+            format!("{code}: about {records:.0} moves in one block (Q too small for the depth, times K); at most {MAX_DEFERRED_RECORDS:.0}"),
+        ));
     }
     if kind.needs_q() && !defer && pecks > MAX_PECKS {
         return Err(step.alarm(
@@ -737,7 +760,11 @@ fn shift_direction(step: &Step, kind: DrillKind) -> [f64; 2] {
             let b4 = step.params.get(low) != 0.0;
             let b5 = step.params.get(high) != 0.0;
             let sign = if b4 { -1.0 } else { 1.0 };
-            if b5 { [0.0, sign] } else { [sign, 0.0] }
+            if b5 {
+                [0.0, sign]
+            } else {
+                [sign, 0.0]
+            }
         }
         // A profile without the bits shifts along +X.
         None if kind.shifts() => [1.0, 0.0],
@@ -749,7 +776,14 @@ fn shift_direction(step: &Step, kind: DrillKind) -> [f64; 2] {
 /// each repeat under G91), from where the tool stands: made now, or laid out to be made as they
 /// are handed on (`defer`).
 #[inline(always)]
-fn make_holes(step: &mut Step, template: &Hole, repeats: u32, (delta_a, delta_b): (f64, f64), (mut target_a, mut target_b): (f64, f64), defer: bool) -> Result<(), Diagnostic> {
+fn make_holes(
+    step: &mut Step,
+    template: &Hole,
+    repeats: u32,
+    (delta_a, delta_b): (f64, f64),
+    (mut target_a, mut target_b): (f64, f64),
+    defer: bool,
+) -> Result<(), Diagnostic> {
     let kind = template.kind;
     let code = kind.code();
     let (r, bottom) = (template.r, template.bottom);
@@ -787,7 +821,15 @@ fn make_holes(step: &mut Step, template: &Hole, repeats: u32, (delta_a, delta_b)
         }
     }
     if !deferred.is_empty() && !step.out.discard_records {
-        let holes = DeferredHoles { holes: deferred, span: step.span, n: step.n, to_machine: step.tables.to_machine(&step.st.frame), plane, position_mode: step.st.modes.spindle_position_mode, spindle_p: step.spindle_p() };
+        let holes = DeferredHoles {
+            holes: deferred,
+            span: step.span,
+            n: step.n,
+            to_machine: step.tables.to_machine(&step.st.frame),
+            plane,
+            position_mode: step.st.modes.spindle_position_mode,
+            spindle_p: step.spindle_p(),
+        };
         step.out.deferred = Some(Box::new((step.out.records.len(), super::Deferred::Holes(holes))));
     }
     Ok(())

@@ -419,7 +419,11 @@ pub(super) fn from_reference(step: &mut Step, words: &mut Words, span: Span) -> 
     for (a, how) in given.iter().enumerate().filter_map(|(a, g)| g.map(|g| (a, g))) {
         let Some(m) = step.st.place.reference_mid[a] else {
             let letter = ['X', 'Y', 'Z'][a];
-            return Err(step.alarm(Rule::NoIntermediatePoint, span, format!("G29 names {letter}, and no G28 or G30 has given {letter} an intermediate point since the start")));
+            return Err(step.alarm(
+                Rule::NoIntermediatePoint,
+                span,
+                format!("G29 names {letter}, and no G28 or G30 has given {letter} an intermediate point since the start"),
+            ));
         };
         mid.set_axis(a, m);
         end.set_axis(a, if how == super::Given::Incremental { m + (written.axis(a) - shown.axis(a)) } else { written.axis(a) });
@@ -464,7 +468,11 @@ pub(super) fn data_line(step: &mut Step, block: &crate::read::Block, mode: DataI
             b'P' if axis.is_none() => axis = Some(w),
             // A programme end among the lines: G11 is probably missing.
             b'M' => {
-                return Err(step.alarm(Rule::WordNotTaken, w.span, format!("{}: a parameter line between G10 L{} and G11 takes no M code: is G11 missing?", w.text(), entry.l)));
+                return Err(step.alarm(
+                    Rule::WordNotTaken,
+                    w.span,
+                    format!("{}: a parameter line between G10 L{} and G11 takes no M code: is G11 missing?", w.text(), entry.l),
+                ));
             }
             // GSK: K and D name PLC parameters, which ncsight does not have.
             b'K' | b'D' if entry.read_into.is_some() => {
@@ -472,7 +480,18 @@ pub(super) fn data_line(step: &mut Step, block: &crate::read::Block, mode: DataI
                 step.warn(Rule::NotSimulated, w.span, msg);
                 return Ok(());
             }
-            _ => return Err(step.alarm(Rule::WordNotTaken, w.span, format!("{}: a parameter line between G10 L{} and G11 takes N, P and {} only", w.text(), entry.l, std::iter::once(entry.value).chain(entry.read_into).map(|c| (c as char).to_string()).collect::<Vec<_>>().join(" and ")))),
+            _ => {
+                return Err(step.alarm(
+                    Rule::WordNotTaken,
+                    w.span,
+                    format!(
+                        "{}: a parameter line between G10 L{} and G11 takes N, P and {} only",
+                        w.text(),
+                        entry.l,
+                        std::iter::once(entry.value).chain(entry.read_into).map(|c| (c as char).to_string()).collect::<Vec<_>>().join(" and ")
+                    ),
+                ))
+            }
         }
     }
     if let Some(p) = axis {
@@ -483,55 +502,76 @@ pub(super) fn data_line(step: &mut Step, block: &crate::read::Block, mode: DataI
     // The profile's parameters of this number: one value, or bits.
     let defs = step.profile.params_numbered(number);
     match (value, read) {
-        (Some(a), Some(b)) => Err(step.alarm(Rule::DuplicateWord, b.span, format!("{} and {}: a parameter line writes or reads, not both", a.text(), b.text()))),
+        (Some(a), Some(b)) => {
+            Err(step.alarm(Rule::DuplicateWord, b.span, format!("{} and {}: a parameter line writes or reads, not both", a.text(), b.text())))
+        }
         (None, None) => Err(step.alarm(Rule::MissingWord, block.span, format!("parameter line N{number}: {} gives the value to write", entry.value as char))),
-        (Some(w), None) => {
-            if defs.is_empty() {
-                let msg = format!("parameter {number} is not one ncsight models: writing it changes nothing here");
-                step.warn(Rule::NotSimulated, w.span, msg);
-                return Ok(());
-            }
-            for (key, bit) in defs {
-                let v = match bit {
-                    // The bits as binary digits: bit b is the digit b places from the right.
-                    Some(b) => {
-                        let digits = w.value.round() as u64;
-                        if w.decimal || w.value < 0.0 || digits.to_string().bytes().any(|c| c > b'1') || digits > 11_111_111 {
-                            return Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("{}: parameter {number} is a bit parameter: its value is eight binary digits (as 00000100)", w.text())));
-                        }
-                        ((digits / 10u64.pow(u32::from(b))) % 10) as f64
-                    }
-                    None => w.value,
-                };
-                if let Err(e) = step.params.check(key, v) {
-                    return Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("{}: {e}", w.text())));
-                }
-                // The G-code system is the run's (its codes are read by the table chosen at the
-                // start): a programme that changes it is not simulated.
-                let system_bit = step.profile.g_code_systems.or(step.params.base().g_code_systems).is_some_and(|s| key == s.b || key == s.c);
-                if system_bit && v != step.params.get(key) {
-                    return Err(step.alarm(Rule::NotSupported, w.span, format!("{}: changing the G-code system inside a programme is not simulated by ncsight: give it with --param {key}={v}", w.text())));
-                }
-                step.out.param_writes.push((key, v));
-            }
-            Ok(())
-        }
-        (None, Some(r)) => {
-            if r.decimal || r.value < 1.0 || r.value > 9999.0 {
-                return Err(step.alarm(Rule::ValueOutOfRange, r.span, format!("{}: R names the macro variable the parameter is read into (R100 reads into #100; inferred)", r.text())));
-            }
-            if defs.is_empty() {
-                return Err(step.alarm(Rule::NotSupported, block.span, format!("parameter {number} is not one ncsight models: its value cannot be read")));
-            }
-            // A bit parameter reads as its binary digits; the bits ncsight does not model read 0.
-            let v = defs.iter().map(|(key, bit)| match bit {
-                Some(b) => step.params.get(*key) * 10f64.powi(i32::from(*b)),
-                None => step.params.get(*key),
-            });
-            step.out.var_write = Some((r.value as u32, v.sum()));
-            Ok(())
-        }
+        (Some(w), None) => write_parameter(step, w, number, &defs),
+        (None, Some(r)) => read_parameter(step, r, number, &defs, block.span),
     }
+}
+
+/// A parameter line's value written: each parameter (or bit) of the number checked against its
+/// range, the G-code system refused; the writes applied after the block.
+fn write_parameter(step: &mut Step, w: &crate::read::Word, number: u32, defs: &[(crate::profile::ParamKey, Option<u8>)]) -> Result<(), Diagnostic> {
+    if defs.is_empty() {
+        let msg = format!("parameter {number} is not one ncsight models: writing it changes nothing here");
+        step.warn(Rule::NotSimulated, w.span, msg);
+        return Ok(());
+    }
+    for &(key, bit) in defs {
+        let v = match bit {
+            // The bits as binary digits: bit b is the digit b places from the right.
+            Some(b) => {
+                let digits = w.value.round() as u64;
+                if w.decimal || w.value < 0.0 || digits.to_string().bytes().any(|c| c > b'1') || digits > 11_111_111 {
+                    return Err(step.alarm(
+                        Rule::ValueOutOfRange,
+                        w.span,
+                        format!("{}: parameter {number} is a bit parameter: its value is eight binary digits (as 00000100)", w.text()),
+                    ));
+                }
+                ((digits / 10u64.pow(u32::from(b))) % 10) as f64
+            }
+            None => w.value,
+        };
+        if let Err(e) = step.params.check(key, v) {
+            return Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("{}: {e}", w.text())));
+        }
+        // The G-code system is the run's (its codes are read by the table chosen at the
+        // start): a programme that changes it is not simulated.
+        let system_bit = step.profile.g_code_systems.or(step.params.base().g_code_systems).is_some_and(|s| key == s.b || key == s.c);
+        if system_bit && v != step.params.get(key) {
+            return Err(step.alarm(
+                Rule::NotSupported,
+                w.span,
+                format!("{}: changing the G-code system inside a programme is not simulated by ncsight: give it with --param {key}={v}", w.text()),
+            ));
+        }
+        step.out.param_writes.push((key, v));
+    }
+    Ok(())
+}
+
+/// GSK `N<number> R<variable>`: the parameter read into a macro variable after the block.
+fn read_parameter(step: &mut Step, r: &crate::read::Word, number: u32, defs: &[(crate::profile::ParamKey, Option<u8>)], span: Span) -> Result<(), Diagnostic> {
+    if r.decimal || r.value < 1.0 || r.value > 9999.0 {
+        return Err(step.alarm(
+            Rule::ValueOutOfRange,
+            r.span,
+            format!("{}: R names the macro variable the parameter is read into (R100 reads into #100; inferred)", r.text()),
+        ));
+    }
+    if defs.is_empty() {
+        return Err(step.alarm(Rule::NotSupported, span, format!("parameter {number} is not one ncsight models: its value cannot be read")));
+    }
+    // A bit parameter reads as its binary digits; the bits ncsight does not model read 0.
+    let v = defs.iter().map(|(key, bit)| match bit {
+        Some(b) => step.params.get(*key) * 10f64.powi(i32::from(*b)),
+        None => step.params.get(*key),
+    });
+    step.out.var_write = Some((r.value as u32, v.sum()));
+    Ok(())
 }
 
 /// G30's P: the reference point 2-4 (2 when omitted), as far as the profile has them.
@@ -658,7 +698,9 @@ pub(super) fn data_setting(step: &mut Step, words: &mut Words, span: Span) -> Re
     match (forms, l) {
         (G10Forms::LatheOffsets, None) => lathe_offset_setting(step, words, n, pw, values),
         (G10Forms::MillOffsets, None | Some(1) | Some(10..=13)) => mill_offset_setting(step, words, n, pw, l, span),
-        (_, Some(l)) => Err(step.alarm(Rule::ValueOutOfRange, span, format!("G10 L{l}: {} sets L2 (work offsets) and the tool offsets only here", step.profile.name))),
+        (_, Some(l)) => {
+            Err(step.alarm(Rule::ValueOutOfRange, span, format!("G10 L{l}: {} sets L2 (work offsets) and the tool offsets only here", step.profile.name)))
+        }
         (_, None) => Err(step.alarm(Rule::NotSupported, span, "G10: not simulated by ncsight on this profile yet")),
     }
 }
@@ -696,7 +738,11 @@ fn starts_data_lines(step: &mut Step, l: Option<u32>, span: Span) -> Result<bool
             step.st.modes.data_input = Some(DataInput::ToolLife);
             return Ok(true);
         }
-        return Err(step.alarm(Rule::ImproperGCode, span, format!("G10 on {}: its help text has G10 L3 (tool life) and G10 L52 (parameters) only, no work or tool offset setting", step.profile.name)));
+        return Err(step.alarm(
+            Rule::ImproperGCode,
+            span,
+            format!("G10 on {}: its help text has G10 L3 (tool life) and G10 L52 (parameters) only, no work or tool offset setting", step.profile.name),
+        ));
     }
     Ok(false)
 }
@@ -704,7 +750,13 @@ fn starts_data_lines(step: &mut Step, l: Option<u32>, span: Span) -> Result<bool
 /// G10 P_ on a lathe (`n` the value of P, the word `pw`): the wear (P1-64) or geometry
 /// (P10001-10064) offset with the axis `values`, the nose radius R (C adds) and the imaginary
 /// tip Q.
-fn lathe_offset_setting(step: &mut Step, words: &mut Words, n: u32, pw: &crate::read::Word, values: [Option<(f64, bool)>; 3]) -> Result<Option<TableWrite>, Diagnostic> {
+fn lathe_offset_setting(
+    step: &mut Step,
+    words: &mut Words,
+    n: u32,
+    pw: &crate::read::Word,
+    values: [Option<(f64, bool)>; 3],
+) -> Result<Option<TableWrite>, Diagnostic> {
     // P1-64 wear, P10001-10064 geometry (docs/reference/macro.md 10.2, inferred); R (C adds) the nose
     // radius, Q the imaginary tip.
     let (number, geometry) = match n {
@@ -724,7 +776,11 @@ fn lathe_offset_setting(step: &mut Step, words: &mut Words, n: u32, pw: &crate::
         (None, Some(w)) => Some((step.length(w)?, true)),
         (None, None) => None,
     };
-    if geometry { e.radius_mm = merge(e.radius_mm, r) } else { e.wear_radius_mm = merge(e.wear_radius_mm, r) }
+    if geometry {
+        e.radius_mm = merge(e.radius_mm, r)
+    } else {
+        e.wear_radius_mm = merge(e.wear_radius_mm, r)
+    }
     if let Some(w) = words.take(b'Q') {
         if w.decimal || !(0.0..=9.0).contains(&w.value) {
             return Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("{}: the imaginary tool nose is Q0 to Q9", w.text())));
@@ -736,7 +792,14 @@ fn lathe_offset_setting(step: &mut Step, words: &mut Words, n: u32, pw: &crate::
 
 /// G10 P_ R_ on a mill (`n` the value of P, the word `pw`): offset n's value R, in tool offset
 /// memory A (no L, L1) or C (L10-L13).
-fn mill_offset_setting(step: &mut Step, words: &mut Words, n: u32, pw: &crate::read::Word, l: Option<u32>, span: Span) -> Result<Option<TableWrite>, Diagnostic> {
+fn mill_offset_setting(
+    step: &mut Step,
+    words: &mut Words,
+    n: u32,
+    pw: &crate::read::Word,
+    l: Option<u32>,
+    span: Span,
+) -> Result<Option<TableWrite>, Diagnostic> {
     if !(1..=crate::setup::MAX_OFFSET_NUMBER).contains(&n) {
         return Err(p_out_of_range(step, pw, "G10 P is an offset number, 1 or more"));
     }

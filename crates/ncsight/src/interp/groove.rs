@@ -2,12 +2,12 @@
 //! (`G74 R(e)`) sets the back-off, the second (`G74 X(U) Z(W) P(Δi) Q(Δk) R(Δd) F`) cuts.
 
 use super::compound::increments;
+use super::deferred::MAX_DEFERRED_MOVES;
 use super::words::Words;
 use super::{axis_target, Step};
 use crate::alarm::{Diagnostic, Rule};
-use super::deferred::MAX_DEFERRED_MOVES;
-use crate::cycles::Expansion;
 use crate::cycles::groove::{lay_out, PeckCycle, PeckError, PeckKind};
+use crate::cycles::Expansion;
 
 pub(super) fn block(step: &mut Step, words: &mut Words, kind: PeckKind) -> Result<(), Diagnostic> {
     let code = kind.code();
@@ -42,15 +42,7 @@ pub(super) fn block(step: &mut Step, words: &mut Words, kind: PeckKind) -> Resul
     let back_off_mm = step.st.memory.peck_back_off_mm.or_else(|| step.profile.peck_back_off.map(|k| step.params.get(k))).unwrap_or(0.0);
     let start = step.st.place.pos;
     let (end, _) = axis_target(step, words)?;
-    let cycle = PeckCycle {
-        kind,
-        start,
-        end,
-        back_off_mm,
-        peck_mm,
-        step_mm,
-        relief_mm,
-    };
+    let cycle = PeckCycle { kind, start, end, back_off_mm, peck_mm, step_mm, relief_mm };
     let plan = lay_out(&cycle, MAX_DEFERRED_MOVES).map_err(|e| {
         let (peck_name, step_name) = if kind == PeckKind::Face { ("Q(Δk)", "P(Δi)") } else { ("P(Δi)", "Q(Δk)") };
         let (rule, msg) = match e {

@@ -9,17 +9,17 @@ mod corner;
 mod curve;
 mod deferred;
 mod drawing;
-mod polar;
 mod drill;
 mod frame;
 mod groove;
+mod polar;
 mod rough;
 mod table_vars;
 pub use call::{Flow, MAX_PROGRAM_NUMBER, MAX_PROGRAM_NUMBER_8};
 pub use frame::{TableWrite, Tables};
 pub use rough::{FinishRequest, RoughRequest};
-mod thread;
 mod stroke;
+mod thread;
 mod transform;
 mod turning;
 mod words;
@@ -381,7 +381,11 @@ impl Step<'_> {
     /// written; without, in least input increments (0.001 degree) where lengths are, else
     /// degrees.
     fn degrees(&self, w: &Word) -> f64 {
-        if !w.decimal && self.params.integer_lengths() == IntegerLengths::LeastIncrement { w.value * 0.001 } else { w.value }
+        if !w.decimal && self.params.integer_lengths() == IntegerLengths::LeastIncrement {
+            w.value * 0.001
+        } else {
+            w.value
+        }
     }
 
     /// An angle word in 0.001 degree, with a decimal point too (the GSK980TDi's Q: `Q180.` is
@@ -423,11 +427,7 @@ impl Step<'_> {
         }
         let unit = if self.st.modes.inch { "inch" } else { "mm" };
         let shown = if self.st.modes.inch { format!("{v:.4}") } else { format!("{v:.3}") };
-        self.warn(
-            Rule::IntegerLength,
-            w.span,
-            format!("{} is {shown} {unit} on this control (no decimal point: least input increments)", w.text()),
-        );
+        self.warn(Rule::IntegerLength, w.span, format!("{} is {shown} {unit} on this control (no decimal point: least input increments)", w.text()));
     }
 
     #[cold]
@@ -539,11 +539,7 @@ impl Step<'_> {
         let f = match self.st.modes.feed {
             Some(f) if f > 0.0 => f,
             _ => {
-                return Err(self.alarm(
-                    Rule::FeedZero,
-                    self.span,
-                    format!("{} needs a feed: no F word greater than zero is in force", what.name(self.profile)),
-                ))
+                return Err(self.alarm(Rule::FeedZero, self.span, format!("{} needs a feed: no F word greater than zero is in force", what.name(self.profile))))
             }
         };
         // A lathe F that is implausible in its mode (the check inline, the message cold).
@@ -563,14 +559,31 @@ impl Step<'_> {
 
     /// The feed rule of F in the modes in force.
     fn cut_feed(&self, f: f64) -> CutFeed {
-        CutFeed { f, per_rev: self.st.modes.per_rev, max_mm_min: self.params.feed_max_mm_min(), spindle: self.st.modes.spindle_speed(MAX_RPM), css_axis: if self.st.modes.css { self.css_axis() } else { None } }
+        CutFeed {
+            f,
+            per_rev: self.st.modes.per_rev,
+            max_mm_min: self.params.feed_max_mm_min(),
+            spindle: self.st.modes.spindle_speed(MAX_RPM),
+            css_axis: if self.st.modes.css { self.css_axis() } else { None },
+        }
     }
 }
 
 impl Interpreter {
     pub fn new(params: Params, switches: Switches) -> Interpreter {
         let profile = params.profile();
-        Interpreter { profile, state: Modal::power_on(profile), params, tables: Tables::none(profile), comp_queue: Vec::new(), corner_queue: Vec::new(), switches, collecting: None, contours: Vec::new(), replaying: false }
+        Interpreter {
+            profile,
+            state: Modal::power_on(profile),
+            params,
+            tables: Tables::none(profile),
+            comp_queue: Vec::new(),
+            corner_queue: Vec::new(),
+            switches,
+            collecting: None,
+            contours: Vec::new(),
+            replaying: false,
+        }
     }
 
     /// Take the machine's tables from a setup (before the first block): the offsets, reference
@@ -661,7 +674,21 @@ impl Interpreter {
             return;
         }
         let repair = self.switches.repair_position;
-        let mut step = Step { profile: self.profile, params: &self.params, tables: &self.tables, queue: &mut self.comp_queue, corners: &mut self.corner_queue, bypass_comp: false, contour: false, repair, span: Span::default(), n: None, st: &mut self.state, carry: None, out };
+        let mut step = Step {
+            profile: self.profile,
+            params: &self.params,
+            tables: &self.tables,
+            queue: &mut self.comp_queue,
+            corners: &mut self.corner_queue,
+            bypass_comp: false,
+            contour: false,
+            repair,
+            span: Span::default(),
+            n: None,
+            st: &mut self.state,
+            carry: None,
+            out,
+        };
         if let Some(p) = step.st.thread.take_some(|t| &mut t.pending) {
             step.bypass_comp = true;
             thread::flush(&mut step, p, true);
@@ -740,7 +767,21 @@ impl Interpreter {
     /// solution); its records marked where single block stops.
     fn run_through_stages(&mut self, block: &Block, out: &mut Outcome) -> Result<(), Diagnostic> {
         let repair = self.switches.repair_position;
-        let mut step = Step { profile: self.profile, params: &self.params, tables: &self.tables, queue: &mut self.comp_queue, corners: &mut self.corner_queue, bypass_comp: false, contour: false, repair, span: block.span, n: block.sequence, st: &mut self.state, carry: None, out };
+        let mut step = Step {
+            profile: self.profile,
+            params: &self.params,
+            tables: &self.tables,
+            queue: &mut self.comp_queue,
+            corners: &mut self.corner_queue,
+            bypass_comp: false,
+            contour: false,
+            repair,
+            span: block.span,
+            n: block.sequence,
+            st: &mut self.state,
+            carry: None,
+            out,
+        };
         let result = run_block(&mut step, block, self.switches).and_then(|()| {
             if step.out.emitted > MAX_MOTIONS_PER_BLOCK {
                 return Err(step.alarm(
@@ -828,7 +869,11 @@ impl Interpreter {
         }
         if let Some(req) = out.rough_request.take() {
             if self.replaying {
-                return Err(self.contour_alarm(Rule::ContourCommand, block.span, format!("{} cannot run inside the contour that G70 is finishing", req.kind.code())));
+                return Err(self.contour_alarm(
+                    Rule::ContourCommand,
+                    block.span,
+                    format!("{} cannot run inside the contour that G70 is finishing", req.kind.code()),
+                ));
             }
             self.collecting = Some((*req, Vec::new()));
         }
@@ -870,7 +915,13 @@ impl CutFeed {
                 let feed_at = |rpm: f64| (self.f * rpm.abs()).min(max);
                 let mut sum = 0.0;
                 for i in 0..=N {
-                    let w = if i == 0 || i == N { 1.0 } else if i % 2 == 1 { 4.0 } else { 2.0 };
+                    let w = if i == 0 || i == N {
+                        1.0
+                    } else if i % 2 == 1 {
+                        4.0
+                    } else {
+                        2.0
+                    };
                     sum += w / feed_at(self.rpm_at(&point(i as f64 / N as f64)));
                 }
                 let mean_inverse = sum / (3.0 * N as f64);
@@ -982,7 +1033,9 @@ fn collect<'w>(
                         }
                         // A machining centre's code on a lathe (or the reverse): the other kind's profiles.
                         return Err(match other_kind(profile, simulated) {
-                            Some((kind, names)) => d.with_hint(format!("{} is a code of the {kind} profiles ({names}): a {kind} programme? choose one with --machine", w.text())),
+                            Some((kind, names)) => {
+                                d.with_hint(format!("{} is a code of the {kind} profiles ({names}): a {kind} programme? choose one with --machine", w.text()))
+                            }
                             None => d,
                         });
                     }
@@ -990,11 +1043,7 @@ fn collect<'w>(
             }
             b'M' => {
                 if w.decimal || w.value < 0.0 {
-                    return Err(step.alarm(
-                        Rule::IllegalDecimalPoint,
-                        w.span,
-                        format!("{}: an M code is a whole number", w.text()),
-                    ));
+                    return Err(step.alarm(Rule::IllegalDecimalPoint, w.span, format!("{}: an M code is a whole number", w.text())));
                 }
                 ms.push((w, profile.m_code(w.value as u32)));
             }
@@ -1043,7 +1092,12 @@ fn improper_address(step: &Step, w: &Word) -> Diagnostic {
         Rule::ImproperAddress,
         w.span,
         if matches!(letter, b'A' | b'B' | b'C' | b'Y') {
-            format!("address {} is not used on {} ({}): a machine with this axis declares it in the setup ([machine] axes)", letter as char, profile.name, w.text())
+            format!(
+                "address {} is not used on {} ({}): a machine with this axis declares it in the setup ([machine] axes)",
+                letter as char,
+                profile.name,
+                w.text()
+            )
         } else {
             format!("address {} is not used on {} ({})", crate::read::address_name(letter), profile.name, w.text())
         },
@@ -1088,7 +1142,11 @@ fn other_system(profile: &Profile, has: &dyn Fn(&Profile) -> bool) -> Option<Str
         .filter(|p| p.kind == profile.kind)
         .filter_map(|p| {
             let s = p.g_code_systems?;
-            let systems: Vec<String> = [("B", s.profile_b, s.b), ("C", s.profile_c, s.c)].into_iter().filter(|(_, v, _)| has(v)).map(|(n, _, key)| format!("{n} (--param {key}=1)")).collect();
+            let systems: Vec<String> = [("B", s.profile_b, s.b), ("C", s.profile_c, s.c)]
+                .into_iter()
+                .filter(|(_, v, _)| has(v))
+                .map(|(n, _, key)| format!("{n} (--param {key}=1)"))
+                .collect();
             (!systems.is_empty()).then(|| format!("{} in G-code system {}", p.name, systems.join(" or ")))
         })
         .collect();
@@ -1259,7 +1317,14 @@ fn sort_g_codes<'w>(step: &mut Step, gs: &[(&'w Word, &'static GDef)]) -> Result
         }
         // FANUC 0i-T manual: the codes a block may use in polar coordinate interpolation.
         if step.st.modes.polar_interp.is_some() && !polar::allowed(g.function) {
-            return Err(step.alarm(Rule::ImproperGCode, w.span, format!("{}: in polar coordinate interpolation (G12.1) a block may use G01, G02, G03, G04, G40-G42, G65-G67, G98, G99 and G13.1 only", w.text())));
+            return Err(step.alarm(
+                Rule::ImproperGCode,
+                w.span,
+                format!(
+                    "{}: in polar coordinate interpolation (G12.1) a block may use G01, G02, G03, G04, G40-G42, G65-G67, G98, G99 and G13.1 only",
+                    w.text()
+                ),
+            ));
         }
         if let GFn::NotYet(why) = g.function {
             return Err(step.alarm(Rule::NotSupported, w.span, format!("{} ({}): {why}", w.text(), g.meaning)));
@@ -1280,9 +1345,7 @@ fn sort_g_codes<'w>(step: &mut Step, gs: &[(&'w Word, &'static GDef)]) -> Result
         ));
     }
     if profile.group00_with_01_alarm {
-        if let (Some((_, w0, _)), Some((_, w1, _))) =
-            (non_modal.first(), last_of.iter().find(|(g, _, _)| *g == Group::Motion))
-        {
+        if let (Some((_, w0, _)), Some((_, w1, _))) = (non_modal.first(), last_of.iter().find(|(g, _, _)| *g == Group::Motion)) {
             // GSK: group 00 and group 01 may not share a block (TAC p65).
             return Err(step.alarm(
                 Rule::GroupConflict,
@@ -1303,7 +1366,11 @@ fn suspend_compensation(step: &mut Step, last_of: &[(Group, &Word, &'static GDef
     // return, a coordinate change or a T word runs uncompensated; the compensated path ends
     // before it (GSK980TDi help text, G40-G42 notes 5-6; FANUC threading likewise, inferred).
     // A chamfer's held move is made before the plane or the C-axis interpolation changes.
-    if !step.corners.is_empty() && last_of.iter().any(|(_, _, g)| matches!(g.function, GFn::PolarInterpolation(_) | GFn::CylindricalInterpolation | GFn::PlaneXY | GFn::PlaneZX | GFn::PlaneYZ)) {
+    if !step.corners.is_empty()
+        && last_of
+            .iter()
+            .any(|(_, _, g)| matches!(g.function, GFn::PolarInterpolation(_) | GFn::CylindricalInterpolation | GFn::PlaneXY | GFn::PlaneZX | GFn::PlaneYZ))
+    {
         corner::break_off(step);
     }
     if step.st.comp.side != 0 || !step.queue.is_empty() || !step.corners.is_empty() {
@@ -1348,8 +1415,7 @@ fn modal_codes(step: &mut Step, block: &Block, last_of: &[(Group, &Word, &'stati
     let mut codes = Codes::default();
     note_last_words(step.st, block);
     // GSK980TDi help text, G54-G59 note 6: with G50 in the block, G54-G59 are void.
-    let set_wins = profile.frame.coordinate_set_wins
-        && last_of.iter().any(|(_, _, g)| matches!(g.function, GFn::LatheCoordinateSet | GFn::MillCoordinateSet));
+    let set_wins = profile.frame.coordinate_set_wins && last_of.iter().any(|(_, _, g)| matches!(g.function, GFn::LatheCoordinateSet | GFn::MillCoordinateSet));
     for &(_, w, g) in last_of {
         if set_wins && matches!(g.function, GFn::WorkOffset(_) | GFn::AdditionalWorkOffset) {
             continue;
@@ -1361,7 +1427,11 @@ fn modal_codes(step: &mut Step, block: &Block, last_of: &[(Group, &Word, &'stati
         // G63 holds until another code of its group (G61, G62, G64). A tap in cutter
         // compensation is not simulated: the held moves would take the wrong block's rules.
         if g.function == GFn::TappingMode && st.comp.side != 0 {
-            return Err(step.alarm(Rule::NotSupported, w.span, format!("{}: tapping mode in cutter compensation (G41/G42) is not simulated: G40 first", w.text())));
+            return Err(step.alarm(
+                Rule::NotSupported,
+                w.span,
+                format!("{}: tapping mode in cutter compensation (G41/G42) is not simulated: G40 first", w.text()),
+            ));
         }
         if g.group == Group::PathMode {
             st.modes.tapping_mode = g.function == GFn::TappingMode;
@@ -1392,13 +1462,19 @@ fn modal_codes(step: &mut Step, block: &Block, last_of: &[(Group, &Word, &'stati
             // Step 6 puts the length offset in force, with the H of the block.
             // G62 slows inner corners in cutter compensation (interp/comp.rs).
             GFn::LengthComp(_) | GFn::PathControl | GFn::TappingMode | GFn::CornerOverride => {}
-            GFn::Rotation(_) | GFn::MirrorImage(_) | GFn::TurretMirror(_) | GFn::Scaling(_) | GFn::StrokeCheck(_) => codes.transforms.push((w.span, g.function)),
+            GFn::Rotation(_) | GFn::MirrorImage(_) | GFn::TurretMirror(_) | GFn::Scaling(_) | GFn::StrokeCheck(_) => {
+                codes.transforms.push((w.span, g.function))
+            }
             // Step 0 turned it on (from a radius and angle of 0) before reading the block.
             GFn::PolarCoordinates(on) => {
                 // On a lathe G16 is the polar interpolation plane's (GSK980TDi help text,
                 // G12.1/13.1: G15/G16 in that plane).
                 if on && profile.is_lathe() && st.modes.polar_interp.is_none() {
-                    return Err(step.alarm(Rule::PlaneMismatch, w.span, format!("{}: polar coordinate command on a lathe is for the polar interpolation plane: G12.1 first", w.text())));
+                    return Err(step.alarm(
+                        Rule::PlaneMismatch,
+                        w.span,
+                        format!("{}: polar coordinate command on a lathe is for the polar interpolation plane: G12.1 first", w.text()),
+                    ));
                 }
                 st.transform.polar = on;
             }
@@ -1446,19 +1522,27 @@ fn note_last_words(st: &mut crate::modal::Modal, block: &Block) {
 fn set_plane(step: &mut Step, w: &Word, function: GFn) -> Result<(), Diagnostic> {
     let st = &mut *step.st;
     let plane = match function {
-            GFn::PlaneXY => Plane::XY,
-            GFn::PlaneZX => Plane::ZX,
-            _ => Plane::YZ,
-        };
-        // FANUC 037; GSK980TDi help text, G17-G19 (no plane change in compensation).
-        if st.comp.side != 0 && plane != st.modes.plane {
-            return Err(step.alarm(Rule::CompPlaneChange, w.span, format!("{}: the plane cannot change while radius compensation is in force (G40 first)", w.text())));
-        }
-        // FANUC: no plane change in coordinate rotation (G69 first).
-        if st.transform.rotation.is_some_and(|r| r.plane != plane) {
-            return Err(step.alarm(Rule::NotSupported, w.span, format!("{}: a plane change under coordinate rotation (G68) is not simulated: G69 first", w.text())));
-        }
-        st.modes.plane = plane;
+        GFn::PlaneXY => Plane::XY,
+        GFn::PlaneZX => Plane::ZX,
+        _ => Plane::YZ,
+    };
+    // FANUC 037; GSK980TDi help text, G17-G19 (no plane change in compensation).
+    if st.comp.side != 0 && plane != st.modes.plane {
+        return Err(step.alarm(
+            Rule::CompPlaneChange,
+            w.span,
+            format!("{}: the plane cannot change while radius compensation is in force (G40 first)", w.text()),
+        ));
+    }
+    // FANUC: no plane change in coordinate rotation (G69 first).
+    if st.transform.rotation.is_some_and(|r| r.plane != plane) {
+        return Err(step.alarm(
+            Rule::NotSupported,
+            w.span,
+            format!("{}: a plane change under coordinate rotation (G68) is not simulated: G69 first", w.text()),
+        ));
+    }
+    st.modes.plane = plane;
     Ok(())
 }
 
@@ -1524,9 +1608,7 @@ fn held_thread_run(step: &mut Step, codes: &Codes, no_m_codes: bool, words: &Wor
     let mut run_deg = None;
     if let Some(p) = step.st.thread.take_some(|t| &mut t.pending) {
         let goes_on = match motion_now {
-            Motion::Thread(cmd) => {
-                has_axis && codes.non_modal.is_none() && no_m_codes && !words.has(b'T') && thread::continues(cmd, &p)
-            }
+            Motion::Thread(cmd) => has_axis && codes.non_modal.is_none() && no_m_codes && !words.has(b'T') && thread::continues(cmd, &p),
             _ => false,
         };
         if goes_on {
@@ -1542,7 +1624,14 @@ fn held_thread_run(step: &mut Step, codes: &Codes, no_m_codes: bool, words: &Wor
 
 /// Step 6 of [`run_block`]: H of tool length compensation, D of cutter compensation.
 #[inline(always)]
-fn offset_words(step: &mut Step, last_of: &[(Group, &Word, &'static GDef)], codes: &Codes, words: &mut Words, motion_now: Motion, has_axis: bool) -> Result<(), Diagnostic> {
+fn offset_words(
+    step: &mut Step,
+    last_of: &[(Group, &Word, &'static GDef)],
+    codes: &Codes,
+    words: &mut Words,
+    motion_now: Motion,
+    has_axis: bool,
+) -> Result<(), Diagnostic> {
     // 6. Tool length compensation takes H (the offset number); D belongs to cutter compensation.
     let length_code = last_of.iter().find_map(|(_, w, g)| if let GFn::LengthComp(s) = g.function { Some((w.span, s)) } else { None });
     let h_word = if length_code.is_some() || step.st.frame.length_sign != 0 { words.take(b'H') } else { None };
@@ -1617,7 +1706,13 @@ fn select_spindle(step: &mut Step, codes: &Codes, ms: &[(&Word, Option<&'static 
     let calls = ms.iter().any(|(_, m)| m.is_some_and(|m| matches!(m.function, MFn::SubprogramCall | MFn::SubprogramReturn)));
     // `P11` in a block of its own selects the spindle the next S and M codes are for.
     let p_alone = || words.all().iter().all(|w| w.letter == b'P') && codes.motion.is_none();
-    if !step.tables.spindle_p.is_empty() && (words.has(b'S') || spindle_m || p_alone()) && codes.non_modal.is_none() && !calls && codes.drill.or(step.st.drill.kind).is_none() && !thread_block {
+    if !step.tables.spindle_p.is_empty()
+        && (words.has(b'S') || spindle_m || p_alone())
+        && codes.non_modal.is_none()
+        && !calls
+        && codes.drill.or(step.st.drill.kind).is_none()
+        && !thread_block
+    {
         if let Some(w) = words.take(b'P') {
             let list = || step.tables.spindle_p.iter().map(|p| format!("P{p}")).collect::<Vec<_>>().join(", ");
             let Some(i) = step.tables.spindle_p.iter().position(|p| f64::from(*p) == w.value) else {
@@ -1645,12 +1740,19 @@ type SpindleNow = (SpindleDir, f64, bool, bool);
 
 /// Step 7 of [`run_block`]: S (the speed, or G50's clamp); the spindle as it was before.
 #[inline(always)]
-fn speed_word(step: &mut Step, codes: &Codes, last_of: &[(Group, &Word, &'static GDef)], words: &mut Words, motion_now: Motion) -> Result<SpindleNow, Diagnostic> {
+fn speed_word(
+    step: &mut Step,
+    codes: &Codes,
+    last_of: &[(Group, &Word, &'static GDef)],
+    words: &mut Words,
+    motion_now: Motion,
+) -> Result<SpindleNow, Diagnostic> {
     let profile = step.profile;
     let rigid_thread = matches!(motion_now, Motion::Thread(cmd) if thread::is_rigid(cmd));
     // G50 S on the lathes, G92 S on a machining centre with constant surface speed (FANUC 0i-M,
     // inferred for the 0-M): the maximum spindle speed.
-    let g50_clamp = matches!(codes.non_modal, Some((_, GFn::LatheCoordinateSet))) || (matches!(codes.non_modal, Some((_, GFn::MillCoordinateSet))) && profile.css_axis.is_some());
+    let g50_clamp = matches!(codes.non_modal, Some((_, GFn::LatheCoordinateSet)))
+        || (matches!(codes.non_modal, Some((_, GFn::MillCoordinateSet))) && profile.css_axis.is_some());
     let spindle_before = (step.st.modes.spindle, step.st.modes.s_word, step.st.modes.css, step.st.modes.spindle_position_mode);
     let s_word = if rigid_thread { None } else { words.take(b'S') };
     if let Some(w) = s_word {
@@ -1707,7 +1809,12 @@ fn tool_word(step: &mut Step, words: &mut Words, has_axis: bool) -> Result<(), D
 /// changes; the M codes that act after the motion, returned.
 #[allow(clippy::type_complexity)]
 #[inline(always)]
-fn m_codes_before<'w>(step: &mut Step, ms: &[(&'w Word, Option<&'static MDef>)], words: &mut Words<'w>, spindle_before: SpindleNow) -> Result<Vec<(&'w Word, MFn)>, Diagnostic> {
+fn m_codes_before<'w>(
+    step: &mut Step,
+    ms: &[(&'w Word, Option<&'static MDef>)],
+    words: &mut Words<'w>,
+    spindle_before: SpindleNow,
+) -> Result<Vec<(&'w Word, MFn)>, Diagnostic> {
     let profile = step.profile;
     // 8. M codes that act before motion: spindle and its mode.
     let mut after: Vec<(&'w Word, MFn)> = Vec::new();
@@ -1719,7 +1826,11 @@ fn m_codes_before<'w>(step: &mut Step, ms: &[(&'w Word, Option<&'static MDef>)],
             None => step.warn(
                 Rule::MachineSpecificM,
                 w.span,
-                format!("{} is not a standard M code of {}: passed to the machine, no effect simulated (a machine's own codes go in the setup's [machine] m_codes)", w.text(), profile.name),
+                format!(
+                    "{} is not a standard M code of {}: passed to the machine, no effect simulated (a machine's own codes go in the setup's [machine] m_codes)",
+                    w.text(),
+                    profile.name
+                ),
             ),
             Some(m) => match m.function {
                 MFn::SpindleCw => {
@@ -1737,7 +1848,11 @@ fn m_codes_before<'w>(step: &mut Step, ms: &[(&'w Word, Option<&'static MDef>)],
                 MFn::RigidTapping => {
                     // Help text G84/88: M29 may not be given again while the mode is on.
                     if step.st.drill.rigid_tap {
-                        return Err(step.alarm(Rule::RigidTapOrder, w.span, "M29: rigid tapping mode is on already (help text G84/88: M29 may not be repeated)"));
+                        return Err(step.alarm(
+                            Rule::RigidTapOrder,
+                            w.span,
+                            "M29: rigid tapping mode is on already (help text G84/88: M29 may not be repeated)",
+                        ));
                     }
                     step.st.drill.rigid_tap = true;
                     step.st.drill.tap_waiting = true;
@@ -1761,9 +1876,7 @@ fn m_codes_before<'w>(step: &mut Step, ms: &[(&'w Word, Option<&'static MDef>)],
     // direction or mode, or a new speed while it turns.
     let spindle_after = (step.st.modes.spindle, step.st.modes.s_word, step.st.modes.css, step.st.modes.spindle_position_mode);
     let turning = step.st.modes.spindle != SpindleDir::Stopped;
-    if spindle_before != spindle_after
-        && (turning || spindle_before.0 != spindle_after.0 || spindle_before.3 != spindle_after.3)
-    {
+    if spindle_before != spindle_after && (turning || spindle_before.0 != spindle_after.0 || spindle_before.3 != spindle_after.3) {
         emit_spindle(step);
     }
     Ok(after)
@@ -1772,7 +1885,15 @@ fn m_codes_before<'w>(step: &mut Step, ms: &[(&'w Word, Option<&'static MDef>)],
 /// Step 10 of [`run_block`]: the one-shot code, or the motion of the mode in force; then
 /// step 11 ([`finish_block`]).
 #[inline(always)]
-fn motion_of_block<'w>(step: &mut Step, words: &mut Words<'w>, codes: &Codes, after: Vec<(&'w Word, MFn)>, switches: Switches, has_axis: bool, run_deg: Option<f64>) -> Result<(), Diagnostic> {
+fn motion_of_block<'w>(
+    step: &mut Step,
+    words: &mut Words<'w>,
+    codes: &Codes,
+    after: Vec<(&'w Word, MFn)>,
+    switches: Switches,
+    has_axis: bool,
+    run_deg: Option<f64>,
+) -> Result<(), Diagnostic> {
     // 10. The one-shot code, or the motion of the mode in force.
     // A one-shot code other than G04 ends the box cycles' remembered X, Z and R (FANUC 0-T).
     if matches!(codes.non_modal, Some((_, f)) if f != GFn::Dwell) {
@@ -1824,7 +1945,11 @@ fn set_transforms(step: &mut Step, words: &mut Words, codes: &Codes) -> Result<b
     }
     if codes.transforms.iter().any(|(_, f)| !matches!(f, GFn::StrokeCheck(_))) && (step.st.drill.kind.is_some() || codes.drill.is_some()) {
         let (span, _) = codes.transforms[0];
-        return Err(step.alarm(Rule::NotSupported, span, "a coordinate rotation, scaling or mirror image set or ended in a drilling cycle is not simulated: cancel the cycle (G80) first"));
+        return Err(step.alarm(
+            Rule::NotSupported,
+            span,
+            "a coordinate rotation, scaling or mirror image set or ended in a drilling cycle is not simulated: cancel the cycle (G80) first",
+        ));
     }
     // The centres default to where the tool is, in programmed coordinates.
     let here = step.st.place.pos;
@@ -1863,20 +1988,40 @@ fn programmed_coordinates(step: &mut Step, words: &Words, codes: &Codes, has_axi
             Some((span, f)) => Some((span, step.profile.name_of(f))),
         };
         if let Some((span, code)) = what {
-            return Err(step.alarm(Rule::NotSupported, span, format!("{code} under coordinate rotation, scaling or mirror image (G68, G51, G51.1) is not simulated")));
+            return Err(step.alarm(
+                Rule::NotSupported,
+                span,
+                format!("{code} under coordinate rotation, scaling or mirror image (G68, G51, G51.1) is not simulated"),
+            ));
         }
         if step.st.comp.side != 0 {
-            return Err(step.alarm(Rule::NotSupported, step.span, "radius compensation under coordinate rotation, scaling or mirror image (G68, G51, G51.1) is not simulated"));
+            return Err(step.alarm(
+                Rule::NotSupported,
+                step.span,
+                "radius compensation under coordinate rotation, scaling or mirror image (G68, G51, G51.1) is not simulated",
+            ));
         }
         // An arc this block makes (its motion mode an arc, and axis or centre words in it).
-        let arc = matches!(codes.motion.map_or(step.st.modes.motion, |(_, m)| m), Motion::ArcCw | Motion::ArcCcw | Motion::Curve(_)) && (has_axis || b"RIJK".iter().any(|l| words.has(*l)));
+        let arc = matches!(codes.motion.map_or(step.st.modes.motion, |(_, m)| m), Motion::ArcCw | Motion::ArcCcw | Motion::Curve(_))
+            && (has_axis || b"RIJK".iter().any(|l| words.has(*l)));
         if let Some(why) = transform::arc_refused(&t, step.st.modes.plane).filter(|_| arc && codes.drill.or(step.st.drill.kind).is_none()) {
             return Err(step.alarm(Rule::NotSupported, step.span, format!("an arc under this transform is not simulated: {why}")));
         }
         // FANUC: Q and d of the peck cycles and the G76/G87 shift are not scaled (and the shift is
         // a direction of the machine): those cycles are not simulated under a transform.
-        if let Some(kind) = codes.drill.or(step.st.drill.kind).filter(|k| matches!(k, crate::codes::DrillKind::G73 | crate::codes::DrillKind::G83 | crate::codes::DrillKind::G76 | crate::codes::DrillKind::G87)) {
-            return Err(step.alarm(Rule::NotSupported, step.span, format!("{} under coordinate rotation, scaling or mirror image is not simulated (its Q and shift are not transformed on the controller)", kind.code())));
+        if let Some(kind) = codes
+            .drill
+            .or(step.st.drill.kind)
+            .filter(|k| matches!(k, crate::codes::DrillKind::G73 | crate::codes::DrillKind::G83 | crate::codes::DrillKind::G76 | crate::codes::DrillKind::G87))
+        {
+            return Err(step.alarm(
+                Rule::NotSupported,
+                step.span,
+                format!(
+                    "{} under coordinate rotation, scaling or mirror image is not simulated (its Q and shift are not transformed on the controller)",
+                    kind.code()
+                ),
+            ));
         }
         step.st.place.pos = transform::programmed(&t, step.st.place.pos);
         step.carry = Some(*t);
@@ -1888,29 +2033,31 @@ fn programmed_coordinates(step: &mut Step, words: &Words, codes: &Codes, has_axi
 #[inline(always)]
 fn one_shot(step: &mut Step, words: &mut Words, code: (Span, GFn)) -> Result<(), Diagnostic> {
     match code {
-    (_, GFn::Dwell) => dwell(step, words)?,
-    (_, GFn::CompoundThread(kind)) => compound::compound(step, words, kind)?,
-    (_, GFn::PeckCycle(kind)) => groove::block(step, words, kind)?,
-    (_, GFn::Rough(kind)) => rough::block(step, words, kind)?,
-    (_, GFn::Finish) => rough::finishing(step, words)?,
-    (span, GFn::ReferenceReturn) => frame::reference_return(step, words, 1, span)?,
-    (span, GFn::FromReference) => frame::from_reference(step, words, span)?,
-    (span, GFn::OtherReferenceReturn) => {
-        let n = frame::other_reference(step, words)?;
-        frame::reference_return(step, words, n, span)?;
-    }
-    (_, GFn::LatheCoordinateSet | GFn::MillCoordinateSet) => frame::set_coordinates(step, words)?,
-    (_, GFn::LocalCoordinates) => frame::local(step, words)?,
-    (span, GFn::DataSetting) => step.out.table_write = frame::data_setting(step, words, span)?,
-    // G11 outside the data lines: nothing to end (FANUC and GSK texts say nothing; inferred).
-    (_, GFn::DataSettingEnd) => {}
-    (span, GFn::CornerArc) => comp::corner_arc(step, words, span)?,
-    (span, GFn::OffsetMove(factor)) => frame::offset_move(step, words, factor, span)?,
-    (span, GFn::ReferenceCheck) => frame::reference_check(step, words, span)?,
-    (span, GFn::Skip) => skip(step, words, span)?,
-    (span, GFn::ToolMeasure(axis)) => tool_measure(step, words, axis, span)?,
-    (_, GFn::SingleDirection) => single_direction(step, words)?,
-    (span, f) => return Err(step.alarm(Rule::NotSupported, span, format!("{}: a one-shot command ncsight has no block function for", step.profile.name_of(f)))),
+        (_, GFn::Dwell) => dwell(step, words)?,
+        (_, GFn::CompoundThread(kind)) => compound::compound(step, words, kind)?,
+        (_, GFn::PeckCycle(kind)) => groove::block(step, words, kind)?,
+        (_, GFn::Rough(kind)) => rough::block(step, words, kind)?,
+        (_, GFn::Finish) => rough::finishing(step, words)?,
+        (span, GFn::ReferenceReturn) => frame::reference_return(step, words, 1, span)?,
+        (span, GFn::FromReference) => frame::from_reference(step, words, span)?,
+        (span, GFn::OtherReferenceReturn) => {
+            let n = frame::other_reference(step, words)?;
+            frame::reference_return(step, words, n, span)?;
+        }
+        (_, GFn::LatheCoordinateSet | GFn::MillCoordinateSet) => frame::set_coordinates(step, words)?,
+        (_, GFn::LocalCoordinates) => frame::local(step, words)?,
+        (span, GFn::DataSetting) => step.out.table_write = frame::data_setting(step, words, span)?,
+        // G11 outside the data lines: nothing to end (FANUC and GSK texts say nothing; inferred).
+        (_, GFn::DataSettingEnd) => {}
+        (span, GFn::CornerArc) => comp::corner_arc(step, words, span)?,
+        (span, GFn::OffsetMove(factor)) => frame::offset_move(step, words, factor, span)?,
+        (span, GFn::ReferenceCheck) => frame::reference_check(step, words, span)?,
+        (span, GFn::Skip) => skip(step, words, span)?,
+        (span, GFn::ToolMeasure(axis)) => tool_measure(step, words, axis, span)?,
+        (_, GFn::SingleDirection) => single_direction(step, words)?,
+        (span, f) => {
+            return Err(step.alarm(Rule::NotSupported, span, format!("{}: a one-shot command ncsight has no block function for", step.profile.name_of(f))))
+        }
     }
     Ok(())
 }
@@ -1977,7 +2124,10 @@ pub(super) fn codes_of<'a>(profile: &'a Profile, words: &'a [Word]) -> impl Iter
 /// words are not a point of the path).
 fn polar_reads(step: &Step, block: &Block) -> bool {
     codes_of(step.profile, &block.words).all(|g| {
-        !matches!((g.group, g.function), (_, GFn::PolarCoordinates(false) | GFn::Rotation(_) | GFn::MirrorImage(_) | GFn::Scaling(_) | GFn::StrokeCheck(_)) | (Group::NonModal, _))
+        !matches!(
+            (g.group, g.function),
+            (_, GFn::PolarCoordinates(false) | GFn::Rotation(_) | GFn::MirrorImage(_) | GFn::Scaling(_) | GFn::StrokeCheck(_)) | (Group::NonModal, _)
+        )
     })
 }
 
@@ -2135,11 +2285,7 @@ fn axis_target(step: &mut Step, words: &mut Words) -> Result<(Vec3, [Option<Give
         let inc_w = if profile.incremental_addresses { words.take(inc_l) } else { None };
         let scale = if axis == 0 && profile.diameter_x { 0.5 } else { 1.0 };
         if let (Some(a), Some(i)) = (abs_w, inc_w) {
-            return Err(step.alarm(
-                Rule::DuplicateWord,
-                i.span,
-                format!("{} and {} both give the {} axis", a.text(), i.text(), abs_l as char),
-            ));
+            return Err(step.alarm(Rule::DuplicateWord, i.span, format!("{} and {} both give the {} axis", a.text(), i.text(), abs_l as char)));
         }
         // Incremental words count from the position the controller shows: the tool's, plus a
         // tool offset's movement not made yet (FANUC 5002#6 LWM).
@@ -2169,7 +2315,11 @@ fn skip(step: &mut Step, words: &mut Words, span: Span) -> Result<(), Diagnostic
     let (target, _) = axis_target(step, words)?;
     let from = step.st.place.pos;
     let feed = step.cutting_feed(What::Name("G31"), &|u| lerp(&from, &target, u))?;
-    step.warn(Rule::NoSkipSignal, span, "G31: no skip signal comes in a simulation: the move runs to its end (the position a signal would store is its end point)");
+    step.warn(
+        Rule::NoSkipSignal,
+        span,
+        "G31: no skip signal comes in a simulation: the move runs to its end (the position a signal would store is its end point)",
+    );
     if target != from {
         step.emit(Op::Feed { from, to: target, feed_mm_min: feed });
     }
@@ -2191,7 +2341,11 @@ fn tool_measure(step: &mut Step, words: &mut Words, axis: u8, span: Span) -> Res
     let at = match (words.take(abs_l), inc) {
         (Some(w), None) => {
             let v = step.length(w)? * scale;
-            if step.st.modes.incremental { from.axis(axis) + v } else { v }
+            if step.st.modes.incremental {
+                from.axis(axis) + v
+            } else {
+                v
+            }
         }
         (None, Some(w)) => from.axis(axis) + step.length(w)? * scale,
         (Some(a), Some(i)) => return Err(step.alarm(Rule::DuplicateWord, i.span, format!("{} and {} both give the measuring position", a.text(), i.text()))),
@@ -2211,7 +2365,11 @@ fn tool_measure(step: &mut Step, words: &mut Words, axis: u8, span: Span) -> Res
     if target != via {
         step.emit(Op::Feed { from: via, to: target, feed_mm_min: feed });
     }
-    step.warn(Rule::NoMeasuringSignal, span, format!("{name}: no measuring signal comes in a simulation: the tool reaches the measuring position and the offset stays as it is"));
+    step.warn(
+        Rule::NoMeasuringSignal,
+        span,
+        format!("{name}: no measuring signal comes in a simulation: the tool reaches the measuring position and the offset stays as it is"),
+    );
     Ok(())
 }
 
@@ -2321,7 +2479,11 @@ fn motion(step: &mut Step, words: &mut Words) -> Result<(), Diagnostic> {
         Some(rules) if angle.is_some() || step.st.comp.angle_line.is_some() => {
             let Some(t) = drawing::line(step, rules, angle, target, given)? else {
                 if rotary.is_some() {
-                    return Err(step.alarm(Rule::NotSupported, step.span, "a rotary axis turned with a line of an angle alone is not simulated by ncsight yet"));
+                    return Err(step.alarm(
+                        Rule::NotSupported,
+                        step.span,
+                        "a rotary axis turned with a line of an angle alone is not simulated by ncsight yet",
+                    ));
                 }
                 return Ok(());
             };
@@ -2415,7 +2577,11 @@ fn resolve_arc(step: &mut Step, words: &mut Words, from: Vec3, to: Vec3, dir: Ar
         return match geom::arc_from_radius(from, to, plane, dir, r, ARC_TOLERANCE_MM) {
             Ok(g) => Ok(ArcOutcome::Arc(g)),
             Err(ArcError::ZeroArcWithR) => {
-                step.warn(Rule::ZeroArc, rw.span, format!("{} with {}: start and end coincide, a 0-degree arc (no motion)", gname.name(step.profile), rw.text()));
+                step.warn(
+                    Rule::ZeroArc,
+                    rw.span,
+                    format!("{} with {}: start and end coincide, a 0-degree arc (no motion)", gname.name(step.profile), rw.text()),
+                );
                 Ok(ArcOutcome::Zero)
             }
             Err(ArcError::RadiusTooSmall(r, half)) => Err(step.alarm(
@@ -2431,7 +2597,8 @@ fn resolve_arc(step: &mut Step, words: &mut Words, from: Vec3, to: Vec3, dir: Ar
         // point in a straight line (PS0022 when 1).
         let cir = step.profile.frame.arc_without_centre.filter(|_| matches!(gname, What::Code(GFn::ArcCw | GFn::ArcCcw)));
         if let Some(key) = cir.filter(|k| step.params.get(*k) == 0.0) {
-            let msg = format!("{} without R or {} {}: a straight move to the end point (parameter {key} CIR = 0)", gname.name(step.profile), la as char, lb as char);
+            let msg =
+                format!("{} without R or {} {}: a straight move to the end point (parameter {key} CIR = 0)", gname.name(step.profile), la as char, lb as char);
             step.warn(Rule::ArcAsLine, step.span, msg);
             return Ok(ArcOutcome::Straight);
         }

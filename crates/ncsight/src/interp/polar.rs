@@ -72,17 +72,29 @@ pub(super) fn plane_words(step: &mut Step, all: &[Word]) -> Result<Vec<Word>, Di
             }
             // Help text G12.1 notes 2 and 5: no tool change and no change of the tool offset.
             b'T' => {
-                return Err(step.alarm(Rule::ImproperAddress, w.span, format!("{}: no tool change or offset change in polar coordinate or cylindrical interpolation (help text G12.1 notes 2 and 5)", w.text())));
+                return Err(step.alarm(
+                    Rule::ImproperAddress,
+                    w.span,
+                    format!("{}: no tool change or offset change in polar coordinate or cylindrical interpolation (help text G12.1 notes 2 and 5)", w.text()),
+                ));
             }
             b'C' => b'Y',
             b'H' => b'V',
             b'Y' | b'V' => {
-                return Err(step.alarm(Rule::NotSupported, w.span, format!("{}: a Y axis move in polar coordinate or cylindrical interpolation is not simulated", w.text())));
+                return Err(step.alarm(
+                    Rule::NotSupported,
+                    w.span,
+                    format!("{}: a Y axis move in polar coordinate or cylindrical interpolation is not simulated", w.text()),
+                ));
             }
             // FANUC 0i-T manual, cylindrical interpolation: an arc's radius is R; I, J, K are
             // not used.
             b'I' | b'J' | b'K' if matches!(mode.kind, Hypothetical::Cylinder { .. }) => {
-                return Err(step.alarm(Rule::ArcDataMissing, w.span, format!("{}: an arc in cylindrical interpolation (G07.1) takes R, not I, J or K", w.text())));
+                return Err(step.alarm(
+                    Rule::ArcDataMissing,
+                    w.span,
+                    format!("{}: an arc in cylindrical interpolation (G07.1) takes R, not I, J or K", w.text()),
+                ));
             }
             l => l,
         };
@@ -134,7 +146,11 @@ fn switch_words(step: &mut Step, words: &mut Words, f: GFn, code: &str, span: Sp
     // GSK980TDi help text G7.1: type II, the roughing cycle, adds J, L, R, K.
     if radius_mm.is_some() {
         if let Some(w) = [b'J', b'L', b'R', b'K'].into_iter().find_map(|l| words.peek(l)) {
-            return Err(step.alarm(Rule::NotSupported, w.span, format!("{}: G07.1 type II (the cylindrical interpolation roughing cycle) is not simulated by ncsight yet", w.text())));
+            return Err(step.alarm(
+                Rule::NotSupported,
+                w.span,
+                format!("{}: G07.1 type II (the cylindrical interpolation roughing cycle) is not simulated by ncsight yet", w.text()),
+            ));
         }
     }
     if let Some(w) = words.first_unused() {
@@ -154,7 +170,11 @@ fn start_mode(step: &mut Step, f: GFn, code: &str, span: Span, radius_mm: Option
         return Err(step.alarm(Rule::ImproperGCode, span, format!("{code} while polar coordinate or cylindrical interpolation is in force: end it first")));
     }
     if !step.tables.rotary[C] {
-        return Err(step.alarm(Rule::ImproperAddress, span, format!("{code} needs the C axis: declare it in the setup ([machine] axes = [\"X\", \"Z\", \"C\"])")));
+        return Err(step.alarm(
+            Rule::ImproperAddress,
+            span,
+            format!("{code} needs the C axis: declare it in the setup ([machine] axes = [\"X\", \"Z\", \"C\"])"),
+        ));
     }
     let c_deg = step.st.place.rotary_deg[C];
     let kind = hypothetical_axis(step, span, radius_mm, c_deg)?;
@@ -183,11 +203,19 @@ fn hypothetical_axis(step: &Step, span: Span, radius_mm: Option<f64>, c_deg: f64
     Ok(match radius_mm {
         None => {
             if step.st.modes.per_rev && step.profile.frame.polar_refuses_per_rev {
-                return Err(step.alarm(Rule::ImproperGCode, span, "G12.1 under feed per revolution (G99): polar coordinate interpolation is in G98 (help text G12.1 note 3)"));
+                return Err(step.alarm(
+                    Rule::ImproperGCode,
+                    span,
+                    "G12.1 under feed per revolution (G99): polar coordinate interpolation is in G98 (help text G12.1 note 3)",
+                ));
             }
             // Note 4: polar coordinate interpolation starts with the C axis at 0 degrees.
             if (c_deg / 360.0).fract().abs() > 1e-9 {
-                return Err(step.alarm(Rule::ImproperGCode, span, format!("G12.1 with C at {} degrees: polar coordinate interpolation starts at C0 (help text G12.1 note 4)", crate::alarm::shown(c_deg, 3))));
+                return Err(step.alarm(
+                    Rule::ImproperGCode,
+                    span,
+                    format!("G12.1 with C at {} degrees: polar coordinate interpolation starts at C0 (help text G12.1 note 4)", crate::alarm::shown(c_deg, 3)),
+                ));
             }
             Hypothetical::Polar
         }
@@ -201,7 +229,13 @@ fn hypothetical_axis(step: &Step, span: Span, radius_mm: Option<f64>, c_deg: f64
             let sign = match step.st.modes.plane {
                 Plane::YZ => 1.0,
                 Plane::ZX => -1.0,
-                Plane::XY => return Err(step.alarm(Rule::PlaneMismatch, span, "G07.1 in the XY plane (G17): cylindrical interpolation is in the plane of Z and C (G18 or G19)")),
+                Plane::XY => {
+                    return Err(step.alarm(
+                        Rule::PlaneMismatch,
+                        span,
+                        "G07.1 in the XY plane (G17): cylindrical interpolation is in the plane of Z and C (G18 or G19)",
+                    ))
+                }
             };
             Hypothetical::Cylinder { radius_mm: r, sign }
         }
@@ -278,7 +312,12 @@ pub(super) fn push(step: &mut Step, span: Span, n: Option<u32>, op: Op, mode: Po
         let turn = (piece.angle_deg - a0).abs();
         if turn > 1e-12 {
             let rate = if seconds > 0.0 { turn / seconds } else { 0.0 };
-            step.push_machine(span, n, Op::Rotary { axis: b'C', from_deg: a0, to_deg: piece.angle_deg, rate_deg_min: rate, rapid: false, with_move: moved, linear: false }, accel);
+            step.push_machine(
+                span,
+                n,
+                Op::Rotary { axis: b'C', from_deg: a0, to_deg: piece.angle_deg, rate_deg_min: rate, rapid: false, with_move: moved, linear: false },
+                accel,
+            );
         }
         (r0, a0, z0) = (piece.radius_mm, piece.angle_deg, piece.z);
     }

@@ -7,10 +7,10 @@
 //! and T count there) and returns to its start point.
 
 use super::call::Flow;
+use super::deferred::MAX_DEFERRED_MOVES;
 use super::words::Words;
 use super::{run_block, Interpreter, Outcome, Step};
 use crate::alarm::{Diagnostic, Rule};
-use super::deferred::MAX_DEFERRED_MOVES;
 use crate::cycles::rough::{lay_out, lay_out_pattern, RoughError, RoughKind, RoughNote, Roughing, MAX_POCKETS};
 use crate::cycles::Expansion;
 use crate::modal::Motion;
@@ -114,7 +114,11 @@ pub(super) fn block(step: &mut Step, words: &mut Words, kind: RoughKind) -> Resu
     } else {
         let Some((depth_mm, back_off_mm)) = step.st.memory.rough_data[slot].filter(|d| d.0 > 0.0) else {
             let letter = if kind == RoughKind::Turning { 'U' } else { 'W' };
-            return Err(step.alarm(Rule::MissingWord, step.span, format!("{code} P{ns} Q{nf} needs the depth of cut first: a block {code} {letter}(Δd) R(e) before it")));
+            return Err(step.alarm(
+                Rule::MissingWord,
+                step.span,
+                format!("{code} P{ns} Q{nf} needs the depth of cut first: a block {code} {letter}(Δd) R(e) before it"),
+            ));
         };
         (depth_mm, back_off_mm, None)
     };
@@ -132,7 +136,8 @@ pub(super) fn block(step: &mut Step, words: &mut Words, kind: RoughKind) -> Resu
             step.warn(Rule::NotSimulated, w.span, msg);
         }
     }
-    step.out.rough_request = Some(Box::new(RoughRequest { kind, span: step.span, n: step.n, ns, nf, allowance, depth_mm, back_off_mm, pattern, start: step.st.place.pos }));
+    step.out.rough_request =
+        Some(Box::new(RoughRequest { kind, span: step.span, n: step.n, ns, nf, allowance, depth_mm, back_off_mm, pattern, start: step.st.place.pos }));
     Ok(())
 }
 
@@ -249,12 +254,30 @@ impl Interpreter {
             }
             // The contour is the programmed one (compensation of the finishing shape: docs/compensation.md);
             // its chamfers and corner arcs are made as in a run (docs/commands/drawing.md).
-            let mut step = Step { profile: self.profile, params: &self.params, tables: &self.tables, queue: &mut no_queue, corners: &mut corners, bypass_comp: true, contour: true, repair: None, span: b.span, n: b.sequence, st: &mut st, carry: None, out: &mut scratch };
+            let mut step = Step {
+                profile: self.profile,
+                params: &self.params,
+                tables: &self.tables,
+                queue: &mut no_queue,
+                corners: &mut corners,
+                bypass_comp: true,
+                contour: true,
+                repair: None,
+                span: b.span,
+                n: b.sequence,
+                st: &mut st,
+                carry: None,
+                out: &mut scratch,
+            };
             run_block(&mut step, b, self.switches)?;
             // GSK980TDi help text, G71 note 4 (G72, G73 likewise): no subprogramme call or
             // return in the contour blocks ns to nf; the roughing refuses it as G70 does.
             if let Some(Flow::Call { span, .. } | Flow::Return { span, .. }) = step.out.flow.take() {
-                return Err(self.contour_alarm(Rule::ContourCommand, span, format!("{code}: M98 and M99 may not be used in the contour blocks ns to nf (GSK980TDi manual, G71 note 4)")));
+                return Err(self.contour_alarm(
+                    Rule::ContourCommand,
+                    span,
+                    format!("{code}: M98 and M99 may not be used in the contour blocks ns to nf (GSK980TDi manual, G71 note 4)"),
+                ));
             }
             if !step.corners.is_empty() {
                 super::corner::end_of_block(&mut step)?;
@@ -264,7 +287,11 @@ impl Interpreter {
             }
             // The contour's blocks share one outcome: past the limit its moves would be lost.
             if scratch.emitted > super::MAX_MOTIONS_PER_BLOCK {
-                return Err(self.contour_alarm(Rule::MotionLimit, b.span, format!("{code}: the contour makes more than {} moves", super::MAX_MOTIONS_PER_BLOCK)));
+                return Err(self.contour_alarm(
+                    Rule::MotionLimit,
+                    b.span,
+                    format!("{code}: the contour makes more than {} moves", super::MAX_MOTIONS_PER_BLOCK),
+                ));
             }
             if scratch.rough_request.is_some() || scratch.finish_request.is_some() {
                 return Err(self.contour_alarm(Rule::ContourCommand, b.span, format!("{code}: a contour block cannot call a cycle itself")));
@@ -279,8 +306,22 @@ impl Interpreter {
                 ns_corner = st.comp.held_corner.is_some_and(|c| c.span == b.span);
             }
         }
-        // The last block may not leave a corner or a line without its end (FANUC alarm 069;
-        // GSK980TDi help text, angle programming note 8).
+        // Otherwise each block's end made its move (corner::end_of_block): nothing is held.
+        self.contour_end_held(code, blocks, &st)?;
+        debug_assert!(corners.is_empty());
+        let (ns_move, moves) = self.split_contour(code, blocks, &scratch.records, after_ns, ns_corner)?;
+        let notes = ContourNotes {
+            feed_warned: st.notes.feed_warned,
+            increment_words: scratch.increment_words,
+            increment_words_small: scratch.increment_words_small,
+            comp: *comp_at_ns,
+        };
+        Ok((ns_move, moves, scratch.warnings, notes))
+    }
+
+    /// The last block may not leave a corner or a line without its end (FANUC alarm 069;
+    /// GSK980TDi help text, angle programming note 8).
+    fn contour_end_held(&self, code: &str, blocks: &[Block], st: &crate::modal::Modal) -> Result<(), Diagnostic> {
         if let Some(last) = blocks.last() {
             let (corner, line) = (st.comp.held_corner, st.comp.angle_line);
             if corner.is_some() || line.is_some() {
@@ -288,26 +329,35 @@ impl Interpreter {
                     Some(c) => c.word(),
                     None => "a line of an angle alone".to_string(),
                 };
-                return Err(self.contour_alarm(Rule::ContourEndsInCorner, last.span, format!("{code}: the contour's last block leaves {what} without the move that ends it (FANUC alarm 069)")));
+                return Err(self.contour_alarm(
+                    Rule::ContourEndsInCorner,
+                    last.span,
+                    format!("{code}: the contour's last block leaves {what} without the move that ends it (FANUC alarm 069)"),
+                ));
             }
-            // Otherwise each block's end made its move (corner::end_of_block): nothing is held.
-            debug_assert!(corners.is_empty());
         }
-        let (ns_move, moves) = self.split_contour(code, blocks, &scratch.records, after_ns, ns_corner)?;
-        let notes = ContourNotes { feed_warned: st.notes.feed_warned, increment_words: scratch.increment_words, increment_words_small: scratch.increment_words_small, comp: *comp_at_ns };
-        Ok((ns_move, moves, scratch.warnings, notes))
+        Ok(())
     }
 
     /// The contour's records split into the ns block's one G00 or G01 move and the moves
     /// after it (help text notes 1, 2 and 7). `after_ns`: the motion mode and position after
     /// the ns block; `ns_corner`: a corner asked for in the ns block.
-    fn split_contour(&self, code: &str, blocks: &[Block], records: &[crate::motion::Record], after_ns: Option<(Motion, Vec3)>, ns_corner: bool) -> Result<(Op, Vec<Op>), Diagnostic> {
+    fn split_contour(
+        &self,
+        code: &str,
+        blocks: &[Block],
+        records: &[crate::motion::Record],
+        after_ns: Option<(Motion, Vec3)>,
+        ns_corner: bool,
+    ) -> Result<(Op, Vec<Op>), Diagnostic> {
         // Help text notes 1 and 2: the ns block makes one G00 or G01 move.
         let ns_span = blocks[0].span;
         // A corner asked for in the ns block (its chamfer, after its move) belongs to the contour.
         let first_ns = records.iter().position(|r| r.span == ns_span && r.op.end_point().is_some());
-        let in_contour = |i: usize, r: &crate::motion::Record| r.span != ns_span || (ns_corner && first_ns.is_some_and(|f| i > f) && r.op.end_point().is_some());
-        let ns_moves: Vec<&Op> = records.iter().enumerate().filter(|(i, r)| r.span == ns_span && r.op.end_point().is_some() && !in_contour(*i, r)).map(|(_, r)| &r.op).collect();
+        let in_contour =
+            |i: usize, r: &crate::motion::Record| r.span != ns_span || (ns_corner && first_ns.is_some_and(|f| i > f) && r.op.end_point().is_some());
+        let ns_moves: Vec<&Op> =
+            records.iter().enumerate().filter(|(i, r)| r.span == ns_span && r.op.end_point().is_some() && !in_contour(*i, r)).map(|(_, r)| &r.op).collect();
         let axis_word = blocks[0].words.iter().any(|w| b"XZUW".contains(&w.letter));
         let ns_move = match (ns_moves.as_slice(), after_ns) {
             ([op @ (Op::Rapid { .. } | Op::Feed { .. })], _) => (*op).clone(),
@@ -345,6 +395,48 @@ impl Interpreter {
         Ok((ns_move, moves))
     }
 
+    /// The alarm of a roughing the cycle cannot lay out (`hint`: the first warning of the
+    /// contour's blocks, which often says why).
+    fn rough_error(&self, e: RoughError, req: &RoughRequest, type_two: bool, hint: Option<&str>) -> Diagnostic {
+        let code = req.kind.code();
+        match e {
+            RoughError::NotMonotonic(axis) => {
+                let rule = if type_two { "type II roughing needs that along the cut axis" } else { "type I roughing needs that" };
+                let d = self.contour_alarm(
+                    Rule::ContourNotMonotonic,
+                    req.span,
+                    format!(
+                        "{code}: the contour N{}..N{} does not move one way only along {} ({rule}: help text note 3)",
+                        req.ns,
+                        req.nf,
+                        if axis == 0 { "X" } else { "Z" }
+                    ),
+                );
+                match hint {
+                    Some(h) => d.with_hint(format!("the contour's blocks warned: {h}")),
+                    None => d,
+                }
+            }
+            RoughError::TooManyPockets => self.contour_alarm(
+                Rule::ContourNotMonotonic,
+                req.span,
+                format!("{code}: the contour N{}..N{} has more than {MAX_POCKETS} pockets (help text type II, 2)", req.ns, req.nf),
+            ),
+            // Type II holds its levels; type I is counted against what a deferred block may make.
+            RoughError::TooMany => self.contour_alarm(
+                Rule::MotionLimit,
+                req.span,
+                format!(
+                    "{code}: more than {} roughing moves in one cycle (Δd too small)",
+                    if type_two { super::MAX_MOTIONS_PER_BLOCK } else { MAX_DEFERRED_MOVES }
+                ),
+            ),
+            RoughError::NotAPath => {
+                self.contour_alarm(Rule::ContourCommand, req.span, format!("{code}: the contour holds a move that is not a line or an arc"))
+            }
+        }
+    }
+
     /// Rough the collected contour (the records carry the G71/G72 block's span).
     fn rough_contour(&mut self, req: RoughRequest, blocks: &[Block], out: &mut Outcome) -> Result<(), Diagnostic> {
         let code = req.kind.code();
@@ -365,7 +457,11 @@ impl Interpreter {
             let has_length = ns_move.start_point().zip(ns_move.end_point()).is_some_and(|(a, b)| a.dist(&b) > 1e-9);
             if has_length {
                 contour = crate::comp::path(&contour, crate::motion::Plane::ZX, c.side as f64, c.radius_mm, c.tip).map_err(|e| {
-                    self.contour_alarm(super::comp::rule_of(e), req.span, format!("{code}: the finishing shape cannot be compensated by the nose radius {:.3} mm (the tool does not fit it)", c.radius_mm))
+                    self.contour_alarm(
+                        super::comp::rule_of(e),
+                        req.span,
+                        format!("{code}: the finishing shape cannot be compensated by the nose radius {:.3} mm (the tool does not fit it)", c.radius_mm),
+                    )
                 })?;
             }
         }
@@ -384,31 +480,24 @@ impl Interpreter {
         // The block names the depth axis (a move of no length included: the tool may stand there).
         if !has(if level_axis == 0 { b"XU" } else { b"ZW" }) {
             let axis = if level_axis == 0 { "X (U)" } else { "Z (W)" };
-            return Err(self.contour_alarm(Rule::ContourCommand, first.span, format!("{code}: the contour's first block N{} must move along {axis}, the axis {code} steps its depth on (help text note 2)", req.ns)));
+            return Err(self.contour_alarm(
+                Rule::ContourCommand,
+                first.span,
+                format!("{code}: the contour's first block N{} must move along {axis}, the axis {code} steps its depth on (help text note 2)", req.ns),
+            ));
         }
-        let r = Roughing { kind: req.kind, start: req.start, contour: &contour, allowance: req.allowance, depth_mm: req.depth_mm, back_off_mm: req.back_off_mm, ns_rapid, type_two, tolerance_mm: if self.state.modes.inch { 0.00254 } else { 0.001 } };
-        let rough = lay_out(&r, super::MAX_MOTIONS_PER_BLOCK).map_err(|e| match e {
-            RoughError::NotMonotonic(axis) => {
-                let rule = if type_two { "type II roughing needs that along the cut axis" } else { "type I roughing needs that" };
-                let d = self.contour_alarm(
-                    Rule::ContourNotMonotonic,
-                    req.span,
-                    format!("{code}: the contour N{}..N{} does not move one way only along {} ({rule}: help text note 3)", req.ns, req.nf, if axis == 0 { "X" } else { "Z" }),
-                );
-                match &hint {
-                    Some(h) => d.with_hint(format!("the contour's blocks warned: {h}")),
-                    None => d,
-                }
-            }
-            RoughError::TooManyPockets => self.contour_alarm(
-                Rule::ContourNotMonotonic,
-                req.span,
-                format!("{code}: the contour N{}..N{} has more than {MAX_POCKETS} pockets (help text type II, 2)", req.ns, req.nf),
-            ),
-            // Type II holds its levels; type I is counted against what a deferred block may make.
-            RoughError::TooMany => self.contour_alarm(Rule::MotionLimit, req.span, format!("{code}: more than {} roughing moves in one cycle (Δd too small)", if type_two { super::MAX_MOTIONS_PER_BLOCK } else { MAX_DEFERRED_MOVES })),
-            RoughError::NotAPath => self.contour_alarm(Rule::ContourCommand, req.span, format!("{code}: the contour holds a move that is not a line or an arc")),
-        })?;
+        let r = Roughing {
+            kind: req.kind,
+            start: req.start,
+            contour: &contour,
+            allowance: req.allowance,
+            depth_mm: req.depth_mm,
+            back_off_mm: req.back_off_mm,
+            ns_rapid,
+            type_two,
+            tolerance_mm: if self.state.modes.inch { 0.00254 } else { 0.001 },
+        };
+        let rough = lay_out(&r, super::MAX_MOTIONS_PER_BLOCK).map_err(|e| self.rough_error(e, &req, type_two, hint.as_deref()))?;
         // The depth axis, and the allowance word and axis along the cut.
         let (depth_axis, cut_word, cut_axis) = if req.kind == RoughKind::Facing { ("Z", "U", "X") } else { ("X", "W", "Z") };
         for n in &rough.notes {
@@ -425,8 +514,28 @@ impl Interpreter {
     /// A roughing's moves under the cycle block's span: made now when a block can hold them, else
     /// as they are handed on (interp/deferred.rs);
     /// past what either allows, the alarm `too_many` says of the most.
-    fn run_cycle(&mut self, req: &RoughRequest, moves: impl Expansion + 'static, out: &mut Outcome, too_many: &dyn Fn(usize) -> String) -> Result<(), Diagnostic> {
-        let mut step = Step { profile: self.profile, params: &self.params, tables: &self.tables, queue: &mut self.comp_queue, corners: &mut self.corner_queue, bypass_comp: true, contour: false, repair: None, span: req.span, n: req.n, st: &mut self.state, carry: None, out };
+    fn run_cycle(
+        &mut self,
+        req: &RoughRequest,
+        moves: impl Expansion + 'static,
+        out: &mut Outcome,
+        too_many: &dyn Fn(usize) -> String,
+    ) -> Result<(), Diagnostic> {
+        let mut step = Step {
+            profile: self.profile,
+            params: &self.params,
+            tables: &self.tables,
+            queue: &mut self.comp_queue,
+            corners: &mut self.corner_queue,
+            bypass_comp: true,
+            contour: false,
+            repair: None,
+            span: req.span,
+            n: req.n,
+            st: &mut self.state,
+            carry: None,
+            out,
+        };
         if step.defers(moves.move_count(), too_many)? {
             return step.defer_cuts(req.kind.code(), std::sync::Arc::new(moves));
         }
@@ -438,7 +547,21 @@ impl Interpreter {
     fn emit_cycle(&mut self, req: &RoughRequest, moves: &dyn Expansion, out: &mut Outcome) -> Result<(), Diagnostic> {
         let code = req.kind.code();
         let before = self.state;
-        let mut step = Step { profile: self.profile, params: &self.params, tables: &self.tables, queue: &mut self.comp_queue, corners: &mut self.corner_queue, bypass_comp: true, contour: false, repair: None, span: req.span, n: req.n, st: &mut self.state, carry: None, out };
+        let mut step = Step {
+            profile: self.profile,
+            params: &self.params,
+            tables: &self.tables,
+            queue: &mut self.comp_queue,
+            corners: &mut self.corner_queue,
+            bypass_comp: true,
+            contour: false,
+            repair: None,
+            span: req.span,
+            n: req.n,
+            st: &mut self.state,
+            carry: None,
+            out,
+        };
         let result = step.emit_each(code, moves).and_then(|()| {
             // The per-block limit (the cycle's moves come here, not through `execute_into`).
             if step.out.emitted > super::MAX_MOTIONS_PER_BLOCK {
@@ -523,7 +646,21 @@ impl Interpreter {
         let from = self.state.place.pos;
         let before = self.state;
         let mut scratch = Outcome::default();
-        let mut step = Step { profile: self.profile, params: &self.params, tables: &self.tables, queue: &mut self.comp_queue, corners: &mut self.corner_queue, bypass_comp: true, contour: false, repair: None, span: req.span, n: req.n, st: &mut self.state, carry: None, out: &mut scratch };
+        let mut step = Step {
+            profile: self.profile,
+            params: &self.params,
+            tables: &self.tables,
+            queue: &mut self.comp_queue,
+            corners: &mut self.corner_queue,
+            bypass_comp: true,
+            contour: false,
+            repair: None,
+            span: req.span,
+            n: req.n,
+            st: &mut self.state,
+            carry: None,
+            out: &mut scratch,
+        };
         super::corner::break_off(&mut step);
         super::comp::break_off(&mut step);
         if from != req.start || step.st.comp.actual.is_some() {

@@ -69,7 +69,8 @@ const LATHE_LONG: [(i64, Field); 9] = [
     (17000, Field::GeometryR),
     (19000, Field::GeometryY),
 ];
-const MILL_SHORT: [(i64, Field, u32); 4] = [(2000, Field::WearLength, 200), (2200, Field::Length, 200), (2400, Field::WearR, 200), (2600, Field::GeometryR, 200)];
+const MILL_SHORT: [(i64, Field, u32); 4] =
+    [(2000, Field::WearLength, 200), (2200, Field::Length, 200), (2400, Field::WearR, 200), (2600, Field::GeometryR, 200)];
 const MILL_LONG: [(i64, Field); 4] = [(10000, Field::WearLength), (11000, Field::Length), (12000, Field::WearR), (13000, Field::GeometryR)];
 
 /// The table slot of variable `number` on this profile's machine, if it is one.
@@ -93,7 +94,9 @@ fn slot(profile: &Profile, axes: &[u8], number: i64) -> Option<Slot> {
         }
     }
     let long: &[(i64, Field)] = if lathe { &LATHE_LONG } else { &MILL_LONG };
-    long.iter().find(|(base, _)| number > *base && number <= base + crate::setup::MAX_OFFSET_NUMBER as i64).map(|&(base, field)| Slot::Offset((number - base) as u32, field))
+    long.iter()
+        .find(|(base, _)| number > *base && number <= base + crate::setup::MAX_OFFSET_NUMBER as i64)
+        .map(|&(base, field)| Slot::Offset((number - base) as u32, field))
 }
 
 /// The field of an offset entry, as the offset screen shows it (X a diameter on a lathe).

@@ -22,7 +22,11 @@ pub const MAX_ARC_LEAD_MM: f64 = 9999.0;
 /// lathes do.
 pub(super) fn name(profile: &crate::profile::Profile, cmd: ThreadCmd) -> &'static str {
     let code = profile.name_of(crate::profile::GFn::Thread(cmd));
-    if code == "?" { default_name(cmd) } else { code }
+    if code == "?" {
+        default_name(cmd)
+    } else {
+        code
+    }
 }
 
 fn default_name(cmd: ThreadCmd) -> &'static str {
@@ -65,13 +69,24 @@ impl Step<'_> {
         if !w.decimal && self.params.integer_lengths() == IntegerLengths::LeastIncrement {
             v *= if self.st.modes.inch { 0.0001 } else { 0.001 };
         }
-        if self.st.modes.inch { v * 25.4 } else { v }
+        if self.st.modes.inch {
+            v * 25.4
+        } else {
+            v
+        }
     }
 
     /// Read F (and I threads per inch, E) into the lead in force; return the lead to use.
     /// The lead, and the hand where a negative F gives a left-hand thread (GSK980TDi G92.1 and
     /// G32.1: "F > 0 right hand, F < 0 left hand": the spindle turns the other way): -1.0 then.
-    pub(super) fn read_hand_lead(&mut self, words: &mut Words, gname: &str, negative_f_left_hand: bool, inch_i: bool, e_word: bool) -> Result<(f64, f64), Diagnostic> {
+    pub(super) fn read_hand_lead(
+        &mut self,
+        words: &mut Words,
+        gname: &str,
+        negative_f_left_hand: bool,
+        inch_i: bool,
+        e_word: bool,
+    ) -> Result<(f64, f64), Diagnostic> {
         if negative_f_left_hand {
             if let Some(w) = words.peek(b'F').filter(|w| w.value < 0.0) {
                 let mut positive = *w;
@@ -103,11 +118,7 @@ impl Step<'_> {
         let e = if e_word { words.take(b'E') } else { None };
         let given: Vec<Word> = [f, i, e].into_iter().flatten().copied().collect();
         if given.len() > 1 {
-            return Err(self.alarm(
-                Rule::DuplicateWord,
-                given[1].span,
-                format!("{} and {}: both give the lead of {gname}", given[0].text(), given[1].text()),
-            ));
+            return Err(self.alarm(Rule::DuplicateWord, given[1].span, format!("{} and {}: both give the lead of {gname}", given[0].text(), given[1].text())));
         }
         if let Some(w) = f.or(e) {
             let lead = self.lead_word(w);
@@ -125,11 +136,7 @@ impl Step<'_> {
         if let Some(w) = i {
             // Threads per inch, 0.06-25400 (TDi p150).
             if !(0.06..=25400.0).contains(&w.value) {
-                return Err(self.alarm(
-                    Rule::ValueOutOfRange,
-                    w.span,
-                    format!("{}: threads per inch must be 0.06 to 25400", w.text()),
-                ));
+                return Err(self.alarm(Rule::ValueOutOfRange, w.span, format!("{}: threads per inch must be 0.06 to 25400", w.text())));
             }
             self.st.thread.lead_mm = Some(25.4 / w.value);
         }
@@ -166,11 +173,7 @@ impl Step<'_> {
                     ));
                 }
                 QPoint::Ignored => {
-                    let msg = format!(
-                        "{}: the decimal point of Q is ignored, Q stays in 0.001 degree ({} degrees)",
-                        w.text(),
-                        w.value * unit_deg
-                    );
+                    let msg = format!("{}: the decimal point of Q is ignored, Q stays in 0.001 degree ({} degrees)", w.text(), w.value * unit_deg);
                     self.warn(Rule::DecimalIgnored, w.span, msg);
                 }
             }
@@ -268,11 +271,7 @@ impl Step<'_> {
 
     /// Compare a pass with the earlier passes of the same thread (same lead and start).
     fn remember_pass(&mut self, gname: &str, lead: f64, long_start: f64, depth: f64, rpm: f64, start_deg: f64) {
-        let same = self
-            .st
-            .thread
-            .memory
-            .filter(|m| (m.lead_mm - lead).abs() < 1e-9 && (m.long_start - long_start).abs() < 1e-6);
+        let same = self.st.thread.memory.filter(|m| (m.lead_mm - lead).abs() < 1e-9 && (m.long_start - long_start).abs() < 1e-6);
         let Some(m) = same else {
             self.st.thread.memory = Some(PassMemory { lead_mm: lead, long_start, rpm, start_deg, depth, last_infeed: None });
             return;
@@ -286,21 +285,13 @@ impl Step<'_> {
             self.warn(Rule::PassMismatch, self.span, msg);
         }
         if (m.start_deg - start_deg).abs() > 1e-9 {
-            let msg = format!(
-                "{gname}: this pass starts at {start_deg} degrees, the first at {} degrees: it cuts a different groove",
-                m.start_deg
-            );
+            let msg = format!("{gname}: this pass starts at {start_deg} degrees, the first at {} degrees: it cuts a different groove", m.start_deg);
             self.warn(Rule::PassMismatch, self.span, msg);
         }
         let infeed = (depth - m.depth).abs();
         if let Some(prev) = m.last_infeed {
             if infeed > prev + 1e-9 {
-                let msg = format!(
-                    "{gname}: infeed {:.3} mm (diameter {:.3}) is larger than the previous one, {:.3} mm",
-                    infeed,
-                    2.0 * infeed,
-                    prev
-                );
+                let msg = format!("{gname}: infeed {:.3} mm (diameter {:.3}) is larger than the previous one, {:.3} mm", infeed, 2.0 * infeed, prev);
                 self.warn(Rule::InfeedGrows, self.span, msg);
             }
         }
@@ -413,7 +404,8 @@ fn straight(step: &mut Step, words: &mut Words, cmd: ThreadCmd, run_deg: Option<
     // G32: J/K are modal and the run's pull-out uses the values in force at its end (TDi help
     // G32 note 1), so writing them does not end a run.
     // The GSK980TDi's G32.1 takes J/K as its G32 (inferred): they do not end the run there.
-    let ends_run = rigid && rules.k_zero_after_end && (j_given || k_given) && (step.st.thread.j.unwrap_or(0.0) != 0.0 || step.st.thread.k.unwrap_or(0.0) != 0.0);
+    let ends_run =
+        rigid && rules.k_zero_after_end && (j_given || k_given) && (step.st.thread.j.unwrap_or(0.0) != 0.0 || step.st.thread.k.unwrap_or(0.0) != 0.0);
     let end_deg = phase_after(start_deg, length, lead);
     step.st.place.pos = target;
     step.st.thread.pending = Some(PendingThread { span: step.span, n: step.n, body: PendingBody::Straight(pass), ends_run, rigid, end_deg });
@@ -422,7 +414,11 @@ fn straight(step: &mut Step, words: &mut Words, cmd: ThreadCmd, run_deg: Option<
 
 /// The sign of J: which way the short axis goes out.
 fn short_sign(j: f64) -> f64 {
-    if j < 0.0 { -1.0 } else { 1.0 }
+    if j < 0.0 {
+        -1.0
+    } else {
+        1.0
+    }
 }
 
 /// G32.1's pull-out on the GSK988T from the J and K in force. No J in force, or J0: none (seed
@@ -527,7 +523,13 @@ fn cycle(step: &mut Step, words: &mut Words, rules: &'static CycleRules, explici
     let retract = (a.axis(s) - c.axis(s)).abs();
     let toward_start = {
         let d = a.axis(s) - c.axis(s);
-        if d != 0.0 { d.signum() } else if c.axis(s) < 0.0 { -1.0 } else { 1.0 }
+        if d != 0.0 {
+            d.signum()
+        } else if c.axis(s) < 0.0 {
+            -1.0
+        } else {
+            1.0
+        }
     };
     let pull_out = cycle_pull_out(step, rules, lead, toward_start, retract);
     step.feed_warning(gname, lead, rpm);
@@ -609,13 +611,7 @@ fn cycle_end_point(step: &mut Step, words: &mut Words, rules: &'static CycleRule
     if !given_z {
         match remembered {
             Some(m) => c.z = m.z,
-            None => {
-                return Err(step.alarm(
-                    Rule::MissingWord,
-                    step.span,
-                    format!("{gname} needs the end point's Z (or W)"),
-                ))
-            }
+            None => return Err(step.alarm(Rule::MissingWord, step.span, format!("{gname} needs the end point's Z (or W)"))),
         }
     }
     if !given_x {
@@ -650,11 +646,7 @@ fn check_taper_limit(step: &Step, gname: &str, u_radius: f64, taper: f64, taper_
         return Err(step.alarm(
             Rule::TaperTooLarge,
             span,
-            format!(
-                "{gname}: R{taper} and U{} differ in sign, so |R| may be at most |U/2| = {:.3} mm",
-                2.0 * u_radius,
-                u_radius.abs()
-            ),
+            format!("{gname}: R{taper} and U{} differ in sign, so |R| may be at most |U/2| = {:.3} mm", 2.0 * u_radius, u_radius.abs()),
         ));
     }
     Ok(())
@@ -768,10 +760,10 @@ pub(super) fn jk_pull_out(step: &Step, j: Option<f64>, k: Option<f64>, tenths: f
     let (j, k) = (j.map(f64::abs), k.map(f64::abs));
     let no19 = tenths * 0.1 * lead;
     let (long, short) = match (j, k) {
-        (None, None) => (no19, no19),      // note 2
-        (None, Some(k)) => (k, no19),      // note 3
-        (Some(j), _) if j == 0.0 => return None, // notes 5 and 7
-        (Some(j), None) => (j, j),         // note 4
+        (None, None) => (no19, no19),             // note 2
+        (None, Some(k)) => (k, no19),             // note 3
+        (Some(j), _) if j == 0.0 => return None,  // notes 5 and 7
+        (Some(j), None) => (j, j),                // note 4
         (Some(j), Some(k)) if k == 0.0 => (j, j), // note 6
         (Some(j), Some(k)) => (k, j),
     };
@@ -811,10 +803,10 @@ fn jk_chamfer_pull_out(step: &Step, lead: f64, sign: f64, amount: ParamKey, angl
     let after_end = |j: f64| PullOut { long_mm: 0.0, short_mm: j, short_sign: sign, mode: PullOutMode::Ratio, after_end_feed: Some(step.after_end_feed()) };
     let (long, short) = match (j, k) {
         (None, None) => return chamfer_pull_out(step, lead, sign, amount, Some(angle)), // note 1
-        (None, Some(k)) => (k, chamfer), // note 2
-        (Some(j), _) if j == 0.0 => return None,   // notes 5 and 6
-        (Some(j), None) => return Some(after_end(j)), // note 3
-        (Some(j), Some(k)) if k == 0.0 => return Some(after_end(j)), // note 4
+        (None, Some(k)) => (k, chamfer),                                                // note 2
+        (Some(j), _) if j == 0.0 => return None,                                        // notes 5 and 6
+        (Some(j), None) => return Some(after_end(j)),                                   // note 3
+        (Some(j), Some(k)) if k == 0.0 => return Some(after_end(j)),                    // note 4
         (Some(j), Some(k)) => (k, j),
     };
     if short <= 0.0 {

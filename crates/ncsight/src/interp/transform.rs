@@ -88,8 +88,8 @@ pub(super) fn programmed(t: &Transforms, p: Vec3) -> Vec3 {
 /// mirrorings among the plane's two axes, a negative scale counting as one).
 fn reverses(t: &Transforms, plane: Plane) -> bool {
     let (a, b, _) = plane.axes();
-    let flips = [a, b].iter().filter(|&&i| t.mirror_axes & (1 << i) != 0).count()
-        + [a, b].iter().filter(|&&i| t.scaling.is_some_and(|s| s.factor[i] < 0.0)).count();
+    let flips =
+        [a, b].iter().filter(|&&i| t.mirror_axes & (1 << i) != 0).count() + [a, b].iter().filter(|&&i| t.scaling.is_some_and(|s| s.factor[i] < 0.0)).count();
     flips % 2 == 1
 }
 
@@ -155,7 +155,11 @@ pub(super) fn rotation(step: &mut Step, words: &mut Words, on: bool, span: crate
         Some(w) => {
             let v = step.degrees(w);
             let incremental = step.st.modes.incremental && keys.rotation_incremental.is_some_and(|k| step.params.get(k) != 0.0);
-            if incremental { before + v } else { v }
+            if incremental {
+                before + v
+            } else {
+                v
+            }
         }
         None => match keys.rotation_angle {
             Some(k) => step.params.get(k) * 0.001,
@@ -199,7 +203,11 @@ pub(super) fn mirror_image(step: &mut Step, words: &mut Words, on: bool, span: c
 pub(super) fn turret_mirror(step: &mut Step, on: bool, span: crate::source::Span) -> Result<(), Diagnostic> {
     if step.st.comp.side != 0 {
         let code = if on { "G68" } else { "G69" };
-        return Err(step.alarm(Rule::ImproperGCode, span, format!("{code} in tool nose radius compensation: cancel it (G40) first (YASNAC LX3 manual 2.8.24)")));
+        return Err(step.alarm(
+            Rule::ImproperGCode,
+            span,
+            format!("{code} in tool nose radius compensation: cancel it (G40) first (YASNAC LX3 manual 2.8.24)"),
+        ));
     }
     if on {
         step.st.transform.mirror_at.x = 0.0;
@@ -237,7 +245,11 @@ pub(super) fn scaling(step: &mut Step, words: &mut Words, on: bool, span: crate:
             return Err(step.alarm(Rule::WordNotTaken, w.span, format!("{}: G51 takes P (every axis) or I, J, K (each axis), not both", w.text())));
         }
         if w.value <= 0.0 {
-            return Err(step.alarm(Rule::ValueOutOfRange, w.span, format!("{}: G51's P is a positive magnification (a mirror image is a negative I, J or K)", w.text())));
+            return Err(step.alarm(
+                Rule::ValueOutOfRange,
+                w.span,
+                format!("{}: G51's P is a positive magnification (a mirror image is a negative I, J or K)", w.text()),
+            ));
         }
         factor = [magnification(w); 3];
     }
@@ -247,7 +259,11 @@ pub(super) fn scaling(step: &mut Step, words: &mut Words, on: bool, span: crate:
         }
     }
     if let Some(a) = factor.iter().position(|f| !f.is_finite() || *f == 0.0 || f.abs() > 999.999) {
-        return Err(step.alarm(Rule::ValueOutOfRange, span, format!("G51: the magnification of {} is {}: it must be other than 0 and at most 999.999", ["X", "Y", "Z"][a], factor[a])));
+        return Err(step.alarm(
+            Rule::ValueOutOfRange,
+            span,
+            format!("G51: the magnification of {} is {}: it must be other than 0 and at most 999.999", ["X", "Y", "Z"][a], factor[a]),
+        ));
     }
     step.st.transform.scaling = Some(Scaling { centre, factor });
     Ok(())

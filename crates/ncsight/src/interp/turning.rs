@@ -41,7 +41,10 @@ pub(super) fn block(step: &mut Step, words: &mut Words, kind: BoxKind) -> Result
         return Err(step.alarm(
             Rule::TaperTooLarge,
             span,
-            format!("{name}: {} and the step to the end point differ in sign, so its size may be at most |{letter}| = {shown:.3} mm", step.profile.box_taper as char),
+            format!(
+                "{name}: {} and the step to the end point differ in sign, so its size may be at most |{letter}| = {shown:.3} mm",
+                step.profile.box_taper as char
+            ),
         ));
     }
     step.st.memory.box_cycle = BoxMemory { end: Some(c), taper_mm };
@@ -55,11 +58,17 @@ pub(super) fn block(step: &mut Step, words: &mut Words, kind: BoxKind) -> Result
         match by_tip(&ops, comp.radius_mm, comp.tip) {
             Ok(Some(done)) => ops = done,
             Ok(None) => {
-                let msg = format!("{name}: the imaginary tool nose of the offset in force gives the cycle no side (tip 0, 9 or along the cut): the programmed cycle runs");
+                let msg = format!(
+                    "{name}: the imaginary tool nose of the offset in force gives the cycle no side (tip 0, 9 or along the cut): the programmed cycle runs"
+                );
                 step.warn(Rule::NotSimulated, step.span, msg);
             }
             Err(e) => {
-                return Err(step.alarm(super::comp::rule_of(e), step.span, format!("{name}: the cycle cannot be compensated by the nose radius {:.3} mm (the tool does not fit it)", comp.radius_mm)));
+                return Err(step.alarm(
+                    super::comp::rule_of(e),
+                    step.span,
+                    format!("{name}: the cycle cannot be compensated by the nose radius {:.3} mm (the tool does not fit it)", comp.radius_mm),
+                ));
             }
         }
     }

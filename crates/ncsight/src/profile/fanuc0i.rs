@@ -94,9 +94,24 @@ const MILL: &[ParamDef] = &[
 
 /// The 0i-TF's codes beyond the 0-T's that change nothing here.
 const TF_CODES: &[super::GDef] = &[
-    super::common::g(43, super::Group::LengthComp, super::GFn::NotYet("tool length compensation on a lathe (the mill-turn option)"), "tool length compensation + (the mill-turn option): not simulated yet"),
-    super::common::g(44, super::Group::LengthComp, super::GFn::NotYet("tool length compensation on a lathe (the mill-turn option)"), "tool length compensation - (the mill-turn option): not simulated yet"),
-    super::common::g(49, super::Group::LengthComp, super::GFn::LengthComp(0), "tool length compensation cancel (G43/G44 are not simulated: nothing is in force to cancel)"),
+    super::common::g(
+        43,
+        super::Group::LengthComp,
+        super::GFn::NotYet("tool length compensation on a lathe (the mill-turn option)"),
+        "tool length compensation + (the mill-turn option): not simulated yet",
+    ),
+    super::common::g(
+        44,
+        super::Group::LengthComp,
+        super::GFn::NotYet("tool length compensation on a lathe (the mill-turn option)"),
+        "tool length compensation - (the mill-turn option): not simulated yet",
+    ),
+    super::common::g(
+        49,
+        super::Group::LengthComp,
+        super::GFn::LengthComp(0),
+        "tool length compensation cancel (G43/G44 are not simulated: nothing is in force to cancel)",
+    ),
 ];
 
 /// Eight-digit programme numbers, an option of the 0i-F (its parameter not found: a setting).
@@ -104,7 +119,8 @@ const EIGHT_DIGIT: ParamKey = ParamKey::Setting("eight_digit_programs");
 
 const CALLS: &[ParamDef] = &[ParamDef {
     key: EIGHT_DIGIT,
-    meaning: "the eight-digit programme number option: 1 = M98 P and G65 P are the programme number alone (O1-O99999999), L the count; 0 = M98 P<count><four digits>",
+    meaning:
+        "the eight-digit programme number option: 1 = M98 P and G65 P are the programme number alone (O1-O99999999), L the count; 0 = M98 P<count><four digits>",
     unit: "bit",
     min: 0.0,
     max: 1.0,
@@ -166,7 +182,12 @@ const B_AND_C: &[GDef] = &[
     g(98, Group::ReturnLevel, GFn::ReturnInitial, "drilling cycles return to the initial level"),
     g(99, Group::ReturnLevel, GFn::ReturnR, "drilling cycles return to the R level"),
     g(32, Group::Motion, GFn::Thread(ThreadCmd::Lead), "thread cutting: F lead, Q start angle"),
-    g(34, Group::Motion, GFn::Thread(ThreadCmd::VariableLead), "variable-lead thread cutting: F the lead at the start, K its change per revolution, Q start angle"),
+    g(
+        34,
+        Group::Motion,
+        GFn::Thread(ThreadCmd::VariableLead),
+        "variable-lead thread cutting: F the lead at the start, K its change per revolution, Q start angle",
+    ),
 ];
 
 /// System B: A's multiple cycles' numbers (`lathe_a::MULTIPLE_CYCLES` and G76), G77/G78/G79
@@ -251,8 +272,10 @@ pub static TF: Profile = Profile {
     title: "FANUC 0i-TF lathe (G-code system A)",
     params: TF_PARAMS,
     g_codes: &[
-        super::Codes { source: "the FANUC 0-TC G-code table, system A (the 0i-TC where it lacks)", codes: super::common::G_CODES }, super::Codes { source: "the FANUC 0-TC G-code table, system A (the 0i-TC where it lacks)", codes: super::common::UNITS },
-        super::Codes { source: "the FANUC 0-TC G-code table, system A (the 0i-TC where it lacks)", codes: super::lathe_a::G_CODES }, super::Codes { source: "the FANUC 0-TC G-code table, system A (the 0i-TC where it lacks)", codes: super::lathe_a::MULTIPLE_CYCLES },
+        super::Codes { source: "the FANUC 0-TC G-code table, system A (the 0i-TC where it lacks)", codes: super::common::G_CODES },
+        super::Codes { source: "the FANUC 0-TC G-code table, system A (the 0i-TC where it lacks)", codes: super::common::UNITS },
+        super::Codes { source: "the FANUC 0-TC G-code table, system A (the 0i-TC where it lacks)", codes: super::lathe_a::G_CODES },
+        super::Codes { source: "the FANUC 0-TC G-code table, system A (the 0i-TC where it lacks)", codes: super::lathe_a::MULTIPLE_CYCLES },
         super::Codes { source: "FANUC 0i-T documentation (docs/profiles.md)", codes: fanuc0t::EXTRA },
         super::Codes { source: "FANUC 0i-T documentation (docs/commands/g83_g87_lathe.md)", codes: super::lathe_drill::CODES },
         super::Codes { source: "the FANUC 0-TC G-code table, system A (the 0i-TC where it lacks)", codes: super::later::FANUC_0T },
@@ -291,7 +314,14 @@ const MF_PARAMS: &[&[ParamDef]] = &[
 ];
 
 /// The 0i-MF's codes beyond the 0-M's.
-const MF_CODES: &[GDef] = &[super::common::gp(54, 1, "G54.1", Group::WorkOffset, GFn::AdditionalWorkOffset, "additional work coordinate system P1-P48 (the setup's [work] \"G54.1\" list)")];
+const MF_CODES: &[GDef] = &[super::common::gp(
+    54,
+    1,
+    "G54.1",
+    Group::WorkOffset,
+    GFn::AdditionalWorkOffset,
+    "additional work coordinate system P1-P48 (the setup's [work] \"G54.1\" list)",
+)];
 
 pub static MF: Profile = Profile {
     name: "fanuc0i-mf",

@@ -1,10 +1,9 @@
 //! FANUC 0-M machining centre: seed 003 (drilling canned cycles G73-G89).
 
 use super::common::{self, g, m};
-use super::{SETTINGS, DRY_RUN, QPoint, ThreadRules, GDef, GFn, Group, IntegerLengths, MDef, MFn, MachineKind, ParamDef, ParamKey, Profile, TimeKeys};
+use super::{GDef, GFn, Group, IntegerLengths, MDef, MFn, MachineKind, ParamDef, ParamKey, Profile, QPoint, ThreadRules, TimeKeys, DRY_RUN, SETTINGS};
 use crate::alarm::AlarmStyle;
 use crate::codes::DrillKind;
-
 
 pub(super) const G_CODES: &[GDef] = &[
     g(43, Group::LengthComp, GFn::LengthComp(1), "tool length compensation +"),
@@ -35,10 +34,7 @@ pub(super) const G_CODES: &[GDef] = &[
     g(99, Group::ReturnLevel, GFn::ReturnR, "canned cycle: return to the R point"),
 ];
 
-pub(super) const M_CODES: &[MDef] = &[
-    m(6, MFn::ToolChange, "tool change"),
-    m(19, MFn::Auxiliary, "spindle orientation"),
-];
+pub(super) const M_CODES: &[MDef] = &[m(6, MFn::ToolChange, "tool change"), m(19, MFn::Auxiliary, "spindle orientation")];
 
 /// Coordinate rotation and scaling (FANUC 0i numbering, inferred for the FANUC 0-M).
 pub(super) const TRANSFORMS: &[ParamDef] = &[
@@ -233,15 +229,35 @@ pub(super) const BASE: Profile = Profile {
     addresses: super::Letters::new("GMSTFXYZIJKRPQLHDN"),
     peck_back_off: None,
     box_taper: b'R',
-    g_codes: &[super::Codes { source: "FANUC 0-M manual, canned cycles (seed 003) and the FANUC 0i-MC G-code table", codes: common::G_CODES }, super::Codes { source: "FANUC 0-M manual, canned cycles (seed 003) and the FANUC 0i-MC G-code table", codes: common::UNITS }, super::Codes { source: "FANUC 0-M manual, canned cycles (seed 003) and the FANUC 0i-MC G-code table", codes: G_CODES }, super::Codes { source: "the FANUC 0i-MC G-code table (the 0-M's own table was not at hand)", codes: super::later::FANUC_0M }],
-    m_codes: &[super::Codes { source: "FANUC 0-M manual (seed 003: M03-M05 in the tapping cycles); FANUC 0i-MC M codes", codes: common::M_CODES }, super::Codes { source: "FANUC 0-M manual (seed 003) and FANUC 0i-MC M codes", codes: M_CODES }],
+    g_codes: &[
+        super::Codes { source: "FANUC 0-M manual, canned cycles (seed 003) and the FANUC 0i-MC G-code table", codes: common::G_CODES },
+        super::Codes { source: "FANUC 0-M manual, canned cycles (seed 003) and the FANUC 0i-MC G-code table", codes: common::UNITS },
+        super::Codes { source: "FANUC 0-M manual, canned cycles (seed 003) and the FANUC 0i-MC G-code table", codes: G_CODES },
+        super::Codes { source: "the FANUC 0i-MC G-code table (the 0-M's own table was not at hand)", codes: super::later::FANUC_0M },
+    ],
+    m_codes: &[
+        super::Codes { source: "FANUC 0-M manual (seed 003: M03-M05 in the tapping cycles); FANUC 0i-MC M codes", codes: common::M_CODES },
+        super::Codes { source: "FANUC 0-M manual (seed 003) and FANUC 0i-MC M codes", codes: M_CODES },
+    ],
     params: &[PARAMS_0I, PARAMS, TRANSFORMS, super::FANUC_INPUT, DRY_RUN, super::builder::FANUC, super::FANUC_MACRO, super::FANUC_G60, SETTINGS],
     time: TimeKeys {
         rapid: [ParamKey::Number(518, None), ParamKey::Number(519, None), ParamKey::Number(520, None)],
         dry_run: ParamKey::Setting("dry_run_mm_min"),
         feed_max: ParamKey::Number(527, None),
     },
-    thread: ThreadRules { q_point: QPoint::Alarm, arc_q_unit_deg: 0.001, pull_out_speed: None, after_end_feed: None, pull_out_accel: None, repair_enable: None, g32_pull_out: false, g32_lead_e: false, g76: None, g34: super::G34_FANUC, g32_1: super::G32_1_GSK988T },
+    thread: ThreadRules {
+        q_point: QPoint::Alarm,
+        arc_q_unit_deg: 0.001,
+        pull_out_speed: None,
+        after_end_feed: None,
+        pull_out_accel: None,
+        repair_enable: None,
+        g32_pull_out: false,
+        g32_lead_e: false,
+        g76: None,
+        g34: super::G34_FANUC,
+        g32_1: super::G32_1_GSK988T,
+    },
     drill: super::DrillRules {
         g73_retract_um: Some(ParamKey::Number(531, None)),
         g83_clearance_um: Some(ParamKey::Number(532, None)),

@@ -5,9 +5,9 @@
 
 use super::common::{self, g};
 use super::lathe_a;
-use super::{FANUC_RATES, Compound, 
-    CycleRules, HoldRule, JkWords, PullOutRule, GDef, GFn, Group, IntegerLengths, MachineKind, ParamDef, ParamKey, Profile, QPoint, ThreadCmd,
-    ThreadRules, TimeKeys, DRY_RUN, SETTINGS,
+use super::{
+    Compound, CycleRules, GDef, GFn, Group, HoldRule, IntegerLengths, JkWords, MachineKind, ParamDef, ParamKey, Profile, PullOutRule, QPoint, ThreadCmd,
+    ThreadRules, TimeKeys, DRY_RUN, FANUC_RATES, SETTINGS,
 };
 use crate::alarm::AlarmStyle;
 
@@ -37,7 +37,12 @@ pub(super) const EXTRA: &[GDef] = &[
     g(32, Group::Motion, GFn::Thread(ThreadCmd::Lead), "thread cutting: F lead, Q start angle"),
     g(92, Group::Motion, GFn::Thread(ThreadCmd::Cycle(&G92)), "thread cutting cycle: R taper, F lead, Q start angle"),
     g(76, Group::NonModal, GFn::CompoundThread(Compound::G76), "compound thread cutting cycle, two blocks"),
-    g(34, Group::Motion, GFn::Thread(ThreadCmd::VariableLead), "variable-lead thread cutting: F the lead at the start, K its change per revolution, Q start angle"),
+    g(
+        34,
+        Group::Motion,
+        GFn::Thread(ThreadCmd::VariableLead),
+        "variable-lead thread cutting: F the lead at the start, K its change per revolution, Q start angle",
+    ),
 ];
 
 pub(super) const PARAMS: &[ParamDef] = &[
@@ -89,9 +94,31 @@ pub(super) const BASE: Profile = Profile {
     addresses: super::Letters::new("GMSTFXZUWRIKPQLN"),
     peck_back_off: Some(ParamKey::Number(5139, None)),
     box_taper: b'R',
-    g_codes: &[super::Codes { source: "the FANUC 0-TC G-code table, system A (the 0i-TC where it lacks)", codes: common::G_CODES }, super::Codes { source: "the FANUC 0-TC G-code table, system A (the 0i-TC where it lacks)", codes: common::UNITS }, super::Codes { source: "the FANUC 0-TC G-code table, system A (the 0i-TC where it lacks)", codes: lathe_a::G_CODES }, super::Codes { source: "the FANUC 0-TC G-code table, system A (the 0i-TC where it lacks)", codes: lathe_a::MULTIPLE_CYCLES }, super::Codes { source: "FANUC 0i-T documentation (inferred for the 0-T; docs/profiles.md)", codes: EXTRA }, super::Codes { source: "FANUC 0i-T documentation (inferred for the 0-T; docs/commands/g83_g87_lathe.md)", codes: super::lathe_drill::CODES }, super::Codes { source: "the FANUC 0-TC G-code table, system A (the 0i-TC where it lacks)", codes: super::later::FANUC_0T }],
-    m_codes: &[super::Codes { source: "FANUC 0i-TC M codes (inferred for the 0-T)", codes: common::M_CODES }, super::Codes { source: "FANUC 0i-TC M codes (inferred for the 0-T)", codes: lathe_a::M_CODES }],
-    params: &[FANUC_RATES, PARAMS, super::lathe_drill::PARAMS, super::FANUC_G76, super::FANUC_INPUT, DRY_RUN, super::builder::FANUC, super::FANUC_MACRO, super::FANUC_LATHE_OFFSETS, SETTINGS],
+    g_codes: &[
+        super::Codes { source: "the FANUC 0-TC G-code table, system A (the 0i-TC where it lacks)", codes: common::G_CODES },
+        super::Codes { source: "the FANUC 0-TC G-code table, system A (the 0i-TC where it lacks)", codes: common::UNITS },
+        super::Codes { source: "the FANUC 0-TC G-code table, system A (the 0i-TC where it lacks)", codes: lathe_a::G_CODES },
+        super::Codes { source: "the FANUC 0-TC G-code table, system A (the 0i-TC where it lacks)", codes: lathe_a::MULTIPLE_CYCLES },
+        super::Codes { source: "FANUC 0i-T documentation (inferred for the 0-T; docs/profiles.md)", codes: EXTRA },
+        super::Codes { source: "FANUC 0i-T documentation (inferred for the 0-T; docs/commands/g83_g87_lathe.md)", codes: super::lathe_drill::CODES },
+        super::Codes { source: "the FANUC 0-TC G-code table, system A (the 0i-TC where it lacks)", codes: super::later::FANUC_0T },
+    ],
+    m_codes: &[
+        super::Codes { source: "FANUC 0i-TC M codes (inferred for the 0-T)", codes: common::M_CODES },
+        super::Codes { source: "FANUC 0i-TC M codes (inferred for the 0-T)", codes: lathe_a::M_CODES },
+    ],
+    params: &[
+        FANUC_RATES,
+        PARAMS,
+        super::lathe_drill::PARAMS,
+        super::FANUC_G76,
+        super::FANUC_INPUT,
+        DRY_RUN,
+        super::builder::FANUC,
+        super::FANUC_MACRO,
+        super::FANUC_LATHE_OFFSETS,
+        SETTINGS,
+    ],
     time: TimeKeys {
         rapid: [ParamKey::Number(1420, None), ParamKey::Number(1420, None), ParamKey::Number(1420, None)],
         dry_run: ParamKey::Setting("dry_run_mm_min"),

@@ -2,11 +2,13 @@
 
 use super::common::{self, g, gp};
 use super::lathe_a;
-use super::{Compound, Curve, G76Keys, SETTINGS, DRY_RUN, CycleRules, HoldRule, JkWords, PullOutRule, QPoint, ThreadCmd, ThreadRules, GDef, GFn, Group, IntegerLengths, MachineKind, ParamDef, ParamKey, Profile, TimeKeys};
+use super::{
+    Compound, Curve, CycleRules, G76Keys, GDef, GFn, Group, HoldRule, IntegerLengths, JkWords, MachineKind, ParamDef, ParamKey, Profile, PullOutRule, QPoint,
+    ThreadCmd, ThreadRules, TimeKeys, DRY_RUN, SETTINGS,
+};
 use crate::alarm::AlarmStyle;
 use crate::codes::DrillKind;
 use crate::motion::ArcDir;
-
 
 /// M29 S_: rigid tapping mode (help text G84/88).
 const TAPPING_M: &[super::MDef] = &[super::MDef { code: 29, function: super::MFn::RigidTapping, meaning: "rigid tapping mode: with S, before G84/G88" }];
@@ -75,7 +77,14 @@ static G92_1: CycleRules = CycleRules {
 const EXTRA: &[GDef] = &[
     g(32, Group::Motion, GFn::Thread(ThreadCmd::Lead), "thread cutting: F lead or I threads per inch, J/K pull-out, Q start angle"),
     g(92, Group::Motion, GFn::Thread(ThreadCmd::Cycle(&G92)), "thread cutting cycle (GSK980TDi manual, G92)"),
-    gp(32, 1, "G32.1", Group::Motion, GFn::Thread(ThreadCmd::Rigid), "rigid thread cutting: C the start angle, F(I) the lead (negative: left hand), J/K pull-out, S the speed; M14 first"),
+    gp(
+        32,
+        1,
+        "G32.1",
+        Group::Motion,
+        GFn::Thread(ThreadCmd::Rigid),
+        "rigid thread cutting: C the start angle, F(I) the lead (negative: left hand), J/K pull-out, S the speed; M14 first",
+    ),
     gp(32, 2, "G32.2", Group::Motion, GFn::Thread(ThreadCmd::Arc(ArcDir::Cw)), "arc thread, clockwise"),
     gp(32, 3, "G32.3", Group::Motion, GFn::Thread(ThreadCmd::Arc(ArcDir::Ccw)), "arc thread, counter-clockwise"),
     g(76, Group::NonModal, GFn::CompoundThread(Compound::G76), "compound thread cutting cycle, two blocks"),
@@ -240,15 +249,49 @@ pub static PROFILE: Profile = Profile {
     addresses: super::Letters::new("GMSTFXZUWRIJKPQLNDEAB"),
     peck_back_off: Some(ParamKey::Number(56, None)),
     box_taper: b'R',
-    g_codes: &[super::Codes { source: "GSK980TDi help text (G-code list)", codes: common::G_CODES }, super::Codes { source: "GSK980TDi help text (G-code list)", codes: common::UNITS }, super::Codes { source: "GSK980TDi help text (G-code list)", codes: lathe_a::G_CODES }, super::Codes { source: "GSK980TDi help text (G-code list)", codes: lathe_a::MULTIPLE_CYCLES }, super::Codes { source: "GSK980TDi manual, G92 (seed 000) and help text", codes: EXTRA }, super::Codes { source: "GSK980TDi help text, G05/05.1, G6.2/6.3, G7.2/7.3; Q's sense from the GSK980TDc manual", codes: CURVES }, super::Codes { source: "GSK980TDi help text (G-code list)", codes: super::later::GSK980TDI }],
-    m_codes: &[super::Codes { source: "GSK980TDi help text (M-code list)", codes: common::M_CODES }, super::Codes { source: "GSK980TDi help text (M-code list)", codes: lathe_a::M_CODES }, super::Codes { source: "GSK980TDi help text (M-code list)", codes: lathe_a::GSK_M_CODES }, super::Codes { source: "GSK980TDi help text, G84/G88", codes: TAPPING_M }, super::Codes { source: "GSK980TDi help text, M24/25, M50-58, M63/64/65", codes: SECOND_SPINDLE_M }],
+    g_codes: &[
+        super::Codes { source: "GSK980TDi help text (G-code list)", codes: common::G_CODES },
+        super::Codes { source: "GSK980TDi help text (G-code list)", codes: common::UNITS },
+        super::Codes { source: "GSK980TDi help text (G-code list)", codes: lathe_a::G_CODES },
+        super::Codes { source: "GSK980TDi help text (G-code list)", codes: lathe_a::MULTIPLE_CYCLES },
+        super::Codes { source: "GSK980TDi manual, G92 (seed 000) and help text", codes: EXTRA },
+        super::Codes { source: "GSK980TDi help text, G05/05.1, G6.2/6.3, G7.2/7.3; Q's sense from the GSK980TDc manual", codes: CURVES },
+        super::Codes { source: "GSK980TDi help text (G-code list)", codes: super::later::GSK980TDI },
+    ],
+    m_codes: &[
+        super::Codes { source: "GSK980TDi help text (M-code list)", codes: common::M_CODES },
+        super::Codes { source: "GSK980TDi help text (M-code list)", codes: lathe_a::M_CODES },
+        super::Codes { source: "GSK980TDi help text (M-code list)", codes: lathe_a::GSK_M_CODES },
+        super::Codes { source: "GSK980TDi help text, G84/G88", codes: TAPPING_M },
+        super::Codes { source: "GSK980TDi help text, M24/25, M50-58, M63/64/65", codes: SECOND_SPINDLE_M },
+    ],
     params: &[PARAMS, DRY_RUN, super::builder::GSK980TDI, super::GSK_LATHE_OFFSETS, SETTINGS],
     time: TimeKeys {
         rapid: [ParamKey::Number(22, None), ParamKey::Number(22, None), ParamKey::Number(22, None)],
         dry_run: ParamKey::Setting("dry_run_mm_min"),
         feed_max: ParamKey::Number(27, None),
     },
-    thread: ThreadRules { q_point: QPoint::Ignored, arc_q_unit_deg: 0.001, pull_out_speed: Some(ParamKey::Number(107, None)), after_end_feed: None, pull_out_accel: None, repair_enable: Some(ParamKey::Number(174, Some(4))), g32_pull_out: true, g32_lead_e: false, g76: Some(G76Keys { finishing: ParamKey::Number(57, None), pull_out: ParamKey::Number(19, None), angle: ParamKey::Number(58, None), dmin_um: ParamKey::Number(59, None), allowance: ParamKey::Number(60, None), allowance_to_mm: 1.0, pull_out_angle: None }), g34: super::G34_GSK, g32_1: super::G32_1_GSK980TDI },
+    thread: ThreadRules {
+        q_point: QPoint::Ignored,
+        arc_q_unit_deg: 0.001,
+        pull_out_speed: Some(ParamKey::Number(107, None)),
+        after_end_feed: None,
+        pull_out_accel: None,
+        repair_enable: Some(ParamKey::Number(174, Some(4))),
+        g32_pull_out: true,
+        g32_lead_e: false,
+        g76: Some(G76Keys {
+            finishing: ParamKey::Number(57, None),
+            pull_out: ParamKey::Number(19, None),
+            angle: ParamKey::Number(58, None),
+            dmin_um: ParamKey::Number(59, None),
+            allowance: ParamKey::Number(60, None),
+            allowance_to_mm: 1.0,
+            pull_out_angle: None,
+        }),
+        g34: super::G34_GSK,
+        g32_1: super::G32_1_GSK980TDI,
+    },
     drill: super::DrillRules::NONE,
     calls: super::CallRules {
         max_count: 9999,

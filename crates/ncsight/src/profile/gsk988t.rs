@@ -4,7 +4,10 @@
 
 use super::common::{self, g, gp};
 use super::lathe_a;
-use super::{Compound, FANUC_RATES, SETTINGS, CycleRules, HoldRule, JkWords, PullOutRule, GFn, QPoint, ThreadCmd, ThreadRules, GDef, Group, IntegerLengths, MachineKind, ParamDef, ParamKey, Profile, TimeKeys};
+use super::{
+    Compound, CycleRules, GDef, GFn, Group, HoldRule, IntegerLengths, JkWords, MachineKind, ParamDef, ParamKey, Profile, PullOutRule, QPoint, ThreadCmd,
+    ThreadRules, TimeKeys, FANUC_RATES, SETTINGS,
+};
 use crate::alarm::AlarmStyle;
 use crate::motion::ArcDir;
 
@@ -38,9 +41,19 @@ static G92_1: CycleRules = G92_1_RULES;
 static G92: CycleRules = CycleRules { code: "G92", rigid: false, hold: HoldRule::AfterRun, ..G92_1_RULES };
 
 const EXTRA: &[GDef] = &[
-    g(34, Group::Motion, GFn::Thread(ThreadCmd::VariableLead), "variable-lead thread cutting: F, R per revolution, J/K (GSK988T manual 2.16.2, its example G34 W-78 F4 J5 K2 R0.2)"),
+    g(
+        34,
+        Group::Motion,
+        GFn::Thread(ThreadCmd::VariableLead),
+        "variable-lead thread cutting: F, R per revolution, J/K (GSK988T manual 2.16.2, its example G34 W-78 F4 J5 K2 R0.2)",
+    ),
     g(32, Group::Motion, GFn::Thread(ThreadCmd::Lead), "thread cutting: F lead or I threads per inch, J/K pull-out, Q start angle"),
-    g(92, Group::Motion, GFn::Thread(ThreadCmd::Cycle(&G92)), "thread cutting cycle: R taper, F lead, J/K pull-out, L starts, Q start angle (GSK988TA/TB manual, G92)"),
+    g(
+        92,
+        Group::Motion,
+        GFn::Thread(ThreadCmd::Cycle(&G92)),
+        "thread cutting cycle: R taper, F lead, J/K pull-out, L starts, Q start angle (GSK988TA/TB manual, G92)",
+    ),
     gp(32, 1, "G32.1", Group::Motion, GFn::Thread(ThreadCmd::Rigid), "rigid thread cutting (GSK988T manual)"),
     gp(32, 2, "G32.2", Group::Motion, GFn::Thread(ThreadCmd::Arc(ArcDir::Cw)), "arc thread, clockwise (GSK988T manual, G32.2/G32.3)"),
     gp(32, 3, "G32.3", Group::Motion, GFn::Thread(ThreadCmd::Arc(ArcDir::Ccw)), "arc thread, counter-clockwise (GSK988T manual, G32.2/G32.3)"),
@@ -49,7 +62,12 @@ const EXTRA: &[GDef] = &[
 
 /// Codes whose GSK988T page was not at hand, run as the GSK980TDi's.
 const AS_GSK980TDI: &[GDef] = &[
-    g(76, Group::NonModal, GFn::CompoundThread(Compound::G76), "compound thread cutting cycle, two blocks (the GSK988T manual's definitions page agrees: sqrt(n) depths, flank infeed)"),
+    g(
+        76,
+        Group::NonModal,
+        GFn::CompoundThread(Compound::G76),
+        "compound thread cutting cycle, two blocks (the GSK988T manual's definitions page agrees: sqrt(n) depths, flank infeed)",
+    ),
     g(33, Group::Motion, GFn::Thread(ThreadCmd::Tap), "tapping: in, spindle reversed, out"),
 ];
 
@@ -130,18 +148,48 @@ pub static PROFILE: Profile = Profile {
     addresses: super::Letters::new("GMSTFXYZUVWRIJKPQLN"),
     peck_back_off: None,
     box_taper: b'R',
-    g_codes: &[super::Codes { source: "inferred from the GSK980TDi help text (the GSK988T G-code table was not at hand)", codes: common::G_CODES }, super::Codes { source: "inferred from the GSK980TDi help text (the GSK988T G-code table was not at hand)", codes: common::UNITS }, super::Codes { source: "inferred from the GSK980TDi help text (the GSK988T G-code table was not at hand)", codes: lathe_a::G_CODES }, super::Codes { source: "inferred from the GSK980TDi help text (the GSK988T G-code table was not at hand)", codes: lathe_a::MULTIPLE_CYCLES }, super::Codes { source: "GSK988T manual: G32.1, G92.1, G32.2/G32.3, thread repair (seeds 001, 002); G92 of the GSK988TA/TB manual; G34 of the GSK988T manual", codes: EXTRA }, super::Codes { source: "inferred from the GSK980TDi help text (the GSK988T page was not at hand)", codes: AS_GSK980TDI }, super::Codes { source: "GSK988T manual G-code table (G12.1/G13.1); the rest inferred from the GSK980TDi help text", codes: super::later::GSK988T }, super::Codes { source: "inferred: the FANUC 0-T's drilling cycles (the GSK988T follows FANUC's numbering; its drilling page was not at hand)", codes: super::lathe_drill::CODES }],
-    m_codes: &[super::Codes { source: "inferred from the GSK980TDi help text (M-code list)", codes: common::M_CODES }, super::Codes { source: "inferred from the GSK980TDi help text (M-code list)", codes: lathe_a::M_CODES }, super::Codes { source: "GSK988T manual, G32.1 (M14/M15); the rest inferred from the GSK980TDi help text", codes: lathe_a::GSK_M_CODES }],
+    g_codes: &[
+        super::Codes { source: "inferred from the GSK980TDi help text (the GSK988T G-code table was not at hand)", codes: common::G_CODES },
+        super::Codes { source: "inferred from the GSK980TDi help text (the GSK988T G-code table was not at hand)", codes: common::UNITS },
+        super::Codes { source: "inferred from the GSK980TDi help text (the GSK988T G-code table was not at hand)", codes: lathe_a::G_CODES },
+        super::Codes { source: "inferred from the GSK980TDi help text (the GSK988T G-code table was not at hand)", codes: lathe_a::MULTIPLE_CYCLES },
+        super::Codes {
+            source: "GSK988T manual: G32.1, G92.1, G32.2/G32.3, thread repair (seeds 001, 002); G92 of the GSK988TA/TB manual; G34 of the GSK988T manual",
+            codes: EXTRA,
+        },
+        super::Codes { source: "inferred from the GSK980TDi help text (the GSK988T page was not at hand)", codes: AS_GSK980TDI },
+        super::Codes { source: "GSK988T manual G-code table (G12.1/G13.1); the rest inferred from the GSK980TDi help text", codes: super::later::GSK988T },
+        super::Codes {
+            source: "inferred: the FANUC 0-T's drilling cycles (the GSK988T follows FANUC's numbering; its drilling page was not at hand)",
+            codes: super::lathe_drill::CODES,
+        },
+    ],
+    m_codes: &[
+        super::Codes { source: "inferred from the GSK980TDi help text (M-code list)", codes: common::M_CODES },
+        super::Codes { source: "inferred from the GSK980TDi help text (M-code list)", codes: lathe_a::M_CODES },
+        super::Codes { source: "GSK988T manual, G32.1 (M14/M15); the rest inferred from the GSK980TDi help text", codes: lathe_a::GSK_M_CODES },
+    ],
     params: &[FANUC_RATES, PARAMS, super::lathe_drill::PARAMS, super::FANUC_G76, super::GSK_LATHE_OFFSETS, SETTINGS],
     time: TimeKeys {
         rapid: [ParamKey::Number(1420, None), ParamKey::Number(1420, None), ParamKey::Number(1420, None)],
         dry_run: ParamKey::Number(1410, None),
         feed_max: ParamKey::Number(1422, None),
     },
-    thread: ThreadRules { q_point: QPoint::Alarm, arc_q_unit_deg: 1.0, pull_out_speed: None, after_end_feed: Some(ParamKey::Number(1466, None)), pull_out_accel: Some(ParamKey::Number(1628, None)), repair_enable: Some(ParamKey::Number(8135, Some(7))), g32_pull_out: true, g32_lead_e: false,
+    thread: ThreadRules {
+        q_point: QPoint::Alarm,
+        arc_q_unit_deg: 1.0,
+        pull_out_speed: None,
+        after_end_feed: Some(ParamKey::Number(1466, None)),
+        pull_out_accel: Some(ParamKey::Number(1628, None)),
+        repair_enable: Some(ParamKey::Number(8135, Some(7))),
+        g32_pull_out: true,
+        g32_lead_e: false,
         // The GSK988T numbers its parameters as FANUC does (1022, 1422 on its G01/G02 page;
         // 5130/5131 in G92.1): the FANUC 0i-T G76 numbers are assumed.
-        g76: Some(super::FANUC_G76_KEYS), g34: super::G34_GSK, g32_1: super::G32_1_GSK988T },
+        g76: Some(super::FANUC_G76_KEYS),
+        g34: super::G34_GSK,
+        g32_1: super::G32_1_GSK988T,
+    },
     drill: super::lathe_drill::RULES,
     calls: super::CallRules {
         max_count: 9999,
@@ -162,7 +210,11 @@ pub static PROFILE: Profile = Profile {
         table_variables: false,
         ..super::MacroRules::FANUC
     },
-    frame: super::FrameRules { source: "inferred: as the GSK980TDi help text (G54-G59 note 6, G28 note 2, G30 note 3)", drawing: None, ..super::FrameRules::GSK },
+    frame: super::FrameRules {
+        source: "inferred: as the GSK980TDi help text (G54-G59 note 6, G28 note 2, G30 note 3)",
+        drawing: None,
+        ..super::FrameRules::GSK
+    },
     g_code_systems: None,
     summary: "GSK988T turning centre with a servo (CS) spindle: M14 position mode, M15 speed mode. \
 X is a diameter, U/W incremental; lengths without a decimal point are millimetres.",

@@ -6,7 +6,6 @@
 use super::common::{g, gp};
 use super::{GDef, GFn, Group};
 
-
 /// FANUC 0-M (the 0-M list as the FANUC 0i-MC manual gives it; seed 003's table of contents
 /// names G27-G30, G52, G53, G92).
 pub(super) const FANUC_0M: &[GDef] = &[
@@ -34,7 +33,12 @@ pub(super) const FANUC_0M: &[GDef] = &[
     gp(51, 1, "G51.1", Group::MirrorImage, GFn::MirrorImage(true), "programmable mirror image on"),
     g(52, Group::NonModal, GFn::LocalCoordinates, "local coordinate system"),
     g(60, Group::NonModal, GFn::SingleDirection, "single direction positioning"),
-    g(62, Group::PathMode, GFn::CornerOverride, "automatic corner override: the feed lowered about inner corners in cutter compensation (parameters 1711-1714)"),
+    g(
+        62,
+        Group::PathMode,
+        GFn::CornerOverride,
+        "automatic corner override: the feed lowered about inner corners in cutter compensation (parameters 1711-1714)",
+    ),
     g(63, Group::PathMode, GFn::TappingMode, "tapping mode: feed override 100 %, FEED HOLD at the block's end"),
     g(65, Group::NonModal, GFn::MacroCall, "custom macro call"),
     g(66, Group::MacroCall, GFn::ModalMacroCall, "custom macro modal call"),
@@ -47,10 +51,24 @@ pub(super) const FANUC_0M: &[GDef] = &[
 
 /// FANUC 0-T, G-code system A (the FANUC 0-TC G-code table; the 0i-TC for what it lacks).
 pub(super) const FANUC_0T: &[GDef] = &[
-    gp(7, 1, "G07.1", Group::NonModal, GFn::CylindricalInterpolation, "cylindrical interpolation: G07.1 C<radius> on, G07.1 C0 off; Z and C (degrees) on the unrolled cylinder"),
+    gp(
+        7,
+        1,
+        "G07.1",
+        Group::NonModal,
+        GFn::CylindricalInterpolation,
+        "cylindrical interpolation: G07.1 C<radius> on, G07.1 C0 off; Z and C (degrees) on the unrolled cylinder",
+    ),
     g(10, Group::NonModal, GFn::DataSetting, "programmable data input (offsets, work offsets; L50 parameters)"),
     g(11, Group::NonModal, GFn::DataSettingEnd, "programmable data input cancel (the end of G10 L50's parameter lines)"),
-    gp(12, 1, "G12.1", Group::Polar, GFn::PolarInterpolation(true), "polar coordinate interpolation on: X (a diameter) and the hypothetical C (a length) made by X and the C axis"),
+    gp(
+        12,
+        1,
+        "G12.1",
+        Group::Polar,
+        GFn::PolarInterpolation(true),
+        "polar coordinate interpolation on: X (a diameter) and the hypothetical C (a length) made by X and the C axis",
+    ),
     gp(13, 1, "G13.1", Group::Polar, GFn::PolarInterpolation(false), "polar coordinate interpolation off"),
     g(22, Group::StrokeCheck, GFn::StrokeCheck(true), "stored stroke check 2 on: X Y Z the upper limits, I J K the lower, machine coordinates"),
     g(23, Group::StrokeCheck, GFn::StrokeCheck(false), "stored stroke check 2 off"),
@@ -66,17 +84,36 @@ pub(super) const FANUC_0T: &[GDef] = &[
     g(65, Group::NonModal, GFn::MacroCall, "custom macro call"),
     g(66, Group::MacroCall, GFn::ModalMacroCall, "custom macro modal call"),
     g(67, Group::MacroCall, GFn::ModalMacroCancel, "custom macro modal call cancel"),
-    g(68, Group::Rotation, GFn::TurretMirror(true), "mirror image for double turrets on: X mirrored about the centre line (the turret shift, parameter 1290, not applied)"),
+    g(
+        68,
+        Group::Rotation,
+        GFn::TurretMirror(true),
+        "mirror image for double turrets on: X mirrored about the centre line (the turret shift, parameter 1290, not applied)",
+    ),
     g(69, Group::Rotation, GFn::TurretMirror(false), "mirror image for double turrets off"),
 ];
 
 /// GSK980TDi (every code of the on-line help text).
 pub(super) const GSK980TDI: &[GDef] = &[
-    gp(7, 1, "G07.1", Group::NonModal, GFn::CylindricalInterpolation, "cylindrical interpolation, type I: G07.1 C<radius> on, G07.1 C0 off (type II, the roughing cycle, is not simulated)"),
+    gp(
+        7,
+        1,
+        "G07.1",
+        Group::NonModal,
+        GFn::CylindricalInterpolation,
+        "cylindrical interpolation, type I: G07.1 C<radius> on, G07.1 C0 off (type II, the roughing cycle, is not simulated)",
+    ),
     g(9, Group::NonModal, GFn::PathControl, "exact stop for one block (no effect here: every move of ncsight's time model ends at rest)"),
     g(10, Group::NonModal, GFn::DataSetting, "data input from the programme (L3: tool life; L52: parameters)"),
     g(11, Group::NonModal, GFn::DataSettingEnd, "data input cancel (the end of G10 L3's or L52's lines)"),
-    gp(12, 1, "G12.1", Group::Polar, GFn::PolarInterpolation(true), "polar coordinate interpolation on: X (a diameter) and the hypothetical C (a length) made by X and the C axis"),
+    gp(
+        12,
+        1,
+        "G12.1",
+        Group::Polar,
+        GFn::PolarInterpolation(true),
+        "polar coordinate interpolation on: X (a diameter) and the hypothetical C (a length) made by X and the C axis",
+    ),
     gp(13, 1, "G13.1", Group::Polar, GFn::PolarInterpolation(false), "polar coordinate interpolation off"),
     g(15, Group::Polar2, GFn::PolarCoordinates(false), "polar coordinate command off: Cartesian X, C in the polar interpolation plane"),
     g(16, Group::Polar2, GFn::PolarCoordinates(true), "polar coordinate command on, in the polar interpolation plane: X the radius, C the angle"),
@@ -98,7 +135,14 @@ pub(super) const GSK980TDI: &[GDef] = &[
 pub(super) const GSK988T: &[GDef] = &[
     g(10, Group::NonModal, GFn::DataSetting, "data input from the programme: L3 tool life, L52 parameters (inferred)"),
     g(11, Group::NonModal, GFn::DataSettingEnd, "data input cancel (inferred)"),
-    gp(12, 1, "G12.1", Group::Polar, GFn::PolarInterpolation(true), "polar coordinate interpolation on: X (a diameter) and the hypothetical C (a length) made by X and the C axis"),
+    gp(
+        12,
+        1,
+        "G12.1",
+        Group::Polar,
+        GFn::PolarInterpolation(true),
+        "polar coordinate interpolation on: X (a diameter) and the hypothetical C (a length) made by X and the C axis",
+    ),
     gp(13, 1, "G13.1", Group::Polar, GFn::PolarInterpolation(false), "polar coordinate interpolation off"),
     g(22, Group::StrokeCheck, GFn::StrokeCheck(true), "stored stroke check 2 on: X Y Z the upper limits, I J K the lower, machine coordinates (inferred)"),
     g(23, Group::StrokeCheck, GFn::StrokeCheck(false), "stored stroke check 2 off (inferred)"),

@@ -4,9 +4,9 @@
 
 use super::common::{g, m};
 use super::{GDef, GFn, Group, MDef, MFn};
+use crate::codes::BoxKind;
 use crate::codes::PeckKind;
 use crate::codes::RoughKind;
-use crate::codes::BoxKind;
 
 pub(super) const LATER_G76: GFn = GFn::NotYet("the G76 compound threading cycle is not simulated by ncsight yet");
 

@@ -13,9 +13,9 @@ mod fanuc0m;
 mod fanuc0t;
 mod gsk980tdi;
 mod gsk988t;
+mod later;
 mod lathe_a;
 mod lathe_drill;
-mod later;
 mod meaning_zh;
 mod yasnac_lx3;
 
@@ -436,7 +436,8 @@ pub struct BuilderCalls {
 impl BuilderCalls {
     /// No such calls known (no manual text at hand).
     pub const NONE: BuilderCalls = BuilderCalls { g_macro: None, m_subprogram: None, m_macro: None, m9000: false };
-    pub const FANUC: BuilderCalls = BuilderCalls { g_macro: Some((6050, 9010, 10)), m_subprogram: Some((6071, 9001, 9)), m_macro: Some((6080, 9020, 10)), m9000: false };
+    pub const FANUC: BuilderCalls =
+        BuilderCalls { g_macro: Some((6050, 9010, 10)), m_subprogram: Some((6071, 9001, 9)), m_macro: Some((6080, 9020, 10)), m9000: false };
 
     /// The parameters the calls read.
     pub fn keys(&self) -> impl Iterator<Item = ParamKey> + '_ {
@@ -862,7 +863,8 @@ pub struct VariableLeadRules {
 pub const G34_GSK: VariableLeadRules = VariableLeadRules { change: b'R', pull_out_words: true, change_max_mm: None, lead_rule: crate::alarm::Rule::ThreadData };
 /// G34 on the FANUC 0-T: K, ±0.0001 to ±500 mm/rev, alarm 014 (FANUC 0-TD programming notes;
 /// docs/commands/g76.md).
-pub const G34_FANUC: VariableLeadRules = VariableLeadRules { change: b'K', pull_out_words: false, change_max_mm: Some(500.0), lead_rule: crate::alarm::Rule::IllegalLead };
+pub const G34_FANUC: VariableLeadRules =
+    VariableLeadRules { change: b'K', pull_out_words: false, change_max_mm: Some(500.0), lead_rule: crate::alarm::Rule::IllegalLead };
 
 /// The parameters of G76 (GSK No.57/19/58/59/60; FANUC 5142/5130/5143/5140/5141).
 #[derive(Debug, Clone, Copy)]
@@ -1204,9 +1206,33 @@ pub const FANUC_INPUT: &[ParamDef] = &[ParamDef {
 /// axis approaches from (FANUC 0i 5440, per axis; ncsight settings, one per axis, 0 at power
 /// on as the parameter's default).
 pub const FANUC_G60: &[ParamDef] = &[
-    ParamDef { key: ParamKey::Setting("g60_overrun_x_mm"), meaning: "G60: X comes to its end point from this far before it (signed: + from the minus side); 0 = straight there", unit: "mm", min: -100.0, max: 100.0, default: 0.0, source: "ncsight setting; FANUC 0i parameter 5440 for X (a machine builder's value: set it as the machine has it)" },
-    ParamDef { key: ParamKey::Setting("g60_overrun_y_mm"), meaning: "G60: the same for Y", unit: "mm", min: -100.0, max: 100.0, default: 0.0, source: "ncsight setting; FANUC 0i parameter 5440 for Y" },
-    ParamDef { key: ParamKey::Setting("g60_overrun_z_mm"), meaning: "G60: the same for Z", unit: "mm", min: -100.0, max: 100.0, default: 0.0, source: "ncsight setting; FANUC 0i parameter 5440 for Z" },
+    ParamDef {
+        key: ParamKey::Setting("g60_overrun_x_mm"),
+        meaning: "G60: X comes to its end point from this far before it (signed: + from the minus side); 0 = straight there",
+        unit: "mm",
+        min: -100.0,
+        max: 100.0,
+        default: 0.0,
+        source: "ncsight setting; FANUC 0i parameter 5440 for X (a machine builder's value: set it as the machine has it)",
+    },
+    ParamDef {
+        key: ParamKey::Setting("g60_overrun_y_mm"),
+        meaning: "G60: the same for Y",
+        unit: "mm",
+        min: -100.0,
+        max: 100.0,
+        default: 0.0,
+        source: "ncsight setting; FANUC 0i parameter 5440 for Y",
+    },
+    ParamDef {
+        key: ParamKey::Setting("g60_overrun_z_mm"),
+        meaning: "G60: the same for Z",
+        unit: "mm",
+        min: -100.0,
+        max: 100.0,
+        default: 0.0,
+        source: "ncsight setting; FANUC 0i parameter 5440 for Z",
+    },
 ];
 
 /// FANUC custom macro: 6000#5 SBM (docs/reference/macro.md section 6; FANUC 0i parameter manual, inferred for

@@ -268,7 +268,8 @@ impl Variables {
             let k = (number - 1000) as usize;
             self.inputs[k].or_else(|| self.input_word.map(|w| f64::from((w as u32 >> k) & 1)))
         };
-        let hint = if number == INPUT_WORD { "--var 1032=N (the 16 signals as one number, 0 to 65535)".to_string() } else { format!("--var {number}=1 (or 0)") };
+        let hint =
+            if number == INPUT_WORD { "--var 1032=N (the 16 signals as one number, 0 to 65535)".to_string() } else { format!("--var {number}=1 (or 0)") };
         given.map(Some).ok_or_else(|| no_such(number, &format!("an input signal of the machine, which ncsight cannot know: give it with {hint}")))
     }
 

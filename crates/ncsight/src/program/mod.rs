@@ -19,9 +19,9 @@ use crate::machine::{Machine, Options};
 use crate::motion::{Op, Record};
 use crate::profile::Params;
 use crate::read::{Block, Line, Reader, Word};
+use crate::read::{Stmt, Then};
 use crate::source::Span;
 use calls::{Calls, Frame, Loop, Search, Target};
-use crate::read::{Stmt, Then};
 pub use calls::{Place, Request};
 
 /// Blocks executed again after a jump back (a subprogramme's second run, a loop) before a run
@@ -493,7 +493,7 @@ impl Program {
                 builder_codes,
                 builders,
                 builder_call: false,
-            leader_lines: 0,
+                leader_lines: 0,
                 statement_stops,
                 last_alarm: None,
             },
@@ -554,7 +554,15 @@ impl Program {
         if let Some(number) = options.main {
             let start = Place::start_of(0);
             c.leave_linear();
-            c.calls.search = Some(Search { target: Target::Program(number), from: start, scope: start, wrapped: true, once: true, asked_by: Span::new(1, 1, 1), resume: None });
+            c.calls.search = Some(Search {
+                target: Target::Program(number),
+                from: start,
+                scope: start,
+                wrapped: true,
+                once: true,
+                asked_by: Span::new(1, 1, 1),
+                resume: None,
+            });
         }
     }
 
@@ -860,11 +868,23 @@ impl Core {
 
     /// The start of a line: another control's language ends the run; the line's warnings; a DOS
     /// end-of-file mark. Whether the line's blocks are to be interpreted.
-    fn begin_line(&mut self, foreign: Option<Foreign>, len: usize, warnings: &[Diagnostic], end_of_file: bool, tape_mark: bool, sink: &mut dyn FnMut(Event)) -> bool {
+    fn begin_line(
+        &mut self,
+        foreign: Option<Foreign>,
+        len: usize,
+        warnings: &[Diagnostic],
+        end_of_file: bool,
+        tape_mark: bool,
+        sink: &mut dyn FnMut(Event),
+    ) -> bool {
         if self.file == 0 && self.line_no <= self.leader_lines {
             if self.line_no == 1 && !self.again {
                 let span = Span::new(1, 1, len.clamp(1, 80) as u32);
-                let lines = if self.leader_lines == 1 { "line 1, before the first '%', is".to_string() } else { format!("lines 1-{}, before the first '%', are", self.leader_lines) };
+                let lines = if self.leader_lines == 1 {
+                    "line 1, before the first '%', is".to_string()
+                } else {
+                    format!("lines 1-{}, before the first '%', are", self.leader_lines)
+                };
                 sink(Event::Diagnostic(Diagnostic::new(
                     Rule::TextIgnored,
                     self.interp.profile().alarm_style,
@@ -880,7 +900,12 @@ impl Core {
                 Rule::ForeignDialect,
                 profile.alarm_style,
                 Span::new(self.line_no, 1, len.clamp(1, 80) as u32),
-                format!("this looks like {}, not a programme for {} ({}): its words mean other things there, so ncsight stops here", f.name(), profile.name, profile.title),
+                format!(
+                    "this looks like {}, not a programme for {} ({}): its words mean other things there, so ncsight stops here",
+                    f.name(),
+                    profile.name,
+                    profile.title
+                ),
             )
             .with_hint("run it on the profile of the control it was written for");
             self.alarm(d, sink);
@@ -1056,7 +1081,9 @@ impl Core {
         evaluated.comments.clone_from(&block.comments);
         let inch = self.interp.state().modes.inch;
         // A G65/G66 block's words are arguments: values pass as they are.
-        let arguments = words.iter().any(|w| w.letter == b'G' && matches!(m.arena.nodes.get(w.node as usize), Some(crate::read::expr::Node::Num(v)) if *v == 65.0 || *v == 66.0));
+        let arguments = words
+            .iter()
+            .any(|w| w.letter == b'G' && matches!(m.arena.nodes.get(w.node as usize), Some(crate::read::expr::Node::Num(v)) if *v == 65.0 || *v == 66.0));
         let mut failed = None;
         if let Err(d) = self.check_brackets(&m.arena, block.span) {
             failed = Some(d);
@@ -1113,7 +1140,12 @@ impl Core {
         let profile = self.interp.profile();
         let max = profile.macros.max_brackets;
         if arena.depth > max {
-            return Err(Diagnostic::new(Rule::BracketNesting, profile.alarm_style, span, format!("brackets nested {} deep: {} allows {max}", arena.depth, profile.name)));
+            return Err(Diagnostic::new(
+                Rule::BracketNesting,
+                profile.alarm_style,
+                span,
+                format!("brackets nested {} deep: {} allows {max}", arena.depth, profile.name),
+            ));
         }
         Ok(())
     }
@@ -1139,81 +1171,14 @@ impl Core {
         }
         let next = Place { block: place.block.saturating_add(1), ..place };
         let mut sink_warning = None;
-        let result = (|| -> Result<bool, Diagnostic> {
-            let profile = self.interp.profile();
-            match stmt {
-                Stmt::Words(_) => unreachable!("words are run as an NC block"),
-                Stmt::Assign { var, value } => self.assign(arena, *var, *value, block),
-                Stmt::If { cond, then } => {
-                    if let Then::Assign { written: false, .. } = then {
-                        // IF [..] #i = .. without THEN: a FANUC 0i takes it (a real programme
-                        // relies on it), the others are not known to (docs/reference/macro.md section 6).
-                        if !profile.macros.if_without_then {
-                            return Err(Diagnostic::new(Rule::MacroFormat, profile.alarm_style, block.span, "IF [..] #i = ..: THEN is missing (IF [..] THEN #i = ..)".to_string()));
-                        }
-                        if self.reported.first(&Diagnostic::new(Rule::ThenOmitted, profile.alarm_style, block.span, String::new())) {
-                            sink_warning = Some(Diagnostic::new(Rule::ThenOmitted, profile.alarm_style, block.span, "IF [..] #i = .. without THEN: read as IF [..] THEN #i = .., as a FANUC 0i takes it".to_string()));
-                        }
-                    }
-                    if !macros::holds(self.value(arena, *cond, block.span)?) {
-                        return Ok(true);
-                    }
-                    match then {
-                        Then::Goto(t) => self.goto(arena, *t, block.span, next),
-                        Then::Assign { var, value, .. } => self.assign(arena, *var, *value, block),
-                    }
-                }
-                Stmt::While { cond, label } => {
-                    // DO m: m is 1, 2 or 3 (GSK980TDi help text, WHILE; FANUC alarm 126).
-                    if !(1..=3).contains(label) {
-                        return Err(Diagnostic::new(Rule::LoopNumber, profile.alarm_style, block.span, format!("DO{label}: the loop number is 1, 2 or 3")));
-                    }
-                    let depth = self.calls.depth();
-                    // This WHILE's loop, if it is running: loops above it were left by a GOTO.
-                    let own = self.calls.loops.iter().rposition(|l| l.place == place && l.depth == depth);
-                    if let Some(k) = own {
-                        self.calls.loops.truncate(k + 1);
-                    }
-                    let top_here = own.is_some();
-                    if macros::holds(self.value(arena, *cond, block.span)?) {
-                        if !top_here {
-                            if self.calls.loops.iter().filter(|l| l.depth == depth).count() >= 3 {
-                                return Err(Diagnostic::new(Rule::LoopNumber, profile.alarm_style, block.span, "WHILE loops nest at most three deep".to_string()));
-                            }
-                            self.calls.loops.push(Loop { label: *label, place, depth });
-                            // Its END must follow in the programme: looked for now, not when the
-                            // body has run to the programme's end (FANUC alarm 124).
-                            let scope = self.calls.running().map_or(Place::start_of(self.file), |(_, s)| s);
-                            self.leave_linear();
-                            self.calls.search = Some(Search { target: Target::LoopEndAhead(*label), from: next, scope, wrapped: true, once: true, asked_by: block.span, resume: Some(next) });
-                        }
-                        return Ok(true);
-                    }
-                    if top_here {
-                        self.calls.loops.pop();
-                    }
-                    // Past the matching END m.
-                    let scope = self.calls.running().map_or(Place::start_of(self.file), |(_, s)| s);
-                    self.leave_linear();
-                    self.calls.search = Some(Search { target: Target::LoopEnd(*label), from: next, scope, wrapped: true, once: true, asked_by: block.span, resume: None });
-                    Ok(true)
-                }
-                Stmt::End { label } => {
-                    let depth = self.calls.depth();
-                    // The nearest running loop of this number; loops above it were left by a GOTO.
-                    match self.calls.loops.iter().rposition(|l| l.label == *label && l.depth == depth) {
-                        Some(k) => {
-                            self.calls.loops.truncate(k + 1);
-                            let back = self.calls.loops[k].place;
-                            self.seek(back);
-                            Ok(false)
-                        }
-                        _ => Err(Diagnostic::new(Rule::MissingEnd, profile.alarm_style, block.span, format!("END {label}: no WHILE [..] DO {label} is running"))),
-                    }
-                }
-                Stmt::Goto { target } => self.goto(arena, *target, block.span, next),
-            }
-        })();
+        let result = match stmt {
+            Stmt::Words(_) => unreachable!("words are run as an NC block"),
+            Stmt::Assign { var, value } => self.assign(arena, *var, *value, block),
+            Stmt::If { cond, then } => self.if_statement(arena, *cond, then, block, next, &mut sink_warning),
+            Stmt::While { cond, label } => self.while_statement(arena, *cond, *label, block, place, next),
+            Stmt::End { label } => self.end_statement(*label, block),
+            Stmt::Goto { target } => self.goto(arena, *target, block.span, next),
+        };
         if let Some(w) = sink_warning {
             sink(Event::Diagnostic(w));
         }
@@ -1233,10 +1198,122 @@ impl Core {
         }
     }
 
+    /// `IF [cond] GOTO n` or `IF [cond] THEN #i = ..` (a FANUC 0i's `IF [..] #i = ..` noted in
+    /// `warning`).
+    fn if_statement(
+        &mut self,
+        arena: &crate::read::expr::Arena,
+        cond: u32,
+        then: &Then,
+        block: &Block,
+        next: Place,
+        warning: &mut Option<Diagnostic>,
+    ) -> Result<bool, Diagnostic> {
+        let profile = self.interp.profile();
+        if let Then::Assign { written: false, .. } = then {
+            // IF [..] #i = .. without THEN: a FANUC 0i takes it (a real programme
+            // relies on it), the others are not known to (docs/reference/macro.md section 6).
+            if !profile.macros.if_without_then {
+                return Err(Diagnostic::new(
+                    Rule::MacroFormat,
+                    profile.alarm_style,
+                    block.span,
+                    "IF [..] #i = ..: THEN is missing (IF [..] THEN #i = ..)".to_string(),
+                ));
+            }
+            if self.reported.first(&Diagnostic::new(Rule::ThenOmitted, profile.alarm_style, block.span, String::new())) {
+                *warning = Some(Diagnostic::new(
+                    Rule::ThenOmitted,
+                    profile.alarm_style,
+                    block.span,
+                    "IF [..] #i = .. without THEN: read as IF [..] THEN #i = .., as a FANUC 0i takes it".to_string(),
+                ));
+            }
+        }
+        if !macros::holds(self.value(arena, cond, block.span)?) {
+            return Ok(true);
+        }
+        match then {
+            Then::Goto(t) => self.goto(arena, *t, block.span, next),
+            Then::Assign { var, value, .. } => self.assign(arena, *var, *value, block),
+        }
+    }
+
+    /// `WHILE [cond] DO m`: into the loop (its END looked for ahead), or past its END.
+    fn while_statement(
+        &mut self,
+        arena: &crate::read::expr::Arena,
+        cond: u32,
+        label: u32,
+        block: &Block,
+        place: Place,
+        next: Place,
+    ) -> Result<bool, Diagnostic> {
+        let profile = self.interp.profile();
+        // DO m: m is 1, 2 or 3 (GSK980TDi help text, WHILE; FANUC alarm 126).
+        if !(1..=3).contains(&label) {
+            return Err(Diagnostic::new(Rule::LoopNumber, profile.alarm_style, block.span, format!("DO{label}: the loop number is 1, 2 or 3")));
+        }
+        let depth = self.calls.depth();
+        // This WHILE's loop, if it is running: loops above it were left by a GOTO.
+        let own = self.calls.loops.iter().rposition(|l| l.place == place && l.depth == depth);
+        if let Some(k) = own {
+            self.calls.loops.truncate(k + 1);
+        }
+        let top_here = own.is_some();
+        if macros::holds(self.value(arena, cond, block.span)?) {
+            if !top_here {
+                if self.calls.loops.iter().filter(|l| l.depth == depth).count() >= 3 {
+                    return Err(Diagnostic::new(Rule::LoopNumber, profile.alarm_style, block.span, "WHILE loops nest at most three deep".to_string()));
+                }
+                self.calls.loops.push(Loop { label, place, depth });
+                // Its END must follow in the programme: looked for now, not when the
+                // body has run to the programme's end (FANUC alarm 124).
+                let scope = self.calls.running().map_or(Place::start_of(self.file), |(_, s)| s);
+                self.leave_linear();
+                self.calls.search = Some(Search {
+                    target: Target::LoopEndAhead(label),
+                    from: next,
+                    scope,
+                    wrapped: true,
+                    once: true,
+                    asked_by: block.span,
+                    resume: Some(next),
+                });
+            }
+            return Ok(true);
+        }
+        if top_here {
+            self.calls.loops.pop();
+        }
+        // Past the matching END m.
+        let scope = self.calls.running().map_or(Place::start_of(self.file), |(_, s)| s);
+        self.leave_linear();
+        self.calls.search = Some(Search { target: Target::LoopEnd(label), from: next, scope, wrapped: true, once: true, asked_by: block.span, resume: None });
+        Ok(true)
+    }
+
+    /// `END m`: back to its WHILE.
+    fn end_statement(&mut self, label: u32, block: &Block) -> Result<bool, Diagnostic> {
+        let profile = self.interp.profile();
+        let depth = self.calls.depth();
+        // The nearest running loop of this number; loops above it were left by a GOTO.
+        match self.calls.loops.iter().rposition(|l| l.label == label && l.depth == depth) {
+            Some(k) => {
+                self.calls.loops.truncate(k + 1);
+                let back = self.calls.loops[k].place;
+                self.seek(back);
+                Ok(false)
+            }
+            _ => Err(Diagnostic::new(Rule::MissingEnd, profile.alarm_style, block.span, format!("END {label}: no WHILE [..] DO {label} is running"))),
+        }
+    }
+
     /// `#i = value`; `#3000 = n` is the user's alarm.
     fn assign(&mut self, arena: &crate::read::expr::Arena, var: u32, value: u32, block: &Block) -> Result<bool, Diagnostic> {
         let profile = self.interp.profile();
-        let number = crate::read::expr::variable_number(self.value(arena, var, block.span)?).map_err(|e| macros::expr_alarm(profile.alarm_style, block.span, &e))?;
+        let number =
+            crate::read::expr::variable_number(self.value(arena, var, block.span)?).map_err(|e| macros::expr_alarm(profile.alarm_style, block.span, &e))?;
         let v = self.value(arena, value, block.span)?;
         if number == 3000 {
             // The user's alarm: 3000 + n with the comment's text (FANUC 0i; docs/reference/macro.md section 8).
@@ -1253,7 +1330,7 @@ impl Core {
     /// user's alarm 500+P. Where the table's entries were lost (H27, H82-H86, H24/H25 names)
     /// FANUC macro A's are used (inferred).
     fn macro_a(&mut self, arena: &crate::read::expr::Arena, words: &[crate::read::MacroWord], block: &Block, next: Place) -> Result<bool, Diagnostic> {
-        use crate::read::expr::{eval, Func, Node};
+        use crate::read::expr::Node;
         let profile = self.interp.profile();
         let style = profile.alarm_style;
         let find = |l: u8| words.iter().find(|w| w.letter == l);
@@ -1302,44 +1379,7 @@ impl Core {
         };
         let i = crate::read::expr::variable_number(self.value(arena, number, p.span)?).map_err(|e| macros::expr_alarm(style, p.span, &e))?;
         let old = crate::read::expr::Variables::read(&mut self.reading(), i).map_err(|e| macros::expr_alarm(style, p.span, &e))?.unwrap_or(0.0);
-        let func = |f: Func, x: f64| -> Result<f64, Diagnostic> {
-            let mut a = crate::read::expr::Arena::default();
-            a.nodes.push(Node::Num(x));
-            a.nodes.push(Node::Call(f, 0));
-            Ok(eval(&a, 1, &mut crate::read::expr::NoVariables).map_err(|e| macros::expr_alarm(style, block.span, &e))?.unwrap_or(0.0))
-        };
-        let divide = |a: f64, b: f64| if b == 0.0 { Err(Diagnostic::new(Rule::DivideByZero, style, block.span, "G65 H: division by zero".to_string())) } else { Ok(a / b) };
-        let whole = |v: f64| v.round() as i64;
-        let v = match h {
-            1 => j,
-            2 => j + k,
-            3 => j - k,
-            4 => j * k,
-            5 => divide(j, k)?,
-            11 => (whole(j) | whole(k)) as f64,
-            12 => (whole(j) & whole(k)) as f64,
-            13 => (whole(j) ^ whole(k)) as f64,
-            21 => func(Func::Sqrt, j)?,
-            22 => j.abs(),
-            23 => {
-                if k == 0.0 {
-                    return Err(Diagnostic::new(Rule::DivideByZero, style, block.span, "G65 H23: remainder of a division by zero".to_string()));
-                }
-                j % k
-            }
-            24 => func(Func::Bin, j)?,
-            25 => func(Func::Bcd, j)?,
-            26 => divide(old * j, k)?,
-            27 => (j * j + k * k).sqrt(),
-            31 => j * func(Func::Sin, k)?,
-            32 => j * func(Func::Cos, k)?,
-            33 => j * func(Func::Tan, k)?,
-            34 => {
-                let deg = j.atan2(k).to_degrees();
-                if deg < 0.0 { deg + 360.0 } else { deg }
-            }
-            _ => return Err(Diagnostic::new(Rule::MacroFormat, style, h_word.span, format!("H{h}: no such macro A operation (H01-H05, H11-H13, H21-H27, H31-H34, H80-H86, H99)"))),
-        };
+        let v = macro_a_operation(h, j, k, old, style, block.span, h_word.span)?;
         if !v.is_finite() {
             return Err(Diagnostic::new(Rule::MacroOverflow, style, block.span, "G65 H: the value is not a finite number".to_string()));
         }
@@ -1354,7 +1394,12 @@ impl Core {
         let n = v.map(f64::round).unwrap_or(-1.0);
         // FANUC 0 alarm 128: the target is 1 to 9999 (99999 where N has five digits).
         if !(1.0..=99_999.0).contains(&n) {
-            return Err(Diagnostic::new(Rule::MacroSequence, profile.alarm_style, span, format!("GOTO {}: the sequence number is 1 to 99999", v.map_or("vacant".into(), |v| v.to_string()))));
+            return Err(Diagnostic::new(
+                Rule::MacroSequence,
+                profile.alarm_style,
+                span,
+                format!("GOTO {}: the sequence number is 1 to 99999", v.map_or("vacant".into(), |v| v.to_string())),
+            ));
         }
         let n = n as u32;
         let scope = self.calls.running().map_or(Place::start_of(self.file), |(_, s)| s);
@@ -1365,7 +1410,8 @@ impl Core {
             }
             None => {
                 self.leave_linear();
-                self.calls.search = Some(Search { target: Target::Goto(n), from: next, scope, wrapped: false, once: false, asked_by: span, resume: Some(next) });
+                self.calls.search =
+                    Some(Search { target: Target::Goto(n), from: next, scope, wrapped: false, once: false, asked_by: span, resume: Some(next) });
                 Ok(true)
             }
         }
@@ -1444,7 +1490,12 @@ impl Core {
             // G65 has no P argument: a P in the block is said to be ignored (no manual
             // says what the machine does with it; inferred).
             if let Some(pw) = call.words.iter().find(|w| w.letter == b'P') {
-                let d = Diagnostic::new(Rule::TextIgnored, profile.alarm_style, pw.span, format!("{}: the macro call by {trigger} takes no P argument (G65 has none): ignored", pw.text()));
+                let d = Diagnostic::new(
+                    Rule::TextIgnored,
+                    profile.alarm_style,
+                    pw.span,
+                    format!("{}: the macro call by {trigger} takes no P argument (G65 has none): ignored", pw.text()),
+                );
                 sink(Event::Diagnostic(d));
             }
             call.words.retain(|w| w.letter != b'P');
@@ -1491,7 +1542,13 @@ impl Core {
                     .iter()
                     .map(|w| {
                         arena.nodes.push(crate::read::expr::Node::Num(w.value));
-                        crate::read::MacroWord { letter: w.letter, node: (arena.nodes.len() - 1) as u32, decimal: w.decimal, constant: !w.decimal, span: w.span }
+                        crate::read::MacroWord {
+                            letter: w.letter,
+                            node: (arena.nodes.len() - 1) as u32,
+                            decimal: w.decimal,
+                            constant: !w.decimal,
+                            span: w.span,
+                        }
                     })
                     .collect();
                 let next = Place { block: place.block.saturating_add(1), ..place };
@@ -1539,7 +1596,12 @@ impl Core {
     fn execute_under_g66(&mut self, block: &Block, place: Place, sink: &mut dyn FnMut(Event)) -> bool {
         // A move of any axis calls it: the setup's rotary axes (and H, the lathe's incremental C) too.
         let added = self.interp.tables().added_addresses;
-        let modal_call = self.modal_call.filter(|m| m.depth == self.calls.depth() && block.words.iter().any(|w| matches!(w.letter, b'X' | b'Y' | b'Z' | b'U' | b'V' | b'W') || (matches!(w.letter, b'A' | b'B' | b'C' | b'H') && added.contains(w.letter))));
+        let modal_call = self.modal_call.filter(|m| {
+            m.depth == self.calls.depth()
+                && block.words.iter().any(|w| {
+                    matches!(w.letter, b'X' | b'Y' | b'Z' | b'U' | b'V' | b'W') || (matches!(w.letter, b'A' | b'B' | b'C' | b'H') && added.contains(w.letter))
+                })
+        });
         let go_on = self.execute_nc(block, place, sink);
         match modal_call {
             // After a block with a move, the G66 macro is called (its moves do not call it again:
@@ -1748,7 +1810,8 @@ impl Core {
                 // then the file from its top, then the driver's other files.
                 let scope = Place::start_of(self.file);
                 self.leave_linear();
-                self.calls.search = Some(Search { target: Target::Program(number), from: back, scope, wrapped: false, once: false, asked_by: span, resume: Some(back) });
+                self.calls.search =
+                    Some(Search { target: Target::Program(number), from: back, scope, wrapped: false, once: false, asked_by: span, resume: Some(back) });
                 Ok(true)
             }
         }
@@ -1767,7 +1830,17 @@ impl Core {
         // The frame keeps the calling programme's start, so GOTO and M99 P look there.
         let (number, scope) = self.calls.running().map_or((0, Place::start_of(self.file)), |(n, s)| (n.unwrap_or(0), s));
         let entry = self.calls.sequence(scope, n);
-        self.calls.frames.push(Frame { number, start: Some(scope), entry, finishing, back, remaining: count.max(1) - 1, call: span, macro_call: false, builder: false });
+        self.calls.frames.push(Frame {
+            number,
+            start: Some(scope),
+            entry,
+            finishing,
+            back,
+            remaining: count.max(1) - 1,
+            call: span,
+            macro_call: false,
+            builder: false,
+        });
         if finishing.is_some() {
             self.interp.set_finishing(true);
         }
@@ -1778,7 +1851,8 @@ impl Core {
             }
             None => {
                 self.leave_linear();
-                self.calls.search = Some(Search { target: Target::CallSequence(n), from: back, scope, wrapped: false, once: false, asked_by: span, resume: Some(back) });
+                self.calls.search =
+                    Some(Search { target: Target::CallSequence(n), from: back, scope, wrapped: false, once: false, asked_by: span, resume: Some(back) });
                 Ok(true)
             }
         }
@@ -1825,7 +1899,14 @@ impl Core {
             b'H' => 11,
             b'M' => 13,
             l @ b'Q'..=b'Z' => 17 + (l - b'Q') as usize,
-            _ => return Err(Diagnostic::new(Rule::ArgumentAddress, style, w.span, format!("{}: {} is not a {code} argument", w.text(), crate::read::address_name(w.letter)))),
+            _ => {
+                return Err(Diagnostic::new(
+                    Rule::ArgumentAddress,
+                    style,
+                    w.span,
+                    format!("{}: {} is not a {code} argument", w.text(), crate::read::address_name(w.letter)),
+                ))
+            }
         };
         if slot > 33 {
             return Err(Diagnostic::new(Rule::ArgumentAddress, style, w.span, format!("{}: more than ten I J K sets", w.text())));
@@ -1839,7 +1920,11 @@ impl Core {
     fn argument_value(&self, w: &Word) -> f64 {
         let lii = self.interp.params().integer_lengths() == crate::profile::IntegerLengths::LeastIncrement;
         let increment = if self.interp.state().modes.inch { 1e-4 } else { 1e-3 };
-        if !w.decimal && lii && !matches!(w.letter, b'M' | b'S' | b'T' | b'H' | b'D' | b'F') { w.value * increment } else { w.value }
+        if !w.decimal && lii && !matches!(w.letter, b'M' | b'S' | b'T' | b'H' | b'D' | b'F') {
+            w.value * increment
+        } else {
+            w.value
+        }
     }
 
     /// The programme, count and locals of `G65 P_ L_ <arguments>` (or G66): a new level of
@@ -1856,7 +1941,12 @@ impl Core {
         // GSK: G65 is followed directly by P (GSK980TDi help text, G65).
         if profile.macros.p_first && block.words.get(g65 + 1).is_some_and(|w| w.letter != b'P') {
             let w = block.words[g65 + 1];
-            return Err(Diagnostic::new(Rule::MacroFormat, style, w.span, format!("{}: on {} the programme number P comes right after {code}", w.text(), profile.name)));
+            return Err(Diagnostic::new(
+                Rule::MacroFormat,
+                style,
+                w.span,
+                format!("{}: on {} the programme number P comes right after {code}", w.text(), profile.name),
+            ));
         }
         let mut number = None;
         let mut count = 1u32;
@@ -1951,7 +2041,15 @@ impl Core {
                             Some(p) => self.seek(p),
                             None => {
                                 self.leave_linear();
-                                self.calls.search = Some(Search { target: Target::Sequence(n), from: frame.back, scope, wrapped: false, once: false, asked_by: span, resume: Some(frame.back) });
+                                self.calls.search = Some(Search {
+                                    target: Target::Sequence(n),
+                                    from: frame.back,
+                                    scope,
+                                    wrapped: false,
+                                    once: false,
+                                    asked_by: span,
+                                    resume: Some(frame.back),
+                                });
                                 self.seek(frame.back);
                             }
                         }
@@ -1984,7 +2082,9 @@ impl Core {
                 }
                 Searched::Found
             }
-            Target::Sequence(_) | Target::Goto(_) | Target::CallSequence(_) | Target::LoopEnd(_) | Target::LoopEndAhead(_) if b.program.is_some() && place != s.scope => {
+            Target::Sequence(_) | Target::Goto(_) | Target::CallSequence(_) | Target::LoopEnd(_) | Target::LoopEndAhead(_)
+                if b.program.is_some() && place != s.scope =>
+            {
                 // The programme's text ends at the next programme's O.
                 self.search_ends(sink);
                 Searched::Stop
@@ -2062,7 +2162,8 @@ impl Core {
             Target::CallSequence(n) => (format!("M98 Q{n}: the programme has no block N{n}"), "M98 Q calls a sequence number of the same programme"),
             Target::LoopEnd(m) | Target::LoopEndAhead(m) => (format!("WHILE [..] DO{m}: no END{m} follows in the programme"), "each WHILE [..] DOm ends with ENDm"),
         };
-        let message = if passed_over.is_empty() { message } else { format!("{message}; passed over, not readable as a programme file: {}", passed_over.join(", ")) };
+        let message =
+            if passed_over.is_empty() { message } else { format!("{message}; passed over, not readable as a programme file: {}", passed_over.join(", ")) };
         if calling && self.call_options.skip_missing {
             let d = Diagnostic::new(Rule::CallSkipped, profile.alarm_style, s.asked_by, format!("{message}: the call is skipped (--skip-missing-subprograms)"));
             sink(Event::Diagnostic(d));
@@ -2143,7 +2244,12 @@ impl Core {
             Some(frame) => {
                 // No manual says what a controller does here (docs/reference/macro.md section 1, inferred): an
                 // alarm; a check goes on as if M99 had been there.
-                let d = Diagnostic::new(Rule::NoReturn, profile.alarm_style, span, format!("O{:04} ends here without M99: a subprogramme returns with M99", frame.number));
+                let d = Diagnostic::new(
+                    Rule::NoReturn,
+                    profile.alarm_style,
+                    span,
+                    format!("O{:04} ends here without M99: a subprogramme returns with M99", frame.number),
+                );
                 self.alarm(d, sink);
                 if self.mode == Mode::Check {
                     self.seek(frame.back);
@@ -2382,6 +2488,68 @@ impl Iterator for Events<'_> {
             self.at.1 += len;
         }
     }
+}
+
+/// Macro A's operation H`h` on #j and #k (`old`: #i before, for H26), as the GSK980TDi's G65 H
+/// list gives them; `span` the block's, `h_span` the H word's.
+fn macro_a_operation(h: i64, j: f64, k: f64, old: f64, style: crate::alarm::AlarmStyle, span: Span, h_span: Span) -> Result<f64, Diagnostic> {
+    use crate::read::expr::{eval, Func, Node};
+    let func = |f: Func, x: f64| -> Result<f64, Diagnostic> {
+        let mut a = crate::read::expr::Arena::default();
+        a.nodes.push(Node::Num(x));
+        a.nodes.push(Node::Call(f, 0));
+        Ok(eval(&a, 1, &mut crate::read::expr::NoVariables).map_err(|e| macros::expr_alarm(style, span, &e))?.unwrap_or(0.0))
+    };
+    let divide = |a: f64, b: f64| {
+        if b == 0.0 {
+            Err(Diagnostic::new(Rule::DivideByZero, style, span, "G65 H: division by zero".to_string()))
+        } else {
+            Ok(a / b)
+        }
+    };
+    let whole = |v: f64| v.round() as i64;
+    let v = match h {
+        1 => j,
+        2 => j + k,
+        3 => j - k,
+        4 => j * k,
+        5 => divide(j, k)?,
+        11 => (whole(j) | whole(k)) as f64,
+        12 => (whole(j) & whole(k)) as f64,
+        13 => (whole(j) ^ whole(k)) as f64,
+        21 => func(Func::Sqrt, j)?,
+        22 => j.abs(),
+        23 => {
+            if k == 0.0 {
+                return Err(Diagnostic::new(Rule::DivideByZero, style, span, "G65 H23: remainder of a division by zero".to_string()));
+            }
+            j % k
+        }
+        24 => func(Func::Bin, j)?,
+        25 => func(Func::Bcd, j)?,
+        26 => divide(old * j, k)?,
+        27 => (j * j + k * k).sqrt(),
+        31 => j * func(Func::Sin, k)?,
+        32 => j * func(Func::Cos, k)?,
+        33 => j * func(Func::Tan, k)?,
+        34 => {
+            let deg = j.atan2(k).to_degrees();
+            if deg < 0.0 {
+                deg + 360.0
+            } else {
+                deg
+            }
+        }
+        _ => {
+            return Err(Diagnostic::new(
+                Rule::MacroFormat,
+                style,
+                h_span,
+                format!("H{h}: no such macro A operation (H01-H05, H11-H13, H21-H27, H31-H34, H80-H86, H99)"),
+            ))
+        }
+    };
+    Ok(v)
 }
 
 #[cfg(test)]

@@ -286,7 +286,11 @@ fn comparison(op: CmpOp, x: Value, y: Value) -> f64 {
         CmpOp::Lt => num(x) < num(y),
         CmpOp::Le => num(x) <= num(y),
     };
-    if holds { 1.0 } else { 0.0 }
+    if holds {
+        1.0
+    } else {
+        0.0
+    }
 }
 
 /// A function (SIN, SQRT, ROUND, BIN, ...) of the value `x` (vacant already read as 0), ROUND
@@ -322,7 +326,11 @@ fn function_value(f: Func, x: f64, round_step: f64) -> Result<f64, ExprError> {
         Func::Fix => x.trunc(),
         Func::Fup => {
             let t = x.trunc();
-            if t == x { t } else { t + x.signum() }
+            if t == x {
+                t
+            } else {
+                t + x.signum()
+            }
         }
         Func::Ln => {
             domain(x > 0.0, "the logarithm of a number not above 0")?;
@@ -412,9 +420,9 @@ impl Parser<'_> {
     fn keyword(&mut self, words: &[&[u8]]) -> Option<usize> {
         self.skip_ws();
         let rest = &self.s[self.i..];
-        words.iter().position(|w| {
-            rest.len() >= w.len() && rest[..w.len()].eq_ignore_ascii_case(w) && !rest.get(w.len()).is_some_and(|c| c.is_ascii_alphabetic())
-        })
+        words
+            .iter()
+            .position(|w| rest.len() >= w.len() && rest[..w.len()].eq_ignore_ascii_case(w) && !rest.get(w.len()).is_some_and(|c| c.is_ascii_alphabetic()))
     }
 
     /// A comparison, or a sum.
@@ -423,7 +431,8 @@ impl Parser<'_> {
         if !self.conditions {
             return Ok(a);
         }
-        const OPS: [(&[u8], CmpOp); 6] = [(b"EQ", CmpOp::Eq), (b"NE", CmpOp::Ne), (b"GT", CmpOp::Gt), (b"GE", CmpOp::Ge), (b"LT", CmpOp::Lt), (b"LE", CmpOp::Le)];
+        const OPS: [(&[u8], CmpOp); 6] =
+            [(b"EQ", CmpOp::Eq), (b"NE", CmpOp::Ne), (b"GT", CmpOp::Gt), (b"GE", CmpOp::Ge), (b"LT", CmpOp::Lt), (b"LE", CmpOp::Le)];
         let names: Vec<&[u8]> = OPS.iter().map(|(n, _)| *n).collect();
         match self.keyword(&names) {
             Some(k) => {
@@ -531,7 +540,12 @@ impl Parser<'_> {
                 }
                 let name = &self.s[start..self.i];
                 let Some(f) = Func::by_name(name) else {
-                    return Err(ExprError { at: start, message: format!("unknown function {}", String::from_utf8_lossy(name).to_ascii_uppercase()), kind: ErrorKind::Format, divisor: None });
+                    return Err(ExprError {
+                        at: start,
+                        message: format!("unknown function {}", String::from_utf8_lossy(name).to_ascii_uppercase()),
+                        kind: ErrorKind::Format,
+                        divisor: None,
+                    });
                 };
                 let arg = self.bracketed()?;
                 if f == Func::Atan && self.peek() == Some(b'/') {

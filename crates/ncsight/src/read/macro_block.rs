@@ -30,7 +30,11 @@ pub enum Stmt {
 pub enum Then {
     Goto(u32),
     /// `written`: THEN was written (a real FANUC 0i programme leaves it out).
-    Assign { var: u32, value: u32, written: bool },
+    Assign {
+        var: u32,
+        value: u32,
+        written: bool,
+    },
 }
 
 /// One word of an NC block in a macro: its letter, the tree of its value, whether it was written
@@ -119,14 +123,20 @@ impl Reader {
                 match digits.parse::<u32>() {
                     Ok(v) if n <= 8 => block.sequence = Some(v),
                     _ => {
-                        out.blocks.push(Err(Diagnostic::new(Rule::TooManyDigits, self.style, Span::new(line, j as u32 + 1, n as u32 + 1), format!("N{digits}: a sequence number has at most 8 digits"))));
+                        out.blocks.push(Err(Diagnostic::new(
+                            Rule::TooManyDigits,
+                            self.style,
+                            Span::new(line, j as u32 + 1, n as u32 + 1),
+                            format!("N{digits}: a sequence number has at most 8 digits"),
+                        )));
                         return;
                     }
                 }
                 j += 1 + n;
             }
             let body_end = s[..end].iter().rposition(|b| !matches!(b, b' ' | b'\t')).map_or(j, |k| (k + 1).max(j));
-            let only_comments = s[j..body_end].iter().all(|b| matches!(b, b' ' | b'\t')) || s[j..body_end].first() == Some(&b'(') && s[j..body_end].last() == Some(&b')') && !s[j..body_end].contains(&b'#');
+            let only_comments = s[j..body_end].iter().all(|b| matches!(b, b' ' | b'\t'))
+                || s[j..body_end].first() == Some(&b'(') && s[j..body_end].last() == Some(&b')') && !s[j..body_end].contains(&b'#');
             if first < body_end {
                 block.span = Span::new(line, first as u32 + 1, (body_end - first) as u32);
                 if only_comments {
@@ -227,11 +237,19 @@ impl MacroText<'_> {
         let var = self.operand(arena, &mut i)?;
         let number = match arena.nodes[var as usize] {
             expr::Node::Var(n) => n,
-            _ => return Err(Diagnostic::new(Rule::MacroFormat, style, self.span_at(self.at(start), self.at(i)), format!("{whole}: a variable (#) is assigned")).with_hint("write #1 = 10.")),
+            _ => {
+                return Err(Diagnostic::new(Rule::MacroFormat, style, self.span_at(self.at(start), self.at(i)), format!("{whole}: a variable (#) is assigned"))
+                    .with_hint("write #1 = 10."))
+            }
         };
         self.skip_ws(&mut i);
         if c.get(i) != Some(&b'=') {
-            return Err(Diagnostic::new(Rule::MacroFormat, style, self.span_at(self.at(start), self.at(i)), format!("{whole}: '=' expected after the variable")));
+            return Err(Diagnostic::new(
+                Rule::MacroFormat,
+                style,
+                self.span_at(self.at(start), self.at(i)),
+                format!("{whole}: '=' expected after the variable"),
+            ));
         }
         let value = self.rest(arena, i + 1)?;
         Ok((number, value))
@@ -242,10 +260,20 @@ impl MacroText<'_> {
         let (c, whole, style) = (&self.clean[..], &self.whole, self.reader.style);
         self.skip_ws(i);
         if c.get(*i) != Some(&b'[') {
-            return Err(Diagnostic::new(Rule::MacroFormat, style, self.span_at(self.at(*i), self.at(*i) + 1), format!("{whole}: {key} takes a condition in brackets: {key} [#1 GT 0]")));
+            return Err(Diagnostic::new(
+                Rule::MacroFormat,
+                style,
+                self.span_at(self.at(*i), self.at(*i) + 1),
+                format!("{whole}: {key} takes a condition in brackets: {key} [#1 GT 0]"),
+            ));
         }
         let Some(j) = super::matching_bracket(c, *i) else {
-            return Err(Diagnostic::new(Rule::MacroFormat, style, self.span_at(self.at(*i), self.at(c.len())), format!("{whole}: the condition has no closing ']'")));
+            return Err(Diagnostic::new(
+                Rule::MacroFormat,
+                style,
+                self.span_at(self.at(*i), self.at(c.len())),
+                format!("{whole}: the condition has no closing ']'"),
+            ));
         };
         let root = expr::parse(&c[*i + 1..j], arena, true, true).map_err(|e| self.reader.macro_error(self.line, self.at(*i + 1), &e, whole))?;
         *i = j + 1;
@@ -258,7 +286,9 @@ impl MacroText<'_> {
         self.skip_ws(i);
         let n = c[*i..].iter().take_while(|b| b.is_ascii_digit()).count();
         let digits = std::str::from_utf8(&c[*i..*i + n]).unwrap_or("");
-        let v = digits.parse::<u32>().map_err(|_| Diagnostic::new(Rule::MacroFormat, style, self.span_at(self.at(*i), self.at(*i) + 1), format!("{whole}: {key} takes a loop number (1 to 3)")))?;
+        let v = digits.parse::<u32>().map_err(|_| {
+            Diagnostic::new(Rule::MacroFormat, style, self.span_at(self.at(*i), self.at(*i) + 1), format!("{whole}: {key} takes a loop number (1 to 3)"))
+        })?;
         *i += n;
         Ok(v)
     }
@@ -269,7 +299,12 @@ impl MacroText<'_> {
         let mut j = i;
         self.skip_ws(&mut j);
         if j < c.len() {
-            return Err(Diagnostic::new(Rule::MacroFormat, self.reader.style, self.span_at(self.at(j), self.at(c.len())), format!("{}: unexpected '{}'", self.whole, String::from_utf8_lossy(&c[j..]).trim())));
+            return Err(Diagnostic::new(
+                Rule::MacroFormat,
+                self.reader.style,
+                self.span_at(self.at(j), self.at(c.len())),
+                format!("{}: unexpected '{}'", self.whole, String::from_utf8_lossy(&c[j..]).trim()),
+            ));
         }
         Ok(())
     }
@@ -284,7 +319,12 @@ impl MacroText<'_> {
             Stmt::Assign { var, value }
         } else if let Some(n) = starts_with_keyword(&c[i..], &OUTPUT) {
             let key = String::from_utf8_lossy(&c[i..i + n]).to_ascii_uppercase();
-            return Err(Diagnostic::new(Rule::NotSupported, style, self.span_at(self.at(i), self.at(c.len())), format!("{whole}: the output statement {key} is not simulated by ncsight")));
+            return Err(Diagnostic::new(
+                Rule::NotSupported,
+                style,
+                self.span_at(self.at(i), self.at(c.len())),
+                format!("{whole}: the output statement {key} is not simulated by ncsight"),
+            ));
         } else if let Some(n) = starts_with_keyword(&c[i..], &KEYWORDS) {
             self.keyword_statement(arena, i, n)?
         } else {
@@ -306,7 +346,12 @@ impl MacroText<'_> {
                 let cond = self.bracket_condition(arena, &mut i, "WHILE")?;
                 self.skip_ws(&mut i);
                 if starts_with_keyword(&c[i..], &[b"DO"]).is_none() {
-                    return Err(Diagnostic::new(Rule::MacroFormat, style, self.span_at(self.at(i), self.at(c.len())), format!("{whole}: WHILE [..] is followed by DO m")));
+                    return Err(Diagnostic::new(
+                        Rule::MacroFormat,
+                        style,
+                        self.span_at(self.at(i), self.at(c.len())),
+                        format!("{whole}: WHILE [..] is followed by DO m"),
+                    ));
                 }
                 i += 2;
                 let label = self.label(&mut i, "DO")?;
@@ -324,7 +369,12 @@ impl MacroText<'_> {
             }
             _ => {
                 // `DO m` without WHILE: an endless loop on the controller; not simulated.
-                return Err(Diagnostic::new(Rule::NotSupported, style, self.span_at(self.at(trimmed_start), self.at(c.len())), format!("{whole}: DO without WHILE (an endless loop) is not simulated by ncsight")));
+                return Err(Diagnostic::new(
+                    Rule::NotSupported,
+                    style,
+                    self.span_at(self.at(trimmed_start), self.at(c.len())),
+                    format!("{whole}: DO without WHILE (an endless loop) is not simulated by ncsight"),
+                ));
             }
         })
     }
@@ -350,7 +400,12 @@ impl MacroText<'_> {
             let (var, value) = self.assignment(arena, i)?;
             Then::Assign { var, value, written: false }
         } else {
-            return Err(Diagnostic::new(Rule::MacroFormat, style, self.span_at(self.at(i), self.at(c.len())), format!("{whole}: IF [..] is followed by GOTO n or THEN #i = ...")));
+            return Err(Diagnostic::new(
+                Rule::MacroFormat,
+                style,
+                self.span_at(self.at(i), self.at(c.len())),
+                format!("{whole}: IF [..] is followed by GOTO n or THEN #i = ..."),
+            ));
         };
         Ok(Stmt::If { cond, then })
     }
@@ -374,7 +429,12 @@ impl MacroText<'_> {
             }
             let b = c[i];
             if !b.is_ascii_alphabetic() {
-                return Err(Diagnostic::new(Rule::ImproperAddress, style, self.span_at(self.at(i), self.at(i) + 1), format!("{whole}: '{}' is not an address letter", b as char)));
+                return Err(Diagnostic::new(
+                    Rule::ImproperAddress,
+                    style,
+                    self.span_at(self.at(i), self.at(i) + 1),
+                    format!("{whole}: '{}' is not an address letter", b as char),
+                ));
             }
             let letter = if comma { b.to_ascii_lowercase() } else { b.to_ascii_uppercase() };
             i += 1;
@@ -387,7 +447,12 @@ impl MacroText<'_> {
             // A sequence or programme number from a variable is not allowed (GSK988T manual,
             // macro variables note 1; NCT manual).
             if matches!(letter, b'N' | b'O') && !constant {
-                return Err(Diagnostic::new(Rule::MacroFormat, style, self.span_at(self.at(start), self.at(i)), format!("{whole}: {} cannot take its value from a variable", letter as char)));
+                return Err(Diagnostic::new(
+                    Rule::MacroFormat,
+                    style,
+                    self.span_at(self.at(start), self.at(i)),
+                    format!("{whole}: {} cannot take its value from a variable", letter as char),
+                ));
             }
             words.push(MacroWord { letter, node, decimal, constant: constant && !decimal, span: self.span_at(self.at(start), self.at(i)) });
         }

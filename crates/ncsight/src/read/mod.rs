@@ -108,7 +108,11 @@ impl Word {
         }
         if self.decimal {
             let s = format!("{}", self.value);
-            if s.contains('.') { format!("{letter}{s}") } else { format!("{letter}{s}.") }
+            if s.contains('.') {
+                format!("{letter}{s}")
+            } else {
+                format!("{letter}{s}.")
+            }
         } else {
             format!("{letter}{}", self.value)
         }
@@ -374,13 +378,7 @@ impl Reader {
         out.tape_mark = true;
         let rest = &s[i + 1..];
         if rest.iter().any(|c| !is_blank(*c)) {
-            out.warnings.push(self.diag(
-                Rule::TextIgnored,
-                line_no,
-                i + 1,
-                rest.len(),
-                "text after the '%' tape mark is ignored",
-            ));
+            out.warnings.push(self.diag(Rule::TextIgnored, line_no, i + 1, rest.len(), "text after the '%' tape mark is ignored"));
         }
     }
 
@@ -507,12 +505,8 @@ impl Reader {
         open.end = next;
         let block = &mut open.block;
         match w.letter {
-            b'N' if block.sequence.is_none() && block.words.is_empty() => {
-                block.sequence = Some(w.value as u32)
-            }
-            b'O' if block.program.is_none() && block.words.is_empty() => {
-                block.program = Some(w.value as u32)
-            }
+            b'N' if block.sequence.is_none() && block.words.is_empty() => block.sequence = Some(w.value as u32),
+            b'O' if block.program.is_none() && block.words.is_empty() => block.program = Some(w.value as u32),
             // An O word after other words starts the next programme on the
             // same line (`M99O0810`, a FANUC 0i punch): the block ends before it.
             b'O' if !w.decimal && !w.expr => {
@@ -536,42 +530,15 @@ impl Reader {
             while j < s.len() && (s[j].is_ascii_digit() || b".+-".contains(&s[j])) {
                 j += 1;
             }
-            self.diag(
-                Rule::ImproperAddress,
-                line_no,
-                i,
-                j - i,
-                format!(
-                    "number '{}' has no address letter before it",
-                    String::from_utf8_lossy(&s[i..j])
-                ),
-            )
-            .with_hint("a letter such as G was probably left out")
+            self.diag(Rule::ImproperAddress, line_no, i, j - i, format!("number '{}' has no address letter before it", String::from_utf8_lossy(&s[i..j])))
+                .with_hint("a letter such as G was probably left out")
         } else if c.is_ascii_control() {
-            self.diag(
-                Rule::BadCharacter,
-                line_no,
-                i,
-                1,
-                format!("byte 0x{c:02X} (a control character) is not allowed outside a comment"),
-            )
+            self.diag(Rule::BadCharacter, line_no, i, 1, format!("byte 0x{c:02X} (a control character) is not allowed outside a comment"))
         } else if let Some((shown, twin, len)) = full_width(&s[i..]) {
-            self.diag(
-                Rule::BadCharacter,
-                line_no,
-                i,
-                len,
-                format!("character '{shown}' (full width) is not allowed outside a comment"),
-            )
-            .with_hint(format!("a Chinese input method typed it: write the ASCII '{twin}' instead"))
+            self.diag(Rule::BadCharacter, line_no, i, len, format!("character '{shown}' (full width) is not allowed outside a comment"))
+                .with_hint(format!("a Chinese input method typed it: write the ASCII '{twin}' instead"))
         } else if c.is_ascii() {
-            let d = self.diag(
-                Rule::BadCharacter,
-                line_no,
-                i,
-                1,
-                format!("character '{}' is not allowed outside a comment", c as char),
-            );
+            let d = self.diag(Rule::BadCharacter, line_no, i, 1, format!("character '{}' is not allowed outside a comment", c as char));
             // `[BILLET X42.86 Z82`: a line for a CNC simulator's stock, not G-code
             // (corpus: the ICNC course programmes).
             let word = s[i + 1..].iter().take_while(|b| b.is_ascii_alphabetic()).count();
@@ -585,14 +552,8 @@ impl Reader {
             self.diag(Rule::BadCharacter, line_no, i, ch.len_utf8(), format!("character '{ch}' is not allowed outside a comment"))
                 .with_hint("text other than ASCII belongs inside ( ) comments")
         } else {
-            self.diag(
-                Rule::BadCharacter,
-                line_no,
-                i,
-                1,
-                format!("byte 0x{c:02X} is not allowed outside a comment"),
-            )
-            .with_hint("text other than ASCII belongs inside ( ) comments")
+            self.diag(Rule::BadCharacter, line_no, i, 1, format!("byte 0x{c:02X} is not allowed outside a comment"))
+                .with_hint("text other than ASCII belongs inside ( ) comments")
         }
     }
 
@@ -651,11 +612,7 @@ impl Reader {
                 Rule::TooManyDigits,
                 self.style,
                 span_to(i),
-                format!(
-                    "{}{}: {significant} digits, at most {MAX_DIGITS} are allowed",
-                    letter as char,
-                    String::from_utf8_lossy(&s[num_start..i])
-                ),
+                format!("{}{}: {significant} digits, at most {MAX_DIGITS} are allowed", letter as char, String::from_utf8_lossy(&s[num_start..i])),
             ));
         }
         let mut value = decimal_value(mantissa, fraction_digits, &s[digits_start..i]);
@@ -671,12 +628,7 @@ impl Reader {
         let span_to = |end: usize| word_span(line, at, end);
         let j = matching_bracket(s, i).unwrap_or(s.len());
         if j >= s.len() {
-            return Err(Diagnostic::new(
-                Rule::Expression,
-                self.style,
-                span_to(s.len()),
-                format!("{}[: the expression has no closing ']'", letter as char),
-            ));
+            return Err(Diagnostic::new(Rule::Expression, self.style, span_to(s.len()), format!("{}[: the expression has no closing ']'", letter as char)));
         }
         // ROUND inside an address rounds to the address's least increment, which depends
         // on G20/G21: such a line is read as a macro line and evaluated when it runs.
@@ -689,12 +641,7 @@ impl Reader {
                 Rule::Expression,
                 self.style,
                 span_to(j + 1),
-                format!(
-                    "{}[{}]: {}",
-                    letter as char,
-                    String::from_utf8_lossy(&s[i + 1..j]),
-                    e.message
-                ),
+                format!("{}[{}]: {}", letter as char, String::from_utf8_lossy(&s[i + 1..j]), e.message),
             )),
         }
     }
@@ -710,11 +657,7 @@ impl Reader {
             Rule::IllegalDecimalPoint,
             self.style,
             word_span(line, at, end),
-            format!(
-                "{}{}: two decimal points in one value",
-                letter as char,
-                String::from_utf8_lossy(&s[num_start..end])
-            ),
+            format!("{}{}: two decimal points in one value", letter as char, String::from_utf8_lossy(&s[num_start..end])),
         )
         .with_hint("delete one of the decimal points")
     }
@@ -733,12 +676,7 @@ impl Reader {
         );
         if matches!(next, Some(b'O' | b'o')) {
             d.span = span_to(digits_start + 1);
-            d.message = format!(
-                "{}{}: address {} is followed by the letter O, not a number",
-                letter as char,
-                next.unwrap() as char,
-                letter as char
-            );
+            d.message = format!("{}{}: address {} is followed by the letter O, not a number", letter as char, next.unwrap() as char, letter as char);
             d = d.with_hint("letter O where a zero was probably meant");
         } else if negative {
             d.rule = Rule::IllegalMinus;
@@ -777,10 +715,7 @@ fn word_span(line: u32, at: usize, end: usize) -> Span {
 /// `mantissa / 10^fraction_digits`, correctly rounded as `str::parse` gives it: exact when both
 /// are exact doubles (one IEEE division); `text` (digits and a point) is parsed otherwise.
 fn decimal_value(mantissa: u64, fraction_digits: i32, text: &[u8]) -> f64 {
-    const POW10: [f64; 23] = [
-        1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19,
-        1e20, 1e21, 1e22,
-    ];
+    const POW10: [f64; 23] = [1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22];
     if mantissa < 1 << 53 && (fraction_digits as usize) < POW10.len() {
         return mantissa as f64 / POW10[fraction_digits as usize];
     }
@@ -840,10 +775,7 @@ mod tests {
 
     #[test]
     fn words_without_spaces() {
-        assert_eq!(
-            words("G92X20Z-30F1.5"),
-            vec![('G', 92.0, false), ('X', 20.0, false), ('Z', -30.0, false), ('F', 1.5, true)]
-        );
+        assert_eq!(words("G92X20Z-30F1.5"), vec![('G', 92.0, false), ('X', 20.0, false), ('Z', -30.0, false), ('F', 1.5, true)]);
         assert_eq!(words("g01 x-.5 z+3."), vec![('G', 1.0, false), ('X', -0.5, true), ('Z', 3.0, true)]);
     }
 

@@ -211,7 +211,11 @@ impl LatheStock {
 
     /// The surface the thread measurement reads (see [`LatheStock::internal`]).
     pub fn measured(&self) -> &[f32] {
-        if self.internal { &self.inner } else { &self.outer }
+        if self.internal {
+            &self.inner
+        } else {
+            &self.outer
+        }
     }
 
     /// Row `j` (the column at theta = j x dtheta) of the measured surface.
@@ -352,7 +356,12 @@ impl LatheStock {
         match rec.op {
             Op::Thread { from, to, lead_mm, long_axis, spindle_deg, rpm } => {
                 if long_axis != LongAxis::Z {
-                    self.not_simulated(rec, from, Some(spindle_deg), "a thread with X as its long axis (a face or steep taper thread) is not cut in the stock simulation");
+                    self.not_simulated(
+                        rec,
+                        from,
+                        Some(spindle_deg),
+                        "a thread with X as its long axis (a face or steep taper thread) is not cut in the stock simulation",
+                    );
                     return;
                 }
                 self.chuck_check(rec, &from, &to);
@@ -368,7 +377,12 @@ impl LatheStock {
                     return;
                 }
                 if long_axis != LongAxis::Z {
-                    self.not_simulated(rec, from, Some(spindle_deg), "an arc thread with X as its long axis (a face arc thread) is not cut in the stock simulation");
+                    self.not_simulated(
+                        rec,
+                        from,
+                        Some(spindle_deg),
+                        "an arc thread with X as its long axis (a face arc thread) is not cut in the stock simulation",
+                    );
                     return;
                 }
                 self.chuck_check(rec, &from, &to);
@@ -404,7 +418,17 @@ impl LatheStock {
     /// `after_thread` and `thread_turn`: the thread record just before it ended there, with the
     /// spindle's angle, speed and time; `after_crash`: a crash just left the tool there.
     #[allow(clippy::too_many_arguments)]
-    fn rapid(&mut self, rec: &Record, from: Vec3, to: Vec3, tool: &Tool, inside: bool, after_thread: Option<Vec3>, thread_turn: Option<(f64, f64, f64)>, after_crash: Option<Vec3>) {
+    fn rapid(
+        &mut self,
+        rec: &Record,
+        from: Vec3,
+        to: Vec3,
+        tool: &Tool,
+        inside: bool,
+        after_thread: Option<Vec3>,
+        thread_turn: Option<(f64, f64, f64)>,
+        after_crash: Option<Vec3>,
+    ) {
         // Where the rapid starts inside what is left of the stock, the thread's pull-out
         // before it ended there.
         let pull_out_inside = after_thread == Some(from) && self.in_material(&from);

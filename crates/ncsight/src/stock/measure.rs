@@ -3,12 +3,12 @@
 //! full-depth and run-out lengths, deviation from a named thread, and the findings (phase error
 //! between passes, a rapid into the stock, the tool past the stock's end).
 
-use rayon::prelude::*;
 use super::lathe::{Finding, LatheStock};
 use super::standard::Expected;
 use super::survey::{LatheSurvey, MillSurvey};
 use super::{Bar, Setup, Tool};
 use crate::motion::{Op, Record};
+use rayon::prelude::*;
 
 pub use super::survey::GUESS_HOLD_MM;
 
@@ -116,7 +116,17 @@ struct Turret {
 
 impl Turret {
     fn new(setup: &Setup, assumed: Vec<(u32, Tool)>, mill: bool, first_rapid: Option<usize>, until_s: Option<f64>) -> Turret {
-        let mut t = Turret { setup: setup.clone(), assumed, mill, tool: Tool::default_thread(), rpm: 0.0, skip: first_rapid.unwrap_or(0), seen: 0, until_s, stops: StopNote::default() };
+        let mut t = Turret {
+            setup: setup.clone(),
+            assumed,
+            mill,
+            tool: Tool::default_thread(),
+            rpm: 0.0,
+            skip: first_rapid.unwrap_or(0),
+            seen: 0,
+            until_s,
+            stops: StopNote::default(),
+        };
         t.tool = t.tool_for(0, None);
         t
     }
@@ -398,10 +408,16 @@ fn deviation(m: &mut Measurement, e: &Expected, dz: f64, last_thread: Option<&Re
         Some(r) => Finding::at(kind, r, r.op.end_point().unwrap_or_default(), true, None, message),
         None => Finding { kind, line: 0, message, at: None, tool: None },
     };
-    let checks = [("major diameter", m.major_diameter_mm, e.major_mm, 2.0 * dz + 0.02), ("minor diameter", m.minor_diameter_mm, e.minor_mm, 2.0 * dz + 0.02), ("pitch", m.pitch_mm, e.pitch_mm, dz + 0.005)];
+    let checks = [
+        ("major diameter", m.major_diameter_mm, e.major_mm, 2.0 * dz + 0.02),
+        ("minor diameter", m.minor_diameter_mm, e.minor_mm, 2.0 * dz + 0.02),
+        ("pitch", m.pitch_mm, e.pitch_mm, dz + 0.005),
+    ];
     for (what, got, want, tol) in checks {
         match got {
-            Some(g) if (g - want).abs() > tol => m.findings.push(place("deviation", format!("{what} {g:.3} mm, {} has {want:.3} mm ({:+.3} mm)", e.name, g - want))),
+            Some(g) if (g - want).abs() > tol => {
+                m.findings.push(place("deviation", format!("{what} {g:.3} mm, {} has {want:.3} mm ({:+.3} mm)", e.name, g - want)))
+            }
             None => m.findings.push(place("deviation", format!("no {what} could be measured to compare with {}", e.name))),
             _ => {}
         }
@@ -673,10 +689,8 @@ impl Phase {
                 let half = (tool.included_angle_deg / 2.0).to_radians().tan();
                 let allowed = (from.x - f.x).abs() * half + 1e-3 * lead_mm + 1e-6;
                 if axial > allowed {
-                    let msg = format!(
-                        "this pass is {off:.3} degrees ({axial:.4} mm along the thread) off the groove cut at line {}: it cuts a new groove",
-                        f.line
-                    );
+                    let msg =
+                        format!("this pass is {off:.3} degrees ({axial:.4} mm along the thread) off the groove cut at line {}: it cuts a new groove", f.line);
                     self.findings.push(Finding::at("phase", r, from, true, Some(spindle_deg), msg));
                 }
             }

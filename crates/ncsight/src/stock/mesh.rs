@@ -23,7 +23,11 @@ fn normal(a: Vec3, b: Vec3, c: Vec3) -> Vec3 {
     let (u, v) = (b - a, c - a);
     let n = Vec3::new(u.y * v.z - u.z * v.y, u.z * v.x - u.x * v.z, u.x * v.y - u.y * v.x);
     let l = (n.x * n.x + n.y * n.y + n.z * n.z).sqrt();
-    if l > 0.0 { Vec3::new(n.x / l, n.y / l, n.z / l) } else { Vec3::default() }
+    if l > 0.0 {
+        Vec3::new(n.x / l, n.y / l, n.z / l)
+    } else {
+        Vec3::default()
+    }
 }
 
 /// A quad a-b-c-d (counter-clockwise from outside) as two triangles.
@@ -105,8 +109,24 @@ pub fn mill(stock: &MillStock, each: &mut dyn FnMut(Triangle)) -> u32 {
         }
         (z as f64).max(b.min_mm[2])
     };
-    let x_at = |xi: usize| if xi == 0 { b.min_mm[0] } else if xi + 1 >= xs.len() { b.max_mm[0] } else { b.min_mm[0] + (xs[xi] as f64 + 0.5) * stock.cell_mm };
-    let y_at = |yi: usize| if yi == 0 { b.min_mm[1] } else if yi + 1 >= ys.len() { b.max_mm[1] } else { b.min_mm[1] + (ys[yi] as f64 + 0.5) * stock.cell_mm };
+    let x_at = |xi: usize| {
+        if xi == 0 {
+            b.min_mm[0]
+        } else if xi + 1 >= xs.len() {
+            b.max_mm[0]
+        } else {
+            b.min_mm[0] + (xs[xi] as f64 + 0.5) * stock.cell_mm
+        }
+    };
+    let y_at = |yi: usize| {
+        if yi == 0 {
+            b.min_mm[1]
+        } else if yi + 1 >= ys.len() {
+            b.max_mm[1]
+        } else {
+            b.min_mm[1] + (ys[yi] as f64 + 0.5) * stock.cell_mm
+        }
+    };
     let mut n = 0u32;
     let mut count = |t: Triangle| {
         n += 1;

@@ -110,7 +110,11 @@ impl Capsule {
             let ey = cy - a.y;
             // Within r of the segment's line: |dx ey - dy (x - ax)| <= r len.
             let (mut band_lo, mut band_hi) = if self.inv_dy == 0.0 {
-                if (self.dx * ey).abs() <= self.r_len { (f64::NEG_INFINITY, f64::INFINITY) } else { (1.0, -1.0) }
+                if (self.dx * ey).abs() <= self.r_len {
+                    (f64::NEG_INFINITY, f64::INFINITY)
+                } else {
+                    (1.0, -1.0)
+                }
             } else {
                 let (p, q) = (a.x + (self.dx * ey - self.r_len) * self.inv_dy, a.x + (self.dx * ey + self.r_len) * self.inv_dy);
                 (p.min(q), p.max(q))
@@ -139,7 +143,11 @@ impl Capsule {
 #[inline]
 fn floor_i(v: f64) -> isize {
     let t = v as isize;
-    if (t as f64) > v { t - 1 } else { t }
+    if (t as f64) > v {
+        t - 1
+    } else {
+        t
+    }
 }
 
 /// The first cell whose centre is at or past `lo` (cells of `1 / inv_cell` from `origin`).
@@ -432,7 +440,12 @@ impl MillStock {
             if face < self.block.max_mm[2] {
                 let highest = self.highest_within(&low, h.diameter_mm / 2.0);
                 if highest > face + CUT_MM {
-                    let msg = format!("the holder (Ø{:.3} mm, {:.3} mm from the tip) comes {:.3} mm into the material", h.diameter_mm, tool.stick_out_mm, highest - face);
+                    let msg = format!(
+                        "the holder (Ø{:.3} mm, {:.3} mm from the tip) comes {:.3} mm into the material",
+                        h.diameter_mm,
+                        tool.stick_out_mm,
+                        highest - face
+                    );
                     self.findings.push(Finding::at("holder", rec, low, false, None, msg));
                 }
             }
@@ -449,8 +462,14 @@ impl MillStock {
     /// The highest top of the material within `r` of a point (-inf where there is none).
     fn highest_within(&self, p: &Vec3, r: f64) -> f64 {
         let cell = self.cell_mm;
-        let (i0, i1) = (((p.x - r - self.block.min_mm[0]) / cell).floor().max(0.0) as usize, (((p.x + r - self.block.min_mm[0]) / cell).ceil().max(0.0) as usize).min(self.nx));
-        let (j0, j1) = (((p.y - r - self.block.min_mm[1]) / cell).floor().max(0.0) as usize, (((p.y + r - self.block.min_mm[1]) / cell).ceil().max(0.0) as usize).min(self.ny));
+        let (i0, i1) = (
+            ((p.x - r - self.block.min_mm[0]) / cell).floor().max(0.0) as usize,
+            (((p.x + r - self.block.min_mm[0]) / cell).ceil().max(0.0) as usize).min(self.nx),
+        );
+        let (j0, j1) = (
+            ((p.y - r - self.block.min_mm[1]) / cell).floor().max(0.0) as usize,
+            (((p.y + r - self.block.min_mm[1]) / cell).ceil().max(0.0) as usize).min(self.ny),
+        );
         let mut highest = f64::NEG_INFINITY;
         for j in j0..j1 {
             for i in i0..i1 {

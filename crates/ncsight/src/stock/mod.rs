@@ -3,8 +3,8 @@
 //! and the measurement of the thread that results.
 
 pub mod lathe;
-pub mod mesh;
 pub mod measure;
+pub mod mesh;
 pub mod mill;
 pub mod section;
 pub mod standard;

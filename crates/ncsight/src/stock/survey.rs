@@ -172,7 +172,11 @@ impl LatheSurvey {
             }
             Op::Feed { .. } | Op::Arc { .. } => u.other_cuts = true,
             Op::Rapid { from, to } if self.after_cut && (to.x - from.x).abs() > (to.z - from.z).abs() => {
-                if to.x < from.x { u.leaves_down += 1 } else { u.leaves_up += 1 }
+                if to.x < from.x {
+                    u.leaves_down += 1
+                } else {
+                    u.leaves_up += 1
+                }
             }
             _ => {}
         }
@@ -214,7 +218,13 @@ impl LatheSurvey {
         };
         // The stock's length: the setup's, or what the cuts so far span (a guess grows with them).
         let g = &self.guess;
-        let length = if self.bar_length_mm > 0.0 { self.bar_length_mm } else if g.zmin <= g.zmax { g.zmax.min(0.0).max(g.zmin) - g.zmin + GUESS_HOLD_MM } else { GUESS_HOLD_MM };
+        let length = if self.bar_length_mm > 0.0 {
+            self.bar_length_mm
+        } else if g.zmin <= g.zmax {
+            g.zmax.min(0.0).max(g.zmin) - g.zmin + GUESS_HOLD_MM
+        } else {
+            GUESS_HOLD_MM
+        };
         self.spans_mm += span.min(length);
         self.moves += 1.0;
     }
@@ -239,8 +249,22 @@ impl LatheSurvey {
     pub fn assumed_tools(&self, setup: &Setup) -> Vec<(u32, Tool)> {
         let use_of = |n: u32| self.uses.iter().find(|(m, _)| *m == n).map(|(_, u)| *u).unwrap_or_default();
         let drill_diameter = |drill: u32| -> f64 {
-            let narrowest = self.within_holes.iter().filter(|(d, t, _)| *d == drill && { let u = use_of(*t); u.inside() || u.threads }).map(|w| w.2).fold(f64::MAX, f64::min);
-            if narrowest < f64::MAX { narrowest } else { 10.0 }
+            let narrowest = self
+                .within_holes
+                .iter()
+                .filter(|(d, t, _)| {
+                    *d == drill && {
+                        let u = use_of(*t);
+                        u.inside() || u.threads
+                    }
+                })
+                .map(|w| w.2)
+                .fold(f64::MAX, f64::min);
+            if narrowest < f64::MAX {
+                narrowest
+            } else {
+                10.0
+            }
         };
         self.uses
             .iter()
@@ -261,7 +285,10 @@ impl LatheSurvey {
 
     /// Whether a tool (as the setup gives it, or assumed) cuts a thread inside a bore.
     pub fn threads_inside(&self, setup: &Setup, assumed: &[(u32, Tool)]) -> bool {
-        self.uses.iter().filter(|(_, u)| u.threads).any(|(n, _)| assumed.iter().find(|(m, _)| m == n).map(|(_, t)| *t).unwrap_or_else(|| setup.tool(*n)).internal)
+        self.uses
+            .iter()
+            .filter(|(_, u)| u.threads)
+            .any(|(n, _)| assumed.iter().find(|(m, _)| m == n).map(|(_, t)| *t).unwrap_or_else(|| setup.tool(*n)).internal)
     }
 
     /// The stock a programme implies when none is given (docs/commands/simulate.md, an
@@ -355,7 +382,11 @@ impl MillSurvey {
             .iter()
             .filter(|(n, _, _)| !setup.tools.iter().any(|t| t.number == *n))
             .map(|&(n, low, sideways)| {
-                let tool = if sideways && low < top_z { Tool { number: n, kind: ToolKind::Mill, diameter_mm: 10.0, ..Tool::default_thread() } } else { Tool { number: n, ..setup.mill_tool(n) } };
+                let tool = if sideways && low < top_z {
+                    Tool { number: n, kind: ToolKind::Mill, diameter_mm: 10.0, ..Tool::default_thread() }
+                } else {
+                    Tool { number: n, ..setup.mill_tool(n) }
+                };
                 (n, tool)
             })
             .collect()

@@ -101,10 +101,7 @@ mod tests {
             pull_out: None,
         };
         let ops = expand_cycle(&c).unwrap();
-        let angles: Vec<f64> = ops
-            .iter()
-            .filter_map(|(_, o)| if let Op::Thread { spindle_deg, .. } = o { Some(*spindle_deg) } else { None })
-            .collect();
+        let angles: Vec<f64> = ops.iter().filter_map(|(_, o)| if let Op::Thread { spindle_deg, .. } = o { Some(*spindle_deg) } else { None }).collect();
         assert_eq!(angles, vec![10.0, 130.0, 250.0]);
     }
 }

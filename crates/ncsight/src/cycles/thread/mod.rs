@@ -66,7 +66,11 @@ pub enum PassError {
 /// Normalise an angle to [0, 360).
 pub fn wrap_deg(a: f64) -> f64 {
     let r = a.rem_euclid(360.0);
-    if r >= 360.0 - 1e-9 { 0.0 } else { r }
+    if r >= 360.0 - 1e-9 {
+        0.0
+    } else {
+        r
+    }
 }
 
 /// Spindle angle after `long_mm` of long-axis travel from `start_deg`.
@@ -164,14 +168,7 @@ mod tests {
 
     fn pass(pull_out: Option<PullOut>) -> Pass {
         // Seed 000 O0012 first pass: X58.7 (radius 29.35) from Z5 to Z-28, lead 3.
-        Pass {
-            from: Vec3::new(29.35, 0.0, 5.0),
-            to: Vec3::new(29.35, 0.0, -28.0),
-            lead_mm: 3.0,
-            rpm: 300.0,
-            start_deg: 0.0,
-            pull_out,
-        }
+        Pass { from: Vec3::new(29.35, 0.0, 5.0), to: Vec3::new(29.35, 0.0, -28.0), lead_mm: 3.0, rpm: 300.0, start_deg: 0.0, pull_out }
     }
 
     #[test]

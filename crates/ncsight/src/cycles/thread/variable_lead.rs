@@ -24,7 +24,17 @@ pub enum VariableLeadError {
 /// revolution (R), the spindle at `rpm` from `start_deg`, with its pull-out; at most `limit`
 /// revolutions, each lead at most `max_lead_mm`.
 #[allow(clippy::too_many_arguments)]
-pub fn expand(from: Vec3, to: Vec3, lead_mm: f64, change_mm: f64, start_deg: f64, rpm: f64, pull_out: Option<PullOut>, max_lead_mm: f64, limit: usize) -> Result<Vec<Op>, VariableLeadError> {
+pub fn expand(
+    from: Vec3,
+    to: Vec3,
+    lead_mm: f64,
+    change_mm: f64,
+    start_deg: f64,
+    rpm: f64,
+    pull_out: Option<PullOut>,
+    max_lead_mm: f64,
+    limit: usize,
+) -> Result<Vec<Op>, VariableLeadError> {
     let long = LongAxis::of(&from, &to);
     let i = long.index();
     let length = (to.axis(i) - from.axis(i)).abs();
@@ -98,6 +108,9 @@ mod tests {
         let Op::Thread { to, lead_mm, .. } = ops[9] else { panic!() };
         assert!((to.z + 18.0).abs() < 1e-9 && (lead_mm - 2.95).abs() < 1e-12);
         let long = PullOut { long_mm: 30.0, ..po };
-        assert_eq!(expand(Vec3::new(15.0, 0.0, 5.0), Vec3::new(15.0, 0.0, -20.0), 2.0, 0.1, 0.0, 300.0, Some(long), 500.0, 1000), Err(VariableLeadError::Pass(PassError::PullOutTooLong(30.0, 25.0))));
+        assert_eq!(
+            expand(Vec3::new(15.0, 0.0, 5.0), Vec3::new(15.0, 0.0, -20.0), 2.0, 0.1, 0.0, 300.0, Some(long), 500.0, 1000),
+            Err(VariableLeadError::Pass(PassError::PullOutTooLong(30.0, 25.0)))
+        );
     }
 }
