@@ -3,7 +3,7 @@
 
 use super::thread::{chamfer_of, jk_pull_out};
 use super::words::Words;
-use super::{axis_target, Step};
+use super::{axis_target, HoldOn, Marks, Step};
 use crate::alarm::{Diagnostic, Rule};
 use crate::cycles::tap;
 use crate::cycles::thread::compound::{infeed_shift_mm, pass_depths, pass_line, Flank, Infeed, Schedule};
@@ -218,25 +218,16 @@ fn cut(step: &mut Step, words: &mut Words, name: &str, kind: Compound, data: G78
         });
         let spec = Cycle { start: a, cut_start, cut_end, lead_mm: lead, rpm, starts: data.starts, first_deg: 0.0, pull_out };
         let ops = expand_cycle(&spec).map_err(|e| step.pass_error(name, e))?;
-        let first_rec = step.out.records.len();
         let mut last_start = None;
         for (start, op) in ops {
             if last_start != Some(start) {
                 step.st.thread.cycles += 1;
                 last_start = Some(start);
             }
-            let id = step.st.thread.cycles;
-            let at = step.out.records.len();
-            step.emit(op);
-            for r in step.records_since(at) {
-                r.cycle = Some(id);
-            }
-        }
-        for r in step.records_since(first_rec) {
-            if r.op.is_thread() {
-                // G76 help note 1: FEED HOLD waits for the end of the thread.
-                r.hold = Hold::AfterRun;
-            }
+            // Each pass and start a cycle of its own; G76 help note 1: FEED HOLD waits for the
+            // end of the thread.
+            let marks = Marks { cycle: Some(step.st.thread.cycles), hold: Some((Hold::AfterRun, HoldOn::Threads)), ..Marks::default() };
+            step.marked(marks, |step| step.emit(op));
         }
     }
     Ok(())
@@ -263,26 +254,24 @@ pub(super) fn tap(step: &mut Step, words: &mut Words) -> Result<(), Diagnostic> 
         return Ok(());
     }
     let position_mode = step.st.modes.spindle_position_mode;
-    let first = step.out.records.len();
     // Steps 2-4: M05 at the bottom, wait for the stop, turn the other way.
     let reverse = [
         Op::Spindle { rpm: 0.0, surface_m_min: None, position_mode, oriented: false, p: step.spindle_p() },
         Op::Spindle { rpm: -rpm, surface_m_min: None, position_mode, oriented: false, p: step.spindle_p() },
     ];
-    for k in 0..starts {
-        let deg = k as f64 * 360.0 / starts as f64;
-        for op in tap::stroke(a, bottom, lead, deg, rpm, &reverse) {
-            step.emit(op);
-        }
-        // Step 6: M05.
-        step.emit(Op::Spindle { rpm: 0.0, surface_m_min: None, position_mode, oriented: false, p: step.spindle_p() });
-    }
-    step.st.modes.spindle = SpindleDir::Stopped;
     // Help note 4: single block and feed hold wait for the end of the tapping.
-    for r in step.records_since(first) {
-        r.hold = Hold::AfterRun;
-        r.override_free = true;
-    }
+    let marks = Marks { hold: Some((Hold::AfterRun, HoldOn::Every)), override_free: true, ..Marks::default() };
+    step.marked(marks, |step| {
+        for k in 0..starts {
+            let deg = k as f64 * 360.0 / starts as f64;
+            for op in tap::stroke(a, bottom, lead, deg, rpm, &reverse) {
+                step.emit(op);
+            }
+            // Step 6: M05.
+            step.emit(Op::Spindle { rpm: 0.0, surface_m_min: None, position_mode, oriented: false, p: step.spindle_p() });
+        }
+    });
+    step.st.modes.spindle = SpindleDir::Stopped;
     Ok(())
 }
 

@@ -196,6 +196,8 @@ fn chords(step: &mut Step, code: &'static str, from: Vec3, to: Vec3, pts: &[Pt])
     for w in corners.windows(2) {
         step.emit(Op::Feed { from: w[0], to: w[1], feed_mm_min: feed });
     }
+    // Marked after they are made, not as (`Marks`): in radius compensation the stage lets a
+    // chord's record go one chord later, so which record is the curve's first is known only here.
     let span = step.span;
     let mut later = false;
     for r in step.records_since(first).iter_mut().filter(|r| r.span == span && matches!(r.op, Op::Feed { .. })) {

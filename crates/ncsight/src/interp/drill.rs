@@ -2,7 +2,7 @@
 //! repeats, G98/G99, and the mapping of the plane-local steps of `cycles::drill` onto X, Y, Z.
 
 use super::words::Words;
-use super::Step;
+use super::{HoldOn, Marks, Step};
 use crate::alarm::{Diagnostic, Rule};
 use crate::cycles::drill::{self, DrillKind, Hole};
 use crate::modal::SpindleDir;
@@ -106,8 +106,11 @@ fn hole_end(hole: &Hole, from: Vec3, global: impl Fn(drill::Local, &Vec3) -> Vec
     last.map(|l| global(l, &from))
 }
 
-/// Emit the steps of one hole, mapped by `global`; single block stops after the hole.
-fn emit_hole(step: &mut Step, hole: &Hole, global: impl Fn(drill::Local, &Vec3) -> Vec3) -> usize {
+/// Emit the steps of one hole, mapped by `global`; single block stops after the hole. A tapping
+/// hole drilled along the axis `tap_along`: feed hold and the feed override do not act from the
+/// R level to the hole's end; the positioning to the hole (a rapid that keeps that axis) still
+/// stops (seed 003 8.1.2, 8.1.8; the FANUC 0-T G84/G88 inferred the same).
+fn emit_hole(step: &mut Step, hole: &Hole, tap_along: Option<usize>, global: impl Fn(drill::Local, &Vec3) -> Vec3) {
     let (position_mode, spindle_p) = (step.st.modes.spindle_position_mode, step.spindle_p());
     let first = step.out.records.len();
     if step.out.discard_records {
@@ -115,17 +118,23 @@ fn emit_hole(step: &mut Step, hole: &Hole, global: impl Fn(drill::Local, &Vec3) 
         if let Some(end) = hole_end(hole, step.st.place.pos, &global) {
             step.st.place.pos = end;
         }
-        return first;
+        return;
     }
+    let tapping = Marks { hold: Some((Hold::AfterRun, HoldOn::Every)), override_free: true, ..Marks::default() };
+    let mut first_op = true;
     drill::expand_each(hole, &mut |s| {
         if let Some(op) = step_op(s, step.st.place.pos, &global, position_mode, spindle_p) {
-            step.emit(op);
+            let positioning = first_op && tap_along.is_some_and(|along| matches!(op, Op::Rapid { from, to } if from.axis(along) == to.axis(along)));
+            first_op = false;
+            match tap_along {
+                Some(_) if !positioning => step.marked(tapping, |step| step.emit(op)),
+                _ => step.emit(op),
+            }
         }
     });
     if let Some(last) = step.records_since(first).last_mut() {
         last.block_end = true;
     }
-    first
 }
 
 /// How many records a drilling block may make before its holes are made one at a time as they
@@ -275,7 +284,7 @@ fn from_start_block(step: &mut Step, words: &mut Words, kind: DrillKind) -> Resu
             feed,
             rpm,
         };
-        emit_hole(step, &hole, global);
+        emit_hole(step, &hole, None, global);
     }
     Ok(())
 }
@@ -427,10 +436,7 @@ fn lathe_from_r_block(step: &mut Step, words: &mut Words, kind: DrillKind) -> Re
             feed,
             rpm,
         };
-        let first = emit_hole(step, &hole, global);
-        if tapping {
-            hold_through_tapping(step, first, along);
-        }
+        emit_hole(step, &hole, tapping.then_some(along), global);
     }
     Ok(())
 }
@@ -533,33 +539,19 @@ fn rigid_tap_block(step: &mut Step, words: &mut Words, kind: DrillKind) -> Resul
         let tapping = step.out.records.len();
         let dwell = [Op::Dwell { seconds: dwell_s }];
         let at_bottom: &[Op] = if dwell_s > 0.0 { &dwell } else { &[] };
-        for op in crate::cycles::tap::stroke(start, end, lead, 0.0, rpm_in, at_bottom) {
-            step.emit(op);
-        }
         // Note 4: FEED HOLD and single block wait for the end of the tapping and its way out;
         // single block stops after each hole, K times for K repeats (docs/commands/operator.md).
-        let recs = step.records_since(tapping);
-        for r in recs.iter_mut() {
-            r.hold = Hold::AfterRun;
-            r.override_free = true;
-        }
-        if let Some(last) = recs.last_mut() {
+        let marks = Marks { hold: Some((Hold::AfterRun, HoldOn::Every)), override_free: true, ..Marks::default() };
+        step.marked(marks, |step| {
+            for op in crate::cycles::tap::stroke(start, end, lead, 0.0, rpm_in, at_bottom) {
+                step.emit(op);
+            }
+        });
+        if let Some(last) = step.records_since(tapping).last_mut() {
             last.block_end = true;
         }
     }
     Ok(())
-}
-
-/// Tapping (seed 003 8.1.2, 8.1.8; the FANUC 0-T G84/G88 inferred the same): feed hold and the
-/// feed override do not act from the R level to the end of the hole's records from `first`;
-/// the positioning to the hole (a rapid that keeps the drilling axis `along`) still stops.
-fn hold_through_tapping(step: &mut Step, first: usize, along: usize) {
-    let recs = step.records_since(first);
-    let positioning = usize::from(matches!(recs.first().map(|r| &r.op), Some(Op::Rapid { from, to }) if from.axis(along) == to.axis(along)));
-    for r in recs.iter_mut().skip(positioning) {
-        r.hold = Hold::AfterRun;
-        r.override_free = true;
-    }
 }
 
 /// A block while a drilling cycle is in force. `entering`: the block names a cycle code.
@@ -813,12 +805,10 @@ fn make_holes(
             deferred.push(hole);
             continue;
         }
-        let first = emit_hole(step, &hole, |l, _| plane.from_local(l));
         // Tapping: feed hold and feed override are ignored until the cycle ends (seed 003 8.1.2);
         // positioning to the hole still stops. Single block stops after each hole (docs/reference/behaviour.md).
-        if matches!(kind, DrillKind::G74 | DrillKind::G84) {
-            hold_through_tapping(step, first, n);
-        }
+        let tap_along = matches!(kind, DrillKind::G74 | DrillKind::G84).then_some(n);
+        emit_hole(step, &hole, tap_along, |l, _| plane.from_local(l));
     }
     if !deferred.is_empty() && !step.out.discard_records {
         let holes = DeferredHoles {

@@ -218,10 +218,71 @@ struct Step<'a> {
     /// The block runs in programmed coordinates: its records are carried through these
     /// transforms (G51.1, G51, G68) and its end position back at the block's end.
     carry: Option<crate::modal::Transforms>,
+    /// What the cycle making records now says of them, set on each as it is made.
+    marks: Marks,
     out: &'a mut Outcome,
 }
 
+/// What a cycle says of the records it is making, set on each record as it is made, never
+/// patched afterwards: FEED HOLD's rule, the feed override, the thread cycle a record belongs
+/// to, the time constant of its feeds ([`Step::marked`]).
+#[derive(Debug, Clone, Copy, Default)]
+struct Marks {
+    /// FEED HOLD's rule, and the records it is for.
+    hold: Option<(crate::motion::Hold, HoldOn)>,
+    /// The feed override does not act (tapping).
+    override_free: bool,
+    /// The thread cycle the records belong to (a cycle's start, a compound thread's pass).
+    cycle: Option<u32>,
+    /// The time constant of the feed records among them.
+    feed_accel_s: Option<Option<f64>>,
+    /// The next record only (then the marks end): the one an op makes.
+    once: bool,
+}
+
+/// Which records a cycle's FEED HOLD rule is for.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum HoldOn {
+    Every,
+    /// The thread records (not the cycle's rapids).
+    Threads,
+    /// The feed records (a pull-out after the thread's end point).
+    Feeds,
+}
+
+impl Marks {
+    fn apply(&self, r: &mut Record) {
+        if let Some(id) = self.cycle {
+            r.cycle = Some(id);
+        }
+        if let Some((hold, on)) = self.hold {
+            let applies = match on {
+                HoldOn::Every => true,
+                HoldOn::Threads => r.op.is_thread(),
+                HoldOn::Feeds => matches!(r.op, Op::Feed { .. }),
+            };
+            if applies {
+                r.hold = hold;
+            }
+        }
+        if self.override_free {
+            r.override_free = true;
+        }
+        if let (Some(accel_s), Op::Feed { .. }) = (self.feed_accel_s, &r.op) {
+            r.accel_s = accel_s;
+        }
+    }
+}
+
 impl Step<'_> {
+    /// Run `f` with `marks` on the records it makes; the marks in force before come back after.
+    fn marked<R>(&mut self, marks: Marks, f: impl FnOnce(&mut Self) -> R) -> R {
+        let outer = std::mem::replace(&mut self.marks, marks);
+        let result = f(self);
+        self.marks = outer;
+        result
+    }
+
     fn alarm(&self, rule: Rule, span: Span, msg: impl Into<String>) -> Diagnostic {
         Diagnostic::new(rule, self.profile.alarm_style, span, msg)
     }
@@ -305,6 +366,10 @@ impl Step<'_> {
             if self.st.modes.tapping_mode && matches!(r.op, Op::Feed { .. } | Op::Arc { .. }) {
                 r.override_free = true;
                 r.hold = crate::motion::Hold::AfterRecord;
+            }
+            self.marks.apply(&mut r);
+            if self.marks.once {
+                self.marks = Marks::default();
             }
             self.out.records.push(r);
         }
@@ -687,6 +752,7 @@ impl Interpreter {
             n: None,
             st: &mut self.state,
             carry: None,
+            marks: Marks::default(),
             out,
         };
         if let Some(p) = step.st.thread.take_some(|t| &mut t.pending) {
@@ -780,6 +846,7 @@ impl Interpreter {
             n: block.sequence,
             st: &mut self.state,
             carry: None,
+            marks: Marks::default(),
             out,
         };
         let result = run_block(&mut step, block, self.switches).and_then(|()| {

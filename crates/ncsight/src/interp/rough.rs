@@ -267,6 +267,7 @@ impl Interpreter {
                 n: b.sequence,
                 st: &mut st,
                 carry: None,
+                marks: super::Marks::default(),
                 out: &mut scratch,
             };
             run_block(&mut step, b, self.switches)?;
@@ -534,6 +535,7 @@ impl Interpreter {
             n: req.n,
             st: &mut self.state,
             carry: None,
+            marks: super::Marks::default(),
             out,
         };
         if step.defers(moves.move_count(), too_many)? {
@@ -560,6 +562,7 @@ impl Interpreter {
             n: req.n,
             st: &mut self.state,
             carry: None,
+            marks: super::Marks::default(),
             out,
         };
         let result = step.emit_each(code, moves).and_then(|()| {
@@ -659,6 +662,7 @@ impl Interpreter {
             n: req.n,
             st: &mut self.state,
             carry: None,
+            marks: super::Marks::default(),
             out: &mut scratch,
         };
         super::corner::break_off(&mut step);

@@ -3,7 +3,7 @@
 //! for the one pull-out function; nothing of the geometry is copied.
 
 use super::words::Words;
-use super::{axis_target, resolve_arc, ArcOutcome, Step};
+use super::{axis_target, resolve_arc, ArcOutcome, HoldOn, Marks, Step};
 use crate::alarm::{Diagnostic, Rule};
 use crate::cycles::thread::arc::{self as arc_thread, ArcThreadError};
 use crate::cycles::thread::cycle::{expand_cycle, Cycle};
@@ -736,22 +736,16 @@ fn emit_cycle(step: &mut Step, ops: Vec<(u32, Op)>, hold: Hold) {
             last_start = Some(k);
             step.st.thread.cycles += 1;
         }
-        let is_thread = op.is_thread();
-        let first = step.out.records.len();
-        step.emit(op);
-        let id = step.st.thread.cycles;
-        let accel = step.pull_out_accel_s();
-        if let Some(r) = step.records_since(first).first_mut() {
-            r.cycle = Some(id);
-            if is_thread {
-                r.hold = hold;
-            }
-            if matches!(r.op, Op::Feed { .. }) {
-                // The perpendicular pull-out after the end point (G92.1 note 3).
-                r.accel_s = accel;
-                r.hold = hold;
-            }
-        }
+        // The op's record: its cycle; the hold on the thread, and on the perpendicular pull-out
+        // after the end point with its time constant (G92.1 note 3).
+        let marks = Marks {
+            cycle: Some(step.st.thread.cycles),
+            hold: Some((hold, if op.is_thread() { HoldOn::Every } else { HoldOn::Feeds })),
+            feed_accel_s: Some(step.pull_out_accel_s()),
+            once: true,
+            ..Marks::default()
+        };
+        step.marked(marks, |step| step.emit(op));
     }
 }
 
@@ -817,8 +811,14 @@ fn jk_chamfer_pull_out(step: &Step, lead: f64, sign: f64, amount: ParamKey, angl
 
 /// Emit a held-back run end: with its pull-out if the run ends here.
 pub(super) fn flush(step: &mut Step, p: PendingThread, run_ends: bool) {
+    // Single block stops after the last block of a run only (seed 001 G32.1 note 7; TDi help G32
+    // note 4). The perpendicular pull-out after a G32.1 end is part of the thread for the hold.
+    // FEED HOLD: G32 (TDi help G32 note 3) stops when the run is cut; G32.1 ignores the press
+    // (GSK988T manual, G32.1 note 6: the screen keeps showing RUN; TDi help G32.1 note 4).
+    let hold = if p.rigid { Hold::Ignored } else { Hold::AfterRun };
+    let marks = Marks { hold: Some((hold, HoldOn::Every)), feed_accel_s: Some(step.pull_out_accel_s()), ..Marks::default() };
     let first = step.out.records.len();
-    match p.body {
+    step.marked(marks, |step| match p.body {
         PendingBody::Straight(mut pass) => {
             if !run_ends {
                 pass.pull_out = None;
@@ -831,21 +831,8 @@ pub(super) fn flush(step: &mut Step, p: PendingThread, run_ends: bool) {
             }
         }
         PendingBody::Arc(op) => step.emit_at(p.span, p.n, op),
-    }
-    // Single block stops after the last block of a run only (seed 001 G32.1 note 7; TDi help G32
-    // note 4). The perpendicular pull-out after a G32.1 end is part of the thread for the hold.
-    // FEED HOLD: G32 (TDi help G32 note 3) stops when the run is cut; G32.1 ignores the press
-    // (GSK988T manual, G32.1 note 6: the screen keeps showing RUN; TDi help G32.1 note 4).
-    let hold = if p.rigid { Hold::Ignored } else { Hold::AfterRun };
-    let accel = step.pull_out_accel_s();
-    let recs = step.records_since(first);
-    for r in recs.iter_mut() {
-        r.hold = hold;
-        if matches!(r.op, Op::Feed { .. }) {
-            r.accel_s = accel;
-        }
-    }
-    if let Some(last) = recs.last_mut() {
+    });
+    if let Some(last) = step.records_since(first).last_mut() {
         last.block_end = run_ends;
     }
 }
