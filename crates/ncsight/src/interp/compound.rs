@@ -260,7 +260,7 @@ pub(super) fn tap(step: &mut Step, words: &mut Words) -> Result<(), Diagnostic> 
         Op::Spindle { rpm: -rpm, surface_m_min: None, position_mode, oriented: false, p: step.spindle_p() },
     ];
     // Help note 4: single block and feed hold wait for the end of the tapping.
-    let marks = Marks { hold: Some((Hold::AfterRun, HoldOn::Every)), override_free: true, ..Marks::default() };
+    let marks = Marks::TAPPING;
     step.marked(marks, |step| {
         for k in 0..starts {
             let deg = k as f64 * 360.0 / starts as f64;

@@ -2,11 +2,11 @@
 //! repeats, G98/G99, and the mapping of the plane-local steps of `cycles::drill` onto X, Y, Z.
 
 use super::words::Words;
-use super::{HoldOn, Marks, Step};
+use super::{Marks, Step};
 use crate::alarm::{Diagnostic, Rule};
 use crate::cycles::drill::{self, DrillKind, Hole};
 use crate::modal::SpindleDir;
-use crate::motion::{Hold, Op, StopReason, Vec3};
+use crate::motion::{Op, StopReason, Vec3};
 use crate::profile::ParamKey;
 
 /// Most repeats K (seed 003: "K 的最大取值为9999").
@@ -120,7 +120,7 @@ fn emit_hole(step: &mut Step, hole: &Hole, tap_along: Option<usize>, global: imp
         }
         return;
     }
-    let tapping = Marks { hold: Some((Hold::AfterRun, HoldOn::Every)), override_free: true, ..Marks::default() };
+    let tapping = Marks::TAPPING;
     let mut first_op = true;
     drill::expand_each(hole, &mut |s| {
         if let Some(op) = step_op(s, step.st.place.pos, &global, position_mode, spindle_p) {
@@ -541,7 +541,7 @@ fn rigid_tap_block(step: &mut Step, words: &mut Words, kind: DrillKind) -> Resul
         let at_bottom: &[Op] = if dwell_s > 0.0 { &dwell } else { &[] };
         // Note 4: FEED HOLD and single block wait for the end of the tapping and its way out;
         // single block stops after each hole, K times for K repeats (docs/commands/operator.md).
-        let marks = Marks { hold: Some((Hold::AfterRun, HoldOn::Every)), override_free: true, ..Marks::default() };
+        let marks = Marks::TAPPING;
         step.marked(marks, |step| {
             for op in crate::cycles::tap::stroke(start, end, lead, 0.0, rpm_in, at_bottom) {
                 step.emit(op);

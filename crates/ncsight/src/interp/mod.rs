@@ -251,6 +251,11 @@ enum HoldOn {
 }
 
 impl Marks {
+    /// Tapping: FEED HOLD and single block wait for the end of the tapping and its way out, and
+    /// the feed override does not act (FANUC 0-M manual, G84; GSK980TDi help text, G33 note 4).
+    const TAPPING: Marks =
+        Marks { hold: Some((crate::motion::Hold::AfterRun, HoldOn::Every)), override_free: true, cycle: None, feed_accel_s: None, once: false };
+
     fn apply(&self, r: &mut Record) {
         if let Some(id) = self.cycle {
             r.cycle = Some(id);
