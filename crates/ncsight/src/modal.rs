@@ -112,7 +112,8 @@ pub struct ThreadState {
     /// S of a rigid thread command, signed (seed 001: the sign selects the direction).
     pub rigid_rpm: Option<f64>,
     /// Held inline, as are the other rarely-set parts: the modal state is a plain `Copy` value,
-    /// copied once per block (atomic blocks), which is cheaper than cloning boxes.
+    /// each part saved by value when a block first changes it (`Kept`), which is cheaper than
+    /// cloning boxes.
     pub pending: Option<PendingThread>,
     pub memory: Option<PassMemory>,
     /// Four-step cycles started so far (each start of each block), to tell them apart.
@@ -592,10 +593,12 @@ impl Modes {
 /// One part of the modal state, and what it was before the block in progress first changed it.
 ///
 /// Reading goes through `Deref`; every change goes through `DerefMut`, which saves the part
-/// first. So the type proves what a roll-back needs: no code can change a part without saving
-/// it, and a block costs a copy of the parts it changes (a hole block: the place and the drilling
-/// data, about 150 bytes), not of the whole state (1,720 bytes, copied before every block until
-/// 2026-11).
+/// first. So no code can change a part without saving it (a `Kept` is made only here, so a
+/// whole part cannot be replaced by a new one), and a block costs a copy of the parts it changes
+/// (a hole block: the tool's place, under 100 bytes), not of the whole state (1,720 bytes,
+/// copied before every block until 2026-11). The roll-back is complete when the block is begun
+/// once, by the outermost block (`Interpreter::execute_into` counts the blocks G70 runs inside
+/// its own).
 #[derive(Debug, Clone, Copy)]
 pub struct Kept<T: Copy> {
     now: T,

@@ -149,3 +149,37 @@ fn a_block_that_changed_parts_before_its_alarm_is_rolled_back() {
     assert_eq!(a.records, b.records);
     assert_eq!(interp.state(), fresh.state());
 }
+
+/// G70 runs its contour's blocks inside its own block: an alarm in a finishing pass (here a
+/// soft limit the roughing, 0.4 mm outside the contour, never reached) puts back everything the
+/// G70 block changed, the passes before it included, and the next block runs as if G70 had
+/// never been read.
+#[test]
+fn a_g70_whose_finishing_pass_alarms_changes_no_state() {
+    let p = profile::by_name("gsk980tdi").unwrap();
+    let setup =
+        ncsight::setup::Setup::from_toml("[machine.reference]\nx_mm = 200.0\nz_mm = 100.0\n[machine.limits]\nx_mm = [40.2, 260.0]\nz_mm = [-400.0, 120.0]\n")
+            .unwrap();
+    let reader = Reader::new(p.alarm_style);
+    let lines = ["G99 G00 X100. Z2. T0101 S500 M03", "G71 U1. R0.5", "G71 P10 Q20 U0.4 W0.1 F0.2", "N10 G01 X60. Z2.", "X40. Z-10.", "N20 X100."];
+    let start = || {
+        let mut interp = Interpreter::new(Params::defaults(p), Switches::default());
+        interp.set_setup(&setup);
+        for (i, l) in lines.iter().enumerate() {
+            for b in reader.read_line(i as u32 + 1, l.as_bytes()).blocks.into_iter().flatten() {
+                interp.execute(&b).unwrap();
+            }
+        }
+        interp
+    };
+    let (mut interp, mut fresh) = (start(), start());
+    let before = *interp.state();
+    let g70 = reader.read_line(7, b"G70 P10 Q20").blocks.into_iter().flatten().next().unwrap();
+    let alarm = interp.execute(&g70).unwrap_err();
+    assert_eq!(alarm.span.line, 5, "the finishing pass to X40 alarms: {alarm:?}");
+    assert_eq!(interp.state(), &before);
+    let next = reader.read_line(8, b"G00 X150. Z10.").blocks.into_iter().flatten().next().unwrap();
+    let (a, b) = (interp.execute(&next).unwrap(), fresh.execute(&next).unwrap());
+    assert_eq!(a.records, b.records);
+    assert_eq!(interp.state(), fresh.state());
+}

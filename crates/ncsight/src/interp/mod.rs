@@ -167,6 +167,8 @@ pub struct Interpreter {
     contours: Vec<rough::Contour>,
     /// G70 is running a stored contour.
     replaying: bool,
+    /// How many blocks are running inside one another (G70's contour blocks run inside it).
+    nested_blocks: u8,
 }
 
 /// What a message names: a code by its function (its name looked up in the profile's table only
@@ -213,7 +215,8 @@ struct Step<'a> {
     span: Span,
     /// The block's sequence number, for its records.
     n: Option<u32>,
-    /// The interpreter's modal state, changed in place (restored from a copy on an alarm).
+    /// The interpreter's modal state, changed in place (each part saved when the block first
+    /// changes it, put back on an alarm: `modal::Kept`).
     st: &'a mut Modal,
     /// The block runs in programmed coordinates: its records are carried through these
     /// transforms (G51.1, G51, G68) and its end position back at the block's end.
@@ -653,6 +656,7 @@ impl Interpreter {
             collecting: None,
             contours: Vec::new(),
             replaying: false,
+            nested_blocks: 0,
         }
     }
 
@@ -823,12 +827,24 @@ impl Interpreter {
         if self.collecting.is_some() {
             return self.collect_contour(block, out);
         }
-        self.state.begin_block();
-        let held_before = self.held();
+        // A block inside a block (G70 runs its contour's blocks within its own) is part of the
+        // outer block's transaction: only the outermost begins it and rolls it back, so an alarm
+        // in a finishing pass puts back everything G70 changed.
+        let outermost = self.nested_blocks == 0;
+        let held_before = if outermost {
+            self.state.begin_block();
+            self.held()
+        } else {
+            [None, None]
+        };
+        self.nested_blocks += 1;
         let result = self.run_through_stages(block, out).and_then(|()| self.apply_effects(block, out));
+        self.nested_blocks -= 1;
         if result.is_err() {
             out.clear();
-            self.roll_back(held_before);
+            if outermost {
+                self.roll_back(held_before);
+            }
         }
         result
     }
@@ -1565,8 +1581,9 @@ fn modal_codes(step: &mut Step, block: &Block, last_of: &[(Group, &Word, &'stati
                 }
             }
             GFn::NotYet(_) | GFn::MacroCall | GFn::ModalMacroCall | GFn::ModalMacroCancel => unreachable!("rejected above"),
-            // What is left is the block's one-shot command (`GFn::is_one_shot`), run by
-            // `one_shot` in step 10.
+            // What is left is the block's one-shot command, run by `one_shot` in step 10 (a new
+            // modal function needs its own arm above, else it is taken for a one-shot one and
+            // `one_shot` answers that ncsight has no block function for it).
             f => codes.non_modal = Some((w.span, f)),
         }
     }
@@ -1576,15 +1593,15 @@ fn modal_codes(step: &mut Step, block: &Block, last_of: &[(Group, &Word, &'stati
 /// The words a macro reads back (#4102-#4113) of this block.
 #[inline(always)]
 fn note_last_words(st: &mut crate::modal::Modal, block: &Block) {
-    for w in &block.words {
+    // Only a block with one of these words changes (and saves) the notes.
+    for w in block.words.iter().filter(|w| matches!(w.letter, b'B' | b'D' | b'E' | b'H' | b'M')) {
         let last = &mut st.notes.last_words;
         match w.letter {
             b'B' => last.b = Some(w.value),
             b'D' => last.d = Some(w.value),
             b'E' => last.e = Some(w.value),
             b'H' => last.h = Some(w.value),
-            b'M' => last.m = Some(w.value),
-            _ => {}
+            _ => last.m = Some(w.value),
         }
     }
 }
