@@ -742,28 +742,34 @@ impl Interpreter {
         self.flush_into(out, false);
     }
 
-    fn flush_into(&mut self, out: &mut Outcome, with_comp: bool) {
-        out.clear();
-        if self.state.thread.pending.is_none() && (!with_comp || (self.comp_queue.is_empty() && self.corner_queue.is_empty())) {
-            return;
-        }
-        let repair = self.switches.repair_position;
-        let mut step = Step {
+    /// A step over this interpreter's state and stages for the block at `span` (numbered `n`),
+    /// its records into `out`. `cycle`: a cycle's moves made for the block (G70-G73), which
+    /// bypass radius compensation and the thread repair position.
+    fn step<'a>(&'a mut self, span: Span, n: Option<u32>, cycle: bool, out: &'a mut Outcome) -> Step<'a> {
+        Step {
             profile: self.profile,
             params: &self.params,
             tables: &self.tables,
             queue: &mut self.comp_queue,
             corners: &mut self.corner_queue,
-            bypass_comp: false,
+            bypass_comp: cycle,
             contour: false,
-            repair,
-            span: Span::default(),
-            n: None,
+            repair: if cycle { None } else { self.switches.repair_position },
+            span,
+            n,
             st: &mut self.state,
             carry: None,
             marks: Marks::default(),
             out,
-        };
+        }
+    }
+
+    fn flush_into(&mut self, out: &mut Outcome, with_comp: bool) {
+        out.clear();
+        if self.state.thread.pending.is_none() && (!with_comp || (self.comp_queue.is_empty() && self.corner_queue.is_empty())) {
+            return;
+        }
+        let mut step = self.step(Span::default(), None, false, out);
         if let Some(p) = step.st.thread.take_some(|t| &mut t.pending) {
             step.bypass_comp = true;
             thread::flush(&mut step, p, true);
@@ -853,24 +859,9 @@ impl Interpreter {
     /// found only by moving (the motion cap, a soft limit, G22, a compensated path with no
     /// solution); its records marked where single block stops.
     fn run_through_stages(&mut self, block: &Block, out: &mut Outcome) -> Result<(), Diagnostic> {
-        let repair = self.switches.repair_position;
-        let mut step = Step {
-            profile: self.profile,
-            params: &self.params,
-            tables: &self.tables,
-            queue: &mut self.comp_queue,
-            corners: &mut self.corner_queue,
-            bypass_comp: false,
-            contour: false,
-            repair,
-            span: block.span,
-            n: block.sequence,
-            st: &mut self.state,
-            carry: None,
-            marks: Marks::default(),
-            out,
-        };
-        let result = run_block(&mut step, block, self.switches).and_then(|()| {
+        let (switches, replaying) = (self.switches, self.replaying);
+        let mut step = self.step(block.span, block.sequence, false, out);
+        let result = run_block(&mut step, block, switches).and_then(|()| {
             if step.out.emitted > MAX_MOTIONS_PER_BLOCK {
                 return Err(step.alarm(
                     Rule::MotionLimit,
@@ -883,9 +874,9 @@ impl Interpreter {
         let result = result.and_then(|()| match step.out.flow {
             // GSK980TDi help text, G71 note 4 (G72, G73 likewise): no subprogramme call or
             // return in the contour blocks ns to nf.
-            Some(Flow::Call { span, .. } | Flow::Return { span, .. }) if self.replaying => Err(Diagnostic::new(
+            Some(Flow::Call { span, .. } | Flow::Return { span, .. }) if replaying => Err(Diagnostic::new(
                 Rule::ContourCommand,
-                self.profile.alarm_style,
+                step.profile.alarm_style,
                 span,
                 "M98 and M99 may not be used in the contour blocks ns to nf (GSK980TDi manual, G71 note 4)",
             )),

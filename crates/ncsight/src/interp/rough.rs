@@ -522,22 +522,7 @@ impl Interpreter {
         out: &mut Outcome,
         too_many: &dyn Fn(usize) -> String,
     ) -> Result<(), Diagnostic> {
-        let mut step = Step {
-            profile: self.profile,
-            params: &self.params,
-            tables: &self.tables,
-            queue: &mut self.comp_queue,
-            corners: &mut self.corner_queue,
-            bypass_comp: true,
-            contour: false,
-            repair: None,
-            span: req.span,
-            n: req.n,
-            st: &mut self.state,
-            carry: None,
-            marks: super::Marks::default(),
-            out,
-        };
+        let mut step = self.step(req.span, req.n, true, out);
         if step.defers(moves.move_count(), too_many)? {
             return step.defer_cuts(req.kind.code(), std::sync::Arc::new(moves));
         }
@@ -549,22 +534,7 @@ impl Interpreter {
     fn emit_cycle(&mut self, req: &RoughRequest, moves: &dyn Expansion, out: &mut Outcome) -> Result<(), Diagnostic> {
         let code = req.kind.code();
         let before = self.state;
-        let mut step = Step {
-            profile: self.profile,
-            params: &self.params,
-            tables: &self.tables,
-            queue: &mut self.comp_queue,
-            corners: &mut self.corner_queue,
-            bypass_comp: true,
-            contour: false,
-            repair: None,
-            span: req.span,
-            n: req.n,
-            st: &mut self.state,
-            carry: None,
-            marks: super::Marks::default(),
-            out,
-        };
+        let mut step = self.step(req.span, req.n, true, out);
         let result = step.emit_each(code, moves).and_then(|()| {
             // The per-block limit (the cycle's moves come here, not through `execute_into`).
             if step.out.emitted > super::MAX_MOTIONS_PER_BLOCK {
@@ -649,22 +619,7 @@ impl Interpreter {
         let from = self.state.place.pos;
         let before = self.state;
         let mut scratch = Outcome::default();
-        let mut step = Step {
-            profile: self.profile,
-            params: &self.params,
-            tables: &self.tables,
-            queue: &mut self.comp_queue,
-            corners: &mut self.corner_queue,
-            bypass_comp: true,
-            contour: false,
-            repair: None,
-            span: req.span,
-            n: req.n,
-            st: &mut self.state,
-            carry: None,
-            marks: super::Marks::default(),
-            out: &mut scratch,
-        };
+        let mut step = self.step(req.span, req.n, true, &mut scratch);
         super::corner::break_off(&mut step);
         super::comp::break_off(&mut step);
         if from != req.start || step.st.comp.actual.is_some() {
