@@ -534,30 +534,33 @@ impl Modal {
 
     /// A block begins: what each part is now is what an alarm in the block goes back to.
     pub fn begin_block(&mut self) {
-        self.modes.begin();
-        self.place.begin();
-        self.notes.begin();
-        self.memory.begin();
-        self.transform.begin();
-        self.stroke2.begin();
-        self.frame.begin();
-        self.comp.begin();
-        self.thread.begin();
-        self.drill.begin();
+        // Every part, named so that a part added to `Modal` and not here does not compile.
+        let Modal { modes, place, notes, memory, transform, stroke2, frame, comp, thread, drill } = self;
+        modes.begin();
+        place.begin();
+        notes.begin();
+        memory.begin();
+        transform.begin();
+        stroke2.begin();
+        frame.begin();
+        comp.begin();
+        thread.begin();
+        drill.begin();
     }
 
     /// The block alarmed: every part it changed goes back to what it was at [`Modal::begin_block`].
     pub fn roll_back(&mut self) {
-        self.modes.roll_back();
-        self.place.roll_back();
-        self.notes.roll_back();
-        self.memory.roll_back();
-        self.transform.roll_back();
-        self.stroke2.roll_back();
-        self.frame.roll_back();
-        self.comp.roll_back();
-        self.thread.roll_back();
-        self.drill.roll_back();
+        let Modal { modes, place, notes, memory, transform, stroke2, frame, comp, thread, drill } = self;
+        modes.roll_back();
+        place.roll_back();
+        notes.roll_back();
+        memory.roll_back();
+        transform.roll_back();
+        stroke2.roll_back();
+        frame.roll_back();
+        comp.roll_back();
+        thread.roll_back();
+        drill.roll_back();
     }
 }
 
