@@ -803,17 +803,22 @@ impl Interpreter {
     }
 
     /// The records both look-ahead stages hold (the corner stage's, compensation's), kept before
-    /// a block so that a block that alarms changes nothing (cloned only when there are some).
-    fn held(&self) -> [Option<Vec<Record>>; 2] {
-        let keep = |q: &Vec<Record>| (!q.is_empty()).then(|| q.clone());
-        [keep(&self.comp_queue), keep(&self.corner_queue)]
+    /// a block so that a block that alarms changes nothing: none when both are empty (outside
+    /// compensation, nearly always), else a copy of both behind one pointer. (One word on the
+    /// stack: two `Option<Vec>` written field by field and read back whole stalled each block.)
+    fn held(&self) -> Option<Box<[Vec<Record>; 2]>> {
+        if self.comp_queue.is_empty() && self.corner_queue.is_empty() {
+            return None;
+        }
+        Some(Box::new([self.comp_queue.clone(), self.corner_queue.clone()]))
     }
 
     /// Put back the modal state and the held records as they were before a block that alarmed.
-    fn roll_back(&mut self, [comp, corners]: [Option<Vec<Record>>; 2]) {
+    fn roll_back(&mut self, held: Option<Box<[Vec<Record>; 2]>>) {
         self.state.roll_back();
-        self.comp_queue = comp.unwrap_or_default();
-        self.corner_queue = corners.unwrap_or_default();
+        let [comp, corners] = held.map_or_else(Default::default, |h| *h);
+        self.comp_queue = comp;
+        self.corner_queue = corners;
     }
 
     /// Execute one block. On an alarm nothing changes.
@@ -841,7 +846,7 @@ impl Interpreter {
             self.state.begin_block();
             self.held()
         } else {
-            [None, None]
+            None
         };
         self.nested_blocks += 1;
         let result = self.run_through_stages(block, out).and_then(|()| self.apply_effects(block, out));
@@ -1284,7 +1289,9 @@ fn run_block(step: &mut Step, block: &Block, switches: Switches) -> Result<(), D
     let last_of = sort_g_codes(step, &gs)?;
     suspend_compensation(step, &last_of, &words);
     // 3. Modal codes.
-    let codes = modal_codes(step, block, &last_of)?;
+    // Filled in place: returned by value, its fields written one by one were read back whole.
+    let mut codes = Codes::default();
+    modal_codes(step, block, &last_of, &mut codes)?;
     rigid_tap_waits(step, &codes, &words)?;
     // 4. What a new motion mode cancels.
     cancel_by_motion(step, &codes);
@@ -1488,10 +1495,9 @@ fn suspend_compensation(step: &mut Step, last_of: &[(Group, &Word, &'static GDef
 /// Step 3 of [`run_block`]: the modal codes take effect; the motion and drilling codes and
 /// the others acted on later are noted.
 #[inline(always)]
-fn modal_codes(step: &mut Step, block: &Block, last_of: &[(Group, &Word, &'static GDef)]) -> Result<Codes, Diagnostic> {
+fn modal_codes(step: &mut Step, block: &Block, last_of: &[(Group, &Word, &'static GDef)], codes: &mut Codes) -> Result<(), Diagnostic> {
     let profile = step.profile;
     // 3. Modal codes take effect; the motion and drilling codes are noted.
-    let mut codes = Codes::default();
     note_last_words(step.st, block);
     // GSK980TDi help text, G54-G59 note 6: with G50 in the block, G54-G59 are void.
     let set_wins = profile.frame.coordinate_set_wins && last_of.iter().any(|(_, _, g)| matches!(g.function, GFn::LatheCoordinateSet | GFn::MillCoordinateSet));
@@ -1578,7 +1584,7 @@ fn modal_codes(step: &mut Step, block: &Block, last_of: &[(Group, &Word, &'stati
             f => codes.non_modal = Some((w.span, f)),
         }
     }
-    Ok(codes)
+    Ok(())
 }
 
 /// The words a macro reads back (#4102-#4113) of this block.

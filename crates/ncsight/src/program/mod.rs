@@ -194,11 +194,12 @@ impl LineReader {
         // Another control's programme gets one answer, not a cascade of alarms (issue 10). Its
         // signs come early or carry `$ @ = <`; only such lines are looked at.
         out.foreign = None;
-        if line_no <= 100 || raw.iter().any(|b| matches!(b, b'$' | b'@' | b'=' | b'<')) {
+        let marks = crate::read::ByteMarks::of(raw);
+        if line_no <= 100 || marks.has(crate::read::ByteMarks::FOREIGN) {
             out.foreign = crate::dialect::sniff(raw);
         }
         if out.foreign.is_none() {
-            self.reader.read_line_into(line_no, raw, &mut out.line);
+            self.reader.read_marked_line_into(line_no, raw, marks, &mut out.line);
         }
     }
 }
