@@ -45,7 +45,7 @@ pub(crate) fn matching_bracket(s: &[u8], open: usize) -> Option<usize> {
 }
 
 /// Which of the few bytes that change how a line is read it holds, found in one pass over the
-/// line (a table lookup per byte; three scans for them took a twentieth of the reading thread's
+/// line (a table lookup per byte; two scans for them took a twentieth of the reading thread's
 /// work on the 200,000-hole programme, counted with callgrind).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct ByteMarks(u8);
@@ -307,7 +307,7 @@ impl Reader {
     }
 
     /// [`Reader::read_line_into`] with the line's [`ByteMarks`] found already.
-    pub fn read_marked_line_into(&self, line_no: u32, raw: &[u8], marks: ByteMarks, out: &mut Line) {
+    pub(crate) fn read_marked_line_into(&self, line_no: u32, raw: &[u8], marks: ByteMarks, out: &mut Line) {
         out.reset();
         let mut s = raw;
         if line_no == 1 && s.starts_with(&[0xEF, 0xBB, 0xBF]) {
