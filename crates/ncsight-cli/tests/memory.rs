@@ -149,3 +149,19 @@ fn a_roughing_of_a_hundred_thousand_levels_runs_in_constant_memory() {
     assert!(text.contains("STRAIGHT_FEED(0.2000, 0.0000, -9.9000"), "the contour's face is cut");
     assert!(kb > 0 && kb < 16 << 10, "peak {kb} KiB");
 }
+
+/// An involute of 90 turns (G03.2 on the 0i-MF: 316,955 chords, past the 100,000 records a held
+/// block keeps): its chords are made as they are handed on, so the peak stays that of a small
+/// programme, under 16 MiB.
+#[test]
+fn an_involute_of_ninety_turns_runs_in_constant_memory() {
+    let roll = 90.0 * std::f64::consts::TAU;
+    let (s, c) = roll.sin_cos();
+    let end = format!("X{:.4} Y{:.4}", 10.0 * (c + roll * s), 10.0 * (s - roll * c));
+    let (code, kb, text) = run_canon("fanuc0i-mf", &format!("G21 G90 G17 G00 X10. Y0. Z5.\nG01 F800.\nG03.2 {end} I-10. J0. R10.\nM30\n"));
+    let lines = text.lines().count();
+    eprintln!("an involute of 90 turns: peak {kb} KiB, {lines} canonical calls");
+    assert_eq!(code, 0);
+    assert!(lines > 316_955, "{lines} lines");
+    assert!(kb > 0 && kb < 16 << 10, "peak {kb} KiB");
+}

@@ -141,6 +141,10 @@ rules! {
     IllegalLead => Alarm, "NCS-E87", Some("PS0014"), "ILLEGAL LEAD COMMAND";
     // G05, G6.2, G7.2 of the GSK980TDi (its alarm numbers were not at hand).
     CurveData => Alarm, "NCS-E86", None, "CURVE DATA DO NOT DEFINE THE CURVE";
+    // G02.2/G03.2 involute interpolation: the numbers of the FANUC 30i-MA manual, the texts of
+    // its alarm list as recalled.
+    InvoluteFormat => Alarm, "NCS-E100", Some("PS0241"), "ILLEGAL FORMAT IN G02.2/G03.2";
+    InvoluteCommand => Alarm, "NCS-E101", Some("PS0242"), "ILLEGAL COMMAND IN G02.2/G03.2";
     // G22 stored stroke check 2 (no alarm number of these controllers at hand).
     StrokeCheck2 => Alarm, "NCS-E85", None, "FORBIDDEN AREA (STORED STROKE CHECK 2)";
     // Tool radius compensation: the FANUC 0 P/S numbers (docs/reference/macro.md 10.3; texts as recalled).

@@ -1,11 +1,15 @@
-//! Property tests of the curves the GSK980TDi cuts (G05, G06.2/G06.3, G07.2/G07.3) and of
+//! Property tests of the curves the GSK980TDi cuts (G05, G06.2/G06.3, G07.2/G07.3), of the FANUC
+//! involute (G02.2/G03.2) and of
 //! the pieces that record polar coordinate interpolation (G12.1): for any data the functions
 //! accept, every point they give lies on the curve, the last is the end point, and the count
 //! stays bounded; whatever they are given, they do not panic.
 
 use ncsight::cycles::curve::{ellipse, parabola, three_point_arc, MAX_CHORDS};
+use ncsight::cycles::involute::{BaseCircle, Involute};
 use ncsight::cycles::polar::{pieces, MAX_PIECES};
+use ncsight::cycles::Expansion;
 use ncsight::motion::ArcDir;
+use ncsight::motion::{Op, Plane, Vec3};
 use proptest::prelude::*;
 
 fn dir() -> impl Strategy<Value = ArcDir> {
@@ -14,6 +18,61 @@ fn dir() -> impl Strategy<Value = ArcDir> {
 
 proptest! {
     #![proptest_config(ProptestConfig { cases: 300, .. ProptestConfig::default() })]
+
+
+    /// An involute between two of its own points, either way round, unwinding or winding up:
+    /// laid out, every chord end lies on it, the last is the end point, the count is what it
+    /// says.
+    #[test]
+    fn involute_chords_lie_on_the_curve(
+        rolls in (0.0..20.0f64, 0.0..20.0f64), side in prop_oneof![Just(1.0f64), Just(-1.0f64)],
+        base_deg in -180.0..180.0f64, radius in 0.5..50.0f64, centre in (-100.0..100.0f64, -100.0..100.0f64),
+    ) {
+        let (a, b) = rolls;
+        prop_assume!((a - b).abs() > 1e-3);
+        let base = base_deg.to_radians();
+        let at = |roll: f64| {
+            let t = base + side * roll;
+            Vec3::new(centre.0 + radius * (t.cos() + side * roll * t.sin()), centre.1 + radius * (t.sin() - side * roll * t.cos()), 0.0)
+        };
+        // Unwinding on side +1 and winding up on -1 turn counter-clockwise.
+        let dir = if (side > 0.0) == (b > a) { ArcDir::Ccw } else { ArcDir::Cw };
+        let inv = Involute::new(at(a), at(b), Plane::XY, BaseCircle { centre, radius_mm: radius }, dir, 0.01, 0.001).unwrap();
+        let mut ends = Vec::new();
+        inv.each_op(&mut |op| {
+            if let Op::Feed { to, .. } = op {
+                ends.push(to);
+            }
+            std::ops::ControlFlow::Continue(())
+        });
+        prop_assert_eq!(ends.len(), inv.move_count());
+        prop_assert_eq!(*ends.last().unwrap(), at(b));
+        for p in &ends {
+            let d = (p.x - centre.0).hypot(p.y - centre.1);
+            let roll = (d * d - radius * radius).max(0.0).sqrt() / radius;
+            let q = at(roll);
+            prop_assert!((q.x - p.x).hypot(q.y - p.y) <= 1e-6 * d.max(1.0), "{:?} off the involute ({:?})", p, q);
+        }
+    }
+
+    /// Whatever it is given, the involute does not panic, and a lay-out it accepts ends at the
+    /// end point.
+    #[test]
+    fn involute_never_panics(s in (-1e3..1e3f64, -1e3..1e3f64), e in (-1e3..1e3f64, -1e3..1e3f64), c in (-1e3..1e3f64, -1e3..1e3f64), radius in 1e-6..1e3f64, dir in dir()) {
+        let (from, to) = (Vec3::new(s.0, s.1, 0.0), Vec3::new(e.0, e.1, 0.0));
+        if let Ok(inv) = Involute::new(from, to, Plane::XY, BaseCircle { centre: c, radius_mm: radius }, dir, 0.01, 0.001) {
+            if inv.move_count() > 0 && inv.move_count() < 100_000 {
+                let mut last = from;
+                inv.each_op(&mut |op| {
+                    if let Op::Feed { to, .. } = op {
+                        last = to;
+                    }
+                    std::ops::ControlFlow::Continue(())
+                });
+                prop_assert_eq!(last, to);
+            }
+        }
+    }
 
     /// The centre of a three-point arc is as far from all three points.
     #[test]

@@ -4,6 +4,7 @@
 pub mod curve;
 pub mod drill;
 pub mod groove;
+pub mod involute;
 pub mod polar;
 pub mod rough;
 pub mod tap;
@@ -24,6 +25,11 @@ pub trait Expansion: std::fmt::Debug + Send + Sync {
     /// Hand on the moves in order (feeds carry 0: the interpreter sets each from F); the sink
     /// may stop them.
     fn each_op(&self, sink: &mut dyn FnMut(crate::motion::Op) -> std::ops::ControlFlow<()>);
+    /// The moves are chords of one curve the controller interpolates whole: the time model
+    /// accelerates once, at the first (the feeds after it carry a time constant of 0).
+    fn one_interpolation(&self) -> bool {
+        false
+    }
 }
 
 /// A lay-out's moves held whole, or none when it counts more than `limit` (refused before any is

@@ -24,7 +24,7 @@ pub(super) fn block(step: &mut Step, words: &mut Words, kind: Curve) -> Result<(
     let plane = step.st.modes.plane;
     let (a, b, _) = plane.axes();
     let from = step.st.place.pos;
-    let (to, _) = axis_target(step, words)?;
+    let (to, given) = axis_target(step, words)?;
     match kind {
         Curve::ThreePoint { mid_absolute } => three_point(step, words, code, mid_absolute, from, to),
         Curve::Ellipse(dir) => {
@@ -93,6 +93,7 @@ pub(super) fn block(step: &mut Step, words: &mut Words, kind: Curve) -> Result<(
             let pts = curve::parabola(local(&from, a, b), local(&to, a, b), p, tilt, dir, CHORD_TOLERANCE_MM).map_err(|e| curve_alarm(step, code, e))?;
             chords(step, code, from, to, &pts)
         }
+        Curve::Involute(dir) => super::involute::block(step, words, code, dir, (from, to), given),
     }
 }
 
@@ -168,7 +169,7 @@ fn three_point(step: &mut Step, words: &mut Words, code: &'static str, mid_absol
 /// Emit the chords from `from` through `pts` (the last is `to`). The axis normal to the plane
 /// moves with them in proportion. The controller interpolates one curve: the time model
 /// accelerates once, at the first chord (the others carry a time constant of 0).
-fn chords(step: &mut Step, code: &'static str, from: Vec3, to: Vec3, pts: &[Pt]) -> Result<(), Diagnostic> {
+pub(super) fn chords(step: &mut Step, code: &'static str, from: Vec3, to: Vec3, pts: &[Pt]) -> Result<(), Diagnostic> {
     let plane = step.st.modes.plane;
     let (a, b, n) = plane.axes();
     let count = pts.len();

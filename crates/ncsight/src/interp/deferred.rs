@@ -44,6 +44,8 @@ impl DeferredCuts {
     /// Every record of the cycle, in order, the last one ending the block for single block.
     pub fn each_record(&self, sink: &mut dyn FnMut(Record)) {
         let mut held: Option<Record> = None;
+        let one_interpolation = self.moves.one_interpolation();
+        let mut feeds = 0usize;
         self.moves.each_op(&mut |op| {
             let op = match &self.feed {
                 Some(f) => f.apply(op).0,
@@ -51,6 +53,12 @@ impl DeferredCuts {
             };
             let mut r = Record::of_block(self.span, self.n, op);
             r.to_machine = self.to_machine;
+            if matches!(r.op, Op::Feed { .. }) {
+                if one_interpolation && feeds > 0 {
+                    r.accel_s = Some(0.0);
+                }
+                feeds += 1;
+            }
             if let Some(done) = held.replace(r) {
                 sink(done);
             }

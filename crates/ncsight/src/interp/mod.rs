@@ -12,6 +12,7 @@ mod drawing;
 mod drill;
 mod frame;
 mod groove;
+mod involute;
 mod polar;
 mod rough;
 mod table_vars;

@@ -323,6 +323,26 @@ const MF_CODES: &[GDef] = &[super::common::gp(
     "additional work coordinate system P1-P48 (the setup's [work] \"G54.1\" list)",
 )];
 
+/// G02.2/G03.2 involute interpolation, an option of the 0i-MF (taken as fitted).
+const MF_INVOLUTE: &[GDef] = &[
+    super::common::gp(
+        2,
+        2,
+        "G02.2",
+        Group::Motion,
+        GFn::Curve(super::Curve::Involute(crate::motion::ArcDir::Cw)),
+        "involute interpolation clockwise: I/J/K the base circle's centre from the start, R its radius",
+    ),
+    super::common::gp(
+        3,
+        2,
+        "G03.2",
+        Group::Motion,
+        GFn::Curve(super::Curve::Involute(crate::motion::ArcDir::Ccw)),
+        "involute interpolation counter-clockwise: I/J/K the base circle's centre from the start, R its radius",
+    ),
+];
+
 pub static MF: Profile = Profile {
     name: "fanuc0i-mf",
     title: "FANUC 0i-MF machining centre",
@@ -333,6 +353,7 @@ pub static MF: Profile = Profile {
         super::Codes { source: "FANUC 0-M manual, canned cycles (seed 003) and the FANUC 0i-MC G-code table", codes: fanuc0m::G_CODES },
         super::Codes { source: "the FANUC 0i-MC G-code table", codes: super::later::FANUC_0M },
         super::Codes { source: "FANUC 0i-MF: G54.1 P1-P48 (standard; P1-P300 an option, not simulated), as recalled", codes: MF_CODES },
+        super::Codes { source: "FANUC Series 16/18-MC and 30i-MA operator's manuals, involute interpolation (an option)", codes: MF_INVOLUTE },
     ],
     time: TimeKeys {
         rapid: [ParamKey::Number(1420, None), ParamKey::Number(1420, None), ParamKey::Number(1420, None)],

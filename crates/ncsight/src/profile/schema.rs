@@ -234,7 +234,8 @@ pub enum GFn {
     ModalMacroCancel,
 }
 
-/// The curves the GSK980TDi cuts besides the circle (help text G05/G05.1, G6.2/G6.3, G7.2/G7.3).
+/// The curves cut besides the circle: the GSK980TDi's (help text G05/G05.1, G6.2/G6.3, G7.2/G7.3)
+/// and FANUC's involute (G02.2/G03.2).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Curve {
     /// G05: the arc through a middle point I/K from the start; G05.1: I/K the middle point's
@@ -244,6 +245,9 @@ pub enum Curve {
     Ellipse(crate::motion::ArcDir),
     /// G7.2 (`Cw`) / G7.3: the parabola Y² = 2PX, its axis at Q.
     Parabola(crate::motion::ArcDir),
+    /// FANUC G02.2 (`Cw`) / G03.2: the involute of the base circle of radius R whose centre
+    /// I/J/K gives from the start point (`interp/involute.rs`).
+    Involute(crate::motion::ArcDir),
 }
 
 /// The two-block compound threading cycles.
