@@ -105,6 +105,28 @@ pub fn expand_each(h: &Hole, s: &mut dyn FnMut(Step)) {
     out_of_hole(h, &p, s);
 }
 
+/// Where the hole's last move ends, if it moves: the last of `expand_each`'s moves, found
+/// without making the ones before where the way out of the hole moves (every cycle from R but
+/// G87), so that a check that keeps no record does not lay each hole out whole.
+pub fn end_of(h: &Hole) -> Option<Local> {
+    let last_move = |expand: &mut dyn FnMut(&mut dyn FnMut(Step))| {
+        let mut last = None;
+        expand(&mut |s| {
+            if let Step::Rapid(l) | Step::Feed(l, _) = s {
+                last = Some(l);
+            }
+        });
+        last
+    };
+    if h.kind != DrillKind::G87 && !h.kind.from_start() {
+        let [a, b] = h.at;
+        if let Some(l) = last_move(&mut |s| out_of_hole(h, &|lvl| [a, b, lvl], s)) {
+            return Some(l);
+        }
+    }
+    last_move(&mut |s| expand_each(h, s))
+}
+
 /// The point of the hole shifted by Q along the shift direction (G76, G87), at level `lvl`.
 #[inline(always)]
 fn shifted(h: &Hole, lvl: f64) -> Local {
@@ -308,6 +330,48 @@ mod tests {
                 _ => None,
             })
             .collect()
+    }
+
+    /// `end_of` finds the last move `expand_each` makes, for every kind, G98 and G99, with and
+    /// without a dwell, from above R and from R itself, over the hole or beside it.
+    #[test]
+    fn the_end_of_a_hole_is_where_its_last_move_ends() {
+        use DrillKind::*;
+        let kinds = [
+            G73,
+            G74,
+            G76,
+            G81,
+            G82,
+            G83,
+            G84,
+            G85,
+            G86,
+            G87,
+            G88,
+            G89,
+            FaceG83,
+            SideG87,
+            FaceFromR,
+            SideFromR,
+            FaceTapR,
+            SideTapR,
+            FaceBoreR,
+            SideBoreR,
+            FaceBoreStart,
+            SideBoreStart,
+        ];
+        // TapFace and TapSide (rigid tapping) are laid out by the interpreter, never here.
+        for kind in kinds {
+            for (return_initial, dwell_s, from) in [(true, 0.5, [0.0, 0.0, 10.0]), (false, 0.0, [1.0, 1.0, 2.0]), (false, 0.5, [0.0, 0.0, 10.0])] {
+                let h = Hole { return_initial, dwell_s, from, ..hole(kind) };
+                let last = expand(&h).into_iter().rev().find_map(|s| match s {
+                    Step::Rapid(l) | Step::Feed(l, _) => Some(l),
+                    _ => None,
+                });
+                assert_eq!(end_of(&h), last, "{kind:?} G9{} dwell {dwell_s} from {from:?}", if return_initial { 8 } else { 9 });
+            }
+        }
     }
 
     #[test]

@@ -97,13 +97,7 @@ fn step_op(s: drill::Step, here: Vec3, global: impl Fn(drill::Local, &Vec3) -> V
 /// Where a hole leaves the tool (its last move's end, mapped by `global` from `from`), if it
 /// moves.
 fn hole_end(hole: &Hole, from: Vec3, global: impl Fn(drill::Local, &Vec3) -> Vec3) -> Option<Vec3> {
-    let mut last = None;
-    drill::expand_each(hole, &mut |s| {
-        if let drill::Step::Rapid(l) | drill::Step::Feed(l, _) = s {
-            last = Some(l);
-        }
-    });
-    last.map(|l| global(l, &from))
+    drill::end_of(hole).map(|l| global(l, &from))
 }
 
 /// Emit the steps of one hole, mapped by `global`; single block stops after the hole. A tapping
@@ -709,7 +703,8 @@ fn defers_holes(step: &Step, kind: DrillKind, r: f64, bottom: f64, repeats: u32)
     // keeps none anyway); elsewhere a cap on the motion one block may make (issue 10).
     let pecks = if kind.needs_q() { ((bottom - r).abs() / d.q.unwrap_or(1.0)).ceil() * repeats as f64 } else { 0.0 };
     let records = 3.0 * pecks + 5.0 * repeats as f64;
-    let defer = may_defer(step, kind) && records > DEFER_RECORDS;
+    // The count first: it is a comparison, the stages' state a dozen reads.
+    let defer = records > DEFER_RECORDS && may_defer(step, kind);
     if defer && records > MAX_DEFERRED_RECORDS {
         return Err(step.alarm(
             Rule::MotionLimit,
