@@ -109,22 +109,24 @@ pub fn expand_each(h: &Hole, s: &mut dyn FnMut(Step)) {
 /// without making the ones before where the way out of the hole moves (every cycle from R but
 /// G87), so that a check that keeps no record does not lay each hole out whole.
 pub fn end_of(h: &Hole) -> Option<Local> {
-    let last_move = |expand: &mut dyn FnMut(&mut dyn FnMut(Step))| {
-        let mut last = None;
-        expand(&mut |s| {
-            if let Step::Rapid(l) | Step::Feed(l, _) = s {
-                last = Some(l);
-            }
-        });
-        last
-    };
     if h.kind != DrillKind::G87 && !h.kind.from_start() {
         let [a, b] = h.at;
-        if let Some(l) = last_move(&mut |s| out_of_hole(h, &|lvl| [a, b, lvl], s)) {
+        if let Some(l) = last_move(|s| out_of_hole(h, &|lvl| [a, b, lvl], s)) {
             return Some(l);
         }
     }
-    last_move(&mut |s| expand_each(h, s))
+    last_move(|s| expand_each(h, s))
+}
+
+/// The end of the last move among the steps `expand` makes.
+fn last_move(expand: impl FnOnce(&mut dyn FnMut(Step))) -> Option<Local> {
+    let mut last = None;
+    expand(&mut |s| {
+        if let Step::Rapid(l) | Step::Feed(l, _) = s {
+            last = Some(l);
+        }
+    });
+    last
 }
 
 /// The point of the hole shifted by Q along the shift direction (G76, G87), at level `lvl`.
