@@ -322,14 +322,14 @@ impl Reader {
         }
         // A DOS end-of-file mark ends the text wherever it stands: inside a comment, after a
         // tape mark, on a line that alarms (corpus: icnc__Delorensi_FASE2.txt).
-        let marks = marks.has(ByteMarks::RARE);
-        if marks && s.contains(&0x1A) {
+        let rare = marks.has(ByteMarks::RARE);
+        if rare && s.contains(&0x1A) {
             let k = s.iter().position(|&b| b == 0x1A).unwrap_or(s.len());
             out.end_of_file = true;
             out.warnings.push(self.eof_mark(line_no, k));
             s = &s[..k];
         }
-        self.read_blocks(line_no, s, out, marks);
+        self.read_blocks(line_no, s, out, rare);
         // A word with ROUND: the whole line as macro blocks.
         if out.blocks.last().is_some_and(|b| matches!(b, Err(d) if d.message == ROUND_LATER)) {
             out.clear_blocks();
@@ -363,8 +363,9 @@ impl Reader {
     }
 
     /// The blocks of a line without its break and without what follows an end-of-file mark:
-    /// stops at the first alarm.
-    fn read_blocks(&self, line_no: u32, s: &[u8], out: &mut Line, marks: bool) {
+    /// stops at the first alarm. `rare`: the line has a rare byte (`#`, 0x1A), so a word may
+    /// hold a macro variable.
+    fn read_blocks(&self, line_no: u32, s: &[u8], out: &mut Line, rare: bool) {
         if s.len() > MAX_LINE_BYTES {
             out.blocks.push(Err(self.line_too_long(line_no, s.len())));
             return;
@@ -382,7 +383,7 @@ impl Reader {
             return;
         }
         // A line with a variable: its blocks are macro blocks, evaluated when they run.
-        if marks && has_variable(&s[i..]) {
+        if rare && has_variable(&s[i..]) {
             self.read_macro_blocks(line_no, s, i, out);
             return;
         }
