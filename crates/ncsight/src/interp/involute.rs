@@ -44,10 +44,16 @@ pub(super) fn block(
     let letter = |axis: usize| [b'I', b'J', b'K'][axis];
     let (wa, wb, radius_word) = (words.take(letter(a)), words.take(letter(b)), words.take(b'R'));
     if given[a].is_none() && given[b].is_none() {
-        return Err(format_alarm(step, format!("{code} needs its end point in the plane's axes")));
+        return Err(format_alarm(step, step.span, format!("{code} needs its end point in the plane's axes")));
     }
-    if given[n].is_some() && to.axis(n) != from.axis(n) {
-        return Err(format_alarm(step, format!("{code} cannot move the axis normal to the plane: no helical involute")));
+    if to.axis(n) != from.axis(n) {
+        // Written, or a tool offset's movement not made yet, which would go with this move.
+        let normal = [b'X', b'Y', b'Z'][n];
+        let msg = match words.peek(normal) {
+            Some(w) => (w.span, format!("{}: {code} cannot move the axis normal to the plane: no helical involute", w.text())),
+            None => (step.span, format!("{code}: a tool offset's movement along {} is not made yet and would go with the curve, a helical involute: make it in a block of its own first", normal as char)),
+        };
+        return Err(format_alarm(step, msg.0, msg.1));
     }
     let mut centre = (from.axis(a), from.axis(b));
     let mut offset = [0.0; 2];
@@ -58,7 +64,8 @@ pub(super) fn block(
     }
     if offset == [0.0, 0.0] {
         let (la, lb) = (letter(a) as char, letter(b) as char);
-        return Err(format_alarm(step, format!("{code} needs the base circle's centre from the start point: {la} and {lb}, not both left out or 0")));
+        let span = wa.or(wb).map_or(step.span, |w| w.span);
+        return Err(format_alarm(step, span, format!("{code} needs the base circle's centre from the start point: {la} and {lb}, not both left out or 0")));
     }
     centre.0 += offset[0];
     centre.1 += offset[1];
@@ -67,7 +74,8 @@ pub(super) fn block(
         None => 0.0,
     };
     if radius_mm <= 0.0 {
-        return Err(format_alarm(step, format!("{code} needs R, the base circle's radius, greater than 0")));
+        let span = radius_word.map_or(step.span, |w| w.span);
+        return Err(format_alarm(step, span, format!("{code} needs R, the base circle's radius, greater than 0")));
     }
     let lay = Involute::new(from, to, plane, BaseCircle { centre, radius_mm }, dir, ARC_TOLERANCE_MM, super::curve::CHORD_TOLERANCE_MM)
         .map_err(|e| step.alarm(Rule::InvoluteCommand, step.span, refusal(code, e)))?;
@@ -75,8 +83,15 @@ pub(super) fn block(
         return Ok(());
     }
     let too_many = |most: usize| format!("{code}: the involute makes {} chords, more than {most}", lay.move_count());
-    if step.defers(lay.move_count(), &too_many)? {
+    // The curve has one feed (one interpolation). Made as they are handed on, the chords would
+    // each take the feed at their own place under G95 with G96: such a block is held (inferred;
+    // a machining centre cuts an involute at a feed per minute).
+    let steady_feed = !(step.st.modes.per_rev && step.st.modes.css);
+    if steady_feed && step.defers(lay.move_count(), &too_many)? {
         return step.defer_cuts(code, Arc::new(lay));
+    }
+    if lay.move_count() > super::MAX_MOTIONS_PER_BLOCK {
+        return Err(step.alarm(Rule::MotionLimit, step.span, too_many(super::MAX_MOTIONS_PER_BLOCK)));
     }
     let mut points = Vec::with_capacity(lay.move_count());
     lay.each_point(&mut |p| {
@@ -86,8 +101,8 @@ pub(super) fn block(
     super::curve::chords(step, code, from, to, &points)
 }
 
-fn format_alarm(step: &Step, msg: String) -> Diagnostic {
-    step.alarm(Rule::InvoluteFormat, step.span, format!("{msg} (FANUC 16/18-MC and 30i-MA manuals, involute interpolation)"))
+fn format_alarm(step: &Step, span: crate::source::Span, msg: String) -> Diagnostic {
+    step.alarm(Rule::InvoluteFormat, span, format!("{msg} (FANUC 16/18-MC and 30i-MA manuals, involute interpolation)"))
 }
 
 fn refusal(code: &str, e: InvoluteError) -> String {
