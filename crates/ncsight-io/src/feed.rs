@@ -77,7 +77,7 @@ pub fn line_of(path: &std::path::Path, line: u32, out: &mut Vec<u8>) {
             Ok(b) if !b.is_empty() => b,
             _ => return,
         };
-        let (piece, complete) = match buf.iter().position(|&b| b == b'\n') {
+        let (piece, complete) = match memchr::memchr(b'\n', buf) {
             Some(k) => (&buf[..=k], true),
             None => (buf, false),
         };
@@ -625,7 +625,7 @@ impl Pages {
                 return Ok((at > offset).then_some(at - offset));
             }
             let rest = &page[within..];
-            let (piece, complete) = match rest.iter().position(|&b| b == b'\n') {
+            let (piece, complete) = match memchr::memchr(b'\n', rest) {
                 Some(k) => (&rest[..=k], true),
                 None => (rest, false),
             };
@@ -672,7 +672,7 @@ fn read_ahead(mut input: Box<dyn BufRead + Send>, reader: &LineReader, full: &mp
             }
             return;
         }
-        let (piece, complete) = match buf.iter().position(|&b| b == b'\n') {
+        let (piece, complete) = match memchr::memchr(b'\n', buf) {
             Some(k) => (&buf[..=k], true),
             None => (buf, false),
         };
