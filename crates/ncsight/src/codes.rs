@@ -1,9 +1,23 @@
 //! The commands the profiles name and the cycles expand, as enums that know no controller:
 //! the bottom of the flow (profile, interp and cycles all use them; they use nothing).
 
-/// The cycle of a hole.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum DrillKind {
+/// The enum of the hole cycles and the list of all its kinds, from one list of variants.
+macro_rules! drill_kinds {
+    ($($(#[$doc:meta])* $kind:ident,)*) => {
+        /// The cycle of a hole.
+        #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+        pub enum DrillKind {
+            $($(#[$doc])* $kind,)*
+        }
+
+        impl DrillKind {
+            /// Every kind, in the enum's order (for tests that go through them all).
+            pub const ALL: &'static [DrillKind] = &[$(DrillKind::$kind,)*];
+        }
+    };
+}
+
+drill_kinds! {
     /// High-speed peck: feed Q, back d (parameter 531), again (seed 003 8.1.1).
     G73,
     /// Left-hand tapping: the spindle reverses at the bottom (8.1.2).

@@ -338,33 +338,8 @@ mod tests {
     /// without a dwell, from above R and from R itself, over the hole or beside it.
     #[test]
     fn the_end_of_a_hole_is_where_its_last_move_ends() {
-        use DrillKind::*;
-        let kinds = [
-            G73,
-            G74,
-            G76,
-            G81,
-            G82,
-            G83,
-            G84,
-            G85,
-            G86,
-            G87,
-            G88,
-            G89,
-            FaceG83,
-            SideG87,
-            FaceFromR,
-            SideFromR,
-            FaceTapR,
-            SideTapR,
-            FaceBoreR,
-            SideBoreR,
-            FaceBoreStart,
-            SideBoreStart,
-        ];
-        // TapFace and TapSide (rigid tapping) are laid out by the interpreter, never here.
-        for kind in kinds {
+        // Rigid tapping (TapFace, TapSide) is laid out by the interpreter, never here.
+        for &kind in DrillKind::ALL.iter().filter(|k| !k.rigid_tap()) {
             for (return_initial, dwell_s, from) in [(true, 0.5, [0.0, 0.0, 10.0]), (false, 0.0, [1.0, 1.0, 2.0]), (false, 0.5, [0.0, 0.0, 10.0])] {
                 let h = Hole { return_initial, dwell_s, from, ..hole(kind) };
                 let last = expand(&h).into_iter().rev().find_map(|s| match s {

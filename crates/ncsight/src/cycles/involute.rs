@@ -142,8 +142,8 @@ impl Involute {
     /// The chords' end points after the start, the last one the end point exactly, in order.
     pub fn each_point(&self, sink: &mut dyn FnMut(Vec3) -> ControlFlow<()>) {
         for i in 1..=self.chords {
-            let p = if i == self.chords { self.to } else { self.point_at(i as f64 / self.chords as f64) };
-            if sink(p).is_break() {
+            // The last is at u = 1 exactly: the end point.
+            if sink(self.point_at(i as f64 / self.chords as f64)).is_break() {
                 return;
             }
         }

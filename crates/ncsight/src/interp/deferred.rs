@@ -45,7 +45,7 @@ impl DeferredCuts {
     pub fn each_record(&self, sink: &mut dyn FnMut(Record)) {
         let mut held: Option<Record> = None;
         let one_interpolation = self.moves.one_interpolation();
-        let mut feeds = 0usize;
+        let mut first_feed = true;
         self.moves.each_op(&mut |op| {
             let op = match &self.feed {
                 Some(f) => f.apply(op).0,
@@ -54,10 +54,10 @@ impl DeferredCuts {
             let mut r = Record::of_block(self.span, self.n, op);
             r.to_machine = self.to_machine;
             if matches!(r.op, Op::Feed { .. }) {
-                if one_interpolation && feeds > 0 {
+                if one_interpolation && !first_feed {
                     r.accel_s = Some(0.0);
                 }
-                feeds += 1;
+                first_feed = false;
             }
             if let Some(done) = held.replace(r) {
                 sink(done);

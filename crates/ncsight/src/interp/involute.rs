@@ -55,7 +55,6 @@ pub(super) fn block(
         };
         return Err(format_alarm(step, msg.0, msg.1));
     }
-    let mut centre = (from.axis(a), from.axis(b));
     let mut offset = [0.0; 2];
     for (i, w) in [wa, wb].into_iter().enumerate() {
         if let Some(w) = w {
@@ -67,8 +66,7 @@ pub(super) fn block(
         let span = wa.or(wb).map_or(step.span, |w| w.span);
         return Err(format_alarm(step, span, format!("{code} needs the base circle's centre from the start point: {la} and {lb}, not both left out or 0")));
     }
-    centre.0 += offset[0];
-    centre.1 += offset[1];
+    let centre = (from.axis(a) + offset[0], from.axis(b) + offset[1]);
     let radius_mm = match radius_word {
         Some(w) => step.length(w)?,
         None => 0.0,
